@@ -1,0 +1,14 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace patina::cli {
+
+// Each subcommand registers its options on `app` and returns the callback that runs it once
+// parsing succeeded. Callbacks throw InputError for bad input (exit 3).
+using Command = std::function<void()>;
+
+Command addRenderCommand(CLI::App& app);
+Command addProbeCommand(CLI::App& app);
+Command addLobeCommand(CLI::App& app);
+
+}  // namespace patina::cli

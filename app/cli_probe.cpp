@@ -1,0 +1,41 @@
+#include <memory>
+
+#include "cli.h"
+#include "gl/gpu_probe.h"
+#include "gl/headless_context.h"
+#include "inputs.h"
+#include "probe.h"
+
+namespace patina::cli {
+
+Command addProbeCommand(CLI::App& app) {
+    struct Options {
+        SceneInputs inputs;
+        std::string in, out, backend = "gpu";
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "probe", "Shade given points (CSV px..vz) and write the linear radiance (CSV r,g,b)");
+    options->inputs.addOptions(*command);
+    command->add_option("--in", options->in, "Input CSV: px,py,pz,nx,ny,nz,vx,vy,vz")->required();
+    command->add_option("--out", options->out, "Output CSV: r,g,b")->required();
+    command->add_option("--backend", options->backend, "gpu: the real shader; cpu: the same code as C++")
+        ->check(CLI::IsMember({"cpu", "gpu"}));
+    return [options] {
+        const Scene scene = options->inputs.load();
+        const std::vector<ProbeSample> samples =
+            parseProbeCsv(readInputText(options->in), options->in);
+        std::vector<glm::vec3> radiance;
+        if (options->backend == "cpu") {
+            radiance = probeOnCpu(scene.material, scene.lights, samples);
+        } else {
+            HeadlessContext context;
+            GpuProbe probe;
+            radiance = probe.evaluate(scene.material, scene.lights, samples);
+        }
+        const std::string csv = formatRadianceCsv(radiance);
+        writeOutput(options->out, std::vector<uint8_t>(csv.begin(), csv.end()));
+    };
+}
+
+}  // namespace patina::cli

@@ -1,0 +1,53 @@
+#include "inputs.h"
+
+#include <iostream>
+
+#include "image.h"
+#include "input_error.h"
+#include "scene_file.h"
+
+namespace patina::cli {
+
+namespace {
+void printWarnings(const std::vector<std::string>& warnings) {
+    for (const std::string& warning : warnings) {
+        std::cerr << "warning: " << warning << "\n";
+    }
+}
+}  // namespace
+
+void SceneInputs::addOptions(CLI::App& command, bool withScene) {
+    if (withScene) {
+        command.add_option("--scene", scenePath, "Scene JSON (default: the embedded scene)");
+    }
+    command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
+}
+
+Scene SceneInputs::load() const {
+    std::vector<std::string> warnings;
+    Scene scene = scenePath.empty() ? defaultScene() : loadSceneFile(scenePath, warnings);
+    if (!materialPath.empty()) {
+        scene.material = loadMaterialFile(materialPath, warnings);
+    }
+    printWarnings(warnings);
+    return scene;
+}
+
+void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {
+    try {
+        writeFileAtomic(path, bytes);
+    } catch (const std::runtime_error& error) {
+        throw InputError(error.what());
+    }
+}
+
+std::string readInputText(const std::string& path) {
+    try {
+        const std::vector<uint8_t> bytes = readFileBytes(path);
+        return std::string(bytes.begin(), bytes.end());
+    } catch (const std::runtime_error& error) {
+        throw InputError(error.what());
+    }
+}
+
+}  // namespace patina::cli

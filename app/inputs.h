@@ -1,0 +1,25 @@
+#pragma once
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "scene.h"
+
+namespace patina::cli {
+
+// --scene and --material, shared by the commands that shade.
+struct SceneInputs {
+    std::string scenePath;
+    std::string materialPath;
+
+    void addOptions(CLI::App& command, bool withScene = true);
+    // The scene file (or the embedded default) with --material over its material. Warnings go
+    // to stderr; errors throw InputError.
+    Scene load() const;
+};
+
+// Writes the bytes all-or-nothing; an unwritable path is an InputError (exit 3).
+void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes);
+std::string readInputText(const std::string& path);
+
+}  // namespace patina::cli

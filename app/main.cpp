@@ -1,0 +1,37 @@
+// patina: the command line. Exit codes: 0 success, 2 usage error, 3 bad input (a file or value
+// that cannot be used; the message names it), 1 anything else (e.g. no OpenGL).
+#include <iostream>
+
+#include "cli.h"
+#include "input_error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"Patina: a live editor for physically based materials (Karis 2013 shading)"};
+    app.require_subcommand(1);
+    std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
+    for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
+                     patina::cli::addLobeCommand}) {
+        patina::cli::Command run = add(app);
+        commands.emplace_back(app.get_subcommands({}).back(), std::move(run));
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);
+        return code == 0 ? 0 : 2;
+    }
+    try {
+        for (auto& [subcommand, run] : commands) {
+            if (subcommand->parsed()) {
+                run();
+            }
+        }
+    } catch (const patina::InputError& error) {
+        std::cerr << "error: " << error.what() << "\n";
+        return 3;
+    } catch (const std::exception& error) {
+        std::cerr << "error: " << error.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

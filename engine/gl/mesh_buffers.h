@@ -1,0 +1,24 @@
+#pragma once
+#include <epoxy/gl.h>
+
+#include "../mesh.h"
+
+namespace patina {
+
+// A mesh on the GPU: interleaved position + normal (attributes 0 and 1) and 32-bit indices.
+class MeshBuffers {
+public:
+    MeshBuffers();
+    ~MeshBuffers();
+    MeshBuffers(const MeshBuffers&) = delete;
+    MeshBuffers& operator=(const MeshBuffers&) = delete;
+
+    void upload(const Mesh& mesh);
+    void draw() const;
+
+private:
+    GLuint vertexArray_ = 0, vertices_ = 0, indices_ = 0;
+    GLsizei indexCount_ = 0;
+};
+
+}  // namespace patina

@@ -1,0 +1,243 @@
+#include "renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <epoxy/gl.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "../enum_names.h"
+#include "../light_packing.h"
+#include "mesh_buffers.h"
+#include "program.h"
+#include "shading_inputs.h"
+
+namespace patina {
+
+namespace shader_sources {
+extern const char* const mesh_vert;
+extern const char* const black_frag;
+extern const char* const fullscreen_vert;
+extern const char* const display_glsl;
+extern const char* const display_frag;
+}  // namespace shader_sources
+
+std::string_view passModeName(PassMode mode) {
+    return mode == PassMode::Multi ? "multi" : "single";
+}
+
+std::optional<PassMode> passModeFromName(std::string_view name) {
+    static const PassMode all[] = {PassMode::Single, PassMode::Multi};
+    return enumFromName(name, all, passModeName);
+}
+
+glm::mat4 viewProjection(const Camera& camera, float aspect) {
+    const glm::vec3 forward = camera.target - camera.position;
+    const float distance = glm::length(forward);
+    // Looking straight up or down, +y cannot be the up vector.
+    const glm::vec3 unitForward = forward / distance;
+    const glm::vec3 up = std::abs(unitForward.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+    const float nearPlane = std::max(1e-3f, distance * 0.01f);
+    const float farPlane = distance * 10.0f + 10.0f;
+    return glm::perspective(glm::radians(camera.fovYDegrees), aspect, nearPlane, farPlane) *
+           glm::lookAt(camera.position, camera.target, up);
+}
+
+namespace {
+// A framebuffer with one colour attachment (texture or multisampled renderbuffer) and an
+// optional depth renderbuffer, rebuilt when size or format changes.
+struct RenderTarget {
+    GLuint framebuffer = 0, color = 0, depth = 0;
+    int width = 0, height = 0, samples = -1;
+    GLenum format = 0;
+
+    ~RenderTarget() { release(); }
+
+    void release() {
+        glDeleteFramebuffers(1, &framebuffer);
+        if (samples > 0) {
+            glDeleteRenderbuffers(1, &color);
+        } else {
+            glDeleteTextures(1, &color);
+        }
+        glDeleteRenderbuffers(1, &depth);
+        framebuffer = color = depth = 0;
+    }
+
+    void ensure(int w, int h, int s, GLenum f, bool withDepth) {
+        if (framebuffer && w == width && h == height && s == samples && f == format) {
+            return;
+        }
+        release();
+        width = w, height = h, samples = s, format = f;
+        glGenFramebuffers(1, &framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        if (samples > 0) {
+            glGenRenderbuffers(1, &color);
+            glBindRenderbuffer(GL_RENDERBUFFER, color);
+            glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, w, h);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+        } else {
+            glGenTextures(1, &color);
+            glBindTexture(GL_TEXTURE_2D, color);
+            glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+        }
+        if (withDepth) {
+            glGenRenderbuffers(1, &depth);
+            glBindRenderbuffer(GL_RENDERBUFFER, depth);
+            glRenderbufferStorageMultisample(GL_RENDERBUFFER, std::max(samples, 0),
+                                             GL_DEPTH_COMPONENT24, w, h);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+        }
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            throw std::runtime_error("OpenGL: render target " + std::to_string(w) + "x" +
+                                     std::to_string(h) + " is incomplete");
+        }
+    }
+};
+
+int toneMapIndex(Tonemap tonemap) {
+    switch (tonemap) {
+    case Tonemap::Aces: return shader::TONEMAP_ACES;
+    case Tonemap::Reinhard: return shader::TONEMAP_REINHARD;
+    case Tonemap::None: break;
+    }
+    return shader::TONEMAP_NONE;
+}
+}  // namespace
+
+struct Renderer::State {
+    GlProgram single{{shader_sources::mesh_vert}, shadingFragmentParts(), {"PATINA_SINGLE_PASS"}};
+    GlProgram multi{{shader_sources::mesh_vert}, shadingFragmentParts()};
+    GlProgram depthPrepass{{shader_sources::mesh_vert}, {shader_sources::black_frag}};
+    GlProgram display{{shader_sources::fullscreen_vert},
+                      {shader_sources::display_glsl, shader_sources::display_frag}};
+    LightBuffer lights;
+    MeshBuffers mesh;
+    GLuint emptyVertexArray = 0;
+    RenderTarget shading, resolved, displayed;
+    int maxSamples = 0, maxSize = 0;
+};
+
+Renderer::Renderer() : state_(std::make_unique<State>()) {
+    LightBuffer::attach(state_->single);
+    LightBuffer::attach(state_->multi);
+    glGenVertexArrays(1, &state_->emptyVertexArray);
+    glGetIntegerv(GL_MAX_SAMPLES, &state_->maxSamples);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &state_->maxSize);
+    setMesh(makeUvSphere());
+}
+
+Renderer::~Renderer() {
+    glDeleteVertexArrays(1, &state_->emptyVertexArray);
+}
+
+void Renderer::setMesh(const Mesh& mesh) {
+    state_->mesh.upload(mesh);
+}
+
+RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
+    State& s = *state_;
+    if (settings.width < 1 || settings.height < 1 || settings.width > s.maxSize ||
+        settings.height > s.maxSize) {
+        throw std::invalid_argument("image size " + std::to_string(settings.width) + "x" +
+                                    std::to_string(settings.height) + " is outside 1.." +
+                                    std::to_string(s.maxSize));
+    }
+    const int w = settings.width, h = settings.height;
+    const int samples = std::clamp(settings.samples, 0, s.maxSamples);
+    const std::vector<shader::PackedLight> packed = packEnabledLights(scene.lights);
+    s.lights.upload(packed);
+    s.lights.bind();
+
+    s.shading.ensure(w, h, samples > 1 ? samples : 0, GL_RGBA32F, true);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.shading.framebuffer);
+    glViewport(0, 0, w, h);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glClearColor(scene.display.background.r, scene.display.background.g,
+                 scene.display.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
+    auto prepare = [&](const GlProgram& program) {
+        program.use();
+        glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(transform));
+        glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
+        setMaterialUniforms(program, scene.material);
+    };
+    if (settings.passes == PassMode::Single) {
+        prepare(s.single);
+        s.mesh.draw();
+    } else {
+        prepare(s.depthPrepass);
+        s.mesh.draw();
+        // Light passes add onto the black mesh where depth matches the pre-pass exactly
+        // (mesh.vert's gl_Position is invariant).
+        prepare(s.multi);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        for (size_t i = 0; i < packed.size(); ++i) {
+            glUniform1i(s.multi.uniform("uLightIndex"), GLint(i));
+            s.mesh.draw();
+        }
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+
+    // Resolve MSAA into a float texture: the HDR result and the display pass's input.
+    s.resolved.ensure(w, h, 0, GL_RGBA32F, false);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, s.shading.framebuffer);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.resolved.framebuffer);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+
+    RenderOutput output;
+    output.hdr = {w, h, std::vector<float>(size_t(w) * h * 3)};
+    std::vector<float> rgba(size_t(w) * h * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.resolved.framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+    for (int y = 0; y < h; ++y) {   // GL rows go bottom to top
+        for (int x = 0; x < w; ++x) {
+            const float* from = &rgba[(size_t(h - 1 - y) * w + x) * 4];
+            std::copy(from, from + 3, &output.hdr.rgb[(size_t(y) * w + x) * 3]);
+        }
+    }
+
+    s.displayed.ensure(w, h, 0, GL_RGBA8, false);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.displayed.framebuffer);
+    glDisable(GL_DEPTH_TEST);
+    s.display.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, s.resolved.color);
+    glUniform1i(s.display.uniform("uHdr"), 0);
+    glUniform1f(s.display.uniform("uExposure"), scene.display.exposure);
+    glUniform1i(s.display.uniform("uTonemap"), toneMapIndex(scene.display.tonemap));
+    glBindVertexArray(s.emptyVertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
+    std::vector<uint8_t> bytes(size_t(w) * h * 4);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    for (int y = 0; y < h; ++y) {
+        std::copy_n(&bytes[size_t(h - 1 - y) * w * 4], size_t(w) * 4, &output.ldr.rgba[size_t(y) * w * 4]);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+        throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
+    }
+    return output;
+}
+
+}  // namespace patina

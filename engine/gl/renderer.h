@@ -1,0 +1,52 @@
+#pragma once
+#include <memory>
+#include <optional>
+#include <string_view>
+
+#include <glm/mat4x4.hpp>
+
+#include "../image.h"
+#include "../mesh.h"
+#include "../scene.h"
+
+namespace patina {
+
+// multi: one additive pass per enabled light after a depth pre-pass (the seed's design);
+// single: every light in one pass from the LightBlock uniform buffer. They agree to rounding.
+enum class PassMode { Single, Multi };
+std::string_view passModeName(PassMode mode);
+std::optional<PassMode> passModeFromName(std::string_view name);
+
+struct RenderSettings {
+    int width = 800;
+    int height = 800;
+    PassMode passes = PassMode::Single;
+    int samples = 4;   // MSAA; clamped to what the implementation offers
+};
+
+struct RenderOutput {
+    HdrImage hdr;   // linear radiance, before exposure and tone map (MSAA resolved)
+    LdrImage ldr;   // after the display transform, sRGB
+};
+
+glm::mat4 viewProjection(const Camera& camera, float aspect);
+
+// Draws scenes with the shared shaders. Needs a current OpenGL 3.3 core context (a
+// HeadlessContext or the editor's window) for its whole life.
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    void setMesh(const Mesh& mesh);
+    // Throws std::invalid_argument for a size outside [1, max texture size].
+    RenderOutput render(const Scene& scene, const RenderSettings& settings);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace patina

@@ -1,0 +1,65 @@
+#include "shading_inputs.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace patina {
+
+namespace shader_sources {
+extern const char* const brdf_glsl;
+extern const char* const lights_glsl;
+extern const char* const shade_frag;
+}  // namespace shader_sources
+
+namespace {
+// std140 of `PackedLight uLights[MAX_LIGHTS]; ivec4 uLightCount;`: vec4 members pack tightly.
+static_assert(sizeof(shader::PackedLight) == 6 * 16, "PackedLight must match std140");
+constexpr size_t kLightBlockSize = sizeof(shader::PackedLight) * shader::MAX_LIGHTS + 16;
+}  // namespace
+
+std::vector<const char*> shadingFragmentParts() {
+    return {shader_sources::brdf_glsl, shader_sources::lights_glsl, shader_sources::shade_frag};
+}
+
+LightBuffer::LightBuffer() {
+    glGenBuffers(1, &buffer_);
+    glBindBuffer(GL_UNIFORM_BUFFER, buffer_);
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(kLightBlockSize), nullptr, GL_DYNAMIC_DRAW);
+}
+
+LightBuffer::~LightBuffer() {
+    glDeleteBuffers(1, &buffer_);
+}
+
+void LightBuffer::upload(const std::vector<shader::PackedLight>& lights) {
+    if (lights.size() > size_t(shader::MAX_LIGHTS)) {
+        throw std::runtime_error(std::to_string(lights.size()) + " enabled lights; the renderer holds " +
+                                 std::to_string(shader::MAX_LIGHTS));
+    }
+    const GLint count[4] = {GLint(lights.size()), 0, 0, 0};
+    glBindBuffer(GL_UNIFORM_BUFFER, buffer_);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, GLsizeiptr(lights.size() * sizeof(shader::PackedLight)),
+                    lights.data());
+    glBufferSubData(GL_UNIFORM_BUFFER, GLintptr(kLightBlockSize - 16), sizeof count, count);
+}
+
+void LightBuffer::bind() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, kBindingPoint, buffer_);
+}
+
+void LightBuffer::attach(const GlProgram& program) {
+    const GLuint index = glGetUniformBlockIndex(program.id(), "LightBlock");
+    if (index != GL_INVALID_INDEX) {
+        glUniformBlockBinding(program.id(), index, kBindingPoint);
+    }
+}
+
+void setMaterialUniforms(const GlProgram& program, const Material& material) {
+    glUniform3f(program.uniform("uBaseColor"), material.baseColor.x, material.baseColor.y,
+                material.baseColor.z);
+    glUniform1f(program.uniform("uRoughness"), material.roughness);
+    glUniform1f(program.uniform("uSpecular"), material.specular);
+    glUniform1f(program.uniform("uMetallic"), material.metallic);
+}
+
+}  // namespace patina

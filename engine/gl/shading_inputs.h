@@ -1,0 +1,38 @@
+#pragma once
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "../material.h"
+#include "../shading.h"
+#include "program.h"
+
+namespace patina {
+
+// Embedded GLSL parts shared by every program that shades (brdf + lights + shade.frag).
+std::vector<const char*> shadingFragmentParts();
+
+// The LightBlock uniform buffer of shaders/shade.frag: MAX_LIGHTS packed lights and a count.
+class LightBuffer {
+public:
+    static constexpr GLuint kBindingPoint = 0;
+
+    LightBuffer();
+    ~LightBuffer();
+    LightBuffer(const LightBuffer&) = delete;
+    LightBuffer& operator=(const LightBuffer&) = delete;
+
+    // Throws std::runtime_error past MAX_LIGHTS lights.
+    void upload(const std::vector<shader::PackedLight>& lights);
+    void bind() const;
+    // Points the program's LightBlock at kBindingPoint.
+    static void attach(const GlProgram& program);
+
+private:
+    GLuint buffer_ = 0;
+};
+
+// uBaseColor, uRoughness, uSpecular, uMetallic of shade.frag (program must be in use).
+void setMaterialUniforms(const GlProgram& program, const Material& material);
+
+}  // namespace patina

@@ -1,0 +1,37 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace patina {
+
+// Linear RGB, float per channel, rows top to bottom.
+struct HdrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;   // width * height * 3
+};
+
+// Display-referred sRGB bytes, RGBA, rows top to bottom.
+struct LdrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;   // width * height * 4
+};
+
+// PNG bytes of the image (opaque RGB), or an exception on failure.
+std::vector<uint8_t> encodePng(const LdrImage& image);
+LdrImage decodePng(const std::vector<uint8_t>& bytes);   // throws std::runtime_error
+
+// Portable float map (little-endian "PF"), the usual linear HDR interchange format.
+std::vector<uint8_t> encodePfm(const HdrImage& image);
+HdrImage decodePfm(const std::vector<uint8_t>& bytes);   // throws std::runtime_error
+
+std::vector<uint8_t> readFileBytes(const std::filesystem::path& path);   // throws
+
+// Writes all or nothing: a temporary file beside the target, flushed, then renamed over it.
+// Throws std::runtime_error naming the path on any failure and leaves the target untouched.
+void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_t>& bytes);
+
+}  // namespace patina

@@ -1,0 +1,66 @@
+#pragma once
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include "input_error.h"
+
+namespace patina {
+
+using Json = nlohmann::json;
+
+// Parses JSON text; a syntax error becomes an InputError "SOURCE:LINE:COLUMN: ...".
+Json parseJsonText(const std::string& text, const std::string& source);
+// Reads and parses a file; a missing or unreadable file is an InputError too.
+Json readJsonFile(const std::filesystem::path& path);
+
+// Inclusive bounds for a number; the defaults accept any finite float.
+struct Range {
+    double min = -3.4e38;
+    double max = 3.4e38;
+};
+
+// Reads one JSON object field by field with checks, reporting errors as
+// "SOURCE: /json/pointer: what is wrong". Keys never read are reported by unknownKeys().
+class JsonObjectReader {
+public:
+    JsonObjectReader(const Json& value, std::string pointer, std::string source);
+
+    bool has(const char* key) const;
+    float number(const char* key, float fallback, Range range = {});
+    int integer(const char* key, int fallback, Range range = {});
+    bool boolean(const char* key, bool fallback);
+    std::string string(const char* key, const std::string& fallback);
+    glm::vec3 vec3(const char* key, glm::vec3 fallback, Range range = {});
+    const Json& required(const char* key);
+    // A child value, marked as read; its pointer is pointerOf(key).
+    const Json* child(const char* key);
+    std::string pointerOf(const char* key) const { return pointer_ + "/" + key; }
+    const std::string& source() const { return source_; }
+
+    // "SOURCE: /pointer: unknown key 'x' (ignored)" for every key not read so far.
+    std::vector<std::string> unknownKeys() const;
+    [[noreturn]] void fail(const char* key, const std::string& what) const;
+
+    // Requires "format": expectedFormat and "version" <= supportedVersion.
+    void checkFormatAndVersion(const char* expectedFormat, int supportedVersion);
+
+private:
+    const Json* find(const char* key);
+    float checkedNumber(const Json& value, const std::string& pointer, Range range) const;
+
+    const Json& object_;
+    std::string pointer_;
+    std::string source_;
+    std::set<std::string> read_;
+};
+
+// An error message for `pointer` inside `source`.
+[[noreturn]] void failAt(const std::string& source, const std::string& pointer,
+                         const std::string& what);
+
+}  // namespace patina

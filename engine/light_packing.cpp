@@ -1,0 +1,42 @@
+#include "light_packing.h"
+
+namespace patina {
+
+namespace {
+int shaderLightType(LightType type) {
+    switch (type) {
+    case LightType::Point: return shader::LIGHT_POINT;
+    case LightType::Directional: return shader::LIGHT_DIRECTIONAL;
+    case LightType::Hemisphere: return shader::LIGHT_HEMISPHERE;
+    }
+    return shader::LIGHT_POINT;
+}
+}  // namespace
+
+shader::PackedLight packLight(const Light& light) {
+    const glm::vec3 radiance = light.color * light.intensity;
+    shader::PackedLight packed{};
+    packed.radiance = radiance;
+    packed.type = shaderLightType(light.type);
+    packed.position = light.position;
+    packed.radius = light.radius;
+    // Spec: L = -normalize(direction). A zero direction (rejected by the loaders) gives no light
+    // rather than NaN.
+    packed.directionToLight = -shader::safeNormalize(light.direction);
+    packed.attenuation = light.attenuation;
+    packed.sky = light.sky * radiance;
+    packed.ground = light.ground * radiance;
+    return packed;
+}
+
+std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights) {
+    std::vector<shader::PackedLight> packed;
+    for (const Light& light : lights) {
+        if (light.enabled) {
+            packed.push_back(packLight(light));
+        }
+    }
+    return packed;
+}
+
+}  // namespace patina

@@ -1,0 +1,68 @@
+#include "mesh.h"
+
+#include <cmath>
+
+namespace patina {
+
+namespace {
+constexpr float kPi = 3.14159265358979f;
+
+// Indices of a (rows + 1) x (columns + 1) vertex grid, two triangles per cell, wound so that
+// the outward normal faces the viewer (counter-clockwise).
+std::vector<uint32_t> gridIndices(int rows, int columns) {
+    std::vector<uint32_t> indices;
+    indices.reserve(size_t(rows) * size_t(columns) * 6);
+    const uint32_t stride = uint32_t(columns) + 1;
+    for (uint32_t row = 0; row < uint32_t(rows); ++row) {
+        for (uint32_t column = 0; column < uint32_t(columns); ++column) {
+            const uint32_t a = row * stride + column;
+            const uint32_t b = a + stride;
+            indices.insert(indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    }
+    return indices;
+}
+}  // namespace
+
+Mesh makeUvSphere(int rings, int segments) {
+    Mesh mesh;
+    for (int ring = 0; ring <= rings; ++ring) {
+        const float theta = kPi * float(ring) / float(rings);   // from +y down
+        for (int segment = 0; segment <= segments; ++segment) {
+            const float phi = 2.0f * kPi * float(segment) / float(segments);
+            const glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta),
+                              std::sin(theta) * std::cos(phi));
+            mesh.positions.push_back(n);
+            mesh.normals.push_back(n);
+        }
+    }
+    mesh.indices = gridIndices(rings, segments);
+    return mesh;
+}
+
+Mesh makeTorus(float majorRadius, float minorRadius, int rings, int segments) {
+    Mesh mesh;
+    for (int ring = 0; ring <= rings; ++ring) {
+        const float u = 2.0f * kPi * float(ring) / float(rings);   // around the y axis
+        const glm::vec3 tubeCenter(majorRadius * std::sin(u), 0.0f, majorRadius * std::cos(u));
+        const glm::vec3 outward(std::sin(u), 0.0f, std::cos(u));
+        for (int segment = 0; segment <= segments; ++segment) {
+            const float v = 2.0f * kPi * float(segment) / float(segments);
+            const glm::vec3 n = std::cos(v) * outward + std::sin(v) * glm::vec3(0.0f, 1.0f, 0.0f);
+            mesh.positions.push_back(tubeCenter + minorRadius * n);
+            mesh.normals.push_back(n);
+        }
+    }
+    mesh.indices = gridIndices(rings, segments);
+    return mesh;
+}
+
+Mesh makeMesh(MeshKind kind) {
+    switch (kind) {
+    case MeshKind::Torus: return makeTorus();
+    case MeshKind::Sphere: break;
+    }
+    return makeUvSphere();
+}
+
+}  // namespace patina

@@ -1,0 +1,25 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene.h"
+
+namespace patina {
+
+// An indexed triangle mesh in world space with smooth per-vertex normals.
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<uint32_t> indices;
+};
+
+// Unit sphere at the origin: `rings` latitude bands, `segments` longitude bands.
+Mesh makeUvSphere(int rings = 64, int segments = 128);
+// Torus around the y axis: major radius R, tube radius r.
+Mesh makeTorus(float majorRadius = 0.75f, float minorRadius = 0.3f, int rings = 96,
+               int segments = 48);
+Mesh makeMesh(MeshKind kind);
+
+}  // namespace patina

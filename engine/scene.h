@@ -1,0 +1,53 @@
+#pragma once
+#include <string>
+#include <string_view>
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "light.h"
+#include "material.h"
+
+namespace patina {
+
+struct Camera {
+    glm::vec3 position{0.0f, 0.6f, 3.4f};
+    glm::vec3 target{0.0f};
+    float fovYDegrees = 45.0f;
+
+    bool operator==(const Camera&) const = default;
+};
+
+enum class Tonemap { None, Aces, Reinhard };
+std::string_view tonemapName(Tonemap tonemap);
+std::optional<Tonemap> tonemapFromName(std::string_view name);
+
+struct DisplaySettings {
+    float exposure = 0.0f;                         // stops
+    Tonemap tonemap = Tonemap::None;
+    glm::vec3 background{0.02f, 0.02f, 0.025f};    // linear
+
+    bool operator==(const DisplaySettings&) const = default;
+};
+
+enum class MeshKind { Sphere, Torus };
+std::string_view meshKindName(MeshKind mesh);
+std::optional<MeshKind> meshKindFromName(std::string_view name);
+
+// Everything a render needs: plain data, no graph.
+struct Scene {
+    MeshKind mesh = MeshKind::Sphere;
+    Material material;
+    Camera camera;
+    std::vector<Light> lights;
+    DisplaySettings display;
+
+    bool operator==(const Scene&) const = default;
+};
+
+// The embedded default: a sphere lit by a warm point light, a cool directional light and a
+// sky/ground hemisphere light.
+Scene defaultScene();
+
+}  // namespace patina

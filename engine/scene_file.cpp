@@ -1,0 +1,205 @@
+#include "scene_file.h"
+
+#include "shading.h"
+
+namespace patina {
+
+namespace {
+constexpr Range kUnit{0.0, 1.0};
+constexpr Range kNonNegative{0.0, 3.4e38};
+
+Json toJson(glm::vec3 v) {
+    return Json::array({v.x, v.y, v.z});
+}
+
+template <typename T>
+void appendAll(std::vector<T>& to, std::vector<T> from) {
+    to.insert(to.end(), from.begin(), from.end());
+}
+
+Light lightFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                    std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    Light light;
+    const Json& typeValue = reader.required("type");
+    const auto type = typeValue.is_string() ? lightTypeFromName(typeValue.get<std::string>())
+                                            : std::nullopt;
+    if (!type) {
+        reader.fail("type", "unknown light type " + typeValue.dump() +
+                                " (expected \"point\", \"directional\" or \"hemisphere\")");
+    }
+    light.type = *type;
+    light.name = reader.string("name", std::string(lightTypeName(light.type)));
+    light.enabled = reader.boolean("enabled", true);
+    light.color = reader.vec3("color", light.color, kNonNegative);
+    light.intensity = reader.number("intensity", light.intensity, kNonNegative);
+    switch (light.type) {
+    case LightType::Point:
+        light.position = reader.vec3("position", light.position);
+        light.radius = reader.number("radius", light.radius, kNonNegative);
+        light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
+        break;
+    case LightType::Directional:
+        light.direction = reader.vec3("direction", light.direction);
+        if (glm::dot(light.direction, light.direction) == 0.0f) {
+            reader.fail("direction", "a directional light needs a non-zero direction");
+        }
+        break;
+    case LightType::Hemisphere:
+        light.sky = reader.vec3("sky", light.sky, kNonNegative);
+        light.ground = reader.vec3("ground", light.ground, kNonNegative);
+        break;
+    }
+    appendAll(warnings, reader.unknownKeys());
+    return light;
+}
+
+Camera cameraFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                      std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    Camera camera;
+    camera.position = reader.vec3("position", camera.position);
+    camera.target = reader.vec3("target", camera.target);
+    camera.fovYDegrees = reader.number("fovYDegrees", camera.fovYDegrees, {1.0, 179.0});
+    if (camera.position == camera.target) {
+        reader.fail("target", "the camera target equals its position");
+    }
+    appendAll(warnings, reader.unknownKeys());
+    return camera;
+}
+
+DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
+                                const std::string& source, std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    DisplaySettings display;
+    display.exposure = reader.number("exposure", display.exposure, {-20.0, 20.0});
+    const std::string tonemap = reader.string("tonemap", "none");
+    const auto parsed = tonemapFromName(tonemap);
+    if (!parsed) {
+        reader.fail("tonemap", "unknown tone map \"" + tonemap +
+                                   "\" (expected \"none\", \"aces\" or \"reinhard\")");
+    }
+    display.tonemap = *parsed;
+    display.background = reader.vec3("background", display.background, kNonNegative);
+    appendAll(warnings, reader.unknownKeys());
+    return display;
+}
+}  // namespace
+
+Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                          bool requireHeader, std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    if (requireHeader || reader.has("format") || reader.has("version")) {
+        reader.checkFormatAndVersion("patina-material", kMaterialFormatVersion);
+    }
+    Material material;
+    material.name = reader.string("name", material.name);
+    material.baseColor = reader.vec3("baseColor", material.baseColor, kUnit);
+    material.roughness = reader.number("roughness", material.roughness, kUnit);
+    material.specular = reader.number("specular", material.specular, kUnit);
+    material.metallic = reader.number("metallic", material.metallic, kUnit);
+    appendAll(warnings, reader.unknownKeys());
+    return material;
+}
+
+Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    return materialFromJson(readJsonFile(path), "", path.string(), true, warnings);
+}
+
+Scene sceneFromJson(const Json& json, const std::string& source,
+                    const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, "", source);
+    reader.checkFormatAndVersion("patina-scene", kSceneFormatVersion);
+    Scene scene;
+    const std::string mesh = reader.string("mesh", "sphere");
+    const auto meshKind = meshKindFromName(mesh);
+    if (!meshKind) {
+        reader.fail("mesh", "unknown mesh \"" + mesh + "\" (expected \"sphere\" or \"torus\")");
+    }
+    scene.mesh = *meshKind;
+    if (const Json* material = reader.child("material")) {
+        if (material->is_string()) {
+            const std::filesystem::path materialPath = baseDirectory / material->get<std::string>();
+            scene.material = loadMaterialFile(materialPath, warnings);
+        } else {
+            scene.material = materialFromJson(*material, "/material", source, false, warnings);
+        }
+    }
+    if (const Json* camera = reader.child("camera")) {
+        scene.camera = cameraFromJson(*camera, "/camera", source, warnings);
+    }
+    if (const Json* lights = reader.child("lights")) {
+        if (!lights->is_array()) {
+            reader.fail("lights", "expected an array of lights");
+        }
+        if (lights->size() > size_t(shader::MAX_LIGHTS)) {
+            reader.fail("lights", std::to_string(lights->size()) + " lights; at most " +
+                                      std::to_string(shader::MAX_LIGHTS) + " are supported");
+        }
+        for (size_t i = 0; i < lights->size(); ++i) {
+            scene.lights.push_back(
+                lightFromJson((*lights)[i], "/lights/" + std::to_string(i), source, warnings));
+        }
+    } else {
+        scene.lights.clear();
+    }
+    if (const Json* display = reader.child("display")) {
+        scene.display = displayFromJson(*display, "/display", source, warnings);
+    }
+    appendAll(warnings, reader.unknownKeys());
+    return scene;
+}
+
+Scene loadSceneFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    return sceneFromJson(readJsonFile(path), path.string(), path.parent_path(), warnings);
+}
+
+Json materialToJson(const Material& material) {
+    return Json{{"format", "patina-material"},
+                {"version", kMaterialFormatVersion},
+                {"name", material.name},
+                {"baseColor", toJson(material.baseColor)},
+                {"roughness", material.roughness},
+                {"specular", material.specular},
+                {"metallic", material.metallic}};
+}
+
+Json sceneToJson(const Scene& scene) {
+    Json lights = Json::array();
+    for (const Light& light : scene.lights) {
+        Json entry{{"type", lightTypeName(light.type)},
+                   {"name", light.name},
+                   {"enabled", light.enabled},
+                   {"color", toJson(light.color)},
+                   {"intensity", light.intensity}};
+        switch (light.type) {
+        case LightType::Point:
+            entry["position"] = toJson(light.position);
+            entry["radius"] = light.radius;
+            entry["attenuation"] = toJson(light.attenuation);
+            break;
+        case LightType::Directional: entry["direction"] = toJson(light.direction); break;
+        case LightType::Hemisphere:
+            entry["sky"] = toJson(light.sky);
+            entry["ground"] = toJson(light.ground);
+            break;
+        }
+        lights.push_back(entry);
+    }
+    Json material = materialToJson(scene.material);
+    return Json{{"format", "patina-scene"},
+                {"version", kSceneFormatVersion},
+                {"mesh", meshKindName(scene.mesh)},
+                {"material", material},
+                {"camera",
+                 {{"position", toJson(scene.camera.position)},
+                  {"target", toJson(scene.camera.target)},
+                  {"fovYDegrees", scene.camera.fovYDegrees}}},
+                {"lights", lights},
+                {"display",
+                 {{"exposure", scene.display.exposure},
+                  {"tonemap", tonemapName(scene.display.tonemap)},
+                  {"background", toJson(scene.display.background)}}}};
+}
+
+}  // namespace patina

@@ -1,0 +1,28 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "json_reader.h"
+#include "scene.h"
+
+namespace patina {
+
+// Loaders throw InputError and append non-fatal notes (unknown keys) to `warnings`.
+// docs/FORMATS.md describes both formats.
+constexpr int kMaterialFormatVersion = 1;
+constexpr int kSceneFormatVersion = 1;
+
+Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                          bool requireHeader, std::vector<std::string>& warnings);
+Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::string>& warnings);
+
+// A scene's "material" may be a path, resolved relative to `baseDirectory`.
+Scene sceneFromJson(const Json& json, const std::string& source,
+                    const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings);
+Scene loadSceneFile(const std::filesystem::path& path, std::vector<std::string>& warnings);
+
+Json materialToJson(const Material& material);
+Json sceneToJson(const Scene& scene);   // the material inline
+
+}  // namespace patina

@@ -1,0 +1,16 @@
+#pragma once
+// The GLSL in shaders/ compiled as C++: GLM supplies vec3, dot, mix, exp2, ... with GLSL's
+// names and meaning, so these are the very functions the GPU runs.
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+namespace patina::shader {
+using namespace glm;
+using std::sqrt;
+#define PATINA_INLINE inline
+#include "brdf.glsl"
+#include "lights.glsl"
+#include "display.glsl"
+#undef PATINA_INLINE
+}  // namespace patina::shader

@@ -1,0 +1,47 @@
+// Shades the mesh (or, with PATINA_PROBE, one probe row per pixel) in linear light.
+// PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
+// renderer adds the passes with blending (the seed's multi-pass design).
+#ifdef PATINA_PROBE
+flat in vec3 vPosition;
+flat in vec3 vNormal;
+flat in vec3 vView;
+#else
+in vec3 vPosition;
+in vec3 vNormal;
+uniform vec3 uCameraPosition;
+#endif
+
+uniform vec3 uBaseColor;
+uniform float uRoughness;
+uniform float uSpecular;
+uniform float uMetallic;
+
+layout(std140) uniform LightBlock {
+    PackedLight uLights[MAX_LIGHTS];
+    ivec4 uLightCount;
+};
+
+#ifndef PATINA_SINGLE_PASS
+uniform int uLightIndex;
+#endif
+
+out vec4 fragColor;
+
+void main() {
+    SurfaceMaterial material = deriveSurfaceMaterial(uBaseColor, uRoughness, uSpecular, uMetallic);
+    vec3 N = safeNormalize(vNormal);
+#ifdef PATINA_PROBE
+    vec3 V = safeNormalize(vView);
+#else
+    vec3 V = safeNormalize(uCameraPosition - vPosition);
+#endif
+    vec3 radiance = vec3(0.0f);
+#ifdef PATINA_SINGLE_PASS
+    for (int i = 0; i < uLightCount.x; ++i) {
+        radiance += shadeLight(uLights[i], material, vPosition, N, V);
+    }
+#else
+    radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
+#endif
+    fragColor = vec4(radiance, 1.0f);
+}
