@@ -1,0 +1,141 @@
+// The renderer: single- and multi-pass agree, and the default scene shows all three lights.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gl/renderer.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160) {
+    RenderSettings settings;
+    settings.width = size;
+    settings.height = size;
+    settings.passes = passes;
+    return renderer.render(scene, settings);
+}
+
+int maxByteDifference(const LdrImage& a, const LdrImage& b) {
+    int worst = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i) {
+        worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+    }
+    return worst;
+}
+
+double maxHdrRelativeDifference(const HdrImage& a, const HdrImage& b) {
+    double worst = 0.0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        const double scale = std::max({std::abs(double(a.rgb[i])), std::abs(double(b.rgb[i])), 1e-6});
+        worst = std::max(worst, std::abs(double(a.rgb[i]) - double(b.rgb[i])) / scale);
+    }
+    return worst;
+}
+
+Scene manyLightScene(int perType) {
+    Scene scene = defaultScene();
+    scene.lights.clear();
+    for (int i = 0; i < perType; ++i) {
+        const float angle = 6.2831853f * float(i) / float(perType);
+        Light point;
+        point.type = LightType::Point;
+        point.position = {2.5f * std::cos(angle), 1.0f, 2.5f * std::sin(angle) + 1.0f};
+        point.radius = 6.0f;
+        point.intensity = 3.0f;
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = {std::cos(angle), -0.5f, -std::sin(angle)};
+        sun.intensity = 0.3f;
+        Light sky;
+        sky.type = LightType::Hemisphere;
+        sky.sky = {0.1f, 0.1f, 0.2f};
+        scene.lights.insert(scene.lights.end(), {point, sun, sky});
+    }
+    return scene;
+}
+
+TEST(Renderer, SingleAndMultiPassAgree) {
+    test::glContext();
+    Renderer renderer;
+    Scene noLights = defaultScene();
+    noLights.lights.clear();
+    Scene torus = manyLightScene(10);
+    torus.mesh = MeshKind::Torus;
+    struct Case {
+        const char* name;
+        Scene scene;
+    } cases[] = {{"default", defaultScene()}, {"no lights", noLights},
+                 {"30 lights on a torus", torus}};
+    for (const Case& c : cases) {
+        renderer.setMesh(makeMesh(c.scene.mesh));
+        const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single);
+        const RenderOutput multi = renderScene(renderer, c.scene, PassMode::Multi);
+        EXPECT_LE(maxByteDifference(single.ldr, multi.ldr), 1) << c.name;
+        EXPECT_LE(maxHdrRelativeDifference(single.hdr, multi.hdr), 1e-4) << c.name;
+    }
+}
+
+TEST(Renderer, EachLightOfTheDefaultSceneShowsOnTheSphere) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = defaultScene();
+    ASSERT_EQ(scene.lights.size(), 3u);
+    const RenderOutput all = renderScene(renderer, scene, PassMode::Single);
+    const int center = (80 * 160 + 80) * 3;
+    EXPECT_GT(all.hdr.rgb[center], 0.0f);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        Scene without = scene;
+        without.lights[i].enabled = false;
+        const RenderOutput image = renderScene(renderer, without, PassMode::Single);
+        // Each light alone must move many pixels, not a stray one.
+        int changed = 0;
+        for (size_t p = 0; p < all.ldr.rgba.size(); p += 4) {
+            changed += all.ldr.rgba[p] != image.ldr.rgba[p] || all.ldr.rgba[p + 2] != image.ldr.rgba[p + 2];
+        }
+        EXPECT_GT(changed, 500) << scene.lights[i].name;
+    }
+}
+
+TEST(Renderer, BackgroundShowsAroundTheMesh) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = defaultScene();
+    scene.display.background = {0.25f, 0.5f, 0.75f};
+    const RenderOutput image = renderScene(renderer, scene, PassMode::Multi, 64);
+    EXPECT_FLOAT_EQ(image.hdr.rgb[0], 0.25f);
+    EXPECT_FLOAT_EQ(image.hdr.rgb[2], 0.75f);
+}
+
+TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = defaultScene();
+    scene.display.background = {0.5f, 0.5f, 0.5f};
+    auto corner = [&](float exposure, Tonemap tonemap) {
+        scene.display.exposure = exposure;
+        scene.display.tonemap = tonemap;
+        return int(renderScene(renderer, scene, PassMode::Single, 32).ldr.rgba[0]);
+    };
+    // sRGB(0.5) = 0.7354 -> 188; one stop up clips to 255; Reinhard: 0.5 / 1.5 -> sRGB 0.6136 -> 156.
+    EXPECT_NEAR(corner(0.0f, Tonemap::None), 188, 1);
+    EXPECT_EQ(corner(1.0f, Tonemap::None), 255);
+    EXPECT_NEAR(corner(0.0f, Tonemap::Reinhard), 156, 1);
+    EXPECT_LT(corner(1.0f, Tonemap::Aces), 255);
+    // The HDR image is before exposure: unchanged by it.
+    scene.display.exposure = 3.0f;
+    EXPECT_FLOAT_EQ(renderScene(renderer, scene, PassMode::Single, 32).hdr.rgb[0], 0.5f);
+}
+
+TEST(Renderer, RejectsImpossibleSizes) {
+    test::glContext();
+    Renderer renderer;
+    RenderSettings settings;
+    settings.width = 0;
+    EXPECT_THROW(renderer.render(defaultScene(), settings), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace patina

@@ -1,0 +1,131 @@
+// docs/FORMATS.md: material and scene JSON, and the messages for bad files.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "scene_file.h"
+
+namespace patina {
+namespace {
+
+std::string errorOf(const std::string& text, bool scene = true) {
+    std::vector<std::string> warnings;
+    try {
+        const Json json = parseJsonText(text, "test.json");
+        if (scene) {
+            sceneFromJson(json, "test.json", ".", warnings);
+        } else {
+            materialFromJson(json, "", "test.json", true, warnings);
+        }
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+const char* kMaterialHeader = R"("format": "patina-material", "version": 1)";
+
+TEST(MaterialFile, ReadsEveryField) {
+    std::vector<std::string> warnings;
+    const Json json = parseJsonText(std::string("{") + kMaterialHeader +
+                                        R"(, "name": "gold", "baseColor": [1, 0.78, 0.34],
+                                        "roughness": 0.3, "specular": 0.6, "metallic": 1})",
+                                    "gold.json");
+    const Material m = materialFromJson(json, "", "gold.json", true, warnings);
+    EXPECT_EQ(m.name, "gold");
+    EXPECT_FLOAT_EQ(m.baseColor.g, 0.78f);
+    EXPECT_FLOAT_EQ(m.roughness, 0.3f);
+    EXPECT_FLOAT_EQ(m.specular, 0.6f);
+    EXPECT_FLOAT_EQ(m.metallic, 1.0f);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(MaterialFile, RoundTripsThroughJson) {
+    Material m;
+    m.name = "round trip";
+    m.baseColor = {0.123456f, 0.5f, 0.987654f};
+    m.roughness = 0.0123f;
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(materialToJson(m), "", "x", true, warnings), m);
+}
+
+TEST(SceneFile, RoundTripsTheDefaultScene) {
+    std::vector<std::string> warnings;
+    const Scene scene = defaultScene();
+    EXPECT_EQ(sceneFromJson(sceneToJson(scene), "x", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(SceneFile, SyntaxErrorsNameLineAndColumn) {
+    EXPECT_EQ(errorOf("{\n  \"format\": \"patina-scene\",\n  \"version\": 1,\n  oops\n}").substr(0, 16),
+              "test.json:4:3: i");
+}
+
+TEST(SceneFile, WrongValuesNameTheirJsonPointer) {
+    const std::string head = R"({"format": "patina-scene", "version": 1, )";
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "point"}, {"type": "laser"}]})")
+                  .find("/lights/1/type: unknown light type \"laser\""), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "point", "intensity": "bright"}]})")
+                  .find("/lights/0/intensity: expected a number, got string"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "point", "attenuation": [1, -1, 0]}]})")
+                  .find("/lights/0/attenuation/1: value -1 is outside"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("material": {"roughness": 1.5}})").find("/material/roughness"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("camera": {"fovYDegrees": 1e300}})").find("not finite in float"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("mesh": "teapot"})").find("/mesh: unknown mesh"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("display": {"tonemap": "filmic"}})").find("/display/tonemap"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "directional", "direction": [0, 0, 0]}]})")
+                  .find("non-zero direction"), std::string::npos);
+}
+
+TEST(SceneFile, RefusesOtherFormatsAndNewerVersions) {
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1})").find("/format"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 2})").find("newer"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene"})").find("missing required key 'version'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"([1, 2])").find("expected an object"), std::string::npos);
+}
+
+TEST(SceneFile, NanIsNotJson) {
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 1, "display": {"exposure": NaN}})")
+                  .find("test.json:1:"), std::string::npos);
+}
+
+TEST(SceneFile, UnknownKeysAreWarningsNotErrors) {
+    std::vector<std::string> warnings;
+    const Json json = parseJsonText(
+        R"({"format": "patina-scene", "version": 1, "author": "me",
+            "lights": [{"type": "point", "direction": [0, 1, 0]}]})", "s.json");
+    const Scene scene = sceneFromJson(json, "s.json", ".", warnings);
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("/lights/0/direction: unknown key"), std::string::npos);
+    EXPECT_NE(warnings[1].find("/author: unknown key"), std::string::npos);
+    EXPECT_EQ(scene.lights.size(), 1u);
+}
+
+TEST(SceneFile, MaterialPathIsRelativeToTheSceneFile) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "patina_scene_file_test";
+    std::filesystem::create_directories(dir / "materials");
+    std::ofstream(dir / "materials" / "red.json")
+        << R"({"format": "patina-material", "version": 1, "name": "red", "baseColor": [1, 0, 0]})";
+    std::ofstream(dir / "scene.json")
+        << R"({"format": "patina-scene", "version": 1, "material": "materials/red.json"})";
+    std::vector<std::string> warnings;
+    const Scene scene = loadSceneFile(dir / "scene.json", warnings);
+    EXPECT_EQ(scene.material.name, "red");
+    std::ofstream(dir / "broken.json")
+        << R"({"format": "patina-scene", "version": 1, "material": "materials/missing.json"})";
+    try {
+        loadSceneFile(dir / "broken.json", warnings);
+        ADD_FAILURE() << "a missing material file must fail";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("missing.json"), std::string::npos);
+    }
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace patina

@@ -1,0 +1,94 @@
+#include "test_support.h"
+
+#include <algorithm>
+
+namespace patina::test {
+
+HeadlessContext& glContext() {
+    static HeadlessContext context;
+    context.makeCurrent();
+    return context;
+}
+
+reference::Vec3 toReference(glm::vec3 v) {
+    return {double(v.x), double(v.y), double(v.z)};
+}
+
+reference::Material toReference(const Material& material) {
+    return {toReference(material.baseColor), double(material.roughness),
+            double(material.specular), double(material.metallic)};
+}
+
+std::vector<reference::Light> toReference(const std::vector<Light>& lights) {
+    std::vector<reference::Light> result;
+    for (const Light& light : lights) {
+        if (!light.enabled) {
+            continue;
+        }
+        reference::Light r{};
+        r.type = light.type == LightType::Point         ? reference::Light::Point
+                 : light.type == LightType::Directional ? reference::Light::Directional
+                                                        : reference::Light::Hemisphere;
+        r.color = toReference(light.color);
+        r.intensity = light.intensity;
+        r.position = toReference(light.position);
+        r.radius = light.radius;
+        r.ac = light.attenuation.x;
+        r.al = light.attenuation.y;
+        r.aq = light.attenuation.z;
+        r.direction = toReference(light.direction);
+        r.sky = toReference(light.sky);
+        r.ground = toReference(light.ground);
+        result.push_back(r);
+    }
+    return result;
+}
+
+glm::vec3 randomUnitVector(std::mt19937& rng) {
+    std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+    for (;;) {
+        const glm::vec3 v(uniform(rng), uniform(rng), uniform(rng));
+        const float lengthSquared = glm::dot(v, v);
+        if (lengthSquared > 1e-4f && lengthSquared <= 1.0f) {
+            return v / std::sqrt(lengthSquared);
+        }
+    }
+}
+
+namespace {
+template <typename Vec, typename Real>
+Vec vectorAtCosineT(Vec axis, Real cosine, std::mt19937& rng) {
+    Vec side = glm::cross(axis, Vec(randomUnitVector(rng)));
+    while (glm::dot(side, side) < Real(1e-6)) {
+        side = glm::cross(axis, Vec(randomUnitVector(rng)));
+    }
+    side = glm::normalize(side);
+    const Real sine = std::sqrt(std::max(Real(0), Real(1) - cosine * cosine));
+    return glm::normalize(cosine * axis + sine * side);
+}
+}  // namespace
+
+glm::vec3 vectorAtCosine(glm::vec3 axis, float cosine, std::mt19937& rng) {
+    return vectorAtCosineT(axis, cosine, rng);
+}
+
+glm::dvec3 vectorAtCosine(glm::dvec3 axis, double cosine, std::mt19937& rng) {
+    return vectorAtCosineT(axis, cosine, rng);
+}
+
+double maxRelativeError(const std::vector<glm::vec3>& values,
+                        const std::vector<reference::Vec3>& reference, double floor) {
+    double worst = 0.0;
+    for (size_t i = 0; i < values.size(); ++i) {
+        const double expected[3] = {reference[i].x, reference[i].y, reference[i].z};
+        for (int c = 0; c < 3; ++c) {
+            if (std::abs(expected[c]) > floor) {
+                worst = std::max(worst, std::abs(double(values[i][c]) - expected[c]) /
+                                            std::abs(expected[c]));
+            }
+        }
+    }
+    return worst;
+}
+
+}  // namespace patina::test

@@ -1,0 +1,33 @@
+#pragma once
+// Helpers shared by the tests: the one headless GL context, conversions to the double
+// reference, and seeded random directions.
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/headless_context.h"
+#include "probe.h"
+#include "reference_shading.h"
+#include "scene.h"
+
+namespace patina::test {
+
+// Created on first use and kept for the whole test binary (contexts are slow to make).
+HeadlessContext& glContext();
+
+reference::Vec3 toReference(glm::vec3 v);
+reference::Material toReference(const Material& material);
+std::vector<reference::Light> toReference(const std::vector<Light>& lights);
+
+glm::vec3 randomUnitVector(std::mt19937& rng);
+// A unit vector at `cosine` to the unit vector `axis` (to rounding), at a random azimuth.
+glm::vec3 vectorAtCosine(glm::vec3 axis, float cosine, std::mt19937& rng);
+glm::dvec3 vectorAtCosine(glm::dvec3 axis, double cosine, std::mt19937& rng);
+
+// |a - b| / |b| per channel where |b| > floor; the largest one.
+double maxRelativeError(const std::vector<glm::vec3>& values,
+                        const std::vector<reference::Vec3>& reference, double floor);
+
+}  // namespace patina::test
