@@ -11,7 +11,8 @@
 
 namespace patina {
 
-using Json = nlohmann::json;
+// Ordered: files keep their key order when Patina writes them back.
+using Json = nlohmann::ordered_json;
 
 // Parses JSON text; a syntax error becomes an InputError "SOURCE:LINE:COLUMN: ...".
 Json parseJsonText(const std::string& text, const std::string& source);

@@ -39,26 +39,26 @@ Scene defaultScene() {
     key.type = LightType::Point;
     key.name = "warm key";
     key.color = {1.0f, 0.78f, 0.55f};
-    key.intensity = 14.0f;
+    key.intensity = 16.0f;
     key.position = {2.2f, 2.0f, 2.4f};
     key.radius = 12.0f;
     key.attenuation = {1.0f, 0.0f, 1.0f};
 
-    Light rim;
-    rim.type = LightType::Directional;
-    rim.name = "cool rim";
-    rim.color = {0.55f, 0.7f, 1.0f};
-    rim.intensity = 2.0f;
-    rim.direction = {1.0f, -0.35f, -0.6f};
+    Light fill;
+    fill.type = LightType::Directional;
+    fill.name = "cool fill";
+    fill.color = {0.55f, 0.7f, 1.0f};
+    fill.intensity = 2.0f;
+    fill.direction = {1.0f, -0.35f, -0.6f};
 
     Light sky;
     sky.type = LightType::Hemisphere;
     sky.name = "sky";
-    sky.intensity = 1.0f;
+    sky.intensity = 0.8f;
     sky.sky = {0.22f, 0.3f, 0.45f};
     sky.ground = {0.12f, 0.09f, 0.06f};
 
-    scene.lights = {key, rim, sky};
+    scene.lights = {key, fill, sky};
     return scene;
 }
 

@@ -1,5 +1,8 @@
 #include "scene_file.h"
 
+#include <charconv>
+#include <cstdlib>
+
 #include "shading.h"
 
 namespace patina {
@@ -8,8 +11,17 @@ namespace {
 constexpr Range kUnit{0.0, 1.0};
 constexpr Range kNonNegative{0.0, 3.4e38};
 
+// The shortest decimal that reads back as the same float, so files say 0.8, not
+// 0.800000011920929.
+double toJson(float value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text - 1, value);
+    *result.ptr = '\0';
+    return std::strtod(text, nullptr);
+}
+
 Json toJson(glm::vec3 v) {
-    return Json::array({v.x, v.y, v.z});
+    return Json::array({toJson(v.x), toJson(v.y), toJson(v.z)});
 }
 
 template <typename T>
@@ -159,9 +171,9 @@ Json materialToJson(const Material& material) {
                 {"version", kMaterialFormatVersion},
                 {"name", material.name},
                 {"baseColor", toJson(material.baseColor)},
-                {"roughness", material.roughness},
-                {"specular", material.specular},
-                {"metallic", material.metallic}};
+                {"roughness", toJson(material.roughness)},
+                {"specular", toJson(material.specular)},
+                {"metallic", toJson(material.metallic)}};
 }
 
 Json sceneToJson(const Scene& scene) {
@@ -171,11 +183,11 @@ Json sceneToJson(const Scene& scene) {
                    {"name", light.name},
                    {"enabled", light.enabled},
                    {"color", toJson(light.color)},
-                   {"intensity", light.intensity}};
+                   {"intensity", toJson(light.intensity)}};
         switch (light.type) {
         case LightType::Point:
             entry["position"] = toJson(light.position);
-            entry["radius"] = light.radius;
+            entry["radius"] = toJson(light.radius);
             entry["attenuation"] = toJson(light.attenuation);
             break;
         case LightType::Directional: entry["direction"] = toJson(light.direction); break;
@@ -194,10 +206,10 @@ Json sceneToJson(const Scene& scene) {
                 {"camera",
                  {{"position", toJson(scene.camera.position)},
                   {"target", toJson(scene.camera.target)},
-                  {"fovYDegrees", scene.camera.fovYDegrees}}},
+                  {"fovYDegrees", toJson(scene.camera.fovYDegrees)}}},
                 {"lights", lights},
                 {"display",
-                 {{"exposure", scene.display.exposure},
+                 {{"exposure", toJson(scene.display.exposure)},
                   {"tonemap", tonemapName(scene.display.tonemap)},
                   {"background", toJson(scene.display.background)}}}};
 }

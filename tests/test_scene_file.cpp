@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "json_writer.h"
 #include "scene_file.h"
 
 namespace patina {
@@ -125,6 +126,42 @@ TEST(SceneFile, MaterialPathIsRelativeToTheSceneFile) {
         EXPECT_NE(std::string(error.what()).find("missing.json"), std::string::npos);
     }
     std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace patina
+
+namespace patina {
+namespace {
+
+TEST(ShippedFiles, ExampleSceneIsTheEmbeddedDefault) {
+    std::vector<std::string> warnings;
+    const Scene scene =
+        loadSceneFile(std::filesystem::path(PATINA_SOURCE_DIR) / "examples/default_scene.json", warnings);
+    EXPECT_EQ(scene, defaultScene());
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(ShippedFiles, EveryPresetLoadsCleanly) {
+    int presets = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PATINA_SOURCE_DIR) / "presets")) {
+        if (entry.path().extension() != ".json") {
+            continue;
+        }
+        std::vector<std::string> warnings;
+        EXPECT_NO_THROW(loadMaterialFile(entry.path(), warnings)) << entry.path();
+        EXPECT_TRUE(warnings.empty()) << entry.path();
+        ++presets;
+    }
+    EXPECT_GT(presets, 0);
+}
+
+TEST(JsonWriter, WritesWhatReadsBackTheSame) {
+    const Json scene = sceneToJson(defaultScene());
+    const std::string text = prettyJson(scene);
+    EXPECT_EQ(parseJsonText(text, "x"), scene);
+    EXPECT_NE(text.find("\"baseColor\": [0.8, 0.25, 0.15]"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.800000"), std::string::npos);
 }
 
 }  // namespace
