@@ -1,6 +1,7 @@
 #include "renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -102,6 +103,11 @@ struct RenderTarget {
     }
 };
 
+// One render's chain: multisampled float -> resolved float -> display bytes.
+struct Targets {
+    RenderTarget shading, resolved, displayed;
+};
+
 int toneMapIndex(Tonemap tonemap) {
     switch (tonemap) {
     case Tonemap::Aces: return shader::TONEMAP_ACES;
@@ -121,7 +127,7 @@ struct Renderer::State {
     LightBuffer lights;
     MeshBuffers mesh;
     GLuint emptyVertexArray = 0;
-    RenderTarget shading, resolved, displayed;
+    std::array<Targets, kSlots> targets;
     int maxSamples = 0, maxSize = 0;
 };
 
@@ -142,7 +148,7 @@ void Renderer::setMesh(const Mesh& mesh) {
     state_->mesh.upload(mesh);
 }
 
-RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
+unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int slot) {
     State& s = *state_;
     if (settings.width < 1 || settings.height < 1 || settings.width > s.maxSize ||
         settings.height > s.maxSize) {
@@ -150,16 +156,22 @@ RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings
                                     std::to_string(settings.height) + " is outside 1.." +
                                     std::to_string(s.maxSize));
     }
+    if (slot < 0 || slot >= kSlots) {
+        throw std::invalid_argument("render slot " + std::to_string(slot) + " does not exist");
+    }
+    Targets& t = s.targets[size_t(slot)];
     const int w = settings.width, h = settings.height;
     const int samples = std::clamp(settings.samples, 0, s.maxSamples);
     const std::vector<shader::PackedLight> packed = packEnabledLights(scene.lights);
     s.lights.upload(packed);
     s.lights.bind();
 
-    s.shading.ensure(w, h, samples > 1 ? samples : 0, GL_RGBA32F, true);
-    glBindFramebuffer(GL_FRAMEBUFFER, s.shading.framebuffer);
+    t.shading.ensure(w, h, samples > 1 ? samples : 0, GL_RGBA32F, true);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.shading.framebuffer);
     glViewport(0, 0, w, h);
     glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -197,47 +209,57 @@ RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings
     }
 
     // Resolve MSAA into a float texture: the HDR result and the display pass's input.
-    s.resolved.ensure(w, h, 0, GL_RGBA32F, false);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, s.shading.framebuffer);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s.resolved.framebuffer);
+    t.resolved.ensure(w, h, 0, GL_RGBA32F, false);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shading.framebuffer);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.resolved.framebuffer);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 
-    RenderOutput output;
-    output.hdr = {w, h, std::vector<float>(size_t(w) * h * 3)};
-    std::vector<float> rgba(size_t(w) * h * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, s.resolved.framebuffer);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-    for (int y = 0; y < h; ++y) {   // GL rows go bottom to top
-        for (int x = 0; x < w; ++x) {
-            const float* from = &rgba[(size_t(h - 1 - y) * w + x) * 4];
-            std::copy(from, from + 3, &output.hdr.rgb[(size_t(y) * w + x) * 3]);
-        }
-    }
-
-    s.displayed.ensure(w, h, 0, GL_RGBA8, false);
-    glBindFramebuffer(GL_FRAMEBUFFER, s.displayed.framebuffer);
+    t.displayed.ensure(w, h, 0, GL_RGBA8, false);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
     glDisable(GL_DEPTH_TEST);
     s.display.use();
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, s.resolved.color);
+    glBindTexture(GL_TEXTURE_2D, t.resolved.color);
     glUniform1i(s.display.uniform("uHdr"), 0);
     glUniform1f(s.display.uniform("uExposure"), scene.display.exposure);
     glUniform1i(s.display.uniform("uTonemap"), toneMapIndex(scene.display.tonemap));
     glBindVertexArray(s.emptyVertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-
-    output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
-    std::vector<uint8_t> bytes(size_t(w) * h * 4);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    for (int y = 0; y < h; ++y) {
-        std::copy_n(&bytes[size_t(h - 1 - y) * w * 4], size_t(w) * 4, &output.ldr.rgba[size_t(y) * w * 4]);
-    }
+    glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
         throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
     }
+    return t.displayed.color;
+}
+
+RenderOutput Renderer::readBack(int slot) const {
+    const Targets& t = state_->targets.at(size_t(slot));
+    const int w = t.resolved.width, h = t.resolved.height;
+    RenderOutput output;
+    output.hdr = {w, h, std::vector<float>(size_t(w) * h * 3)};
+    output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
+    std::vector<float> rgba(size_t(w) * h * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.resolved.framebuffer);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
+    std::vector<uint8_t> bytes(size_t(w) * h * 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    for (int y = 0; y < h; ++y) {   // GL rows go bottom to top
+        const size_t from = size_t(h - 1 - y) * w, to = size_t(y) * w;
+        for (int x = 0; x < w; ++x) {
+            std::copy_n(&rgba[(from + x) * 4], 3, &output.hdr.rgb[(to + x) * 3]);
+        }
+        std::copy_n(&bytes[from * 4], size_t(w) * 4, &output.ldr.rgba[to * 4]);
+    }
     return output;
+}
+
+RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
+    draw(scene, settings, 0);
+    return readBack(0);
 }
 
 }  // namespace patina

@@ -40,8 +40,17 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
+    // Independent sets of targets, so the editor can keep A and B side by side.
+    static constexpr int kSlots = 2;
+
     void setMesh(const Mesh& mesh);
-    // Throws std::invalid_argument for a size outside [1, max texture size].
+    // Renders into `slot` and returns its display texture (GL_RGBA8, sRGB-encoded, GL's
+    // bottom-up rows), valid until the slot is drawn again at another size. Leaves framebuffer
+    // 0 bound. Throws std::invalid_argument for a size outside [1, max renderbuffer size].
+    unsigned draw(const Scene& scene, const RenderSettings& settings, int slot = 0);
+    // The last draw of `slot`, read back to the CPU with rows top to bottom.
+    RenderOutput readBack(int slot = 0) const;
+    // draw + readBack of slot 0.
     RenderOutput render(const Scene& scene, const RenderSettings& settings);
 
 private:
