@@ -1,0 +1,34 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "image.h"
+#include "scene.h"
+
+namespace patina {
+
+// The keyword under which the editor stores sceneToJson(scene) in its PNGs.
+inline constexpr const char* kSceneTextKeyword = "patina-scene";
+
+// encodePng(image) with one uncompressed iTXt chunk per entry, right after IHDR. Keywords are
+// Latin-1 bytes (1 to 79, printable, no leading, trailing or double spaces); text is UTF-8.
+// Throws std::invalid_argument for a bad keyword or text that is not UTF-8.
+std::vector<uint8_t> encodePngWithText(const LdrImage& image,
+                                       const std::vector<std::pair<std::string, std::string>>& text);
+
+// The tEXt and uncompressed iTXt entries of a PNG, keyword -> UTF-8 text (tEXt's Latin-1 is
+// converted); the first entry wins for a repeated keyword. Compressed entries are skipped.
+// Throws InputError for anything that is not a well-formed PNG chunk stream up to IEND.
+std::map<std::string, std::string> readPngText(const std::vector<uint8_t>& bytes);
+
+// The scene stored under kSceneTextKeyword in a PNG file; nullopt when there is none.
+// Throws InputError naming the file when it is not a PNG or the scene is not valid.
+std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
+                                  std::vector<std::string>& warnings);
+
+}  // namespace patina

@@ -1,0 +1,254 @@
+// PNG text chunks (engine/png_text.h): the scene the editor embeds in its PNGs, and a reader
+// that refuses damaged or hostile files with InputError instead of reading past the buffer.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "image.h"
+#include "input_error.h"
+#include "json_writer.h"
+#include "png_text.h"
+#include "scene_file.h"
+
+namespace patina {
+namespace {
+
+namespace fs = std::filesystem;
+
+LdrImage testImage() {
+    LdrImage image{5, 3, std::vector<uint8_t>(5 * 3 * 4)};
+    for (size_t i = 0; i < image.rgba.size(); ++i) {
+        image.rgba[i] = i % 4 == 3 ? 255 : uint8_t(i * 37);
+    }
+    return image;
+}
+
+// Bit by bit, unlike the engine's table: an independent check of the PNG CRC-32.
+uint32_t referenceCrc(const std::string& bytes) {
+    uint32_t crc = 0xFFFFFFFFu;
+    for (const char c : bytes) {
+        crc ^= uint8_t(c);
+        for (int bit = 0; bit < 8; ++bit) {
+            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+        }
+    }
+    return ~crc;
+}
+
+std::string bigEndian(uint32_t value) {
+    return {char(value >> 24), char(value >> 16), char(value >> 8), char(value)};
+}
+
+std::string chunk(const std::string& type, const std::string& data) {
+    return bigEndian(uint32_t(data.size())) + type + data + bigEndian(referenceCrc(type + data));
+}
+
+// A PNG from encodePng with `extra` chunks inserted after IHDR (8 + 25 bytes).
+std::vector<uint8_t> withChunks(const std::string& extra) {
+    std::vector<uint8_t> png = encodePng(testImage());
+    png.insert(png.begin() + 33, extra.begin(), extra.end());
+    return png;
+}
+
+Scene unusualScene() {
+    Scene scene = defaultScene();
+    scene.mesh = MeshKind::Torus;
+    scene.material.name = "brushed \"gold\" \xc3\xa9";
+    scene.material.baseColor = {1.0f, 0.7812345f, 0.34f};
+    scene.material.roughness = 0.0123f;
+    scene.material.metallic = 1.0f;
+    scene.camera.fovYDegrees = 33.3f;
+    scene.display.tonemap = Tonemap::Aces;
+    scene.display.exposure = -1.25f;
+    scene.lights[0].enabled = false;
+    return scene;
+}
+
+class PngText : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("patina_png_text_" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    fs::path save(const std::string& name, const std::vector<uint8_t>& bytes) const {
+        writeFileAtomic(dir_ / name, bytes);
+        return dir_ / name;
+    }
+
+    std::string sceneError(const std::string& name, const std::vector<uint8_t>& bytes) const {
+        std::vector<std::string> warnings;
+        try {
+            sceneFromPng(save(name, bytes), warnings);
+        } catch (const InputError& error) {
+            return error.what();
+        }
+        return "";
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(PngText, RoundTripsEntriesAndKeepsThePixels) {
+    const std::vector<std::pair<std::string, std::string>> text{
+        {"Title", "a sphere"}, {"Comment", "caf\xc3\xa9 \xe2\x9c\x93\nline two"}, {"Empty", ""}};
+    const std::vector<uint8_t> png = encodePngWithText(testImage(), text);
+    const std::map<std::string, std::string> read = readPngText(png);
+    ASSERT_EQ(read.size(), 3u);
+    for (const auto& [keyword, value] : text) {
+        EXPECT_EQ(read.at(keyword), value) << keyword;
+    }
+    EXPECT_EQ(decodePng(png).rgba, testImage().rgba);
+}
+
+TEST_F(PngText, WritesUncompressedInternationalTextRightAfterIhdr) {
+    const std::vector<uint8_t> png = encodePngWithText(testImage(), {{"k", "v"}});
+    const std::string data("k\0\0\0\0\0v", 7);
+    const std::string expected = chunk("iTXt", data);   // its CRC computed independently
+    ASSERT_GT(png.size(), 33 + expected.size());
+    EXPECT_EQ(std::string(png.begin() + 12, png.begin() + 16), "IHDR");
+    EXPECT_EQ(std::string(png.begin() + 33, png.begin() + 33 + std::ptrdiff_t(expected.size())),
+              expected);
+}
+
+TEST_F(PngText, ReadsLatinOneTextAndSkipsCompressedText) {
+    const std::string compressed("zipped\0\1\0\0\0\x78\x9c", 13);
+    const std::vector<uint8_t> png =
+        withChunks(chunk("tEXt", std::string("Author\0caf\xe9", 11)) + chunk("iTXt", compressed));
+    const std::map<std::string, std::string> read = readPngText(png);
+    EXPECT_EQ(read.size(), 1u);
+    EXPECT_EQ(read.at("Author"), "caf\xc3\xa9");
+}
+
+TEST_F(PngText, TheFirstOfARepeatedKeywordWins) {
+    const std::vector<uint8_t> png = encodePngWithText(testImage(), {{"k", "first"}, {"k", "second"}});
+    EXPECT_EQ(readPngText(png).at("k"), "first");
+}
+
+TEST_F(PngText, RefusesBadKeywordsAndText) {
+    for (const std::string& keyword :
+         {std::string(), std::string(80, 'k'), std::string(" lead"), std::string("trail "),
+          std::string("two  spaces"), std::string("tab\there"), std::string("nul\0x", 5),
+          std::string("del\x7f"), std::string("nbsp\xa0")}) {
+        EXPECT_THROW(encodePngWithText(testImage(), {{keyword, "v"}}), std::invalid_argument)
+            << keyword;
+    }
+    EXPECT_NO_THROW(encodePngWithText(testImage(), {{std::string(79, 'k'), "v"}}));
+    EXPECT_NO_THROW(encodePngWithText(testImage(), {{"Latin-1 \xe9t\xe9", "v"}}));
+    for (const std::string text : {"\xff", "\xc3", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80"}) {
+        EXPECT_THROW(encodePngWithText(testImage(), {{"k", text}}), std::invalid_argument);
+    }
+}
+
+TEST_F(PngText, RestoresTheSameSceneExactly) {
+    const Scene scene = unusualScene();
+    const std::string json = prettyJson(sceneToJson(scene));
+    const fs::path file =
+        save("scene.png", encodePngWithText(testImage(), {{kSceneTextKeyword, json}}));
+    std::vector<std::string> warnings;
+    const std::optional<Scene> restored = sceneFromPng(file, warnings);
+    ASSERT_TRUE(restored.has_value());
+    EXPECT_EQ(*restored, scene);
+    EXPECT_NE(*restored, defaultScene());
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST_F(PngText, APngWithoutASceneGivesNothing) {
+    std::vector<std::string> warnings;
+    const fs::path plain = save("plain.png", encodePng(testImage()));
+    EXPECT_FALSE(sceneFromPng(plain, warnings).has_value());
+    const fs::path other = save("other.png", encodePngWithText(testImage(), {{"Title", "x"}}));
+    EXPECT_FALSE(sceneFromPng(other, warnings).has_value());
+}
+
+TEST_F(PngText, RefusesCorruptedChunks) {
+    std::vector<uint8_t> png = encodePngWithText(testImage(), {{"k", "some text"}});
+    png[33 + 8 + 8] ^= 0x01;   // a byte of the text: the CRC no longer matches
+    try {
+        readPngText(png);
+        FAIL() << "a corrupted chunk was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("chunk 'iTXt' fails its CRC-32 check"),
+                  std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("at byte 33"), std::string::npos) << error.what();
+    }
+    EXPECT_NE(sceneError("bad_crc.png", png).find("bad_crc.png: malformed PNG"), std::string::npos);
+}
+
+TEST_F(PngText, RefusesEveryTruncation) {
+    const std::vector<uint8_t> png = encodePngWithText(testImage(), {{"k", "some text"}});
+    ASSERT_NO_THROW(readPngText(png));
+    for (size_t size = 0; size < png.size(); ++size) {
+        const std::vector<uint8_t> cut(png.begin(), png.begin() + std::ptrdiff_t(size));
+        EXPECT_THROW(readPngText(cut), InputError) << size << " bytes";
+    }
+}
+
+TEST_F(PngText, RefusesHostileChunkHeaders) {
+    const std::vector<uint8_t> png = encodePng(testImage());
+    std::vector<uint8_t> huge = png;
+    huge[33] = huge[34] = huge[35] = huge[36] = 0xFF;   // the chunk after IHDR claims 4 GiB
+    EXPECT_THROW(readPngText(huge), InputError);
+    std::vector<uint8_t> badType = png;
+    badType[38] = '?';
+    EXPECT_THROW(readPngText(badType), InputError);
+    // Text chunks whose fields run past their end.
+    for (const std::string& data : {std::string("no terminator"), std::string("\0empty", 6),
+                                   std::string("k\0", 2), std::string("k\0\0\0lang", 8),
+                                   std::string("k\0\0\0lang\0trans", 14),
+                                   std::string("k\0\2\0\0\0x", 7), std::string("k\0\0\0\0\0\xff", 7)}) {
+        EXPECT_THROW(readPngText(withChunks(chunk("iTXt", data))), InputError) << data;
+    }
+    EXPECT_THROW(readPngText(withChunks(chunk("tEXt", "no terminator"))), InputError);
+    EXPECT_THROW(readPngText(withChunks(chunk("tEXt", std::string(80, 'k') + '\0'))), InputError);
+    // A valid chunk stream that does not start with IHDR.
+    std::vector<uint8_t> noHeader(png.begin(), png.begin() + 8);
+    const std::string end = chunk("IEND", "");
+    noHeader.insert(noHeader.end(), end.begin(), end.end());
+    EXPECT_THROW(readPngText(noHeader), InputError);
+}
+
+TEST_F(PngText, RefusesEverySingleByteChange) {
+    // Signature, lengths, types, data and CRCs: nothing follows IEND, so every change shows.
+    const std::vector<uint8_t> png = encodePngWithText(testImage(), {{"k", "text"}});
+    for (size_t i = 0; i < png.size(); ++i) {
+        for (const uint8_t value : {uint8_t(0x00), uint8_t(0x80), uint8_t(0xFF)}) {
+            std::vector<uint8_t> changed = png;
+            changed[i] = value;
+            if (changed != png) {
+                EXPECT_THROW(readPngText(changed), InputError) << "byte " << i;
+            }
+        }
+    }
+}
+
+TEST_F(PngText, RefusesFilesThatAreNotPngs) {
+    const std::string json = "{\"format\": \"patina-scene\", \"version\": 1}";
+    const std::string error = sceneError("scene.json", std::vector<uint8_t>(json.begin(), json.end()));
+    EXPECT_NE(error.find("scene.json: not a PNG file"), std::string::npos) << error;
+    EXPECT_NE(sceneError("empty.png", {}).find("not a PNG file"), std::string::npos);
+    std::vector<std::string> warnings;
+    EXPECT_THROW(sceneFromPng(dir_ / "missing.png", warnings), InputError);
+}
+
+TEST_F(PngText, RefusesABadEmbeddedScene) {
+    auto withScene = [](const std::string& json) {
+        return encodePngWithText(testImage(), {{kSceneTextKeyword, json}});
+    };
+    std::string error = sceneError("syntax.png", withScene("{\"format\": "));
+    EXPECT_NE(error.find("syntax.png (patina-scene):1:"), std::string::npos) << error;
+    error = sceneError("value.png", withScene(R"({"format": "patina-scene", "version": 1,
+                                                  "material": {"roughness": 3}})"));
+    EXPECT_NE(error.find("value.png (patina-scene): /material/roughness"), std::string::npos) << error;
+    error = sceneError("path.png", withScene(R"({"format": "patina-scene", "version": 1,
+                                                 "material": "../../etc/passwd"})"));
+    EXPECT_NE(error.find("/material: an embedded scene must hold its material inline"),
+              std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace patina
