@@ -10,5 +10,7 @@ using Command = std::function<void()>;
 Command addRenderCommand(CLI::App& app);
 Command addProbeCommand(CLI::App& app);
 Command addLobeCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
+Command addSheetCommand(CLI::App& app);
 
 }  // namespace patina::cli

@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
-                     patina::cli::addLobeCommand}) {
+                     patina::cli::addLobeCommand, patina::cli::addCompareCommand,
+                     patina::cli::addSheetCommand}) {
         patina::cli::Command run = add(app);
         commands.emplace_back(app.get_subcommands({}).back(), std::move(run));
     }

@@ -1,0 +1,64 @@
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include "cli.h"
+#include "compositing.h"
+#include "inputs.h"
+#include "material_renders.h"
+
+namespace patina::cli {
+
+namespace {
+
+// "gold  r 0.30 s 0.50 m 1.00  base 1.00 0.78 0.34", the name cut first so the numbers stay.
+std::string describe(const Material& material, int panelWidth) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, "  r %.2f s %.2f m %.2f  base %.2f %.2f %.2f",
+                  material.roughness, material.specular, material.metallic,
+                  material.baseColor.r, material.baseColor.g, material.baseColor.b);
+    const int scale = captionScale(panelWidth);
+    const int room = panelWidth - 2 * kCaptionPadding * scale - textWidth(numbers, scale);
+    return fitText(material.name, std::max(room, textWidth("...", scale)), scale) + numbers;
+}
+
+}  // namespace
+
+Command addCompareCommand(CLI::App& app) {
+    struct Options {
+        std::string scenePath, a, b, out;
+        int width = 512, height = 512;
+        bool diff = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "compare", "Render two materials in one scene side by side, captioned, as a PNG");
+    command->add_option("A", options->a, "Material JSON on the left")->required();
+    command->add_option("B", options->b, "Material JSON on the right")->required();
+    command->add_option("--scene", options->scenePath, "Scene JSON (default: the embedded scene)");
+    command->add_option("--width", options->width, "Width of each panel")->check(CLI::Range(1, 4096));
+    command->add_option("--height", options->height, "Height of each panel")->check(CLI::Range(1, 4096));
+    command->add_option("--out", options->out, "Output PNG")->required();
+    command->add_flag("--diff", options->diff, "Add a third panel: the difference as a heat map");
+    return [options] {
+        SceneInputs inputs;
+        inputs.scenePath = options->scenePath;
+        const Scene scene = inputs.load();
+        const std::vector<Material> materials = loadMaterials({options->a, options->b});
+        std::vector<LdrImage> panels =
+            renderMaterials(scene, materials, options->width, options->height);
+        std::vector<std::string> captions{describe(materials[0], options->width),
+                                          describe(materials[1], options->width)};
+        if (options->diff) {
+            const DifferenceStats stats = differenceStats(panels[0], panels[1]);
+            char caption[96];
+            std::snprintf(caption, sizeof caption, "difference  max %d  mean %.2f (of 255)",
+                          stats.max, stats.mean);
+            panels.push_back(differenceHeatMap(panels[0], panels[1]));
+            captions.emplace_back(caption);
+        }
+        writeOutput(options->out, encodePng(contactSheet(panels, captions, int(panels.size()))));
+    };
+}
+
+}  // namespace patina::cli

@@ -1,0 +1,48 @@
+#include <memory>
+#include <stdexcept>
+
+#include "cli.h"
+#include "compositing.h"
+#include "input_error.h"
+#include "inputs.h"
+#include "material_renders.h"
+
+namespace patina::cli {
+
+Command addSheetCommand(CLI::App& app) {
+    struct Options {
+        std::string scenePath, out;
+        std::vector<std::string> materials;
+        int columns = 4, size = 256;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "sheet", "Render materials in one scene as a captioned contact sheet PNG");
+    command->add_option("materials", options->materials, "Material JSON files")->required();
+    command->add_option("--out", options->out, "Output PNG")->required();
+    command->add_option("--columns", options->columns, "Cells per row")->check(CLI::Range(1, 256));
+    command->add_option("--size", options->size, "Width and height of each cell")
+        ->check(CLI::Range(1, 4096));
+    command->add_option("--scene", options->scenePath, "Scene JSON (default: the embedded scene)");
+    return [options] {
+        SceneInputs inputs;
+        inputs.scenePath = options->scenePath;
+        const Scene scene = inputs.load();
+        const std::vector<Material> materials = loadMaterials(options->materials);
+        try {   // refuse an oversized sheet before rendering anything
+            sheetLayout(options->size, options->size, int(materials.size()), options->columns);
+        } catch (const std::invalid_argument& error) {
+            throw InputError(std::string("the sheet is too large: ") + error.what() +
+                             "; use a smaller --size or other --columns");
+        }
+        const std::vector<LdrImage> cells =
+            renderMaterials(scene, materials, options->size, options->size);
+        std::vector<std::string> names;
+        for (const Material& material : materials) {
+            names.push_back(material.name);
+        }
+        writeOutput(options->out, encodePng(contactSheet(cells, names, options->columns)));
+    };
+}
+
+}  // namespace patina::cli
