@@ -9,21 +9,6 @@
 
 namespace patina::cli {
 
-namespace {
-
-// "gold  r 0.30 s 0.50 m 1.00  base 1.00 0.78 0.34", the name cut first so the numbers stay.
-std::string describe(const Material& material, int panelWidth) {
-    char numbers[96];
-    std::snprintf(numbers, sizeof numbers, "  r %.2f s %.2f m %.2f  base %.2f %.2f %.2f",
-                  material.roughness, material.specular, material.metallic,
-                  material.baseColor.r, material.baseColor.g, material.baseColor.b);
-    const int scale = captionScale(panelWidth);
-    const int room = panelWidth - 2 * kCaptionPadding * scale - textWidth(numbers, scale);
-    return fitText(material.name, std::max(room, textWidth("...", scale)), scale) + numbers;
-}
-
-}  // namespace
-
 Command addCompareCommand(CLI::App& app) {
     struct Options {
         std::string scenePath, a, b, out;
@@ -47,8 +32,8 @@ Command addCompareCommand(CLI::App& app) {
         const std::vector<Material> materials = loadMaterials({options->a, options->b});
         std::vector<LdrImage> panels =
             renderMaterials(scene, materials, options->width, options->height);
-        std::vector<std::string> captions{describe(materials[0], options->width),
-                                          describe(materials[1], options->width)};
+        std::vector<std::string> captions{materialCaption(materials[0], options->width),
+                                          materialCaption(materials[1], options->width)};
         if (options->diff) {
             const DifferenceStats stats = differenceStats(panels[0], panels[1]);
             char caption[96];

@@ -1,13 +1,18 @@
-// patina: the command line. Exit codes: 0 success, 2 usage error, 3 bad input (a file or value
+// patina: the editor (no subcommand) and the command line. Exit codes: 0 success, 2 usage error, 3 bad input (a file or value
 // that cannot be used; the message names it), 1 anything else (e.g. no OpenGL).
+#include <filesystem>
 #include <iostream>
 
 #include "cli.h"
+#include "editor_app.h"
 #include "input_error.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"Patina: a live editor for physically based materials (Karis 2013 shading)"};
-    app.require_subcommand(1);
+    app.require_subcommand(0, 1);
+    patina::editor::EditorOptions editor;
+    app.add_option("file", editor.files, "Without a subcommand: open the editor on this material, scene or "
+                                         "Patina screenshot (PNG)");
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
                      patina::cli::addLobeCommand, patina::cli::addCompareCommand,
@@ -20,6 +25,15 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         const int code = app.exit(error);
         return code == 0 ? 0 : 2;
+    }
+    if (app.get_subcommands().empty()) {
+        for (const std::string& file : editor.files) {
+            if (!std::filesystem::is_regular_file(file)) {
+                std::cerr << "error: " << file << ": no such file (nor a subcommand; see patina --help)\n";
+                return 3;
+            }
+        }
+        return patina::editor::runEditor(editor);
     }
     try {
         for (auto& [subcommand, run] : commands) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -153,6 +154,16 @@ Rgb8 heatColour(int difference) {
     };
     const Rgb8 from = kStops[size_t(segment)], to = kStops[size_t(segment) + 1];
     return {mix(from.r, to.r), mix(from.g, to.g), mix(from.b, to.b)};
+}
+
+std::string materialCaption(const Material& material, int panelWidth) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, "  r %.2f s %.2f m %.2f  base %.2f %.2f %.2f",
+                  double(material.roughness), double(material.specular), double(material.metallic),
+                  double(material.baseColor.r), double(material.baseColor.g), double(material.baseColor.b));
+    const int scale = captionScale(panelWidth);
+    const int room = panelWidth - 2 * kCaptionPadding * scale - textWidth(numbers, scale);
+    return fitText(material.name, std::max(room, textWidth("...", scale)), scale) + numbers;
 }
 
 }  // namespace patina

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "caption.h"
+#include "material.h"
 #include "image.h"
 
 namespace patina {
@@ -34,6 +35,10 @@ SheetLayout sheetLayout(int cellWidth, int cellHeight, int count, int columns);
 // Throws std::invalid_argument for no cells, a name count that differs, or a bad image.
 LdrImage contactSheet(const std::vector<LdrImage>& cells, const std::vector<std::string>& names,
                       int columns);
+// "name  r 0.30 s 0.50 m 1.00  base 1.00 0.78 0.34": the name cut with "..." so that the
+// numbers always fit the caption of a panel this wide.
+std::string materialCaption(const Material& material, int panelWidth);
+
 // a and b next to each other, captioned: a two-column contact sheet.
 LdrImage sideBySide(const LdrImage& a, const LdrImage& b, const std::string& captionA,
                     const std::string& captionB);

@@ -25,6 +25,14 @@ PATINA_INLINE float srgbEncode(float linear) {
     return 1.055f * exp2(log2(linear) / 2.4f) - 0.055f;
 }
 
+// Inverse of srgbEncode (IEC 61966-2-1), for colour pickers that show sRGB and store linear.
+PATINA_INLINE float srgbDecode(float encoded) {
+    if (encoded <= 0.04045f) {
+        return encoded / 12.92f;
+    }
+    return exp2(2.4f * log2((encoded + 0.055f) / 1.055f));
+}
+
 // Exposure in stops (x 2^exposure), then the tone map, then sRGB. Negative or NaN radiance
 // (never produced by the shading guards, but possible from a bad HDR input) displays as 0.
 PATINA_INLINE vec3 displayTransform(vec3 linear, float exposureStops, int tonemap) {

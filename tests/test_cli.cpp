@@ -109,7 +109,8 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(run("render").exitCode, 2);                                   // no --out
     EXPECT_EQ(run("render --passes triple --out x.png").exitCode, 2);
     EXPECT_EQ(run("render --width 0 --out x.png").exitCode, 2);
-    EXPECT_EQ(run("paint").exitCode, 2);
+    EXPECT_EQ(run("--paint").exitCode, 2);
+    EXPECT_EQ(run("paint").exitCode, 3);   // not a subcommand: a file for the editor, missing
     EXPECT_EQ(run("render --help").exitCode, 0);
     EXPECT_EQ(run("probe --help").exitCode, 0);
     EXPECT_EQ(run("lobe --help").exitCode, 0);

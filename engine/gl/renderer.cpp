@@ -128,6 +128,9 @@ struct Renderer::State {
     MeshBuffers mesh;
     GLuint emptyVertexArray = 0;
     std::array<Targets, kSlots> targets;
+    GLuint timerQuery = 0;
+    bool timerPending = false;
+    double gpuMilliseconds = -1.0;
     int maxSamples = 0, maxSize = 0;
 };
 
@@ -135,13 +138,30 @@ Renderer::Renderer() : state_(std::make_unique<State>()) {
     LightBuffer::attach(state_->single);
     LightBuffer::attach(state_->multi);
     glGenVertexArrays(1, &state_->emptyVertexArray);
+    glGenQueries(1, &state_->timerQuery);
     glGetIntegerv(GL_MAX_SAMPLES, &state_->maxSamples);
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &state_->maxSize);
     setMesh(makeUvSphere());
 }
 
 Renderer::~Renderer() {
+    glDeleteQueries(1, &state_->timerQuery);
     glDeleteVertexArrays(1, &state_->emptyVertexArray);
+}
+
+double Renderer::lastGpuMilliseconds() {
+    State& s = *state_;
+    if (s.timerPending) {
+        GLint available = 0;
+        glGetQueryObjectiv(s.timerQuery, GL_QUERY_RESULT_AVAILABLE, &available);
+        if (available) {
+            GLuint64 nanoseconds = 0;
+            glGetQueryObjectui64v(s.timerQuery, GL_QUERY_RESULT, &nanoseconds);
+            s.gpuMilliseconds = double(nanoseconds) * 1e-6;
+            s.timerPending = false;
+        }
+    }
+    return s.gpuMilliseconds;
 }
 
 void Renderer::setMesh(const Mesh& mesh) {
@@ -166,6 +186,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     s.lights.upload(packed);
     s.lights.bind();
 
+    // One query in flight: a draw while the last is unread goes untimed.
+    lastGpuMilliseconds();
+    const bool timed = !s.timerPending;
+    if (timed) {
+        glBeginQuery(GL_TIME_ELAPSED, s.timerQuery);
+    }
     t.shading.ensure(w, h, samples > 1 ? samples : 0, GL_RGBA32F, true);
     glBindFramebuffer(GL_FRAMEBUFFER, t.shading.framebuffer);
     glViewport(0, 0, w, h);
@@ -227,6 +253,10 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timed) {
+        glEndQuery(GL_TIME_ELAPSED);
+        s.timerPending = true;
+    }
     if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
         throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
     }

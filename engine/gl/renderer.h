@@ -50,6 +50,9 @@ public:
     unsigned draw(const Scene& scene, const RenderSettings& settings, int slot = 0);
     // The last draw of `slot`, read back to the CPU with rows top to bottom.
     RenderOutput readBack(int slot = 0) const;
+    // GPU time of the most recent draw whose timer query has completed (GL_TIME_ELAPSED,
+    // read without waiting), in milliseconds; negative before the first.
+    double lastGpuMilliseconds();
     // draw + readBack of slot 0.
     RenderOutput render(const Scene& scene, const RenderSettings& settings);
 

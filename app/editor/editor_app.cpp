@@ -1,0 +1,147 @@
+#include "editor_app.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "editor_settings.h"
+#include "panels.h"
+#include "widgets.h"
+
+#ifndef PATINA_PRESETS_DIR
+#define PATINA_PRESETS_DIR "presets"
+#endif
+
+namespace patina::editor {
+
+namespace {
+// Files dropped on the window and key presses, handled by the next frame.
+std::vector<std::filesystem::path> droppedFiles;
+KeyPresses keyPresses;
+
+// Installed before ImGui's, which calls it after its own (imgui_impl_glfw chains callbacks).
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+        keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
+    }
+}
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) {
+        droppedFiles.emplace_back(paths[i]);
+    }
+}
+
+// After input, ImGui needs a couple of frames to settle (hover, popups): draw this many more,
+// then sleep in glfwWaitEvents until the next event.
+constexpr int kFramesAfterInput = 3;
+}  // namespace
+
+int runEditor(const EditorOptions& options) {
+    if (!glfwInit()) {
+        std::cerr << "error: cannot open a window (no display?). The command line works without one: "
+                     "patina --help\n";
+        return 1;
+    }
+    EditorState state;
+    WindowGeometry geometry;
+    const std::filesystem::path settingsFile = configFolder() / "settings.json";
+    loadSettings(state, geometry, settingsFile);
+    state.presetFolders = {PATINA_PRESETS_DIR, configFolder() / "presets"};
+
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(geometry.width, geometry.height, "Patina", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "error: cannot create an OpenGL 3.3 window\n";
+        glfwTerminate();
+        return 1;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    glfwSetDropCallback(window, onDrop);
+    glfwSetKeyCallback(window, onKey);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;   // panel sizes persist in settings.json instead
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    int exitCode = 0;
+    {
+        EditorServices services;
+        for (const std::string& file : options.files) {
+            openFile(state, file);
+        }
+        const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
+        std::string title;
+        int framesLeft = kFramesAfterInput;
+        while (!state.quitConfirmed) {
+            if (framesLeft <= 0) {
+                glfwWaitEvents();
+                framesLeft = kFramesAfterInput;
+            } else {
+                glfwPollEvents();
+            }
+            --framesLeft;
+            if (glfwWindowShouldClose(window)) {
+                glfwSetWindowShouldClose(window, GLFW_FALSE);
+                state.pendingQuit = true;
+            }
+            for (const std::filesystem::path& path : droppedFiles) {
+                requestOpen(state, path);
+            }
+            droppedFiles.clear();
+            services.keyPresses.swap(keyPresses);
+            keyPresses.clear();
+
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            try {
+                drawEditorFrame(state, services);
+            } catch (const std::exception& error) {
+                state.error = error.what();   // e.g. a render target the GL cannot make
+            }
+            ImGui::Render();
+            int width = 0, height = 0;
+            glfwGetFramebufferSize(window, &width, &height);
+            glViewport(0, 0, width, height);
+            glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            glfwSwapBuffers(window);
+
+            if (const std::string wanted = windowTitle(state); wanted != title) {
+                glfwSetWindowTitle(window, wanted.c_str());
+                title = wanted;
+            }
+            if (layoutDump) {
+                std::ofstream(layoutDump) << layoutJson();
+            }
+        }
+        glfwGetWindowSize(window, &geometry.width, &geometry.height);
+        if (!saveSettings(state, geometry, settingsFile)) {
+            std::cerr << "warning: " << state.error << "\n";
+        }
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return exitCode;
+}
+
+}  // namespace patina::editor

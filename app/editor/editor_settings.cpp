@@ -1,0 +1,81 @@
+#include "editor_settings.h"
+
+#include <cstdlib>
+
+#include "image.h"
+#include "json_writer.h"
+#include "scene_file.h"
+
+namespace patina::editor {
+
+std::filesystem::path configFolder() {
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) {
+        return std::filesystem::path(xdg) / "patina";
+    }
+    const char* home = std::getenv("HOME");
+    return std::filesystem::path(home && *home ? home : ".") / ".config" / "patina";
+}
+
+void loadSettings(EditorState& state, WindowGeometry& window, const std::filesystem::path& file) {
+    if (!std::filesystem::exists(file)) {
+        return;
+    }
+    try {
+        const Json json = readJsonFile(file);
+        std::vector<std::string> warnings;
+        JsonObjectReader reader(json, "", file.string());
+        window.width = reader.integer("windowWidth", window.width, {320, 16384});
+        window.height = reader.integer("windowHeight", window.height, {240, 16384});
+        state.layout.leftWidth = reader.number("leftPanelWidth", state.layout.leftWidth, {100, 4000});
+        state.layout.rightWidth = reader.number("rightPanelWidth", state.layout.rightWidth, {100, 4000});
+        state.layout.lobeHeight = reader.number("lobePanelHeight", state.layout.lobeHeight, {60, 4000});
+        state.screenshotFolder = reader.string("screenshotFolder", state.screenshotFolder.string());
+        if (const Json* recent = reader.child("recentFiles"); recent && recent->is_array()) {
+            state.recentFiles.clear();
+            for (const Json& entry : *recent) {
+                if (entry.is_string()) {
+                    state.recentFiles.emplace_back(entry.get<std::string>());
+                }
+            }
+        }
+        if (const Json* material = reader.child("lastMaterial")) {
+            state.scene.material = materialFromJson(*material, "/lastMaterial", file.string(), true, warnings);
+            state.savedMaterial = state.scene.material;
+            state.committed = state.snapshot();
+        }
+        if (reader.has("lastMaterialPath")) {
+            state.materialPath = reader.string("lastMaterialPath", "");
+        }
+    } catch (const std::exception& error) {
+        state.error = "Settings ignored: " + std::string(error.what());
+    }
+}
+
+bool saveSettings(EditorState& state, const WindowGeometry& window, const std::filesystem::path& file) {
+    Json recent = Json::array();
+    for (const std::filesystem::path& path : state.recentFiles) {
+        recent.push_back(path.string());
+    }
+    const Json json{{"windowWidth", window.width},
+                    {"windowHeight", window.height},
+                    {"leftPanelWidth", state.layout.leftWidth},
+                    {"rightPanelWidth", state.layout.rightWidth},
+                    {"lobePanelHeight", state.layout.lobeHeight},
+                    {"screenshotFolder", state.screenshotFolder.string()},
+                    {"recentFiles", recent},
+                    // The material as it is now (saved or not), and where it was saved, so a
+                    // new session resumes; "dirty" is not restored: the file on disk decides.
+                    {"lastMaterial", materialToJson(state.scene.material)},
+                    {"lastMaterialPath", state.materialPath.string()}};
+    try {
+        std::filesystem::create_directories(file.parent_path());
+        const std::string text = prettyJson(json);
+        writeFileAtomic(file, std::vector<uint8_t>(text.begin(), text.end()));
+        return true;
+    } catch (const std::exception& error) {
+        state.error = "Could not save settings: " + std::string(error.what());
+        return false;
+    }
+}
+
+}  // namespace patina::editor

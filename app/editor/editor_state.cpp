@@ -1,0 +1,248 @@
+#include "editor_state.h"
+
+#include <algorithm>
+
+#include "image.h"
+#include "input_error.h"
+#include "json_writer.h"
+#include "png_text.h"
+#include "scene_file.h"
+#include "shading.h"
+
+namespace patina::editor {
+
+namespace {
+constexpr size_t kRecentFiles = 10;
+
+bool validIndex(const EditorState& state, int index) {
+    return index >= 0 && index < int(state.scene.lights.size());
+}
+
+std::string joinWarnings(const std::vector<std::string>& warnings) {
+    std::string text;
+    for (const std::string& warning : warnings) {
+        text += (text.empty() ? "" : "\n") + warning;
+    }
+    return text;
+}
+}  // namespace
+
+std::string windowTitle(const EditorState& state) {
+    const std::string name =
+        state.materialPath.empty() ? state.scene.material.name : state.materialPath.filename().string();
+    return (state.dirty() ? "*" : "") + name + " - Patina";
+}
+
+void commitEdits(EditorState& state) {
+    EditSnapshot current = state.snapshot();
+    if (current != state.committed) {
+        state.history.record(std::move(state.committed));
+        state.committed = std::move(current);
+    }
+}
+
+namespace {
+void restore(EditorState& state, const EditSnapshot& snapshot) {
+    state.scene.material = snapshot.material;
+    state.scene.lights = snapshot.lights;
+    state.committed = snapshot;
+    const int count = int(state.scene.lights.size());
+    state.selectedLight = std::clamp(state.selectedLight, count ? 0 : -1, count - 1);
+    if (state.soloLight >= count) {
+        state.soloLight = -1;
+    }
+}
+}  // namespace
+
+void undo(EditorState& state) {
+    commitEdits(state);
+    if (auto previous = state.history.undo(state.snapshot())) {
+        restore(state, *previous);
+    }
+}
+
+void redo(EditorState& state) {
+    commitEdits(state);
+    if (auto next = state.history.redo(state.snapshot())) {
+        restore(state, *next);
+    }
+}
+
+void addLight(EditorState& state, LightType type) {
+    if (state.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
+        state.error = "A scene holds at most " + std::to_string(shader::MAX_LIGHTS) + " lights.";
+        return;
+    }
+    Light light;
+    light.type = type;
+    light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
+    if (type == LightType::Point) {
+        light.position = {1.5f, 1.5f, 1.5f};
+        light.radius = 10.0f;
+        light.intensity = 8.0f;
+    } else if (type == LightType::Directional) {
+        light.direction = {-0.5f, -0.7f, -0.5f};
+        light.intensity = 2.0f;
+    } else {
+        light.sky = {0.3f, 0.4f, 0.6f};
+        light.ground = {0.1f, 0.08f, 0.06f};
+    }
+    applyEdit(state, [&](EditorState& s) { s.scene.lights.push_back(light); });
+    state.selectedLight = int(state.scene.lights.size()) - 1;
+}
+
+void duplicateLight(EditorState& state, int index) {
+    if (!validIndex(state, index) || state.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
+        return;
+    }
+    Light copy = state.scene.lights[size_t(index)];
+    copy.name += " copy";
+    applyEdit(state, [&](EditorState& s) { s.scene.lights.insert(s.scene.lights.begin() + index + 1, copy); });
+    state.selectedLight = index + 1;
+}
+
+void deleteLight(EditorState& state, int index) {
+    if (!validIndex(state, index)) {
+        return;
+    }
+    applyEdit(state, [&](EditorState& s) { s.scene.lights.erase(s.scene.lights.begin() + index); });
+    if (state.soloLight == index) {
+        state.soloLight = -1;
+    } else if (state.soloLight > index) {
+        --state.soloLight;
+    }
+    state.selectedLight = std::min(state.selectedLight, int(state.scene.lights.size()) - 1);
+}
+
+void moveLight(EditorState& state, int index, int delta) {
+    const int target = index + delta;
+    if (!validIndex(state, index) || !validIndex(state, target)) {
+        return;
+    }
+    applyEdit(state, [&](EditorState& s) {
+        std::swap(s.scene.lights[size_t(index)], s.scene.lights[size_t(target)]);
+    });
+    if (state.selectedLight == index) {
+        state.selectedLight = target;
+    }
+    if (state.soloLight == index) {
+        state.soloLight = target;
+    } else if (state.soloLight == target) {
+        state.soloLight = index;
+    }
+}
+
+void renameLight(EditorState& state, int index, const std::string& name) {
+    if (validIndex(state, index)) {
+        applyEdit(state, [&](EditorState& s) { s.scene.lights[size_t(index)].name = name; });
+    }
+}
+
+void toggleSolo(EditorState& state, int index) {
+    state.soloLight = state.soloLight == index ? -1 : index;
+}
+
+Scene renderedScene(const EditorState& state) {
+    Scene scene = state.scene;
+    if (validIndex(state, state.soloLight)) {
+        for (size_t i = 0; i < scene.lights.size(); ++i) {
+            scene.lights[i].enabled = int(i) == state.soloLight;
+        }
+    }
+    return scene;
+}
+
+Scene withMaterial(const EditorState& state, const Material& material) {
+    Scene scene = renderedScene(state);
+    scene.material = material;
+    return scene;
+}
+
+void rememberRecent(EditorState& state, const std::filesystem::path& path) {
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    const std::filesystem::path entry = error ? path : absolute.lexically_normal();
+    auto& recent = state.recentFiles;
+    recent.erase(std::remove(recent.begin(), recent.end(), entry), recent.end());
+    recent.insert(recent.begin(), entry);
+    if (recent.size() > kRecentFiles) {
+        recent.resize(kRecentFiles);
+    }
+}
+
+bool openFile(EditorState& state, const std::filesystem::path& path) {
+    std::vector<std::string> warnings;
+    try {
+        std::optional<Scene> scene;
+        std::optional<Material> material;
+        if (path.extension() == ".png") {
+            scene = sceneFromPng(path, warnings);
+            if (!scene) {
+                throw InputError(path.string() + ": this PNG holds no Patina scene");
+            }
+        } else {
+            const Json json = readJsonFile(path);
+            const bool isScene = json.is_object() && json.value("format", Json()) == "patina-scene";
+            if (isScene) {
+                scene = sceneFromJson(json, path.string(), path.parent_path(), warnings);
+            } else {
+                material = materialFromJson(json, "", path.string(), true, warnings);
+            }
+        }
+        applyEdit(state, [&](EditorState& s) {
+            if (scene) {
+                s.scene.material = scene->material;
+                s.scene.lights = scene->lights;
+            } else {
+                s.scene.material = *material;
+            }
+        });
+        if (scene) {
+            // Camera, mesh and display are views, not edits: they follow the file.
+            state.scene.camera = scene->camera;
+            state.scene.mesh = scene->mesh;
+            state.scene.display = scene->display;
+            state.materialPath.clear();
+            state.soloLight = -1;
+            state.selectedLight = state.scene.lights.empty() ? -1 : 0;
+        } else {
+            state.materialPath = path;
+        }
+        state.savedMaterial = state.scene.material;
+        state.error.clear();
+        state.status = "Opened " + path.filename().string() +
+                       (warnings.empty() ? "" : "\n" + joinWarnings(warnings));
+        rememberRecent(state, path);
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();
+        return false;
+    }
+}
+
+void requestOpen(EditorState& state, const std::filesystem::path& path) {
+    if (state.dirty()) {
+        state.pendingOpen = path;
+    } else {
+        openFile(state, path);
+    }
+}
+
+bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
+    commitEdits(state);   // what was saved is a step of its own to come back to
+    try {
+        const std::string text = prettyJson(materialToJson(state.scene.material));
+        writeFileAtomic(path, std::vector<uint8_t>(text.begin(), text.end()));
+    } catch (const std::exception& error) {
+        state.error = "Could not save: " + std::string(error.what());
+        return false;
+    }
+    state.materialPath = path;
+    state.savedMaterial = state.scene.material;
+    state.error.clear();
+    state.status = "Saved " + path.filename().string();
+    rememberRecent(state, path);
+    return true;
+}
+
+}  // namespace patina::editor

@@ -1,0 +1,107 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/renderer.h"
+#include "scene.h"
+#include "undo_history.h"
+
+namespace patina::editor {
+
+enum class CompareView { Single, Split, SideBySide };
+
+struct LobeSettings {
+    float thetaInDegrees = 45.0f;
+    bool followFirstDirectional = false;
+    bool luminance = false;       // else per channel
+    bool logScale = false;
+    bool multiplyByCosine = false;
+};
+
+// Sizes the user can drag, persisted between sessions.
+struct PanelLayout {
+    float leftWidth = 330.0f;
+    float rightWidth = 340.0f;
+    float lobeHeight = 260.0f;
+};
+
+// Everything the editor shows is a function of this state; panels read it, draw widgets and
+// write it back. No ImGui or GL types here, so it is tested without a window.
+struct EditorState {
+    Scene scene = defaultScene();
+    std::filesystem::path materialPath;      // where Save writes; empty: never saved
+    Material savedMaterial = scene.material; // what is on disk at materialPath
+    UndoHistory history;
+    EditSnapshot committed = snapshot();     // the state history knows; edits since are pending
+
+    int selectedLight = 0;
+    int soloLight = -1;                      // -1: all enabled lights
+    PassMode passes = PassMode::Single;
+
+    std::optional<Material> compareA;        // "Set A"; B is the current material
+    CompareView compareView = CompareView::Single;
+    float splitPosition = 0.5f;              // split wipe divider, fraction of the width
+
+    LobeSettings lobe;
+    PanelLayout layout;
+    std::vector<std::filesystem::path> recentFiles;
+    std::vector<std::filesystem::path> presetFolders;   // built-in first, then the user's
+    std::filesystem::path screenshotFolder = ".";
+    int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
+
+    std::string error;                       // shown until dismissed
+    std::string status;                      // last completed action
+    std::optional<std::filesystem::path> pendingOpen;   // waits for "discard changes?"
+    bool pendingQuit = false;
+    bool quitConfirmed = false;
+    bool showShortcuts = false;
+    enum class PathDialog { None, Open, SaveAs, ExportComparison } pathDialog = PathDialog::None;
+    std::string pathDialogText;
+
+    bool dirty() const { return scene.material != savedMaterial; }
+    EditSnapshot snapshot() const { return {scene.material, scene.lights}; }
+};
+
+// The window title: file name (or "untitled"), a '*' while the material is unsaved.
+std::string windowTitle(const EditorState& state);
+
+// --- Undoable edits ---------------------------------------------------------------------
+// Widgets write straight into state.scene. Whatever changed since the last commit becomes
+// one undo step when commitEdits runs, which the editor does once no widget is active: a
+// slider drag over many frames is one step, whatever widget made it.
+void commitEdits(EditorState& state);
+// A discrete edit (a button): its own step, apart from anything pending.
+template <typename Apply>
+void applyEdit(EditorState& state, Apply&& apply) {
+    commitEdits(state);
+    apply(state);
+    commitEdits(state);
+}
+void undo(EditorState& state);
+void redo(EditorState& state);
+
+// --- Light list --------------------------------------------------------------------------
+void addLight(EditorState& state, LightType type);
+void duplicateLight(EditorState& state, int index);
+void deleteLight(EditorState& state, int index);
+void moveLight(EditorState& state, int index, int delta);
+void renameLight(EditorState& state, int index, const std::string& name);
+void toggleSolo(EditorState& state, int index);
+
+// The scene as rendered: solo applied.
+Scene renderedScene(const EditorState& state);
+Scene withMaterial(const EditorState& state, const Material& material);
+
+// --- Files -------------------------------------------------------------------------------
+// Opens a material, scene or Patina screenshot (PNG with an embedded scene). Undoable. A
+// file that fails to load sets state.error and changes nothing else.
+bool openFile(EditorState& state, const std::filesystem::path& path);
+// Asks first when the material is unsaved (state.pendingOpen), else opens.
+void requestOpen(EditorState& state, const std::filesystem::path& path);
+// Writes the material (atomically); on failure sets state.error and stays dirty.
+bool saveMaterial(EditorState& state, const std::filesystem::path& path);
+void rememberRecent(EditorState& state, const std::filesystem::path& path);
+
+}  // namespace patina::editor

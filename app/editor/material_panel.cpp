@@ -1,0 +1,38 @@
+#include <imgui.h>
+
+#include "cpu_shading.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+void drawMaterialPanel(EditorState& state) {
+    Material& material = state.scene.material;
+    const Material defaults;
+    inputString("Name", &material.name);
+    colorEditLinear("Base colour", &material.baseColor);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(material.baseColor == defaults.baseColor);
+    if (ImGui::SmallButton("Reset##baseColor")) {
+        material.baseColor = defaults.baseColor;
+    }
+    ImGui::EndDisabled();
+    sliderWithReset("Roughness", &material.roughness, 0.0f, 1.0f, defaults.roughness);
+    sliderWithReset("Specular", &material.specular, 0.0f, 1.0f, defaults.specular);
+    sliderWithReset("Metallic", &material.metallic, 0.0f, 1.0f, defaults.metallic);
+
+    // What the shader derives from the four parameters (shaders/brdf.glsl), guards included.
+    const shader::SurfaceMaterial derived = surfaceMaterial(material);
+    ImGui::Separator();
+    ImGui::TextDisabled("Derived");
+    const float k = (derived.roughness + 1.0f) * (derived.roughness + 1.0f) / 8.0f;
+    ImGui::Text("alpha = r^2       %.5f", double(derived.alpha));
+    ImGui::Text("k = (r+1)^2 / 8   %.5f", double(k));
+    if (derived.roughness != material.roughness) {
+        ImGui::TextDisabled("roughness floored at %.3f (D is 0/0 at r = 0)", double(derived.roughness));
+    }
+    linearSwatch("c_diff", derived.diffuseColor);
+    linearSwatch("F0    ", derived.f0);
+}
+
+}  // namespace patina::editor

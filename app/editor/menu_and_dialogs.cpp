@@ -1,0 +1,264 @@
+#include <algorithm>
+#include <system_error>
+
+#include <imgui.h>
+
+#include "keys.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+namespace {
+void startPathDialog(EditorState& state, EditorState::PathDialog kind, std::filesystem::path initial) {
+    state.pathDialog = kind;
+    state.pathDialogText = initial.string();
+}
+
+void saveAs(EditorState& state) {
+    startPathDialog(state, EditorState::PathDialog::SaveAs,
+                    state.materialPath.empty() ? std::filesystem::path(state.scene.material.name + ".json")
+                                               : state.materialPath);
+}
+
+void save(EditorState& state) {
+    if (state.materialPath.empty()) {
+        saveAs(state);
+    } else {
+        saveMaterial(state, state.materialPath);
+    }
+}
+
+void screenshot(EditorState& state, EditorServices& services) {
+    const int width = state.screenshotWidth > 0 ? state.screenshotWidth : services.viewportWidth;
+    const int height = state.screenshotHeight > 0 ? state.screenshotHeight : services.viewportHeight;
+    services.screenshot(state, std::max(width, 1), std::max(height, 1));
+}
+
+// Entries of the folder the typed path points into, for picking with the mouse.
+void drawFolderListing(EditorState& state) {
+    std::filesystem::path typed(state.pathDialogText);
+    std::filesystem::path folder = std::filesystem::is_directory(typed) ? typed : typed.parent_path();
+    if (folder.empty()) {
+        folder = ".";
+    }
+    std::vector<std::filesystem::directory_entry> entries;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        const std::string extension = entry.path().extension().string();
+        if (entry.is_directory(error) || extension == ".json" || extension == ".png") {
+            entries.push_back(entry);
+        }
+    }
+    std::sort(entries.begin(), entries.end());
+    ImGui::BeginChild("listing", ImVec2(520, 220), true);
+    if (ImGui::Selectable("..")) {
+        state.pathDialogText = (std::filesystem::absolute(folder, error).parent_path() / "").string();
+    }
+    for (const auto& entry : entries) {
+        const bool directory = entry.is_directory(error);
+        const std::string label = entry.path().filename().string() + (directory ? "/" : "");
+        if (ImGui::Selectable(label.c_str())) {
+            state.pathDialogText = (entry.path() / (directory ? "" : "")).string();
+        }
+    }
+    ImGui::EndChild();
+}
+}  // namespace
+
+void drawMenuBar(EditorState& state, EditorServices& services) {
+    if (!ImGui::BeginMainMenuBar()) {
+        return;
+    }
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) {
+            startPathDialog(state, EditorState::PathDialog::Open, state.materialPath.parent_path() / "");
+        }
+        if (ImGui::BeginMenu("Open recent", !state.recentFiles.empty())) {
+            for (const std::filesystem::path& recent : state.recentFiles) {
+                if (ImGui::MenuItem(recent.string().c_str())) {
+                    requestOpen(state, recent);
+                }
+            }
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save", "Ctrl+S")) {
+            save(state);
+        }
+        if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) {
+            saveAs(state);
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Screenshot", "F12")) {
+            screenshot(state, services);
+        }
+        if (ImGui::MenuItem("Export comparison...", nullptr, false, state.compareA.has_value())) {
+            startPathDialog(state, EditorState::PathDialog::ExportComparison, "comparison.png");
+        }
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) {
+            state.pendingQuit = true;
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.history.canUndo() || state.snapshot() != state.committed)) {
+            undo(state);
+        }
+        if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z / Ctrl+Y", false, state.history.canRedo())) {
+            redo(state);
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        ImGui::MenuItem("Frame mesh", "F");
+        ImGui::SetNextItemWidth(90);
+        ImGui::InputInt("Screenshot width (0: viewport)", &state.screenshotWidth);
+        ImGui::SetNextItemWidth(90);
+        ImGui::InputInt("Screenshot height (0: viewport)", &state.screenshotHeight);
+        state.screenshotWidth = std::clamp(state.screenshotWidth, 0, 8192);
+        state.screenshotHeight = std::clamp(state.screenshotHeight, 0, 8192);
+        std::string folder = state.screenshotFolder.string();
+        if (inputString("Screenshot folder", &folder)) {
+            state.screenshotFolder = folder;
+        }
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help")) {
+        if (ImGui::MenuItem("Shortcuts", "F1")) {
+            state.showShortcuts = true;
+        }
+        ImGui::EndMenu();
+    }
+    // The last completed action, on one line where it moves nothing.
+    const std::string status = state.status.substr(0, state.status.find('\n'));
+    ImGui::SameLine(0.0f, 24.0f);
+    ImGui::TextDisabled("%s", status.c_str());
+    ImGui::EndMainMenuBar();
+}
+
+void handleShortcuts(EditorState& state, EditorServices& services) {
+    if (ImGui::GetIO().WantTextInput) {
+        return;   // typing a name or a path: keys are text
+    }
+    const KeyPresses& keys = services.keyPresses;
+    if (pressed(keys, kKeyZ, true)) {
+        undo(state);
+    }
+    if (pressed(keys, kKeyZ, true, true) || pressed(keys, kKeyY, true)) {
+        redo(state);
+    }
+    if (pressed(keys, kKeyS, true)) {
+        save(state);
+    }
+    if (pressed(keys, kKeyS, true, true)) {
+        saveAs(state);
+    }
+    if (pressed(keys, kKeyO, true)) {
+        startPathDialog(state, EditorState::PathDialog::Open, state.materialPath.parent_path() / "");
+    }
+    if (pressed(keys, kKeyQ, true)) {
+        state.pendingQuit = true;
+    }
+    if (pressed(keys, kKeyF12)) {
+        screenshot(state, services);
+    }
+    if (pressed(keys, kKeyF1)) {
+        state.showShortcuts = !state.showShortcuts;
+    }
+}
+
+void drawDialogs(EditorState& state, EditorServices& services) {
+    // Path dialog: Open, Save as, Export comparison.
+    if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("Path")) {
+        ImGui::OpenPopup("Path");
+    }
+    if (ImGui::BeginPopupModal("Path", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        const char* verb = state.pathDialog == EditorState::PathDialog::Open     ? "Open"
+                           : state.pathDialog == EditorState::PathDialog::SaveAs ? "Save"
+                                                                                 : "Export";
+        ImGui::Text("%s: a material (.json), scene (.json) or Patina screenshot (.png)", verb);
+        ImGui::SetNextItemWidth(520);
+        const bool entered = inputString("##path", &state.pathDialogText, ImGuiInputTextFlags_EnterReturnsTrue);
+        drawFolderListing(state);
+        if (ImGui::Button(verb) || entered) {
+            const std::filesystem::path path = state.pathDialogText;
+            if (state.pathDialog == EditorState::PathDialog::Open) {
+                requestOpen(state, path);
+            } else if (state.pathDialog == EditorState::PathDialog::SaveAs) {
+                saveMaterial(state, path);
+            } else {
+                services.exportComparison(state, path);
+            }
+            state.pathDialog = EditorState::PathDialog::None;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+            state.pathDialog = EditorState::PathDialog::None;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+
+    // Unsaved changes are never dropped without asking.
+    const bool asking = state.pendingOpen.has_value() || state.pendingQuit;
+    if (asking && !ImGui::IsPopupOpen("Unsaved changes")) {
+        if (state.pendingQuit && !state.dirty()) {
+            state.quitConfirmed = true;
+        } else {
+            ImGui::OpenPopup("Unsaved changes");
+        }
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("The material \"%s\" has unsaved changes.", state.scene.material.name.c_str());
+        auto proceed = [&] {
+            if (state.pendingOpen) {
+                openFile(state, *state.pendingOpen);
+            } else {
+                state.quitConfirmed = true;
+            }
+            state.pendingOpen.reset();
+            state.pendingQuit = false;
+            ImGui::CloseCurrentPopup();
+        };
+        if (ImGui::Button("Save")) {
+            if (!state.materialPath.empty() && saveMaterial(state, state.materialPath)) {
+                proceed();
+            } else if (state.materialPath.empty()) {
+                state.error = "Use Save as first: this material has no file yet.";
+            }
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard changes")) {
+            proceed();
+        }
+        recordItem("Discard changes");
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) {
+            state.pendingOpen.reset();
+            state.pendingQuit = false;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+
+    if (state.showShortcuts) {
+        ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Appearing);
+        if (ImGui::Begin("Shortcuts", &state.showShortcuts)) {
+            const char* rows[][2] = {
+                {"Ctrl+O", "open a material, scene or screenshot"}, {"Ctrl+S", "save the material"},
+                {"Ctrl+Shift+S", "save as"}, {"Ctrl+Z", "undo"}, {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
+                {"F12", "screenshot of the viewport"}, {"F", "frame the mesh (viewport)"},
+                {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"},
+                {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"}, {"F1", "this list"},
+                {"Ctrl+Q", "quit"}};
+            for (const auto& row : rows) {
+                ImGui::Text("%-24s %s", row[0], row[1]);
+            }
+        }
+        ImGui::End();
+    }
+}
+
+}  // namespace patina::editor

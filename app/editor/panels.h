@@ -1,0 +1,24 @@
+#pragma once
+// One function per panel: each reads EditorState, draws its widgets and writes the state back.
+#include "editor_services.h"
+#include "editor_state.h"
+
+namespace patina::editor {
+
+void drawMaterialPanel(EditorState& state);
+void drawLightsPanel(EditorState& state);
+void drawViewportPanel(EditorState& state, EditorServices& services);
+void drawLobePanel(EditorState& state);
+void drawPresetsPanel(EditorState& state, EditorServices& services);
+void drawMenuBar(EditorState& state, EditorServices& services);
+void drawDialogs(EditorState& state, EditorServices& services);
+void handleShortcuts(EditorState& state, EditorServices& services);
+
+// Aims the camera at the whole mesh (F).
+void frameMesh(EditorState& state);
+
+// The whole editor for one frame: menu, panels around the viewport, dialogs, shortcuts, and
+// the undo commit once no widget is active.
+void drawEditorFrame(EditorState& state, EditorServices& services);
+
+}  // namespace patina::editor

@@ -1,0 +1,39 @@
+#pragma once
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "scene.h"
+
+namespace patina::editor {
+
+// What undo restores: the material and the light list (camera and view settings are not
+// edits an artist wants to step back through).
+struct EditSnapshot {
+    Material material;
+    std::vector<Light> lights;
+
+    bool operator==(const EditSnapshot&) const = default;
+};
+
+// Linear undo/redo over snapshots. record() takes the state from before an edit; a new edit
+// clears the redo side. The oldest steps fall off past `limit`.
+class UndoHistory {
+public:
+    explicit UndoHistory(size_t limit = 256) : limit_(limit) {}
+
+    void record(EditSnapshot before);
+    bool canUndo() const { return !undo_.empty(); }
+    bool canRedo() const { return !redo_.empty(); }
+    size_t undoSteps() const { return undo_.size(); }
+    // The snapshot to restore, given the current one (which moves to the other side).
+    std::optional<EditSnapshot> undo(EditSnapshot current);
+    std::optional<EditSnapshot> redo(EditSnapshot current);
+
+private:
+    size_t limit_;
+    std::deque<EditSnapshot> undo_;
+    std::vector<EditSnapshot> redo_;
+};
+
+}  // namespace patina::editor

@@ -1,0 +1,239 @@
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+#include <imgui.h>
+
+#include "camera_control.h"
+#include "panels.h"
+#include "keys.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+namespace {
+constexpr float kGizmoRadius = 7.0f;
+
+void drawToolbar(EditorState& state) {
+    DisplaySettings& display = state.scene.display;
+    int mesh = int(state.scene.mesh);
+    ImGui::SetNextItemWidth(90);
+    ImGui::Combo("Mesh", &mesh, "sphere\0torus\0");
+    state.scene.mesh = MeshKind(mesh);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    ImGui::SliderFloat("Exposure", &display.exposure, -8.0f, 8.0f, "%.2f EV");
+    ImGui::SameLine();
+    int tonemap = int(display.tonemap);
+    ImGui::SetNextItemWidth(90);
+    ImGui::Combo("Tone map", &tonemap, "none\0aces\0reinhard\0");
+    display.tonemap = Tonemap(tonemap);
+    ImGui::SameLine();
+    colorEditLinear("Background", &display.background, false, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    int passes = int(state.passes);
+    ImGui::RadioButton("single", &passes, int(PassMode::Single));
+    ImGui::SameLine();
+    ImGui::RadioButton("multi", &passes, int(PassMode::Multi));
+    state.passes = PassMode(passes);
+
+    if (ImGui::Button("Set A")) {
+        state.compareA = state.scene.material;
+        if (state.compareView == CompareView::Single) {
+            state.compareView = CompareView::Split;
+        }
+    }
+    recordItem("Set A");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!state.compareA);
+    int view = int(state.compareView);
+    ImGui::RadioButton("Single", &view, int(CompareView::Single));
+    ImGui::SameLine();
+    ImGui::RadioButton("Split", &view, int(CompareView::Split));
+    ImGui::SameLine();
+    ImGui::RadioButton("Side by side", &view, int(CompareView::SideBySide));
+    state.compareView = state.compareA ? CompareView(view) : CompareView::Single;
+    ImGui::SameLine();
+    if (ImGui::Button("Clear A")) {
+        state.compareA.reset();
+    }
+    ImGui::EndDisabled();
+}
+
+// Point lights as a marker, directional lights as an arrow from the centre of the view;
+// both can be dragged. Returns true while a gizmo is being dragged.
+bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size) {
+    static int dragged = -1;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const glm::vec2 viewSize(size.x, size.y);
+    const Camera& camera = state.scene.camera;
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const glm::vec2 local(mouse.x - origin.x, mouse.y - origin.y);
+    bool hoveredAny = false;
+    for (int i = 0; i < int(state.scene.lights.size()); ++i) {
+        Light& light = state.scene.lights[size_t(i)];
+        if (light.type == LightType::Hemisphere) {
+            continue;
+        }
+        const glm::vec3 anchor = light.type == LightType::Point
+                                     ? light.position
+                                     : camera.target - 1.6f * glm::normalize(light.direction);
+        const auto screen = projectToViewport(camera, viewSize, anchor);
+        if (!screen) {
+            continue;
+        }
+        const ImVec2 at(origin.x + screen->x, origin.y + screen->y);
+        const bool hovered = glm::distance(*screen, local) <= kGizmoRadius + 3.0f;
+        hoveredAny |= hovered;
+        const ImU32 color = i == state.selectedLight ? IM_COL32(255, 210, 80, 255) : IM_COL32(230, 230, 230, 200);
+        if (light.type == LightType::Point) {
+            draw->AddCircleFilled(at, kGizmoRadius, light.enabled ? color : IM_COL32(90, 90, 90, 200));
+            draw->AddCircle(at, kGizmoRadius + 2.0f, IM_COL32(0, 0, 0, 200));
+        } else if (const auto centre = projectToViewport(camera, viewSize, camera.target)) {
+            const ImVec2 tip(origin.x + centre->x, origin.y + centre->y);
+            draw->AddLine(at, tip, color, 2.0f);
+            draw->AddCircleFilled(at, kGizmoRadius * 0.7f, color);
+            draw->AddTriangleFilled(tip, ImVec2(tip.x - 4, tip.y - 4), ImVec2(tip.x + 4, tip.y - 4), color);
+        }
+        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::IsWindowHovered()) {
+            dragged = i;
+            state.selectedLight = i;
+        }
+    }
+    if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        Light& light = state.scene.lights[size_t(dragged)];
+        if (light.type == LightType::Point) {
+            light.position = unprojectAtDepthOf(camera, viewSize, local, light.position);
+        } else {
+            // The arrow's tail follows the mouse on a sphere around the target.
+            const glm::vec3 onPlane = unprojectAtDepthOf(camera, viewSize, local, camera.target);
+            glm::vec3 fromTarget = onPlane - camera.target;
+            const float reach = 1.6f, planar = glm::length(fromTarget);
+            const glm::vec3 toCamera = glm::normalize(camera.position - camera.target);
+            fromTarget += toCamera * std::sqrt(std::max(reach * reach - planar * planar, 0.0f));
+            if (glm::dot(fromTarget, fromTarget) > 1e-6f) {
+                light.direction = -glm::normalize(fromTarget);
+            }
+        }
+        return true;
+    }
+    dragged = -1;
+    if (hoveredAny) {
+        ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+    }
+    return hoveredAny;
+}
+
+void handleCameraInput(EditorState& state, ImVec2 size) {
+    ImGuiIO& io = ImGui::GetIO();
+    Camera& camera = state.scene.camera;
+    const bool pan = ImGui::IsMouseDragging(ImGuiMouseButton_Middle) ||
+                     (ImGui::IsMouseDragging(ImGuiMouseButton_Left) && io.KeyShift);
+    if (pan) {
+        panCamera(camera, -io.MouseDelta.x / size.y, io.MouseDelta.y / size.y);
+    } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+        orbitCamera(camera, -io.MouseDelta.x * 0.01f, io.MouseDelta.y * 0.01f);
+    }
+    if (io.MouseWheel != 0.0f) {
+        dollyCamera(camera, std::pow(0.9f, io.MouseWheel));
+    }
+}
+
+void image(unsigned texture, ImVec2 size, float u0 = 0.0f, float u1 = 1.0f) {
+    // Renderer textures have GL's bottom-up rows: flip v.
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(u0, 1.0f),
+                 ImVec2(u1, 0.0f));
+}
+}  // namespace
+
+void frameMesh(EditorState& state) {
+    frameCamera(state.scene.camera, glm::vec3(0.0f), state.scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
+}
+
+void drawViewportPanel(EditorState& state, EditorServices& services) {
+    drawToolbar(state);
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    const int width = std::max(int(available.x), 16), height = std::max(int(available.y), 16);
+    services.viewportWidth = width;
+    services.viewportHeight = height;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ImVec2 size{float(width), float(height)};
+    const Scene b = renderedScene(state);
+    // While a widget is held (a slider drag), skip MSAA so the preview keeps up; the full
+    // quality frame follows on release.
+    const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
+
+    if (state.compareA && state.compareView == CompareView::SideBySide) {
+        const int half = std::max(width / 2, 8);
+        const ImVec2 halfSize(float(half), size.y);
+        image(services.viewportTexture(withMaterial(state, *state.compareA), half, height, state.passes, 1, samples), halfSize);
+        ImGui::SameLine(0.0f, 0.0f);
+        image(services.viewportTexture(b, half, height, state.passes, 0, samples), halfSize);
+    } else {
+        image(services.viewportTexture(b, width, height, state.passes, 0, samples), size);
+        if (state.compareA && state.compareView == CompareView::Split) {
+            // A left of the divider, B right, one camera: A's image drawn over B's left part.
+            const unsigned a = services.viewportTexture(withMaterial(state, *state.compareA), width, height,
+                                                        state.passes, 1, samples);
+            const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
+            ImGui::SetCursorScreenPos(origin);
+            image(a, ImVec2(size.x * split, size.y), 0.0f, split);
+        }
+    }
+    recordItem("viewport");
+    ImGui::SetCursorScreenPos(origin);
+    ImGui::InvisibleButton("viewport-input", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+    const bool viewportActive = ImGui::IsItemActive();
+    const bool hovered = ImGui::IsItemHovered();
+
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    bool onDivider = false;
+    if (state.compareA && state.compareView == CompareView::Split) {
+        const float x = origin.x + size.x * state.splitPosition;
+        draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + size.y), IM_COL32(255, 255, 255, 220), 2.0f);
+        draw->AddText(ImVec2(origin.x + 8, origin.y + 24), IM_COL32(255, 255, 255, 255), "A");
+        draw->AddText(ImVec2(origin.x + size.x - 16, origin.y + 24), IM_COL32(255, 255, 255, 255), "B");
+        static bool draggingDivider = false;
+        onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
+        if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+            draggingDivider = true;
+        }
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+            draggingDivider = false;
+        }
+        if (draggingDivider) {
+            state.splitPosition = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / size.x, 0.02f, 0.98f);
+            onDivider = true;
+        }
+        if (onDivider) {
+            ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+        }
+    }
+    const bool gizmo = state.compareView != CompareView::SideBySide && drawLightGizmos(state, origin, size);
+    if (viewportActive && !gizmo && !onDivider) {
+        handleCameraInput(state, size);
+    } else if (hovered && ImGui::GetIO().MouseWheel != 0.0f) {
+        dollyCamera(state.scene.camera, std::pow(0.9f, ImGui::GetIO().MouseWheel));
+    }
+    if (hovered && pressed(services.keyPresses, kKeyF) &&
+        !ImGui::GetIO().WantTextInput) {
+        frameMesh(state);
+    }
+
+    // Overlay: cost of the last render and what was drawn.
+    int enabled = 0;
+    for (const Light& light : b.lights) {
+        enabled += light.enabled;
+    }
+    char overlay[160];
+    std::snprintf(overlay, sizeof overlay, "CPU %.1f ms  GPU %.1f ms  lights %d  %s",
+                  services.lastRenderMilliseconds(), services.lastGpuMilliseconds(), enabled,
+                  state.passes == PassMode::Single ? "single pass" : "multi pass");
+    draw->AddRectFilled(ImVec2(origin.x + 4, origin.y + size.y - 22),
+                        ImVec2(origin.x + 12 + ImGui::CalcTextSize(overlay).x, origin.y + size.y - 4),
+                        IM_COL32(0, 0, 0, 150));
+    draw->AddText(ImVec2(origin.x + 8, origin.y + size.y - 20), IM_COL32(220, 220, 220, 255), overlay);
+}
+
+}  // namespace patina::editor

@@ -1,0 +1,105 @@
+#include "widgets.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <vector>
+
+#include "shading.h"
+
+namespace patina::editor {
+
+namespace {
+glm::vec3 toSrgb(glm::vec3 linear) {
+    return {shader::srgbEncode(linear.r), shader::srgbEncode(linear.g), shader::srgbEncode(linear.b)};
+}
+
+glm::vec3 toLinear(glm::vec3 srgb) {
+    return {shader::srgbDecode(srgb.r), shader::srgbDecode(srgb.g), shader::srgbDecode(srgb.b)};
+}
+
+std::map<std::string, std::pair<ImVec2, ImVec2>>& itemRects() {
+    static std::map<std::string, std::pair<ImVec2, ImVec2>> rects;
+    return rects;
+}
+}  // namespace
+
+bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float defaultValue,
+                     const char* format) {
+    ImGui::PushID(label);
+    const float resetWidth = ImGui::CalcTextSize("Reset").x + ImGui::GetStyle().FramePadding.x * 2;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - resetWidth -
+                            ImGui::GetStyle().ItemSpacing.x - ImGui::CalcTextSize(label).x -
+                            ImGui::GetStyle().ItemInnerSpacing.x);
+    bool changed = ImGui::SliderFloat(label, value, minimum, maximum, format,
+                                      ImGuiSliderFlags_AlwaysClamp);
+    recordItem(label);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(*value == defaultValue);
+    if (ImGui::SmallButton("Reset")) {
+        *value = defaultValue;
+        changed = true;
+    }
+    ImGui::EndDisabled();
+    ImGui::PopID();
+    return changed;
+}
+
+bool colorEditLinear(const char* label, glm::vec3* linear, bool hdr, ImGuiColorEditFlags flags) {
+    // sRGB cannot show components above 1: the picker shows the colour over its peak, and the
+    // peak multiplies back in (light colours may be HDR; material colours stay in [0, 1]).
+    const float peak = hdr ? std::max({linear->r, linear->g, linear->b, 1.0f}) : 1.0f;
+    const glm::vec3 srgb = toSrgb(glm::clamp(*linear / peak, 0.0f, 1.0f));
+    float color[3] = {srgb.r, srgb.g, srgb.b};
+    const bool changed = ImGui::ColorEdit3(label, color, ImGuiColorEditFlags_Float | flags);
+    recordItem(label);
+    if (changed) {
+        *linear = glm::clamp(toLinear(glm::vec3(color[0], color[1], color[2])), 0.0f, 1.0f) * peak;
+    }
+    return changed;
+}
+
+void linearSwatch(const char* label, glm::vec3 linear) {
+    const glm::vec3 srgb = toSrgb(glm::clamp(linear, 0.0f, 1.0f));
+    ImGui::ColorButton(label, ImVec4(srgb.r, srgb.g, srgb.b, 1.0f), ImGuiColorEditFlags_NoTooltip);
+    ImGui::SameLine();
+    ImGui::Text("%s  %.4f %.4f %.4f", label, double(linear.r), double(linear.g), double(linear.b));
+}
+
+bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "%s", text->c_str());
+    if (ImGui::InputText(label, buffer, sizeof buffer, flags)) {
+        *text = buffer;
+        return true;
+    }
+    return false;
+}
+
+void recordItem(const std::string& name) {
+    itemRects()[name] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+}
+
+bool itemRect(const std::string& name, ImVec2* min, ImVec2* max) {
+    const auto it = itemRects().find(name);
+    if (it == itemRects().end()) {
+        return false;
+    }
+    *min = it->second.first;
+    *max = it->second.second;
+    return true;
+}
+
+std::string layoutJson() {
+    std::string json = "{";
+    for (const auto& [name, rect] : itemRects()) {
+        char entry[256];
+        std::snprintf(entry, sizeof entry, "%s\"%s\": [%.1f, %.1f, %.1f, %.1f]", json.size() > 1 ? ", " : "",
+                      name.c_str(), double(rect.first.x), double(rect.first.y), double(rect.second.x),
+                      double(rect.second.y));
+        json += entry;
+    }
+    return json + "}\n";
+}
+
+}  // namespace patina::editor
