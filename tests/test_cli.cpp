@@ -6,56 +6,23 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
+#include "cli_runner.h"
 #include "image.h"
+#include "scratch_test.h"
 
 namespace patina {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-    int exitCode;
-    std::string stderrText;
-};
-
-class Cli : public ::testing::Test {
+class Cli : public test::ScratchTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("patina_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    fs::path path(const std::string& name) const { return dir_ / name; }
-
-    void write(const std::string& name, const std::string& text) const {
-        std::ofstream(path(name)) << text;
-    }
-
-    std::string read(const std::string& name) const {
-        std::ifstream file(path(name));
-        std::stringstream text;
-        text << file.rdbuf();
-        return text.str();
-    }
-
-    CliRun run(const std::string& arguments) const {
-        const fs::path errors = path("stderr.txt");
-        const std::string command = std::string(PATINA_EXECUTABLE) + " " + arguments + " 2> " +
-                                    errors.string() + " > /dev/null";
-        const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read("stderr.txt")};
-    }
-
-    fs::path dir_;
+    test::CliRun run(const std::string& arguments) const { return test::runPatina(arguments, dir_); }
 };
 
 TEST_F(Cli, RendersTheDefaultSceneToPngAndPfm) {
-    const CliRun r = run("render --width 96 --height 64 --out " + path("a.png").string() + " --hdr " +
+    const test::CliRun r = run("render --width 96 --height 64 --out " + path("a.png").string() + " --hdr " +
                       path("a.pfm").string());
     ASSERT_EQ(r.exitCode, 0) << r.stderrText;
     const LdrImage png = decodePng(readFileBytes(path("a.png")));
@@ -80,7 +47,7 @@ TEST_F(Cli, MultiPassGivesTheSamePicture) {
 
 TEST_F(Cli, BadSceneExitsThreeNamingTheProblemAndWritesNothing) {
     write("bad.json", R"({"format": "patina-scene", "version": 1, "lights": [{"type": "laser"}]})");
-    const CliRun r = run("render --scene " + path("bad.json").string() + " --out " + path("x.png").string());
+    const test::CliRun r = run("render --scene " + path("bad.json").string() + " --out " + path("x.png").string());
     EXPECT_EQ(r.exitCode, 3);
     EXPECT_NE(r.stderrText.find("bad.json: /lights/0/type: unknown light type"), std::string::npos)
         << r.stderrText;
@@ -91,7 +58,7 @@ TEST_F(Cli, BadInputsExitThree) {
     write("syntax.json", "{\n\"format\": \"patina-material\",\n\"version\": 1,,\n}");
     write("range.json", R"({"format": "patina-material", "version": 1, "metallic": 2})");
     const std::string out = " --out " + path("x.png").string();
-    CliRun r = run("render --material " + path("syntax.json").string() + out);
+    test::CliRun r = run("render --material " + path("syntax.json").string() + out);
     EXPECT_EQ(r.exitCode, 3);
     EXPECT_NE(r.stderrText.find("syntax.json:3:"), std::string::npos) << r.stderrText;
     r = run("render --material " + path("range.json").string() + out);
@@ -146,7 +113,7 @@ TEST_F(Cli, ProbeOnCpuAndGpuAgree) {
 
 TEST_F(Cli, ProbeRejectsBadCsvByLine) {
     write("in.csv", "px,py,pz,nx,ny,nz,vx,vy,vz\n0,0,1,0,0,1,0,0,1\n0,0,1,0,zero,1,0,0,1\n");
-    const CliRun r = run("probe --backend cpu --in " + path("in.csv").string() + " --out " + path("o.csv").string());
+    const test::CliRun r = run("probe --backend cpu --in " + path("in.csv").string() + " --out " + path("o.csv").string());
     EXPECT_EQ(r.exitCode, 3);
     EXPECT_NE(r.stderrText.find("in.csv:3: column 5"), std::string::npos) << r.stderrText;
     EXPECT_FALSE(fs::exists(path("o.csv")));

@@ -6,10 +6,11 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
+#include "cli_runner.h"
 #include "compositing.h"
 #include "image.h"
+#include "scratch_test.h"
 
 namespace patina {
 namespace {
@@ -45,40 +46,25 @@ int inkIn(const LdrImage& image, int x0, int y0, int x1, int y1) {
     return ink;
 }
 
-class CompareAndSheet : public ::testing::Test {
+class CompareAndSheet : public test::ScratchTest {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("patina_compare_sheet_" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        ScratchTest::SetUp();
         write("red.json", kRed);
         write("blue.json", kBlue);
     }
-    void TearDown() override { fs::remove_all(dir_); }
 
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    void write(const std::string& name, const std::string& text) const {
-        std::ofstream(path(name)) << text;
-    }
+    std::string path(const std::string& name) const { return ScratchTest::path(name).string(); }
 
     // The exit code; stderr in errors_.
     int run(const std::string& arguments) {
-        const std::string command = std::string(PATINA_EXECUTABLE) + " " + arguments + " 2> " +
-                                    path("stderr.txt") + " > /dev/null";
-        const int status = std::system(command.c_str());
-        std::ifstream file(path("stderr.txt"));
-        std::stringstream text;
-        text << file.rdbuf();
-        errors_ = text.str();
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        const test::CliRun result = test::runPatina(arguments, dir_);
+        errors_ = result.stderrText;
+        return result.exitCode;
     }
 
     LdrImage image(const std::string& name) const { return decodePng(readFileBytes(path(name))); }
 
-    fs::path dir_;
     std::string errors_;
 };
 

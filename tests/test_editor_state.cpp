@@ -7,6 +7,7 @@
 #include "editor_settings.h"
 #include "editor_state.h"
 #include "json_writer.h"
+#include "scratch_test.h"
 #include "scene_file.h"
 
 namespace patina::editor {
@@ -14,15 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class EditorStateTest : public ::testing::Test {
+class EditorStateTest : public test::ScratchTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("patina_editor_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
 
     fs::path writeMaterial(const std::string& name, float roughness) const {
         Material m;
@@ -33,7 +27,6 @@ protected:
         return path;
     }
 
-    fs::path dir_;
     EditorState state;
 };
 

@@ -9,6 +9,7 @@
 #include "keys.h"
 #include "panels.h"
 #include "png_text.h"
+#include "scratch_test.h"
 #include "scene_file.h"
 #include "test_support.h"
 #include "widgets.h"
@@ -16,9 +17,10 @@
 namespace patina::editor {
 namespace {
 
-class EditorUi : public ::testing::Test {
+class EditorUi : public test::ScratchTest {
 protected:
     void SetUp() override {
+        ScratchTest::SetUp();
         test::glContext();
         ImGui::CreateContext();
         ImGuiIO& io = ImGui::GetIO();
@@ -28,10 +30,6 @@ protected:
         int width = 0, height = 0;
         io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);   // builds the font atlas
         services_ = std::make_unique<EditorServices>();
-        dir_ = std::filesystem::temp_directory_path() /
-               ("patina_ui_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        std::filesystem::remove_all(dir_);
-        std::filesystem::create_directories(dir_);
         state_.screenshotFolder = dir_;
         frames(3);   // lay out every panel
     }
@@ -39,7 +37,7 @@ protected:
     void TearDown() override {
         services_.reset();
         ImGui::DestroyContext();
-        std::filesystem::remove_all(dir_);
+        ScratchTest::TearDown();
     }
 
     void frames(int count) {
@@ -91,7 +89,6 @@ protected:
 
     EditorState state_;
     std::unique_ptr<EditorServices> services_;
-    std::filesystem::path dir_;
 };
 
 int differingPixels(const LdrImage& a, const LdrImage& b) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_test.h"
+
 #include "image.h"
 #include "input_error.h"
 #include "json_writer.h"
@@ -64,17 +66,8 @@ Scene unusualScene() {
     return scene;
 }
 
-class PngText : public ::testing::Test {
+class PngText : public test::ScratchTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("patina_png_text_" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     fs::path save(const std::string& name, const std::vector<uint8_t>& bytes) const {
         writeFileAtomic(dir_ / name, bytes);
         return dir_ / name;
@@ -89,8 +82,6 @@ protected:
         }
         return "";
     }
-
-    fs::path dir_;
 };
 
 TEST_F(PngText, RoundTripsEntriesAndKeepsThePixels) {
