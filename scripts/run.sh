@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# The main job: build, then render the embedded default scene to patina-default.png.
+# The main job: build, then open the editor on the embedded default scene. Without a display
+# (no DISPLAY), render the default scene to patina-default.png instead.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-./"${BUILD_DIR:-build}"/app/patina render --width 800 --height 800 --out patina-default.png
+patina=./"${BUILD_DIR:-build}"/app/patina
+if [ -n "${DISPLAY:-}" ]; then
+  exec "$patina"
+fi
+echo "run: no DISPLAY, so no editor window; rendering the default scene instead"
+"$patina" render --width 800 --height 800 --out patina-default.png
 echo "wrote $(pwd)/patina-default.png"
