@@ -1,5 +1,7 @@
 #include "cpu_shading.h"
 
+#include "brdf_models.h"
+
 namespace patina {
 
 shader::SurfaceMaterial surfaceMaterial(const Material& material) {
@@ -7,14 +9,14 @@ shader::SurfaceMaterial surfaceMaterial(const Material& material) {
                                          material.specular, material.metallic);
 }
 
-glm::vec3 shadePoint(const shader::SurfaceMaterial& material,
+glm::vec3 shadePoint(BrdfModelId model, const shader::SurfaceMaterial& material,
                      const std::vector<shader::PackedLight>& lights, glm::vec3 position,
                      glm::vec3 normal, glm::vec3 toViewer) {
     const glm::vec3 N = shader::safeNormalize(normal);
     const glm::vec3 V = shader::safeNormalize(toViewer);
     glm::vec3 radiance(0.0f);
     for (const shader::PackedLight& light : lights) {
-        radiance += shader::shadeLight(light, material, position, N, V);
+        radiance += shadeLight(model, light, material, position, N, V);
     }
     return radiance;
 }

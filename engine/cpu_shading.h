@@ -11,8 +11,8 @@ namespace patina {
 shader::SurfaceMaterial surfaceMaterial(const Material& material);
 
 // Linear radiance towards V at P with normal N, summed over the packed lights: the CPU twin
-// of shaders/shade.frag's single-pass loop, running the same shared functions.
-glm::vec3 shadePoint(const shader::SurfaceMaterial& material,
+// of shaders/shade.frag's single-pass loop, running the same shared functions for `model`.
+glm::vec3 shadePoint(BrdfModelId model, const shader::SurfaceMaterial& material,
                      const std::vector<shader::PackedLight>& lights, glm::vec3 position,
                      glm::vec3 normal, glm::vec3 toViewer);
 

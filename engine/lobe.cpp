@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "brdf_models.h"
 #include "cpu_shading.h"
 
 namespace patina {
@@ -18,7 +19,7 @@ std::vector<LobeSample> evaluateLobe(const Material& material, float thetaInDegr
         const float thetaOutDegrees = -90.0f + 180.0f * float(i) / float(samples - 1);
         const float thetaOut = glm::radians(thetaOutDegrees);
         const glm::vec3 V(std::sin(thetaOut), 0.0f, std::cos(thetaOut));
-        const shader::BrdfValue f = shader::evaluateBrdf(surface, N, V, L);
+        const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
         lobe.push_back({thetaOutDegrees, f.diffuse, f.specular});
     }
     return lobe;

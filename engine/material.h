@@ -3,6 +3,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "brdf_model_id.h"
+
 namespace patina {
 
 // Karis 2013's material: base colour (linear RGB) and three scalars, each in [0, 1].
@@ -12,6 +14,7 @@ struct Material {
     float roughness = 0.4f;
     float specular = 0.5f;
     float metallic = 0.0f;
+    BrdfModelId model = BrdfModelId::Epic;   // how it is shaded (engine/brdf_models.h)
 
     bool operator==(const Material&) const = default;
 };

@@ -83,7 +83,7 @@ std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Li
     std::vector<glm::vec3> radiance;
     radiance.reserve(samples.size());
     for (const ProbeSample& sample : samples) {
-        radiance.push_back(shadePoint(surface, packed, sample.position, sample.normal, sample.toViewer));
+        radiance.push_back(shadePoint(material.model, surface, packed, sample.position, sample.normal, sample.toViewer));
     }
     return radiance;
 }

@@ -14,3 +14,26 @@ using std::sqrt;
 #include "display.glsl"
 #undef PATINA_INLINE
 }  // namespace patina::shader
+
+// The default model, "epic", as shader::evaluateBrdf and shader::shadeLight; every model is in
+// engine/brdf_models.h.
+#include "energy_table.h"
+namespace patina::shader {
+// In a namespace of its own so that argument-dependent lookup from the other models'
+// namespaces (brdf_model_instance.h) never sees it; the using-directive serves shader::name.
+namespace seed {
+#define PATINA_INLINE inline
+inline float energyTexel(int, int) {
+    return 1.0f;   // epic has no energy compensation: never read
+}
+#include "energy_table.glsl"
+#include "brdf_model.glsl"
+#undef PATINA_INLINE
+}  // namespace seed
+using namespace seed;
+#undef PATINA_D
+#undef PATINA_V
+#undef PATINA_F
+#undef PATINA_FD
+#undef PATINA_MS
+}  // namespace patina::shader

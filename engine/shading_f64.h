@@ -24,6 +24,21 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
 #include "lights.glsl"
+// The default model, "epic" (every model: engine/brdf_models.h), in its own namespace as in
+// shading.h.
+namespace seed {
+inline float energyTexel(int, int) {
+    return 1.0f;   // epic has no energy compensation: never read
+}
+#include "energy_table.glsl"
+#include "brdf_model.glsl"
+}  // namespace seed
+using namespace seed;
 #undef PATINA_INLINE
 #undef float
+#undef PATINA_D
+#undef PATINA_V
+#undef PATINA_F
+#undef PATINA_FD
+#undef PATINA_MS
 }  // namespace patina::shader_f64

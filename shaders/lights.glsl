@@ -1,4 +1,5 @@
-// Patina's light types (shared GLSL / C++ like brdf.glsl; include after it).
+// Patina's light types (shared GLSL / C++ like brdf.glsl; include after it). shadeLight, which
+// needs the BRDF model, is in brdf_model.glsl.
 // The same PackedLight struct is a std140 uniform block on the GPU and a plain array on the CPU
 // (engine/light_packing.cpp fills it).
 
@@ -61,32 +62,4 @@ PATINA_INLINE vec3 safeNormalize(vec3 v) {
         return vec3(0.0f);
     }
     return v * inversesqrt(lengthSquared);
-}
-
-// Outgoing radiance towards V from one light at point P with unit normal N (zero allowed).
-PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
-    if (light.type == LIGHT_HEMISPHERE) {
-        return hemisphereRadiance(light, N) * Fd_Lambert(material.diffuseColor);
-    }
-    vec3 L;
-    vec3 radiance = light.radiance;
-    if (light.type == LIGHT_POINT) {
-        vec3 toLight = light.position - P;
-        float distanceSquared = dot(toLight, toLight);
-        if (distanceSquared <= MIN_LIGHT_DISTANCE_SQUARED) {
-            return vec3(0.0f);
-        }
-        float t = sqrt(distanceSquared);
-        L = toLight / t;
-        radiance = radiance * pointLightAttenuation(t, light.radius, light.attenuation);
-    } else {
-        L = light.directionToLight;
-    }
-    float NoL = dot(N, L);
-    // Back-facing light contributes nothing; skipping also keeps sp away from NoL = 0.
-    if (!(NoL > 0.0f)) {
-        return vec3(0.0f);
-    }
-    BrdfValue f = evaluateBrdf(material, N, V, L);
-    return radiance * min(NoL, 1.0f) * (f.diffuse + f.specular);
 }

@@ -66,13 +66,14 @@ TEST(GgxDistribution, MatchesTheStandardFormAwayFromThePeak) {
 
 TEST(SchlickGgxVisibility, UsesKarisRemapOfRoughness) {
     // r = 1: k = 0.5. NoV = NoL = 1: G = 1, V = 1/4.
-    EXPECT_FLOAT_EQ(shader::V_SchlickGGX(1.0f, 1.0f, 1.0f), 0.25f);
+    EXPECT_FLOAT_EQ(shader::k_Karis(1.0f), 0.5f);
+    EXPECT_FLOAT_EQ(shader::V_SchlickGGX(1.0f, 1.0f, shader::k_Karis(1.0f)), 0.25f);
     // NoV = NoL = 0.5: G1 = 0.5 / 0.75 = 2/3, G = 4/9, V = G / (4 * 0.25) = 4/9.
-    EXPECT_NEAR(shader::V_SchlickGGX(0.5f, 0.5f, 1.0f), 4.0 / 9.0, 1e-7);
+    EXPECT_NEAR(shader::V_SchlickGGX(0.5f, 0.5f, shader::k_Karis(1.0f)), 4.0 / 9.0, 1e-7);
     // r = 0.2: k = 1.44 / 8 = 0.18. NoV = 0.3, NoL = 0.7:
     // G1(0.3) = 0.3 / 0.426 = 0.704225, G1(0.7) = 0.7 / 0.754 = 0.928382,
     // V = 0.653789 / (4 * 0.21) = 0.778320.
-    EXPECT_NEAR(shader::V_SchlickGGX(0.3f, 0.7f, 0.2f), 0.778320, 2e-6);
+    EXPECT_NEAR(shader::V_SchlickGGX(0.3f, 0.7f, shader::k_Karis(0.2f)), 0.778320, 2e-6);
 }
 
 TEST(SphericalGaussianFresnel, IsOneAtGrazingAndNearF0AtNormal) {

@@ -33,7 +33,7 @@ TEST(Guards, EveryTermStaysFiniteAtItsFailurePoint) {
     const shader::SurfaceMaterial smooth = shader::deriveSurfaceMaterial(glm::vec3(0.5f), 0.0f, 0.5f, 0.0f);
     EXPECT_TRUE(std::isfinite(shader::D_GGX(1.0f, glm::vec3(0.0f), smooth.alpha)));
     // NoV = NoL = 0: the visibility form has no division by NoL NoV.
-    EXPECT_TRUE(std::isfinite(shader::V_SchlickGGX(0.0f, 0.0f, 0.045f)));
+    EXPECT_TRUE(std::isfinite(shader::V_SchlickGGX(0.0f, 0.0f, shader::k_Karis(0.045f))));
     // Attenuation with every coefficient 0 at t = 0.
     EXPECT_TRUE(std::isfinite(shader::pointLightAttenuation(0.0f, 0.0f, glm::vec3(0.0f))));
     // L = -V.

@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include "brdf_models.h"
 #include "cpu_shading.h"
 #include "lobe.h"
 #include "panels.h"
@@ -138,11 +139,11 @@ void drawLobePanel(EditorState& state) {
     for (int i = 0; i < kSamples; ++i) {
         const float out = glm::radians(-90.0f + 180.0f * float(i) / float(kSamples - 1));
         const glm::vec3 V(std::sin(out), 0, std::cos(out));
-        const glm::vec3 H = shader::safeNormalize(L + V);
+        const shader::SpecularTerms t = specularTerms(state.scene.material.model, m, N, V, L);
         const float NoV = std::max(glm::dot(N, V), shader::MIN_N_DOT_V), NoL = std::max(glm::dot(N, L), 0.0f);
-        d[i] = shader::D_GGX(std::max(glm::dot(N, H), 0.0f), glm::cross(N, H), m.alpha);
-        g[i] = shader::V_SchlickGGX(NoV, NoL, m.roughness) * 4.0f * NoL * NoV;
-        f[i] = luminance(shader::F_SchlickSphericalGaussian(m.f0, std::clamp(glm::dot(V, H), 0.0f, 1.0f)));
+        d[i] = t.D;
+        g[i] = t.Vis * 4.0f * NoL * NoV;   // G = V * 4 NoL NoV
+        f[i] = luminance(t.F);
     }
     const float plotHeight = std::max((available.y - 3 * ImGui::GetTextLineHeightWithSpacing()) / 3.0f, 20.0f);
     ImGui::PlotLines("##D", d, kSamples, 0, "D", 0.0f, FLT_MAX, ImVec2(termsWidth, plotHeight));

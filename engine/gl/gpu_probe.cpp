@@ -9,12 +9,10 @@
 #include "../light_packing.h"
 #include "program.h"
 #include "shading_inputs.h"
+#include "shading_programs.h"
 
 namespace patina {
 
-namespace shader_sources {
-extern const char* const probe_vert;
-}
 
 namespace {
 constexpr int kTargetWidth = 1024;
@@ -22,15 +20,13 @@ constexpr size_t kBatch = size_t(kTargetWidth) * 1024;   // probes per draw
 }  // namespace
 
 struct GpuProbe::State {
-    GlProgram program{{shader_sources::probe_vert}, shadingFragmentParts(),
-                      {"PATINA_SINGLE_PASS", "PATINA_PROBE"}};
+    ShadingPrograms programs;
     LightBuffer lights;
     GLuint vertexArray = 0, vertices = 0, framebuffer = 0, target = 0;
 };
 
 GpuProbe::GpuProbe() : state_(std::make_unique<State>()) {
     State& s = *state_;
-    LightBuffer::attach(s.program);
     glGenVertexArrays(1, &s.vertexArray);
     glGenBuffers(1, &s.vertices);
     glBindVertexArray(s.vertexArray);
@@ -59,8 +55,8 @@ std::vector<glm::vec3> GpuProbe::evaluate(const Material& material, const std::v
     State& s = *state_;
     s.lights.upload(packEnabledLights(lights));
     s.lights.bind();
-    s.program.use();
-    setMaterialUniforms(s.program, material);
+    const GlProgram& program = s.programs.use(material.model, ShadingPrograms::Use::Probe);
+    setMaterialUniforms(program, material);
 
     std::vector<glm::vec3> radiance;
     radiance.reserve(samples.size());
@@ -82,7 +78,7 @@ std::vector<glm::vec3> GpuProbe::evaluate(const Material& material, const std::v
         glDisable(GL_BLEND);
         glClearColor(0, 0, 0, 0);
         glClear(GL_COLOR_BUFFER_BIT);
-        glUniform2i(s.program.uniform("uTargetSize"), width, height);
+        glUniform2i(program.uniform("uTargetSize"), width, height);
 
         glBindBuffer(GL_ARRAY_BUFFER, s.vertices);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(ProbeSample)), &samples[first],

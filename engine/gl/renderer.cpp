@@ -15,6 +15,7 @@
 #include "mesh_buffers.h"
 #include "program.h"
 #include "shading_inputs.h"
+#include "shading_programs.h"
 
 namespace patina {
 
@@ -119,8 +120,7 @@ int toneMapIndex(Tonemap tonemap) {
 }  // namespace
 
 struct Renderer::State {
-    GlProgram single{{shader_sources::mesh_vert}, shadingFragmentParts(), {"PATINA_SINGLE_PASS"}};
-    GlProgram multi{{shader_sources::mesh_vert}, shadingFragmentParts()};
+    ShadingPrograms shading;
     GlProgram depthPrepass{{shader_sources::mesh_vert}, {shader_sources::black_frag}};
     GlProgram display{{shader_sources::fullscreen_vert},
                       {shader_sources::display_glsl, shader_sources::display_frag}};
@@ -135,8 +135,6 @@ struct Renderer::State {
 };
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
-    LightBuffer::attach(state_->single);
-    LightBuffer::attach(state_->multi);
     glGenVertexArrays(1, &state_->emptyVertexArray);
     glGenQueries(1, &state_->timerQuery);
     glGetIntegerv(GL_MAX_SAMPLES, &state_->maxSamples);
@@ -208,26 +206,27 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
 
     const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
     auto prepare = [&](const GlProgram& program) {
-        program.use();
         glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(transform));
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
         setMaterialUniforms(program, scene.material);
     };
     if (settings.passes == PassMode::Single) {
-        prepare(s.single);
+        prepare(s.shading.use(scene.material.model, ShadingPrograms::Use::SinglePass));
         s.mesh.draw();
     } else {
+        s.depthPrepass.use();
         prepare(s.depthPrepass);
         s.mesh.draw();
         // Light passes add onto the black mesh where depth matches the pre-pass exactly
         // (mesh.vert's gl_Position is invariant).
-        prepare(s.multi);
+        const GlProgram& multi = s.shading.use(scene.material.model, ShadingPrograms::Use::MultiPass);
+        prepare(multi);
         glDepthMask(GL_FALSE);
         glDepthFunc(GL_LEQUAL);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
         for (size_t i = 0; i < packed.size(); ++i) {
-            glUniform1i(s.multi.uniform("uLightIndex"), GLint(i));
+            glUniform1i(multi.uniform("uLightIndex"), GLint(i));
             s.mesh.draw();
         }
         glDisable(GL_BLEND);

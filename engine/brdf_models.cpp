@@ -1,0 +1,124 @@
+#include "brdf_models.h"
+
+#include "energy_table.h"
+#include "shading_f64.h"
+
+// Every model's permutation, fp32 and fp64.
+namespace patina::shader {
+#define PATINA_INLINE inline
+#include "brdf_model_instances.h"
+#undef PATINA_INLINE
+}  // namespace patina::shader
+
+namespace patina::shader_f64 {
+#define float double
+#define PATINA_INLINE inline
+#include "brdf_model_instances.h"
+#undef PATINA_INLINE
+#undef float
+}  // namespace patina::shader_f64
+
+namespace patina {
+
+namespace {
+constexpr BrdfModelInfo kModels[] = {
+#define PATINA_MODEL_INFO(id, name, summary) {BrdfModelId::id, name, {PATINA_TERMS_OF(id)}, summary},
+    PATINA_BRDF_MODELS(PATINA_MODEL_INFO)
+#undef PATINA_MODEL_INFO
+};
+}  // namespace
+
+std::span<const BrdfModelInfo> brdfModels() {
+    return kModels;
+}
+
+const BrdfModelInfo& brdfModel(BrdfModelId id) {
+    return kModels[size_t(id)];
+}
+
+std::optional<BrdfModelId> brdfModelFromName(std::string_view name) {
+    for (const BrdfModelInfo& model : kModels) {
+        if (model.name == name) {
+            return model.id;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string brdfModelNames() {
+    std::string names;
+    for (const BrdfModelInfo& model : kModels) {
+        names += (names.empty() ? "" : ", ") + std::string(model.name);
+    }
+    return names;
+}
+
+std::vector<std::string> brdfModelDefines(BrdfModelId id) {
+    const BrdfTerms& t = brdfModel(id).terms;
+    return {"PATINA_D " + std::to_string(t.d), "PATINA_V " + std::to_string(t.v),
+            "PATINA_F " + std::to_string(t.f), "PATINA_FD " + std::to_string(t.fd),
+            "PATINA_MS " + std::to_string(t.ms)};
+}
+
+// Runtime dispatch to the compile-time permutations: one case per model.
+#define PATINA_CASE(space, model, call) \
+    case BrdfModelId::model:            \
+        return space::PATINA_MODEL_NAMESPACE(model)::call;
+
+shader::BrdfValue evaluateBrdf(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
+                               glm::vec3 V, glm::vec3 L) {
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary) PATINA_CASE(shader, model, evaluateBrdf(material, N, V, L))
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    return shader::evaluateBrdf(material, N, V, L);
+}
+
+shader::SpecularTerms specularTerms(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
+                                    glm::vec3 V, glm::vec3 L) {
+    switch (id) {
+#define PATINA_TERMS(model, name, summary) PATINA_CASE(shader, model, specularTerms(material, N, V, L))
+        PATINA_BRDF_MODELS(PATINA_TERMS)
+#undef PATINA_TERMS
+    }
+    return shader::model_Epic::specularTerms(material, N, V, L);
+}
+
+glm::vec3 shadeLight(BrdfModelId id, const shader::PackedLight& light, const shader::SurfaceMaterial& material,
+                     glm::vec3 P, glm::vec3 N, glm::vec3 V) {
+    switch (id) {
+#define PATINA_SHADE(model, name, summary) PATINA_CASE(shader, model, shadeLight(light, material, P, N, V))
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return shader::shadeLight(light, material, P, N, V);
+}
+
+BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const Material& material, glm::dvec3 N, glm::dvec3 V,
+                             glm::dvec3 L) {
+    const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(
+        glm::dvec3(material.baseColor), material.roughness, material.specular, material.metallic);
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary)                                                   \
+    case BrdfModelId::model: {                                                                 \
+        const shader_f64::BrdfValue f = shader_f64::PATINA_MODEL_NAMESPACE(model)::evaluateBrdf(m, N, V, L); \
+        return {f.diffuse, f.specular};                                                        \
+    }
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    return {};
+}
+
+double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {
+    const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(glm::dvec3(1.0), roughness, 0.5, 0.0);
+    switch (id) {
+#define PATINA_LOBE(model, name, summary) PATINA_CASE(shader_f64, model, specularLobe(m, N, V, L))
+        PATINA_BRDF_MODELS(PATINA_LOBE)
+#undef PATINA_LOBE
+    }
+    return 0.0;
+}
+
+}  // namespace patina

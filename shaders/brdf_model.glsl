@@ -1,0 +1,130 @@
+// One BRDF model: the terms brdf.glsl offers, chosen at compile time (Filament's dispatch
+// style), then evaluateBrdf and shadeLight built from them. Shared GLSL / C++; include after
+// brdf.glsl, lights.glsl and energy_table.glsl. Every permutation compiles only the terms it uses.
+//   PATINA_D   0: GGX, Lagrange form (guarded)   1: GGX, standard form
+//   PATINA_V   0: Schlick-GGX k = (r+1)^2/8      1: Schlick-GGX k = alpha/2
+//              2: Smith separable                3: Smith height-correlated
+//              4: height-correlated, Hammon's approximation
+//   PATINA_F   0: Schlick, spherical-Gaussian    1: Schlick pow5   2: exact dielectric
+//   PATINA_FD  0: Lambert                        1: Burley
+//   PATINA_MS  0: single scattering              1: Turquin 2019 energy compensation
+// The defaults are the seed model, "epic".
+#ifndef PATINA_D
+#define PATINA_D 0
+#endif
+#ifndef PATINA_V
+#define PATINA_V 0
+#endif
+#ifndef PATINA_F
+#define PATINA_F 0
+#endif
+#ifndef PATINA_FD
+#define PATINA_FD 0
+#endif
+#ifndef PATINA_MS
+#define PATINA_MS 0
+#endif
+
+PATINA_INLINE float distribution(float NoH, vec3 NxH, float alpha) {
+#if PATINA_D == 1
+    return D_GGX_Standard(NoH, alpha);
+#else
+    return D_GGX(NoH, NxH, alpha);
+#endif
+}
+
+PATINA_INLINE float visibility(float NoV, float NoL, SurfaceMaterial material) {
+#if PATINA_V == 1
+    return V_SchlickGGX(NoV, NoL, material.alpha * 0.5f);
+#elif PATINA_V == 2
+    return V_SmithGGX(NoV, NoL, material.alpha);
+#elif PATINA_V == 3
+    return V_SmithGGXCorrelated(NoV, NoL, material.alpha);
+#elif PATINA_V == 4
+    return V_SmithGGXCorrelated_Fast(NoV, NoL, material.alpha);
+#else
+    return V_SchlickGGX(NoV, NoL, k_Karis(material.roughness));
+#endif
+}
+
+PATINA_INLINE vec3 fresnel(vec3 f0, float VoH) {
+#if PATINA_F == 1
+    return F_Schlick(f0, VoH);
+#elif PATINA_F == 2
+    return F_DielectricExact(f0, VoH);
+#else
+    return F_SchlickSphericalGaussian(f0, VoH);
+#endif
+}
+
+PATINA_INLINE vec3 diffuse(SurfaceMaterial material, float NoV, float NoL, float LoH) {
+#if PATINA_FD == 1
+    return Fd_Burley(material.diffuseColor, material.roughness, NoV, NoL, LoH);
+#else
+    return Fd_Lambert(material.diffuseColor);
+#endif
+}
+
+// Turquin 2019, "Practical multiple scattering compensation for microfacet models", eq. 18 in
+// Filament's form: sp *= 1 + F0 (1 / E(NoV) - 1), E the single-scattering directional albedo
+// with F = 1, from the model's own table (energy_table.glsl; include it first).
+PATINA_INLINE vec3 energyCompensation(vec3 f0, float NoV, float roughness) {
+#if PATINA_MS == 1
+    float albedo = max(energyTableLookup(NoV, roughness), 1e-4f);
+    return vec3(1.0f) + f0 * (1.0f / albedo - 1.0f);
+#else
+    return vec3(1.0f);
+#endif
+}
+
+// f = d + sp for unit N, V, L on the lit side (NoL > 0); the caller skips NoL <= 0.
+PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+    vec3 LplusV = L + V;
+    float lengthSquared = dot(LplusV, LplusV);
+    float NoV = max(dot(N, V), MIN_N_DOT_V);
+    float NoL = clamp(dot(N, L), 0.0f, 1.0f);
+    // L = -V: H is 0/0. Only reachable with V below the surface; no half vector, no specular.
+    if (lengthSquared <= 0.0f) {
+        return BrdfValue(diffuse(material, NoV, NoL, 0.0f), vec3(0.0f));
+    }
+    vec3 H = LplusV * inversesqrt(lengthSquared);
+    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
+    float VoH = clamp(dot(V, H), 0.0f, 1.0f);
+    float D = distribution(NoH, cross(N, H), material.alpha);
+    float Vis = visibility(NoV, NoL, material);
+    vec3 F = fresnel(material.f0, VoH);
+    vec3 specular = (D * Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
+    // LoH = VoH: H bisects L and V.
+    return BrdfValue(diffuse(material, NoV, NoL, VoH), specular);
+}
+
+// Outgoing radiance towards V from one light at point P with unit normal N (zero allowed).
+PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    if (light.type == LIGHT_HEMISPHERE) {
+        // Diffuse only, seen with L = N.
+        float NoV = max(dot(N, V), MIN_N_DOT_V);
+        vec3 H = safeNormalize(N + V);
+        return hemisphereRadiance(light, N) * diffuse(material, NoV, 1.0f, clamp(dot(N, H), 0.0f, 1.0f));
+    }
+    vec3 L;
+    vec3 radiance = light.radiance;
+    if (light.type == LIGHT_POINT) {
+        vec3 toLight = light.position - P;
+        float distanceSquared = dot(toLight, toLight);
+        if (distanceSquared <= MIN_LIGHT_DISTANCE_SQUARED) {
+            return vec3(0.0f);
+        }
+        float t = sqrt(distanceSquared);
+        L = toLight / t;
+        radiance = radiance * pointLightAttenuation(t, light.radius, light.attenuation);
+    } else {
+        L = light.directionToLight;
+    }
+    float NoL = dot(N, L);
+    // Back-facing light contributes nothing; skipping also keeps sp away from NoL = 0.
+    if (!(NoL > 0.0f)) {
+        return vec3(0.0f);
+    }
+    BrdfValue f = evaluateBrdf(material, N, V, L);
+    return radiance * min(NoL, 1.0f) * (f.diffuse + f.specular);
+}
