@@ -111,6 +111,15 @@ BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const Material& material, glm::dvec
     return {};
 }
 
+float tabulatedAlbedo(BrdfModelId id, float NoV, float roughness) {
+    switch (id) {
+#define PATINA_LOOKUP(model, name, summary) PATINA_CASE(shader, model, energyTableLookup(NoV, roughness))
+        PATINA_BRDF_MODELS(PATINA_LOOKUP)
+#undef PATINA_LOOKUP
+    }
+    return 1.0f;
+}
+
 double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {
     const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(glm::dvec3(1.0), roughness, 0.5, 0.0);
     switch (id) {

@@ -11,6 +11,9 @@ enum class BrdfModelId;
 constexpr int kEnergyTableSize = 32;
 const std::vector<float>& energyTable(BrdfModelId id);
 
+// The table interpolated as the shaders do it (shaders/energy_table.glsl).
+float tabulatedAlbedo(BrdfModelId id, float NoV, float roughness);
+
 // E(NoV, r) integrated directly: GGX importance sampling of the half vector (Walter et al.
 // 2007, eqs. 35-36) over a Hammersley set of `samples` points, in double.
 double directionalAlbedo(BrdfModelId id, double NoV, double roughness, int samples = 4096);
