@@ -12,5 +12,8 @@ Command addProbeCommand(CLI::App& app);
 Command addLobeCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addSheetCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
+Command addStabilityCommand(CLI::App& app);
+Command addFurnaceCommand(CLI::App& app);
 
 }  // namespace patina::cli

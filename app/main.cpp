@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
                      patina::cli::addLobeCommand, patina::cli::addCompareCommand,
-                     patina::cli::addSheetCommand}) {
+                     patina::cli::addSheetCommand, patina::cli::addBenchCommand,
+                     patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand}) {
         patina::cli::Command run = add(app);
         commands.emplace_back(app.get_subcommands({}).back(), std::move(run));
     }

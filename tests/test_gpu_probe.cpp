@@ -95,7 +95,7 @@ TEST(GpuProbe, AgreesWithTheSameCodeOnTheCpu) {
 TEST(GpuProbe, EdgeSweepIsFiniteAndNonNegative) {
     test::glContext();
     GpuProbe probe;
-    for (const test::EdgeCase& edge : test::edgeCases()) {
+    for (const EdgeCase& edge : edgeCases()) {
         for (const glm::vec3& v : probe.evaluate(edge.material, edge.lights, edge.samples)) {
             for (int c = 0; c < 3; ++c) {
                 EXPECT_TRUE(std::isfinite(v[c]) && v[c] >= 0.0f) << edge.name << ": " << v[c];

@@ -23,7 +23,7 @@ void expectFiniteNonNegative(const std::vector<glm::vec3>& values, const std::st
 }
 
 TEST(Guards, EdgeSweepOnCpuIsFiniteAndNonNegative) {
-    for (const test::EdgeCase& edge : test::edgeCases()) {
+    for (const EdgeCase& edge : edgeCases()) {
         expectFiniteNonNegative(probeOnCpu(edge.material, edge.lights, edge.samples), edge.name);
     }
 }

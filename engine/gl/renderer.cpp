@@ -286,6 +286,14 @@ RenderOutput Renderer::readBack(int slot) const {
     return output;
 }
 
+double Renderer::timedDraw(const Scene& scene, const RenderSettings& settings) {
+    glFinish();
+    lastGpuMilliseconds();   // collect a pending query so this draw is timed
+    draw(scene, settings, 0);
+    glFinish();
+    return lastGpuMilliseconds();
+}
+
 RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
     draw(scene, settings, 0);
     return readBack(0);

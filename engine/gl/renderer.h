@@ -53,6 +53,9 @@ public:
     // GPU time of the most recent draw whose timer query has completed (GL_TIME_ELAPSED,
     // read without waiting), in milliseconds; negative before the first.
     double lastGpuMilliseconds();
+    // draw into slot 0 and wait for it: the GPU time of that draw in milliseconds (for
+    // benchmarks; it stalls the pipeline).
+    double timedDraw(const Scene& scene, const RenderSettings& settings);
     // draw + readBack of slot 0.
     RenderOutput render(const Scene& scene, const RenderSettings& settings);
 

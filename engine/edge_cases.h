@@ -7,7 +7,7 @@
 #include "probe.h"
 #include "scene.h"
 
-namespace patina::test {
+namespace patina {
 
 struct EdgeCase {
     std::string name;
@@ -18,4 +18,4 @@ struct EdgeCase {
 
 std::vector<EdgeCase> edgeCases();
 
-}  // namespace patina::test
+}  // namespace patina

@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-namespace patina::test {
+namespace patina {
 
 namespace {
 Light directionalFrom(glm::vec3 toLight) {
@@ -100,4 +100,4 @@ std::vector<EdgeCase> edgeCases() {
     return cases;
 }
 
-}  // namespace patina::test
+}  // namespace patina

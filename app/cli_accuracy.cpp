@@ -1,0 +1,101 @@
+// The speed/accuracy commands: bench, stability and furnace. Each writes into --out-dir
+// (default: the current folder).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "bench.h"
+#include "cli.h"
+#include "furnace.h"
+#include "gl/headless_context.h"
+#include "image.h"
+#include "input_error.h"
+#include "inputs.h"
+#include "stability.h"
+
+namespace patina::cli {
+
+namespace {
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    writeOutput(path.string(), std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg) {
+    if (svg) {
+        writeText(stem.string() + ".svg", chartToSvg(chart));
+    }
+    writeOutput(stem.string() + ".png", encodePng(chartToImage(chart)));
+}
+
+std::filesystem::path outputFolder(const std::string& folder) {
+    const std::filesystem::path path = folder.empty() ? "." : folder;
+    if (!std::filesystem::is_directory(path)) {
+        throw InputError(path.string() + ": not a folder");
+    }
+    return path;
+}
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+    struct Options {
+        std::string outDir;
+        bool quick = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "bench", "Cost against error of every BRDF model: bench.csv and speed_accuracy.svg/.png");
+    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
+    command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
+    return [options] {
+        const std::filesystem::path folder = outputFolder(options->outDir);
+        HeadlessContext context;
+        BenchOptions benchOptions;
+        benchOptions.quick = options->quick;
+        const BenchResult result = runBench(benchOptions);
+        writeText(folder / "bench.csv", benchCsv(result));
+        writeChart(folder / "speed_accuracy", benchChart(result), true);
+        std::cout << result.rows.size() << " models, " << result.samples << " samples, on " << result.renderer << "\n";
+    };
+}
+
+Command addStabilityCommand(CLI::App& app) {
+    struct Options {
+        std::string outDir;
+        bool quick = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "stability", "Where each BRDF model fails: stability.csv and a heat map per model");
+    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
+    command->add_flag("--quick", options->quick, "A smaller grid (for CI)");
+    return [options] {
+        const std::filesystem::path folder = outputFolder(options->outDir);
+        HeadlessContext context;
+        const std::vector<StabilityRow> rows = runStability(options->quick);
+        writeText(folder / "stability.csv", stabilityCsv(rows));
+        for (const BrdfModelInfo& model : brdfModels()) {
+            writeOutput((folder / ("stability_" + std::string(model.name) + ".png")).string(),
+                        encodePng(stabilityHeatMap(rows, std::string(model.name))));
+        }
+    };
+}
+
+Command addFurnaceCommand(CLI::App& app) {
+    struct Options {
+        std::string outDir;
+        bool quick = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "furnace", "White furnace: specular albedo with F = 1 of every model: furnace.csv and furnace.png");
+    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
+    command->add_flag("--quick", options->quick, "Fewer roughness steps and samples (for CI)");
+    return [options] {
+        const std::filesystem::path folder = outputFolder(options->outDir);
+        const std::vector<FurnaceCurve> curves = whiteFurnace(options->quick ? 10 : 40, options->quick ? 1024 : 4096);
+        writeText(folder / "furnace.csv", furnaceCsv(curves));
+        writeChart(folder / "furnace", furnaceChart(curves), false);
+    };
+}
+
+}  // namespace patina::cli
