@@ -121,8 +121,10 @@ int JsonObjectReader::integer(const char* key, int fallback, Range range) {
     if (!value) {
         return fallback;
     }
-    if (!value->is_number_integer()) {
-        fail(key, "expected an integer, got " + typeName(*value));
+    // 1.0 is an integer too, as JSON Schema counts it.
+    if (!value->is_number() || (value->is_number_float() &&
+                                std::trunc(value->get<double>()) != value->get<double>())) {
+        fail(key, "expected an integer, got " + (value->is_number() ? value->dump() : typeName(*value)));
     }
     return int(checkedNumber(*value, pointerOf(key), range));
 }
@@ -181,15 +183,25 @@ void JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int sup
     }
 }
 
-std::vector<std::string> JsonObjectReader::unknownKeys() const {
+std::vector<std::string> JsonObjectReader::unknownKeys(const char* fate) const {
     std::vector<std::string> warnings;
     for (auto it = object_.begin(); it != object_.end(); ++it) {
         if (!read_.count(it.key())) {
             warnings.push_back(source_ + ": " + pointerOf(it.key().c_str()) + ": unknown key '" +
-                               it.key() + "' (ignored)");
+                               it.key() + "' (" + fate + ")");
         }
     }
     return warnings;
+}
+
+Json JsonObjectReader::unknownEntries() const {
+    Json entries = Json::object();
+    for (auto it = object_.begin(); it != object_.end(); ++it) {
+        if (!read_.count(it.key())) {
+            entries[it.key()] = it.value();
+        }
+    }
+    return entries;
 }
 
 }  // namespace patina

@@ -5,14 +5,11 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
-#include <nlohmann/json.hpp>
 
 #include "input_error.h"
+#include "json_value.h"
 
 namespace patina {
-
-// Ordered: files keep their key order when Patina writes them back.
-using Json = nlohmann::ordered_json;
 
 // Parses JSON text; a syntax error becomes an InputError "SOURCE:LINE:COLUMN: ...".
 Json parseJsonText(const std::string& text, const std::string& source);
@@ -43,8 +40,10 @@ public:
     std::string pointerOf(const char* key) const { return pointer_ + "/" + key; }
     const std::string& source() const { return source_; }
 
-    // "SOURCE: /pointer: unknown key 'x' (ignored)" for every key not read so far.
-    std::vector<std::string> unknownKeys() const;
+    // "SOURCE: /pointer: unknown key 'x' (FATE)" for every key not read so far.
+    std::vector<std::string> unknownKeys(const char* fate = "ignored") const;
+    // The keys not read so far with their values, in file order.
+    Json unknownEntries() const;
     [[noreturn]] void fail(const char* key, const std::string& what) const;
 
     // Requires "format": expectedFormat and "version" <= supportedVersion.

@@ -4,6 +4,7 @@
 #include <glm/vec3.hpp>
 
 #include "brdf_model_id.h"
+#include "json_value.h"
 
 namespace patina {
 
@@ -15,6 +16,9 @@ struct Material {
     float specular = 0.5f;
     float metallic = 0.0f;
     BrdfModelId model = BrdfModelId::Epic;   // how it is shaded (engine/brdf_models.h)
+    std::string notes{};            // where the numbers come from; shading ignores it
+    // Keys of the file Patina does not know, kept so that saving writes them back.
+    Json extras = Json::object();
 
     bool operator==(const Material&) const = default;
 };

@@ -110,7 +110,9 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.roughness = reader.number("roughness", material.roughness, kUnit);
     material.specular = reader.number("specular", material.specular, kUnit);
     material.metallic = reader.number("metallic", material.metallic, kUnit);
-    appendAll(warnings, reader.unknownKeys());
+    material.notes = reader.string("notes", material.notes);
+    material.extras = reader.unknownEntries();
+    appendAll(warnings, reader.unknownKeys("kept, not used"));
     return material;
 }
 
@@ -167,13 +169,23 @@ Scene loadSceneFile(const std::filesystem::path& path, std::vector<std::string>&
 }
 
 Json materialToJson(const Material& material) {
-    return Json{{"format", "patina-material"},
-                {"version", kMaterialFormatVersion},
-                {"name", material.name},
-                {"baseColor", toJson(material.baseColor)},
-                {"roughness", toJson(material.roughness)},
-                {"specular", toJson(material.specular)},
-                {"metallic", toJson(material.metallic)}};
+    Json json{{"format", "patina-material"},
+              {"version", kMaterialFormatVersion},
+              {"name", material.name},
+              {"baseColor", toJson(material.baseColor)},
+              {"roughness", toJson(material.roughness)},
+              {"specular", toJson(material.specular)},
+              {"metallic", toJson(material.metallic)}};
+    if (!material.notes.empty()) {
+        json["notes"] = material.notes;
+    }
+    // Unknown keys go back where the file had them; a known key always wins over an extra.
+    for (auto it = material.extras.begin(); it != material.extras.end(); ++it) {
+        if (!json.contains(it.key())) {
+            json[it.key()] = it.value();
+        }
+    }
+    return json;
 }
 
 Json sceneToJson(const Scene& scene) {

@@ -22,6 +22,7 @@ Scene sceneFromJson(const Json& json, const std::string& source,
                     const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings);
 Scene loadSceneFile(const std::filesystem::path& path, std::vector<std::string>& warnings);
 
+// Unknown keys the material was read with (Material::extras) come back after the known ones.
 Json materialToJson(const Material& material);
 Json sceneToJson(const Scene& scene);   // the material inline
 
