@@ -1,12 +1,14 @@
 #pragma once
-// A test fixture with a folder of its own, named after the test, emptied before it runs and
-// removed after.
+// A test fixture with a folder of its own, named after the test and the process (builds in
+// other folders may run the same test at the same time), emptied before it runs and removed
+// after.
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 namespace patina::test {
 
@@ -15,7 +17,8 @@ protected:
     void SetUp() override {
         const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
         dir_ = std::filesystem::temp_directory_path() /
-               ("patina_" + std::string(info->test_suite_name()) + "_" + info->name());
+               ("patina_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+                std::to_string(::getpid()));
         std::filesystem::remove_all(dir_);
         std::filesystem::create_directories(dir_);
     }

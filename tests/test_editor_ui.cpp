@@ -191,3 +191,20 @@ TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAsking) {
 
 }  // namespace
 }  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
+    const LdrImage epic = services_->viewportPixels(0);
+    EXPECT_GT(services_->accuracy(state_.scene.material).physical.relativeRmse, 1e-3);
+    state_.scene.material.model = BrdfModelId::Reference;
+    frames(2);
+    EXPECT_GT(differingPixels(epic, services_->viewportPixels(0)), 100);
+    EXPECT_EQ(services_->accuracy(state_.scene.material).physical.relativeRmse, 0.0);
+    press(kKeyZ, true);   // the model is part of the material: undoable
+    EXPECT_EQ(state_.scene.material.model, BrdfModelId::Epic);
+}
+
+}  // namespace
+}  // namespace patina::editor

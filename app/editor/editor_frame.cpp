@@ -79,7 +79,17 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     ImGui::PopStyleVar();
     if (beginPanel("Lobe", ImVec2(layout.leftWidth, top + viewportHeight), ImVec2(centreWidth, layout.lobeHeight),
                    false, &layout.lobeHeight)) {
-        drawLobePanel(state);
+        if (ImGui::BeginTabBar("bottom")) {
+            if (ImGui::BeginTabItem("Lobe")) {
+                drawLobePanel(state);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Accuracy")) {
+                drawAccuracyPanel(state, services);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
     }
     ImGui::End();
 

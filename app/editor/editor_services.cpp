@@ -93,6 +93,30 @@ const Texture* EditorServices::thumbnail(const std::filesystem::path& material, 
     return entry.texture.get();
 }
 
+const AccuracyNumbers& EditorServices::accuracy(const Material& material) {
+    if (!accuracy_ || accuracy_->first != material) {
+        accuracy_ = std::pair{material, accuracyOf(material)};
+    }
+    return accuracy_->second;
+}
+
+const Texture* EditorServices::benchChart(const std::filesystem::path& png) {
+    std::error_code error;
+    const auto modified = std::filesystem::last_write_time(png, error);
+    if (error) {
+        return nullptr;
+    }
+    if (!benchChart_.texture || benchChart_.modified != modified) {
+        try {
+            benchChart_.texture = std::make_unique<Texture>(decodePng(readFileBytes(png)));
+        } catch (const std::exception&) {
+            benchChart_.texture.reset();
+        }
+        benchChart_.modified = modified;
+    }
+    return benchChart_.texture.get();
+}
+
 std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& state, int width, int height) {
     try {
         const Scene scene = renderedScene(state);

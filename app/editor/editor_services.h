@@ -5,11 +5,19 @@
 #include <optional>
 
 #include "gl/renderer.h"
+#include "accuracy.h"
 #include "editor_state.h"
 #include "gl/texture.h"
 #include "keys.h"
 
 namespace patina::editor {
+
+// The current material's error against reference and fp32's against fp64 (accuracy_panel.cpp).
+struct AccuracyNumbers {
+    ErrorStats physical;
+    ErrorStats implementation;
+};
+AccuracyNumbers accuracyOf(const Material& material);
 
 // What panels need beyond EditorState: the renderer (a current GL context is assumed) and its
 // caches. Rendering happens here only when what it shows changed.
@@ -36,6 +44,11 @@ public:
     // Thumbnails of material files, rendered once per file modification time.
     const Texture* thumbnail(const std::filesystem::path& material, const Scene& scene);
 
+    // accuracyOf(material), recomputed only when the material changes.
+    const AccuracyNumbers& accuracy(const Material& material);
+    // The bench chart PNG as a texture, reloaded when the file changes; null when there is none.
+    const Texture* benchChart(const std::filesystem::path& png);
+
     // Screenshot of the current view with the scene embedded; returns the file written.
     std::optional<std::filesystem::path> screenshot(EditorState& state, int width, int height);
     // A and B side by side with captions; returns the file written.
@@ -59,6 +72,8 @@ private:
         std::unique_ptr<Texture> texture;
     };
     std::map<std::filesystem::path, Thumbnail> thumbnails_;
+    std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
+    Thumbnail benchChart_;
 
     void useMesh(MeshKind mesh);
 };

@@ -49,6 +49,7 @@ struct EditorState {
     std::vector<std::filesystem::path> recentFiles;
     std::vector<std::filesystem::path> presetFolders;   // built-in first, then the user's
     std::filesystem::path screenshotFolder = ".";
+    std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
     int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
 
     std::string error;                       // shown until dismissed

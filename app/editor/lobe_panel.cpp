@@ -112,6 +112,14 @@ void drawLobePanel(EditorState& state) {
         curves.push_back(curve(aSamples, [](const LobeSample& s) { return luminance(s.total()); },
                                IM_COL32(160, 160, 160, 160), 3.0f));
     }
+    // The same material under the reference model, for what the current model gets wrong.
+    if (state.scene.material.model != BrdfModelId::Reference) {
+        Material reference = state.scene.material;
+        reference.model = BrdfModelId::Reference;
+        curves.push_back(curve(evaluateLobe(reference, lobe.thetaInDegrees, kSamples),
+                               [](const LobeSample& s) { return luminance(s.total()); }, IM_COL32(0, 220, 220, 200),
+                               1.0f));
+    }
     if (lobe.luminance) {
         curves.push_back(curve(samples, [](const LobeSample& s) { return luminance(s.diffuse); }, IM_COL32(110, 170, 255, 255), 1.0f));
         curves.push_back(curve(samples, [](const LobeSample& s) { return luminance(s.specular); }, IM_COL32(255, 150, 90, 255), 1.0f));

@@ -1,5 +1,6 @@
 #include <imgui.h>
 
+#include "brdf_models.h"
 #include "cpu_shading.h"
 #include "panels.h"
 #include "widgets.h"
@@ -20,6 +21,18 @@ void drawMaterialPanel(EditorState& state) {
     sliderWithReset("Roughness", &material.roughness, 0.0f, 1.0f, defaults.roughness);
     sliderWithReset("Specular", &material.specular, 0.0f, 1.0f, defaults.specular);
     sliderWithReset("Metallic", &material.metallic, 0.0f, 1.0f, defaults.metallic);
+    if (ImGui::BeginCombo("Model", std::string(brdfModel(material.model).name).c_str())) {
+        for (const BrdfModelInfo& model : brdfModels()) {
+            if (ImGui::Selectable(std::string(model.name).c_str(), model.id == material.model)) {
+                material.model = model.id;
+            }
+            if (ImGui::IsItemHovered()) {
+                ImGui::SetTooltip("%s", std::string(model.summary).c_str());
+            }
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Model");
 
     // What the shader derives from the four parameters (shaders/brdf.glsl), guards included.
     const shader::SurfaceMaterial derived = surfaceMaterial(material);

@@ -9,6 +9,7 @@ void drawMaterialPanel(EditorState& state);
 void drawLightsPanel(EditorState& state);
 void drawViewportPanel(EditorState& state, EditorServices& services);
 void drawLobePanel(EditorState& state);
+void drawAccuracyPanel(EditorState& state, EditorServices& services);
 void drawPresetsPanel(EditorState& state, EditorServices& services);
 void drawMenuBar(EditorState& state, EditorServices& services);
 void drawDialogs(EditorState& state, EditorServices& services);
