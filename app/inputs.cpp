@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "brdf_models.h"
 #include "image.h"
 #include "input_error.h"
 #include "scene_file.h"
@@ -21,6 +22,7 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene) {
         command.add_option("--scene", scenePath, "Scene JSON (default: the embedded scene)");
     }
     command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
+    command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
 }
 
 Scene SceneInputs::load() const {
@@ -28,6 +30,13 @@ Scene SceneInputs::load() const {
     Scene scene = scenePath.empty() ? defaultScene() : loadSceneFile(scenePath, warnings);
     if (!materialPath.empty()) {
         scene.material = loadMaterialFile(materialPath, warnings);
+    }
+    if (!model.empty()) {
+        const auto id = brdfModelFromName(model);
+        if (!id) {
+            throw InputError("--model: unknown BRDF model \"" + model + "\" (known: " + brdfModelNames() + ")");
+        }
+        scene.material.model = *id;
     }
     printWarnings(warnings);
     return scene;

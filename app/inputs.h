@@ -11,10 +11,11 @@ namespace patina::cli {
 struct SceneInputs {
     std::string scenePath;
     std::string materialPath;
+    std::string model;   // empty: the material's own
 
     void addOptions(CLI::App& command, bool withScene = true);
-    // The scene file (or the embedded default) with --material over its material. Warnings go
-    // to stderr; errors throw InputError.
+    // The scene file (or the embedded default) with --material over its material and --model
+    // over the material's model. Warnings go to stderr; errors throw InputError.
     Scene load() const;
 };
 

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdlib>
 
+#include "brdf_models.h"
 #include "shading.h"
 
 namespace patina {
@@ -110,6 +111,12 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.roughness = reader.number("roughness", material.roughness, kUnit);
     material.specular = reader.number("specular", material.specular, kUnit);
     material.metallic = reader.number("metallic", material.metallic, kUnit);
+    const std::string model = reader.string("model", std::string(brdfModel(material.model).name));
+    const auto modelId = brdfModelFromName(model);
+    if (!modelId) {
+        reader.fail("model", "unknown BRDF model \"" + model + "\" (known: " + brdfModelNames() + ")");
+    }
+    material.model = *modelId;
     material.notes = reader.string("notes", material.notes);
     material.extras = reader.unknownEntries();
     appendAll(warnings, reader.unknownKeys("kept, not used"));
@@ -175,7 +182,8 @@ Json materialToJson(const Material& material) {
               {"baseColor", toJson(material.baseColor)},
               {"roughness", toJson(material.roughness)},
               {"specular", toJson(material.specular)},
-              {"metallic", toJson(material.metallic)}};
+              {"metallic", toJson(material.metallic)},
+              {"model", brdfModel(material.model).name}};
     if (!material.notes.empty()) {
         json["notes"] = material.notes;
     }

@@ -149,3 +149,27 @@ TEST_F(Cli, LobePeaksAtTheMirrorDirection) {
 
 }  // namespace
 }  // namespace patina
+
+namespace patina {
+namespace {
+
+TEST_F(Cli, ModelOptionAndKeyChooseTheBrdf) {
+    write("in.csv", "px,py,pz,nx,ny,nz,vx,vy,vz\n0,0,1,0,0,1,0.6,0,0.8\n");
+    ASSERT_EQ(run("probe --backend cpu --in " + path("in.csv").string() + " --out " + path("epic.csv").string()).exitCode, 0);
+    ASSERT_EQ(run("probe --backend cpu --model reference --in " + path("in.csv").string() + " --out " +
+                  path("reference.csv").string()).exitCode, 0);
+    EXPECT_NE(read("epic.csv"), read("reference.csv"));
+    write("m.json", R"({"format": "patina-material", "version": 1, "model": "reference"})");
+    ASSERT_EQ(run("probe --backend cpu --material " + path("m.json").string() + " --in " + path("in.csv").string() +
+                  " --out " + path("from-file.csv").string()).exitCode, 0);
+    EXPECT_EQ(read("from-file.csv"), read("reference.csv"));
+    const test::CliRun bad = run("probe --model phong --in " + path("in.csv").string() + " --out " + path("x.csv").string());
+    EXPECT_EQ(bad.exitCode, 3);
+    EXPECT_NE(bad.stderrText.find("unknown BRDF model \"phong\""), std::string::npos) << bad.stderrText;
+    write("bad.json", R"({"format": "patina-material", "version": 1, "model": "phong"})");
+    EXPECT_NE(run("lobe --theta-in 30 --material " + path("bad.json").string() + " --out " + path("l.csv").string())
+                  .stderrText.find("bad.json: /model: unknown BRDF model"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace patina
