@@ -36,66 +36,60 @@ std::filesystem::path outputFolder(const std::string& folder) {
 }
 }  // namespace
 
-Command addBenchCommand(CLI::App& app) {
+namespace {
+// The three commands share their options: --out-dir and --quick.
+using Measurement = std::function<void(const std::filesystem::path& folder, bool quick)>;
+
+Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure) {
     struct Options {
         std::string outDir;
         bool quick = false;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand(
-        "bench", "Cost against error of every BRDF model: bench.csv and speed_accuracy.svg/.png");
+    CLI::App* command = app.add_subcommand(name, description);
     command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
     command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
-    return [options] {
-        const std::filesystem::path folder = outputFolder(options->outDir);
-        HeadlessContext context;
-        BenchOptions benchOptions;
-        benchOptions.quick = options->quick;
-        const BenchResult result = runBench(benchOptions);
-        writeText(folder / "bench.csv", benchCsv(result));
-        writeChart(folder / "speed_accuracy", benchChart(result), true);
-        std::cout << result.rows.size() << " models, " << result.samples << " samples, on " << result.renderer << "\n";
-    };
+    return [options, measure] { measure(outputFolder(options->outDir), options->quick); };
+}
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+    return addMeasurementCommand(
+        app, "bench", "Cost against error of every BRDF model: bench.csv and speed_accuracy.svg/.png",
+        [](const std::filesystem::path& folder, bool quick) {
+            HeadlessContext context;
+            BenchOptions options;
+            options.quick = quick;
+            const BenchResult result = runBench(options);
+            writeText(folder / "bench.csv", benchCsv(result));
+            writeChart(folder / "speed_accuracy", benchChart(result), true);
+            std::cout << result.rows.size() << " models, " << result.samples << " samples, on " << result.renderer
+                      << "\n";
+        });
 }
 
 Command addStabilityCommand(CLI::App& app) {
-    struct Options {
-        std::string outDir;
-        bool quick = false;
-    };
-    auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand(
-        "stability", "Where each BRDF model fails: stability.csv and a heat map per model");
-    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
-    command->add_flag("--quick", options->quick, "A smaller grid (for CI)");
-    return [options] {
-        const std::filesystem::path folder = outputFolder(options->outDir);
-        HeadlessContext context;
-        const std::vector<StabilityRow> rows = runStability(options->quick);
-        writeText(folder / "stability.csv", stabilityCsv(rows));
-        for (const BrdfModelInfo& model : brdfModels()) {
-            writeOutput((folder / ("stability_" + std::string(model.name) + ".png")).string(),
-                        encodePng(stabilityHeatMap(rows, std::string(model.name))));
-        }
-    };
+    return addMeasurementCommand(
+        app, "stability", "Where each BRDF model fails: stability.csv and a heat map per model",
+        [](const std::filesystem::path& folder, bool quick) {
+            HeadlessContext context;
+            const std::vector<StabilityRow> rows = runStability(quick);
+            writeText(folder / "stability.csv", stabilityCsv(rows));
+            for (const BrdfModelInfo& model : brdfModels()) {
+                writeOutput((folder / ("stability_" + std::string(model.name) + ".png")).string(),
+                            encodePng(stabilityHeatMap(rows, std::string(model.name))));
+            }
+        });
 }
 
 Command addFurnaceCommand(CLI::App& app) {
-    struct Options {
-        std::string outDir;
-        bool quick = false;
-    };
-    auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand(
-        "furnace", "White furnace: specular albedo with F = 1 of every model: furnace.csv and furnace.png");
-    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
-    command->add_flag("--quick", options->quick, "Fewer roughness steps and samples (for CI)");
-    return [options] {
-        const std::filesystem::path folder = outputFolder(options->outDir);
-        const std::vector<FurnaceCurve> curves = whiteFurnace(options->quick ? 10 : 40, options->quick ? 1024 : 4096);
-        writeText(folder / "furnace.csv", furnaceCsv(curves));
-        writeChart(folder / "furnace", furnaceChart(curves), false);
-    };
+    return addMeasurementCommand(
+        app, "furnace", "White furnace: specular albedo with F = 1 of every model: furnace.csv and furnace.png",
+        [](const std::filesystem::path& folder, bool quick) {
+            const std::vector<FurnaceCurve> curves = whiteFurnace(quick ? 10 : 40, quick ? 1024 : 4096);
+            writeText(folder / "furnace.csv", furnaceCsv(curves));
+            writeChart(folder / "furnace", furnaceChart(curves), false);
+        });
 }
 
 }  // namespace patina::cli
