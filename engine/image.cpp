@@ -116,7 +116,7 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
             continue;
         }
         if (n <= 0) {
-            const std::string message = systemError("cannot write", pattern);
+            const std::string message = systemError("cannot write", path);
             ::close(fd);
             ::unlink(pattern.c_str());
             throw std::runtime_error(message);
@@ -130,7 +130,7 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
     const bool synced = ::fsync(fd) == 0;
     const bool closed = ::close(fd) == 0;
     if (!synced || !closed) {
-        const std::string message = systemError("cannot flush", pattern);
+        const std::string message = systemError("cannot flush", path);
         ::unlink(pattern.c_str());
         throw std::runtime_error(message);
     }
@@ -138,6 +138,12 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
         const std::string message = systemError("cannot replace", path);
         ::unlink(pattern.c_str());
         throw std::runtime_error(message);
+    }
+    // The rename is durable once the folder is flushed too. Best effort: the new file is
+    // complete and in place already, and some file systems refuse fsync on a folder.
+    if (const int folder = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY); folder >= 0) {
+        ::fsync(folder);
+        ::close(folder);
     }
 }
 

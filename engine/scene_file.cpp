@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "brdf_models.h"
+#include "image.h"
+#include "json_writer.h"
 #include "shading.h"
 
 namespace patina {
@@ -194,6 +196,19 @@ Json materialToJson(const Material& material) {
         }
     }
     return json;
+}
+
+void saveMaterialFile(const std::filesystem::path& path, const Material& material) {
+    // The previous version goes to PATH.bak first, itself atomically: whenever this stops,
+    // both files hold a complete version.
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) {
+        std::filesystem::path backup = path;
+        backup += ".bak";
+        writeFileAtomic(backup, readFileBytes(path));
+    }
+    const std::string text = prettyJson(materialToJson(material));
+    writeFileAtomic(path, std::vector<uint8_t>(text.begin(), text.end()));
 }
 
 Json sceneToJson(const Scene& scene) {

@@ -26,4 +26,8 @@ Scene loadSceneFile(const std::filesystem::path& path, std::vector<std::string>&
 Json materialToJson(const Material& material);
 Json sceneToJson(const Scene& scene);   // the material inline
 
+// Saves a material file atomically and keeps the file it replaces as PATH.bak. Throws
+// std::runtime_error naming the path on failure; the previous file is then left as it was.
+void saveMaterialFile(const std::filesystem::path& path, const Material& material);
+
 }  // namespace patina

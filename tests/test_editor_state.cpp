@@ -111,6 +111,22 @@ TEST_F(EditorStateTest, FailedSaveKeepsTheChangesAndSaysWhy) {
     EXPECT_NE(state.error.find("Could not save"), std::string::npos);
 }
 
+TEST_F(EditorStateTest, SavingWritesBackUnknownKeysAndKeepsTheOldFileAsBak) {
+    const std::string original =
+        R"({"format": "patina-material", "version": 1, "name": "tagged", "author": "me",
+            "roughness": 0.5, "vendor": {"id": 7}})";
+    std::ofstream(dir_ / "tagged.json") << original;
+    ASSERT_TRUE(openFile(state, dir_ / "tagged.json")) << state.error;
+    EXPECT_NE(state.status.find("unknown key 'author'"), std::string::npos) << state.status;
+    state.scene.material.roughness = 0.25f;
+    ASSERT_TRUE(saveMaterial(state, dir_ / "tagged.json")) << state.error;
+    const Json saved = readJsonFile(dir_ / "tagged.json");
+    EXPECT_EQ(saved["author"], "me");
+    EXPECT_EQ(saved["vendor"]["id"], 7);
+    EXPECT_FLOAT_EQ(saved["roughness"].get<float>(), 0.25f);
+    EXPECT_EQ(readJsonFile(dir_ / "tagged.json.bak"), Json::parse(original));
+}
+
 TEST_F(EditorStateTest, LightListOperations) {
     const size_t initial = state.scene.lights.size();
     addLight(state, LightType::Point);

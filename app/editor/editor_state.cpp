@@ -2,9 +2,7 @@
 
 #include <algorithm>
 
-#include "image.h"
 #include "input_error.h"
-#include "json_writer.h"
 #include "png_text.h"
 #include "scene_file.h"
 #include "shading.h"
@@ -231,8 +229,7 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
 bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
     commitEdits(state);   // what was saved is a step of its own to come back to
     try {
-        const std::string text = prettyJson(materialToJson(state.scene.material));
-        writeFileAtomic(path, std::vector<uint8_t>(text.begin(), text.end()));
+        saveMaterialFile(path, state.scene.material);
     } catch (const std::exception& error) {
         state.error = "Could not save: " + std::string(error.what());
         return false;

@@ -101,7 +101,8 @@ Scene withMaterial(const EditorState& state, const Material& material);
 bool openFile(EditorState& state, const std::filesystem::path& path);
 // Asks first when the material is unsaved (state.pendingOpen), else opens.
 void requestOpen(EditorState& state, const std::filesystem::path& path);
-// Writes the material (atomically); on failure sets state.error and stays dirty.
+// Writes the material (saveMaterialFile: atomically, the old file kept as .bak); on failure
+// sets state.error, stays dirty and leaves the file on disk as it was.
 bool saveMaterial(EditorState& state, const std::filesystem::path& path);
 void rememberRecent(EditorState& state, const std::filesystem::path& path);
 
