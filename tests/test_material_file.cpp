@@ -1,4 +1,7 @@
-// Material files: notes, unknown keys kept for saving, required keys, the version.
+// Material files: notes, unknown keys kept for saving, required keys, the version; and the
+// shipped presets.
+#include <regex>
+
 #include <gtest/gtest.h>
 
 #include "scene_file.h"
@@ -79,6 +82,44 @@ TEST(MaterialFile, VersionIsAnIntegerUpToTheSupportedOne) {
               "m.json: /version: version 2 is newer than this Patina reads (up to 1)");
     EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 0})").find("/version: value 0"),
               std::string::npos);
+}
+
+std::vector<std::pair<std::filesystem::path, Material>> shippedPresets() {
+    std::vector<std::pair<std::filesystem::path, Material>> presets;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(PATINA_SOURCE_DIR) / "presets")) {
+        if (entry.path().extension() == ".json") {
+            std::vector<std::string> warnings;
+            presets.emplace_back(entry.path(), loadMaterialFile(entry.path(), warnings));
+        }
+    }
+    return presets;
+}
+
+TEST(ShippedPresets, AtLeastTwentyFourAndEachSaysWhereItsNumbersComeFrom) {
+    const auto presets = shippedPresets();
+    EXPECT_GE(presets.size(), 24u);
+    for (const auto& [file, material] : presets) {
+        EXPECT_GT(material.notes.size(), 40u) << file;
+        EXPECT_TRUE(material.extras.empty()) << file;
+    }
+}
+
+// Metals take F0 as their base colour; a dielectric's specular is its IOR's F0 / 0.08.
+TEST(ShippedPresets, DielectricSpecularMatchesTheIorItsNotesCite) {
+    const std::regex ior("IOR ([0-9]+\\.[0-9]+)");
+    for (const auto& [file, material] : shippedPresets()) {
+        std::smatch match;
+        if (material.metallic == 1.0f) {
+            EXPECT_NE(material.notes.find("F0"), std::string::npos) << file;
+            continue;
+        }
+        ASSERT_TRUE(std::regex_search(material.notes, match, ior)) << file << ": no IOR in the notes";
+        const double n = std::stod(match[1]);
+        const double f0 = (n - 1.0) * (n - 1.0) / ((n + 1.0) * (n + 1.0));
+        EXPECT_NEAR(material.specular, f0 / 0.08, 5e-4) << file;
+        EXPECT_EQ(material.metallic, 0.0f) << file;
+    }
 }
 
 }  // namespace
