@@ -1,6 +1,7 @@
 #include "brdf_models.h"
 
 #include "energy_table.h"
+#include "shading_f16.h"
 #include "shading_f64.h"
 
 // Every model's permutation, fp32 and fp64.
@@ -17,6 +18,14 @@ namespace patina::shader_f64 {
 #undef PATINA_INLINE
 #undef float
 }  // namespace patina::shader_f64
+
+namespace patina::shader_f16 {
+#define float Half
+#define PATINA_INLINE inline
+#include "brdf_model_instances.h"
+#undef PATINA_INLINE
+#undef float
+}  // namespace patina::shader_f16
 
 namespace patina {
 
@@ -118,6 +127,22 @@ float tabulatedAlbedo(BrdfModelId id, float NoV, float roughness) {
 #undef PATINA_LOOKUP
     }
     return 1.0f;
+}
+
+glm::dvec3 reflectedF16(BrdfModelId id, const Material& material, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {
+    auto half3 = [](glm::dvec3 v) { return HalfVec3(Half(v.x), Half(v.y), Half(v.z)); };
+    const shader_f16::SurfaceMaterial m = shader_f16::deriveSurfaceMaterial(
+        half3(glm::dvec3(material.baseColor)), Half(material.roughness), Half(material.specular), Half(material.metallic));
+    const HalfVec3 n = half3(N), v = half3(V), l = half3(L);
+    shader_f16::BrdfValue f{};
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary) \
+    case BrdfModelId::model: f = shader_f16::PATINA_MODEL_NAMESPACE(model)::evaluateBrdf(m, n, v, l); break;
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    const HalfVec3 reflected = (f.diffuse + f.specular) * half_glsl::max(half_glsl::dot(n, l), Half(0.0f));
+    return {double(reflected.x), double(reflected.y), double(reflected.z)};
 }
 
 double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {

@@ -56,6 +56,9 @@ struct BrdfValueF64 {
 };
 BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const Material& material, glm::dvec3 N, glm::dvec3 V,
                              glm::dvec3 L);
+// f * NoL with every operation in emulated binary16 (engine/half.h): the fp16 precision row.
+glm::dvec3 reflectedF16(BrdfModelId id, const Material& material, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L);
+
 // D * V of the model's specular lobe (F = 1, no compensation), double: what the white furnace
 // and the energy table integrate.
 double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L);

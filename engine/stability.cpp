@@ -20,6 +20,7 @@ const char* precisionName(Precision precision) {
     switch (precision) {
     case Precision::Fp64: return "fp64";
     case Precision::Fp32Cpu: return "fp32-cpu";
+    case Precision::Fp16Cpu: return "fp16-cpu";
     case Precision::Fp32Gpu: return "fp32-gpu";
     }
     return "?";
@@ -92,8 +93,9 @@ std::vector<StabilityRow> runStability(bool quick) {
     for (const BrdfModelInfo& model : brdfModels()) {
         StabilityRow fp64{std::string(model.name), Precision::Fp64, {}, {}, {}};
         StabilityRow cpu{fp64.model, Precision::Fp32Cpu, {}, {}, {}};
+        StabilityRow half{fp64.model, Precision::Fp16Cpu, {}, {}, {}};
         StabilityRow gpu{fp64.model, Precision::Fp32Gpu, {}, {}, {}};
-        std::vector<Cell> fp64Cells(cells), cpuCells(cells), gpuCells(cells);
+        std::vector<Cell> fp64Cells(cells), cpuCells(cells), halfCells(cells), gpuCells(cells);
         for (size_t ri = 0; ri < roughness.size(); ++ri) {
             for (float metallic : kMetallic) {
                 std::vector<AccuracySample> batch;
@@ -117,6 +119,8 @@ std::vector<StabilityRow> runStability(bool quick) {
                     const glm::dvec3 exact = reflectedF64(model.id, batch[i]);
                     compare(fp64.grid, fp64Cells[cellOf[i]], exact, exact);
                     compare(cpu.grid, cpuCells[cellOf[i]], reflectedF32(model.id, batch[i]), exact);
+                    compare(half.grid, halfCells[cellOf[i]],
+                            reflectedF16(model.id, batch[i].material, batch[i].N, batch[i].V, batch[i].L), exact);
                     compare(gpu.grid, gpuCells[cellOf[i]], glm::dvec3(gpuValues[i]), exact);
                 }
             }
@@ -127,7 +131,8 @@ std::vector<StabilityRow> runStability(bool quick) {
             countSpecialCases(cpu.specialCases, probeOnCpu(material, edge.lights, edge.samples));
             countSpecialCases(gpu.specialCases, probe.evaluate(material, edge.lights, edge.samples));
         }
-        for (auto [row, cellValues] : {std::pair{&fp64, &fp64Cells}, {&cpu, &cpuCells}, {&gpu, &gpuCells}}) {
+        for (auto [row, cellValues] :
+             {std::pair{&fp64, &fp64Cells}, {&cpu, &cpuCells}, {&half, &halfCells}, {&gpu, &gpuCells}}) {
             row->roughnessSteps = int(roughness.size());
             for (const Cell& cell : *cellValues) {
                 row->heat.push_back(cell.broken ? std::numeric_limits<double>::quiet_NaN() : cell.worst);

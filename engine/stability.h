@@ -1,7 +1,7 @@
 #pragma once
 // `patina stability`: where each model fails. A grid of roughness x NoV x NoL (spec section 2's
-// failure points included) evaluated in fp64, fp32 on the CPU and fp32 on the GPU, plus the
-// special cases of edge_cases.h. Needs a current GL context.
+// failure points included) evaluated in fp64, fp32 and emulated fp16 on the CPU and fp32 on the
+// GPU, plus the special cases of edge_cases.h. Needs a current GL context.
 #include <string>
 #include <vector>
 
@@ -13,7 +13,7 @@ namespace patina {
 extern const std::vector<double> kStabilityRoughness;   // 0, 1e-6, ..., 0.089, 0.1 .. 1
 extern const std::vector<double> kStabilityCosines;     // NoV and NoL: 0, 1e-7, ..., 1
 
-enum class Precision { Fp64, Fp32Cpu, Fp32Gpu };
+enum class Precision { Fp64, Fp32Cpu, Fp16Cpu, Fp32Gpu };
 const char* precisionName(Precision precision);
 
 struct StabilityCounts {

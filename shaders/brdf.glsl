@@ -8,7 +8,14 @@ const float PATINA_PI = 3.14159265358979f;
 
 // Perceptual roughness below this makes D = 0/0 at NoH = 1 (alpha^2 = 0). 0.045 is the fp32
 // floor used by Frostbite and Filament; it lies below 0.05, so well-defined inputs are unchanged.
+// In half precision (PATINA_HALF_PRECISION) the floor is 0.089, as Filament's for mobile: at
+// 0.045 the peak of D, 1 / (pi alpha^2) = 7.8e4, would overflow fp16's 65504.
+#ifdef PATINA_HALF_PRECISION
+const float MIN_PERCEPTUAL_ROUGHNESS = 0.089f;
+const float MAX_HALF = 65504.0f;
+#else
 const float MIN_PERCEPTUAL_ROUGHNESS = 0.045f;
+#endif
 // sp divides by NoV; a normal that faces away from the camera (smooth normals at the
 // silhouette) would make it 0 or negative. 1e-4 is the usual floor (spec section 2).
 const float MIN_N_DOT_V = 1e-4f;
@@ -54,7 +61,12 @@ PATINA_INLINE float D_GGX(float NoH, vec3 NxH, float alpha) {
     float oneMinusNoHSquared = dot(NxH, NxH);
     float a = NoH * alpha;
     float k = alpha / (oneMinusNoHSquared + a * a);
+#ifdef PATINA_HALF_PRECISION
+    // k itself can pass 65504 below the floor's peak; cap as spec section 2 does.
+    return min(min(k, 256.0f) * min(k, 256.0f) * (1.0f / PATINA_PI), MAX_HALF);
+#else
     return k * k * (1.0f / PATINA_PI);
+#endif
 }
 
 // Visibility terms: V = G / (4 NoL NoV), written so the division cancels where it can.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "brdf_models.h"
+#include "half.h"
 #include "cli_runner.h"
 #include "image.h"
 #include "scratch_test.h"
@@ -61,7 +62,7 @@ TEST_F(AccuracyCommands, StabilityWritesTheTableAndAHeatMapPerModel) {
     const test::CliRun run = test::runPatina("stability --quick --out-dir " + dir_.string(), dir_);
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const auto rows = readCsv(path("stability.csv"));
-    ASSERT_EQ(rows.size(), 3 * brdfModelCount() + 1);   // fp64, fp32 CPU, fp32 GPU
+    ASSERT_EQ(rows.size(), 4 * brdfModelCount() + 1);   // fp64, fp32 CPU, fp16 CPU, fp32 GPU
     for (const BrdfModelInfo& model : brdfModels()) {
         EXPECT_TRUE(std::filesystem::exists(path("stability_" + std::string(model.name) + ".png"))) << model.name;
     }
@@ -77,13 +78,44 @@ TEST_F(AccuracyCommands, FurnaceWritesCurvesForEveryModel) {
 }
 
 TEST(Stability, ShippedModelsAreFiniteAndNonNegativeEverywhere) {
+    // What ships runs in fp32 (GPU) and fp64; fp16 is the study of where precision runs out.
     test::glContext();
     for (const StabilityRow& row : runStability(false)) {
+        if (row.precision == Precision::Fp16Cpu) {
+            continue;
+        }
         EXPECT_EQ(row.grid.nan, 0u) << row.model << " " << precisionName(row.precision);
         EXPECT_EQ(row.grid.inf, 0u) << row.model << " " << precisionName(row.precision);
         EXPECT_EQ(row.grid.negative, 0u) << row.model << " " << precisionName(row.precision);
         EXPECT_EQ(row.specialCases.nan + row.specialCases.inf + row.specialCases.negative, 0u) << row.model;
     }
+}
+
+TEST(HalfPrecision, RoundsLikeBinary16) {
+    EXPECT_EQ(roundToHalf(65504.0f), 65504.0f);                    // the largest half
+    EXPECT_TRUE(std::isinf(roundToHalf(65520.0f)));                // halfway past it: infinity
+    EXPECT_EQ(roundToHalf(1.0f + 1.0f / 1024.0f), 1.0f + 1.0f / 1024.0f);   // 10 fraction bits
+    EXPECT_EQ(roundToHalf(1.0f + 1.0f / 2048.0f), 1.0f);          // a tie goes to even
+    EXPECT_EQ(roundToHalf(1.0f + 3.0f / 2048.0f), 1.0f + 2.0f / 1024.0f);
+    EXPECT_EQ(roundToHalf(std::ldexp(1.0f, -24)), std::ldexp(1.0f, -24));   // smallest subnormal
+    EXPECT_EQ(roundToHalf(std::ldexp(1.0f, -26)), 0.0f);
+    EXPECT_EQ(float(Half(0.1f) + Half(0.2f)), roundToHalf(roundToHalf(0.1f) + roundToHalf(0.2f)));
+}
+
+TEST(HalfPrecision, FloorsAndErrorsShowInTheStabilityTable) {
+    test::glContext();
+    double halfError = 0.0, floatError = 0.0;
+    for (const StabilityRow& row : runStability(true)) {
+        if (row.model == "epic" && row.precision == Precision::Fp16Cpu) {
+            halfError = row.grid.maxRelativeError;
+        }
+        if (row.model == "epic" && row.precision == Precision::Fp32Cpu) {
+            floatError = row.grid.maxRelativeError;
+        }
+    }
+    // Half has 11 significant bits to float's 24: its error is orders of magnitude larger.
+    EXPECT_GT(halfError, 100.0 * floatError);
+    EXPECT_GT(halfError, 1e-3);
 }
 
 }  // namespace
