@@ -7,14 +7,22 @@
 // Every model's permutation, fp32 and fp64.
 namespace patina::shader {
 #define PATINA_INLINE inline
+// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model_instances.h"
+#pragma GCC diagnostic pop
 #undef PATINA_INLINE
 }  // namespace patina::shader
 
 namespace patina::shader_f64 {
 #define float double
 #define PATINA_INLINE inline
+// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model_instances.h"
+#pragma GCC diagnostic pop
 #undef PATINA_INLINE
 #undef float
 }  // namespace patina::shader_f64
@@ -22,7 +30,11 @@ namespace patina::shader_f64 {
 namespace patina::shader_f16 {
 #define float Half
 #define PATINA_INLINE inline
+// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model_instances.h"
+#pragma GCC diagnostic pop
 #undef PATINA_INLINE
 #undef float
 }  // namespace patina::shader_f16

@@ -27,7 +27,11 @@ inline float energyTexel(int, int) {
     return 1.0f;   // epic has no energy compensation: never read
 }
 #include "energy_table.glsl"
+// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model.glsl"
+#pragma GCC diagnostic pop
 #undef PATINA_INLINE
 }  // namespace seed
 using namespace seed;
