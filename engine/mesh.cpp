@@ -1,6 +1,11 @@
 #include "mesh.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 
 namespace patina {
 
@@ -63,6 +68,41 @@ Mesh makeMesh(MeshKind kind) {
     case MeshKind::Sphere: break;
     }
     return makeUvSphere();
+}
+
+std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
+                                     std::span<const uint32_t> triangles) {
+    // The cross product's length is twice the triangle's area: the weight comes for free.
+    std::vector<glm::vec3> normals(positions.size(), glm::vec3(0.0f));
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const uint32_t a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+        const glm::vec3 n = glm::cross(positions[b] - positions[a], positions[c] - positions[a]);
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    for (glm::vec3& n : normals) {
+        const float length = glm::length(n);
+        n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    return normals;
+}
+
+BoundingSphere boundingSphere(const Mesh& mesh) {
+    if (mesh.positions.empty()) {
+        return {};
+    }
+    glm::vec3 low = mesh.positions.front(), high = low;
+    for (const glm::vec3& p : mesh.positions) {
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+    }
+    BoundingSphere sphere;
+    sphere.center = 0.5f * (low + high);
+    for (const glm::vec3& p : mesh.positions) {
+        sphere.radius = std::max(sphere.radius, glm::length(p - sphere.center));
+    }
+    return sphere;
 }
 
 }  // namespace patina

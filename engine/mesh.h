@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -21,5 +22,18 @@ Mesh makeUvSphere(int rings = 64, int segments = 128);
 Mesh makeTorus(float majorRadius = 0.75f, float minorRadius = 0.3f, int rings = 96,
                int segments = 48);
 Mesh makeMesh(MeshKind kind);
+
+// Area-weighted vertex normals of `positions` over `triangles` (three indices each); a vertex
+// on no triangle of non-zero area gets +y.
+std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
+                                     std::span<const uint32_t> triangles);
+
+// Where the camera frames a mesh: the centre of its bounding box and the distance from there
+// to the farthest vertex.
+struct BoundingSphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+BoundingSphere boundingSphere(const Mesh& mesh);
 
 }  // namespace patina

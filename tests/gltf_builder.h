@@ -1,0 +1,176 @@
+#pragma once
+// Hand-made glTF files for the tests: a JSON document and one binary buffer, written as a
+// .gltf with a .bin beside it, a .gltf with a data: URI, or a .glb. Nothing is checked here:
+// the tests break these files on purpose.
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "gltf_glb.h"
+#include "gltf_import.h"
+#include "input_error.h"
+#include "json_reader.h"
+
+namespace patina::test {
+
+// glTF component types.
+constexpr int kUnsignedByte = 5121;
+constexpr int kUnsignedShort = 5123;
+constexpr int kUnsignedInt = 5125;
+constexpr int kFloat = 5126;
+
+class GltfBuilder {
+public:
+    Json json{{"asset", {{"version", "2.0"}}}};
+    std::vector<uint8_t> bin;
+
+    // A buffer view of the values, 4-byte aligned in the buffer.
+    template <typename T>
+    int view(const std::vector<T>& values) {
+        const size_t offset = (bin.size() + 3) & ~size_t(3);
+        bin.resize(offset + values.size() * sizeof(T));
+        std::memcpy(bin.data() + offset, values.data(), values.size() * sizeof(T));
+        return add("bufferViews", {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * sizeof(T)}});
+    }
+    int accessor(int view, int componentType, size_t count, const char* type) {
+        return add("accessors",
+                   {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}});
+    }
+    // A view and an accessor over all the values: `components` numbers per element.
+    template <typename T>
+    int data(const std::vector<T>& values, int componentType, const char* type, size_t components) {
+        return accessor(view(values), componentType, values.size() / components, type);
+    }
+    int positions(const std::vector<glm::vec3>& points) {
+        return data(flatten(points), kFloat, "VEC3", 3);
+    }
+    // A mesh of one primitive, a node showing it, and that node in scene 0.
+    int meshNode(const Json& primitive, Json node = Json::object()) {
+        const int mesh = add("meshes", {{"primitives", Json::array({primitive})}});
+        node["mesh"] = mesh;
+        const int index = add("nodes", node);
+        if (!json.contains("scenes")) {
+            json["scenes"] = Json::array({Json{{"nodes", Json::array()}}});
+        }
+        json["scenes"][0]["nodes"].push_back(index);
+        return index;
+    }
+    int add(const char* collection, const Json& value) {
+        if (!json.contains(collection)) {
+            json[collection] = Json::array();
+        }
+        json[collection].push_back(value);
+        return int(json[collection].size()) - 1;
+    }
+
+    // The buffer as `binName` beside the .gltf (default: PATH.bin).
+    void writeGltf(const std::filesystem::path& path, std::string binName = "") {
+        if (binName.empty()) {
+            binName = std::filesystem::path(path).replace_extension(".bin").filename().string();
+        }
+        writeBytes(path.parent_path() / binName, bin);
+        writeText(path, withBuffer(binName).dump());
+    }
+    void writeGlb(const std::filesystem::path& path) const {
+        Json document = json;
+        document["buffers"] = Json::array({Json{{"byteLength", bin.size()}}});
+        writeBytes(path, gltf::joinGlb(document.dump(), bin.data(), bin.size()));
+    }
+    // The document with buffers[0] = {byteLength, uri}.
+    Json withBuffer(const std::string& uri) const {
+        Json document = json;
+        document["buffers"] = Json::array({Json{{"byteLength", bin.size()}, {"uri", uri}}});
+        return document;
+    }
+
+    static std::vector<float> flatten(const std::vector<glm::vec3>& points) {
+        std::vector<float> numbers;
+        for (const glm::vec3& p : points) {
+            numbers.insert(numbers.end(), {p.x, p.y, p.z});
+        }
+        return numbers;
+    }
+    // Each a new file: ext4 flushes a file truncated and written again, which costs
+    // milliseconds in the tests that write thousands.
+    static void writeText(const std::filesystem::path& path, const std::string& text) {
+        writeBytes(path, std::vector<uint8_t>(text.begin(), text.end()));
+    }
+    static void writeBytes(const std::filesystem::path& path, const std::vector<uint8_t>& bytes) {
+        std::filesystem::remove(path);
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    }
+};
+
+// A unit cube centred at the origin: 24 vertices (4 per face, so each face has its own normal)
+// and 12 counter-clockwise triangles.
+struct Cube {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<uint32_t> indices;
+
+    Cube() {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (const float sign : {1.0f, -1.0f}) {
+                glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+                n[axis] = sign;
+                u[(axis + 1) % 3] = sign;
+                v[(axis + 2) % 3] = 1.0f;   // u x v = n
+                const uint32_t first = uint32_t(positions.size());
+                for (const auto& [a, b] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+                    positions.push_back(0.5f * (n + float(a) * u + float(b) * v));
+                    normals.push_back(n);
+                }
+                indices.insert(indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+            }
+        }
+    }
+};
+
+// The cube as a document: accessor 0 positions, 1 normals (when asked for), then the indices
+// of `indexType` (0: none, the vertices repeated per corner instead), in one node of scene 0,
+// with one material.
+inline GltfBuilder cubeModel(bool withNormals = true, int indexType = kUnsignedShort) {
+    const Cube cube;
+    GltfBuilder model;
+    std::vector<glm::vec3> positions = cube.positions, normals = cube.normals;
+    if (indexType == 0) {
+        positions.clear();
+        normals.clear();
+        for (const uint32_t i : cube.indices) {
+            positions.push_back(cube.positions[i]);
+            normals.push_back(cube.normals[i]);
+        }
+    }
+    Json primitive{{"attributes", {{"POSITION", model.positions(positions)}}}};
+    if (withNormals) {
+        primitive["attributes"]["NORMAL"] = model.positions(normals);
+    }
+    if (indexType == kUnsignedByte) {
+        primitive["indices"] = model.data(std::vector<uint8_t>(cube.indices.begin(), cube.indices.end()),
+                                          kUnsignedByte, "SCALAR", 1);
+    } else if (indexType == kUnsignedShort) {
+        primitive["indices"] = model.data(std::vector<uint16_t>(cube.indices.begin(), cube.indices.end()),
+                                          kUnsignedShort, "SCALAR", 1);
+    } else if (indexType == kUnsignedInt) {
+        primitive["indices"] = model.data(cube.indices, kUnsignedInt, "SCALAR", 1);
+    }
+    primitive["material"] = model.add("materials", {{"name", "cube"}});
+    model.meshNode(primitive);
+    return model;
+}
+
+// The InputError importGltf throws, or "(loaded)"; any other exception fails the test.
+inline std::string importError(const std::filesystem::path& path) {
+    try {
+        importGltf(path);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "(loaded)";
+}
+
+}  // namespace patina::test
