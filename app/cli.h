@@ -15,5 +15,6 @@ Command addSheetCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addFurnaceCommand(CLI::App& app);
+Command addExportCommand(CLI::App& app);
 
 }  // namespace patina::cli

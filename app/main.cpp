@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
                      patina::cli::addLobeCommand, patina::cli::addCompareCommand,
                      patina::cli::addSheetCommand, patina::cli::addBenchCommand,
-                     patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand}) {
+                     patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
+                     patina::cli::addExportCommand}) {
         patina::cli::Command run = add(app);
         commands.emplace_back(app.get_subcommands({}).back(), std::move(run));
     }
