@@ -28,7 +28,7 @@ Command addRenderCommand(CLI::App& app) {
         const Scene scene = options->inputs.load();
         HeadlessContext context;
         Renderer renderer;
-        renderer.setMesh(makeMesh(scene.mesh));
+        renderer.setMesh(makeMesh(scene));
         RenderSettings settings;
         settings.width = options->width;
         settings.height = options->height;

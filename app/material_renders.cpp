@@ -21,7 +21,7 @@ std::vector<LdrImage> renderMaterials(Scene scene, const std::vector<Material>& 
                                       int width, int height) {
     HeadlessContext context;
     Renderer renderer;
-    renderer.setMesh(makeMesh(scene.mesh));
+    renderer.setMesh(makeMesh(scene));
     RenderSettings settings;
     settings.width = width;
     settings.height = height;

@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "gltf_import.h"
 
 namespace patina {
 
@@ -68,6 +69,10 @@ Mesh makeMesh(MeshKind kind) {
     case MeshKind::Sphere: break;
     }
     return makeUvSphere();
+}
+
+Mesh makeMesh(const Scene& scene) {
+    return scene.meshFile.empty() ? makeMesh(scene.mesh) : importGltf(scene.meshFile).mesh;
 }
 
 std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,

@@ -22,6 +22,9 @@ Mesh makeUvSphere(int rings = 64, int segments = 128);
 Mesh makeTorus(float majorRadius = 0.75f, float minorRadius = 0.3f, int rings = 96,
                int segments = 48);
 Mesh makeMesh(MeshKind kind);
+// The scene's mesh: its glTF file when it names one (InputError if that cannot be loaded),
+// else the built-in kind.
+Mesh makeMesh(const Scene& scene);
 
 // Area-weighted vertex normals of `positions` over `triangles` (three indices each); a vertex
 // on no triangle of non-zero area gets +y.

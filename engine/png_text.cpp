@@ -285,6 +285,10 @@ std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
     if (json.is_object() && json.contains("material") && json["material"].is_string()) {
         failAt(source, "/material", "an embedded scene must hold its material inline");
     }
+    if (json.is_object() && json.contains("mesh") && json["mesh"].is_string() &&
+        !meshKindFromName(json["mesh"].get<std::string>())) {
+        failAt(source, "/mesh", "an embedded scene must use a built-in mesh (\"sphere\" or \"torus\")");
+    }
     return sceneFromJson(json, source, {}, warnings);
 }
 

@@ -38,6 +38,9 @@ std::optional<MeshKind> meshKindFromName(std::string_view name);
 // Everything a render needs: plain data, no graph.
 struct Scene {
     MeshKind mesh = MeshKind::Sphere;
+    // A .gltf or .glb file shown instead of `mesh` when not empty; an absolute path (a scene
+    // file's relative path is resolved against the scene file's folder when it is read).
+    std::string meshFile;
     Material material;
     Camera camera;
     std::vector<Light> lights;

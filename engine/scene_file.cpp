@@ -6,6 +6,7 @@
 #include "brdf_models.h"
 #include "image.h"
 #include "json_writer.h"
+#include "gltf_import.h"
 #include "shading.h"
 
 namespace patina {
@@ -135,11 +136,15 @@ Scene sceneFromJson(const Json& json, const std::string& source,
     reader.checkFormatAndVersion("patina-scene", kSceneFormatVersion);
     Scene scene;
     const std::string mesh = reader.string("mesh", "sphere");
-    const auto meshKind = meshKindFromName(mesh);
-    if (!meshKind) {
-        reader.fail("mesh", "unknown mesh \"" + mesh + "\" (expected \"sphere\" or \"torus\")");
+    if (const auto meshKind = meshKindFromName(mesh)) {
+        scene.mesh = *meshKind;
+    } else if (!gltfExtension(mesh).empty()) {
+        // Absolute, so that the scene reads the same file wherever it is written back to.
+        scene.meshFile = std::filesystem::absolute(baseDirectory / mesh).lexically_normal().string();
+    } else {
+        reader.fail("mesh", "unknown mesh \"" + mesh +
+                                "\" (expected \"sphere\", \"torus\" or a .gltf or .glb file)");
     }
-    scene.mesh = *meshKind;
     if (const Json* material = reader.child("material")) {
         if (material->is_string()) {
             const std::filesystem::path materialPath = baseDirectory / material->get<std::string>();
@@ -236,7 +241,7 @@ Json sceneToJson(const Scene& scene) {
     Json material = materialToJson(scene.material);
     return Json{{"format", "patina-scene"},
                 {"version", kSceneFormatVersion},
-                {"mesh", meshKindName(scene.mesh)},
+                {"mesh", scene.meshFile.empty() ? std::string(meshKindName(scene.mesh)) : scene.meshFile},
                 {"material", material},
                 {"camera",
                  {{"position", toJson(scene.camera.position)},
