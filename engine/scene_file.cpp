@@ -4,9 +4,9 @@
 #include <cstdlib>
 
 #include "brdf_models.h"
+#include "gltf_import.h"
 #include "image.h"
 #include "json_writer.h"
-#include "gltf_import.h"
 #include "shading.h"
 
 namespace patina {
