@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "image.h"
+#include "gltf_export.h"
 #include "keys.h"
 #include "panels.h"
 #include "png_text.h"
@@ -204,6 +205,32 @@ TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
     EXPECT_EQ(services_->accuracy(state_.scene.material).physical.relativeRmse, 0.0);
     press(kKeyZ, true);   // the model is part of the material: undoable
     EXPECT_EQ(state_.scene.material.model, BrdfModelId::Epic);
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
+    const LdrImage sphere = services_->viewportPixels(0);
+    Mesh torus = makeTorus();
+    for (glm::vec3& p : torus.positions) {
+        p = p * 3.0f + glm::vec3(10.0f, 0.0f, 0.0f);   // far from the origin: the camera must follow
+    }
+    exportGltf(path("torus.glb"), torus, Material{});
+    ASSERT_TRUE(openFile(state_, path("torus.glb"))) << state_.error;
+    frames(2);
+    EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
+    EXPECT_NEAR(state_.scene.camera.target.x, 10.0f, 0.5f);   // framed on the model
+    EXPECT_GT(differingPixels(sphere, services_->viewportPixels(0)), 1000);
+
+    write("broken.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "../../etc/passwd", "byteLength": 4}]})");
+    const std::string before = state_.scene.meshFile;
+    EXPECT_FALSE(openFile(state_, path("broken.gltf")));
+    EXPECT_FALSE(state_.error.empty());
+    EXPECT_EQ(state_.scene.meshFile, before);
 }
 
 }  // namespace

@@ -31,19 +31,29 @@ std::filesystem::path screenshotPath(const std::filesystem::path& folder, const 
 
 EditorServices::EditorServices() : renderer_(std::make_unique<Renderer>()) {}
 
-void EditorServices::useMesh(MeshKind mesh) {
-    if (mesh != mesh_) {
-        renderer_->setMesh(makeMesh(mesh));
-        mesh_ = mesh;
+void EditorServices::useMesh(const Scene& scene) {
+    if (scene.mesh != mesh_ || scene.meshFile != meshFile_) {
+        // A file mesh arrives through provideMesh; reading it here would import it twice.
+        renderer_->setMesh(scene.meshFile.empty() ? makeMesh(scene.mesh) : makeMesh(scene));
+        mesh_ = scene.mesh;
+        meshFile_ = scene.meshFile;
         for (auto& slot : slots_) {
             slot.reset();
         }
     }
 }
 
+void EditorServices::provideMesh(const std::string& meshFile, const Mesh& mesh) {
+    renderer_->setMesh(mesh);
+    meshFile_ = meshFile;
+    for (auto& slot : slots_) {
+        slot.reset();
+    }
+}
+
 unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, PassMode passes,
                                          int slot, int samples) {
-    useMesh(scene.mesh);
+    useMesh(scene);
     SlotKey key{scene, width, height, passes, samples};
     if (slots_[slot] != key) {
         RenderSettings settings;
@@ -62,7 +72,7 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
 }
 
 RenderOutput EditorServices::renderImage(const Scene& scene, int width, int height, PassMode passes) {
-    useMesh(scene.mesh);
+    useMesh(scene);
     RenderSettings settings;
     settings.width = width;
     settings.height = height;

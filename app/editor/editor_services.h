@@ -64,6 +64,7 @@ private:
     };
     std::unique_ptr<Renderer> renderer_;
     MeshKind mesh_ = MeshKind::Sphere;
+    std::string meshFile_;
     std::optional<SlotKey> slots_[Renderer::kSlots];
     unsigned slotTextures_[Renderer::kSlots] = {};
     double lastRenderMilliseconds_ = 0.0, lastGpuMilliseconds_ = 0.0;
@@ -75,7 +76,12 @@ private:
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
     Thumbnail benchChart_;
 
-    void useMesh(MeshKind mesh);
+    void useMesh(const Scene& scene);
+
+public:
+    // The mesh the next draw of a scene with this meshFile uses (the editor imports it once,
+    // in openFile, and hands it over here).
+    void provideMesh(const std::string& meshFile, const Mesh& mesh);
 };
 
 }  // namespace patina::editor

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "camera_control.h"
+#include "gltf_import.h"
 #include "input_error.h"
 #include "png_text.h"
 #include "scene_file.h"
@@ -168,7 +170,40 @@ void rememberRecent(EditorState& state, const std::filesystem::path& path) {
     }
 }
 
+namespace {
+bool openMesh(EditorState& state, const std::filesystem::path& path) {
+    try {
+        auto mesh = std::make_shared<Mesh>(importGltf(path).mesh);
+        glm::vec3 low(INFINITY), high(-INFINITY);
+        for (const glm::vec3& p : mesh->positions) {
+            low = glm::min(low, p);
+            high = glm::max(high, p);
+        }
+        const glm::vec3 centre = mesh->positions.empty() ? glm::vec3(0.0f) : (low + high) * 0.5f;
+        float radius = 1e-3f;
+        for (const glm::vec3& p : mesh->positions) {
+            radius = std::max(radius, glm::distance(p, centre));
+        }
+        state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+        state.importedMesh = std::move(mesh);
+        state.meshCentre = centre;
+        state.meshRadius = radius;
+        frameCamera(state.scene.camera, centre, radius);
+        state.error.clear();
+        state.status = "Mesh " + path.filename().string();
+        rememberRecent(state, path);
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();   // the previous mesh stays
+        return false;
+    }
+}
+}  // namespace
+
 bool openFile(EditorState& state, const std::filesystem::path& path) {
+    if (!gltfExtension(path).empty()) {
+        return openMesh(state, path);
+    }
     std::vector<std::string> warnings;
     try {
         std::optional<Scene> scene;
@@ -199,6 +234,7 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
             // Camera, mesh and display are views, not edits: they follow the file.
             state.scene.camera = scene->camera;
             state.scene.mesh = scene->mesh;
+            state.scene.meshFile = scene->meshFile;
             state.scene.display = scene->display;
             state.materialPath.clear();
             state.soloLight = -1;

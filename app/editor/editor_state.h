@@ -1,10 +1,12 @@
 #pragma once
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "gl/renderer.h"
+#include "mesh.h"
 #include "scene.h"
 #include "undo_history.h"
 
@@ -52,6 +54,11 @@ struct EditorState {
     std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
     int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
 
+    // A glTF mesh opened for scene.meshFile, waiting to be uploaded (data, not GL state).
+    std::shared_ptr<const Mesh> importedMesh;
+    glm::vec3 meshCentre{0.0f};              // the file mesh's bounding sphere, for framing
+    float meshRadius = 1.0f;
+
     std::string error;                       // shown until dismissed
     std::string status;                      // last completed action
     std::optional<std::filesystem::path> pendingOpen;   // waits for "discard changes?"
@@ -96,8 +103,9 @@ Scene renderedScene(const EditorState& state);
 Scene withMaterial(const EditorState& state, const Material& material);
 
 // --- Files -------------------------------------------------------------------------------
-// Opens a material, scene or Patina screenshot (PNG with an embedded scene). Undoable. A
-// file that fails to load sets state.error and changes nothing else.
+// Opens a material, scene or Patina screenshot (PNG with an embedded scene), undoably, or a
+// .gltf/.glb mesh (shown instead of the sphere, the camera framed on it). A file that fails to
+// load sets state.error and changes nothing else.
 bool openFile(EditorState& state, const std::filesystem::path& path);
 // Asks first when the material is unsaved (state.pendingOpen), else opens.
 void requestOpen(EditorState& state, const std::filesystem::path& path);

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
@@ -16,10 +17,22 @@ constexpr float kGizmoRadius = 7.0f;
 
 void drawToolbar(EditorState& state) {
     DisplaySettings& display = state.scene.display;
-    int mesh = int(state.scene.mesh);
-    ImGui::SetNextItemWidth(90);
-    ImGui::Combo("Mesh", &mesh, "sphere\0torus\0");
-    state.scene.mesh = MeshKind(mesh);
+    // sphere, torus, or the glTF file opened or dropped on the window.
+    const std::string current = state.scene.meshFile.empty()
+                                    ? std::string(meshKindName(state.scene.mesh))
+                                    : std::filesystem::path(state.scene.meshFile).filename().string();
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::BeginCombo("Mesh", current.c_str())) {
+        for (MeshKind kind : {MeshKind::Sphere, MeshKind::Torus}) {
+            if (ImGui::Selectable(std::string(meshKindName(kind)).c_str(),
+                                  state.scene.meshFile.empty() && state.scene.mesh == kind)) {
+                state.scene.mesh = kind;
+                state.scene.meshFile.clear();
+            }
+        }
+        ImGui::TextDisabled("or open / drop a .gltf or .glb");
+        ImGui::EndCombo();
+    }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110);
     ImGui::SliderFloat("Exposure", &display.exposure, -8.0f, 8.0f, "%.2f EV");
@@ -147,7 +160,11 @@ void image(unsigned texture, ImVec2 size, float u0 = 0.0f, float u1 = 1.0f) {
 }  // namespace
 
 void frameMesh(EditorState& state) {
-    frameCamera(state.scene.camera, glm::vec3(0.0f), state.scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
+    if (!state.scene.meshFile.empty()) {
+        frameCamera(state.scene.camera, state.meshCentre, state.meshRadius);
+    } else {
+        frameCamera(state.scene.camera, glm::vec3(0.0f), state.scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
+    }
 }
 
 void drawViewportPanel(EditorState& state, EditorServices& services) {
