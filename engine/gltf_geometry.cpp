@@ -96,17 +96,21 @@ std::vector<Instance> meshInstances(const tinygltf::Model& model, const std::str
             }
         }
     }
-    std::vector<std::pair<int, glm::dmat4>> stack;
-    auto push = [&](int node, const std::string& from, const glm::dmat4& parent) {
+    // (node, parent or -1): the parent's world transform is looked up, not copied, so that a
+    // long list of children costs 8 bytes an entry.
+    std::vector<std::pair<int, int>> stack;
+    auto push = [&](int node, int parent, const std::string& from) {   // from: the list, or the parent
         if (node < 0 || size_t(node) >= nodeCount) {
-            fail(source, from + ": node " + std::to_string(node) + " does not exist");
+            fail(source, from + (parent < 0 ? "" : "/children") + ": node " + std::to_string(node) +
+                             " does not exist");
         }
         stack.emplace_back(node, parent);
     };
     for (auto root = roots.rbegin(); root != roots.rend(); ++root) {
-        push(*root, rootsAt, glm::dmat4(1.0));
+        push(*root, -1, rootsAt);
     }
     std::vector<bool> visited(nodeCount, false);
+    std::vector<glm::dmat4> worlds(nodeCount);
     std::vector<Instance> instances;
     while (!stack.empty()) {
         const auto [index, parent] = stack.back();
@@ -117,7 +121,8 @@ std::vector<Instance> meshInstances(const tinygltf::Model& model, const std::str
         }
         visited[size_t(index)] = true;
         const tinygltf::Node& node = model.nodes[size_t(index)];
-        const glm::dmat4 world = parent * localTransform(node, where, source);
+        const glm::dmat4 local = localTransform(node, where, source);
+        const glm::dmat4& world = worlds[size_t(index)] = parent < 0 ? local : worlds[size_t(parent)] * local;
         if (node.mesh != -1) {
             if (node.mesh < 0 || size_t(node.mesh) >= model.meshes.size()) {
                 fail(source, where + "/mesh: mesh " + std::to_string(node.mesh) + " does not exist");
@@ -125,7 +130,7 @@ std::vector<Instance> meshInstances(const tinygltf::Model& model, const std::str
             instances.push_back({size_t(node.mesh), world});
         }
         for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
-            push(*child, where + "/children", world);
+            push(*child, index, where);
         }
     }
     return instances;
