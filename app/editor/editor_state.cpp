@@ -174,21 +174,12 @@ namespace {
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
         auto mesh = std::make_shared<Mesh>(importGltf(path).mesh);
-        glm::vec3 low(INFINITY), high(-INFINITY);
-        for (const glm::vec3& p : mesh->positions) {
-            low = glm::min(low, p);
-            high = glm::max(high, p);
-        }
-        const glm::vec3 centre = mesh->positions.empty() ? glm::vec3(0.0f) : (low + high) * 0.5f;
-        float radius = 1e-3f;
-        for (const glm::vec3& p : mesh->positions) {
-            radius = std::max(radius, glm::distance(p, centre));
-        }
+        const BoundingSphere bounds = boundingSphere(*mesh);
         state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
         state.importedMesh = std::move(mesh);
-        state.meshCentre = centre;
-        state.meshRadius = radius;
-        frameCamera(state.scene.camera, centre, radius);
+        state.meshCentre = bounds.center;
+        state.meshRadius = std::max(bounds.radius, 1e-3f);
+        frameCamera(state.scene.camera, state.meshCentre, state.meshRadius);
         state.error.clear();
         state.status = "Mesh " + path.filename().string();
         rememberRecent(state, path);
