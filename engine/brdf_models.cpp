@@ -4,38 +4,21 @@
 #include "shading_f16.h"
 #include "shading_f64.h"
 
-// Every model's permutation, fp32 and fp64.
+// Every model's permutation in fp32, fp64 and emulated fp16 (`float` redefined around the
+// include, as engine/shading_f64.h and shading_f16.h do for the shared types).
 namespace patina::shader {
-#define PATINA_INLINE inline
-// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model_instances.h"
-#pragma GCC diagnostic pop
-#undef PATINA_INLINE
 }  // namespace patina::shader
 
 namespace patina::shader_f64 {
 #define float double
-#define PATINA_INLINE inline
-// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model_instances.h"
-#pragma GCC diagnostic pop
-#undef PATINA_INLINE
 #undef float
 }  // namespace patina::shader_f64
 
 namespace patina::shader_f16 {
 #define float Half
-#define PATINA_INLINE inline
-// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "brdf_model_instances.h"
-#pragma GCC diagnostic pop
-#undef PATINA_INLINE
 #undef float
 }  // namespace patina::shader_f16
 
