@@ -231,6 +231,18 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     EXPECT_FALSE(openFile(state_, path("broken.gltf")));
     EXPECT_FALSE(state_.error.empty());
     EXPECT_EQ(state_.scene.meshFile, before);
+
+    // A scene naming a glTF brings its mesh; one naming a missing file fails and changes nothing.
+    write("with-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "torus.glb"})");
+    ASSERT_TRUE(openFile(state_, path("with-mesh.json"))) << state_.error;
+    EXPECT_TRUE(state_.importedMesh != nullptr);
+    frames(1);
+    write("missing-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "gone.glb", "lights": []})");
+    const EditSnapshot snapshot = state_.snapshot();
+    EXPECT_FALSE(openFile(state_, path("missing-mesh.json")));
+    EXPECT_NE(state_.error.find("gone.glb"), std::string::npos) << state_.error;
+    EXPECT_EQ(state_.snapshot(), snapshot);
+    EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
 }
 
 }  // namespace

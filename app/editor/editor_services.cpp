@@ -32,19 +32,20 @@ std::filesystem::path screenshotPath(const std::filesystem::path& folder, const 
 EditorServices::EditorServices() : renderer_(std::make_unique<Renderer>()) {}
 
 void EditorServices::useMesh(const Scene& scene) {
-    if (scene.mesh != mesh_ || scene.meshFile != meshFile_) {
-        // A file mesh arrives through provideMesh; reading it here would import it twice.
-        renderer_->setMesh(scene.meshFile.empty() ? makeMesh(scene.mesh) : makeMesh(scene));
-        mesh_ = scene.mesh;
-        meshFile_ = scene.meshFile;
-        for (auto& slot : slots_) {
-            slot.reset();
-        }
+    // A file mesh is the same whatever the built-in kind says; a built-in one is its kind.
+    const bool same = scene.meshFile == meshFile_ && (!meshFile_.empty() || scene.mesh == mesh_);
+    if (!same) {
+        replaceMesh(makeMesh(scene), scene.mesh, scene.meshFile);
     }
 }
 
 void EditorServices::provideMesh(const std::string& meshFile, const Mesh& mesh) {
+    replaceMesh(mesh, mesh_, meshFile);
+}
+
+void EditorServices::replaceMesh(const Mesh& mesh, MeshKind kind, const std::string& meshFile) {
     renderer_->setMesh(mesh);
+    mesh_ = kind;
     meshFile_ = meshFile;
     for (auto& slot : slots_) {
         slot.reset();

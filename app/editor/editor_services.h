@@ -38,6 +38,10 @@ public:
     // What the viewport shows in `slot`, read back (for tests and automation).
     LdrImage viewportPixels(int slot) const { return renderer_->readBack(slot).ldr; }
 
+    // The mesh the next draw of a scene with this meshFile uses (the editor imports it once,
+    // in openFile, and hands it over here).
+    void provideMesh(const std::string& meshFile, const Mesh& mesh);
+
     // Renders `scene` at the given size and returns the image (for screenshots and exports).
     RenderOutput renderImage(const Scene& scene, int width, int height, PassMode passes);
 
@@ -76,12 +80,9 @@ private:
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
     Thumbnail benchChart_;
 
+    // The renderer's mesh for `scene` (a glTF arrives through provideMesh, read once).
     void useMesh(const Scene& scene);
-
-public:
-    // The mesh the next draw of a scene with this meshFile uses (the editor imports it once,
-    // in openFile, and hands it over here).
-    void provideMesh(const std::string& meshFile, const Mesh& mesh);
+    void replaceMesh(const Mesh& mesh, MeshKind kind, const std::string& meshFile);
 };
 
 }  // namespace patina::editor

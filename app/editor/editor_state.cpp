@@ -171,14 +171,30 @@ void rememberRecent(EditorState& state, const std::filesystem::path& path) {
 }
 
 namespace {
+// A glTF mesh read for the editor, with the bounding sphere the camera frames.
+struct EditorMesh {
+    std::shared_ptr<const Mesh> mesh;
+    glm::vec3 centre;
+    float radius;
+};
+
+EditorMesh importEditorMesh(const std::filesystem::path& path) {   // throws InputError
+    auto mesh = std::make_shared<Mesh>(importGltf(path).mesh);
+    const BoundingSphere bounds = boundingSphere(*mesh);
+    return {std::move(mesh), bounds.center, std::max(bounds.radius, 1e-3f)};
+}
+
+// Hands the mesh to the next frame (EditorServices::provideMesh) as scene.meshFile's.
+void useEditorMesh(EditorState& state, const std::filesystem::path& path, EditorMesh mesh) {
+    state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+    state.importedMesh = std::move(mesh.mesh);
+    state.meshCentre = mesh.centre;
+    state.meshRadius = mesh.radius;
+}
+
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
-        auto mesh = std::make_shared<Mesh>(importGltf(path).mesh);
-        const BoundingSphere bounds = boundingSphere(*mesh);
-        state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
-        state.importedMesh = std::move(mesh);
-        state.meshCentre = bounds.center;
-        state.meshRadius = std::max(bounds.radius, 1e-3f);
+        useEditorMesh(state, path, importEditorMesh(path));
         frameCamera(state.scene.camera, state.meshCentre, state.meshRadius);
         state.error.clear();
         state.status = "Mesh " + path.filename().string();
@@ -213,6 +229,12 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
                 material = materialFromJson(json, "", path.string(), true, warnings);
             }
         }
+        // A scene's glTF is read now, before anything changes, so a missing or bad one fails
+        // the open instead of every later frame.
+        std::optional<EditorMesh> sceneMesh;
+        if (scene && !scene->meshFile.empty()) {
+            sceneMesh = importEditorMesh(scene->meshFile);
+        }
         applyEdit(state, [&](EditorState& s) {
             if (scene) {
                 s.scene.material = scene->material;
@@ -226,6 +248,9 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
             state.scene.camera = scene->camera;
             state.scene.mesh = scene->mesh;
             state.scene.meshFile = scene->meshFile;
+            if (sceneMesh) {
+                useEditorMesh(state, scene->meshFile, *sceneMesh);
+            }
             state.scene.display = scene->display;
             state.materialPath.clear();
             state.soloLight = -1;
