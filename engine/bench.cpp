@@ -92,7 +92,7 @@ ErrorStats gpuImplementationError(GpuProbe& probe, BrdfModelId model, const Accu
         material.model = model;
         const std::vector<glm::vec3> gpu = probe.evaluate(material, {accuracyLight()}, probeSamples(set, m));
         for (size_t i = 0; i < gpu.size(); ++i) {
-            AccuracySample sample = set.samples[set.materialStart[m] + i];
+            const AccuracySample& sample = set.samples[set.materialStart[m] + i];
             errors.add(glm::dvec3(gpu[i]), reflectedF64(model, sample));
         }
     }
@@ -133,7 +133,6 @@ BenchResult runBench(const BenchOptions& options) {
         row.cpuNsPerEvaluation = cpuCost(model.id, set, runs);
         row.gpuNsPerFragmentLight = gpuCost(renderer, model.id, size, runs);
         scene.material.model = model.id;
-        renderer.setMesh(makeUvSphere());
         row.imageRelativeRmse = imageError(renderer.render(scene, imageSettings).hdr, reference);
         result.rows.push_back(row);
     }
