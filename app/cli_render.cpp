@@ -19,8 +19,9 @@ Command addRenderCommand(CLI::App& app) {
     options->inputs.addOptions(*command);
     command->add_option("--width", options->width, "Image width")->check(CLI::Range(1, 16384));
     command->add_option("--height", options->height, "Image height")->check(CLI::Range(1, 16384));
-    command->add_option("--passes", options->passes, "single: all lights in one pass; multi: one pass per light")
-        ->check(CLI::IsMember({"single", "multi"}));
+    command->add_option("--passes", options->passes, "single: all lights in one pass; multi: one pass per light; "
+                        "specialised: one pass compiled for the scene's lights")
+        ->check(CLI::IsMember({"single", "multi", "specialised"}));
     command->add_option("--msaa", options->samples, "Samples per pixel (1 = none)")->check(CLI::Range(1, 16));
     command->add_option("--out", options->out, "Output PNG")->required();
     command->add_option("--hdr", options->hdr, "Also write the linear image (PFM), before exposure and tone map");

@@ -8,6 +8,7 @@
 //   PATINA_F   0: Schlick, spherical-Gaussian    1: Schlick pow5   2: exact dielectric
 //   PATINA_FD  0: Lambert                        1: Burley
 //   PATINA_MS  0: single scattering              1: Turquin 2019 energy compensation
+//   PATINA_NO_DIFFUSE (defined or not): c_diff = 0, no diffuse term (specialised shaders)
 // The defaults are the seed model, "epic".
 #ifndef PATINA_D
 #define PATINA_D 0
@@ -58,7 +59,11 @@ PATINA_INLINE vec3 fresnel(vec3 f0, float VoH) {
 }
 
 PATINA_INLINE vec3 diffuse(SurfaceMaterial material, float NoV, float NoL, float LoH) {
-#if PATINA_FD == 1
+#if defined(PATINA_NO_DIFFUSE)
+    // Set only for a material whose c_diff is exactly 0 (pure metal or black base): the terms
+    // would multiply by 0.
+    return vec3(0.0f);
+#elif PATINA_FD == 1
     return Fd_Burley(material.diffuseColor, material.roughness, NoV, NoL, LoH);
 #else
     return Fd_Lambert(material.diffuseColor);
@@ -98,28 +103,8 @@ PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, v
     return BrdfValue(diffuse(material, NoV, NoL, VoH), specular);
 }
 
-// Outgoing radiance towards V from one light at point P with unit normal N (zero allowed).
-PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
-    if (light.type == LIGHT_HEMISPHERE) {
-        // Diffuse only, seen with L = N.
-        float NoV = max(dot(N, V), MIN_N_DOT_V);
-        vec3 H = safeNormalize(N + V);
-        return hemisphereRadiance(light, N) * diffuse(material, NoV, 1.0f, clamp(dot(N, H), 0.0f, 1.0f));
-    }
-    vec3 L;
-    vec3 radiance = light.radiance;
-    if (light.type == LIGHT_POINT) {
-        vec3 toLight = light.position - P;
-        float distanceSquared = dot(toLight, toLight);
-        if (distanceSquared <= MIN_LIGHT_DISTANCE_SQUARED) {
-            return vec3(0.0f);
-        }
-        float t = sqrt(distanceSquared);
-        L = toLight / t;
-        radiance = radiance * pointLightAttenuation(t, light.radius, light.attenuation);
-    } else {
-        L = light.directionToLight;
-    }
+// Outgoing radiance towards V from a light of radiance `radiance` in unit direction L.
+PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial material, vec3 N, vec3 V) {
     float NoL = dot(N, L);
     // Back-facing light contributes nothing; skipping also keeps sp away from NoL = 0.
     if (!(NoL > 0.0f)) {
@@ -127,4 +112,41 @@ PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 
     }
     BrdfValue f = evaluateBrdf(material, N, V, L);
     return radiance * min(NoL, 1.0f) * (f.diffuse + f.specular);
+}
+
+// Each light type on its own, so a shader specialised to a scene (shade.frag's
+// PATINA_SPECIALISED) compiles only the types it has; shadeLight picks one at run time.
+// `windowed` is light.radius > 0, passed as a constant where the scene fixes it.
+PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    vec3 toLight = light.position - P;
+    float distanceSquared = dot(toLight, toLight);
+    if (distanceSquared <= MIN_LIGHT_DISTANCE_SQUARED) {
+        return vec3(0.0f);
+    }
+    float t = sqrt(distanceSquared);
+    // A radius of 0 turns the window off: a constant the compiler folds in a specialised shader.
+    float attenuation = pointLightAttenuation(t, windowed ? light.radius : 0.0f, light.attenuation);
+    return shadeFromDirection(light.radiance * attenuation, toLight / t, material, N, V);
+}
+
+PATINA_INLINE vec3 shadeDirectionalLight(PackedLight light, SurfaceMaterial material, vec3 N, vec3 V) {
+    return shadeFromDirection(light.radiance, light.directionToLight, material, N, V);
+}
+
+// Diffuse only, seen with L = N.
+PATINA_INLINE vec3 shadeHemisphereLight(PackedLight light, SurfaceMaterial material, vec3 N, vec3 V) {
+    float NoV = max(dot(N, V), MIN_N_DOT_V);
+    vec3 H = safeNormalize(N + V);
+    return hemisphereRadiance(light, N) * diffuse(material, NoV, 1.0f, clamp(dot(N, H), 0.0f, 1.0f));
+}
+
+// Outgoing radiance towards V from one light at point P with unit normal N (zero allowed).
+PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    if (light.type == LIGHT_HEMISPHERE) {
+        return shadeHemisphereLight(light, material, N, V);
+    }
+    if (light.type == LIGHT_POINT) {
+        return shadePointLight(light, light.radius > 0.0f, material, P, N, V);
+    }
+    return shadeDirectionalLight(light, material, N, V);
 }

@@ -1,6 +1,9 @@
 // Shades the mesh (or, with PATINA_PROBE, one probe row per pixel) in linear light.
 // PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
 // renderer adds the passes with blending (the seed's multi-pass design).
+// PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as SHADE_POINT(i,
+// windowed), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light loop and
+// no code for a type the scene lacks (engine/gl/specialisation.h builds the list).
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -36,7 +39,16 @@ void main() {
     vec3 V = safeNormalize(uCameraPosition - vPosition);
 #endif
     vec3 radiance = vec3(0.0f);
-#ifdef PATINA_SINGLE_PASS
+#if defined(PATINA_SPECIALISED)
+#define SHADE_POINT(i, windowed) radiance += shadePointLight(uLights[i], windowed, material, vPosition, N, V);
+#define SHADE_DIRECTIONAL(i) radiance += shadeDirectionalLight(uLights[i], material, N, V);
+#define SHADE_HEMISPHERE(i) radiance += shadeHemisphereLight(uLights[i], material, N, V);
+// The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for light i's
+// direction, with none of the light handling above (no type, no attenuation, no branch).
+#define BRDF_ONLY(i) { vec3 L = uLights[i].directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); \
+    radiance += uLights[i].radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
+    PATINA_LIGHTS
+#elif defined(PATINA_SINGLE_PASS)
     for (int i = 0; i < uLightCount.x; ++i) {
         radiance += shadeLight(uLights[i], material, vPosition, N, V);
     }

@@ -1,6 +1,8 @@
-// The renderer: single- and multi-pass agree, and the default scene shows all three lights.
+// The renderer: single, multi and specialised passes agree, and the default scene shows all three lights.
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -57,25 +59,59 @@ Scene manyLightScene(int perType) {
     return scene;
 }
 
-TEST(Renderer, SingleAndMultiPassAgree) {
+Scene onlyLightsOfType(LightType type, int count) {
+    Scene scene = manyLightScene(count);
+    std::erase_if(scene.lights, [type](const Light& light) { return light.type != type; });
+    return scene;
+}
+
+// Single, multi and specialised: the same image to rounding, for 0, 1 and many lights of each
+// type, a point light without a window and a pure metal (whose shader drops diffuse).
+TEST(Renderer, AllThreePassModesAgree) {
     test::glContext();
     Renderer renderer;
     Scene noLights = defaultScene();
     noLights.lights.clear();
     Scene torus = manyLightScene(10);
     torus.mesh = MeshKind::Torus;
+    Scene unwindowed = onlyLightsOfType(LightType::Point, 3);
+    unwindowed.lights[1].radius = 0.0f;
+    Scene metal = manyLightScene(2);
+    metal.material.metallic = 1.0f;
+    metal.material.baseColor = {0.95f, 0.64f, 0.54f};
     struct Case {
-        const char* name;
+        std::string name;
         Scene scene;
-    } cases[] = {{"default", defaultScene()}, {"no lights", noLights},
-                 {"30 lights on a torus", torus}};
+    };
+    std::vector<Case> cases = {{"default", defaultScene()},  {"no lights", noLights},
+                               {"30 lights on a torus", torus}, {"a point light of radius 0", unwindowed},
+                               {"pure metal", metal}};
+    for (LightType type : {LightType::Point, LightType::Directional, LightType::Hemisphere}) {
+        for (int count : {1, 12}) {
+            cases.push_back({std::to_string(count) + " " + std::string(lightTypeName(type)),
+                             onlyLightsOfType(type, count)});
+        }
+    }
     for (const Case& c : cases) {
         renderer.setMesh(makeMesh(c.scene.mesh));
         const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single);
-        const RenderOutput multi = renderScene(renderer, c.scene, PassMode::Multi);
-        EXPECT_LE(maxByteDifference(single.ldr, multi.ldr), 1) << c.name;
-        EXPECT_LE(maxHdrRelativeDifference(single.hdr, multi.hdr), 1e-4) << c.name;
+        for (PassMode other : {PassMode::Multi, PassMode::Specialised}) {
+            const RenderOutput image = renderScene(renderer, c.scene, other);
+            EXPECT_LE(maxByteDifference(single.ldr, image.ldr), 1) << c.name << ", " << passModeName(other);
+            EXPECT_LE(maxHdrRelativeDifference(single.hdr, image.hdr), 1e-4) << c.name << ", " << passModeName(other);
+        }
     }
+}
+
+// The floor shader shades a scene of directional lights like the others (it only leaves out
+// the light handling), so the benchmark compares like with like.
+TEST(Renderer, BrdfFloorMatchesSinglePassForDirectionalLights) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = onlyLightsOfType(LightType::Directional, 8);
+    const RenderOutput single = renderScene(renderer, scene, PassMode::Single);
+    const RenderOutput floor = renderScene(renderer, scene, PassMode::BrdfFloor);
+    EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4);
 }
 
 TEST(Renderer, EachLightOfTheDefaultSceneShowsOnTheSphere) {

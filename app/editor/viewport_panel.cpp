@@ -48,6 +48,8 @@ void drawToolbar(EditorState& state) {
     ImGui::RadioButton("single", &passes, int(PassMode::Single));
     ImGui::SameLine();
     ImGui::RadioButton("multi", &passes, int(PassMode::Multi));
+    ImGui::SameLine();
+    ImGui::RadioButton("specialised", &passes, int(PassMode::Specialised));
     state.passes = PassMode(passes);
 
     if (ImGui::Button("Set A")) {
@@ -244,9 +246,9 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
         enabled += light.enabled;
     }
     char overlay[160];
-    std::snprintf(overlay, sizeof overlay, "CPU %.1f ms  GPU %.1f ms  lights %d  %s",
+    std::snprintf(overlay, sizeof overlay, "CPU %.1f ms  GPU %.1f ms  lights %d  %s pass",
                   services.lastRenderMilliseconds(), services.lastGpuMilliseconds(), enabled,
-                  state.passes == PassMode::Single ? "single pass" : "multi pass");
+                  std::string(passModeName(state.passes)).c_str());
     draw->AddRectFilled(ImVec2(origin.x + 4, origin.y + size.y - 22),
                         ImVec2(origin.x + 12 + ImGui::CalcTextSize(overlay).x, origin.y + size.y - 4),
                         IM_COL32(0, 0, 0, 150));

@@ -28,11 +28,17 @@ extern const char* const display_frag;
 }  // namespace shader_sources
 
 std::string_view passModeName(PassMode mode) {
-    return mode == PassMode::Multi ? "multi" : "single";
+    switch (mode) {
+    case PassMode::Single: return "single";
+    case PassMode::Multi: return "multi";
+    case PassMode::Specialised: return "specialised";
+    case PassMode::BrdfFloor: return "brdf-floor";
+    }
+    return "single";
 }
 
 std::optional<PassMode> passModeFromName(std::string_view name) {
-    static const PassMode all[] = {PassMode::Single, PassMode::Multi};
+    static const PassMode all[] = {PassMode::Single, PassMode::Multi, PassMode::Specialised};
     return enumFromName(name, all, passModeName);
 }
 
@@ -212,6 +218,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     };
     if (settings.passes == PassMode::Single) {
         prepare(s.shading.use(scene.material.model, ShadingPrograms::Use::SinglePass));
+        s.mesh.draw();
+    } else if (settings.passes == PassMode::Specialised || settings.passes == PassMode::BrdfFloor) {
+        const ShaderSpecialisation key = settings.passes == PassMode::Specialised
+                                             ? specialiseFor(packed, scene.material)
+                                             : brdfFloorFor(packed.size());
+        prepare(s.shading.useSpecialised(scene.material.model, key));
         s.mesh.draw();
     } else {
         s.depthPrepass.use();

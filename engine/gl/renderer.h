@@ -12,9 +12,14 @@
 namespace patina {
 
 // multi: one additive pass per enabled light after a depth pre-pass (the seed's design);
-// single: every light in one pass from the LightBlock uniform buffer. They agree to rounding.
-enum class PassMode { Single, Multi };
+// single: every light in one pass from the LightBlock uniform buffer;
+// specialised: one pass compiled for the scene's light types and count (shader_specialisation.h).
+// The three agree to rounding.
+// BrdfFloor is for benchmarks only (no name): every light as a direction with the BRDF alone,
+// the arithmetic floor of a light's cost.
+enum class PassMode { Single, Multi, Specialised, BrdfFloor };
 std::string_view passModeName(PassMode mode);
+// single, multi or specialised.
 std::optional<PassMode> passModeFromName(std::string_view name);
 
 struct RenderSettings {

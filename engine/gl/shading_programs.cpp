@@ -24,29 +24,61 @@ ShadingPrograms::~ShadingPrograms() {
     }
 }
 
+std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, const char* vertex,
+                                                  std::vector<std::string> defines) {
+    const std::vector<std::string> modelDefines = brdfModelDefines(model);
+    defines.insert(defines.begin(), modelDefines.begin(), modelDefines.end());
+    auto program = std::make_unique<GlProgram>(std::vector<const char*>{vertex}, shadingFragmentParts(), defines);
+    LightBuffer::attach(*program);
+    return program;
+}
+
+const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& program) {
+    program.use();
+    if (brdfModel(model).multipleScattering()) {
+        glActiveTexture(GL_TEXTURE0 + kEnergyUnit);
+        glBindTexture(GL_TEXTURE_2D, energyTexture(model));
+        glActiveTexture(GL_TEXTURE0);
+    }
+    glUniform1i(program.uniform("uEnergyTable"), kEnergyUnit);
+    return program;
+}
+
 const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use) {
     std::unique_ptr<GlProgram>& program = programs_[{model, use}];
     if (!program) {
-        std::vector<std::string> defines = brdfModelDefines(model);
+        std::vector<std::string> defines;
         if (use != Use::MultiPass) {
             defines.push_back("PATINA_SINGLE_PASS");
         }
         if (use == Use::Probe) {
             defines.push_back("PATINA_PROBE");
         }
-        program = std::make_unique<GlProgram>(
-            std::vector<const char*>{use == Use::Probe ? shader_sources::probe_vert : shader_sources::mesh_vert},
-            shadingFragmentParts(), defines);
-        LightBuffer::attach(*program);
+        program = build(model, use == Use::Probe ? shader_sources::probe_vert : shader_sources::mesh_vert, defines);
     }
-    program->use();
-    if (brdfModel(model).multipleScattering()) {
-        glActiveTexture(GL_TEXTURE0 + kEnergyUnit);
-        glBindTexture(GL_TEXTURE_2D, energyTexture(model));
-        glActiveTexture(GL_TEXTURE0);
+    return bind(model, *program);
+}
+
+const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const ShaderSpecialisation& key) {
+    Specialised& entry = specialised_[{model, key}];
+    if (!entry.program) {
+        try {
+            entry.program = build(model, shader_sources::mesh_vert, key.defines());
+        } catch (...) {
+            specialised_.erase({model, key});
+            throw;
+        }
     }
-    glUniform1i(program->uniform("uEnergyTable"), kEnergyUnit);
-    return *program;
+    entry.lastUse = ++useCount_;
+    const GlProgram& program = *entry.program;
+    if (specialised_.size() > kSpecialisedCapacity) {
+        auto oldest = specialised_.begin();
+        for (auto it = specialised_.begin(); it != specialised_.end(); ++it) {
+            oldest = it->second.lastUse < oldest->second.lastUse ? it : oldest;
+        }
+        specialised_.erase(oldest);   // never `entry`: it was used last
+    }
+    return bind(model, program);
 }
 
 unsigned ShadingPrograms::energyTexture(BrdfModelId model) {

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "../brdf_model_id.h"
+#include "../shader_specialisation.h"
 #include "program.h"
 
 namespace patina {
@@ -22,12 +23,26 @@ public:
 
     // Makes the program current (with its energy table bound) and returns it.
     const GlProgram& use(BrdfModelId model, Use use);
+    // The single-pass program specialised to `key`, compiled on first use. The least recently
+    // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
+    // makes a new key each time.
+    const GlProgram& useSpecialised(BrdfModelId model, const ShaderSpecialisation& key);
+    static constexpr size_t kSpecialisedCapacity = 16;
+    size_t specialisedCount() const { return specialised_.size(); }
 
 private:
+    struct Specialised {
+        std::unique_ptr<GlProgram> program;
+        unsigned long long lastUse = 0;
+    };
     std::map<std::pair<BrdfModelId, Use>, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::pair<BrdfModelId, ShaderSpecialisation>, Specialised> specialised_;
+    unsigned long long useCount_ = 0;
     std::map<BrdfModelId, unsigned> energyTextures_;
 
     unsigned energyTexture(BrdfModelId model);
+    std::unique_ptr<GlProgram> build(BrdfModelId model, const char* vertex, std::vector<std::string> defines);
+    const GlProgram& bind(BrdfModelId model, const GlProgram& program);
 };
 
 }  // namespace patina

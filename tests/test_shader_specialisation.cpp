@@ -1,0 +1,71 @@
+// The key of a shader specialised to a scene, and the cache that holds those shaders.
+#include <gtest/gtest.h>
+
+#include "gl/shading_programs.h"
+#include "light_packing.h"
+#include "scene.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+TEST(ShaderSpecialisation, DefaultSceneListsItsThreeLightsInOrder) {
+    const Scene scene = defaultScene();
+    const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
+    EXPECT_EQ(key.lights, "SHADE_POINT(0, true) SHADE_DIRECTIONAL(1) SHADE_HEMISPHERE(2)");
+    EXPECT_FALSE(key.noDiffuse);
+}
+
+TEST(ShaderSpecialisation, DisabledLightsAndUnwindowedPointsCompileLess) {
+    Scene scene = defaultScene();
+    scene.lights[1].enabled = false;
+    scene.lights[0].radius = 0.0f;
+    const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
+    // Indices follow the uniform block, which holds enabled lights only.
+    EXPECT_EQ(key.lights, "SHADE_POINT(0, false) SHADE_HEMISPHERE(1)");
+}
+
+TEST(ShaderSpecialisation, PureMetalDropsDiffuseAndTheHemisphereLight) {
+    Scene scene = defaultScene();
+    scene.material.metallic = 1.0f;
+    ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
+    EXPECT_TRUE(key.noDiffuse);
+    EXPECT_EQ(key.lights, "SHADE_POINT(0, true) SHADE_DIRECTIONAL(1)");
+    // Almost metal still has a diffuse term; a black dielectric has none.
+    scene.material.metallic = 0.999f;
+    EXPECT_FALSE(specialiseFor(packEnabledLights(scene.lights), scene.material).noDiffuse);
+    scene.material.metallic = 0.0f;
+    scene.material.baseColor = glm::vec3(0.0f);
+    EXPECT_TRUE(specialiseFor(packEnabledLights(scene.lights), scene.material).noDiffuse);
+}
+
+TEST(ShaderSpecialisation, KeysDifferOnlyWhenTheShaderWould) {
+    Scene a = defaultScene();
+    Scene b = a;
+    b.lights[0].position = {9.0f, 1.0f, 0.0f};   // a uniform: same shader
+    b.material.roughness = 0.9f;
+    EXPECT_EQ(specialiseFor(packEnabledLights(a.lights), a.material),
+              specialiseFor(packEnabledLights(b.lights), b.material));
+    b.lights.push_back(b.lights[1]);
+    EXPECT_NE(specialiseFor(packEnabledLights(a.lights), a.material),
+              specialiseFor(packEnabledLights(b.lights), b.material));
+}
+
+TEST(ShaderSpecialisation, CacheKeepsAtMostItsCapacity) {
+    test::glContext();
+    ShadingPrograms programs;
+    const size_t extra = 3;
+    for (size_t count = 0; count < ShadingPrograms::kSpecialisedCapacity + extra; ++count) {
+        programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(count));
+    }
+    EXPECT_EQ(programs.specialisedCount(), ShadingPrograms::kSpecialisedCapacity);
+    // The most recent key is still there and usable.
+    GLint current = 0;
+    const GlProgram& last = programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(ShadingPrograms::kSpecialisedCapacity + extra - 1));
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    EXPECT_EQ(GLuint(current), last.id());
+    EXPECT_EQ(programs.specialisedCount(), ShadingPrograms::kSpecialisedCapacity);
+}
+
+}  // namespace
+}  // namespace patina
