@@ -13,6 +13,7 @@ Command addLobeCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addSheetCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
+Command addBenchRenderCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addFurnaceCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);

@@ -16,13 +16,10 @@
 namespace patina::cli {
 
 namespace {
-void writeText(const std::filesystem::path& path, const std::string& text) {
-    writeOutput(path.string(), std::vector<uint8_t>(text.begin(), text.end()));
-}
 
 void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg) {
     if (svg) {
-        writeText(stem.string() + ".svg", chartToSvg(chart));
+        writeOutputText(stem.string() + ".svg", chartToSvg(chart));
     }
     writeOutput(stem.string() + ".png", encodePng(chartToImage(chart)));
 }
@@ -61,7 +58,7 @@ Command addBenchCommand(CLI::App& app) {
             BenchOptions options;
             options.quick = quick;
             const BenchResult result = runBench(options);
-            writeText(folder / "bench.csv", benchCsv(result));
+            writeOutputText((folder / "bench.csv").string(), benchCsv(result));
             writeChart(folder / "speed_accuracy", benchChart(result), true);
             std::cout << result.rows.size() << " models, " << result.samples << " samples, on " << result.renderer
                       << "\n";
@@ -74,7 +71,7 @@ Command addStabilityCommand(CLI::App& app) {
         [](const std::filesystem::path& folder, bool quick) {
             HeadlessContext context;
             const std::vector<StabilityRow> rows = runStability(quick);
-            writeText(folder / "stability.csv", stabilityCsv(rows));
+            writeOutputText((folder / "stability.csv").string(), stabilityCsv(rows));
             for (const BrdfModelInfo& model : brdfModels()) {
                 writeOutput((folder / ("stability_" + std::string(model.name) + ".png")).string(),
                             encodePng(stabilityHeatMap(rows, std::string(model.name))));
@@ -87,7 +84,7 @@ Command addFurnaceCommand(CLI::App& app) {
         app, "furnace", "White furnace: specular albedo with F = 1 of every model: furnace.csv and furnace.png",
         [](const std::filesystem::path& folder, bool quick) {
             const std::vector<FurnaceCurve> curves = whiteFurnace(quick ? 10 : 40, quick ? 1024 : 4096);
-            writeText(folder / "furnace.csv", furnaceCsv(curves));
+            writeOutputText((folder / "furnace.csv").string(), furnaceCsv(curves));
             writeChart(folder / "furnace", furnaceChart(curves), false);
         });
 }

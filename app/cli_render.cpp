@@ -35,6 +35,10 @@ Command addRenderCommand(CLI::App& app) {
         settings.height = options->height;
         settings.passes = *passModeFromName(options->passes);
         settings.samples = options->samples;
+        // A one-off render keeps its peak memory down: strips of at most 16 MiB of
+        // multisampled colour, and the linear image read back only when asked for.
+        settings.maxTargetBytes = size_t(16) << 20;
+        settings.readHdr = !options->hdr.empty();
         const RenderOutput output = renderer.render(scene, settings);
         // Encode both before writing either, so a failure leaves no output behind.
         const std::vector<uint8_t> png = encodePng(output.ldr);

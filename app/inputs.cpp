@@ -50,6 +50,10 @@ void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {
     }
 }
 
+void writeOutputText(const std::string& path, const std::string& text) {
+    writeOutput(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
 std::string readInputText(const std::string& path) {
     try {
         const std::vector<uint8_t> bytes = readFileBytes(path);

@@ -21,6 +21,7 @@ struct SceneInputs {
 
 // Writes the bytes all-or-nothing; an unwritable path is an InputError (exit 3).
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes);
+void writeOutputText(const std::string& path, const std::string& text);
 std::string readInputText(const std::string& path);
 
 }  // namespace patina::cli

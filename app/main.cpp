@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
                      patina::cli::addLobeCommand, patina::cli::addCompareCommand,
                      patina::cli::addSheetCommand, patina::cli::addBenchCommand,
+                     patina::cli::addBenchRenderCommand,
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
                      patina::cli::addExportCommand}) {
         patina::cli::Command run = add(app);

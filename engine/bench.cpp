@@ -10,6 +10,7 @@
 #include "cpu_shading.h"
 #include "gl/gpu_probe.h"
 #include "gl/renderer.h"
+#include "timing.h"
 
 namespace patina {
 
@@ -17,22 +18,6 @@ namespace {
 constexpr int kBenchLights = 16;
 // The reference has no error against itself: on the log axis it sits at this floor.
 constexpr double kErrorFloor = 1e-3;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values.empty() ? 0.0 : values[values.size() / 2];
-}
-
-template <typename Measure>
-double medianOf(int runs, Measure measure) {
-    measure();
-    measure();   // warm-up: shader compilation, caches
-    std::vector<double> times;
-    for (int i = 0; i < runs; ++i) {
-        times.push_back(measure());
-    }
-    return median(times);
-}
 
 // The sphere fills the frame: every pixel shades, every light is in front.
 Scene workloadScene(BrdfModelId model, int lights) {

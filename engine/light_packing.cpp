@@ -31,12 +31,22 @@ shader::PackedLight packLight(const Light& light) {
 
 std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights) {
     std::vector<shader::PackedLight> packed;
-    for (const Light& light : lights) {
-        if (light.enabled) {
-            packed.push_back(packLight(light));
+    for (int type : {shader::LIGHT_POINT, shader::LIGHT_DIRECTIONAL, shader::LIGHT_HEMISPHERE}) {
+        for (const Light& light : lights) {
+            if (light.enabled && shaderLightType(light.type) == type) {
+                packed.push_back(packLight(light));
+            }
         }
     }
     return packed;
+}
+
+glm::ivec4 packedLightCounts(const std::vector<shader::PackedLight>& packed) {
+    glm::ivec4 counts(int(packed.size()), 0, 0, 0);
+    for (const shader::PackedLight& light : packed) {
+        counts[1 + light.type] += 1;
+    }
+    return counts;
 }
 
 }  // namespace patina

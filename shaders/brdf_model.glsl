@@ -104,14 +104,15 @@ PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, v
 }
 
 // Outgoing radiance towards V from a light of radiance `radiance` in unit direction L.
+// Back-facing light contributes nothing; that is a select, not a branch: a SIMD rasteriser
+// (llvmpipe, or a GPU's warp) runs the BRDF for every lane anyway, and the select costs less
+// than the branch's mask bookkeeping. evaluateBrdf clamps NoL, so the unselected value is
+// finite for the models' own guards; a select discards it even if it were not.
 PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial material, vec3 N, vec3 V) {
     float NoL = dot(N, L);
-    // Back-facing light contributes nothing; skipping also keeps sp away from NoL = 0.
-    if (!(NoL > 0.0f)) {
-        return vec3(0.0f);
-    }
     BrdfValue f = evaluateBrdf(material, N, V, L);
-    return radiance * min(NoL, 1.0f) * (f.diffuse + f.specular);
+    vec3 value = radiance * min(NoL, 1.0f) * (f.diffuse + f.specular);
+    return NoL > 0.0f ? value : vec3(0.0f);
 }
 
 // Each light type on its own, so a shader specialised to a scene (shade.frag's
@@ -120,13 +121,14 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
     float distanceSquared = dot(toLight, toLight);
-    if (distanceSquared <= MIN_LIGHT_DISTANCE_SQUARED) {
-        return vec3(0.0f);
-    }
-    float t = sqrt(distanceSquared);
+    // Clamped so the light on the shaded point still gives finite numbers; selected away below.
+    float inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
+    float t = distanceSquared * inverseDistance;
     // A radius of 0 turns the window off: a constant the compiler folds in a specialised shader.
     float attenuation = pointLightAttenuation(t, windowed ? light.radius : 0.0f, light.attenuation);
-    return shadeFromDirection(light.radiance * attenuation, toLight / t, material, N, V);
+    vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
+    // A light on the shaded point has no direction: no light.
+    return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? value : vec3(0.0f);
 }
 
 PATINA_INLINE vec3 shadeDirectionalLight(PackedLight light, SurfaceMaterial material, vec3 N, vec3 V) {

@@ -21,7 +21,7 @@ uniform float uMetallic;
 
 layout(std140) uniform LightBlock {
     PackedLight uLights[MAX_LIGHTS];
-    ivec4 uLightCount;
+    ivec4 uLightCount;   // all, points, directionals, hemispheres
 };
 
 #ifndef PATINA_SINGLE_PASS
@@ -49,8 +49,20 @@ void main() {
     radiance += uLights[i].radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
-    for (int i = 0; i < uLightCount.x; ++i) {
-        radiance += shadeLight(uLights[i], material, vPosition, N, V);
+    // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.
+    int end = uLightCount.y;
+    for (int i = 0; i < end; ++i) {
+        radiance += shadePointLight(uLights[i], uLights[i].radius > 0.0f, material, vPosition, N, V);
+    }
+    int start = end;
+    end += uLightCount.z;
+    for (int i = start; i < end; ++i) {
+        radiance += shadeDirectionalLight(uLights[i], material, N, V);
+    }
+    start = end;
+    end += uLightCount.w;
+    for (int i = start; i < end; ++i) {
+        radiance += shadeHemisphereLight(uLights[i], material, N, V);
     }
 #else
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);

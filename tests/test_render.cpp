@@ -114,6 +114,41 @@ TEST(Renderer, BrdfFloorMatchesSinglePassForDirectionalLights) {
     EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4);
 }
 
+// A render in strips (to bound memory) gives the image drawn whole, for every path; the strip
+// height here does not divide the image, so the last strip is partial.
+TEST(Renderer, StripsGiveTheWholeImage) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = manyLightScene(2);
+    for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+        RenderSettings settings;
+        settings.width = 150;
+        settings.height = 130;
+        settings.passes = passes;
+        const RenderOutput whole = renderer.render(scene, settings);
+        settings.maxTargetBytes = size_t(settings.width) * 4 * 16 * 37;   // 37 rows of 4x RGBA32F
+        const RenderOutput strips = renderer.render(scene, settings);
+        EXPECT_LE(maxByteDifference(whole.ldr, strips.ldr), 1) << passModeName(passes);
+        EXPECT_LE(maxHdrRelativeDifference(whole.hdr, strips.hdr), 1e-4) << passModeName(passes);
+        int identical = 0;
+        for (size_t i = 0; i < whole.ldr.rgba.size(); ++i) {
+            identical += whole.ldr.rgba[i] == strips.ldr.rgba[i];
+        }
+        EXPECT_GT(identical, int(whole.ldr.rgba.size() * 99 / 100)) << passModeName(passes);
+    }
+}
+
+TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
+    test::glContext();
+    Renderer renderer;
+    RenderSettings settings;
+    settings.width = settings.height = 32;
+    settings.readHdr = false;
+    const RenderOutput output = renderer.render(defaultScene(), settings);
+    EXPECT_TRUE(output.hdr.rgb.empty());
+    EXPECT_EQ(output.ldr.rgba.size(), 32u * 32u * 4u);
+}
+
 TEST(Renderer, EachLightOfTheDefaultSceneShowsOnTheSphere) {
     test::glContext();
     Renderer renderer;

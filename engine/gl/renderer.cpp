@@ -115,6 +115,15 @@ struct Targets {
     RenderTarget shading, resolved, displayed;
 };
 
+template <typename T>
+void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
+    for (int y = 0; y < rows / 2; ++y) {
+        std::swap_ranges(values.begin() + std::ptrdiff_t(size_t(y) * rowLength),
+                         values.begin() + std::ptrdiff_t(size_t(y + 1) * rowLength),
+                         values.begin() + std::ptrdiff_t(size_t(rows - 1 - y) * rowLength));
+    }
+}
+
 int toneMapIndex(Tonemap tonemap) {
     switch (tonemap) {
     case Tonemap::Aces: return shader::TONEMAP_ACES;
@@ -172,6 +181,38 @@ void Renderer::setMesh(const Mesh& mesh) {
     state_->mesh.upload(mesh);
 }
 
+void Renderer::drawPasses(State& s, const Scene& scene, PassMode passes,
+                          const std::vector<shader::PackedLight>& packed, const Prepare& prepare) {
+    if (passes == PassMode::Single) {
+        prepare(s.shading.use(scene.material.model, ShadingPrograms::Use::SinglePass));
+        s.mesh.draw();
+    } else if (passes == PassMode::Specialised || passes == PassMode::BrdfFloor) {
+        const ShaderSpecialisation key = passes == PassMode::Specialised
+                                             ? specialiseFor(packed, scene.material)
+                                             : brdfFloorFor(packed.size());
+        prepare(s.shading.useSpecialised(scene.material.model, key));
+        s.mesh.draw();
+    } else {
+        s.depthPrepass.use();
+        prepare(s.depthPrepass);
+        s.mesh.draw();
+        // Light passes add onto the black mesh where depth matches the pre-pass exactly
+        // (mesh.vert's gl_Position is invariant).
+        const GlProgram& multi = s.shading.use(scene.material.model, ShadingPrograms::Use::MultiPass);
+        prepare(multi);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        for (size_t i = 0; i < packed.size(); ++i) {
+            glUniform1i(multi.uniform("uLightIndex"), GLint(i));
+            s.mesh.draw();
+        }
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+}
+
 unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int slot) {
     State& s = *state_;
     if (settings.width < 1 || settings.height < 1 || settings.width > s.maxSize ||
@@ -196,19 +237,18 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     if (timed) {
         glBeginQuery(GL_TIME_ELAPSED, s.timerQuery);
     }
-    t.shading.ensure(w, h, samples > 1 ? samples : 0, GL_RGBA32F, true);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.shading.framebuffer);
-    glViewport(0, 0, w, h);
+    const size_t bytesPerRow = size_t(w) * size_t(std::max(samples, 1)) * 4 * sizeof(float);
+    const int stripRows = settings.maxTargetBytes == 0
+                              ? h
+                              : int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h)));
+    t.shading.ensure(w, stripRows, samples > 1 ? samples : 0, GL_RGBA32F, true);
+    t.resolved.ensure(w, h, 0, GL_RGBA32F, false);
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_CULL_FACE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
     glClearColor(scene.display.background.r, scene.display.background.g,
                  scene.display.background.b, 1.0f);
     glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
     const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
     auto prepare = [&](const GlProgram& program) {
@@ -216,40 +256,22 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
         setMaterialUniforms(program, scene.material);
     };
-    if (settings.passes == PassMode::Single) {
-        prepare(s.shading.use(scene.material.model, ShadingPrograms::Use::SinglePass));
-        s.mesh.draw();
-    } else if (settings.passes == PassMode::Specialised || settings.passes == PassMode::BrdfFloor) {
-        const ShaderSpecialisation key = settings.passes == PassMode::Specialised
-                                             ? specialiseFor(packed, scene.material)
-                                             : brdfFloorFor(packed.size());
-        prepare(s.shading.useSpecialised(scene.material.model, key));
-        s.mesh.draw();
-    } else {
-        s.depthPrepass.use();
-        prepare(s.depthPrepass);
-        s.mesh.draw();
-        // Light passes add onto the black mesh where depth matches the pre-pass exactly
-        // (mesh.vert's gl_Position is invariant).
-        const GlProgram& multi = s.shading.use(scene.material.model, ShadingPrograms::Use::MultiPass);
-        prepare(multi);
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        for (size_t i = 0; i < packed.size(); ++i) {
-            glUniform1i(multi.uniform("uLightIndex"), GLint(i));
-            s.mesh.draw();
-        }
-        glDisable(GL_BLEND);
+    for (int top = 0; top < h; top += stripRows) {
+        const int rows = std::min(stripRows, h - top);
+        glBindFramebuffer(GL_FRAMEBUFFER, t.shading.framebuffer);
+        // The whole image's viewport, moved down so rows [top, top + rows) land in the strip.
+        glViewport(0, -top, w, h);
+        glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawPasses(s, scene, settings.passes, packed, prepare);
+        // Resolve MSAA into the float texture: the HDR result and the display pass's input.
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shading.framebuffer);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.resolved.framebuffer);
+        glBlitFramebuffer(0, 0, w, rows, 0, top, w, top + rows, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
-
-    // Resolve MSAA into a float texture: the HDR result and the display pass's input.
-    t.resolved.ensure(w, h, 0, GL_RGBA32F, false);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shading.framebuffer);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.resolved.framebuffer);
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glViewport(0, 0, w, h);
 
     t.displayed.ensure(w, h, 0, GL_RGBA8, false);
     glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
@@ -274,27 +296,24 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     return t.displayed.color;
 }
 
-RenderOutput Renderer::readBack(int slot) const {
+RenderOutput Renderer::readBack(int slot, bool hdr) const {
     const Targets& t = state_->targets.at(size_t(slot));
     const int w = t.resolved.width, h = t.resolved.height;
     RenderOutput output;
-    output.hdr = {w, h, std::vector<float>(size_t(w) * h * 3)};
-    output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
-    std::vector<float> rgba(size_t(w) * h * 4);
+    // Straight into the outputs (no staging copies: a render's peak memory counts), then the
+    // rows flipped in place, since GL's go bottom to top.
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.resolved.framebuffer);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-    std::vector<uint8_t> bytes(size_t(w) * h * 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    for (int y = 0; y < h; ++y) {   // GL rows go bottom to top
-        const size_t from = size_t(h - 1 - y) * w, to = size_t(y) * w;
-        for (int x = 0; x < w; ++x) {
-            std::copy_n(&rgba[(from + x) * 4], 3, &output.hdr.rgb[(to + x) * 3]);
-        }
-        std::copy_n(&bytes[from * 4], size_t(w) * 4, &output.ldr.rgba[to * 4]);
+    if (hdr) {
+        output.hdr = {w, h, std::vector<float>(size_t(w) * h * 3)};
+        glBindFramebuffer(GL_FRAMEBUFFER, t.resolved.framebuffer);
+        glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, output.hdr.rgb.data());
+        flipRows(output.hdr.rgb, size_t(w) * 3, h);
     }
+    output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
+    glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, output.ldr.rgba.data());
+    flipRows(output.ldr.rgba, size_t(w) * 4, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return output;
 }
 
@@ -308,7 +327,7 @@ double Renderer::timedDraw(const Scene& scene, const RenderSettings& settings) {
 
 RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
     draw(scene, settings, 0);
-    return readBack(0);
+    return readBack(0, settings.readHdr);
 }
 
 }  // namespace patina

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -8,8 +9,11 @@
 #include "../image.h"
 #include "../mesh.h"
 #include "../scene.h"
+#include "../shading.h"
 
 namespace patina {
+
+class GlProgram;
 
 // multi: one additive pass per enabled light after a depth pre-pass (the seed's design);
 // single: every light in one pass from the LightBlock uniform buffer;
@@ -27,6 +31,11 @@ struct RenderSettings {
     int height = 800;
     PassMode passes = PassMode::Single;
     int samples = 4;   // MSAA; clamped to what the implementation offers
+    // Most bytes the multisampled colour target may take; a larger image is drawn in strips
+    // of rows that fit, each resolved into place (the same pixels: the viewport only moves).
+    // 0: no limit. Strips trade memory for vertex work (the mesh is drawn once per strip).
+    size_t maxTargetBytes = 0;
+    bool readHdr = true;   // render(): also read the linear image back (RenderOutput::hdr)
 };
 
 struct RenderOutput {
@@ -53,8 +62,9 @@ public:
     // bottom-up rows), valid until the slot is drawn again at another size. Leaves framebuffer
     // 0 bound. Throws std::invalid_argument for a size outside [1, max renderbuffer size].
     unsigned draw(const Scene& scene, const RenderSettings& settings, int slot = 0);
-    // The last draw of `slot`, read back to the CPU with rows top to bottom.
-    RenderOutput readBack(int slot = 0) const;
+    // The last draw of `slot`, read back to the CPU with rows top to bottom; without `hdr`,
+    // RenderOutput::hdr stays empty.
+    RenderOutput readBack(int slot = 0, bool hdr = true) const;
     // GPU time of the most recent draw whose timer query has completed (GL_TIME_ELAPSED,
     // read without waiting), in milliseconds; negative before the first.
     double lastGpuMilliseconds();
@@ -67,6 +77,9 @@ public:
 private:
     struct State;
     std::unique_ptr<State> state_;
+    using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
+    static void drawPasses(State& s, const Scene& scene, PassMode passes,
+                           const std::vector<shader::PackedLight>& packed, const Prepare& prepare);
 };
 
 }  // namespace patina

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "../light_packing.h"
+
 namespace patina {
 
 namespace shader_sources {
@@ -40,7 +42,8 @@ void LightBuffer::upload(const std::vector<shader::PackedLight>& lights) {
         throw std::runtime_error(std::to_string(lights.size()) + " enabled lights; the renderer holds " +
                                  std::to_string(shader::MAX_LIGHTS));
     }
-    const GLint count[4] = {GLint(lights.size()), 0, 0, 0};
+    const glm::ivec4 counts = packedLightCounts(lights);
+    const GLint count[4] = {counts.x, counts.y, counts.z, counts.w};
     glBindBuffer(GL_UNIFORM_BUFFER, buffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, GLsizeiptr(lights.size() * sizeof(shader::PackedLight)),
                     lights.data());

@@ -1,0 +1,324 @@
+#include "render_bench.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <tuple>
+#include <unistd.h>
+
+#include <epoxy/gl.h>
+
+#include "gltf_export.h"
+#include "gltf_import.h"
+#include "mesh.h"
+#include "timing.h"
+
+namespace patina {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double threadCpuMilliseconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
+struct Samples {
+    std::vector<double> gpu, cpu, frame;
+    FrameTiming medians() const { return {median(gpu), median(cpu), median(frame)}; }
+};
+
+// One frame, drawn after the pipeline is idle so neither its timer query nor its wall time
+// includes earlier work.
+void timeFrame(Renderer& renderer, const Scene& scene, const RenderSettings& settings, Samples* into) {
+    glFinish();
+    renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed
+    const Clock::time_point start = Clock::now();
+    const double cpuStart = threadCpuMilliseconds();
+    renderer.draw(scene, settings, 0);
+    const double cpu = threadCpuMilliseconds() - cpuStart;
+    glFinish();
+    const double frame = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    if (into) {
+        into->gpu.push_back(renderer.lastGpuMilliseconds());
+        into->cpu.push_back(cpu);
+        into->frame.push_back(frame);
+    }
+}
+
+// Runs every measurement once per round, rounds interleaved, so slow drift of this machine's
+// speed spreads over all of them instead of biasing one; two warm-up rounds compile shaders.
+template <typename Each>
+void interleaved(int runs, Each each) {
+    for (int round = -2; round < runs; ++round) {
+        each(round >= 0);
+    }
+}
+
+// A sphere of about `triangles` triangles (2 rings x segments, segments = 2 rings).
+Mesh sphereOfAbout(size_t triangles) {
+    const int rings = std::max(4, int(std::lround(std::sqrt(double(triangles) / 4.0))));
+    return makeUvSphere(rings, 2 * rings);
+}
+
+size_t triangleCount(const Mesh& mesh) {
+    return mesh.indices.size() / 3;
+}
+
+const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, LightType added, int lights) {
+    for (const LightCountRow& row : result.lightRows) {
+        if (row.path == path && row.added == added && row.lights == lights) {
+            return &row.time;
+        }
+    }
+    return nullptr;
+}
+
+// Every path with point lights added, and single again with directional lights added (whose
+// light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost).
+// The floor's scene is the lights as directions, the same for both.
+void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                        RenderBenchResult& result) {
+    const std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
+    const std::pair<PassMode, LightType> series[] = {
+        {PassMode::Multi, LightType::Point},       {PassMode::Single, LightType::Point},
+        {PassMode::Specialised, LightType::Point}, {PassMode::BrdfFloor, LightType::Point},
+        {PassMode::Single, LightType::Directional}};
+    std::map<std::tuple<int, int, int>, Samples> samples;
+    interleaved(options.runs, [&](bool keep) {
+        for (int count : counts) {
+            for (const auto& [path, added] : series) {
+                const Scene scene = renderBenchScene(count, added);
+                RenderSettings s = settings;
+                s.passes = path;
+                timeFrame(renderer, path == PassMode::BrdfFloor ? brdfFloorScene(scene) : scene, s,
+                          keep ? &samples[{int(path), int(added), count}] : nullptr);
+            }
+        }
+    });
+    for (const auto& [path, added] : series) {
+        for (int count : counts) {
+            result.lightRows.push_back({path, added, count, samples[{int(path), int(added), count}].medians()});
+        }
+    }
+}
+
+void measureScale(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                  RenderBenchResult& result) {
+    const Scene scene = defaultScene();
+    const std::vector<std::pair<int, int>> sizes =
+        options.quick ? std::vector<std::pair<int, int>>{{256, 256}, {512, 512}}
+                      : std::vector<std::pair<int, int>>{{512, 512}, {1280, 720}, {1920, 1080}, {2560, 1440}, {3840, 2160}};
+    const std::vector<size_t> triangles =
+        options.quick ? std::vector<size_t>{10'000, 100'000} : std::vector<size_t>{10'000, 100'000, 1'000'000};
+
+    std::vector<Samples> bySize(sizes.size());
+    renderer.setMesh(makeMesh(scene.mesh));
+    interleaved(options.runs, [&](bool keep) {
+        for (size_t i = 0; i < sizes.size(); ++i) {
+            RenderSettings s = settings;
+            s.width = sizes[i].first;
+            s.height = sizes[i].second;
+            timeFrame(renderer, scene, s, keep ? &bySize[i] : nullptr);
+        }
+    });
+    for (size_t i = 0; i < sizes.size(); ++i) {
+        result.scaleRows.push_back({"resolution", sizes[i].first, sizes[i].second,
+                                    triangleCount(makeMesh(scene.mesh)), bySize[i].medians()});
+    }
+    // A mesh upload per size is slow at 1M triangles: sizes one after another, not interleaved.
+    for (size_t target : triangles) {
+        const Mesh mesh = sphereOfAbout(target);
+        renderer.setMesh(mesh);
+        Samples samples;
+        interleaved(options.runs, [&](bool keep) { timeFrame(renderer, scene, settings, keep ? &samples : nullptr); });
+        result.scaleRows.push_back({"triangles", settings.width, settings.height, triangleCount(mesh), samples.medians()});
+    }
+    renderer.setMesh(makeMesh(scene.mesh));
+}
+
+// Export a big sphere as GLB and time importing it (what opening a heavy model costs).
+void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& result) {
+    const Mesh mesh = sphereOfAbout(options.quick ? 40'000 : 1'000'000);
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("patina-bench-" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path file = folder / "sphere.glb";
+    try {
+        exportGltf(file, mesh, defaultScene().material);
+        result.gltfBytes = double(std::filesystem::file_size(file));
+        std::vector<double> seconds;
+        for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
+            const Clock::time_point start = Clock::now();
+            const GltfImport imported = importGltf(file);
+            seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+            result.gltfTriangles = triangleCount(imported.mesh);
+        }
+        result.gltfLoadSeconds = median(seconds);
+    } catch (...) {
+        std::filesystem::remove_all(folder);
+        throw;
+    }
+    std::filesystem::remove_all(folder);
+}
+}  // namespace
+
+Scene renderBenchScene(int lights, LightType added) {
+    Scene scene = defaultScene();
+    if (lights <= int(scene.lights.size())) {
+        scene.lights.resize(size_t(std::max(lights, 0)));
+        return scene;
+    }
+    const int extra = lights - int(scene.lights.size());
+    for (int i = 0; i < extra; ++i) {
+        const float angle = 6.2831853f * (float(i) + 0.5f) / float(extra);
+        Light light;
+        light.type = added;
+        light.name = "ring " + std::to_string(i + 1);
+        light.position = {2.5f * std::cos(angle), 2.5f * std::sin(angle), 2.0f};
+        light.direction = -light.position;
+        light.radius = 12.0f;
+        light.attenuation = {1.0f, 0.0f, 1.0f};
+        // The ring adds about one key light in all.
+        light.intensity = (added == LightType::Point ? 24.0f : 2.0f) / float(extra);
+        scene.lights.push_back(light);
+    }
+    return scene;
+}
+
+Scene brdfFloorScene(const Scene& scene) {
+    Scene floor = scene;
+    for (Light& light : floor.lights) {
+        if (light.type == LightType::Point) {
+            light.direction = -light.position;
+        } else if (light.type == LightType::Hemisphere) {
+            light.direction = {0.0f, -1.0f, 0.0f};
+        }
+        light.type = LightType::Directional;
+    }
+    return floor;
+}
+
+RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
+    RenderBenchResult result;
+    result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    Renderer renderer;
+    RenderSettings settings;   // the defaults a render gets (MSAA included), at the bench's size
+    settings.width = result.width = options.quick ? 480 : options.width;
+    settings.height = result.height = options.quick ? 270 : options.height;
+    result.samples = settings.samples;
+    measureLightCounts(renderer, options, settings, result);
+    measureScale(renderer, options, settings, result);
+    measureGltfLoad(options, result);
+    return result;
+}
+
+std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
+    std::vector<TargetCheck> targets;
+    auto gpu = [&](PassMode path, int lights, LightType added = LightType::Point) {
+        const FrameTiming* t = findLights(result, path, added, lights);
+        return t ? t->gpu : std::nan("");
+    };
+    auto add = [&](std::string name, double value, double bound) {
+        targets.push_back({std::move(name), value, bound, value <= bound});
+    };
+    add("single / multi at 8 lights", gpu(PassMode::Single, 8) / gpu(PassMode::Multi, 8), 0.35);
+    add("specialised / single, default scene (3 lights)", gpu(PassMode::Specialised, 3) / gpu(PassMode::Single, 3), 0.9);
+    // Cost per added light from 8 lights to the most measured, against the floor's.
+    int most = 8;
+    for (const LightCountRow& row : result.lightRows) {
+        most = std::max(most, row.lights);
+    }
+    auto perLight = [&](PassMode path, LightType added) {
+        return (gpu(path, most, added) - gpu(path, 8, added)) / double(most - 8);
+    };
+    const double floor = perLight(PassMode::BrdfFloor, LightType::Point);
+    const std::string range = " (8 to " + std::to_string(most) + " lights)";
+    add("single's cost per added directional light / the BRDF floor's" + range,
+        perLight(PassMode::Single, LightType::Directional) / floor, 1.3);
+    add("single's cost per added point light / the BRDF floor's" + range,
+        perLight(PassMode::Single, LightType::Point) / floor, 1.3);
+    add("specialised's cost per added point light / the BRDF floor's" + range,
+        perLight(PassMode::Specialised, LightType::Point) / floor, 1.3);
+    return targets;
+}
+
+std::string renderBenchCsv(const RenderBenchResult& result) {
+    std::string csv = "section,path,added,lights,width,height,triangles,gpu_ms,cpu_ms,frame_ms\n";
+    char line[256];
+    for (const LightCountRow& row : result.lightRows) {
+        std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f\n",
+                      std::string(passModeName(row.path)).c_str(), std::string(lightTypeName(row.added)).c_str(),
+                      row.lights, result.width, result.height,
+                      triangleCount(makeUvSphere()), row.time.gpu, row.time.cpu, row.time.frame);
+        csv += line;
+    }
+    for (const ScaleRow& row : result.scaleRows) {
+        std::snprintf(line, sizeof line, "%s,single,,3,%d,%d,%zu,%.4f,%.4f,%.4f\n", row.axis.c_str(), row.width,
+                      row.height, row.triangles, row.time.gpu, row.time.cpu, row.time.frame);
+        csv += line;
+    }
+    return csv;
+}
+
+std::string targetsCsv(const std::vector<TargetCheck>& targets) {
+    std::string csv = "target,value,bound,met\n";
+    char line[320];
+    for (const TargetCheck& t : targets) {
+        std::snprintf(line, sizeof line, "\"%s\",%.4f,%.2f,%s\n", t.name.c_str(), t.value, t.bound,
+                      t.met ? "yes" : "no");
+        csv += line;
+    }
+    return csv;
+}
+
+Chart renderBenchLightChart(const RenderBenchResult& result) {
+    char title[128];
+    std::snprintf(title, sizeof title, "Frame time against lights, %dx%d, %dx MSAA", result.width, result.height,
+                  result.samples);
+    ChartPanel panel{title, "enabled lights", "GPU frame time (ms, median)", false, false, {}};
+    size_t colour = 0;
+    for (const auto& [path, added] : {std::pair{PassMode::Multi, LightType::Point}, {PassMode::Single, LightType::Point},
+                                      {PassMode::Specialised, LightType::Point}, {PassMode::BrdfFloor, LightType::Point},
+                                      {PassMode::Single, LightType::Directional}}) {
+        const std::string label = std::string(passModeName(path)) +
+                                  (path == PassMode::BrdfFloor ? " (BRDF alone)"
+                                                               : ", " + std::string(lightTypeName(added)) + "s added");
+        ChartSeries series{label, {}, chartColour(colour++), true, true, path == PassMode::BrdfFloor, {}};
+        for (const LightCountRow& row : result.lightRows) {
+            if (row.path == path && row.added == added) {
+                series.points.emplace_back(row.lights, row.time.gpu);
+            }
+        }
+        panel.series.push_back(series);
+    }
+    return Chart{{panel}};
+}
+
+Chart renderBenchScaleChart(const RenderBenchResult& result) {
+    Chart chart;
+    for (const char* axis : {"resolution", "triangles"}) {
+        const bool pixels = std::string(axis) == "resolution";
+        ChartPanel panel{pixels ? "Frame time against resolution (3 lights, single)"
+                                : "Frame time against triangles (3 lights, single)",
+                         pixels ? "megapixels" : "triangles", "GPU frame time (ms, median)", !pixels, !pixels, {}};
+        ChartSeries series{"single", {}, chartColour(1), true, true, false, {}};
+        for (const ScaleRow& row : result.scaleRows) {
+            if (row.axis == axis) {
+                series.points.emplace_back(pixels ? double(row.width) * row.height * 1e-6 : double(row.triangles),
+                                           row.time.gpu);
+                series.pointLabels.push_back(pixels ? std::to_string(row.width) + "x" + std::to_string(row.height)
+                                                    : std::to_string(row.triangles));
+            }
+        }
+        panel.series.push_back(series);
+        chart.panels.push_back(panel);
+    }
+    return chart;
+}
+
+}  // namespace patina

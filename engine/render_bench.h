@@ -1,0 +1,73 @@
+#pragma once
+// `patina bench-render`: what a frame costs the renderer, per path, against light count,
+// resolution and triangle count (issue 6). Needs a current GL context. Times are medians of
+// interleaved runs in one process; compare ratios, not absolute times, across machines.
+#include <string>
+#include <vector>
+
+#include "chart.h"
+#include "gl/renderer.h"
+#include "scene.h"
+
+namespace patina {
+
+struct RenderBenchOptions {
+    bool quick = false;   // smaller frames, fewer lights and triangles (for CI)
+    int runs = 7;         // timed runs per measurement after 2 warm-ups
+    int width = 1920, height = 1080;
+};
+
+// Medians over the runs, in milliseconds.
+struct FrameTiming {
+    double gpu = 0.0;     // GL_TIME_ELAPSED timer query around the frame
+    double cpu = 0.0;     // CPU time of the calling thread inside Renderer::draw (submission)
+    double frame = 0.0;   // wall clock from draw to glFinish
+};
+
+struct LightCountRow {
+    PassMode path;        // Single, Multi, Specialised or BrdfFloor
+    LightType added = LightType::Point;   // the type of the lights past the default scene's 3
+    int lights = 0;
+    FrameTiming time;
+};
+
+struct ScaleRow {
+    std::string axis;     // "resolution" or "triangles"
+    int width = 0, height = 0;
+    size_t triangles = 0;
+    FrameTiming time;     // single pass, the default scene's three lights
+};
+
+struct RenderBenchResult {
+    std::vector<LightCountRow> lightRows;
+    std::vector<ScaleRow> scaleRows;
+    int width = 0, height = 0, samples = 0;
+    size_t gltfTriangles = 0;
+    double gltfBytes = 0.0, gltfLoadSeconds = 0.0;   // a GLB of gltfTriangles, imported
+    std::string renderer;   // GL_RENDERER
+};
+
+// The default scene with `lights` lights: its first `lights` for up to 3, then more lights of
+// type `added` (windowed points, or directionals) in a ring in front of the sphere.
+Scene renderBenchScene(int lights, LightType added = LightType::Point);
+// The same lights as directions only, for the BrdfFloor pass.
+Scene brdfFloorScene(const Scene& scene);
+
+RenderBenchResult runRenderBench(const RenderBenchOptions& options);
+
+struct TargetCheck {
+    std::string name;       // what is compared, e.g. "single / multi at 8 lights"
+    double value = 0.0, bound = 0.0;
+    bool met = false;       // value <= bound
+};
+// Issue 6's targets as ratios of this run.
+std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result);
+
+std::string renderBenchCsv(const RenderBenchResult& result);
+std::string targetsCsv(const std::vector<TargetCheck>& targets);
+// Frame time (GPU) against light count, a line per path and the floor dashed.
+Chart renderBenchLightChart(const RenderBenchResult& result);
+// Frame time against pixels and against triangles.
+Chart renderBenchScaleChart(const RenderBenchResult& result);
+
+}  // namespace patina
