@@ -10,9 +10,11 @@
 int main(int argc, char** argv) {
     CLI::App app{"Patina: a live editor for physically based materials (Karis 2013 shading)"};
     app.require_subcommand(0, 1);
-    patina::editor::EditorOptions editor;
+    patina::editor::EditorOptions editor;   // its start time: now, for --stats
     app.add_option("file", editor.files, "Without a subcommand: open the editor on this material, scene or "
                                          "Patina screenshot (PNG)");
+    app.add_flag("--stats", editor.stats, "Editor: log time to first frame, frame times while dragging and peak "
+                                          "memory to stderr");
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
                      patina::cli::addLobeCommand, patina::cli::addCompareCommand,

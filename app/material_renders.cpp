@@ -25,6 +25,10 @@ std::vector<LdrImage> renderMaterials(Scene scene, const std::vector<Material>& 
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
+    // The same image as single or multi to rounding, faster: materials of one scene share one
+    // or two compiled shaders (with and without diffuse). Only the sRGB image is needed.
+    settings.passes = PassMode::Specialised;
+    settings.readHdr = false;
     std::vector<LdrImage> images;
     for (const Material& material : materials) {
         scene.material = material;

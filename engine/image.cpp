@@ -24,6 +24,7 @@ std::string systemError(const std::string& what, const std::filesystem::path& pa
 
 std::vector<uint8_t> encodePng(const LdrImage& image) {
     std::vector<uint8_t> bytes;
+    bytes.reserve(image.rgba.size() / 4);   // stb appends in pieces; fewer regrowth copies
     auto append = [](void* context, void* data, int size) {
         auto* out = static_cast<std::vector<uint8_t>*>(context);
         const auto* begin = static_cast<const uint8_t*>(data);

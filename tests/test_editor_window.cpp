@@ -1,5 +1,5 @@
-// The real editor window under Xvfb, driven by xdotool: a slider drag shows in F12 screenshots,
-// and an idle editor sleeps. Needs xvfb and xdotool (scripts/setup.sh installs both).
+// The real editor window under Xvfb, driven by xdotool: a slider drag shows in F12 screenshots
+// and in the --stats log, and an idle editor sleeps. Needs xvfb and xdotool (scripts/setup.sh installs both).
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -118,8 +118,9 @@ protected:
         close(pipeFds[0]);
         ASSERT_GT(length, 0) << "Xvfb did not start";
         display_ = ":" + std::to_string(std::atoi(number));
+        // With --stats, its log (stderr) in a file the tests read.
         editor_ = std::make_unique<Child>(
-            std::vector<std::string>{PATINA_EXECUTABLE},
+            std::vector<std::string>{"/bin/sh", "-c", std::string("exec '") + PATINA_EXECUTABLE + "' --stats 2>stats.log"},
             std::vector<std::string>{"DISPLAY=" + display_, "XDG_CONFIG_HOME=" + (dir_ / "config").string(),
                                      "PATINA_UI_LAYOUT=" + (dir_ / "layout.json").string()},
             dir_);
@@ -214,6 +215,14 @@ TEST_F(EditorWindow, DraggingASliderShowsInTheScreenshot) {
     }
     EXPECT_GT(distinct, before.width * before.height / 10) << "the screenshot is blank";
     EXPECT_GT(changed, 200) << "the drag did not change the picture";
+
+    // --stats logged the first frame and this drag's frame times, each with the peak memory.
+    const std::string log = readText(dir_ / "stats.log");
+    EXPECT_NE(log.find("stats: first frame "), std::string::npos) << log;
+    const size_t drag = log.find("stats: drag: ");
+    ASSERT_NE(drag, std::string::npos) << log;
+    EXPECT_GE(std::atoi(log.c_str() + drag + 13), 3) << "frames during the drag: " << log;
+    EXPECT_NE(log.find("MB)", drag), std::string::npos) << log;
 }
 
 TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {

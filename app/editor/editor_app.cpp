@@ -11,6 +11,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "editor_settings.h"
+#include "frame_stats.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -87,6 +88,7 @@ int runEditor(const EditorOptions& options) {
         const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
         std::string title;
         int framesLeft = kFramesAfterInput;
+        FrameStats stats(options.stats ? &std::cerr : nullptr, options.start);
         while (!state.quitConfirmed) {
             if (framesLeft <= 0) {
                 glfwWaitEvents();
@@ -94,6 +96,7 @@ int runEditor(const EditorOptions& options) {
             } else {
                 glfwPollEvents();
             }
+            const FrameStats::Clock::time_point frameStart = FrameStats::Clock::now();
             --framesLeft;
             if (glfwWindowShouldClose(window)) {
                 glfwSetWindowShouldClose(window, GLFW_FALSE);
@@ -122,6 +125,9 @@ int runEditor(const EditorOptions& options) {
             glClear(GL_COLOR_BUFFER_BIT);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window);
+            stats.frameDone(
+                std::chrono::duration<double, std::milli>(FrameStats::Clock::now() - frameStart).count(),
+                ImGui::IsAnyItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
 
             if (const std::string wanted = windowTitle(state); wanted != title) {
                 glfwSetWindowTitle(window, wanted.c_str());
@@ -131,6 +137,7 @@ int runEditor(const EditorOptions& options) {
                 std::ofstream(layoutDump) << layoutJson();
             }
         }
+        stats.finish();
         glfwGetWindowSize(window, &geometry.width, &geometry.height);
         if (!saveSettings(state, geometry, settingsFile)) {
             std::cerr << "warning: " << state.error << "\n";

@@ -1,4 +1,5 @@
 #pragma once
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -6,6 +7,8 @@ namespace patina::editor {
 
 struct EditorOptions {
     std::vector<std::string> files;   // opened in order: material, scene or screenshot
+    bool stats = false;               // log first-frame and drag frame times to stderr
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 };
 
 // Opens the editor window (GLFW, OpenGL 3.3 core) and runs until it is closed. Returns the
