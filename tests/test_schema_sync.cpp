@@ -1,6 +1,7 @@
 // docs/schema/*.schema.json describe exactly what the loaders accept: every probe the schema
 // implies (tests/schema_walk.h) gets the loader's verdict the schema predicts, the schema's
-// defaults are the loader's, and every key the writers emit is in the schema.
+// defaults are the loader's, unknown keys are written back, and every key the writers emit is
+// in the schema.
 #include <functional>
 
 #include <gtest/gtest.h>
@@ -54,6 +55,9 @@ size_t checkLoaderAgainstSchema(const std::string& schemaFile, const Loader& loa
                                            : warnings[0].find(kSource + ": " + probe.pointer +
                                                               ": unknown key"),
                           std::string::npos) << (warnings.empty() ? "" : warnings[0]);
+                const Json::json_pointer unknown(probe.pointer);
+                EXPECT_EQ(loaded.value(unknown, Json()), probe.document[unknown])
+                    << "an unknown key is written back";
             }
         } catch (const InputError& error) {
             EXPECT_FALSE(probe.accepted) << "the loader refuses what the schema accepts: "
