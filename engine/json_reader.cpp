@@ -183,21 +183,12 @@ void JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int sup
     }
 }
 
-std::vector<std::string> JsonObjectReader::unknownKeys(const char* fate) const {
-    std::vector<std::string> warnings;
-    for (auto it = object_.begin(); it != object_.end(); ++it) {
-        if (!read_.count(it.key())) {
-            warnings.push_back(source_ + ": " + pointerOf(it.key().c_str()) + ": unknown key '" +
-                               it.key() + "' (" + fate + ")");
-        }
-    }
-    return warnings;
-}
-
-Json JsonObjectReader::unknownEntries() const {
+Json JsonObjectReader::keepUnknown(std::vector<std::string>& warnings) const {
     Json entries = Json::object();
     for (auto it = object_.begin(); it != object_.end(); ++it) {
         if (!read_.count(it.key())) {
+            warnings.push_back(source_ + ": " + pointerOf(it.key().c_str()) + ": unknown key '" +
+                               it.key() + "' (kept, not used)");
             entries[it.key()] = it.value();
         }
     }

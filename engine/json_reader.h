@@ -23,7 +23,7 @@ struct Range {
 };
 
 // Reads one JSON object field by field with checks, reporting errors as
-// "SOURCE: /json/pointer: what is wrong". Keys never read are reported by unknownKeys().
+// "SOURCE: /json/pointer: what is wrong". Keys never read are kept by keepUnknown().
 class JsonObjectReader {
 public:
     JsonObjectReader(const Json& value, std::string pointer, std::string source);
@@ -40,10 +40,9 @@ public:
     std::string pointerOf(const char* key) const { return pointer_ + "/" + key; }
     const std::string& source() const { return source_; }
 
-    // "SOURCE: /pointer: unknown key 'x' (FATE)" for every key not read so far.
-    std::vector<std::string> unknownKeys(const char* fate = "ignored") const;
-    // The keys not read so far with their values, in file order.
-    Json unknownEntries() const;
+    // The keys not read so far with their values, in file order, kept so that saving can
+    // write them back; each is warned about: "SOURCE: /pointer: unknown key 'x' (kept, not used)".
+    Json keepUnknown(std::vector<std::string>& warnings) const;
     [[noreturn]] void fail(const char* key, const std::string& what) const;
 
     // Requires "format": expectedFormat and "version" <= supportedVersion.

@@ -5,6 +5,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "json_value.h"
+
 namespace patina {
 
 enum class LightType { Point, Directional, Hemisphere };
@@ -29,6 +31,8 @@ struct Light {
     // hemisphere (colour acts as a tint on both)
     glm::vec3 sky{1.0f};
     glm::vec3 ground{0.0f};
+    // Keys of the file Patina does not know (another type's too), written back on save.
+    Json extras = Json::object();
 
     bool operator==(const Light&) const = default;
 };

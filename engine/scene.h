@@ -15,6 +15,7 @@ struct Camera {
     glm::vec3 position{0.0f, 0.6f, 3.4f};
     glm::vec3 target{0.0f};
     float fovYDegrees = 45.0f;
+    Json extras = Json::object();   // unknown keys of the file, as Material::extras
 
     bool operator==(const Camera&) const = default;
 };
@@ -27,6 +28,7 @@ struct DisplaySettings {
     float exposure = 0.0f;                         // stops
     Tonemap tonemap = Tonemap::None;
     glm::vec3 background{0.02f, 0.02f, 0.025f};    // linear
+    Json extras = Json::object();
 
     bool operator==(const DisplaySettings&) const = default;
 };
@@ -45,6 +47,7 @@ struct Scene {
     Camera camera;
     std::vector<Light> lights;
     DisplaySettings display;
+    Json extras = Json::object();   // top-level unknown keys; the parts keep their own
 
     bool operator==(const Scene&) const = default;
 };

@@ -28,9 +28,14 @@ Json toJson(glm::vec3 v) {
     return Json::array({toJson(v.x), toJson(v.y), toJson(v.z)});
 }
 
-template <typename T>
-void appendAll(std::vector<T>& to, std::vector<T> from) {
-    to.insert(to.end(), from.begin(), from.end());
+// Kept unknown keys go back after the known ones; a known key always wins over an extra.
+Json withExtras(Json json, const Json& extras) {
+    for (auto it = extras.begin(); it != extras.end(); ++it) {
+        if (!json.contains(it.key())) {
+            json[it.key()] = it.value();
+        }
+    }
+    return json;
 }
 
 Light lightFromJson(const Json& json, const std::string& pointer, const std::string& source,
@@ -66,7 +71,7 @@ Light lightFromJson(const Json& json, const std::string& pointer, const std::str
         light.ground = reader.vec3("ground", light.ground, kNonNegative);
         break;
     }
-    appendAll(warnings, reader.unknownKeys());
+    light.extras = reader.keepUnknown(warnings);
     return light;
 }
 
@@ -80,7 +85,7 @@ Camera cameraFromJson(const Json& json, const std::string& pointer, const std::s
     if (camera.position == camera.target) {
         reader.fail("target", "the camera target equals its position");
     }
-    appendAll(warnings, reader.unknownKeys());
+    camera.extras = reader.keepUnknown(warnings);
     return camera;
 }
 
@@ -97,8 +102,29 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     }
     display.tonemap = *parsed;
     display.background = reader.vec3("background", display.background, kNonNegative);
-    appendAll(warnings, reader.unknownKeys());
+    display.extras = reader.keepUnknown(warnings);
     return display;
+}
+
+Json lightToJson(const Light& light) {
+    Json json{{"type", lightTypeName(light.type)},
+              {"name", light.name},
+              {"enabled", light.enabled},
+              {"color", toJson(light.color)},
+              {"intensity", toJson(light.intensity)}};
+    switch (light.type) {
+    case LightType::Point:
+        json["position"] = toJson(light.position);
+        json["radius"] = toJson(light.radius);
+        json["attenuation"] = toJson(light.attenuation);
+        break;
+    case LightType::Directional: json["direction"] = toJson(light.direction); break;
+    case LightType::Hemisphere:
+        json["sky"] = toJson(light.sky);
+        json["ground"] = toJson(light.ground);
+        break;
+    }
+    return withExtras(json, light.extras);
 }
 }  // namespace
 
@@ -121,8 +147,7 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     }
     material.model = *modelId;
     material.notes = reader.string("notes", material.notes);
-    material.extras = reader.unknownEntries();
-    appendAll(warnings, reader.unknownKeys("kept, not used"));
+    material.extras = reader.keepUnknown(warnings);
     return material;
 }
 
@@ -174,7 +199,7 @@ Scene sceneFromJson(const Json& json, const std::string& source,
     if (const Json* display = reader.child("display")) {
         scene.display = displayFromJson(*display, "/display", source, warnings);
     }
-    appendAll(warnings, reader.unknownKeys());
+    scene.extras = reader.keepUnknown(warnings);
     return scene;
 }
 
@@ -194,13 +219,7 @@ Json materialToJson(const Material& material) {
     if (!material.notes.empty()) {
         json["notes"] = material.notes;
     }
-    // Unknown keys go back where the file had them; a known key always wins over an extra.
-    for (auto it = material.extras.begin(); it != material.extras.end(); ++it) {
-        if (!json.contains(it.key())) {
-            json[it.key()] = it.value();
-        }
-    }
-    return json;
+    return withExtras(json, material.extras);
 }
 
 void saveMaterialFile(const std::filesystem::path& path, const Material& material) {
@@ -219,39 +238,25 @@ void saveMaterialFile(const std::filesystem::path& path, const Material& materia
 Json sceneToJson(const Scene& scene) {
     Json lights = Json::array();
     for (const Light& light : scene.lights) {
-        Json entry{{"type", lightTypeName(light.type)},
-                   {"name", light.name},
-                   {"enabled", light.enabled},
-                   {"color", toJson(light.color)},
-                   {"intensity", toJson(light.intensity)}};
-        switch (light.type) {
-        case LightType::Point:
-            entry["position"] = toJson(light.position);
-            entry["radius"] = toJson(light.radius);
-            entry["attenuation"] = toJson(light.attenuation);
-            break;
-        case LightType::Directional: entry["direction"] = toJson(light.direction); break;
-        case LightType::Hemisphere:
-            entry["sky"] = toJson(light.sky);
-            entry["ground"] = toJson(light.ground);
-            break;
-        }
-        lights.push_back(entry);
+        lights.push_back(lightToJson(light));
     }
-    Json material = materialToJson(scene.material);
-    return Json{{"format", "patina-scene"},
-                {"version", kSceneFormatVersion},
-                {"mesh", scene.meshFile.empty() ? std::string(meshKindName(scene.mesh)) : scene.meshFile},
-                {"material", material},
-                {"camera",
-                 {{"position", toJson(scene.camera.position)},
-                  {"target", toJson(scene.camera.target)},
-                  {"fovYDegrees", toJson(scene.camera.fovYDegrees)}}},
-                {"lights", lights},
-                {"display",
-                 {{"exposure", toJson(scene.display.exposure)},
-                  {"tonemap", tonemapName(scene.display.tonemap)},
-                  {"background", toJson(scene.display.background)}}}};
+    const Camera& camera = scene.camera;
+    const DisplaySettings& display = scene.display;
+    return withExtras(
+        Json{{"format", "patina-scene"},
+             {"version", kSceneFormatVersion},
+             {"mesh", scene.meshFile.empty() ? std::string(meshKindName(scene.mesh)) : scene.meshFile},
+             {"material", materialToJson(scene.material)},
+             {"camera", withExtras({{"position", toJson(camera.position)},
+                                    {"target", toJson(camera.target)},
+                                    {"fovYDegrees", toJson(camera.fovYDegrees)}},
+                                   camera.extras)},
+             {"lights", lights},
+             {"display", withExtras({{"exposure", toJson(display.exposure)},
+                                     {"tonemap", tonemapName(display.tonemap)},
+                                     {"background", toJson(display.background)}},
+                                    display.extras)}},
+        scene.extras);
 }
 
 }  // namespace patina

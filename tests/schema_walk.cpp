@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -14,7 +15,7 @@ using Pointer = Json::json_pointer;
 const std::set<std::string> kKnownKeywords = {
     "$schema", "title", "description", "$comment", "$ref", "$defs", "type", "properties",
     "required", "dependentRequired", "items", "minItems", "maxItems", "minimum", "maximum",
-    "const", "enum", "oneOf", "not", "default"};
+    "const", "enum", "oneOf", "anyOf", "not", "default", "pattern", "examples"};
 
 void checkKeywords(const Json& schema) {
     for (auto it = schema.begin(); it != schema.end(); ++it) {
@@ -25,6 +26,9 @@ void checkKeywords(const Json& schema) {
     }
     if (schema.contains("not") && (schema["not"].size() != 1 || !schema["not"].contains("const"))) {
         throw std::runtime_error("only \"not\": {\"const\": ...} is checked");
+    }
+    if (schema.contains("pattern") && schema.value("type", "") != "string") {
+        throw std::runtime_error("a pattern is checked only beside \"type\": \"string\"");
     }
 }
 
@@ -59,6 +63,52 @@ Json otherThan(const Json& value) {
         return value.get<double>() + 1.0;
     }
     return "other";
+}
+
+// JSON Schema's patterns are ECMAScript regular expressions, not anchored.
+bool matchesPattern(const Json& schema, const std::string& text) {
+    return std::regex_search(text, std::regex(schema["pattern"].get<std::string>()));
+}
+
+// Whether `value` satisfies a schema of a scalar, the only kind of anyOf branch checked.
+bool accepts(const SchemaSet::Node& node, const Json& value) {
+    const Json& schema = node.schema;
+    const std::string type = typeOf(node);
+    if (type == "object" || type == "array" || schema.contains("oneOf") ||
+        schema.contains("anyOf") || schema.contains("not")) {
+        throw std::runtime_error("only scalar anyOf branches are checked, not " + schema.dump());
+    }
+    const bool typeFits = type.empty() || (type == "string" && value.is_string()) ||
+                          (type == "boolean" && value.is_boolean()) ||
+                          (type == "number" && value.is_number()) ||
+                          (type == "integer" && value.is_number() &&
+                           std::trunc(value.get<double>()) == value.get<double>());
+    const Json members = schema.value("enum", Json::array({value}));
+    return typeFits && schema.value("const", value) == value &&
+           std::find(members.begin(), members.end(), value) != members.end() &&
+           !(value.is_number() && value.get<double>() < schema.value("minimum", -1e300)) &&
+           !(value.is_number() && value.get<double>() > schema.value("maximum", 1e300)) &&
+           !(value.is_string() && schema.contains("pattern") &&
+             !matchesPattern(schema, value.get<std::string>()));
+}
+
+// Strings near `example`: in upper, lower and mixed case, one character shorter or longer,
+// the part from its last dot on its own and after a folder.
+std::vector<std::string> nearMisses(const std::string& example) {
+    std::string upper = example, lower = example, mixed = example;
+    for (size_t i = 0; i < example.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(example[i]);
+        upper[i] = char(std::toupper(c));
+        lower[i] = char(std::tolower(c));
+        mixed[i] = i % 2 ? lower[i] : upper[i];
+    }
+    std::vector<std::string> strings = {example, upper, lower, mixed,
+                                        example.substr(0, example.size() - 1), example + "x"};
+    if (const size_t dot = example.rfind('.'); dot != std::string::npos) {
+        strings.push_back(example.substr(dot));
+        strings.push_back("folder/" + example.substr(dot));
+    }
+    return strings;
 }
 
 // The oneOf variant `value` is an instance of: the object variant whose "type" property's
@@ -104,6 +154,10 @@ struct Collector {
             visit(variantFor(schemas, node, value), at);
             return;
         }
+        if (schema.contains("anyOf")) {
+            visitAnyOf(node, at);
+            return;
+        }
         if (schema.contains("const")) {
             refuse("not the const", at, otherThan(schema["const"]));
         }
@@ -125,11 +179,54 @@ struct Collector {
             visitNumber(schema, at, value, type == "integer");
         } else if (type == "string") {
             refuse("not a string:", at, 42);
+            if (schema.contains("pattern")) {
+                visitPattern(schema, at);
+            }
         } else if (type == "boolean") {
             refuse("not a boolean:", at, "yes");
             accept("boolean", at, !value.get<bool>());
         } else if (!type.empty()) {
             throw std::runtime_error("type '" + type + "' is not checked");
+        }
+    }
+
+    // Each branch's probes, with the verdict of the whole anyOf: a value one branch refuses
+    // may be one another takes.
+    void visitAnyOf(const SchemaSet::Node& node, const Pointer& at) {
+        std::vector<SchemaSet::Node> branches;
+        for (const Json& branch : node.schema["anyOf"]) {
+            branches.push_back(schemas.resolve(branch, node.file));
+        }
+        const size_t first = out.size();
+        refuse("none of anyOf:", at, Json::object());   // the branches are scalars
+        for (const SchemaSet::Node& branch : branches) {
+            visit(branch, at);
+        }
+        for (size_t i = first; i < out.size(); ++i) {
+            const Json& value = out[i].document[at];
+            out[i].accepted = std::any_of(branches.begin(), branches.end(),
+                                          [&](const SchemaSet::Node& b) { return accepts(b, value); });
+            out[i].pointer = out[i].accepted ? "" : at.to_string();
+        }
+    }
+
+    // A pattern cannot be inverted into strings: its examples, which it must match, and
+    // strings near them, each with the pattern's verdict.
+    void visitPattern(const Json& schema, const Pointer& at) {
+        if (!schema.contains("examples")) {
+            throw std::runtime_error("a pattern needs examples to probe it with");
+        }
+        for (const Json& example : schema["examples"]) {
+            if (!matchesPattern(schema, example.get<std::string>())) {
+                throw std::runtime_error("the example " + example.dump() + " does not match its pattern");
+            }
+            for (const std::string& text : nearMisses(example.get<std::string>())) {
+                if (matchesPattern(schema, text)) {
+                    accept("matches the pattern:", at, text);
+                } else {
+                    refuse("does not match the pattern:", at, text);
+                }
+            }
         }
     }
 
@@ -257,6 +354,9 @@ Json instantiate(const SchemaSet& schemas, const SchemaSet::Node& node) {
             }
         }
         throw std::runtime_error("oneOf without an object variant");
+    }
+    if (schema.contains("anyOf") && !schema.contains("default")) {
+        return instantiate(schemas, schemas.resolve(schema["anyOf"][0], node.file));
     }
     const std::string type = typeOf(node);
     if (type == "object") {

@@ -45,7 +45,9 @@ struct Probe {
 
 // For every rule of the schema met in `full` (built by instantiate): a value at the limit and
 // one just past it, every enum member and one non-member, each required key left out, a wrong
-// type, an unknown key; and for every object, a copy without the keys that have defaults.
+// type, an unknown key; and for every object, a copy without the keys that have defaults. A
+// pattern is probed with its examples and strings near them (other case, a letter short or
+// over); an anyOf of scalars gets every branch's probes, judged by all its branches.
 std::vector<Probe> probes(const SchemaSet& schemas, const SchemaSet::Node& root, const Json& full);
 
 // JSON pointers of object keys in `value` that the schema does not list.

@@ -213,6 +213,24 @@ TEST_F(EditorStateTest, OpeningASceneBringsItsLightsAndCamera) {
     EXPECT_EQ(state.scene.material.name, "from scene");
 }
 
+TEST_F(EditorStateTest, AnOpenedScenesUnknownKeysSurviveEditsAndUndo) {
+    Scene scene = defaultScene();
+    scene.extras["author"] = "me";
+    scene.camera.extras["lens"] = Json::object({{"mm", 35}});
+    scene.display.extras["lut"] = "film.cube";
+    scene.lights[0].extras["tags"] = Json::array({"key", 2});
+    std::ofstream(dir_ / "scene.json") << prettyJson(sceneToJson(scene));
+    ASSERT_TRUE(openFile(state, dir_ / "scene.json")) << state.error;
+    state.scene.lights[0].intensity = 3.0f;
+    commitEdits(state);
+    undo(state);
+    // What a screenshot embeds is the scene as opened.
+    EXPECT_EQ(sceneToJson(state.scene), sceneToJson(scene));
+    redo(state);
+    EXPECT_EQ(state.scene.lights[0].intensity, 3.0f);
+    EXPECT_EQ(state.scene.lights[0].extras, scene.lights[0].extras);
+}
+
 TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
     state.layout.leftWidth = 411.0f;
     state.recentFiles = {dir_ / "a.json", dir_ / "b.json"};

@@ -107,6 +107,64 @@ TEST(SceneFile, UnknownKeysAreWarningsNotErrors) {
     EXPECT_EQ(scene.lights.size(), 1u);
 }
 
+// Unknown keys at every level, with nested values, as a newer Patina or another tool writes.
+const char* kSceneWithExtras = R"({
+    "format": "patina-scene", "version": 1, "author": "me",
+    "material": {"roughness": 0.2, "layers": {"clearcoat": [1, 0.1]}},
+    "camera": {"fovYDegrees": 30, "lens": {"mm": 35, "stops": [1.4, 2, 2.8]}},
+    "lights": [{"type": "point", "direction": [0, 1, 0], "tags": ["key", {"group": 2}]},
+               {"type": "hemisphere", "shadow": null}],
+    "display": {"exposure": 1, "lut": "film.cube"},
+    "rig": [{"name": "turntable", "period": 4.5}, []]
+})";
+
+TEST(SceneFile, UnknownKeysAtEveryLevelAreWarnedAboutWithTheirPointer) {
+    std::vector<std::string> warnings;
+    sceneFromJson(parseJsonText(kSceneWithExtras, "s.json"), "s.json", ".", warnings);
+    const std::vector<std::string> expected = {
+        "s.json: /material/layers: unknown key 'layers' (kept, not used)",
+        "s.json: /camera/lens: unknown key 'lens' (kept, not used)",
+        "s.json: /lights/0/direction: unknown key 'direction' (kept, not used)",
+        "s.json: /lights/0/tags: unknown key 'tags' (kept, not used)",
+        "s.json: /lights/1/shadow: unknown key 'shadow' (kept, not used)",
+        "s.json: /display/lut: unknown key 'lut' (kept, not used)",
+        "s.json: /author: unknown key 'author' (kept, not used)",
+        "s.json: /rig: unknown key 'rig' (kept, not used)"};
+    EXPECT_EQ(warnings, expected);
+}
+
+TEST(SceneFile, UnknownKeysAtEveryLevelAreWrittenBackUnchanged) {
+    const Json original = parseJsonText(kSceneWithExtras, "s.json");
+    std::vector<std::string> warnings;
+    const Scene scene = sceneFromJson(original, "s.json", ".", warnings);
+    // Saved as text and read again, as a file or a screenshot's embedded scene is.
+    const Json saved = parseJsonText(prettyJson(sceneToJson(scene)), "saved.json");
+    for (const char* pointer :
+         {"/author", "/rig", "/material/layers", "/camera/lens", "/lights/0/direction",
+          "/lights/0/tags", "/lights/1/shadow", "/display/lut"}) {
+        const Json::json_pointer at(pointer);
+        ASSERT_TRUE(saved.contains(at)) << pointer;
+        EXPECT_EQ(saved[at], original[at]) << pointer;
+    }
+    std::vector<std::string> reloadWarnings;
+    EXPECT_EQ(sceneFromJson(saved, "saved.json", ".", reloadWarnings), scene);
+    EXPECT_EQ(reloadWarnings.size(), warnings.size());
+}
+
+TEST(SceneFile, ExtrasNeverOverrideKnownKeys) {
+    Scene scene = defaultScene();
+    scene.extras = Json::object({{"mesh", "torus"}, {"author", "me"}});
+    scene.camera.extras = Json::object({{"fovYDegrees", 90}});
+    scene.lights[0].extras = Json::object({{"intensity", 123}});
+    scene.display.extras = Json::object({{"tonemap", "aces"}});
+    const Json json = sceneToJson(scene);
+    EXPECT_EQ(json["mesh"], "sphere");
+    EXPECT_EQ(json["author"], "me");
+    EXPECT_EQ(json["camera"]["fovYDegrees"], 45);
+    EXPECT_FLOAT_EQ(json["lights"][0]["intensity"].get<float>(), scene.lights[0].intensity);
+    EXPECT_EQ(json["display"]["tonemap"], "none");
+}
+
 TEST(SceneFile, MaterialPathIsRelativeToTheSceneFile) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "patina_scene_file_test";
     std::filesystem::create_directories(dir / "materials");

@@ -1,13 +1,17 @@
 // docs/schema/*.schema.json describe exactly what the loaders accept: every probe the schema
 // implies (tests/schema_walk.h) gets the loader's verdict the schema predicts, the schema's
-// defaults are the loader's, and every key the writers emit is in the schema.
+// defaults are the loader's, unknown keys are written back, and every key the writers emit is
+// in the schema.
+#include <algorithm>
 #include <functional>
+#include <map>
 
 #include <gtest/gtest.h>
 
 #include "brdf_models.h"
 #include "scene_file.h"
 #include "schema_walk.h"
+#include "scratch_test.h"
 
 namespace patina {
 namespace {
@@ -54,6 +58,9 @@ size_t checkLoaderAgainstSchema(const std::string& schemaFile, const Loader& loa
                                            : warnings[0].find(kSource + ": " + probe.pointer +
                                                               ": unknown key"),
                           std::string::npos) << (warnings.empty() ? "" : warnings[0]);
+                const Json::json_pointer unknown(probe.pointer);
+                EXPECT_EQ(loaded.value(unknown, Json()), probe.document[unknown])
+                    << "an unknown key is written back";
             }
         } catch (const InputError& error) {
             EXPECT_FALSE(probe.accepted) << "the loader refuses what the schema accepts: "
@@ -86,6 +93,53 @@ TEST(SchemaSync, EveryKeyTheWritersEmitIsInTheSchema) {
               std::vector<std::string>{});
     EXPECT_EQ(test::undescribedKeys(set, set.root("patina-scene.schema.json"), sceneToJson(scene)),
               std::vector<std::string>{});
+}
+
+TEST(SchemaSync, SceneSchemaProbesGltfMeshPaths) {
+    const test::SchemaSet set = schemas();
+    const test::SchemaSet::Node root = set.root("patina-scene.schema.json");
+    size_t taken = 0, refused = 0;
+    for (const test::Probe& probe : test::probes(set, root, test::instantiate(set, root))) {
+        const Json mesh = probe.document.is_object() ? probe.document.value("mesh", Json()) : Json();
+        std::string text = mesh.is_string() ? mesh.get<std::string>() : "";
+        std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (text.find(".gl") != std::string::npos) {
+            ++(probe.accepted ? taken : refused);
+        }
+    }
+    EXPECT_GE(taken, 4u);     // each example, in upper, lower and mixed case
+    EXPECT_GE(refused, 4u);   // a letter short or over, no file name before the dot
+}
+
+// A value one anyOf branch refuses is taken when another branch takes it.
+class SchemaWalk : public test::ScratchTest {};
+
+TEST_F(SchemaWalk, AnyOfTakesWhatAnyBranchTakes) {
+    write("t.schema.json", R"({"type": "object", "properties": {"v": {"default": "a", "anyOf": [
+        {"enum": ["a"]}, {"type": "string", "pattern": "^a-", "examples": ["a-1"]}]}}})");
+    const test::SchemaSet set(dir_);
+    const test::SchemaSet::Node root = set.root("t.schema.json");
+    std::map<std::string, bool> verdicts;
+    for (const test::Probe& probe : test::probes(set, root, test::instantiate(set, root))) {
+        if (probe.document.is_object()) {
+            verdicts[probe.document.value("v", Json()).dump()] = probe.accepted;
+        }
+    }
+    EXPECT_TRUE(verdicts.at(R"("a-other")"));   // not in the enum, but matches the pattern
+    EXPECT_TRUE(verdicts.at(R"("a-1")"));
+    EXPECT_FALSE(verdicts.at(R"("A-1")"));
+    EXPECT_FALSE(verdicts.at("42"));
+    EXPECT_FALSE(verdicts.at("{}"));
+}
+
+TEST_F(SchemaWalk, APatternNeedsAStringTypeAndExamplesItMatches) {
+    for (const char* rest : {R"("type": "string")", R"("type": "string", "examples": ["b"])",
+                             R"("examples": ["a"])"}) {
+        write("t.schema.json", std::string(R"({"pattern": "^a", )") + rest + "}");
+        const test::SchemaSet set(dir_);
+        const test::SchemaSet::Node root = set.root("t.schema.json");
+        EXPECT_THROW(test::probes(set, root, "a"), std::runtime_error) << rest;
+    }
 }
 
 // The probes check that the loader takes every name the schema lists; this, that the schema

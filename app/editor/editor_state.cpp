@@ -244,7 +244,8 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
             }
         });
         if (scene) {
-            // Camera, mesh and display are views, not edits: they follow the file.
+            // Camera, mesh, display and the file's unknown keys are views, not edits: they
+            // follow the file.
             state.scene.camera = scene->camera;
             state.scene.mesh = scene->mesh;
             state.scene.meshFile = scene->meshFile;
@@ -252,6 +253,7 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
                 useEditorMesh(state, scene->meshFile, *sceneMesh);
             }
             state.scene.display = scene->display;
+            state.scene.extras = scene->extras;
             state.materialPath.clear();
             state.soloLight = -1;
             state.selectedLight = state.scene.lights.empty() ? -1 : 0;
