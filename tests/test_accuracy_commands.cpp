@@ -1,15 +1,19 @@
-// bench, stability and furnace: their outputs exist, parse and have one row per model, and the
-// shipped models are finite and non-negative everywhere in the stability grid.
+// bench, stability, furnace and bench-render: their outputs exist, parse and have one row per
+// model (or path and light count), and the shipped models are finite and non-negative
+// everywhere in the stability grid.
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "brdf_models.h"
 #include "half.h"
 #include "cli_runner.h"
 #include "image.h"
+#include "render_bench.h"
 #include "scratch_test.h"
 #include "stability.h"
 #include "test_support.h"
@@ -35,6 +39,80 @@ std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path)
 }
 
 class AccuracyCommands : public test::ScratchTest {};
+
+// Every path at every light count, both scale axes, every target with a finite value, the
+// charts. Times are not checked: benchmarks, not timed tests.
+TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
+    const test::CliRun run = test::runPatina("bench-render --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("render_bench.csv"));
+    ASSERT_FALSE(rows.empty());
+    EXPECT_EQ(rows[0][0], "section");
+    std::map<std::string, int> perSeries;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), rows[0].size());
+        perSeries[rows[i][0] + " " + rows[i][1] + " " + rows[i][2]] += 1;
+        for (size_t c = 7; c < rows[i].size(); ++c) {
+            EXPECT_GT(std::stod(rows[i][c]), 0.0) << rows[0][c] << " in row " << i;
+        }
+    }
+    for (const char* series : {"lights multi point", "lights single point", "lights specialised point",
+                               "lights brdf-floor point", "lights single directional"}) {
+        EXPECT_EQ(perSeries[series], 4) << series;   // --quick: 1, 3, 8 and 16 lights
+    }
+    EXPECT_EQ(perSeries["resolution single "], 2);
+    EXPECT_EQ(perSeries["triangles single "], 2);
+    const std::string targets = read("render_targets.csv");
+    for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
+                               "per added point light", "separate renders", "peak RSS"}) {
+        EXPECT_NE(targets.find(target), std::string::npos) << target;
+    }
+    EXPECT_EQ(targets.find("nan"), std::string::npos) << targets;
+    EXPECT_GT(decodePng(readFileBytes(path("render_lights.png"))).width, 100);
+    EXPECT_GT(decodePng(readFileBytes(path("render_scale.png"))).width, 100);
+}
+
+TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
+    for (int count : {0, 1, 3, 8, 32}) {
+        const Scene scene = renderBenchScene(count, LightType::Directional);
+        ASSERT_EQ(int(scene.lights.size()), count);
+        for (const Light& light : brdfFloorScene(scene).lights) {
+            EXPECT_EQ(light.type, LightType::Directional);
+            EXPECT_GT(glm::length(light.direction), 0.0f);
+        }
+    }
+    const Scene points = renderBenchScene(8);
+    EXPECT_EQ(points.lights.back().type, LightType::Point);
+    EXPECT_EQ(points.lights[1].type, defaultScene().lights[1].type);   // the default scene's first
+}
+
+TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
+    RenderBenchResult result;
+    auto add = [&](PassMode path, LightType added, int lights, double gpu) {
+        result.lightRows.push_back({path, added, lights, {gpu, 0.0, 0.0}});
+    };
+    add(PassMode::Multi, LightType::Point, 8, 100.0);
+    add(PassMode::Single, LightType::Point, 8, 30.0);
+    add(PassMode::Single, LightType::Point, 3, 20.0);
+    add(PassMode::Specialised, LightType::Point, 3, 16.0);
+    add(PassMode::Single, LightType::Point, 16, 30.0 + 8 * 3.0);
+    add(PassMode::BrdfFloor, LightType::Point, 8, 10.0);
+    add(PassMode::BrdfFloor, LightType::Point, 16, 10.0 + 8 * 2.0);
+    add(PassMode::Single, LightType::Directional, 8, 20.0);
+    add(PassMode::Single, LightType::Directional, 16, 20.0 + 8 * 2.4);
+    add(PassMode::Specialised, LightType::Point, 8, 20.0);
+    add(PassMode::Specialised, LightType::Point, 16, 20.0 + 8 * 2.8);
+    const std::vector<TargetCheck> targets = renderBenchTargets(result);
+    ASSERT_EQ(targets.size(), 5u);
+    EXPECT_DOUBLE_EQ(targets[0].value, 0.3);
+    EXPECT_TRUE(targets[0].met);
+    EXPECT_DOUBLE_EQ(targets[1].value, 0.8);
+    EXPECT_NEAR(targets[2].value, 1.2, 1e-12);   // directional: 2.4 / 2
+    EXPECT_TRUE(targets[2].met);
+    EXPECT_NEAR(targets[3].value, 1.5, 1e-12);   // point: 3 / 2
+    EXPECT_FALSE(targets[3].met);
+    EXPECT_NEAR(targets[4].value, 1.4, 1e-12);
+}
 
 TEST_F(AccuracyCommands, BenchWritesOneRowPerModelAndTheChart) {
     const test::CliRun run = test::runPatina("bench --quick --out-dir " + dir_.string(), dir_);
