@@ -88,7 +88,7 @@ Command addBenchRenderCommand(CLI::App& app) {
     struct Options {
         std::string outDir = ".";
         bool quick = false;
-        int runs = 7;
+        int runs = 7, samples = 4;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -97,6 +97,8 @@ Command addBenchRenderCommand(CLI::App& app) {
     command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
     command->add_flag("--quick", options->quick, "Small frames and few runs (for CI)");
     command->add_option("--runs", options->runs, "Timed runs per measurement (median)")->check(CLI::Range(1, 101));
+    command->add_option("--msaa", options->samples, "Samples per pixel of the frames timed (1 = none)")
+        ->check(CLI::Range(1, 16));
     return [options] {
         const std::filesystem::path folder = options->outDir;
         if (!std::filesystem::is_directory(folder)) {
@@ -105,6 +107,7 @@ Command addBenchRenderCommand(CLI::App& app) {
         RenderBenchOptions bench;
         bench.quick = options->quick;
         bench.runs = options->quick ? std::min(options->runs, 3) : options->runs;
+        bench.samples = options->samples;
         RenderBenchResult result;
         {
             HeadlessContext context;

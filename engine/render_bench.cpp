@@ -116,19 +116,15 @@ void measureScale(Renderer& renderer, const RenderBenchOptions& options, const R
     const std::vector<size_t> triangles =
         options.quick ? std::vector<size_t>{10'000, 100'000} : std::vector<size_t>{10'000, 100'000, 1'000'000};
 
-    std::vector<Samples> bySize(sizes.size());
+    // One size after another: interleaved, every frame would reallocate the render targets.
     renderer.setMesh(makeMesh(scene.mesh));
-    interleaved(options.runs, [&](bool keep) {
-        for (size_t i = 0; i < sizes.size(); ++i) {
-            RenderSettings s = settings;
-            s.width = sizes[i].first;
-            s.height = sizes[i].second;
-            timeFrame(renderer, scene, s, keep ? &bySize[i] : nullptr);
-        }
-    });
-    for (size_t i = 0; i < sizes.size(); ++i) {
-        result.scaleRows.push_back({"resolution", sizes[i].first, sizes[i].second,
-                                    triangleCount(makeMesh(scene.mesh)), bySize[i].medians()});
+    for (const auto& [width, height] : sizes) {
+        RenderSettings s = settings;
+        s.width = width;
+        s.height = height;
+        Samples samples;
+        interleaved(options.runs, [&](bool keep) { timeFrame(renderer, scene, s, keep ? &samples : nullptr); });
+        result.scaleRows.push_back({"resolution", width, height, triangleCount(makeMesh(scene.mesh)), samples.medians()});
     }
     // A mesh upload per size is slow at 1M triangles: sizes one after another, not interleaved.
     for (size_t target : triangles) {
@@ -207,10 +203,10 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     RenderBenchResult result;
     result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     Renderer renderer;
-    RenderSettings settings;   // the defaults a render gets (MSAA included), at the bench's size
+    RenderSettings settings;   // the defaults a render gets, at the bench's size
     settings.width = result.width = options.quick ? 480 : options.width;
     settings.height = result.height = options.quick ? 270 : options.height;
-    result.samples = settings.samples;
+    settings.samples = result.samples = options.samples;
     measureLightCounts(renderer, options, settings, result);
     measureScale(renderer, options, settings, result);
     measureGltfLoad(options, result);

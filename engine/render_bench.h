@@ -15,6 +15,7 @@ struct RenderBenchOptions {
     bool quick = false;   // smaller frames, fewer lights and triangles (for CI)
     int runs = 7;         // timed runs per measurement after 2 warm-ups
     int width = 1920, height = 1080;
+    int samples = 4;      // MSAA, as `patina render` draws
 };
 
 // Medians over the runs, in milliseconds.

@@ -20,7 +20,7 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
         const std::string index = std::to_string(i);
         std::string call;
         if (light.type == shader::LIGHT_POINT) {
-            call = "SHADE_POINT(" + index + (light.radius > 0.0f ? ", true)" : ", false)");
+            call = "SHADE_POINT(" + index + (light.inverseRadius > 0.0f ? ", true)" : ", false)");
         } else if (light.type == shader::LIGHT_DIRECTIONAL) {
             call = "SHADE_DIRECTIONAL(" + index + ")";
         } else if (!key.noDiffuse) {

@@ -117,15 +117,16 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 
 // Each light type on its own, so a shader specialised to a scene (shade.frag's
 // PATINA_SPECIALISED) compiles only the types it has; shadeLight picks one at run time.
-// `windowed` is light.radius > 0, passed as a constant where the scene fixes it.
+// `windowed` false skips the window's arithmetic: a constant, for a specialised shader whose
+// light has radius 0 (true is right for every light: 1/radius = 0 gives window 1).
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
     float distanceSquared = dot(toLight, toLight);
     // Clamped so the light on the shaded point still gives finite numbers; selected away below.
     float inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     float t = distanceSquared * inverseDistance;
-    // A radius of 0 turns the window off: a constant the compiler folds in a specialised shader.
-    float attenuation = pointLightAttenuation(t, windowed ? light.radius : 0.0f, light.attenuation);
+    // 0 turns the window off: with `windowed` a constant, the compiler folds it away.
+    float attenuation = pointLightAttenuation(t, windowed ? light.inverseRadius : 0.0f, light.attenuation);
     vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
     // A light on the shaded point has no direction: no light.
     return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? value : vec3(0.0f);
@@ -148,7 +149,7 @@ PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 
         return shadeHemisphereLight(light, material, N, V);
     }
     if (light.type == LIGHT_POINT) {
-        return shadePointLight(light, light.radius > 0.0f, material, P, N, V);
+        return shadePointLight(light, true, material, P, N, V);
     }
     return shadeDirectionalLight(light, material, N, V);
 }

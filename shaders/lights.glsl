@@ -23,7 +23,7 @@ struct PackedLight {
     vec3 radiance;           // colour * intensity
     int type;                // LIGHT_*
     vec3 position;           // point
-    float radius;            // point: <= 0 means no window
+    float inverseRadius;     // point: 1 / radius, 0 for no window (radius 0)
     vec3 directionToLight;   // directional: -normalize(direction)
     float unused0;
     vec3 attenuation;        // point: a_c, a_l, a_q
@@ -36,14 +36,14 @@ struct PackedLight {
 
 // Windowed distance attenuation (spec section 1, after Karis 2013 eq. 9, with the general
 // a_c + a_l t + a_q t^2 denominator): clamp(1 - (t/radius)^4, 0, 1)^2 / (a_c + a_l t + a_q t^2).
-PATINA_INLINE float pointLightAttenuation(float t, float radius, vec3 coefficients) {
-    float window = 1.0f;
-    if (radius > 0.0f) {
-        float ratio = t / radius;
-        float ratio2 = ratio * ratio;
-        float w = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
-        window = w * w;
-    }
+// Takes 1/radius, packed on the CPU: no division, and no branch for "no window", which
+// inverseRadius = 0 gives exactly (t * 0 = 0, window 1), so a loop over lights of both kinds
+// runs one straight path.
+PATINA_INLINE float pointLightAttenuation(float t, float inverseRadius, vec3 coefficients) {
+    float ratio = t * inverseRadius;
+    float ratio2 = ratio * ratio;
+    float w = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
+    float window = w * w;
     float denominator = coefficients.x + coefficients.y * t + coefficients.z * t * t;
     return window / max(denominator, MIN_ATTENUATION_DENOMINATOR);
 }

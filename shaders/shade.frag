@@ -52,7 +52,7 @@ void main() {
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.
     int end = uLightCount.y;
     for (int i = 0; i < end; ++i) {
-        radiance += shadePointLight(uLights[i], uLights[i].radius > 0.0f, material, vPosition, N, V);
+        radiance += shadePointLight(uLights[i], true, material, vPosition, N, V);
     }
     int start = end;
     end += uLightCount.z;

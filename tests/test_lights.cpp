@@ -103,8 +103,8 @@ TEST(PointLight, InsideTheRadiusMatchesTheWindowedFormula) {
     }
     // The attenuation itself, by hand: t = 2, radius 4: window = (1 - 1/16)^2 = 0.87890625,
     // denominator = 0.5 + 0.5 + 4 = 5.
-    EXPECT_FLOAT_EQ(shader::pointLightAttenuation(2.0f, 4.0f, light.attenuation), 0.87890625f / 5.0f);
-    // Radius 0: no window at all.
+    EXPECT_FLOAT_EQ(shader::pointLightAttenuation(2.0f, 1.0f / 4.0f, light.attenuation), 0.87890625f / 5.0f);
+    // Radius 0 (packed as inverse radius 0): no window at all.
     EXPECT_FLOAT_EQ(shader::pointLightAttenuation(2.0f, 0.0f, light.attenuation), 1.0f / 5.0f);
 }
 
