@@ -8,47 +8,15 @@
 
 #include "input_error.h"
 #include "json_reader.h"
+#include "png_chunks.h"
 #include "scene_file.h"
 
 namespace patina {
 
 namespace {
 
-constexpr std::array<uint8_t, 8> kSignature{137, 80, 78, 71, 13, 10, 26, 10};
 constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;   // PNG spec 5.3: lengths fit in 31 bits
 constexpr size_t kMaxKeywordLength = 79;
-
-// CRC-32 as PNG spec Annex D defines it (reflected, polynomial 0xEDB88320).
-constexpr std::array<uint32_t, 256> makeCrcTable() {
-    std::array<uint32_t, 256> table{};
-    for (uint32_t n = 0; n < 256; ++n) {
-        uint32_t c = n;
-        for (int k = 0; k < 8; ++k) {
-            c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-        }
-        table[n] = c;
-    }
-    return table;
-}
-
-uint32_t crc32(const uint8_t* data, size_t size) {
-    static constexpr std::array<uint32_t, 256> table = makeCrcTable();
-    uint32_t c = 0xFFFFFFFFu;
-    for (size_t i = 0; i < size; ++i) {
-        c = table[(c ^ data[i]) & 0xFFu] ^ (c >> 8);
-    }
-    return c ^ 0xFFFFFFFFu;
-}
-
-uint32_t readUint32(const uint8_t* p) {
-    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
-}
-
-void appendUint32(std::vector<uint8_t>& out, uint32_t value) {
-    for (int shift = 24; shift >= 0; shift -= 8) {
-        out.push_back(uint8_t(value >> shift));
-    }
-}
 
 bool isUtf8(std::string_view text) {
     static constexpr uint32_t kSmallest[] = {0, 0x80, 0x800, 0x10000};   // no overlong forms
@@ -130,10 +98,7 @@ std::vector<uint8_t> internationalTextChunk(const std::string& keyword, const st
         throw std::invalid_argument("PNG text \"" + keyword + "\" is too long for one chunk");
     }
     std::vector<uint8_t> chunk;
-    appendUint32(chunk, uint32_t(data.size()));
-    chunk.insert(chunk.end(), {'i', 'T', 'X', 't'});
-    chunk.insert(chunk.end(), data.begin(), data.end());
-    appendUint32(chunk, crc32(chunk.data() + 4, chunk.size() - 4));
+    appendPngChunk(chunk, "iTXt", data.data(), data.size());
     return chunk;
 }
 
@@ -209,25 +174,25 @@ std::vector<uint8_t> encodePngWithText(const LdrImage& image,
     }
     std::vector<uint8_t> png = encodePng(image);
     // The signature, then IHDR: length, type, data, CRC.
-    const size_t afterHeader = kSignature.size() + 12 + readUint32(png.data() + kSignature.size());
+    const size_t afterHeader = kPngSignature.size() + 12 + readBigEndian32(png.data() + kPngSignature.size());
     png.insert(png.begin() + std::ptrdiff_t(afterHeader), chunks.begin(), chunks.end());
     return png;
 }
 
 std::map<std::string, std::string> readPngText(const std::vector<uint8_t>& bytes) {
-    if (bytes.size() < kSignature.size() ||
-        !std::equal(kSignature.begin(), kSignature.end(), bytes.begin())) {
+    if (bytes.size() < kPngSignature.size() ||
+        !std::equal(kPngSignature.begin(), kPngSignature.end(), bytes.begin())) {
         throw InputError("not a PNG file (it does not start with the PNG signature)");
     }
     std::map<std::string, std::string> entries;
-    size_t at = kSignature.size();
+    size_t at = kPngSignature.size();
     for (bool first = true;; first = false) {
         const size_t left = bytes.size() - at;
         if (left < 12) {
             throw InputError("truncated PNG: the file ends at byte " + std::to_string(bytes.size()) +
                              " before the IEND chunk");
         }
-        const uint32_t length = readUint32(&bytes[at]);
+        const uint32_t length = readBigEndian32(&bytes[at]);
         const std::string type(bytes.begin() + std::ptrdiff_t(at + 4),
                                bytes.begin() + std::ptrdiff_t(at + 8));
         if (!isChunkType(type)) {
@@ -239,8 +204,8 @@ std::map<std::string, std::string> readPngText(const std::vector<uint8_t>& bytes
                              std::to_string(left - 12) + " remain");
         }
         const uint8_t* data = &bytes[at + 8];
-        const uint32_t stored = readUint32(data + length);
-        const uint32_t computed = crc32(&bytes[at + 4], size_t(length) + 4);
+        const uint32_t stored = readBigEndian32(data + length);
+        const uint32_t computed = pngCrc(&bytes[at + 4], size_t(length) + 4);
         if (stored != computed) {
             char hex[48];
             std::snprintf(hex, sizeof hex, " (stored %08x, computed %08x)", stored, computed);
