@@ -215,9 +215,12 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
 
 std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     std::vector<TargetCheck> targets;
+    // Wall time to glFinish: llvmpipe's GL_TIME_ELAPSED agrees with it for whole frames, but
+    // not for every split of the work (it reported 9 ms for a frame that took 49 ms without its
+    // display pass), so the targets do not lean on it.
     auto gpu = [&](PassMode path, int lights, LightType added = LightType::Point) {
         const FrameTiming* t = findLights(result, path, added, lights);
-        return t ? t->gpu : std::nan("");
+        return t ? t->frame : std::nan("");
     };
     auto add = [&](std::string name, double value, double bound) {
         targets.push_back({std::move(name), value, bound, value <= bound});
@@ -276,7 +279,7 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
     char title[128];
     std::snprintf(title, sizeof title, "Frame time against lights, %dx%d, %dx MSAA", result.width, result.height,
                   result.samples);
-    ChartPanel panel{title, "enabled lights", "GPU frame time (ms, median)", false, false, {}};
+    ChartPanel panel{title, "enabled lights", "frame time to glFinish (ms, median)", false, false, {}};
     size_t colour = 0;
     for (const auto& [path, added] : {std::pair{PassMode::Multi, LightType::Point}, {PassMode::Single, LightType::Point},
                                       {PassMode::Specialised, LightType::Point}, {PassMode::BrdfFloor, LightType::Point},
@@ -287,7 +290,7 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
         ChartSeries series{label, {}, chartColour(colour++), true, true, path == PassMode::BrdfFloor, {}};
         for (const LightCountRow& row : result.lightRows) {
             if (row.path == path && row.added == added) {
-                series.points.emplace_back(row.lights, row.time.gpu);
+                series.points.emplace_back(row.lights, row.time.frame);
             }
         }
         panel.series.push_back(series);
@@ -301,12 +304,12 @@ Chart renderBenchScaleChart(const RenderBenchResult& result) {
         const bool pixels = std::string(axis) == "resolution";
         ChartPanel panel{pixels ? "Frame time against resolution (3 lights, single)"
                                 : "Frame time against triangles (3 lights, single)",
-                         pixels ? "megapixels" : "triangles", "GPU frame time (ms, median)", !pixels, !pixels, {}};
+                         pixels ? "megapixels" : "triangles", "frame time to glFinish (ms, median)", !pixels, !pixels, {}};
         ChartSeries series{"single", {}, chartColour(1), true, true, false, {}};
         for (const ScaleRow& row : result.scaleRows) {
             if (row.axis == axis) {
                 series.points.emplace_back(pixels ? double(row.width) * row.height * 1e-6 : double(row.triangles),
-                                           row.time.gpu);
+                                           row.time.frame);
                 series.pointLabels.push_back(pixels ? std::to_string(row.width) + "x" + std::to_string(row.height)
                                                     : std::to_string(row.triangles));
             }

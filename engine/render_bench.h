@@ -61,12 +61,12 @@ struct TargetCheck {
     double value = 0.0, bound = 0.0;
     bool met = false;       // value <= bound
 };
-// Issue 6's targets as ratios of this run.
+// Issue 6's targets as ratios of this run's frame times.
 std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result);
 
 std::string renderBenchCsv(const RenderBenchResult& result);
 std::string targetsCsv(const std::vector<TargetCheck>& targets);
-// Frame time (GPU) against light count, a line per path and the floor dashed.
+// Frame time against light count, a line per path and the floor dashed.
 Chart renderBenchLightChart(const RenderBenchResult& result);
 // Frame time against pixels and against triangles.
 Chart renderBenchScaleChart(const RenderBenchResult& result);

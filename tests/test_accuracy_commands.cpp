@@ -88,8 +88,8 @@ TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
 
 TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     RenderBenchResult result;
-    auto add = [&](PassMode path, LightType added, int lights, double gpu) {
-        result.lightRows.push_back({path, added, lights, {gpu, 0.0, 0.0}});
+    auto add = [&](PassMode path, LightType added, int lights, double frame) {
+        result.lightRows.push_back({path, added, lights, {0.0, 0.0, frame}});
     };
     add(PassMode::Multi, LightType::Point, 8, 100.0);
     add(PassMode::Single, LightType::Point, 8, 30.0);
