@@ -224,6 +224,14 @@ TEST_F(PngText, RefusesFilesThatAreNotPngs) {
     EXPECT_NE(sceneError("empty.png", {}).find("not a PNG file"), std::string::npos);
     std::vector<std::string> warnings;
     EXPECT_THROW(sceneFromPng(dir_ / "missing.png", warnings), InputError);
+    // Only a regular file is read: not a folder, nor /dev/zero for ever.
+    fs::create_directory(dir_ / "folder.png");
+    try {
+        sceneFromPng(dir_ / "folder.png", warnings);
+        ADD_FAILURE() << "a folder was read as a PNG";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("folder.png: not a regular file"), std::string::npos);
+    }
 }
 
 TEST_F(PngText, RefusesABadEmbeddedScene) {
