@@ -41,7 +41,7 @@ Light lightFromJson(const Json& json, const std::string& pointer, const std::str
     const auto type = typeValue.is_string() ? lightTypeFromName(typeValue.get<std::string>())
                                             : std::nullopt;
     if (!type) {
-        reader.fail("type", "unknown light type " + typeValue.dump() +
+        reader.fail("type", "unknown light type " + shortJson(typeValue) +
                                 " (expected \"point\", \"directional\" or \"hemisphere\")");
     }
     light.type = *type;
@@ -92,8 +92,8 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     const std::string tonemap = reader.string("tonemap", "none");
     const auto parsed = tonemapFromName(tonemap);
     if (!parsed) {
-        reader.fail("tonemap", "unknown tone map \"" + tonemap +
-                                   "\" (expected \"none\", \"aces\" or \"reinhard\")");
+        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) +
+                                   " (expected \"none\", \"aces\" or \"reinhard\")");
     }
     display.tonemap = *parsed;
     display.background = reader.vec3("background", display.background, kNonNegative);
@@ -117,7 +117,7 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     const std::string model = reader.string("model", std::string(brdfModel(material.model).name));
     const auto modelId = brdfModelFromName(model);
     if (!modelId) {
-        reader.fail("model", "unknown BRDF model \"" + model + "\" (known: " + brdfModelNames() + ")");
+        reader.fail("model", "unknown BRDF model " + shortJson(model) + " (known: " + brdfModelNames() + ")");
     }
     material.model = *modelId;
     material.notes = reader.string("notes", material.notes);
@@ -142,8 +142,8 @@ Scene sceneFromJson(const Json& json, const std::string& source,
         // Absolute, so that the scene reads the same file wherever it is written back to.
         scene.meshFile = std::filesystem::absolute(baseDirectory / mesh).lexically_normal().string();
     } else {
-        reader.fail("mesh", "unknown mesh \"" + mesh +
-                                "\" (expected \"sphere\", \"torus\" or a .gltf or .glb file)");
+        reader.fail("mesh", "unknown mesh " + shortJson(mesh) +
+                                " (expected \"sphere\", \"torus\" or a .gltf or .glb file)");
     }
     if (const Json* material = reader.child("material")) {
         if (material->is_string()) {
