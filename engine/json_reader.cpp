@@ -17,6 +17,17 @@ std::string formatNumber(double value) {
     out << value;
     return out.str();
 }
+
+// At most `length` bytes and "...", cut between UTF-8 characters.
+std::string cut(std::string text, size_t length) {
+    if (text.size() > length) {
+        while (length > 0 && (uint8_t(text[length]) & 0xC0) == 0x80) {
+            --length;
+        }
+        text = text.substr(0, length) + "...";
+    }
+    return text;
+}
 }  // namespace
 
 void failAt(const std::string& source, const std::string& pointer, const std::string& what) {
@@ -24,16 +35,7 @@ void failAt(const std::string& source, const std::string& pointer, const std::st
 }
 
 std::string shortJson(const Json& value) {
-    constexpr size_t kLength = 60;
-    std::string text = value.dump();
-    if (text.size() > kLength) {
-        size_t cut = kLength;
-        while (cut > 0 && (uint8_t(text[cut]) & 0xC0) == 0x80) {
-            --cut;   // not inside a UTF-8 sequence
-        }
-        text = text.substr(0, cut) + "...";
-    }
-    return text;
+    return cut(value.dump(), 60);
 }
 
 Json parseJsonText(const std::string& text, const std::string& source) {
@@ -68,8 +70,13 @@ Json parseJsonText(const std::string& text, const std::string& source) {
         if (const size_t colon = what.find(": "); colon != std::string::npos) {
             what = what.substr(colon + 2);
         }
+        // The message quotes the token, which may be megabytes long.
         throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                         ": invalid JSON: " + what);
+                         ": invalid JSON: " + cut(what, 200));
+    } catch (const Json::out_of_range& error) {
+        // A number beyond a double's range ("1e400"), which nlohmann reports without a place.
+        const std::string what = error.what();
+        throw InputError(source + ": invalid JSON: " + cut(what.substr(what.find("] ") + 2), 200));
     }
 }
 

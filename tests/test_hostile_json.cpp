@@ -119,6 +119,26 @@ TEST_F(HostileJson, LongValuesAreCutInMessages) {
     EXPECT_ERROR(cut, "\"" + std::string(58, 'a') + "...");
 }
 
+// Found by tests/fuzz: nlohmann throws out_of_range, not parse_error, for a number a double
+// cannot hold, and it escaped the loaders (the CLI exited 1 with nlohmann's own message).
+TEST_F(HostileJson, NumbersBeyondADoubleAreInputErrors) {
+    std::vector<std::string> warnings;
+    try {
+        parseJsonText(R"({"format": "patina-material", "version": 1e391.0})", "m.json");
+        ADD_FAILURE() << "1e391 parsed";
+    } catch (const InputError& error) {
+        EXPECT_STREQ(error.what(), "m.json: invalid JSON: number overflow parsing '1e391'");
+    }
+    EXPECT_ERROR(loadError(kSceneHead + R"("camera": {"fovYDegrees": -)" + std::string(100'000, '9') + "}}", true),
+                 ": invalid JSON: number overflow parsing '-9999");
+    EXPECT_LT(loadError(kSceneHead + R"("camera": {"fovYDegrees": -)" + std::string(100'000, '9') + "}}", true)
+                  .size(), 400u);
+    // A syntax error quotes the token too: cut as well.
+    const std::string unterminated = loadError(kSceneHead + R"("mesh": ")" + std::string(100'000, 'x'), true);
+    EXPECT_ERROR(unterminated, ":1:");
+    EXPECT_LT(unterminated.size(), 400u);
+}
+
 // A material path in a scene may name anything: only a regular file is read, so /dev/zero
 // cannot be read forever, nor a FIFO wait forever.
 TEST_F(HostileJson, OnlyRegularFilesAreRead) {
