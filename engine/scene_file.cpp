@@ -28,6 +28,22 @@ Json toJson(glm::vec3 v) {
     return Json::array({toJson(v.x), toJson(v.y), toJson(v.z)});
 }
 
+// Whether `value` has more than `levels` levels of arrays and objects; looks no deeper.
+bool nestsDeeperThan(const Json& value, int levels) {
+    if (!value.is_structured()) {
+        return false;
+    }
+    if (levels == 0) {
+        return true;
+    }
+    for (const Json& child : value) {
+        if (nestsDeeperThan(child, levels - 1)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 template <typename T>
 void appendAll(std::vector<T>& to, std::vector<T> from) {
     to.insert(to.end(), from.begin(), from.end());
@@ -122,6 +138,14 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.model = *modelId;
     material.notes = reader.string("notes", material.notes);
     material.extras = reader.unknownEntries();
+    // Saved inline in a scene (a screenshot's), the material is one level down: it must still
+    // fit in kMaxJsonNesting there, counting itself.
+    for (auto it = material.extras.begin(); it != material.extras.end(); ++it) {
+        if (nestsDeeperThan(it.value(), kMaxJsonNesting - 2)) {
+            reader.fail(it.key().c_str(), "nested deeper than " + std::to_string(kMaxJsonNesting - 2) +
+                                              " levels (a material must fit inside a scene)");
+        }
+    }
     appendAll(warnings, reader.unknownKeys("kept, not used"));
     return material;
 }

@@ -55,8 +55,22 @@ TEST_F(HostileJson, DeepNestingIsRefusedNotAStackOverflow) {
     EXPECT_ERROR(loadError(kSceneHead + R"("material": {"x": )" + deep + "}}", true),
                  "JSON nested deeper than 64 levels");
     // Within the limit, unknown nested keys still load and are kept.
-    EXPECT_EQ(loadError(kMaterialHead + R"("extra": )" + nested(63) + "}", false), "(loaded)");
-    EXPECT_ERROR(loadError(kMaterialHead + R"("extra": )" + nested(64) + "}", false), "deeper than 64");
+    EXPECT_EQ(loadError(kMaterialHead + R"("extra": )" + nested(62) + "}", false), "(loaded)");
+    EXPECT_EQ(loadError(kSceneHead + R"("material": {"extra": )" + nested(62) + "}}", true), "(loaded)");
+    EXPECT_ERROR(loadError(kSceneHead + R"("material": {"extra": )" + nested(63) + "}}", true), "deeper than 64");
+}
+
+// A material file may nest one level less than the parser allows: saved inline in a scene, as
+// a screenshot does, it must load again (tests/fuzz/fuzz_material.cpp checks this too).
+TEST_F(HostileJson, EveryMaterialThatLoadsFitsInsideAScene) {
+    EXPECT_ERROR(loadError(kMaterialHead + R"("extra": )" + nested(63) + "}", false),
+                 path("f.json").string() + ": /extra: nested deeper than 62 levels (a material must fit inside a scene)");
+    std::vector<std::string> warnings;
+    Scene scene = defaultScene();
+    write("m.json", kMaterialHead + R"("extra": [{"a": )" + nested(60) + "}]}");
+    scene.material = loadMaterialFile(path("m.json"), warnings);
+    EXPECT_EQ(sceneFromJson(parseJsonText(prettyJson(sceneToJson(scene)), "s.json"), "s.json", dir_, warnings),
+              scene);
 }
 
 // Written a megabyte at a time: the test itself never holds the 100 MB.
