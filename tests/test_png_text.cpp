@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "png_crc.h"
 #include "scratch_test.h"
 
 #include "image.h"
@@ -25,16 +26,8 @@ LdrImage testImage() {
     return image;
 }
 
-// Bit by bit, unlike the engine's table: an independent check of the PNG CRC-32.
 uint32_t referenceCrc(const std::string& bytes) {
-    uint32_t crc = 0xFFFFFFFFu;
-    for (const char c : bytes) {
-        crc ^= uint8_t(c);
-        for (int bit = 0; bit < 8; ++bit) {
-            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-        }
-    }
-    return ~crc;
+    return test::pngCrc(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
 }
 
 std::string bigEndian(uint32_t value) {
