@@ -2,14 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstring>
 
 #include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "input_error.h"
+#include "regular_file.h"
 
 namespace patina::gltf {
 
@@ -17,48 +14,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string mebibytes(uint64_t bytes) {
-    return std::to_string((bytes + (uint64_t(1) << 20) - 1) >> 20) + " MiB";
-}
-
-// Reads through one descriptor, so that the type and size checked are those of the file read.
 // `name` starts every message; `budget` is what the model may still read.
 std::vector<uint8_t> readRegularFile(const fs::path& path, int flags, const std::string& name,
                                      uint64_t budget) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | flags);
-    if (fd < 0) {
-        throw InputError(name + ": cannot open: " + std::strerror(errno));
-    }
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    struct stat info {};
-    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
-        throw InputError(name + ": not a regular file");
-    }
-    const uint64_t size = uint64_t(info.st_size);
-    if (size > kMaxFileBytes) {
-        throw InputError(name + ": the file is " + mebibytes(size) + "; files are limited to " +
+    const RegularFile file(path, flags, name);
+    if (file.size() > kMaxFileBytes) {
+        throw InputError(name + ": the file is " + mebibytes(file.size()) + "; files are limited to " +
                          mebibytes(kMaxFileBytes));
     }
-    if (size > budget) {
+    if (file.size() > budget) {
         throw InputError(name + ": with the files read before it, the model passes the limit of " +
                          mebibytes(kMaxTotalBytes) + " for all its files");
     }
-    std::vector<uint8_t> bytes(size);
-    size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR) {
-            continue;
-        }
-        if (n <= 0) {   // a file that shrank while being read is as bad as an unreadable one
-            throw InputError(name + ": cannot read: " + (n < 0 ? std::strerror(errno) : "file shrank"));
-        }
-        done += size_t(n);
-    }
-    return bytes;
+    return file.readAll();
 }
 
 // RFC 3986: a scheme is a letter, then letters, digits, '+', '-' or '.', then ':'.

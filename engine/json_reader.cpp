@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "image.h"
+#include "regular_file.h"
 
 namespace patina {
 
@@ -17,15 +17,42 @@ std::string formatNumber(double value) {
     out << value;
     return out.str();
 }
+
+// At most `length` bytes and "...", cut between UTF-8 characters.
+std::string cut(std::string text, size_t length) {
+    if (text.size() > length) {
+        while (length > 0 && (uint8_t(text[length]) & 0xC0) == 0x80) {
+            --length;
+        }
+        text = text.substr(0, length) + "...";
+    }
+    return text;
+}
 }  // namespace
 
 void failAt(const std::string& source, const std::string& pointer, const std::string& what) {
     throw InputError(source + ": " + (pointer.empty() ? "/" : pointer) + ": " + what);
 }
 
+std::string shortJson(const Json& value) {
+    return cut(value.dump(), 60);
+}
+
 Json parseJsonText(const std::string& text, const std::string& source) {
+    if (text.size() > kMaxJsonFileBytes) {
+        throw InputError(source + ": " + mebibytes(text.size()) + " of JSON; Patina reads at most " +
+                         mebibytes(kMaxJsonFileBytes));
+    }
+    const Json::parser_callback_t limitNesting = [&](int depth, Json::parse_event_t event, Json&) {
+        if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) &&
+            depth >= kMaxJsonNesting) {
+            throw InputError(source + ": JSON nested deeper than " + std::to_string(kMaxJsonNesting) +
+                             " levels");
+        }
+        return true;
+    };
     try {
-        return Json::parse(text);
+        return Json::parse(text, limitNesting);
     } catch (const Json::parse_error& error) {
         // Turn nlohmann's byte offset into the line and column an editor shows.
         const size_t end = std::min(text.size(), error.byte > 0 ? error.byte - 1 : 0);
@@ -43,18 +70,23 @@ Json parseJsonText(const std::string& text, const std::string& source) {
         if (const size_t colon = what.find(": "); colon != std::string::npos) {
             what = what.substr(colon + 2);
         }
+        // The message quotes the token, which may be megabytes long.
         throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                         ": invalid JSON: " + what);
+                         ": invalid JSON: " + cut(what, 200));
+    } catch (const Json::out_of_range& error) {
+        // A number beyond a double's range ("1e400"), which nlohmann reports without a place.
+        const std::string what = error.what();
+        throw InputError(source + ": invalid JSON: " + cut(what.substr(what.find("] ") + 2), 200));
     }
 }
 
 Json readJsonFile(const std::filesystem::path& path) {
-    std::vector<uint8_t> bytes;
-    try {
-        bytes = readFileBytes(path);
-    } catch (const std::runtime_error& error) {
-        throw InputError(error.what());
+    const RegularFile file(path, 0, path.string());
+    if (file.size() > kMaxJsonFileBytes) {
+        throw InputError(path.string() + ": the file is " + mebibytes(file.size()) +
+                         "; Patina's JSON files are limited to " + mebibytes(kMaxJsonFileBytes));
     }
+    const std::vector<uint8_t> bytes = file.readAll();
     return parseJsonText(std::string(bytes.begin(), bytes.end()), path.string());
 }
 
@@ -172,7 +204,7 @@ glm::vec3 JsonObjectReader::vec3(const char* key, glm::vec3 fallback, Range rang
 void JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int supportedVersion) {
     const Json& format = required("format");
     if (!format.is_string() || format.get<std::string>() != expectedFormat) {
-        fail("format", std::string("expected \"") + expectedFormat + "\", got " + format.dump());
+        fail("format", std::string("expected \"") + expectedFormat + "\", got " + shortJson(format));
     }
     required("version");
     const int version = integer("version", 0, {1, 1e9});

@@ -11,10 +11,19 @@
 
 namespace patina {
 
-// Parses JSON text; a syntax error becomes an InputError "SOURCE:LINE:COLUMN: ...".
+// Patina's JSON files are small. Larger text is refused before it costs memory, and deeper
+// nesting before it costs stack: nlohmann copies, compares and dumps values recursively.
+constexpr size_t kMaxJsonFileBytes = size_t(4) << 20;
+constexpr int kMaxJsonNesting = 64;
+
+// Parses JSON text; a syntax error becomes an InputError "SOURCE:LINE:COLUMN: ...", text over
+// the limits an InputError "SOURCE: ...".
 Json parseJsonText(const std::string& text, const std::string& source);
-// Reads and parses a file; a missing or unreadable file is an InputError too.
+// Reads and parses a regular file; a missing, unreadable or too large one is an InputError too.
 Json readJsonFile(const std::filesystem::path& path);
+
+// A value as JSON for a message, cut to about 60 characters.
+std::string shortJson(const Json& value);
 
 // Inclusive bounds for a number; the defaults accept any finite float.
 struct Range {

@@ -9,6 +9,7 @@
 #include "input_error.h"
 #include "json_reader.h"
 #include "png_chunks.h"
+#include "regular_file.h"
 #include "scene_file.h"
 
 namespace patina {
@@ -226,35 +227,39 @@ std::map<std::string, std::string> readPngText(const std::vector<uint8_t>& bytes
     }
 }
 
-std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
-                                  std::vector<std::string>& warnings) {
-    std::vector<uint8_t> bytes;
-    try {
-        bytes = readFileBytes(path);
-    } catch (const std::runtime_error& error) {
-        throw InputError(error.what());   // the message names the file already
-    }
+std::optional<Scene> sceneFromPngBytes(const std::vector<uint8_t>& bytes, const std::string& source,
+                                       std::vector<std::string>& warnings) {
     std::map<std::string, std::string> entries;
     try {
         entries = readPngText(bytes);
     } catch (const InputError& error) {
-        throw InputError(path.string() + ": " + error.what());
+        throw InputError(source + ": " + error.what());
     }
     const auto found = entries.find(kSceneTextKeyword);
     if (found == entries.end()) {
         return std::nullopt;
     }
-    const std::string source = path.string() + " (" + kSceneTextKeyword + ")";
-    const Json json = parseJsonText(found->second, source);
+    const std::string where = source + " (" + kSceneTextKeyword + ")";
+    const Json json = parseJsonText(found->second, where);
     // A path would make the PNG depend on, and read, files beside it.
     if (json.is_object() && json.contains("material") && json["material"].is_string()) {
-        failAt(source, "/material", "an embedded scene must hold its material inline");
+        failAt(where, "/material", "an embedded scene must hold its material inline");
     }
     if (json.is_object() && json.contains("mesh") && json["mesh"].is_string() &&
         !meshKindFromName(json["mesh"].get<std::string>())) {
-        failAt(source, "/mesh", "an embedded scene must use a built-in mesh (\"sphere\" or \"torus\")");
+        failAt(where, "/mesh", "an embedded scene must use a built-in mesh (\"sphere\" or \"torus\")");
     }
-    return sceneFromJson(json, source, {}, warnings);
+    return sceneFromJson(json, where, {}, warnings);
+}
+
+std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
+                                  std::vector<std::string>& warnings) {
+    const RegularFile file(path, 0, path.string());
+    if (file.size() > kMaxPngBytes) {
+        throw InputError(path.string() + ": the file is " + mebibytes(file.size()) +
+                         "; PNGs with a scene are limited to " + mebibytes(kMaxPngBytes));
+    }
+    return sceneFromPngBytes(file.readAll(), path.string(), warnings);
 }
 
 }  // namespace patina

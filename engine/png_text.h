@@ -26,8 +26,15 @@ std::vector<uint8_t> encodePngWithText(const LdrImage& image,
 // Throws InputError for anything that is not a well-formed PNG chunk stream up to IEND.
 std::map<std::string, std::string> readPngText(const std::vector<uint8_t>& bytes);
 
-// The scene stored under kSceneTextKeyword in a PNG file; nullopt when there is none.
-// Throws InputError naming the file when it is not a PNG or the scene is not valid.
+// The scene stored under kSceneTextKeyword in a PNG; nullopt when there is none. Throws
+// InputError naming `source` when it is not a PNG or the scene is not valid.
+std::optional<Scene> sceneFromPngBytes(const std::vector<uint8_t>& bytes, const std::string& source,
+                                       std::vector<std::string>& warnings);
+
+// Screenshots are far smaller; a larger file is refused before it is read.
+constexpr uint64_t kMaxPngBytes = uint64_t(512) << 20;
+
+// sceneFromPngBytes of a regular file of at most kMaxPngBytes, named by its path.
 std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
                                   std::vector<std::string>& warnings);
 

@@ -38,6 +38,22 @@ Json withExtras(Json json, const Json& extras) {
     return json;
 }
 
+// Whether `value` has more than `levels` levels of arrays and objects; looks no deeper.
+bool nestsDeeperThan(const Json& value, int levels) {
+    if (!value.is_structured()) {
+        return false;
+    }
+    if (levels == 0) {
+        return true;
+    }
+    for (const Json& child : value) {
+        if (nestsDeeperThan(child, levels - 1)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 Light lightFromJson(const Json& json, const std::string& pointer, const std::string& source,
                     std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, pointer, source);
@@ -46,7 +62,7 @@ Light lightFromJson(const Json& json, const std::string& pointer, const std::str
     const auto type = typeValue.is_string() ? lightTypeFromName(typeValue.get<std::string>())
                                             : std::nullopt;
     if (!type) {
-        reader.fail("type", "unknown light type " + typeValue.dump() +
+        reader.fail("type", "unknown light type " + shortJson(typeValue) +
                                 " (expected \"point\", \"directional\" or \"hemisphere\")");
     }
     light.type = *type;
@@ -97,8 +113,8 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     const std::string tonemap = reader.string("tonemap", "none");
     const auto parsed = tonemapFromName(tonemap);
     if (!parsed) {
-        reader.fail("tonemap", "unknown tone map \"" + tonemap +
-                                   "\" (expected \"none\", \"aces\" or \"reinhard\")");
+        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) +
+                                   " (expected \"none\", \"aces\" or \"reinhard\")");
     }
     display.tonemap = *parsed;
     display.background = reader.vec3("background", display.background, kNonNegative);
@@ -143,11 +159,19 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     const std::string model = reader.string("model", std::string(brdfModel(material.model).name));
     const auto modelId = brdfModelFromName(model);
     if (!modelId) {
-        reader.fail("model", "unknown BRDF model \"" + model + "\" (known: " + brdfModelNames() + ")");
+        reader.fail("model", "unknown BRDF model " + shortJson(model) + " (known: " + brdfModelNames() + ")");
     }
     material.model = *modelId;
     material.notes = reader.string("notes", material.notes);
     material.extras = reader.keepUnknown(warnings);
+    // Saved inline in a scene (a screenshot's), the material is one level down: it must still
+    // fit in kMaxJsonNesting there, counting itself.
+    for (auto it = material.extras.begin(); it != material.extras.end(); ++it) {
+        if (nestsDeeperThan(it.value(), kMaxJsonNesting - 2)) {
+            reader.fail(it.key().c_str(), "nested deeper than " + std::to_string(kMaxJsonNesting - 2) +
+                                              " levels (a material must fit inside a scene)");
+        }
+    }
     return material;
 }
 
@@ -167,8 +191,8 @@ Scene sceneFromJson(const Json& json, const std::string& source,
         // Absolute, so that the scene reads the same file wherever it is written back to.
         scene.meshFile = std::filesystem::absolute(baseDirectory / mesh).lexically_normal().string();
     } else {
-        reader.fail("mesh", "unknown mesh \"" + mesh +
-                                "\" (expected \"sphere\", \"torus\" or a .gltf or .glb file)");
+        reader.fail("mesh", "unknown mesh " + shortJson(mesh) +
+                                " (expected \"sphere\", \"torus\" or a .gltf or .glb file)");
     }
     if (const Json* material = reader.child("material")) {
         if (material->is_string()) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs Patina's build and test dependencies from Debian 12 packages. Safe to re-run:
-# it asks apt only for what is missing.
+# it asks apt only for what is missing. With --sanitizers, also clang with its sanitizer and
+# libFuzzer runtimes and llvm-symbolizer (scripts/sanitize.sh, scripts/fuzz.sh).
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -9,6 +10,10 @@ packages=(
   libcli11-dev libgtest-dev libbenchmark-dev
   xvfb xdotool
 )
+# Clang 16, the first to take the shaders' C++ (parenthesized aggregate initialization, P0960);
+# libclang-rt-16-dev holds libFuzzer and the ASan/UBSan runtimes (clang-16 only recommends it);
+# llvm-16 has the llvm-symbolizer that turns sanitizer reports into file:line.
+[ "${1:-}" = --sanitizers ] && packages+=(clang-16 libclang-rt-16-dev llvm-16)
 # Node.js runs the glTF validator of the tests; one from elsewhere (nodesource) will do.
 command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()

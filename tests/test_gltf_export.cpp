@@ -34,7 +34,9 @@ protected:
                                     "' > '" + report.string() + "' 2> '" + errors.string() + "'";
         const int status = std::system(command.c_str());
         EXPECT_EQ(status, 0) << "the glTF validator did not run: " << read("validator-errors.txt");
-        return status == 0 ? readJsonFile(report) : Json::object();
+        // Parsed directly: the report lists every info message and outgrows the limit on
+        // Patina's own JSON files (readJsonFile).
+        return status == 0 ? Json::parse(read("report.json")) : Json::object();
     }
     void expectValid(const fs::path& file) const {
         const Json report = validate(file);

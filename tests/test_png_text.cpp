@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "png_crc.h"
 #include "scratch_test.h"
 
 #include "image.h"
@@ -25,16 +26,8 @@ LdrImage testImage() {
     return image;
 }
 
-// Bit by bit, unlike zlib's tables: an independent check of the PNG CRC-32.
 uint32_t referenceCrc(const std::string& bytes) {
-    uint32_t crc = 0xFFFFFFFFu;
-    for (const char c : bytes) {
-        crc ^= uint8_t(c);
-        for (int bit = 0; bit < 8; ++bit) {
-            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-        }
-    }
-    return ~crc;
+    return test::pngCrc(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
 }
 
 std::string bigEndian(uint32_t value) {
@@ -242,6 +235,14 @@ TEST_F(PngText, RefusesFilesThatAreNotPngs) {
     EXPECT_NE(sceneError("empty.png", {}).find("not a PNG file"), std::string::npos);
     std::vector<std::string> warnings;
     EXPECT_THROW(sceneFromPng(dir_ / "missing.png", warnings), InputError);
+    // Only a regular file is read: not a folder, nor /dev/zero for ever.
+    fs::create_directory(dir_ / "folder.png");
+    try {
+        sceneFromPng(dir_ / "folder.png", warnings);
+        ADD_FAILURE() << "a folder was read as a PNG";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("folder.png: not a regular file"), std::string::npos);
+    }
 }
 
 TEST_F(PngText, RefusesABadEmbeddedScene) {
