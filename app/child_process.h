@@ -8,11 +8,14 @@ namespace patina::cli {
 
 struct ChildRun {
     double seconds = 0.0;    // wall clock, fork to exit
-    double peakRssMb = 0.0;  // the child's maximum resident set (wait4's ru_maxrss)
+    // The child's maximum resident set (wait4's ru_maxrss). Linux counts in it what this
+    // process had resident when it forked (the copy's high-water mark survives exec), so call
+    // this from a process that is still small.
+    double peakRssMb = 0.0;
 };
 
-// Runs this executable (/proc/self/exe) with `arguments`, its stdout and stderr discarded.
-// Throws std::runtime_error if it cannot start or exits with a status other than 0.
+// Runs this executable (/proc/self/exe) with `arguments`, its stdout discarded. Throws
+// std::runtime_error if it cannot start or does not exit with 0, with the start of its stderr.
 ChildRun runSelf(const std::vector<std::string>& arguments);
 
 }  // namespace patina::cli

@@ -5,8 +5,6 @@
 #include <iostream>
 #include <memory>
 
-#include <unistd.h>
-
 #include "child_process.h"
 #include "cli.h"
 #include "gl/headless_context.h"
@@ -14,6 +12,7 @@
 #include "input_error.h"
 #include "inputs.h"
 #include "render_bench.h"
+#include "temporary_folder.h"
 #include "timing.h"
 
 #ifndef PATINA_PRESETS_DIR
@@ -104,6 +103,16 @@ Command addBenchRenderCommand(CLI::App& app) {
         if (!std::filesystem::is_directory(folder)) {
             throw InputError(folder.string() + ": not a folder");
         }
+        // Child processes first, while this one is small: a child's peak RSS includes what
+        // its parent had resident when it forked (child_process.h). Missing presets fail here,
+        // before the long part.
+        BatchResult batch;
+        double rssMb = 0.0;
+        {
+            const TemporaryFolder scratch("patina-bench-render");
+            batch = measureBatch(options->quick, scratch.path());
+            rssMb = renderPeakRssMb(scratch.path());
+        }
         RenderBenchOptions bench;
         bench.quick = options->quick;
         bench.runs = options->quick ? std::min(options->runs, 3) : options->runs;
@@ -113,19 +122,6 @@ Command addBenchRenderCommand(CLI::App& app) {
             HeadlessContext context;
             result = runRenderBench(bench);
         }
-        const std::filesystem::path scratch =
-            std::filesystem::temp_directory_path() / ("patina-bench-render-" + std::to_string(getpid()));
-        std::filesystem::create_directories(scratch);
-        BatchResult batch;
-        double rssMb = 0.0;
-        try {
-            batch = measureBatch(options->quick, scratch);
-            rssMb = renderPeakRssMb(scratch);
-        } catch (...) {
-            std::filesystem::remove_all(scratch);
-            throw;
-        }
-        std::filesystem::remove_all(scratch);
 
         std::vector<TargetCheck> targets = renderBenchTargets(result);
         const std::string count = std::to_string(batch.images);

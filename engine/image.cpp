@@ -35,13 +35,22 @@ std::vector<uint8_t> encodePng(const LdrImage& image) {
         throw std::runtime_error("cannot encode a " + std::to_string(image.width) + "x" +
                                  std::to_string(image.height) + " PNG");
     }
-    z_stream zs{};
-    if (deflateInit(&zs, 1) != Z_OK) {
-        throw std::runtime_error("zlib: cannot start compressing");
-    }
+    // Ends the stream however this function leaves (an allocation below can throw).
+    struct Deflate {
+        z_stream zs{};
+        Deflate() {
+            if (deflateInit(&zs, 1) != Z_OK) {
+                throw std::runtime_error("zlib: cannot start compressing");
+            }
+        }
+        ~Deflate() { deflateEnd(&zs); }
+    } stream;
+    z_stream& zs = stream.zs;
+    // deflateBound is what the whole image can take, so one output buffer holds the stream
+    // (a 16384 x 16384 image is 1 GiB raw: well inside zlib's 32-bit counts).
     std::vector<uint8_t> compressed(deflateBound(&zs, uLong((stride + 1) * size_t(image.height))));
     zs.next_out = compressed.data();
-    zs.avail_out = uInt(std::min<size_t>(compressed.size(), 0xFFFFFFFFu));
+    zs.avail_out = uInt(compressed.size());
     std::vector<uint8_t> row(stride + 1);
     row[0] = 1;   // Sub
     for (int y = 0; y < image.height; ++y) {
@@ -52,14 +61,13 @@ std::vector<uint8_t> encodePng(const LdrImage& image) {
         }
         zs.next_in = row.data();
         zs.avail_in = uInt(row.size());
-        const int status = deflate(&zs, y + 1 == image.height ? Z_FINISH : Z_NO_FLUSH);
-        if (status != Z_OK && status != Z_STREAM_END) {
-            deflateEnd(&zs);
+        const bool last = y + 1 == image.height;
+        const int status = deflate(&zs, last ? Z_FINISH : Z_NO_FLUSH);
+        if ((last ? status != Z_STREAM_END : status != Z_OK) || zs.avail_in != 0) {
             throw std::runtime_error("zlib: compressing the PNG failed");
         }
     }
     compressed.resize(zs.total_out);
-    deflateEnd(&zs);
 
     std::vector<uint8_t> png(kPngSignature.begin(), kPngSignature.end());
     std::vector<uint8_t> header;

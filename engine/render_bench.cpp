@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <map>
 #include <tuple>
-#include <unistd.h>
 
 #include <epoxy/gl.h>
 
 #include "gltf_export.h"
 #include "gltf_import.h"
 #include "mesh.h"
+#include "temporary_folder.h"
 #include "timing.h"
 
 namespace patina {
@@ -140,26 +140,18 @@ void measureScale(Renderer& renderer, const RenderBenchOptions& options, const R
 // Export a big sphere as GLB and time importing it (what opening a heavy model costs).
 void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& result) {
     const Mesh mesh = sphereOfAbout(options.quick ? 40'000 : 1'000'000);
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() / ("patina-bench-" + std::to_string(getpid()));
-    std::filesystem::create_directories(folder);
-    const std::filesystem::path file = folder / "sphere.glb";
-    try {
-        exportGltf(file, mesh, defaultScene().material);
-        result.gltfBytes = double(std::filesystem::file_size(file));
-        std::vector<double> seconds;
-        for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
-            const Clock::time_point start = Clock::now();
-            const GltfImport imported = importGltf(file);
-            seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-            result.gltfTriangles = triangleCount(imported.mesh);
-        }
-        result.gltfLoadSeconds = median(seconds);
-    } catch (...) {
-        std::filesystem::remove_all(folder);
-        throw;
+    const TemporaryFolder folder("patina-bench-gltf");
+    const std::filesystem::path file = folder.path() / "sphere.glb";
+    exportGltf(file, mesh, defaultScene().material);
+    result.gltfBytes = double(std::filesystem::file_size(file));
+    std::vector<double> seconds;
+    for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
+        const Clock::time_point start = Clock::now();
+        const GltfImport imported = importGltf(file);
+        seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        result.gltfTriangles = triangleCount(imported.mesh);
     }
-    std::filesystem::remove_all(folder);
+    result.gltfLoadSeconds = median(seconds);
 }
 }  // namespace
 

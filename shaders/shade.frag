@@ -3,7 +3,7 @@
 // renderer adds the passes with blending (the seed's multi-pass design).
 // PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as SHADE_POINT(i,
 // windowed), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light loop and
-// no code for a type the scene lacks (engine/gl/specialisation.h builds the list).
+// no code for a type the scene lacks (engine/shader_specialisation.h builds the list).
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -45,8 +45,8 @@ void main() {
 #define SHADE_HEMISPHERE(i) radiance += shadeHemisphereLight(uLights[i], material, N, V);
 // The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for light i's
 // direction, with none of the light handling above (no type, no attenuation, no branch).
-#define BRDF_ONLY(i) { vec3 L = uLights[i].directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); \
-    radiance += uLights[i].radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
+// (One line: GLSL 3.30 has no line continuation.)
+#define BRDF_ONLY(i) { vec3 L = uLights[i].directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += uLights[i].radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.

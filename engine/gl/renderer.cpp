@@ -181,36 +181,31 @@ void Renderer::setMesh(const Mesh& mesh) {
     state_->mesh.upload(mesh);
 }
 
-void Renderer::drawPasses(State& s, const Scene& scene, PassMode passes,
-                          const std::vector<shader::PackedLight>& packed, const Prepare& prepare) {
-    if (passes == PassMode::Single) {
-        prepare(s.shading.use(scene.material.model, ShadingPrograms::Use::SinglePass));
+void Renderer::drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
+                          const Prepare& prepare) {
+    if (passes != PassMode::Multi) {
+        shading.use();
+        prepare(shading);
         s.mesh.draw();
-    } else if (passes == PassMode::Specialised || passes == PassMode::BrdfFloor) {
-        const ShaderSpecialisation key = passes == PassMode::Specialised
-                                             ? specialiseFor(packed, scene.material)
-                                             : brdfFloorFor(packed.size());
-        prepare(s.shading.useSpecialised(scene.material.model, key));
-        s.mesh.draw();
-    } else {
-        s.depthPrepass.use();
-        prepare(s.depthPrepass);
-        s.mesh.draw();
-        // Light passes add onto the black mesh where depth matches the pre-pass exactly
-        // (mesh.vert's gl_Position is invariant).
-        const GlProgram& multi = s.shading.use(scene.material.model, ShadingPrograms::Use::MultiPass);
-        prepare(multi);
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_ONE, GL_ONE);
-        for (size_t i = 0; i < packed.size(); ++i) {
-            glUniform1i(multi.uniform("uLightIndex"), GLint(i));
-            s.mesh.draw();
-        }
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
+        return;
     }
+    s.depthPrepass.use();
+    prepare(s.depthPrepass);
+    s.mesh.draw();
+    // Light passes add onto the black mesh where depth matches the pre-pass exactly
+    // (mesh.vert's gl_Position is invariant).
+    shading.use();
+    prepare(shading);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    for (size_t i = 0; i < lights; ++i) {
+        glUniform1i(shading.uniform("uLightIndex"), GLint(i));
+        s.mesh.draw();
+    }
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
 }
 
 unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int slot) {
@@ -231,18 +226,33 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     s.lights.upload(packed);
     s.lights.bind();
 
+    // Everything that can throw (targets the GL cannot make, a shader that does not compile)
+    // comes before the timer query starts, so a failed draw leaves no state behind.
+    const size_t bytesPerRow = size_t(w) * size_t(std::max(samples, 1)) * 4 * sizeof(float);
+    // Strips as the budget allows, but never more than kMaxStrips: each draws the whole mesh.
+    constexpr int kMaxStrips = 16;
+    const int stripRows =
+        settings.maxTargetBytes == 0
+            ? h
+            : std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
+                       (h + kMaxStrips - 1) / kMaxStrips);
+    t.shading.ensure(w, stripRows, samples > 1 ? samples : 0, GL_RGBA32F, true);
+    t.resolved.ensure(w, h, 0, GL_RGBA32F, false);
+    t.displayed.ensure(w, h, 0, GL_RGBA8, false);
+    const BrdfModelId model = scene.material.model;
+    const GlProgram& shading =
+        settings.passes == PassMode::Single  ? s.shading.use(model, ShadingPrograms::Use::SinglePass)
+        : settings.passes == PassMode::Multi ? s.shading.use(model, ShadingPrograms::Use::MultiPass)
+        : s.shading.useSpecialised(model, settings.passes == PassMode::Specialised
+                                              ? specialiseFor(packed, scene.material)
+                                              : brdfFloorFor(packed.size()));
+
     // One query in flight: a draw while the last is unread goes untimed.
     lastGpuMilliseconds();
     const bool timed = !s.timerPending;
     if (timed) {
         glBeginQuery(GL_TIME_ELAPSED, s.timerQuery);
     }
-    const size_t bytesPerRow = size_t(w) * size_t(std::max(samples, 1)) * 4 * sizeof(float);
-    const int stripRows = settings.maxTargetBytes == 0
-                              ? h
-                              : int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h)));
-    t.shading.ensure(w, stripRows, samples > 1 ? samples : 0, GL_RGBA32F, true);
-    t.resolved.ensure(w, h, 0, GL_RGBA32F, false);
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_CULL_FACE);
@@ -265,7 +275,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        drawPasses(s, scene, settings.passes, packed, prepare);
+        drawPasses(s, settings.passes, shading, packed.size(), prepare);
         // Resolve MSAA into the float texture: the HDR result and the display pass's input.
         glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shading.framebuffer);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.resolved.framebuffer);
@@ -273,7 +283,6 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     }
     glViewport(0, 0, w, h);
 
-    t.displayed.ensure(w, h, 0, GL_RGBA8, false);
     glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
     glDisable(GL_DEPTH_TEST);
     s.display.use();

@@ -33,7 +33,8 @@ struct RenderSettings {
     int samples = 4;   // MSAA; clamped to what the implementation offers
     // Most bytes the multisampled colour target may take; a larger image is drawn in strips
     // of rows that fit, each resolved into place (the same pixels: the viewport only moves).
-    // 0: no limit. Strips trade memory for vertex work (the mesh is drawn once per strip).
+    // 0: no limit. Strips trade memory for vertex work (the mesh is drawn once per strip), so
+    // there are never more than 16: past that the strips grow beyond the budget.
     size_t maxTargetBytes = 0;
     bool readHdr = true;   // render(): also read the linear image back (RenderOutput::hdr)
 };
@@ -78,8 +79,9 @@ private:
     struct State;
     std::unique_ptr<State> state_;
     using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
-    static void drawPasses(State& s, const Scene& scene, PassMode passes,
-                           const std::vector<shader::PackedLight>& packed, const Prepare& prepare);
+    // The passes of one strip with `shading` (compiled for `passes`) and `lights` lights.
+    static void drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
+                           const Prepare& prepare);
 };
 
 }  // namespace patina
