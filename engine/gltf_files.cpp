@@ -18,10 +18,7 @@ namespace {
 std::vector<uint8_t> readRegularFile(const fs::path& path, int flags, const std::string& name,
                                      uint64_t budget) {
     const RegularFile file(path, flags, name);
-    if (file.size() > kMaxFileBytes) {
-        throw InputError(name + ": the file is " + mebibytes(file.size()) + "; files are limited to " +
-                         mebibytes(kMaxFileBytes));
-    }
+    file.requireAtMost(kMaxFileBytes, "files");
     if (file.size() > budget) {
         throw InputError(name + ": with the files read before it, the model passes the limit of " +
                          mebibytes(kMaxTotalBytes) + " for all its files");

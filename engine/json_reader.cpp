@@ -82,10 +82,7 @@ Json parseJsonText(const std::string& text, const std::string& source) {
 
 Json readJsonFile(const std::filesystem::path& path) {
     const RegularFile file(path, 0, path.string());
-    if (file.size() > kMaxJsonFileBytes) {
-        throw InputError(path.string() + ": the file is " + mebibytes(file.size()) +
-                         "; Patina's JSON files are limited to " + mebibytes(kMaxJsonFileBytes));
-    }
+    file.requireAtMost(kMaxJsonFileBytes, "Patina's JSON files");
     const std::vector<uint8_t> bytes = file.readAll();
     return parseJsonText(std::string(bytes.begin(), bytes.end()), path.string());
 }

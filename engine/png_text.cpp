@@ -255,10 +255,7 @@ std::optional<Scene> sceneFromPngBytes(const std::vector<uint8_t>& bytes, const 
 std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
                                   std::vector<std::string>& warnings) {
     const RegularFile file(path, 0, path.string());
-    if (file.size() > kMaxPngBytes) {
-        throw InputError(path.string() + ": the file is " + mebibytes(file.size()) +
-                         "; PNGs with a scene are limited to " + mebibytes(kMaxPngBytes));
-    }
+    file.requireAtMost(kMaxPngBytes, "PNGs with a scene");
     return sceneFromPngBytes(file.readAll(), path.string(), warnings);
 }
 

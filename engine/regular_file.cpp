@@ -29,6 +29,13 @@ RegularFile::~RegularFile() {
     ::close(fd_);
 }
 
+void RegularFile::requireAtMost(uint64_t maxBytes, const std::string& kind) const {
+    if (size_ > maxBytes) {
+        throw InputError(name_ + ": the file is " + mebibytes(size_) + "; " + kind + " are limited to " +
+                         mebibytes(maxBytes));
+    }
+}
+
 std::vector<uint8_t> RegularFile::readAll() const {
     std::vector<uint8_t> bytes(size_);
     size_t done = 0;

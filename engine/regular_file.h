@@ -18,6 +18,8 @@ public:
     RegularFile& operator=(const RegularFile&) = delete;
 
     uint64_t size() const { return size_; }
+    // Throws InputError "NAME: the file is 6 MiB; KIND are limited to 4 MiB" when larger.
+    void requireAtMost(uint64_t maxBytes, const std::string& kind) const;
     // All size() bytes; InputError "NAME: cannot read: ..." if the file shrank or failed.
     std::vector<uint8_t> readAll() const;
 

@@ -1,6 +1,7 @@
 // PNG text chunks (engine/png_text.h): the scene the editor embeds in its PNGs, and a reader
 // that refuses damaged or hostile files with InputError instead of reading past the buffer.
 #include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -242,6 +243,16 @@ TEST_F(PngText, RefusesFilesThatAreNotPngs) {
         ADD_FAILURE() << "a folder was read as a PNG";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("folder.png: not a regular file"), std::string::npos);
+    }
+    // Sparse: the size is refused before a byte is read, and it costs no disk.
+    std::ofstream(dir_ / "huge.png").close();
+    fs::resize_file(dir_ / "huge.png", uint64_t(600) << 20);
+    try {
+        sceneFromPng(dir_ / "huge.png", warnings);
+        ADD_FAILURE() << "a 600 MiB PNG was read";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("huge.png: the file is 600 MiB; PNGs with a scene are limited to 512 MiB"),
+                  std::string::npos) << error.what();
     }
 }
 

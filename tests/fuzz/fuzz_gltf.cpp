@@ -11,16 +11,11 @@
 
 #include "gltf_import.h"
 #include "input_error.h"
+#include "scratch_folder.h"
 
 namespace {
-std::filesystem::path modelPath() {
-    static const std::filesystem::path path = [] {
-        std::string name = (std::filesystem::temp_directory_path() / "patina-fuzz-XXXXXX").string();
-        if (!::mkdtemp(name.data())) {
-            std::abort();
-        }
-        return std::filesystem::path(name) / PATINA_FUZZ_MODEL;
-    }();
+const std::filesystem::path& modelPath() {
+    static const std::filesystem::path path = patina::fuzz::scratchFolder() / PATINA_FUZZ_MODEL;
     return path;
 }
 

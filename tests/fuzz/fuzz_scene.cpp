@@ -3,23 +3,10 @@
 // InputErrors; anything else is a bug. What loads must write back and load the same.
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 
 #include "json_writer.h"
 #include "scene_file.h"
-
-namespace {
-const std::filesystem::path& emptyFolder() {
-    static const std::filesystem::path folder = [] {
-        std::string name = (std::filesystem::temp_directory_path() / "patina-fuzz-XXXXXX").string();
-        if (!::mkdtemp(name.data())) {
-            std::abort();
-        }
-        return std::filesystem::path(name);
-    }();
-    return folder;
-}
-}  // namespace
+#include "scratch_folder.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace patina;
@@ -27,12 +14,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Scene scene;
     try {
         const std::string text(reinterpret_cast<const char*>(data), size);
-        scene = sceneFromJson(parseJsonText(text, "fuzz.json"), "fuzz.json", emptyFolder(), warnings);
+        scene = sceneFromJson(parseJsonText(text, "fuzz.json"), "fuzz.json", fuzz::scratchFolder(), warnings);
     } catch (const InputError&) {
         return 0;
     }
     const Json written = parseJsonText(prettyJson(sceneToJson(scene)), "written.json");
-    if (!(sceneFromJson(written, "written.json", emptyFolder(), warnings) == scene)) {
+    if (!(sceneFromJson(written, "written.json", fuzz::scratchFolder(), warnings) == scene)) {
         std::abort();
     }
     return 0;
