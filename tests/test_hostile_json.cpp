@@ -136,7 +136,6 @@ TEST_F(HostileJson, LongValuesAreCutInMessages) {
 // Found by tests/fuzz: nlohmann throws out_of_range, not parse_error, for a number a double
 // cannot hold, and it escaped the loaders (the CLI exited 1 with nlohmann's own message).
 TEST_F(HostileJson, NumbersBeyondADoubleAreInputErrors) {
-    std::vector<std::string> warnings;
     try {
         parseJsonText(R"({"format": "patina-material", "version": 1e391.0})", "m.json");
         ADD_FAILURE() << "1e391 parsed";
