@@ -107,8 +107,9 @@ void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, c
     }
 }
 
-void measureScale(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
-                  RenderBenchResult& result) {
+// `mesh`: the default scene's, which the renderer holds on entry and gets back on return.
+void measureScale(Renderer& renderer, const Mesh& mesh, const RenderBenchOptions& options,
+                  const RenderSettings& settings, RenderBenchResult& result) {
     const Scene scene = defaultScene();
     const std::vector<std::pair<int, int>> sizes =
         options.quick ? std::vector<std::pair<int, int>>{{256, 256}, {512, 512}}
@@ -117,24 +118,23 @@ void measureScale(Renderer& renderer, const RenderBenchOptions& options, const R
         options.quick ? std::vector<size_t>{10'000, 100'000} : std::vector<size_t>{10'000, 100'000, 1'000'000};
 
     // One size after another: interleaved, every frame would reallocate the render targets.
-    renderer.setMesh(makeMesh(scene.mesh));
     for (const auto& [width, height] : sizes) {
         RenderSettings s = settings;
         s.width = width;
         s.height = height;
         Samples samples;
         interleaved(options.runs, [&](bool keep) { timeFrame(renderer, scene, s, keep ? &samples : nullptr); });
-        result.scaleRows.push_back({"resolution", width, height, triangleCount(makeMesh(scene.mesh)), samples.medians()});
+        result.scaleRows.push_back({"resolution", width, height, triangleCount(mesh), samples.medians()});
     }
     // A mesh upload per size is slow at 1M triangles: sizes one after another, not interleaved.
     for (size_t target : triangles) {
-        const Mesh mesh = sphereOfAbout(target);
-        renderer.setMesh(mesh);
+        const Mesh sphere = sphereOfAbout(target);
+        renderer.setMesh(sphere);
         Samples samples;
         interleaved(options.runs, [&](bool keep) { timeFrame(renderer, scene, settings, keep ? &samples : nullptr); });
-        result.scaleRows.push_back({"triangles", settings.width, settings.height, triangleCount(mesh), samples.medians()});
+        result.scaleRows.push_back({"triangles", settings.width, settings.height, triangleCount(sphere), samples.medians()});
     }
-    renderer.setMesh(makeMesh(scene.mesh));
+    renderer.setMesh(mesh);
 }
 
 // Export a big sphere as GLB and time importing it (what opening a heavy model costs).
@@ -199,8 +199,11 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     settings.width = result.width = options.quick ? 480 : options.width;
     settings.height = result.height = options.quick ? 270 : options.height;
     settings.samples = result.samples = options.samples;
+    const Mesh mesh = makeMesh(defaultScene().mesh);
+    result.triangles = triangleCount(mesh);
+    renderer.setMesh(mesh);
     measureLightCounts(renderer, options, settings, result);
-    measureScale(renderer, options, settings, result);
+    measureScale(renderer, mesh, options, settings, result);
     measureGltfLoad(options, result);
     return result;
 }
@@ -245,7 +248,7 @@ std::string renderBenchCsv(const RenderBenchResult& result) {
         std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f\n",
                       std::string(passModeName(row.path)).c_str(), std::string(lightTypeName(row.added)).c_str(),
                       row.lights, result.width, result.height,
-                      triangleCount(makeUvSphere()), row.time.gpu, row.time.cpu, row.time.frame);
+                      result.triangles, row.time.gpu, row.time.cpu, row.time.frame);
         csv += line;
     }
     for (const ScaleRow& row : result.scaleRows) {

@@ -43,6 +43,7 @@ struct RenderBenchResult {
     std::vector<LightCountRow> lightRows;
     std::vector<ScaleRow> scaleRows;
     int width = 0, height = 0, samples = 0;
+    size_t triangles = 0;   // of the default scene's mesh, which the light rows draw
     size_t gltfTriangles = 0;
     double gltfBytes = 0.0, gltfLoadSeconds = 0.0;   // a GLB of gltfTriangles, imported
     std::string renderer;   // GL_RENDERER
