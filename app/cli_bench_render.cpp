@@ -12,6 +12,7 @@
 #include "input_error.h"
 #include "inputs.h"
 #include "render_bench.h"
+#include "scene_file.h"
 #include "temporary_folder.h"
 #include "timing.h"
 
@@ -29,12 +30,9 @@ struct BatchResult {
 
 std::vector<std::string> presetFiles(size_t count) {
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(PATINA_PRESETS_DIR)) {
-        if (entry.path().extension() == ".json") {
-            files.push_back(entry.path().string());
-        }
+    for (const std::filesystem::path& file : materialFilesIn(PATINA_PRESETS_DIR)) {
+        files.push_back(file.string());
     }
-    std::sort(files.begin(), files.end());
     if (files.size() < count) {
         throw InputError(std::string(PATINA_PRESETS_DIR) + ": " + std::to_string(files.size()) +
                          " presets, the batch needs " + std::to_string(count));

@@ -1,5 +1,6 @@
 #include "scene_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 
@@ -173,6 +174,18 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
         }
     }
     return material;
+}
+
+std::vector<std::filesystem::path> materialFilesIn(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        if (entry.path().extension() == ".json") {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {

@@ -16,6 +16,9 @@ constexpr int kSceneFormatVersion = 1;
 Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
                           bool requireHeader, std::vector<std::string>& warnings);
 Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::string>& warnings);
+// The .json files directly in `folder` (a preset library), sorted by path; none for a folder
+// that is missing or cannot be read.
+std::vector<std::filesystem::path> materialFilesIn(const std::filesystem::path& folder);
 
 // A scene's "material" may be a path, resolved relative to `baseDirectory`.
 Scene sceneFromJson(const Json& json, const std::string& source,

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_file.h"
+#include "scratch_test.h"
 
 namespace patina {
 namespace {
@@ -120,6 +121,26 @@ TEST(ShippedPresets, DielectricSpecularMatchesTheIorItsNotesCite) {
         EXPECT_NEAR(material.specular, f0 / 0.08, 5e-4) << file;
         EXPECT_EQ(material.metallic, 0.0f) << file;
     }
+}
+
+}  // namespace
+}  // namespace patina
+
+namespace patina {
+namespace {
+
+class MaterialFolder : public test::ScratchTest {};
+
+// The preset library's listing (editor presets panel, bench-render's batch): .json files only,
+// sorted; a missing folder lists nothing rather than throwing.
+TEST_F(MaterialFolder, ListsJsonFilesSorted) {
+    write("b.json", "{}");
+    write("a.json", "{}");
+    write("notes.txt", "not a material");
+    std::filesystem::create_directories(path("sub"));
+    write("sub/c.json", "{}");
+    EXPECT_EQ(materialFilesIn(dir_), (std::vector<std::filesystem::path>{path("a.json"), path("b.json")}));
+    EXPECT_TRUE(materialFilesIn(path("missing")).empty());
 }
 
 }  // namespace

@@ -1,33 +1,19 @@
 #include <algorithm>
-#include <system_error>
 
 #include <imgui.h>
 
 #include "panels.h"
+#include "scene_file.h"
 #include "widgets.h"
 
 namespace patina::editor {
-
-namespace {
-std::vector<std::filesystem::path> materialFiles(const std::filesystem::path& folder) {
-    std::vector<std::filesystem::path> files;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-        if (entry.path().extension() == ".json") {
-            files.push_back(entry.path());
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-}  // namespace
 
 void drawPresetsPanel(EditorState& state, EditorServices& services) {
     constexpr float kThumb = 56.0f;
     const float cell = kThumb + ImGui::GetStyle().ItemSpacing.x;
     const int columns = std::max(1, int(ImGui::GetContentRegionAvail().x / cell));
     for (const std::filesystem::path& folder : state.presetFolders) {
-        const std::vector<std::filesystem::path> files = materialFiles(folder);
+        const std::vector<std::filesystem::path> files = materialFilesIn(folder);
         if (files.empty()) {
             continue;
         }
