@@ -1,11 +1,31 @@
-// Linear HDR target -> display-referred sRGB bytes (display.glsl).
+// The display pass: linear HDR -> display-referred sRGB values (display.glsl), with the linear
+// image written too where the renderer keeps it. With PATINA_MULTISAMPLED it is also the MSAA
+// resolve: it reads one strip's samples and writes their mean, so no resolved copy is made
+// first (location 0 the linear mean, location 1 its display value, as shade.frag's outputs).
+#ifdef PATINA_MULTISAMPLED
+uniform sampler2DMS uSamples;
+uniform int uSampleCount;
+uniform int uStripTop;   // the strip's first row in the image
+#else
 uniform sampler2D uHdr;
+#endif
 uniform float uExposure;
 uniform int uTonemap;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 linearColor;
+layout(location = 1) out vec4 displayColor;
 
 void main() {
+#ifdef PATINA_MULTISAMPLED
+    ivec2 texel = ivec2(gl_FragCoord.xy) - ivec2(0, uStripTop);
+    vec3 sum = vec3(0.0f);
+    for (int i = 0; i < uSampleCount; ++i) {
+        sum += texelFetch(uSamples, texel, i).rgb;
+    }
+    vec3 linear = sum / float(uSampleCount);
+#else
     vec3 linear = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb;
-    fragColor = vec4(displayTransform(linear, uExposure, uTonemap), 1.0f);
+#endif
+    linearColor = vec4(linear, 1.0f);
+    displayColor = vec4(displayTransform(linear, uExposure, uTonemap), 1.0f);
 }

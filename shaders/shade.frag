@@ -28,7 +28,14 @@ layout(std140) uniform LightBlock {
 uniform int uLightIndex;
 #endif
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;   // linear radiance
+#ifdef PATINA_DISPLAY_OUTPUT
+// Without MSAA there is nothing to resolve, so the pass also writes the display value itself
+// (display.glsl) and the renderer needs no display pass.
+uniform float uExposure;
+uniform int uTonemap;
+layout(location = 1) out vec4 displayColor;
+#endif
 
 void main() {
     SurfaceMaterial material = deriveSurfaceMaterial(uBaseColor, uRoughness, uSpecular, uMetallic);
@@ -68,4 +75,7 @@ void main() {
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
 #endif
     fragColor = vec4(radiance, 1.0f);
+#ifdef PATINA_DISPLAY_OUTPUT
+    displayColor = vec4(displayTransform(radiance, uExposure, uTonemap), 1.0f);
+#endif
 }

@@ -12,11 +12,12 @@
 namespace patina {
 namespace {
 
-RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160) {
+RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160, int samples = 4) {
     RenderSettings settings;
     settings.width = size;
     settings.height = size;
     settings.passes = passes;
+    settings.samples = samples;
     return renderer.render(scene, settings);
 }
 
@@ -66,7 +67,9 @@ Scene onlyLightsOfType(LightType type, int count) {
 }
 
 // Single, multi and specialised: the same image to rounding, for 0, 1 and many lights of each
-// type, a point light without a window and a pure metal (whose shader drops diffuse).
+// type, a point light without a window and a pure metal (whose shader drops diffuse). With MSAA
+// all three resolve in the display pass; without, single and specialised write the display
+// image in the shading pass and multi in a display pass after its sum.
 TEST(Renderer, AllThreePassModesAgree) {
     test::glContext();
     Renderer renderer;
@@ -94,11 +97,15 @@ TEST(Renderer, AllThreePassModesAgree) {
     }
     for (const Case& c : cases) {
         renderer.setMesh(makeMesh(c.scene.mesh));
-        const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single);
-        for (PassMode other : {PassMode::Multi, PassMode::Specialised}) {
-            const RenderOutput image = renderScene(renderer, c.scene, other);
-            EXPECT_LE(maxByteDifference(single.ldr, image.ldr), 1) << c.name << ", " << passModeName(other);
-            EXPECT_LE(maxHdrRelativeDifference(single.hdr, image.hdr), 1e-4) << c.name << ", " << passModeName(other);
+        for (int samples : {4, 1}) {
+            const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single, 160, samples);
+            for (PassMode other : {PassMode::Multi, PassMode::Specialised}) {
+                const RenderOutput image = renderScene(renderer, c.scene, other, 160, samples);
+                const std::string what = c.name + ", " + std::string(passModeName(other)) + ", " +
+                                         std::to_string(samples) + " samples";
+                EXPECT_LE(maxByteDifference(single.ldr, image.ldr), 1) << what;
+                EXPECT_LE(maxHdrRelativeDifference(single.hdr, image.hdr), 1e-4) << what;
+            }
         }
     }
 }
@@ -144,12 +151,36 @@ TEST(Renderer, StripsGiveTheWholeImage) {
 TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
     test::glContext();
     Renderer renderer;
+    EXPECT_TRUE(renderer.readBack(0).ldr.rgba.empty()) << "a slot never drawn reads back empty";
     RenderSettings settings;
     settings.width = settings.height = 32;
     settings.readHdr = false;
     const RenderOutput output = renderer.render(defaultScene(), settings);
     EXPECT_TRUE(output.hdr.rgb.empty());
     EXPECT_EQ(output.ldr.rgba.size(), 32u * 32u * 4u);
+    // The draw kept no linear image, so there is none to read: a clear error, not garbage.
+    EXPECT_THROW(renderer.readBack(0, true), std::logic_error);
+}
+
+// Keeping the linear image or not changes nothing shown, with MSAA or without, on every path.
+TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = manyLightScene(2);
+    scene.display.exposure = 0.7f;
+    scene.display.tonemap = Tonemap::Reinhard;
+    for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+        for (int samples : {1, 4}) {
+            RenderSettings settings;
+            settings.width = settings.height = 96;
+            settings.passes = passes;
+            settings.samples = samples;
+            const RenderOutput kept = renderer.render(scene, settings);
+            settings.readHdr = false;
+            const RenderOutput shown = renderer.render(scene, settings);
+            EXPECT_EQ(kept.ldr.rgba, shown.ldr.rgba) << passModeName(passes) << ", " << samples << " samples";
+        }
+    }
 }
 
 TEST(Renderer, EachLightOfTheDefaultSceneShowsOnTheSphere) {
@@ -181,6 +212,15 @@ TEST(Renderer, BackgroundShowsAroundTheMesh) {
     const RenderOutput image = renderScene(renderer, scene, PassMode::Multi, 64);
     EXPECT_FLOAT_EQ(image.hdr.rgb[0], 0.25f);
     EXPECT_FLOAT_EQ(image.hdr.rgb[2], 0.75f);
+    // Without MSAA the single pass clears the display image to the background's display value
+    // (computed on the CPU); it matches the display pass's to the byte.
+    scene.display.tonemap = Tonemap::Aces;
+    scene.display.exposure = 1.5f;
+    const RenderOutput shownByPass = renderScene(renderer, scene, PassMode::Multi, 64, 1);
+    const RenderOutput cleared = renderScene(renderer, scene, PassMode::Single, 64, 1);
+    for (int channel = 0; channel < 4; ++channel) {
+        EXPECT_EQ(cleared.ldr.rgba[size_t(channel)], shownByPass.ldr.rgba[size_t(channel)]) << channel;
+    }
 }
 
 TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {

@@ -62,6 +62,7 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
         settings.height = height;
         settings.passes = passes;
         settings.samples = samples;
+        settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
         slotTextures_[slot] = renderer_->draw(scene, settings, slot);
         lastRenderMilliseconds_ =

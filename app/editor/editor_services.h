@@ -36,7 +36,7 @@ public:
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
 
     // What the viewport shows in `slot`, read back (for tests and automation).
-    LdrImage viewportPixels(int slot) const { return renderer_->readBack(slot).ldr; }
+    LdrImage viewportPixels(int slot) const { return renderer_->readBack(slot, false).ldr; }
 
     // The mesh the next draw of a scene with this meshFile uses (the editor imports it once,
     // in openFile, and hands it over here).

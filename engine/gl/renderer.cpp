@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -55,64 +57,92 @@ glm::mat4 viewProjection(const Camera& camera, float aspect) {
 }
 
 namespace {
-// A framebuffer with one colour attachment (texture or multisampled renderbuffer) and an
-// optional depth renderbuffer, rebuilt when size or format changes.
-struct RenderTarget {
-    GLuint framebuffer = 0, color = 0, depth = 0;
+// A colour texture (multisampled when samples > 0) or a depth renderbuffer, remade when its
+// size, samples or format change.
+struct GlImage {
+    GLuint name = 0;
     int width = 0, height = 0, samples = -1;
     GLenum format = 0;
 
-    ~RenderTarget() { release(); }
+    ~GlImage() { release(); }
+
+    bool isDepth() const { return format == GL_DEPTH_COMPONENT24; }
 
     void release() {
-        glDeleteFramebuffers(1, &framebuffer);
-        if (samples > 0) {
-            glDeleteRenderbuffers(1, &color);
+        if (isDepth()) {
+            glDeleteRenderbuffers(1, &name);
         } else {
-            glDeleteTextures(1, &color);
+            glDeleteTextures(1, &name);
         }
-        glDeleteRenderbuffers(1, &depth);
-        framebuffer = color = depth = 0;
+        name = 0, width = height = 0, samples = -1, format = 0;
     }
 
-    void ensure(int w, int h, int s, GLenum f, bool withDepth) {
-        if (framebuffer && w == width && h == height && s == samples && f == format) {
+    void ensure(int w, int h, int s, GLenum f) {
+        if (name && w == width && h == height && s == samples && f == format) {
             return;
         }
         release();
         width = w, height = h, samples = s, format = f;
-        glGenFramebuffers(1, &framebuffer);
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        if (samples > 0) {
-            glGenRenderbuffers(1, &color);
-            glBindRenderbuffer(GL_RENDERBUFFER, color);
+        if (isDepth()) {
+            glGenRenderbuffers(1, &name);
+            glBindRenderbuffer(GL_RENDERBUFFER, name);
             glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, w, h);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+        } else if (samples > 0) {
+            glGenTextures(1, &name);
+            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, name);
+            glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, format, w, h, GL_TRUE);
         } else {
-            glGenTextures(1, &color);
-            glBindTexture(GL_TEXTURE_2D, color);
+            glGenTextures(1, &name);
+            glBindTexture(GL_TEXTURE_2D, name);
             glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-        }
-        if (withDepth) {
-            glGenRenderbuffers(1, &depth);
-            glBindRenderbuffer(GL_RENDERBUFFER, depth);
-            glRenderbufferStorageMultisample(GL_RENDERBUFFER, std::max(samples, 0),
-                                             GL_DEPTH_COMPONENT24, w, h);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-        }
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            throw std::runtime_error("OpenGL: render target " + std::to_string(w) + "x" +
-                                     std::to_string(h) + " is incomplete");
         }
     }
 };
 
-// One render's chain: multisampled float -> resolved float -> display bytes.
+// Colour attachment 0 takes linear radiance and 1 display values, in every pass that writes
+// them (shade.frag, display.frag); nullptr leaves one out.
+void attach(GLuint framebuffer, const GlImage* linear, const GlImage* display, const GlImage* depth) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    const GlImage* colours[2] = {linear, display};
+    GLenum drawBuffers[2] = {GL_NONE, GL_NONE};
+    for (GLenum i = 0; i < 2; ++i) {
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, colours[i] ? colours[i]->name : 0, 0);
+        drawBuffers[i] = colours[i] ? GL_COLOR_ATTACHMENT0 + i : GL_NONE;
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth ? depth->name : 0);
+    glDrawBuffers(2, drawBuffers);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        const GlImage* any = linear ? linear : display;
+        throw std::runtime_error("OpenGL: render target " + std::to_string(any->width) + "x" +
+                                 std::to_string(any->height) + " is incomplete");
+    }
+}
+
+// One slot's images. With MSAA: a strip of samples -> (display pass: resolve and display
+// transform) -> display, and linear when kept. Without: the shading pass draws straight into
+// the full-size images, and writes display values itself except for the multi path's sum.
 struct Targets {
-    RenderTarget shading, resolved, displayed;
+    GlImage samples;   // multisampled linear radiance, one strip tall (MSAA only)
+    GlImage depth;     // the shading pass's (multisampled with MSAA, one strip tall)
+    GlImage linear;    // the linear image, when kept
+    GlImage display;   // display-referred sRGB values, RGBA32F: bytes only on reading back
+    GLuint shadingFramebuffer = 0, displayFramebuffer = 0, readFramebuffer = 0;
+    bool hasLinear = false;
+
+    Targets() {
+        for (GLuint* framebuffer : {&shadingFramebuffer, &displayFramebuffer, &readFramebuffer}) {
+            glGenFramebuffers(1, framebuffer);
+        }
+    }
+    ~Targets() {
+        for (GLuint* framebuffer : {&shadingFramebuffer, &displayFramebuffer, &readFramebuffer}) {
+            glDeleteFramebuffers(1, framebuffer);
+        }
+    }
+    Targets(const Targets&) = delete;
+    Targets& operator=(const Targets&) = delete;
 };
 
 template <typename T>
@@ -134,11 +164,33 @@ int toneMapIndex(Tonemap tonemap) {
 }
 }  // namespace
 
+// A program compiled on first use: a render that needs no pre-pass or display pass (no multi
+// path, no MSAA) compiles neither.
+class LazyProgram {
+public:
+    LazyProgram(std::vector<const char*> vertex, std::vector<const char*> fragment,
+                std::vector<std::string> defines = {})
+        : vertex_(std::move(vertex)), fragment_(std::move(fragment)), defines_(std::move(defines)) {}
+    const GlProgram& get() {
+        if (!program_) {
+            program_ = std::make_unique<GlProgram>(vertex_, fragment_, defines_);
+        }
+        return *program_;
+    }
+
+private:
+    std::vector<const char*> vertex_, fragment_;
+    std::vector<std::string> defines_;
+    std::unique_ptr<GlProgram> program_;
+};
+
 struct Renderer::State {
     ShadingPrograms shading;
-    GlProgram depthPrepass{{shader_sources::mesh_vert}, {shader_sources::black_frag}};
-    GlProgram display{{shader_sources::fullscreen_vert},
-                      {shader_sources::display_glsl, shader_sources::display_frag}};
+    LazyProgram depthPrepass{{shader_sources::mesh_vert}, {shader_sources::black_frag}};
+    LazyProgram display{{shader_sources::fullscreen_vert}, {shader_sources::display_glsl, shader_sources::display_frag}};
+    LazyProgram resolve{{shader_sources::fullscreen_vert},
+                        {shader_sources::display_glsl, shader_sources::display_frag},
+                        {"PATINA_MULTISAMPLED"}};
     LightBuffer lights;
     MeshBuffers mesh;
     GLuint emptyVertexArray = 0;
@@ -150,10 +202,17 @@ struct Renderer::State {
 };
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
-    glGenVertexArrays(1, &state_->emptyVertexArray);
-    glGenQueries(1, &state_->timerQuery);
-    glGetIntegerv(GL_MAX_SAMPLES, &state_->maxSamples);
-    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &state_->maxSize);
+    State& s = *state_;
+    glGenVertexArrays(1, &s.emptyVertexArray);
+    glGenQueries(1, &s.timerQuery);
+    // The samples are a texture (the display pass reads them) and the depth a renderbuffer.
+    GLint renderbufferSamples = 0, textureSamples = 0, renderbufferSize = 0, textureSize = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &renderbufferSamples);
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &textureSamples);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbufferSize);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &textureSize);
+    s.maxSamples = std::min(renderbufferSamples, textureSamples);
+    s.maxSize = std::min(renderbufferSize, textureSize);
     setMesh(makeUvSphere());
 }
 
@@ -189,8 +248,9 @@ void Renderer::drawPasses(State& s, PassMode passes, const GlProgram& shading, s
         s.mesh.draw();
         return;
     }
-    s.depthPrepass.use();
-    prepare(s.depthPrepass);
+    const GlProgram& depthPrepass = s.depthPrepass.get();
+    depthPrepass.use();
+    prepare(depthPrepass);
     s.mesh.draw();
     // Light passes add onto the black mesh where depth matches the pre-pass exactly
     // (mesh.vert's gl_Position is invariant).
@@ -222,6 +282,10 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     Targets& t = s.targets[size_t(slot)];
     const int w = settings.width, h = settings.height;
     const int samples = std::clamp(settings.samples, 0, s.maxSamples);
+    const bool msaa = samples > 1;
+    // Without MSAA, single and specialised write display values in the shading pass; multi
+    // must sum its passes first, and MSAA must resolve first (tone mapping is not linear).
+    const bool displayInPass = !msaa && settings.passes != PassMode::Multi;
     const std::vector<shader::PackedLight> packed = packEnabledLights(scene.lights);
     s.lights.upload(packed);
     s.lights.bind();
@@ -230,22 +294,51 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     // comes before the timer query starts, so a failed draw leaves no state behind.
     const size_t bytesPerRow = size_t(w) * size_t(std::max(samples, 1)) * 4 * sizeof(float);
     // Strips as the budget allows, but never more than kMaxStrips: each draws the whole mesh.
+    // Without MSAA the shading pass draws into the full-size images: strips would save nothing.
     constexpr int kMaxStrips = 16;
     const int stripRows =
-        settings.maxTargetBytes == 0
+        settings.maxTargetBytes == 0 || !msaa
             ? h
             : std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
                        (h + kMaxStrips - 1) / kMaxStrips);
-    t.shading.ensure(w, stripRows, samples > 1 ? samples : 0, GL_RGBA32F, true);
-    t.resolved.ensure(w, h, 0, GL_RGBA32F, false);
-    t.displayed.ensure(w, h, 0, GL_RGBA8, false);
+    t.display.ensure(w, h, 0, GL_RGBA32F);
+    t.hasLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
+    if (t.hasLinear) {
+        t.linear.ensure(w, h, 0, GL_RGBA32F);
+    } else {
+        t.linear.release();
+    }
+    const GlImage* linear = t.hasLinear ? &t.linear : nullptr;
+    const GlProgram* displayPass = nullptr;
+    if (msaa) {
+        t.samples.ensure(w, stripRows, samples, GL_RGBA32F);
+        t.depth.ensure(w, stripRows, samples, GL_DEPTH_COMPONENT24);
+        attach(t.shadingFramebuffer, &t.samples, nullptr, &t.depth);
+        attach(t.displayFramebuffer, linear, &t.display, nullptr);
+        displayPass = &s.resolve.get();
+    } else {
+        t.samples.release();
+        t.depth.ensure(w, h, 0, GL_DEPTH_COMPONENT24);
+        attach(t.shadingFramebuffer, linear, displayInPass ? &t.display : nullptr, &t.depth);
+        if (!displayInPass) {
+            attach(t.displayFramebuffer, nullptr, &t.display, nullptr);
+            displayPass = &s.display.get();
+        }
+    }
     const BrdfModelId model = scene.material.model;
+    const ShadingPrograms::Output output =
+        displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     const GlProgram& shading =
-        settings.passes == PassMode::Single  ? s.shading.use(model, ShadingPrograms::Use::SinglePass)
-        : settings.passes == PassMode::Multi ? s.shading.use(model, ShadingPrograms::Use::MultiPass)
-        : s.shading.useSpecialised(model, settings.passes == PassMode::Specialised
-                                              ? specialiseFor(packed, scene.material)
-                                              : brdfFloorFor(packed.size()));
+        settings.passes == PassMode::Single ? s.shading.use(model, ShadingPrograms::Use::SinglePass, output)
+        : settings.passes == PassMode::Multi
+            ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
+            : s.shading.useSpecialised(model,
+                                       settings.passes == PassMode::Specialised ? specialiseFor(packed, scene.material)
+                                                                                : brdfFloorFor(packed.size()),
+                                       output);
+    if (settings.passes == PassMode::Multi) {
+        s.depthPrepass.get();
+    }
 
     // One query in flight: a draw while the last is unread goes untimed.
     lastGpuMilliseconds();
@@ -254,46 +347,69 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glBeginQuery(GL_TIME_ELAPSED, s.timerQuery);
     }
     glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_CULL_FACE);
-    glClearColor(scene.display.background.r, scene.display.background.g,
-                 scene.display.background.b, 1.0f);
-    glClearDepth(1.0);
+    const int exposureTonemap = toneMapIndex(scene.display.tonemap);
+    const glm::vec3 background = scene.display.background;
+    const glm::vec3 backgroundShown = shader::displayTransform(background, scene.display.exposure, exposureTonemap);
+    const GLfloat clearLinear[4] = {background.r, background.g, background.b, 1.0f};
+    const GLfloat clearDisplay[4] = {backgroundShown.r, backgroundShown.g, backgroundShown.b, 1.0f};
+    const GLfloat clearDepth = 1.0f;
 
     const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
     auto prepare = [&](const GlProgram& program) {
         glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(transform));
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
         setMaterialUniforms(program, scene.material);
+        if (displayInPass) {
+            glUniform1f(program.uniform("uExposure"), scene.display.exposure);
+            glUniform1i(program.uniform("uTonemap"), exposureTonemap);
+        }
+    };
+    auto displayStrip = [&](int top, int rows) {
+        glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
+        glViewport(0, 0, w, h);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, top, w, rows);
+        glDisable(GL_DEPTH_TEST);
+        displayPass->use();
+        glActiveTexture(GL_TEXTURE0);
+        if (msaa) {
+            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.samples.name);
+            glUniform1i(displayPass->uniform("uSamples"), 0);
+            glUniform1i(displayPass->uniform("uSampleCount"), samples);
+            glUniform1i(displayPass->uniform("uStripTop"), top);
+        } else {
+            glBindTexture(GL_TEXTURE_2D, t.linear.name);
+            glUniform1i(displayPass->uniform("uHdr"), 0);
+        }
+        glUniform1f(displayPass->uniform("uExposure"), scene.display.exposure);
+        glUniform1i(displayPass->uniform("uTonemap"), exposureTonemap);
+        glBindVertexArray(s.emptyVertexArray);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
+        glDisable(GL_SCISSOR_TEST);
     };
     for (int top = 0; top < h; top += stripRows) {
         const int rows = std::min(stripRows, h - top);
-        glBindFramebuffer(GL_FRAMEBUFFER, t.shading.framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, t.shadingFramebuffer);
         // The whole image's viewport, moved down so rows [top, top + rows) land in the strip.
         glViewport(0, -top, w, h);
         glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (msaa || linear) {
+            glClearBufferfv(GL_COLOR, 0, clearLinear);
+        }
+        if (displayInPass) {
+            glClearBufferfv(GL_COLOR, 1, clearDisplay);
+        }
+        glClearBufferfv(GL_DEPTH, 0, &clearDepth);
         drawPasses(s, settings.passes, shading, packed.size(), prepare);
-        // Resolve MSAA into the float texture: the HDR result and the display pass's input.
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, t.shading.framebuffer);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, t.resolved.framebuffer);
-        glBlitFramebuffer(0, 0, w, rows, 0, top, w, top + rows, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        if (displayPass) {
+            displayStrip(top, rows);
+        }
     }
     glViewport(0, 0, w, h);
-
-    glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
-    glDisable(GL_DEPTH_TEST);
-    s.display.use();
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, t.resolved.color);
-    glUniform1i(s.display.uniform("uHdr"), 0);
-    glUniform1f(s.display.uniform("uExposure"), scene.display.exposure);
-    glUniform1i(s.display.uniform("uTonemap"), toneMapIndex(scene.display.tonemap));
-    glBindVertexArray(s.emptyVertexArray);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timed) {
         glEndQuery(GL_TIME_ELAPSED);
@@ -302,24 +418,34 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
         throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
     }
-    return t.displayed.color;
+    return t.display.name;
 }
 
 RenderOutput Renderer::readBack(int slot, bool hdr) const {
     const Targets& t = state_->targets.at(size_t(slot));
-    const int w = t.resolved.width, h = t.resolved.height;
+    if (hdr && t.display.name && !t.hasLinear) {
+        throw std::logic_error("render slot " + std::to_string(slot) +
+                               " was drawn without its linear image (RenderSettings::readHdr)");
+    }
     RenderOutput output;
+    if (!t.display.name) {
+        return output;   // never drawn
+    }
+    const int w = t.display.width, h = t.display.height;
     // Straight into the outputs (no staging copies: a render's peak memory counts), then the
     // rows flipped in place, since GL's go bottom to top.
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.readFramebuffer);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
     if (hdr) {
         output.hdr = {w, h, std::vector<float>(size_t(w) * h * 3)};
-        glBindFramebuffer(GL_FRAMEBUFFER, t.resolved.framebuffer);
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t.linear.name, 0);
         glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, output.hdr.rgb.data());
         flipRows(output.hdr.rgb, size_t(w) * 3, h);
     }
+    // The display values become bytes here, as GL converts float to 8-bit normalised.
     output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
-    glBindFramebuffer(GL_FRAMEBUFFER, t.displayed.framebuffer);
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t.display.name, 0);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, output.ldr.rgba.data());
     flipRows(output.ldr.rgba, size_t(w) * 4, h);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -36,7 +36,9 @@ struct RenderSettings {
     // 0: no limit. Strips trade memory for vertex work (the mesh is drawn once per strip), so
     // there are never more than 16: past that the strips grow beyond the budget.
     size_t maxTargetBytes = 0;
-    bool readHdr = true;   // render(): also read the linear image back (RenderOutput::hdr)
+    // Keep the linear image, for readBack(slot, true) (and render() reads it back). Without it
+    // no full-size linear image is written at all, which saves a pass's memory and bandwidth.
+    bool readHdr = true;
 };
 
 struct RenderOutput {
@@ -59,12 +61,14 @@ public:
     static constexpr int kSlots = 2;
 
     void setMesh(const Mesh& mesh);
-    // Renders into `slot` and returns its display texture (GL_RGBA8, sRGB-encoded, GL's
-    // bottom-up rows), valid until the slot is drawn again at another size. Leaves framebuffer
-    // 0 bound. Throws std::invalid_argument for a size outside [1, max renderbuffer size].
+    // Renders into `slot` and returns its display texture (GL_RGBA32F holding sRGB-encoded
+    // values in [0, 1], GL's bottom-up rows), valid until the slot is drawn again at another
+    // size. Float, not 8-bit: llvmpipe runs a shader writing 8-bit colour about 1.8x slower.
+    // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size].
     unsigned draw(const Scene& scene, const RenderSettings& settings, int slot = 0);
-    // The last draw of `slot`, read back to the CPU with rows top to bottom; without `hdr`,
-    // RenderOutput::hdr stays empty.
+    // The last draw of `slot`, read back to the CPU with rows top to bottom (empty if never
+    // drawn); without `hdr`, RenderOutput::hdr stays empty. Throws std::logic_error for `hdr`
+    // when the draw did not keep it (RenderSettings::readHdr).
     RenderOutput readBack(int slot = 0, bool hdr = true) const;
     // GPU time of the most recent draw whose timer query has completed (GL_TIME_ELAPSED,
     // read without waiting), in milliseconds; negative before the first.

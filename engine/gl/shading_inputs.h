@@ -10,7 +10,7 @@
 namespace patina {
 
 // Embedded GLSL parts of every program that shades: the terms, the lights, the energy table,
-// the model dispatch (its PATINA_* defines select the model) and shade.frag.
+// the model dispatch (its PATINA_* defines select the model), the display transform and shade.frag.
 std::vector<const char*> shadingFragmentParts();
 
 // The LightBlock uniform buffer of shaders/shade.frag: MAX_LIGHTS packed lights and a count.

@@ -24,10 +24,13 @@ ShadingPrograms::~ShadingPrograms() {
     }
 }
 
-std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, const char* vertex,
+std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output output, const char* vertex,
                                                   std::vector<std::string> defines) {
     const std::vector<std::string> modelDefines = brdfModelDefines(model);
     defines.insert(defines.begin(), modelDefines.begin(), modelDefines.end());
+    if (output == Output::LinearAndDisplay) {
+        defines.push_back("PATINA_DISPLAY_OUTPUT");
+    }
     auto program = std::make_unique<GlProgram>(std::vector<const char*>{vertex}, shadingFragmentParts(), defines);
     LightBuffer::attach(*program);
     return program;
@@ -44,8 +47,8 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
     return program;
 }
 
-const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use) {
-    std::unique_ptr<GlProgram>& program = programs_[{model, use}];
+const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output) {
+    std::unique_ptr<GlProgram>& program = programs_[{model, use, output}];
     if (!program) {
         std::vector<std::string> defines;
         if (use != Use::MultiPass) {
@@ -54,18 +57,20 @@ const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use) {
         if (use == Use::Probe) {
             defines.push_back("PATINA_PROBE");
         }
-        program = build(model, use == Use::Probe ? shader_sources::probe_vert : shader_sources::mesh_vert, defines);
+        program = build(model, output, use == Use::Probe ? shader_sources::probe_vert : shader_sources::mesh_vert,
+                        defines);
     }
     return bind(model, *program);
 }
 
-const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const ShaderSpecialisation& key) {
-    Specialised& entry = specialised_[{model, key}];
+const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
+                                                 Output output) {
+    Specialised& entry = specialised_[{model, key, output}];
     if (!entry.program) {
         try {
-            entry.program = build(model, shader_sources::mesh_vert, key.defines());
+            entry.program = build(model, output, shader_sources::mesh_vert, key.defines());
         } catch (...) {
-            specialised_.erase({model, key});
+            specialised_.erase({model, key, output});
             throw;
         }
     }

@@ -1,7 +1,7 @@
 #pragma once
 #include <map>
 #include <memory>
-#include <utility>
+#include <tuple>
 
 #include "../brdf_model_id.h"
 #include "../shader_specialisation.h"
@@ -15,6 +15,9 @@ namespace patina {
 class ShadingPrograms {
 public:
     enum class Use { SinglePass, MultiPass, Probe };
+    // What the fragment shader writes: the linear radiance, or also its display value
+    // (PATINA_DISPLAY_OUTPUT, for a pass with nothing to resolve or sum afterwards).
+    enum class Output { Linear, LinearAndDisplay };
 
     ShadingPrograms() = default;
     ~ShadingPrograms();
@@ -22,11 +25,12 @@ public:
     ShadingPrograms& operator=(const ShadingPrograms&) = delete;
 
     // Makes the program current (with its energy table bound) and returns it.
-    const GlProgram& use(BrdfModelId model, Use use);
+    const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear);
     // The single-pass program specialised to `key`, compiled on first use. The least recently
     // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
     // makes a new key each time.
-    const GlProgram& useSpecialised(BrdfModelId model, const ShaderSpecialisation& key);
+    const GlProgram& useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
+                                    Output output = Output::Linear);
     static constexpr size_t kSpecialisedCapacity = 16;
     size_t specialisedCount() const { return specialised_.size(); }
 
@@ -35,13 +39,14 @@ private:
         std::unique_ptr<GlProgram> program;
         unsigned long long lastUse = 0;
     };
-    std::map<std::pair<BrdfModelId, Use>, std::unique_ptr<GlProgram>> programs_;
-    std::map<std::pair<BrdfModelId, ShaderSpecialisation>, Specialised> specialised_;
+    std::map<std::tuple<BrdfModelId, Use, Output>, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
     std::map<BrdfModelId, unsigned> energyTextures_;
 
     unsigned energyTexture(BrdfModelId model);
-    std::unique_ptr<GlProgram> build(BrdfModelId model, const char* vertex, std::vector<std::string> defines);
+    std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, const char* vertex,
+                                     std::vector<std::string> defines);
     const GlProgram& bind(BrdfModelId model, const GlProgram& program);
 };
 
