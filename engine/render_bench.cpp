@@ -199,6 +199,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     settings.width = result.width = options.quick ? 480 : options.width;
     settings.height = result.height = options.quick ? 270 : options.height;
     settings.samples = result.samples = options.samples;
+    settings.readHdr = false;   // as `patina render` without --hdr and the editor's viewport
     const Mesh mesh = makeMesh(defaultScene().mesh);
     result.triangles = triangleCount(mesh);
     renderer.setMesh(mesh);

@@ -243,6 +243,18 @@ TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {
     EXPECT_FLOAT_EQ(renderScene(renderer, scene, PassMode::Single, 32).hdr.rgb[0], 0.5f);
 }
 
+// The GL may give more samples than asked (llvmpipe, like GPUs, makes 2 and 3 into 4): the
+// resolve averages every sample it made, so asking for 3 draws the 4-sample image exactly.
+TEST(Renderer, ResolveAveragesEverySampleTheGlMade) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = manyLightScene(1);
+    const RenderOutput four = renderScene(renderer, scene, PassMode::Single, 64, 4);
+    const RenderOutput three = renderScene(renderer, scene, PassMode::Single, 64, 3);
+    EXPECT_EQ(three.ldr.rgba, four.ldr.rgba);
+    EXPECT_EQ(three.hdr.rgb, four.hdr.rgb);
+}
+
 TEST(Renderer, RejectsImpossibleSizes) {
     test::glContext();
     Renderer renderer;

@@ -63,6 +63,7 @@ struct GlImage {
     GLuint name = 0;
     int width = 0, height = 0, samples = -1;
     GLenum format = 0;
+    int actualSamples = 0;   // what the GL made of `samples` (it may round up)
 
     ~GlImage() { release(); }
 
@@ -91,6 +92,7 @@ struct GlImage {
             glGenTextures(1, &name);
             glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, name);
             glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, format, w, h, GL_TRUE);
+            glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &actualSamples);
         } else {
             glGenTextures(1, &name);
             glBindTexture(GL_TEXTURE_2D, name);
@@ -376,7 +378,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         if (msaa) {
             glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.samples.name);
             glUniform1i(displayPass->uniform("uSamples"), 0);
-            glUniform1i(displayPass->uniform("uSampleCount"), samples);
+            glUniform1i(displayPass->uniform("uSampleCount"), t.samples.actualSamples);
             glUniform1i(displayPass->uniform("uStripTop"), top);
         } else {
             glBindTexture(GL_TEXTURE_2D, t.linear.name);
