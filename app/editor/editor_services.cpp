@@ -79,6 +79,7 @@ RenderOutput EditorServices::renderImage(const Scene& scene, int width, int heig
     settings.width = width;
     settings.height = height;
     settings.passes = passes;
+    settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
     // Slot 0 is the viewport's: it must be drawn again afterwards.
     slots_[0].reset();
     return renderer_->render(scene, settings);

@@ -122,6 +122,16 @@ void attach(GLuint framebuffer, const GlImage* linear, const GlImage* display, c
     }
 }
 
+// Lets go of a framebuffer's images: deleting a texture detaches it only from the bound
+// framebuffer, so one left attached elsewhere would keep its memory.
+void detach(GLuint framebuffer) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    for (GLenum i = 0; i < 2; ++i) {
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, 0, 0);
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+}
+
 // One slot's images. With MSAA: a strip of samples -> (display pass: resolve and display
 // transform) -> display, and linear when kept. Without: the shading pass draws straight into
 // the full-size images, and writes display values itself except for the multi path's sum.
@@ -131,6 +141,7 @@ struct Targets {
     GlImage linear;    // the linear image, when kept
     GlImage display;   // display-referred sRGB values, RGBA32F: bytes only on reading back
     GLuint shadingFramebuffer = 0, displayFramebuffer = 0, readFramebuffer = 0;
+    bool drawn = false;       // the last draw finished: there is an image to read back
     bool hasLinear = false;
 
     Targets() {
@@ -303,14 +314,16 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
             ? h
             : std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
                        (h + kMaxStrips - 1) / kMaxStrips);
+    // Until this draw succeeds the slot has nothing to read back.
+    t.drawn = false;
     t.display.ensure(w, h, 0, GL_RGBA32F);
-    t.hasLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
-    if (t.hasLinear) {
+    const bool keepLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
+    if (keepLinear) {
         t.linear.ensure(w, h, 0, GL_RGBA32F);
     } else {
         t.linear.release();
     }
-    const GlImage* linear = t.hasLinear ? &t.linear : nullptr;
+    const GlImage* linear = keepLinear ? &t.linear : nullptr;
     const GlProgram* displayPass = nullptr;
     if (msaa) {
         t.samples.ensure(w, stripRows, samples, GL_RGBA32F);
@@ -325,6 +338,8 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         if (!displayInPass) {
             attach(t.displayFramebuffer, nullptr, &t.display, nullptr);
             displayPass = &s.display.get();
+        } else {
+            detach(t.displayFramebuffer);
         }
     }
     const BrdfModelId model = scene.material.model;
@@ -350,6 +365,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     }
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
     const int exposureTonemap = toneMapIndex(scene.display.tonemap);
     const glm::vec3 background = scene.display.background;
     const glm::vec3 backgroundShown = shader::displayTransform(background, scene.display.exposure, exposureTonemap);
@@ -412,6 +428,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         }
     }
     glViewport(0, 0, w, h);
+    glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timed) {
         glEndQuery(GL_TIME_ELAPSED);
@@ -420,18 +437,20 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
         throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
     }
+    t.drawn = true;
+    t.hasLinear = keepLinear;
     return t.display.name;
 }
 
 RenderOutput Renderer::readBack(int slot, bool hdr) const {
     const Targets& t = state_->targets.at(size_t(slot));
-    if (hdr && t.display.name && !t.hasLinear) {
+    if (hdr && t.drawn && !t.hasLinear) {
         throw std::logic_error("render slot " + std::to_string(slot) +
                                " was drawn without its linear image (RenderSettings::readHdr)");
     }
     RenderOutput output;
-    if (!t.display.name) {
-        return output;   // never drawn
+    if (!t.drawn) {
+        return output;   // never drawn, or the last draw failed
     }
     const int w = t.display.width, h = t.display.height;
     // Straight into the outputs (no staging copies: a render's peak memory counts), then the
@@ -450,6 +469,7 @@ RenderOutput Renderer::readBack(int slot, bool hdr) const {
     glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t.display.name, 0);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, output.ldr.rgba.data());
     flipRows(output.ldr.rgba, size_t(w) * 4, h);
+    detach(t.readFramebuffer);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return output;
 }
