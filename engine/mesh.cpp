@@ -93,17 +93,25 @@ std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
     return normals;
 }
 
-BoundingSphere boundingSphere(const Mesh& mesh) {
+BoundingBox boundingBox(const Mesh& mesh) {
     if (mesh.positions.empty()) {
         return {};
     }
-    glm::vec3 low = mesh.positions.front(), high = low;
+    BoundingBox box{mesh.positions.front(), mesh.positions.front()};
     for (const glm::vec3& p : mesh.positions) {
-        low = glm::min(low, p);
-        high = glm::max(high, p);
+        box.low = glm::min(box.low, p);
+        box.high = glm::max(box.high, p);
+    }
+    return box;
+}
+
+BoundingSphere boundingSphere(const Mesh& mesh) {
+    const BoundingBox box = boundingBox(mesh);
+    if (box.empty()) {
+        return {};
     }
     BoundingSphere sphere;
-    sphere.center = 0.5f * (low + high);
+    sphere.center = 0.5f * (box.low + box.high);
     for (const glm::vec3& p : mesh.positions) {
         sphere.radius = std::max(sphere.radius, glm::length(p - sphere.center));
     }

@@ -31,6 +31,13 @@ Mesh makeMesh(const Scene& scene);
 std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
                                      std::span<const uint32_t> triangles);
 
+// The axis-aligned box around every position; low > high (empty) for a mesh with none.
+struct BoundingBox {
+    glm::vec3 low{1.0f}, high{-1.0f};
+    bool empty() const { return low.x > high.x; }
+};
+BoundingBox boundingBox(const Mesh& mesh);
+
 // Where the camera frames a mesh: the centre of its bounding box and the distance from there
 // to the farthest vertex.
 struct BoundingSphere {

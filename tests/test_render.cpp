@@ -264,6 +264,96 @@ TEST(Renderer, ResolveAveragesEverySampleTheGlMade) {
     EXPECT_EQ(three.hdr.rgb, four.hdr.rgb);
 }
 
+// A flat rectangle facing +z: its bounding box is the rectangle itself, so its screen bounds
+// are tight and any cropping short of them shows.
+Mesh facingQuad() {
+    Mesh quad;
+    quad.positions = {{-0.8f, -0.5f, 0.0f}, {0.8f, -0.5f, 0.0f}, {0.8f, 0.5f, 0.0f}, {-0.8f, 0.5f, 0.0f}};
+    quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    return quad;
+}
+
+// The pixels MSAA work is cropped to hold every vertex the camera sees in front of it, for
+// cameras all around a sphere and a flat quad (whose box is tight) and close to them; a box
+// reaching behind the eye gives the whole image, and an empty mesh none.
+TEST(Renderer, ScreenBoundsHoldEveryProjectedVertex) {
+    const int w = 320, h = 200;
+    for (const Mesh& mesh : {makeUvSphere(16, 32), facingQuad()})
+    for (int i = 0; i < 24; ++i) {
+        const BoundingBox box = boundingBox(mesh);
+        const std::vector<glm::vec3>& positions = mesh.positions;
+        const float angle = 0.1f + 0.12f * float(i);   // from +x round to the quad's front
+        Camera camera = defaultScene().camera;
+        const float distance = 1.2f + 0.5f * float(i % 6);
+        camera.position = {distance * std::cos(angle), 0.4f * std::sin(1.3f * angle), distance * std::sin(angle)};
+        camera.target = {0.3f * std::sin(angle), 0.0f, 0.0f};
+        const glm::mat4 transform = viewProjection(camera, float(w) / float(h));
+        const PixelRect rect = screenBounds(transform, box, w, h);
+        for (const glm::vec3& p : positions) {
+            const glm::vec4 clip = transform * glm::vec4(p, 1.0f);
+            ASSERT_GT(clip.w, 0.0f) << "the camera is outside the sphere";
+            const float x = (clip.x / clip.w * 0.5f + 0.5f) * float(w), y = (clip.y / clip.w * 0.5f + 0.5f) * float(h);
+            if (x >= 0.0f && x < float(w) && y >= 0.0f && y < float(h)) {
+                EXPECT_TRUE(x >= float(rect.x0) && x <= float(rect.x1) && y >= float(rect.y0) && y <= float(rect.y1))
+                    << "camera " << i << ": (" << x << ", " << y << ") outside [" << rect.x0 << ", " << rect.x1
+                    << "] x [" << rect.y0 << ", " << rect.y1 << "]";
+            }
+        }
+    }
+    Camera inside = defaultScene().camera;
+    inside.position = {0.0f, 0.0f, 0.5f};
+    const BoundingBox box = boundingBox(makeUvSphere(16, 32));
+    EXPECT_EQ(screenBounds(viewProjection(inside, 1.6f), box, w, h), (PixelRect{0, 0, w, h}));
+    EXPECT_TRUE(screenBounds(viewProjection(inside, 1.6f), BoundingBox{}, w, h).empty());
+}
+
+// Cropping MSAA work to the mesh changes no pixel: framed, close up (corners projected far
+// outside), from inside the bounding box (corners behind the eye), off to one side, in strips.
+TEST(Renderer, CroppingToTheMeshGivesTheSameImage) {
+    test::glContext();
+    Renderer renderer;
+    struct Case {
+        std::string name;
+        Scene scene;
+        size_t budget = 0;
+    };
+    Scene closeUp = manyLightScene(2);
+    closeUp.camera.position = {0.0f, 0.0f, 1.05f};
+    Scene inBox = manyLightScene(2);   // outside the sphere, inside its box: corners behind the eye
+    inBox.camera.position = {0.9f, 0.9f, 0.9f};
+    Scene aside = manyLightScene(2);
+    aside.camera.target = {1.5f, 0.8f, 0.0f};
+    aside.display.tonemap = Tonemap::Aces;
+    aside.display.exposure = -0.5f;
+    Scene quad = manyLightScene(2);
+    quad.camera.position = {0.3f, 0.2f, 2.0f};
+    const std::vector<Case> cases = {{"framed", manyLightScene(2)},
+                                     {"close up", closeUp},
+                                     {"inside the bounding box", inBox},
+                                     {"aside", aside},
+                                     {"aside, in strips", aside, size_t(150) * 4 * 16 * 23},
+                                     {"a flat quad", quad}};
+    for (const Case& c : cases) {
+        renderer.setMesh(c.name == "a flat quad" ? facingQuad() : makeUvSphere());
+        RenderSettings settings;
+        settings.width = 150;
+        settings.height = 110;
+        settings.maxTargetBytes = c.budget;
+        settings.cropToMesh = false;
+        const RenderOutput whole = renderer.render(c.scene, settings);
+        settings.cropToMesh = true;
+        const RenderOutput cropped = renderer.render(c.scene, settings);
+        EXPECT_LE(maxByteDifference(whole.ldr, cropped.ldr), 1) << c.name;
+        EXPECT_LE(maxHdrRelativeDifference(whole.hdr, cropped.hdr), 1e-6) << c.name;
+        int identical = 0;
+        for (size_t i = 0; i < whole.ldr.rgba.size(); ++i) {
+            identical += whole.ldr.rgba[i] == cropped.ldr.rgba[i];
+        }
+        EXPECT_EQ(identical, int(whole.ldr.rgba.size())) << c.name;
+    }
+}
+
 TEST(Renderer, RejectsImpossibleSizes) {
     test::glContext();
     Renderer renderer;

@@ -41,6 +41,7 @@ void MeshBuffers::upload(const Mesh& mesh) {
                  mesh.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     indexCount_ = GLsizei(mesh.indices.size());
+    bounds_ = boundingBox(mesh);
 }
 
 void MeshBuffers::draw() const {

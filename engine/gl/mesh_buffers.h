@@ -15,10 +15,12 @@ public:
 
     void upload(const Mesh& mesh);
     void draw() const;
+    const BoundingBox& bounds() const { return bounds_; }
 
 private:
     GLuint vertexArray_ = 0, vertices_ = 0, indices_ = 0;
     GLsizei indexCount_ = 0;
+    BoundingBox bounds_;
 };
 
 }  // namespace patina

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -54,6 +55,38 @@ glm::mat4 viewProjection(const Camera& camera, float aspect) {
     const float farPlane = distance * 10.0f + 10.0f;
     return glm::perspective(glm::radians(camera.fovYDegrees), aspect, nearPlane, farPlane) *
            glm::lookAt(camera.position, camera.target, up);
+}
+
+PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height) {
+    if (box.empty()) {
+        return {};
+    }
+    const PixelRect whole{0, 0, width, height};
+    glm::vec2 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
+                          (corner & 4) ? box.high.z : box.low.z);
+        const glm::vec4 clip = transform * glm::vec4(p, 1.0f);
+        // In front of the eye the projection keeps the box's image inside its corners' hull;
+        // at or behind the eye plane it does not.
+        if (!(clip.w > 1e-6f)) {
+            return whole;
+        }
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        low = glm::min(low, ndc);
+        high = glm::max(high, ndc);
+    }
+    // NDC to pixels, out to whole pixels and one more for rounding; clamped so that far-off
+    // corners cannot overflow an int.
+    auto toPixel = [](float ndc, int size, float direction) {
+        const float pixel = (std::clamp(ndc, -2.0f, 2.0f) * 0.5f + 0.5f) * float(size) + direction;
+        return direction < 0 ? int(std::floor(pixel)) : int(std::ceil(pixel));
+    };
+    PixelRect rect{toPixel(low.x, width, -1.0f), toPixel(low.y, height, -1.0f), toPixel(high.x, width, 1.0f),
+                   toPixel(high.y, height, 1.0f)};
+    rect.x0 = std::clamp(rect.x0, 0, width), rect.x1 = std::clamp(rect.x1, 0, width);
+    rect.y0 = std::clamp(rect.y0, 0, height), rect.y1 = std::clamp(rect.y1, 0, height);
+    return rect;
 }
 
 namespace {
@@ -383,11 +416,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
             glUniform1i(program.uniform("uTonemap"), exposureTonemap);
         }
     };
-    auto displayStrip = [&](int top, int rows) {
+    // `area`: the pixels of the strip starting at image row `top` to write.
+    auto displayStrip = [&](int top, const PixelRect& area) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
         glViewport(0, 0, w, h);
         glEnable(GL_SCISSOR_TEST);
-        glScissor(0, top, w, rows);
+        glScissor(area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0);
         glDisable(GL_DEPTH_TEST);
         displayPass->use();
         glActiveTexture(GL_TEXTURE0);
@@ -407,11 +441,30 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glBindVertexArray(0);
         glDisable(GL_SCISSOR_TEST);
     };
+    // With MSAA, samples only where the mesh can be: most of a frame is often background, and
+    // there a sample costs a clear, a store and a resolve for nothing.
+    const PixelRect whole{0, 0, w, h};
+    const PixelRect meshArea =
+        msaa && settings.cropToMesh ? screenBounds(transform, s.mesh.bounds(), w, h) : whole;
+    if (meshArea != whole) {
+        glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
+        if (linear) {
+            glClearBufferfv(GL_COLOR, 0, clearLinear);
+        }
+        glClearBufferfv(GL_COLOR, 1, clearDisplay);
+    }
     for (int top = 0; top < h; top += stripRows) {
         const int rows = std::min(stripRows, h - top);
+        const PixelRect area{meshArea.x0, std::max(meshArea.y0, top), meshArea.x1, std::min(meshArea.y1, top + rows)};
+        if (area.empty()) {
+            continue;
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, t.shadingFramebuffer);
-        // The whole image's viewport, moved down so rows [top, top + rows) land in the strip.
+        // The whole image's viewport, moved down so rows [top, top + rows) land in the strip;
+        // the scissor (which clears obey too) keeps to the area.
         glViewport(0, -top, w, h);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
         glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
@@ -423,8 +476,9 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         }
         glClearBufferfv(GL_DEPTH, 0, &clearDepth);
         drawPasses(s, settings.passes, shading, packed.size(), prepare);
+        glDisable(GL_SCISSOR_TEST);
         if (displayPass) {
-            displayStrip(top, rows);
+            displayStrip(top, area);
         }
     }
     glViewport(0, 0, w, h);

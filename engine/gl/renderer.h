@@ -1,4 +1,5 @@
 #pragma once
+#include <compare>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -39,6 +40,10 @@ struct RenderSettings {
     // Keep the linear image, for readBack(slot, true) (and render() reads it back). Without it
     // no full-size linear image is written at all, which saves a pass's memory and bandwidth.
     bool readHdr = true;
+    // With MSAA, clear, shade and resolve only the pixels the mesh can cover (its bounding box
+    // on screen); the rest is background, filled without samples. false: every pixel, the
+    // same image (for tests).
+    bool cropToMesh = true;
 };
 
 struct RenderOutput {
@@ -47,6 +52,17 @@ struct RenderOutput {
 };
 
 glm::mat4 viewProjection(const Camera& camera, float aspect);
+
+// Pixels [x0, x1) x [y0, y1) of a w x h image, GL's bottom-up rows.
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+    auto operator<=>(const PixelRect&) const = default;
+};
+// Every pixel that anything inside `box` can cover, seen through `transform`: the projected
+// corners' bounds, a pixel wider on each side; the whole image when a corner is not in front of
+// the eye (the projection of the box is then unbounded); empty for an empty box.
+PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height);
 
 // Draws scenes with the shared shaders. Needs a current OpenGL 3.3 core context (a
 // HeadlessContext or the editor's window) for its whole life.
