@@ -17,6 +17,7 @@
 #include "../light_packing.h"
 #include "mesh_buffers.h"
 #include "program.h"
+#include "render_targets.h"
 #include "shading_inputs.h"
 #include "shading_programs.h"
 
@@ -90,106 +91,19 @@ PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int w
 }
 
 namespace {
-// A colour texture (multisampled when samples > 0) or a depth renderbuffer, remade when its
-// size, samples or format change.
-struct GlImage {
-    GLuint name = 0;
-    int width = 0, height = 0, samples = -1;
-    GLenum format = 0;
-    int actualSamples = 0;   // what the GL made of `samples` (it may round up)
-
-    ~GlImage() { release(); }
-
-    bool isDepth() const { return format == GL_DEPTH_COMPONENT24; }
-
-    void release() {
-        if (isDepth()) {
-            glDeleteRenderbuffers(1, &name);
-        } else {
-            glDeleteTextures(1, &name);
-        }
-        name = 0, width = height = 0, samples = -1, format = 0;
+// Rows per strip of an MSAA draw: as many as settings.maxTargetBytes of multisampled colour
+// allows, but never more than 16 strips (each draws the whole mesh). Without MSAA the shading
+// pass draws into the full-size images, so strips would save nothing.
+int stripRowsFor(const RenderSettings& settings, int samples) {
+    const int h = settings.height;
+    if (settings.maxTargetBytes == 0) {
+        return h;
     }
-
-    void ensure(int w, int h, int s, GLenum f) {
-        if (name && w == width && h == height && s == samples && f == format) {
-            return;
-        }
-        release();
-        width = w, height = h, samples = s, format = f;
-        if (isDepth()) {
-            glGenRenderbuffers(1, &name);
-            glBindRenderbuffer(GL_RENDERBUFFER, name);
-            glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, w, h);
-        } else if (samples > 0) {
-            glGenTextures(1, &name);
-            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, name);
-            glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, format, w, h, GL_TRUE);
-            glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &actualSamples);
-        } else {
-            glGenTextures(1, &name);
-            glBindTexture(GL_TEXTURE_2D, name);
-            glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        }
-    }
-};
-
-// Colour attachment 0 takes linear radiance and 1 display values, in every pass that writes
-// them (shade.frag, display.frag); nullptr leaves one out.
-void attach(GLuint framebuffer, const GlImage* linear, const GlImage* display, const GlImage* depth) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    const GlImage* colours[2] = {linear, display};
-    GLenum drawBuffers[2] = {GL_NONE, GL_NONE};
-    for (GLenum i = 0; i < 2; ++i) {
-        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, colours[i] ? colours[i]->name : 0, 0);
-        drawBuffers[i] = colours[i] ? GL_COLOR_ATTACHMENT0 + i : GL_NONE;
-    }
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth ? depth->name : 0);
-    glDrawBuffers(2, drawBuffers);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        const GlImage* any = linear ? linear : display;
-        throw std::runtime_error("OpenGL: render target " + std::to_string(any->width) + "x" +
-                                 std::to_string(any->height) + " is incomplete");
-    }
+    constexpr int kMaxStrips = 16;
+    const size_t bytesPerRow = size_t(settings.width) * size_t(samples) * 4 * sizeof(float);
+    return std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
+                    (h + kMaxStrips - 1) / kMaxStrips);
 }
-
-// Lets go of a framebuffer's images: deleting a texture detaches it only from the bound
-// framebuffer, so one left attached elsewhere would keep its memory.
-void detach(GLuint framebuffer) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    for (GLenum i = 0; i < 2; ++i) {
-        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, 0, 0);
-    }
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
-}
-
-// One slot's images. With MSAA: a strip of samples -> (display pass: resolve and display
-// transform) -> display, and linear when kept. Without: the shading pass draws straight into
-// the full-size images, and writes display values itself except for the multi path's sum.
-struct Targets {
-    GlImage samples;   // multisampled linear radiance, one strip tall (MSAA only)
-    GlImage depth;     // the shading pass's (multisampled with MSAA, one strip tall)
-    GlImage linear;    // the linear image, when kept
-    GlImage display;   // display-referred sRGB values, RGBA32F: bytes only on reading back
-    GLuint shadingFramebuffer = 0, displayFramebuffer = 0, readFramebuffer = 0;
-    bool drawn = false;       // the last draw finished: there is an image to read back
-    bool hasLinear = false;
-
-    Targets() {
-        for (GLuint* framebuffer : {&shadingFramebuffer, &displayFramebuffer, &readFramebuffer}) {
-            glGenFramebuffers(1, framebuffer);
-        }
-    }
-    ~Targets() {
-        for (GLuint* framebuffer : {&shadingFramebuffer, &displayFramebuffer, &readFramebuffer}) {
-            glDeleteFramebuffers(1, framebuffer);
-        }
-    }
-    Targets(const Targets&) = delete;
-    Targets& operator=(const Targets&) = delete;
-};
 
 template <typename T>
 void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
@@ -240,7 +154,7 @@ struct Renderer::State {
     LightBuffer lights;
     MeshBuffers mesh;
     GLuint emptyVertexArray = 0;
-    std::array<Targets, kSlots> targets;
+    std::array<RenderTargets, kSlots> targets;
     GLuint timerQuery = 0;
     bool timerPending = false;
     double gpuMilliseconds = -1.0;
@@ -325,7 +239,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     if (slot < 0 || slot >= kSlots) {
         throw std::invalid_argument("render slot " + std::to_string(slot) + " does not exist");
     }
-    Targets& t = s.targets[size_t(slot)];
+    RenderTargets& t = s.targets[size_t(slot)];
     const int w = settings.width, h = settings.height;
     const int samples = std::clamp(settings.samples, 0, s.maxSamples);
     const bool msaa = samples > 1;
@@ -338,43 +252,13 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
 
     // Everything that can throw (targets the GL cannot make, a shader that does not compile)
     // comes before the timer query starts, so a failed draw leaves no state behind.
-    const size_t bytesPerRow = size_t(w) * size_t(std::max(samples, 1)) * 4 * sizeof(float);
-    // Strips as the budget allows, but never more than kMaxStrips: each draws the whole mesh.
-    // Without MSAA the shading pass draws into the full-size images: strips would save nothing.
-    constexpr int kMaxStrips = 16;
-    const int stripRows =
-        settings.maxTargetBytes == 0 || !msaa
-            ? h
-            : std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
-                       (h + kMaxStrips - 1) / kMaxStrips);
+    const int stripRows = msaa ? stripRowsFor(settings, samples) : h;
     // Until this draw succeeds the slot has nothing to read back.
     t.drawn = false;
-    t.display.ensure(w, h, 0, GL_RGBA32F);
     const bool keepLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
-    if (keepLinear) {
-        t.linear.ensure(w, h, 0, GL_RGBA32F);
-    } else {
-        t.linear.release();
-    }
+    t.prepare(w, h, stripRows, samples, keepLinear, displayInPass);
     const GlImage* linear = keepLinear ? &t.linear : nullptr;
-    const GlProgram* displayPass = nullptr;
-    if (msaa) {
-        t.samples.ensure(w, stripRows, samples, GL_RGBA32F);
-        t.depth.ensure(w, stripRows, samples, GL_DEPTH_COMPONENT24);
-        attach(t.shadingFramebuffer, &t.samples, nullptr, &t.depth);
-        attach(t.displayFramebuffer, linear, &t.display, nullptr);
-        displayPass = &s.resolve.get();
-    } else {
-        t.samples.release();
-        t.depth.ensure(w, h, 0, GL_DEPTH_COMPONENT24);
-        attach(t.shadingFramebuffer, linear, displayInPass ? &t.display : nullptr, &t.depth);
-        if (!displayInPass) {
-            attach(t.displayFramebuffer, nullptr, &t.display, nullptr);
-            displayPass = &s.display.get();
-        } else {
-            detach(t.displayFramebuffer);
-        }
-    }
+    const GlProgram* displayPass = msaa ? &s.resolve.get() : displayInPass ? nullptr : &s.display.get();
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
@@ -497,7 +381,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
 }
 
 RenderOutput Renderer::readBack(int slot, bool hdr) const {
-    const Targets& t = state_->targets.at(size_t(slot));
+    const RenderTargets& t = state_->targets.at(size_t(slot));
     if (hdr && t.drawn && !t.hasLinear) {
         throw std::logic_error("render slot " + std::to_string(slot) +
                                " was drawn without its linear image (RenderSettings::readHdr)");
