@@ -85,7 +85,9 @@ void RenderTargets::prepare(int w, int h, int stripRows, int sampleCount, bool k
     const GlImage* kept = keepLinear ? &linear : nullptr;
     if (sampleCount > 1) {
         samples.ensure(w, stripRows, sampleCount, GL_RGBA32F);
-        depth.ensure(w, stripRows, sampleCount, GL_DEPTH_COMPONENT24);
+        // The same count as the colour got: a GL may round textures and renderbuffers apart,
+        // and attachments of different counts make the framebuffer incomplete.
+        depth.ensure(w, stripRows, samples.actualSamples, GL_DEPTH_COMPONENT24);
         attach(shadingFramebuffer, &samples, nullptr, &depth);
         attach(displayFramebuffer, kept, &display, nullptr);
         return;
