@@ -122,7 +122,6 @@ int toneMapIndex(Tonemap tonemap) {
     }
     return shader::TONEMAP_NONE;
 }
-}  // namespace
 
 // A program compiled on first use: a render that needs no pre-pass or display pass (no multi
 // path, no MSAA) compiles neither.
@@ -143,6 +142,7 @@ private:
     std::vector<std::string> defines_;
     std::unique_ptr<GlProgram> program_;
 };
+}  // namespace
 
 struct Renderer::State {
     ShadingPrograms shading;
