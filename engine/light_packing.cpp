@@ -29,6 +29,10 @@ shader::PackedLight packLight(const Light& light) {
     return packed;
 }
 
+bool hasKarisAttenuation(const shader::PackedLight& light) {
+    return light.type == shader::LIGHT_POINT && light.attenuation == shader::KARIS_ATTENUATION;
+}
+
 std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights) {
     std::vector<shader::PackedLight> packed;
     for (int type : {shader::LIGHT_POINT, shader::LIGHT_DIRECTIONAL, shader::LIGHT_HEMISPHERE}) {

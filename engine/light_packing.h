@@ -15,5 +15,7 @@ std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lig
 glm::ivec4 packedLightCounts(const std::vector<shader::PackedLight>& packed);
 
 shader::PackedLight packLight(const Light& light);
+// A packed point light whose coefficients are exactly KARIS_ATTENUATION.
+bool hasKarisAttenuation(const shader::PackedLight& light);
 
 }  // namespace patina

@@ -69,7 +69,7 @@ size_t triangleCount(const Mesh& mesh) {
     return mesh.indices.size() / 3;
 }
 
-const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, LightType added, int lights) {
+const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, AddedLights added, int lights) {
     for (const LightCountRow& row : result.lightRows) {
         if (row.path == path && row.added == added && row.lights == lights) {
             return &row.time;
@@ -78,16 +78,20 @@ const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, Li
     return nullptr;
 }
 
-// Every path with point lights added, and single again with directional lights added (whose
-// light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost).
-// The floor's scene is the lights as directions, the same for both.
+// The paths single, multi and specialised against light count, as bench-render draws them.
+constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
+    {PassMode::Multi, AddedLights::Points},       {PassMode::Single, AddedLights::Points},
+    {PassMode::Specialised, AddedLights::Points}, {PassMode::BrdfFloor, AddedLights::Points},
+    {PassMode::Single, AddedLights::Directionals}, {PassMode::Specialised, AddedLights::PointsOtherAttenuation}};
+
+// Every path with point lights added; single again with directional lights added (whose
+// light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
+// specialised again with points whose coefficients it must read. The floor's scene is the
+// lights as directions, the same for all.
 void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                         RenderBenchResult& result) {
     const std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
-    const std::pair<PassMode, LightType> series[] = {
-        {PassMode::Multi, LightType::Point},       {PassMode::Single, LightType::Point},
-        {PassMode::Specialised, LightType::Point}, {PassMode::BrdfFloor, LightType::Point},
-        {PassMode::Single, LightType::Directional}};
+    const auto& series = kLightSeries;
     std::map<std::tuple<int, int, int>, Samples> samples;
     interleaved(options.runs, [&](bool keep) {
         for (int count : counts) {
@@ -155,7 +159,16 @@ void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& resul
 }
 }  // namespace
 
-Scene renderBenchScene(int lights, LightType added) {
+std::string_view addedLightsName(AddedLights added) {
+    switch (added) {
+    case AddedLights::Points: return "point";
+    case AddedLights::PointsOtherAttenuation: return "point-other-attenuation";
+    case AddedLights::Directionals: return "directional";
+    }
+    return "point";
+}
+
+Scene renderBenchScene(int lights, AddedLights added) {
     Scene scene = defaultScene();
     if (lights <= int(scene.lights.size())) {
         scene.lights.resize(size_t(std::max(lights, 0)));
@@ -165,14 +178,17 @@ Scene renderBenchScene(int lights, LightType added) {
     for (int i = 0; i < extra; ++i) {
         const float angle = 6.2831853f * (float(i) + 0.5f) / float(extra);
         Light light;
-        light.type = added;
+        const bool point = added != AddedLights::Directionals;
+        light.type = point ? LightType::Point : LightType::Directional;
         light.name = "ring " + std::to_string(i + 1);
         light.position = {2.5f * std::cos(angle), 2.5f * std::sin(angle), 2.0f};
         light.direction = -light.position;
         light.radius = 12.0f;
-        light.attenuation = {1.0f, 0.0f, 1.0f};
+        // At the ring's distance (about 3.2) both give about the same light.
+        light.attenuation = added == AddedLights::PointsOtherAttenuation ? glm::vec3(0.5f, 0.25f, 0.9f)
+                                                                         : glm::vec3(1.0f, 0.0f, 1.0f);
         // The ring adds about one key light in all.
-        light.intensity = (added == LightType::Point ? 24.0f : 2.0f) / float(extra);
+        light.intensity = (point ? 24.0f : 2.0f) / float(extra);
         scene.lights.push_back(light);
     }
     return scene;
@@ -214,7 +230,7 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     // Wall time to glFinish: llvmpipe's GL_TIME_ELAPSED agrees with it for whole frames, but
     // not for every split of the work (it reported 9 ms for a frame that took 49 ms without its
     // display pass), so the targets do not lean on it.
-    auto gpu = [&](PassMode path, int lights, LightType added = LightType::Point) {
+    auto gpu = [&](PassMode path, int lights, AddedLights added = AddedLights::Points) {
         const FrameTiming* t = findLights(result, path, added, lights);
         return t ? t->frame : std::nan("");
     };
@@ -228,17 +244,19 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     for (const LightCountRow& row : result.lightRows) {
         most = std::max(most, row.lights);
     }
-    auto perLight = [&](PassMode path, LightType added) {
+    auto perLight = [&](PassMode path, AddedLights added) {
         return (gpu(path, most, added) - gpu(path, 8, added)) / double(most - 8);
     };
-    const double floor = perLight(PassMode::BrdfFloor, LightType::Point);
+    const double floor = perLight(PassMode::BrdfFloor, AddedLights::Points);
     const std::string range = " (8 to " + std::to_string(most) + " lights)";
     add("single's cost per added directional light / the BRDF floor's" + range,
-        perLight(PassMode::Single, LightType::Directional) / floor, 1.3);
+        perLight(PassMode::Single, AddedLights::Directionals) / floor, 1.3);
     add("single's cost per added point light / the BRDF floor's" + range,
-        perLight(PassMode::Single, LightType::Point) / floor, 1.3);
+        perLight(PassMode::Single, AddedLights::Points) / floor, 1.3);
     add("specialised's cost per added point light / the BRDF floor's" + range,
-        perLight(PassMode::Specialised, LightType::Point) / floor, 1.3);
+        perLight(PassMode::Specialised, AddedLights::Points) / floor, 1.3);
+    add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,
+        perLight(PassMode::Specialised, AddedLights::PointsOtherAttenuation) / floor, 1.3);
     return targets;
 }
 
@@ -247,7 +265,7 @@ std::string renderBenchCsv(const RenderBenchResult& result) {
     char line[256];
     for (const LightCountRow& row : result.lightRows) {
         std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f\n",
-                      std::string(passModeName(row.path)).c_str(), std::string(lightTypeName(row.added)).c_str(),
+                      std::string(passModeName(row.path)).c_str(), std::string(addedLightsName(row.added)).c_str(),
                       row.lights, result.width, result.height,
                       result.triangles, row.time.gpu, row.time.cpu, row.time.frame);
         csv += line;
@@ -277,12 +295,12 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
                   result.samples);
     ChartPanel panel{title, "enabled lights", "frame time to glFinish (ms, median)", false, false, {}};
     size_t colour = 0;
-    for (const auto& [path, added] : {std::pair{PassMode::Multi, LightType::Point}, {PassMode::Single, LightType::Point},
-                                      {PassMode::Specialised, LightType::Point}, {PassMode::BrdfFloor, LightType::Point},
-                                      {PassMode::Single, LightType::Directional}}) {
+    for (const auto& [path, added] : kLightSeries) {
+        const char* what = added == AddedLights::Points         ? "points"
+                           : added == AddedLights::Directionals ? "directionals"
+                                                                : "points, other coefficients";
         const std::string label = std::string(passModeName(path)) +
-                                  (path == PassMode::BrdfFloor ? " (BRDF alone)"
-                                                               : ", " + std::string(lightTypeName(added)) + "s added");
+                                  (path == PassMode::BrdfFloor ? " (BRDF alone)" : ", " + std::string(what) + " added");
         ChartSeries series{label, {}, chartColour(colour++), true, true, path == PassMode::BrdfFloor, {}};
         for (const LightCountRow& row : result.lightRows) {
             if (row.path == path && row.added == added) {

@@ -3,6 +3,7 @@
 // resolution and triangle count (issue 6). Needs a current GL context. Times are medians of
 // interleaved runs in one process; compare ratios, not absolute times, across machines.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "chart.h"
@@ -25,9 +26,18 @@ struct FrameTiming {
     double frame = 0.0;   // wall clock from draw to glFinish
 };
 
+// The lights past the default scene's first 3: a ring in front of the sphere.
+enum class AddedLights {
+    Points,                  // windowed points with Karis's coefficients (1, 0, 1), the default
+    PointsOtherAttenuation,  // the same with other coefficients, which a shader must read
+    Directionals,
+};
+// "point", "point-other-attenuation", "directional" (the CSV's `added` column).
+std::string_view addedLightsName(AddedLights added);
+
 struct LightCountRow {
     PassMode path;        // Single, Multi, Specialised or BrdfFloor
-    LightType added = LightType::Point;   // the type of the lights past the default scene's 3
+    AddedLights added = AddedLights::Points;
     int lights = 0;
     FrameTiming time;
 };
@@ -49,9 +59,8 @@ struct RenderBenchResult {
     std::string renderer;   // GL_RENDERER
 };
 
-// The default scene with `lights` lights: its first `lights` for up to 3, then more lights of
-// type `added` (windowed points, or directionals) in a ring in front of the sphere.
-Scene renderBenchScene(int lights, LightType added = LightType::Point);
+// The default scene with `lights` lights: its first `lights` for up to 3, then the ring.
+Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
 // The same lights as directions only, for the BrdfFloor pass.
 Scene brdfFloorScene(const Scene& scene);
 

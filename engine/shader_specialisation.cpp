@@ -1,5 +1,7 @@
 #include "shader_specialisation.h"
 
+#include "light_packing.h"
+
 namespace patina {
 
 std::vector<std::string> ShaderSpecialisation::defines() const {
@@ -20,7 +22,8 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
         const std::string index = std::to_string(i);
         std::string call;
         if (light.type == shader::LIGHT_POINT) {
-            call = "SHADE_POINT(" + index + (light.inverseRadius > 0.0f ? ", true)" : ", false)");
+            call = "SHADE_POINT(" + index + (light.inverseRadius > 0.0f ? ", true, " : ", false, ") +
+                   (hasKarisAttenuation(light) ? "true)" : "false)");
         } else if (light.type == shader::LIGHT_DIRECTIONAL) {
             call = "SHADE_DIRECTIONAL(" + index + ")";
         } else if (!key.noDiffuse) {

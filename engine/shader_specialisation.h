@@ -1,7 +1,8 @@
 #pragma once
 // What a shader specialised to one scene compiles (shaders/shade.frag, PATINA_SPECIALISED):
 // exactly the scene's enabled lights, in order, each with only its type's code; no attenuation
-// window for a point light of radius <= 0; no diffuse term (and no hemisphere light, which is
+// window for a point light of radius <= 0, and constant coefficients for one with
+// KARIS_ATTENUATION; no diffuse term (and no hemisphere light, which is
 // diffuse only) for a material whose c_diff is exactly 0. Values the artist drags (positions,
 // colours, material parameters) stay uniforms, so only a change of this key recompiles.
 #include <compare>
@@ -14,7 +15,7 @@
 namespace patina {
 
 struct ShaderSpecialisation {
-    std::string lights;   // PATINA_LIGHTS: "SHADE_POINT(0, true) SHADE_DIRECTIONAL(1) ..."
+    std::string lights;   // PATINA_LIGHTS: "SHADE_POINT(0, true, true) SHADE_DIRECTIONAL(1) ..."
     bool noDiffuse = false;
 
     auto operator<=>(const ShaderSpecialisation&) const = default;

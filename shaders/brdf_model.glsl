@@ -118,15 +118,18 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 // Each light type on its own, so a shader specialised to a scene (shade.frag's
 // PATINA_SPECIALISED) compiles only the types it has; shadeLight picks one at run time.
 // `windowed` false skips the window's arithmetic: a constant, for a specialised shader whose
-// light has radius 0 (true is right for every light: 1/radius = 0 gives window 1).
-PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+// light has radius 0 (true is right for every light: 1/radius = 0 gives window 1). `karis`
+// true takes KARIS_ATTENUATION for the light's coefficients instead of reading them: only for
+// a light that has exactly those (hasKarisAttenuation, light_packing.h).
+PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
     float distanceSquared = dot(toLight, toLight);
     // Clamped so the light on the shaded point still gives finite numbers; selected away below.
     float inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     float t = distanceSquared * inverseDistance;
     // 0 turns the window off: with `windowed` a constant, the compiler folds it away.
-    float attenuation = pointLightAttenuation(t, windowed ? light.inverseRadius : 0.0f, light.attenuation);
+    float attenuation = pointLightAttenuation(t, windowed ? light.inverseRadius : 0.0f,
+                                              karis ? KARIS_ATTENUATION : light.attenuation);
     vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
     // A light on the shaded point has no direction: no light.
     return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? value : vec3(0.0f);
@@ -149,7 +152,7 @@ PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 
         return shadeHemisphereLight(light, material, N, V);
     }
     if (light.type == LIGHT_POINT) {
-        return shadePointLight(light, true, material, P, N, V);
+        return shadePointLight(light, true, false, material, P, N, V);
     }
     return shadeDirectionalLight(light, material, N, V);
 }

@@ -34,6 +34,12 @@ struct PackedLight {
     float unused3;
 };
 
+// a_c, a_l, a_q of Karis 2013's falloff denominator d^2 + 1 (eq. 9), every Light's default.
+// A specialised shader compiles a light with exactly these as this constant: llvmpipe turns
+// each uniform scalar a fragment shader reads into a per-lane gather, and these are three
+// (docs/PERFORMANCE.md).
+const vec3 KARIS_ATTENUATION = vec3(1.0f, 0.0f, 1.0f);
+
 // Windowed distance attenuation (spec section 1, after Karis 2013 eq. 9, with the general
 // a_c + a_l t + a_q t^2 denominator): clamp(1 - (t/radius)^4, 0, 1)^2 / (a_c + a_l t + a_q t^2).
 // Takes 1/radius, packed on the CPU: no division, and no branch for "no window", which

@@ -2,8 +2,8 @@
 // PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
 // renderer adds the passes with blending (the seed's multi-pass design).
 // PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as SHADE_POINT(i,
-// windowed), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light loop and
-// no code for a type the scene lacks (engine/shader_specialisation.h builds the list).
+// windowed, karis), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light
+// loop and no code for a type the scene lacks (engine/shader_specialisation.h builds the list).
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -47,7 +47,7 @@ void main() {
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
-#define SHADE_POINT(i, windowed) radiance += shadePointLight(uLights[i], windowed, material, vPosition, N, V);
+#define SHADE_POINT(i, windowed, karis) radiance += shadePointLight(uLights[i], windowed, karis, material, vPosition, N, V);
 #define SHADE_DIRECTIONAL(i) radiance += shadeDirectionalLight(uLights[i], material, N, V);
 #define SHADE_HEMISPHERE(i) radiance += shadeHemisphereLight(uLights[i], material, N, V);
 // The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for light i's
@@ -59,7 +59,7 @@ void main() {
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.
     int end = uLightCount.y;
     for (int i = 0; i < end; ++i) {
-        radiance += shadePointLight(uLights[i], true, material, vPosition, N, V);
+        radiance += shadePointLight(uLights[i], true, false, material, vPosition, N, V);
     }
     int start = end;
     end += uLightCount.z;

@@ -13,6 +13,7 @@
 #include "half.h"
 #include "cli_runner.h"
 #include "image.h"
+#include "light_packing.h"
 #include "render_bench.h"
 #include "scratch_test.h"
 #include "stability.h"
@@ -57,7 +58,8 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
         }
     }
     for (const char* series : {"lights multi point", "lights single point", "lights specialised point",
-                               "lights brdf-floor point", "lights single directional"}) {
+                               "lights brdf-floor point", "lights single directional",
+                               "lights specialised point-other-attenuation"}) {
         EXPECT_EQ(perSeries[series], 4) << series;   // --quick: 1, 3, 8 and 16 lights
     }
     EXPECT_EQ(perSeries["resolution single "], 2);
@@ -74,7 +76,7 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
 
 TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
     for (int count : {0, 1, 3, 8, 32}) {
-        const Scene scene = renderBenchScene(count, LightType::Directional);
+        const Scene scene = renderBenchScene(count, AddedLights::Directionals);
         ASSERT_EQ(int(scene.lights.size()), count);
         for (const Light& light : brdfFloorScene(scene).lights) {
             EXPECT_EQ(light.type, LightType::Directional);
@@ -83,27 +85,33 @@ TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
     }
     const Scene points = renderBenchScene(8);
     EXPECT_EQ(points.lights.back().type, LightType::Point);
+    EXPECT_TRUE(hasKarisAttenuation(packLight(points.lights.back())));
+    const Scene others = renderBenchScene(8, AddedLights::PointsOtherAttenuation);
+    EXPECT_EQ(others.lights.back().type, LightType::Point);
+    EXPECT_FALSE(hasKarisAttenuation(packLight(others.lights.back())));
     EXPECT_EQ(points.lights[1].type, defaultScene().lights[1].type);   // the default scene's first
 }
 
 TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     RenderBenchResult result;
-    auto add = [&](PassMode path, LightType added, int lights, double frame) {
+    auto add = [&](PassMode path, AddedLights added, int lights, double frame) {
         result.lightRows.push_back({path, added, lights, {0.0, 0.0, frame}});
     };
-    add(PassMode::Multi, LightType::Point, 8, 100.0);
-    add(PassMode::Single, LightType::Point, 8, 30.0);
-    add(PassMode::Single, LightType::Point, 3, 20.0);
-    add(PassMode::Specialised, LightType::Point, 3, 16.0);
-    add(PassMode::Single, LightType::Point, 16, 30.0 + 8 * 3.0);
-    add(PassMode::BrdfFloor, LightType::Point, 8, 10.0);
-    add(PassMode::BrdfFloor, LightType::Point, 16, 10.0 + 8 * 2.0);
-    add(PassMode::Single, LightType::Directional, 8, 20.0);
-    add(PassMode::Single, LightType::Directional, 16, 20.0 + 8 * 2.4);
-    add(PassMode::Specialised, LightType::Point, 8, 20.0);
-    add(PassMode::Specialised, LightType::Point, 16, 20.0 + 8 * 2.8);
+    add(PassMode::Multi, AddedLights::Points, 8, 100.0);
+    add(PassMode::Single, AddedLights::Points, 8, 30.0);
+    add(PassMode::Single, AddedLights::Points, 3, 20.0);
+    add(PassMode::Specialised, AddedLights::Points, 3, 16.0);
+    add(PassMode::Single, AddedLights::Points, 16, 30.0 + 8 * 3.0);
+    add(PassMode::BrdfFloor, AddedLights::Points, 8, 10.0);
+    add(PassMode::BrdfFloor, AddedLights::Points, 16, 10.0 + 8 * 2.0);
+    add(PassMode::Single, AddedLights::Directionals, 8, 20.0);
+    add(PassMode::Single, AddedLights::Directionals, 16, 20.0 + 8 * 2.4);
+    add(PassMode::Specialised, AddedLights::Points, 8, 20.0);
+    add(PassMode::Specialised, AddedLights::Points, 16, 20.0 + 8 * 2.8);
+    add(PassMode::Specialised, AddedLights::PointsOtherAttenuation, 8, 32.0);
+    add(PassMode::Specialised, AddedLights::PointsOtherAttenuation, 16, 32.0 + 8 * 3.6);
     const std::vector<TargetCheck> targets = renderBenchTargets(result);
-    ASSERT_EQ(targets.size(), 5u);
+    ASSERT_EQ(targets.size(), 6u);
     EXPECT_DOUBLE_EQ(targets[0].value, 0.3);
     EXPECT_TRUE(targets[0].met);
     EXPECT_DOUBLE_EQ(targets[1].value, 0.8);
@@ -112,6 +120,8 @@ TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     EXPECT_NEAR(targets[3].value, 1.5, 1e-12);   // point: 3 / 2
     EXPECT_FALSE(targets[3].met);
     EXPECT_NEAR(targets[4].value, 1.4, 1e-12);
+    EXPECT_NEAR(targets[5].value, 1.8, 1e-12);   // point, other coefficients: 3.6 / 2
+    EXPECT_NE(targets[5].name.find("other coefficients"), std::string::npos);
 }
 
 TEST_F(AccuracyCommands, BenchWritesOneRowPerModelAndTheChart) {

@@ -133,5 +133,30 @@ TEST(Lights, DisabledLightsAddNothingAndLightsAddUp) {
     EXPECT_EQ(probeOnCpu(m, {a, b}, {{P, N, V}})[0], shadeOne(m, a, P, N, V));
 }
 
+// Every light's default is Karis's falloff; only a point light's coefficients count.
+TEST(LightPacking, KnowsKarisCoefficients) {
+    EXPECT_TRUE(hasKarisAttenuation(packLight(Light{})));
+    EXPECT_FALSE(hasKarisAttenuation(packLight(pointLight(2.0f))));
+    Light sun;
+    sun.type = LightType::Directional;
+    EXPECT_FALSE(hasKarisAttenuation(packLight(sun)));
+}
+
+// The constant stands in for the coefficients exactly where they are Karis's.
+TEST(PointLight, KarisConstantMatchesReadingKarisCoefficients) {
+    const shader::SurfaceMaterial material = surfaceMaterial(Material{});
+    const glm::vec3 P(0.3f, 0.1f, 0.2f), N(0.0f, 1.0f, 0.0f), V = glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f));
+    Light light = pointLight(6.0f);
+    light.position = {1.0f, 2.0f, 0.5f};
+    light.attenuation = {1.0f, 0.0f, 1.0f};
+    const shader::PackedLight karis = packLight(light);
+    EXPECT_EQ(shader::shadePointLight(karis, true, true, material, P, N, V),
+              shader::shadePointLight(karis, true, false, material, P, N, V));
+    light.attenuation = {0.5f, 0.25f, 1.0f};
+    const shader::PackedLight other = packLight(light);
+    EXPECT_NE(shader::shadePointLight(other, true, true, material, P, N, V),
+              shader::shadePointLight(other, true, false, material, P, N, V));
+}
+
 }  // namespace
 }  // namespace patina

@@ -67,9 +67,10 @@ Scene onlyLightsOfType(LightType type, int count) {
 }
 
 // Single, multi and specialised: the same image to rounding, for 0, 1 and many lights of each
-// type, a point light without a window and a pure metal (whose shader drops diffuse). With MSAA
-// all three resolve in the display pass; without, single and specialised write the display
-// image in the shading pass and multi in a display pass after its sum.
+// type, a point light without a window, points with and without Karis's coefficients, and a
+// pure metal (whose shader drops diffuse). With MSAA all three resolve in the display pass;
+// without, single and specialised write the display image in the shading pass and multi in a
+// display pass after its sum.
 TEST(Renderer, AllThreePassModesAgree) {
     test::glContext();
     Renderer renderer;
@@ -79,6 +80,10 @@ TEST(Renderer, AllThreePassModesAgree) {
     torus.mesh = MeshKind::Torus;
     Scene unwindowed = onlyLightsOfType(LightType::Point, 3);
     unwindowed.lights[1].radius = 0.0f;
+    // Points with Karis's coefficients and others, interleaved: packed into two groups.
+    Scene mixedAttenuation = onlyLightsOfType(LightType::Point, 4);
+    mixedAttenuation.lights[0].attenuation = {0.2f, 0.1f, 0.6f};
+    mixedAttenuation.lights[2].attenuation = {0.0f, 0.0f, 1.0f};
     Scene metal = manyLightScene(2);
     metal.material.metallic = 1.0f;
     metal.material.baseColor = {0.95f, 0.64f, 0.54f};
@@ -88,7 +93,7 @@ TEST(Renderer, AllThreePassModesAgree) {
     };
     std::vector<Case> cases = {{"default", defaultScene()},  {"no lights", noLights},
                                {"30 lights on a torus", torus}, {"a point light of radius 0", unwindowed},
-                               {"pure metal", metal}};
+                               {"pure metal", metal}, {"points with other coefficients", mixedAttenuation}};
     for (LightType type : {LightType::Point, LightType::Directional, LightType::Hemisphere}) {
         for (int count : {1, 12}) {
             cases.push_back({std::to_string(count) + " " + std::string(lightTypeName(type)),

@@ -12,7 +12,7 @@ namespace {
 TEST(ShaderSpecialisation, DefaultSceneListsItsThreeLightsInOrder) {
     const Scene scene = defaultScene();
     const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
-    EXPECT_EQ(key.lights, "SHADE_POINT(0, true) SHADE_DIRECTIONAL(1) SHADE_HEMISPHERE(2)");
+    EXPECT_EQ(key.lights, "SHADE_POINT(0, true, true) SHADE_DIRECTIONAL(1) SHADE_HEMISPHERE(2)");
     EXPECT_FALSE(key.noDiffuse);
 }
 
@@ -22,7 +22,18 @@ TEST(ShaderSpecialisation, DisabledLightsAndUnwindowedPointsCompileLess) {
     scene.lights[0].radius = 0.0f;
     const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
     // Indices follow the uniform block, which holds enabled lights only.
-    EXPECT_EQ(key.lights, "SHADE_POINT(0, false) SHADE_HEMISPHERE(1)");
+    EXPECT_EQ(key.lights, "SHADE_POINT(0, false, true) SHADE_HEMISPHERE(1)");
+}
+
+// Karis's coefficients compile as constants; any other set is read from the light.
+TEST(ShaderSpecialisation, OnlyKarisCoefficientsCompileAsConstants) {
+    Scene scene = defaultScene();
+    scene.lights[0].attenuation = {1.0f, 0.0f, 0.5f};
+    EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material).lights,
+              "SHADE_POINT(0, true, false) SHADE_DIRECTIONAL(1) SHADE_HEMISPHERE(2)");
+    scene.lights.push_back(defaultScene().lights[0]);   // Karis's again, packed after the other point
+    EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material).lights,
+              "SHADE_POINT(0, true, false) SHADE_POINT(1, true, true) SHADE_DIRECTIONAL(2) SHADE_HEMISPHERE(3)");
 }
 
 TEST(ShaderSpecialisation, PureMetalDropsDiffuseAndTheHemisphereLight) {
@@ -30,7 +41,7 @@ TEST(ShaderSpecialisation, PureMetalDropsDiffuseAndTheHemisphereLight) {
     scene.material.metallic = 1.0f;
     ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
     EXPECT_TRUE(key.noDiffuse);
-    EXPECT_EQ(key.lights, "SHADE_POINT(0, true) SHADE_DIRECTIONAL(1)");
+    EXPECT_EQ(key.lights, "SHADE_POINT(0, true, true) SHADE_DIRECTIONAL(1)");
     // Almost metal still has a diffuse term; a black dielectric has none.
     scene.material.metallic = 0.999f;
     EXPECT_FALSE(specialiseFor(packEnabledLights(scene.lights), scene.material).noDiffuse);
