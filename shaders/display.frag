@@ -18,10 +18,13 @@ layout(location = 1) out vec4 displayColor;
 void main() {
 #ifdef PATINA_MULTISAMPLED
     ivec2 texel = ivec2(gl_FragCoord.xy) - ivec2(0, uStripTop);
+    // Tested at the end, as shade.frag's light loops are (a test at the top costs llvmpipe one
+    // more fetch with every lane off); a multisampled texture has at least one sample.
     vec3 sum = vec3(0.0f);
-    for (int i = 0; i < uSampleCount; ++i) {
+    int i = 0;
+    do {
         sum += texelFetch(uSamples, texel, i).rgb;
-    }
+    } while (++i < uSampleCount);
     vec3 linear = sum / float(uSampleCount);
 #else
     vec3 linear = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb;

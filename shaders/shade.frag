@@ -57,19 +57,32 @@ void main() {
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.
+    // Each loop tests at its end. llvmpipe has no jump for a test all lanes agree on: a body
+    // runs until no lane is left in the loop, so a test at the top costs one more pass of the
+    // body with every lane off. The `if` costs such a pass only when a type has no lights.
+    int first = 0;
     int end = uLightCount.y;
-    for (int i = 0; i < end; ++i) {
-        radiance += shadePointLight(uLights[i], true, false, material, vPosition, N, V);
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadePointLight(uLights[i], true, false, material, vPosition, N, V);
+        } while (++i < end);
     }
-    int start = end;
+    first = end;
     end += uLightCount.z;
-    for (int i = start; i < end; ++i) {
-        radiance += shadeDirectionalLight(uLights[i], material, N, V);
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadeDirectionalLight(uLights[i], material, N, V);
+        } while (++i < end);
     }
-    start = end;
+    first = end;
     end += uLightCount.w;
-    for (int i = start; i < end; ++i) {
-        radiance += shadeHemisphereLight(uLights[i], material, N, V);
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadeHemisphereLight(uLights[i], material, N, V);
+        } while (++i < end);
     }
 #else
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
