@@ -82,12 +82,13 @@ const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, Ad
 constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
     {PassMode::Multi, AddedLights::Points},       {PassMode::Single, AddedLights::Points},
     {PassMode::Specialised, AddedLights::Points}, {PassMode::BrdfFloor, AddedLights::Points},
-    {PassMode::Single, AddedLights::Directionals}, {PassMode::Specialised, AddedLights::PointsOtherAttenuation}};
+    {PassMode::Single, AddedLights::Directionals}, {PassMode::Single, AddedLights::PointsOtherAttenuation},
+    {PassMode::Specialised, AddedLights::PointsOtherAttenuation}};
 
 // Every path with point lights added; single again with directional lights added (whose
 // light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
-// specialised again with points whose coefficients it must read. The floor's scene is the
-// lights as directions, the same for all.
+// single and specialised again with points whose coefficients they must read. The floor's
+// scene is the lights as directions, the same for all.
 void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                         RenderBenchResult& result) {
     const std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
@@ -253,6 +254,8 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
         perLight(PassMode::Single, AddedLights::Directionals) / floor, 1.3);
     add("single's cost per added point light / the BRDF floor's" + range,
         perLight(PassMode::Single, AddedLights::Points) / floor, 1.3);
+    add("single's cost per added point light with other coefficients / the BRDF floor's" + range,
+        perLight(PassMode::Single, AddedLights::PointsOtherAttenuation) / floor, 1.3);
     add("specialised's cost per added point light / the BRDF floor's" + range,
         perLight(PassMode::Specialised, AddedLights::Points) / floor, 1.3);
     add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,

@@ -1,6 +1,7 @@
 // Shades the mesh (or, with PATINA_PROBE, one probe row per pixel) in linear light.
 // PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
-// renderer adds the passes with blending (the seed's multi-pass design).
+// renderer adds the passes with blending (the seed's multi-pass design). PATINA_KARIS_POINTS:
+// every point light has KARIS_ATTENUATION, so single need not read the coefficients.
 // PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as SHADE_POINT(i,
 // windowed, karis), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light
 // loop and no code for a type the scene lacks (engine/shader_specialisation.h builds the list).
@@ -60,12 +61,17 @@ void main() {
     // Each loop tests at its end. llvmpipe has no jump for a test all lanes agree on: a body
     // runs until no lane is left in the loop, so a test at the top costs one more pass of the
     // body with every lane off. The `if` costs such a pass only when a type has no lights.
+#ifdef PATINA_KARIS_POINTS
+    const bool karisPoints = true;   // every point light has KARIS_ATTENUATION
+#else
+    const bool karisPoints = false;
+#endif
     int first = 0;
     int end = uLightCount.y;
     if (first < end) {
         int i = first;
         do {
-            radiance += shadePointLight(uLights[i], true, false, material, vPosition, N, V);
+            radiance += shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V);
         } while (++i < end);
     }
     first = end;

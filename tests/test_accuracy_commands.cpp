@@ -59,7 +59,7 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
     }
     for (const char* series : {"lights multi point", "lights single point", "lights specialised point",
                                "lights brdf-floor point", "lights single directional",
-                               "lights specialised point-other-attenuation"}) {
+                               "lights single point-other-attenuation", "lights specialised point-other-attenuation"}) {
         EXPECT_EQ(perSeries[series], 4) << series;   // --quick: 1, 3, 8 and 16 lights
     }
     EXPECT_EQ(perSeries["resolution single "], 2);
@@ -108,10 +108,12 @@ TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     add(PassMode::Single, AddedLights::Directionals, 16, 20.0 + 8 * 2.4);
     add(PassMode::Specialised, AddedLights::Points, 8, 20.0);
     add(PassMode::Specialised, AddedLights::Points, 16, 20.0 + 8 * 2.8);
+    add(PassMode::Single, AddedLights::PointsOtherAttenuation, 8, 40.0);
+    add(PassMode::Single, AddedLights::PointsOtherAttenuation, 16, 40.0 + 8 * 4.4);
     add(PassMode::Specialised, AddedLights::PointsOtherAttenuation, 8, 32.0);
     add(PassMode::Specialised, AddedLights::PointsOtherAttenuation, 16, 32.0 + 8 * 3.6);
     const std::vector<TargetCheck> targets = renderBenchTargets(result);
-    ASSERT_EQ(targets.size(), 6u);
+    ASSERT_EQ(targets.size(), 7u);
     EXPECT_DOUBLE_EQ(targets[0].value, 0.3);
     EXPECT_TRUE(targets[0].met);
     EXPECT_DOUBLE_EQ(targets[1].value, 0.8);
@@ -119,9 +121,11 @@ TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     EXPECT_TRUE(targets[2].met);
     EXPECT_NEAR(targets[3].value, 1.5, 1e-12);   // point: 3 / 2
     EXPECT_FALSE(targets[3].met);
-    EXPECT_NEAR(targets[4].value, 1.4, 1e-12);
-    EXPECT_NEAR(targets[5].value, 1.8, 1e-12);   // point, other coefficients: 3.6 / 2
-    EXPECT_NE(targets[5].name.find("other coefficients"), std::string::npos);
+    EXPECT_NEAR(targets[4].value, 2.2, 1e-12);   // single, points with other coefficients
+    EXPECT_NE(targets[4].name.find("single's cost per added point light with other"), std::string::npos);
+    EXPECT_NEAR(targets[5].value, 1.4, 1e-12);
+    EXPECT_NEAR(targets[6].value, 1.8, 1e-12);   // specialised, other coefficients: 3.6 / 2
+    EXPECT_NE(targets[6].name.find("specialised's cost per added point light with other"), std::string::npos);
 }
 
 TEST_F(AccuracyCommands, BenchWritesOneRowPerModelAndTheChart) {

@@ -62,6 +62,22 @@ TEST(ShaderSpecialisation, KeysDifferOnlyWhenTheShaderWould) {
               specialiseFor(packEnabledLights(b.lights), b.material));
 }
 
+// Single reads the coefficients only when some point light has others than Karis's.
+TEST(ShadingPrograms, SinglePassReadsCoefficientsOnlyWhenAPointLightNeedsThem) {
+    using Use = ShadingPrograms::Use;
+    Scene scene = defaultScene();
+    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePassKarisPoints);
+    EXPECT_EQ(ShadingPrograms::singlePassFor({}), Use::SinglePassKarisPoints);
+    scene.lights.push_back(scene.lights[0]);
+    scene.lights.back().attenuation = {0.0f, 0.0f, 1.0f};
+    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePass);
+    scene.lights.back().enabled = false;   // a disabled light is not drawn
+    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePassKarisPoints);
+    // A directional light's coefficients are never read.
+    scene.lights[1].attenuation = {0.0f, 0.0f, 1.0f};
+    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePassKarisPoints);
+}
+
 TEST(ShaderSpecialisation, CacheKeepsAtMostItsCapacity) {
     test::glContext();
     ShadingPrograms programs;

@@ -1,9 +1,12 @@
 #include "shading_programs.h"
 
+#include <algorithm>
+
 #include <epoxy/gl.h>
 
 #include "../brdf_models.h"
 #include "../energy_table.h"
+#include "../light_packing.h"
 #include "shading_inputs.h"
 
 namespace patina {
@@ -47,12 +50,22 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
     return program;
 }
 
+ShadingPrograms::Use ShadingPrograms::singlePassFor(const std::vector<shader::PackedLight>& lights) {
+    const bool karis = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
+        return light.type != shader::LIGHT_POINT || hasKarisAttenuation(light);
+    });
+    return karis ? Use::SinglePassKarisPoints : Use::SinglePass;
+}
+
 const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output) {
     std::unique_ptr<GlProgram>& program = programs_[{model, use, output}];
     if (!program) {
         std::vector<std::string> defines;
         if (use != Use::MultiPass) {
             defines.push_back("PATINA_SINGLE_PASS");
+        }
+        if (use == Use::SinglePassKarisPoints) {
+            defines.push_back("PATINA_KARIS_POINTS");
         }
         if (use == Use::Probe) {
             defines.push_back("PATINA_PROBE");

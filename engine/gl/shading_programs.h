@@ -2,6 +2,7 @@
 #include <map>
 #include <memory>
 #include <tuple>
+#include <vector>
 
 #include "../brdf_model_id.h"
 #include "../shader_specialisation.h"
@@ -14,7 +15,11 @@ namespace patina {
 // for models with energy compensation, their E(NoV, r) table as a texture.
 class ShadingPrograms {
 public:
-    enum class Use { SinglePass, MultiPass, Probe };
+    // SinglePassKarisPoints: single for lights whose point lights all have KARIS_ATTENUATION,
+    // which it takes as a constant instead of reading (PATINA_KARIS_POINTS).
+    enum class Use { SinglePass, SinglePassKarisPoints, MultiPass, Probe };
+    // The single pass for `lights` (packEnabledLights' list).
+    static Use singlePassFor(const std::vector<shader::PackedLight>& lights);
     // What the fragment shader writes: the linear radiance, or also its display value
     // (PATINA_DISPLAY_OUTPUT, for a pass with nothing to resolve or sum afterwards).
     enum class Output { Linear, LinearAndDisplay };
