@@ -78,12 +78,12 @@ const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, Ad
     return nullptr;
 }
 
-// The paths single, multi and specialised against light count, as bench-render draws them.
+// Each path and kind of added light that bench-render measures against light count.
 constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
     {PassMode::Multi, AddedLights::Points},       {PassMode::Single, AddedLights::Points},
     {PassMode::Specialised, AddedLights::Points}, {PassMode::BrdfFloor, AddedLights::Points},
-    {PassMode::Single, AddedLights::Directionals}, {PassMode::Single, AddedLights::PointsOtherAttenuation},
-    {PassMode::Specialised, AddedLights::PointsOtherAttenuation}};
+    {PassMode::Single, AddedLights::Directionals}, {PassMode::Single, AddedLights::PointsOtherCoefficients},
+    {PassMode::Specialised, AddedLights::PointsOtherCoefficients}};
 
 // Every path with point lights added; single again with directional lights added (whose
 // light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
@@ -163,7 +163,7 @@ void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& resul
 std::string_view addedLightsName(AddedLights added) {
     switch (added) {
     case AddedLights::Points: return "point";
-    case AddedLights::PointsOtherAttenuation: return "point-other-attenuation";
+    case AddedLights::PointsOtherCoefficients: return "point-other-coefficients";
     case AddedLights::Directionals: return "directional";
     }
     return "point";
@@ -186,7 +186,7 @@ Scene renderBenchScene(int lights, AddedLights added) {
         light.direction = -light.position;
         light.radius = 12.0f;
         // At the ring's distance (about 3.2) both give about the same light.
-        light.attenuation = added == AddedLights::PointsOtherAttenuation ? glm::vec3(0.5f, 0.25f, 0.9f)
+        light.attenuation = added == AddedLights::PointsOtherCoefficients ? glm::vec3(0.5f, 0.25f, 0.9f)
                                                                          : glm::vec3(1.0f, 0.0f, 1.0f);
         // The ring adds about one key light in all.
         light.intensity = (point ? 24.0f : 2.0f) / float(extra);
@@ -255,11 +255,11 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     add("single's cost per added point light / the BRDF floor's" + range,
         perLight(PassMode::Single, AddedLights::Points) / floor, 1.3);
     add("single's cost per added point light with other coefficients / the BRDF floor's" + range,
-        perLight(PassMode::Single, AddedLights::PointsOtherAttenuation) / floor, 1.3);
+        perLight(PassMode::Single, AddedLights::PointsOtherCoefficients) / floor, 1.3);
     add("specialised's cost per added point light / the BRDF floor's" + range,
         perLight(PassMode::Specialised, AddedLights::Points) / floor, 1.3);
     add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,
-        perLight(PassMode::Specialised, AddedLights::PointsOtherAttenuation) / floor, 1.3);
+        perLight(PassMode::Specialised, AddedLights::PointsOtherCoefficients) / floor, 1.3);
     return targets;
 }
 
@@ -296,14 +296,15 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
     char title[128];
     std::snprintf(title, sizeof title, "Frame time against lights, %dx%d, %dx MSAA", result.width, result.height,
                   result.samples);
-    ChartPanel panel{title, "enabled lights", "frame time to glFinish (ms, median)", false, false, {}};
+    ChartPanel panel{title, "enabled lights (point lights added unless named)", "frame time to glFinish (ms, median)", false, false, {}};
     size_t colour = 0;
     for (const auto& [path, added] : kLightSeries) {
-        const char* what = added == AddedLights::Points         ? "points"
-                           : added == AddedLights::Directionals ? "directionals"
-                                                                : "points, other coefficients";
-        const std::string label = std::string(passModeName(path)) +
-                                  (path == PassMode::BrdfFloor ? " (BRDF alone)" : ", " + std::string(what) + " added");
+        // Short enough for the legend: the axis says that point lights are added.
+        std::string label = path == PassMode::BrdfFloor ? "BRDF floor" : std::string(passModeName(path));
+        if (added != AddedLights::Points) {
+            label = (path == PassMode::Specialised ? "spec." : label) +
+                    (added == AddedLights::Directionals ? ", directionals" : ", other coeffs");
+        }
         ChartSeries series{label, {}, chartColour(colour++), true, true, path == PassMode::BrdfFloor, {}};
         for (const LightCountRow& row : result.lightRows) {
             if (row.path == path && row.added == added) {

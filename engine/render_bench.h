@@ -29,10 +29,10 @@ struct FrameTiming {
 // The lights past the default scene's first 3: a ring in front of the sphere.
 enum class AddedLights {
     Points,                  // windowed points with Karis's coefficients (1, 0, 1), the default
-    PointsOtherAttenuation,  // the same with other coefficients, which a shader must read
+    PointsOtherCoefficients,  // the same with other coefficients, which a shader must read
     Directionals,
 };
-// "point", "point-other-attenuation", "directional" (the CSV's `added` column).
+// "point", "point-other-coefficients", "directional" (the CSV's `added` column).
 std::string_view addedLightsName(AddedLights added);
 
 struct LightCountRow {

@@ -35,8 +35,9 @@ struct PackedLight {
 };
 
 // a_c, a_l, a_q of Karis 2013's falloff denominator d^2 + 1 (eq. 9), every Light's default.
-// A specialised shader compiles a light with exactly these as this constant: llvmpipe turns
-// each uniform scalar a fragment shader reads into a per-lane gather, and these are three
+// Shaders take these as a constant where a light has exactly them (specialised per light,
+// single when every point light has them: PATINA_KARIS_POINTS): llvmpipe turns each uniform
+// scalar a fragment shader reads into a per-lane gather, and these are three
 // (docs/PERFORMANCE.md).
 const vec3 KARIS_ATTENUATION = vec3(1.0f, 0.0f, 1.0f);
 

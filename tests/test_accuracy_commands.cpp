@@ -59,14 +59,17 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
     }
     for (const char* series : {"lights multi point", "lights single point", "lights specialised point",
                                "lights brdf-floor point", "lights single directional",
-                               "lights single point-other-attenuation", "lights specialised point-other-attenuation"}) {
+                               "lights single point-other-coefficients", "lights specialised point-other-coefficients"}) {
         EXPECT_EQ(perSeries[series], 4) << series;   // --quick: 1, 3, 8 and 16 lights
     }
     EXPECT_EQ(perSeries["resolution single "], 2);
     EXPECT_EQ(perSeries["triangles single "], 2);
     const std::string targets = read("render_targets.csv");
     for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
-                               "per added point light", "separate renders", "peak RSS"}) {
+                               "single's cost per added point light /",
+                               "single's cost per added point light with other coefficients",
+                               "specialised's cost per added point light with other coefficients", "separate renders",
+                               "peak RSS"}) {
         EXPECT_NE(targets.find(target), std::string::npos) << target;
     }
     EXPECT_EQ(targets.find("nan"), std::string::npos) << targets;
@@ -86,7 +89,7 @@ TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
     const Scene points = renderBenchScene(8);
     EXPECT_EQ(points.lights.back().type, LightType::Point);
     EXPECT_TRUE(hasKarisAttenuation(packLight(points.lights.back())));
-    const Scene others = renderBenchScene(8, AddedLights::PointsOtherAttenuation);
+    const Scene others = renderBenchScene(8, AddedLights::PointsOtherCoefficients);
     EXPECT_EQ(others.lights.back().type, LightType::Point);
     EXPECT_FALSE(hasKarisAttenuation(packLight(others.lights.back())));
     EXPECT_EQ(points.lights[1].type, defaultScene().lights[1].type);   // the default scene's first
@@ -108,10 +111,10 @@ TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     add(PassMode::Single, AddedLights::Directionals, 16, 20.0 + 8 * 2.4);
     add(PassMode::Specialised, AddedLights::Points, 8, 20.0);
     add(PassMode::Specialised, AddedLights::Points, 16, 20.0 + 8 * 2.8);
-    add(PassMode::Single, AddedLights::PointsOtherAttenuation, 8, 40.0);
-    add(PassMode::Single, AddedLights::PointsOtherAttenuation, 16, 40.0 + 8 * 4.4);
-    add(PassMode::Specialised, AddedLights::PointsOtherAttenuation, 8, 32.0);
-    add(PassMode::Specialised, AddedLights::PointsOtherAttenuation, 16, 32.0 + 8 * 3.6);
+    add(PassMode::Single, AddedLights::PointsOtherCoefficients, 8, 40.0);
+    add(PassMode::Single, AddedLights::PointsOtherCoefficients, 16, 40.0 + 8 * 4.4);
+    add(PassMode::Specialised, AddedLights::PointsOtherCoefficients, 8, 32.0);
+    add(PassMode::Specialised, AddedLights::PointsOtherCoefficients, 16, 32.0 + 8 * 3.6);
     const std::vector<TargetCheck> targets = renderBenchTargets(result);
     ASSERT_EQ(targets.size(), 7u);
     EXPECT_DOUBLE_EQ(targets[0].value, 0.3);

@@ -80,7 +80,8 @@ TEST(Renderer, AllThreePassModesAgree) {
     torus.mesh = MeshKind::Torus;
     Scene unwindowed = onlyLightsOfType(LightType::Point, 3);
     unwindowed.lights[1].radius = 0.0f;
-    // Points with Karis's coefficients and others, interleaved: packed into two groups.
+    // Points with Karis's coefficients and others, interleaved: specialised compiles each its
+    // own way, and single reads them all.
     Scene mixedAttenuation = onlyLightsOfType(LightType::Point, 4);
     mixedAttenuation.lights[0].attenuation = {0.2f, 0.1f, 0.6f};
     mixedAttenuation.lights[2].attenuation = {0.0f, 0.0f, 1.0f};
@@ -267,6 +268,27 @@ TEST(Renderer, ResolveAveragesEverySampleTheGlMade) {
     const RenderOutput three = renderScene(renderer, scene, PassMode::Single, 64, 3);
     EXPECT_EQ(three.ldr.rgba, four.ldr.rgba);
     EXPECT_EQ(three.hdr.rgb, four.hdr.rgb);
+}
+
+// Inside the mesh every sample of a pixel is shaded alike, so the resolved mean is the
+// one-sample value: a resolve that skipped a sample or counted one twice is a quarter off.
+TEST(Renderer, ResolvedInteriorMatchesOneSample) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = defaultScene();
+    const int size = 64;
+    const HdrImage four = renderScene(renderer, scene, PassMode::Single, size, 4).hdr;
+    const HdrImage one = renderScene(renderer, scene, PassMode::Single, size, 1).hdr;
+    double worst = 0.0;
+    for (int y = size / 2 - 8; y < size / 2 + 8; ++y) {   // the middle of the sphere
+        for (int x = size / 2 - 8; x < size / 2 + 8; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const size_t i = (size_t(y) * size + size_t(x)) * 3 + size_t(c);
+                worst = std::max(worst, std::abs(double(four.rgb[i]) / double(one.rgb[i]) - 1.0));
+            }
+        }
+    }
+    EXPECT_LT(worst, 1e-3);
 }
 
 // A flat rectangle facing +z: its bounding box is the rectangle itself, so its screen bounds
