@@ -92,11 +92,10 @@ constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
 void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                         RenderBenchResult& result) {
     const std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
-    const auto& series = kLightSeries;
     std::map<std::tuple<int, int, int>, Samples> samples;
     interleaved(options.runs, [&](bool keep) {
         for (int count : counts) {
-            for (const auto& [path, added] : series) {
+            for (const auto& [path, added] : kLightSeries) {
                 const Scene scene = renderBenchScene(count, added);
                 RenderSettings s = settings;
                 s.passes = path;
@@ -105,7 +104,7 @@ void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, c
             }
         }
     });
-    for (const auto& [path, added] : series) {
+    for (const auto& [path, added] : kLightSeries) {
         for (int count : counts) {
             result.lightRows.push_back({path, added, count, samples[{int(path), int(added), count}].medians()});
         }
@@ -296,7 +295,8 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
     char title[128];
     std::snprintf(title, sizeof title, "Frame time against lights, %dx%d, %dx MSAA", result.width, result.height,
                   result.samples);
-    ChartPanel panel{title, "enabled lights (point lights added unless named)", "frame time to glFinish (ms, median)", false, false, {}};
+    ChartPanel panel{title, "enabled lights (point lights added unless named)", "frame time to glFinish (ms, median)",
+                     false, false, {}};
     size_t colour = 0;
     for (const auto& [path, added] : kLightSeries) {
         // Short enough for the legend: the axis says that point lights are added.

@@ -121,7 +121,8 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 // light has radius 0 (true is right for every light: 1/radius = 0 gives window 1). `karis`
 // true takes KARIS_ATTENUATION for the light's coefficients instead of reading them: only for
 // a light that has exactly those (hasKarisAttenuation, light_packing.h).
-PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
+                                   vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
     float distanceSquared = dot(toLight, toLight);
     // Clamped so the light on the shaded point still gives finite numbers; selected away below.
