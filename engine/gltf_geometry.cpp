@@ -259,8 +259,7 @@ void appendPart(Mesh& mesh, const Part& part, std::vector<uint32_t>& corners, st
             if (!isFinite(n)) {
                 fail(source, part.where() + "/attributes/NORMAL: element " + std::to_string(i) + " is not finite");
             }
-            const float length = glm::length(n);
-            mesh.normals.push_back(length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f));
+            mesh.normals.push_back(unitNormal(n));
         }
     } else {
         const std::vector<glm::vec3> normals =

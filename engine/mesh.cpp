@@ -75,6 +75,18 @@ Mesh makeMesh(const Scene& scene) {
     return scene.meshFile.empty() ? makeMesh(scene.mesh) : importGltf(scene.meshFile).mesh;
 }
 
+glm::vec3 unitNormal(const glm::vec3& n) {
+    const glm::vec3 size = glm::abs(n);
+    const float largest = std::max({size.x, size.y, size.z});
+    if (!(largest > 0.0f) || !std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z)) {
+        return glm::vec3(0.0f, 1.0f, 0.0f);
+    }
+    // Scaled first: the square of 1e-22 is a denormal with a few bits left, so its root
+    // would be off by percents, and the square of 1e20 overflows.
+    const glm::vec3 scaled = n / largest;
+    return scaled / glm::length(scaled);
+}
+
 std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
                                      std::span<const uint32_t> triangles) {
     // The cross product's length is twice the triangle's area: the weight comes for free.
@@ -87,8 +99,7 @@ std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
         normals[c] += n;
     }
     for (glm::vec3& n : normals) {
-        const float length = glm::length(n);
-        n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 1.0f, 0.0f);
+        n = unitNormal(n);
     }
     return normals;
 }

@@ -26,6 +26,10 @@ Mesh makeMesh(MeshKind kind);
 // else the built-in kind.
 Mesh makeMesh(const Scene& scene);
 
+// `n` at length 1, or +y when it has no direction (zero or not finite). Exact also for vectors
+// whose squared length a float cannot hold (components below 1e-19 or above 1e19).
+glm::vec3 unitNormal(const glm::vec3& n);
+
 // Area-weighted vertex normals of `positions` over `triangles` (three indices each); a vertex
 // on no triangle of non-zero area gets +y.
 std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,

@@ -144,6 +144,32 @@ TEST_F(Gltf, NormalsGoThroughTheInverseTransposeAndMirrorsKeepWindingOutward) {
     }
 }
 
+// A float squares 1e-22 into a denormal with a few bits left, 1e-30 into zero and 1e25 into
+// infinity; each normal still comes out as its own direction at length 1 (the fuzzer's find).
+TEST_F(Gltf, NormalsOfAnySizeKeepTheirDirectionAtUnitLength) {
+    for (const float size : {1e-22f, 1e-30f, 1e-44f, 1e25f, 3e38f}) {
+        GltfBuilder given;
+        const int positions = given.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        const int normals = given.positions({{size, 0, 0}, {0, size, size}, {0, 0, -size}});
+        given.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}});
+        given.writeGltf(path("given.gltf"));
+        const std::vector<glm::vec3> expected{{1, 0, 0}, {0, std::sqrt(0.5f), std::sqrt(0.5f)}, {0, 0, -1}};
+        const Mesh mesh = importGltf(path("given.gltf")).mesh;
+        for (size_t i = 0; i < expected.size(); ++i) {
+            EXPECT_NEAR(glm::distance(mesh.normals[i], expected[i]), 0.0f, 1e-6f) << size << ", normal " << i;
+        }
+    }
+    // Generated: a triangle's cross product is its size squared.
+    for (const float size : {1e-11f, 1e-15f, 1e15f}) {
+        GltfBuilder generated;
+        generated.meshNode(
+            {{"attributes", {{"POSITION", generated.positions({{0, 0, 0}, {size, 0, 0}, {0, size, 0}})}}}});
+        generated.writeGltf(path("generated.gltf"));
+        EXPECT_EQ(importGltf(path("generated.gltf")).mesh.normals, std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)))
+            << size;
+    }
+}
+
 TEST_F(Gltf, StripsAndFansBecomeTrianglesAndPointsAndLinesAreSkipped) {
     GltfBuilder model;
     // A unit square in z = 0, as a strip (0 1 2 3) and as a fan (0 1 2 3 in a circle).
