@@ -2,6 +2,8 @@
 // PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
 // renderer adds the passes with blending (the seed's multi-pass design). PATINA_KARIS_POINTS:
 // every point light has KARIS_ATTENUATION, so single need not read the coefficients.
+// PATINA_NO_POINT_LIGHTS, PATINA_NO_DIRECTIONAL_LIGHTS, PATINA_NO_HEMISPHERE_LIGHTS: single
+// leaves out the loop of a type the scene lacks (ShadingPrograms::singlePassFor).
 // PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as SHADE_POINT(i,
 // windowed, karis), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light
 // loop and no code for a type the scene lacks (engine/shader_specialisation.h builds the list).
@@ -60,7 +62,8 @@ void main() {
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.
     // Each loop tests at its end. llvmpipe has no jump for a test all lanes agree on: a body
     // runs until no lane is left in the loop, so a test at the top costs one more pass of the
-    // body with every lane off. The `if` costs such a pass only when a type has no lights.
+    // body with every lane off. The `if` costs such a pass when a type has no lights, so the
+    // renderer compiles out the loop of a type the scene lacks.
 #ifdef PATINA_KARIS_POINTS
     const bool karisPoints = true;   // every point light has KARIS_ATTENUATION
 #else
@@ -68,28 +71,34 @@ void main() {
 #endif
     int first = 0;
     int end = uLightCount.y;
+#ifndef PATINA_NO_POINT_LIGHTS
     if (first < end) {
         int i = first;
         do {
             radiance += shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V);
         } while (++i < end);
     }
+#endif
     first = end;
     end += uLightCount.z;
+#ifndef PATINA_NO_DIRECTIONAL_LIGHTS
     if (first < end) {
         int i = first;
         do {
             radiance += shadeDirectionalLight(uLights[i], material, N, V);
         } while (++i < end);
     }
+#endif
     first = end;
     end += uLightCount.w;
+#ifndef PATINA_NO_HEMISPHERE_LIGHTS
     if (first < end) {
         int i = first;
         do {
             radiance += shadeHemisphereLight(uLights[i], material, N, V);
         } while (++i < end);
     }
+#endif
 #else
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
 #endif

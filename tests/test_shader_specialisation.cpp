@@ -64,18 +64,46 @@ TEST(ShaderSpecialisation, KeysDifferOnlyWhenTheShaderWould) {
 
 // Single reads the coefficients only when some point light has others than Karis's.
 TEST(ShadingPrograms, SinglePassReadsCoefficientsOnlyWhenAPointLightNeedsThem) {
-    using Use = ShadingPrograms::Use;
+    auto karis = [](const Scene& scene) {
+        return ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)).karisPoints;
+    };
     Scene scene = defaultScene();
-    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePassKarisPoints);
-    EXPECT_EQ(ShadingPrograms::singlePassFor({}), Use::SinglePassKarisPoints);
+    EXPECT_TRUE(karis(scene));
+    EXPECT_TRUE(ShadingPrograms::singlePassFor({}).karisPoints);
     scene.lights.push_back(scene.lights[0]);
     scene.lights.back().attenuation = {0.0f, 0.0f, 1.0f};
-    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePass);
+    EXPECT_FALSE(karis(scene));
     scene.lights.back().enabled = false;   // a disabled light is not drawn
-    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePassKarisPoints);
+    EXPECT_TRUE(karis(scene));
     // A directional light's coefficients are never read.
     scene.lights[1].attenuation = {0.0f, 0.0f, 1.0f};
-    EXPECT_EQ(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)), Use::SinglePassKarisPoints);
+    EXPECT_TRUE(karis(scene));
+}
+
+// Single has a loop for each light type the scene draws, and none for the others.
+TEST(ShadingPrograms, SinglePassLoopsOnlyOverTheTypesPresent) {
+    using SinglePass = ShadingPrograms::SinglePass;
+    const Scene scene = defaultScene();   // one light of each type
+    const SinglePass all = ShadingPrograms::singlePassFor(packEnabledLights(scene.lights));
+    EXPECT_TRUE(all.points && all.directionals && all.hemispheres);
+    EXPECT_EQ(all.defines(), (std::vector<std::string>{"PATINA_SINGLE_PASS", "PATINA_KARIS_POINTS"}));
+    for (size_t off = 0; off < scene.lights.size(); ++off) {
+        Scene two = scene;
+        two.lights[off].enabled = false;
+        const SinglePass pass = ShadingPrograms::singlePassFor(packEnabledLights(two.lights));
+        const LightType type = scene.lights[off].type;
+        EXPECT_EQ(pass.points, type != LightType::Point) << off;
+        EXPECT_EQ(pass.directionals, type != LightType::Directional) << off;
+        EXPECT_EQ(pass.hemispheres, type != LightType::Hemisphere) << off;
+        const char* left = type == LightType::Point         ? "PATINA_NO_POINT_LIGHTS"
+                           : type == LightType::Directional ? "PATINA_NO_DIRECTIONAL_LIGHTS"
+                                                            : "PATINA_NO_HEMISPHERE_LIGHTS";
+        EXPECT_EQ(pass.defines().back(), left) << off;
+        EXPECT_EQ(pass.defines().size(), 3u) << off;
+    }
+    const SinglePass none = ShadingPrograms::singlePassFor({});
+    EXPECT_FALSE(none.points || none.directionals || none.hemispheres);
+    EXPECT_EQ(none.defines().size(), 5u);
 }
 
 TEST(ShaderSpecialisation, CacheKeepsAtMostItsCapacity) {

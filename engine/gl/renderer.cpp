@@ -263,7 +263,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const ShadingPrograms::Output output =
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     const GlProgram& shading =
-        settings.passes == PassMode::Single ? s.shading.use(model, ShadingPrograms::singlePassFor(packed), output)
+        settings.passes == PassMode::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
         : settings.passes == PassMode::Multi
             ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
             : s.shading.useSpecialised(model,

@@ -50,28 +50,50 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
     return program;
 }
 
-ShadingPrograms::Use ShadingPrograms::singlePassFor(const std::vector<shader::PackedLight>& lights) {
-    const bool karis = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
+ShadingPrograms::SinglePass ShadingPrograms::singlePassFor(const std::vector<shader::PackedLight>& lights) {
+    auto any = [&](int type) {
+        return std::any_of(lights.begin(), lights.end(),
+                           [type](const shader::PackedLight& light) { return light.type == type; });
+    };
+    SinglePass pass;
+    pass.points = any(shader::LIGHT_POINT);
+    pass.directionals = any(shader::LIGHT_DIRECTIONAL);
+    pass.hemispheres = any(shader::LIGHT_HEMISPHERE);
+    pass.karisPoints = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
         return light.type != shader::LIGHT_POINT || hasKarisAttenuation(light);
     });
-    return karis ? Use::SinglePassKarisPoints : Use::SinglePass;
+    return pass;
+}
+
+std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
+    std::vector<std::string> defines{"PATINA_SINGLE_PASS"};
+    if (karisPoints) {
+        defines.push_back("PATINA_KARIS_POINTS");
+    }
+    for (const auto& [present, define] : {std::pair{points, "PATINA_NO_POINT_LIGHTS"},
+                                          std::pair{directionals, "PATINA_NO_DIRECTIONAL_LIGHTS"},
+                                          std::pair{hemispheres, "PATINA_NO_HEMISPHERE_LIGHTS"}}) {
+        if (!present) {
+            defines.push_back(define);
+        }
+    }
+    return defines;
 }
 
 const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output) {
     std::unique_ptr<GlProgram>& program = programs_[{model, use, output}];
     if (!program) {
-        std::vector<std::string> defines;
-        if (use != Use::MultiPass) {
-            defines.push_back("PATINA_SINGLE_PASS");
-        }
-        if (use == Use::SinglePassKarisPoints) {
-            defines.push_back("PATINA_KARIS_POINTS");
-        }
-        if (use == Use::Probe) {
-            defines.push_back("PATINA_PROBE");
-        }
-        program = build(model, output, use == Use::Probe ? shader_sources::probe_vert : shader_sources::mesh_vert,
-                        defines);
+        program = use == Use::Probe
+                      ? build(model, output, shader_sources::probe_vert, {"PATINA_SINGLE_PASS", "PATINA_PROBE"})
+                      : build(model, output, shader_sources::mesh_vert, {});
+    }
+    return bind(model, *program);
+}
+
+const GlProgram& ShadingPrograms::useSingle(BrdfModelId model, const SinglePass& pass, Output output) {
+    std::unique_ptr<GlProgram>& program = singles_[{model, pass, output}];
+    if (!program) {
+        program = build(model, output, shader_sources::mesh_vert, pass.defines());
     }
     return bind(model, *program);
 }

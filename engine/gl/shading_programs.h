@@ -1,6 +1,7 @@
 #pragma once
 #include <map>
 #include <memory>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -15,11 +16,19 @@ namespace patina {
 // for models with energy compensation, their E(NoV, r) table as a texture.
 class ShadingPrograms {
 public:
-    // SinglePassKarisPoints: single for lights whose point lights all have KARIS_ATTENUATION,
-    // which it takes as a constant instead of reading (PATINA_KARIS_POINTS).
-    enum class Use { SinglePass, SinglePassKarisPoints, MultiPass, Probe };
+    // What single is compiled for: a loop only for each light type present (on llvmpipe an
+    // empty type's loop still runs its body once with every lane off), and the point lights'
+    // coefficients as a constant when all of them have KARIS_ATTENUATION.
+    struct SinglePass {
+        bool points = true, directionals = true, hemispheres = true;
+        bool karisPoints = false;
+        std::vector<std::string> defines() const;
+        auto operator<=>(const SinglePass&) const = default;
+    };
     // The single pass for `lights` (packEnabledLights' list).
-    static Use singlePassFor(const std::vector<shader::PackedLight>& lights);
+    static SinglePass singlePassFor(const std::vector<shader::PackedLight>& lights);
+    // The other programs. Probe: single with every loop, one probe row per pixel.
+    enum class Use { MultiPass, Probe };
     // What the fragment shader writes: the linear radiance, or also its display value
     // (PATINA_DISPLAY_OUTPUT, for a pass with nothing to resolve or sum afterwards).
     enum class Output { Linear, LinearAndDisplay };
@@ -31,6 +40,7 @@ public:
 
     // Makes the program current (with its energy table bound) and returns it.
     const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear);
+    const GlProgram& useSingle(BrdfModelId model, const SinglePass& pass, Output output = Output::Linear);
     // The single-pass program specialised to `key`, compiled on first use. The least recently
     // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
     // makes a new key each time.
@@ -45,6 +55,7 @@ private:
         unsigned long long lastUse = 0;
     };
     std::map<std::tuple<BrdfModelId, Use, Output>, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;   // 16 shapes at most
     std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
     std::map<BrdfModelId, unsigned> energyTextures_;
