@@ -26,8 +26,9 @@ Mesh makeMesh(MeshKind kind);
 // else the built-in kind.
 Mesh makeMesh(const Scene& scene);
 
-// `n` at length 1, or +y when it has no direction (zero or not finite). Exact also for vectors
-// whose squared length a float cannot hold (components below 1e-19 or above 1e19).
+// `n` at length 1, or +y when it has no direction (zero or not finite); correct to rounding
+// also where its squared length would overflow or underflow a float (components above 1e19
+// or below 1e-19).
 glm::vec3 unitNormal(const glm::vec3& n);
 
 // Area-weighted vertex normals of `positions` over `triangles` (three indices each); a vertex
