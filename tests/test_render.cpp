@@ -100,6 +100,11 @@ TEST(Renderer, AllThreePassModesAgree) {
             cases.push_back({std::to_string(count) + " " + std::string(lightTypeName(type)),
                              onlyLightsOfType(type, count)});
         }
+        // Two types: single compiles out the third type's loop, and the later types' lights
+        // must still be found after it.
+        Scene without = manyLightScene(2);
+        std::erase_if(without.lights, [type](const Light& light) { return light.type == type; });
+        cases.push_back({"no " + std::string(lightTypeName(type)), without});
     }
     for (const Case& c : cases) {
         renderer.setMesh(makeMesh(c.scene.mesh));

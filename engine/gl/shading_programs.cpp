@@ -51,14 +51,11 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
 }
 
 ShadingPrograms::SinglePass ShadingPrograms::singlePassFor(const std::vector<shader::PackedLight>& lights) {
-    auto any = [&](int type) {
-        return std::any_of(lights.begin(), lights.end(),
-                           [type](const shader::PackedLight& light) { return light.type == type; });
-    };
+    const glm::ivec4 counts = packedLightCounts(lights);   // all, points, directionals, hemispheres
     SinglePass pass;
-    pass.points = any(shader::LIGHT_POINT);
-    pass.directionals = any(shader::LIGHT_DIRECTIONAL);
-    pass.hemispheres = any(shader::LIGHT_HEMISPHERE);
+    pass.points = counts.y > 0;
+    pass.directionals = counts.z > 0;
+    pass.hemispheres = counts.w > 0;
     pass.karisPoints = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
         return light.type != shader::LIGHT_POINT || hasKarisAttenuation(light);
     });

@@ -55,7 +55,8 @@ private:
         unsigned long long lastUse = 0;
     };
     std::map<std::tuple<BrdfModelId, Use, Output>, std::unique_ptr<GlProgram>> programs_;
-    std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;   // 16 shapes at most
+    // 12 shapes at most (with no point light, karisPoints is always true): 24 programs a model.
+    std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;
     std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
     std::map<BrdfModelId, unsigned> energyTextures_;
