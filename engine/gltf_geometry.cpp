@@ -1,5 +1,6 @@
 #include "gltf_geometry.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -234,14 +235,20 @@ bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v
 void appendPart(Mesh& mesh, const Part& part, std::vector<uint32_t>& corners, std::vector<uint32_t>& triangles,
                 const std::string& source) {
     const glm::mat4 world(*part.world);
-    const glm::mat3 linear(world);
-    const float determinant = glm::determinant(linear);
+    // In double: the determinant and the cofactor matrix grow as the cube and the square of the
+    // node's scale, and a scale of 1e-20 or 1e20 is finite in a float.
+    const glm::dmat3 linear(*part.world);
+    const double determinant = glm::determinant(linear);
     // The cofactor matrix: the inverse transpose times the determinant, defined even at 0.
-    glm::mat3 normalMatrix(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
-                           glm::cross(linear[0], linear[1]));
-    if (determinant < 0.0f) {
-        normalMatrix = -normalMatrix;
+    // Only its directions matter, so it is scaled to its largest entry, and negated for a mirror.
+    const glm::dmat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
+                              glm::cross(linear[0], linear[1]));
+    double largest = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        largest = std::max({largest, std::abs(cofactor[c].x), std::abs(cofactor[c].y), std::abs(cofactor[c].z)});
     }
+    const double scale = largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
+    const glm::mat3 normalMatrix(cofactor * (determinant < 0.0 ? -scale : scale));
     const size_t base = mesh.positions.size();
     for (size_t i = 0; i < part.positions.count; ++i) {
         const glm::vec3 p = glm::vec3(world * glm::vec4(readVec3(part.positions, i), 1.0f));
@@ -252,7 +259,7 @@ void appendPart(Mesh& mesh, const Part& part, std::vector<uint32_t>& corners, st
         mesh.positions.push_back(p);
     }
     readCorners(part, corners, source);
-    assembleTriangles(part, corners, determinant < 0.0f, triangles);
+    assembleTriangles(part, corners, determinant < 0.0, triangles);
     if (part.hasNormals) {
         for (size_t i = 0; i < part.normals.count; ++i) {
             const glm::vec3 n = normalMatrix * readVec3(part.normals, i);

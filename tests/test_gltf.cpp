@@ -159,6 +159,25 @@ TEST_F(Gltf, NormalsOfAnySizeKeepTheirDirectionAtUnitLength) {
             EXPECT_NEAR(glm::distance(mesh.normals[i], expected[i]), 0.0f, 1e-6f) << size << ", normal " << i;
         }
     }
+    // Through a node scaled by 1e20 or 1e-20 (finite positions; the normal matrix grows as the
+    // square of the scale), a mirror included.
+    for (const float scale : {1e20f, -1e-20f}) {
+        GltfBuilder scaled;
+        const int positions = scaled.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        const int normals = scaled.positions({{1, 0, 0}, {0, 1, 1}, {0, 0, -1}});
+        scaled.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}},
+                        {{"scale", {scale, std::abs(scale), std::abs(scale)}}});
+        scaled.writeGltf(path("scaled.gltf"));
+        const float x = scale < 0.0f ? -1.0f : 1.0f;
+        const std::vector<glm::vec3> expected{{x, 0, 0}, {0, std::sqrt(0.5f), std::sqrt(0.5f)}, {0, 0, -1}};
+        const Mesh mesh = importGltf(path("scaled.gltf")).mesh;
+        for (size_t i = 0; i < expected.size(); ++i) {
+            EXPECT_NEAR(glm::distance(mesh.normals[i], expected[i]), 0.0f, 1e-6f) << scale << ", normal " << i;
+        }
+        // A mirror reverses the triangle: its first corner stays, the other two swap.
+        const std::vector<uint32_t> corners = scale < 0.0f ? std::vector<uint32_t>{0, 2, 1} : std::vector<uint32_t>{0, 1, 2};
+        EXPECT_EQ(mesh.indices, corners) << scale;
+    }
     // Generated: a triangle's cross product is its size squared.
     for (const float size : {1e-11f, 1e-15f, 1e15f}) {
         GltfBuilder generated;
