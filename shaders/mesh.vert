@@ -7,6 +7,18 @@ uniform mat4 uViewProjection;
 out vec3 vPosition;
 out vec3 vNormal;
 
+#ifdef PATINA_FLAT_LIGHT_COUNT
+// A specialised shader's first lights, handed on unchanged as flat inputs: on llvmpipe a vertex
+// shader loads a uniform scalar once per 8 vertices, a fragment shader gathers it lane by lane
+// per 8 pixels, and a flat input costs the fragment shader one load per block of pixels
+// (docs/PERFORMANCE.md). PATINA_FLAT_LIGHTS lists FLAT_POINT(i), FLAT_DIRECTIONAL(i) and
+// FLAT_HEMISPHERE(i), each light's two rows (shade.frag's flatLight unpacks them).
+flat out vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
+#define FLAT_POINT(i) vFlatLight[2 * i] = vec4(uLights[i].radiance, uLights[i].inverseRadius); vFlatLight[2 * i + 1] = vec4(uLights[i].position, 0.0f);
+#define FLAT_DIRECTIONAL(i) vFlatLight[2 * i] = vec4(uLights[i].radiance, 0.0f); vFlatLight[2 * i + 1] = vec4(uLights[i].directionToLight, 0.0f);
+#define FLAT_HEMISPHERE(i) vFlatLight[2 * i] = vec4(uLights[i].sky, 0.0f); vFlatLight[2 * i + 1] = vec4(uLights[i].ground, 0.0f);
+#endif
+
 // The multi-pass path draws the mesh once per light with depth test EQUAL: every pass must
 // produce bit-identical depth.
 invariant gl_Position;
@@ -14,5 +26,8 @@ invariant gl_Position;
 void main() {
     vPosition = aPosition;
     vNormal = aNormal;
+#ifdef PATINA_FLAT_LIGHT_COUNT
+    PATINA_FLAT_LIGHTS
+#endif
     gl_Position = uViewProjection * vec4(aPosition, 1.0f);
 }

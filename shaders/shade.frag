@@ -4,9 +4,11 @@
 // every point light has KARIS_ATTENUATION, so single need not read the coefficients.
 // PATINA_NO_POINT_LIGHTS, PATINA_NO_DIRECTIONAL_LIGHTS, PATINA_NO_HEMISPHERE_LIGHTS: single
 // leaves out the loop of a type the scene lacks (ShadingPrograms::singlePassFor).
-// PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as SHADE_POINT(i,
-// windowed, karis), SHADE_DIRECTIONAL(i) and SHADE_HEMISPHERE(i), so the shader has no light
-// loop and no code for a type the scene lacks (engine/shader_specialisation.h builds the list).
+// PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as
+// SHADE_POINT(light, windowed, karis), SHADE_DIRECTIONAL(light) and SHADE_HEMISPHERE(light), so
+// the shader has no light loop and no code for a type the scene lacks; `light` is FLAT(i), a
+// flat input from mesh.vert, or BLOCK(i), read from the block (engine/shader_specialisation.h
+// builds the list and says why).
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -22,10 +24,26 @@ uniform float uRoughness;
 uniform float uSpecular;
 uniform float uMetallic;
 
-layout(std140) uniform LightBlock {
-    PackedLight uLights[MAX_LIGHTS];
-    ivec4 uLightCount;   // all, points, directionals, hemispheres
-};
+#ifdef PATINA_FLAT_LIGHT_COUNT
+// Lights 0 to PATINA_FLAT_LIGHT_COUNT - 1 as mesh.vert's FLAT_* wrote them: two rows each, the
+// fields of the light's type (radiance or sky, and 1/radius; position, direction or ground).
+flat in vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
+PackedLight flatLight(int i) {
+    PackedLight light;
+    light.type = -1;   // not read: each SHADE_* macro names its type
+    light.radiance = vFlatLight[2 * i].xyz;
+    light.sky = vFlatLight[2 * i].xyz;
+    light.inverseRadius = vFlatLight[2 * i].w;
+    light.position = vFlatLight[2 * i + 1].xyz;
+    light.directionToLight = vFlatLight[2 * i + 1].xyz;
+    light.ground = vFlatLight[2 * i + 1].xyz;
+    // Read only for a point light with other coefficients than Karis's (not a constant).
+    light.attenuation = uLights[i].attenuation;
+    return light;
+}
+#define FLAT(i) flatLight(i)
+#endif
+#define BLOCK(i) uLights[i]
 
 #ifndef PATINA_SINGLE_PASS
 uniform int uLightIndex;
@@ -50,13 +68,13 @@ void main() {
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
-#define SHADE_POINT(i, windowed, karis) radiance += shadePointLight(uLights[i], windowed, karis, material, vPosition, N, V);
-#define SHADE_DIRECTIONAL(i) radiance += shadeDirectionalLight(uLights[i], material, N, V);
-#define SHADE_HEMISPHERE(i) radiance += shadeHemisphereLight(uLights[i], material, N, V);
-// The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for light i's
+#define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V);
+#define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V);
+#define SHADE_HEMISPHERE(light) radiance += shadeHemisphereLight(light, material, N, V);
+// The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for a light's
 // direction, with none of the light handling above (no type, no attenuation, no branch).
 // (One line: GLSL 3.30 has no line continuation.)
-#define BRDF_ONLY(i) { vec3 L = uLights[i].directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += uLights[i].radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
+#define BRDF_ONLY(light) { PackedLight l = light; vec3 L = l.directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += l.radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.

@@ -12,8 +12,12 @@
 namespace patina {
 namespace {
 
-RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160, int samples = 4) {
+using FlatLights = RenderSettings::FlatLights;
+
+RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160, int samples = 4,
+                         FlatLights flatLights = FlatLights::WherePaying) {
     RenderSettings settings;
+    settings.flatLights = flatLights;
     settings.width = size;
     settings.height = size;
     settings.passes = passes;
@@ -78,6 +82,10 @@ TEST(Renderer, AllThreePassModesAgree) {
     noLights.lights.clear();
     Scene torus = manyLightScene(10);
     torus.mesh = MeshKind::Torus;
+    // Specialised takes its first lights as flat inputs and the rest from the block: the torus
+    // has both kinds (GL 3.3 guarantees room for 6 flat lights).
+    EXPECT_GE(renderer.flatLightSlots(), 6u);
+    EXPECT_LT(renderer.flatLightSlots(), torus.lights.size());
     Scene unwindowed = onlyLightsOfType(LightType::Point, 3);
     unwindowed.lights[1].radius = 0.0f;
     // Points with Karis's coefficients and others, interleaved: specialised compiles each its
@@ -110,9 +118,13 @@ TEST(Renderer, AllThreePassModesAgree) {
         renderer.setMesh(makeMesh(c.scene.mesh));
         for (int samples : {4, 1}) {
             const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single, 160, samples);
-            for (PassMode other : {PassMode::Multi, PassMode::Specialised}) {
-                const RenderOutput image = renderScene(renderer, c.scene, other, 160, samples);
-                const std::string what = c.name + ", " + std::string(passModeName(other)) + ", " +
+            // Specialised with its first lights as flat inputs and with every light from the block.
+            for (auto [other, flat] : {std::pair{PassMode::Multi, FlatLights::WherePaying},
+                                       std::pair{PassMode::Specialised, FlatLights::Always},
+                                       std::pair{PassMode::Specialised, FlatLights::Never}}) {
+                const RenderOutput image = renderScene(renderer, c.scene, other, 160, samples, flat);
+                const std::string what = c.name + ", " + std::string(passModeName(other)) +
+                                         (flat == FlatLights::Always ? " (flat lights), " : ", ") +
                                          std::to_string(samples) + " samples";
                 EXPECT_LE(maxByteDifference(single.ldr, image.ldr), 1) << what;
                 EXPECT_LE(maxHdrRelativeDifference(single.hdr, image.hdr), 1e-4) << what;
@@ -128,8 +140,10 @@ TEST(Renderer, BrdfFloorMatchesSinglePassForDirectionalLights) {
     Renderer renderer;
     const Scene scene = onlyLightsOfType(LightType::Directional, 8);
     const RenderOutput single = renderScene(renderer, scene, PassMode::Single);
-    const RenderOutput floor = renderScene(renderer, scene, PassMode::BrdfFloor);
-    EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4);
+    for (FlatLights flat : {FlatLights::Always, FlatLights::Never}) {
+        const RenderOutput floor = renderScene(renderer, scene, PassMode::BrdfFloor, 160, 4, flat);
+        EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4) << (flat == FlatLights::Always);
+    }
 }
 
 // A render in strips (to bound memory) gives the image drawn whole, for every path; the strip

@@ -11,43 +11,76 @@ namespace {
 
 TEST(ShaderSpecialisation, DefaultSceneListsItsThreeLightsInOrder) {
     const Scene scene = defaultScene();
-    const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
-    EXPECT_EQ(key.lights, "SHADE_POINT(0, true, true) SHADE_DIRECTIONAL(1) SHADE_HEMISPHERE(2)");
+    const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
+    EXPECT_EQ(key.lights, "SHADE_POINT(BLOCK(0), true, true) SHADE_DIRECTIONAL(BLOCK(1)) SHADE_HEMISPHERE(BLOCK(2))");
     EXPECT_FALSE(key.noDiffuse);
+}
+
+// The first lights that fit come from mesh.vert as flat inputs, the rest from the block.
+TEST(ShaderSpecialisation, LightsPastTheFlatSlotsComeFromTheBlock) {
+    const Scene scene = defaultScene();
+    const std::vector<shader::PackedLight> lights = packEnabledLights(scene.lights);
+    const ShaderSpecialisation key = specialiseFor(lights, scene.material, 2);
+    EXPECT_EQ(key.lights, "SHADE_POINT(FLAT(0), true, true) SHADE_DIRECTIONAL(FLAT(1)) SHADE_HEMISPHERE(BLOCK(2))");
+    EXPECT_EQ(key.flatLights, "FLAT_POINT(0) FLAT_DIRECTIONAL(1)");
+    EXPECT_EQ(key.flatLightCount, 2);
+    const ShaderSpecialisation all = specialiseFor(lights, scene.material, 8);
+    EXPECT_EQ(all.flatLights, "FLAT_POINT(0) FLAT_DIRECTIONAL(1) FLAT_HEMISPHERE(2)");
+    EXPECT_EQ(all.flatLightCount, 3);
+    EXPECT_EQ(specialiseFor(lights, scene.material, 0).flatLightCount, 0);
+    // A pure metal leaves the hemisphere light out: nothing to hand on for it either.
+    Material metal = scene.material;
+    metal.metallic = 1.0f;
+    EXPECT_EQ(specialiseFor(lights, metal, 8).flatLights, "FLAT_POINT(0) FLAT_DIRECTIONAL(1)");
+    EXPECT_EQ(specialiseFor(lights, metal, 8).flatLightCount, 2);
+    // The floor reads its lights the same way, each as a direction.
+    const ShaderSpecialisation floor = brdfFloorFor(3, 2);
+    EXPECT_EQ(floor.lights, "BRDF_ONLY(FLAT(0)) BRDF_ONLY(FLAT(1)) BRDF_ONLY(BLOCK(2))");
+    EXPECT_EQ(floor.flatLights, "FLAT_DIRECTIONAL(0) FLAT_DIRECTIONAL(1)");
+}
+
+// Flat lights cost per triangle drawn and save per pixel: the default sphere (16,384
+// triangles) filling most of 1920x1080 gains; a million triangles there, the same sphere in a
+// 512x512 sheet cell, or one drawn in many strips does not.
+TEST(ShaderSpecialisation, FlatLightsPayOnlyWherePixelsOutnumberTrianglesDrawn) {
+    EXPECT_TRUE(flatLightsPay(1140.0 * 1002.0, 16384.0));
+    EXPECT_FALSE(flatLightsPay(1140.0 * 1002.0, 1'000'000.0));
+    EXPECT_FALSE(flatLightsPay(512.0 * 476.0, 16384.0));
+    EXPECT_FALSE(flatLightsPay(1140.0 * 1002.0, 16384.0 * 9));
 }
 
 TEST(ShaderSpecialisation, DisabledLightsAndUnwindowedPointsCompileLess) {
     Scene scene = defaultScene();
     scene.lights[1].enabled = false;
     scene.lights[0].radius = 0.0f;
-    const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
+    const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
     // Indices follow the uniform block, which holds enabled lights only.
-    EXPECT_EQ(key.lights, "SHADE_POINT(0, false, true) SHADE_HEMISPHERE(1)");
+    EXPECT_EQ(key.lights, "SHADE_POINT(BLOCK(0), false, true) SHADE_HEMISPHERE(BLOCK(1))");
 }
 
 // Karis's coefficients compile as constants; any other set is read from the light.
 TEST(ShaderSpecialisation, OnlyKarisCoefficientsCompileAsConstants) {
     Scene scene = defaultScene();
     scene.lights[0].attenuation = {1.0f, 0.0f, 0.5f};
-    EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material).lights,
-              "SHADE_POINT(0, true, false) SHADE_DIRECTIONAL(1) SHADE_HEMISPHERE(2)");
+    EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material, 0).lights,
+              "SHADE_POINT(BLOCK(0), true, false) SHADE_DIRECTIONAL(BLOCK(1)) SHADE_HEMISPHERE(BLOCK(2))");
     scene.lights.push_back(defaultScene().lights[0]);   // Karis's again, packed after the other point
-    EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material).lights,
-              "SHADE_POINT(0, true, false) SHADE_POINT(1, true, true) SHADE_DIRECTIONAL(2) SHADE_HEMISPHERE(3)");
+    EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material, 0).lights,
+              "SHADE_POINT(BLOCK(0), true, false) SHADE_POINT(BLOCK(1), true, true) SHADE_DIRECTIONAL(BLOCK(2)) SHADE_HEMISPHERE(BLOCK(3))");
 }
 
 TEST(ShaderSpecialisation, PureMetalDropsDiffuseAndTheHemisphereLight) {
     Scene scene = defaultScene();
     scene.material.metallic = 1.0f;
-    ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material);
+    ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
     EXPECT_TRUE(key.noDiffuse);
-    EXPECT_EQ(key.lights, "SHADE_POINT(0, true, true) SHADE_DIRECTIONAL(1)");
+    EXPECT_EQ(key.lights, "SHADE_POINT(BLOCK(0), true, true) SHADE_DIRECTIONAL(BLOCK(1))");
     // Almost metal still has a diffuse term; a black dielectric has none.
     scene.material.metallic = 0.999f;
-    EXPECT_FALSE(specialiseFor(packEnabledLights(scene.lights), scene.material).noDiffuse);
+    EXPECT_FALSE(specialiseFor(packEnabledLights(scene.lights), scene.material, 0).noDiffuse);
     scene.material.metallic = 0.0f;
     scene.material.baseColor = glm::vec3(0.0f);
-    EXPECT_TRUE(specialiseFor(packEnabledLights(scene.lights), scene.material).noDiffuse);
+    EXPECT_TRUE(specialiseFor(packEnabledLights(scene.lights), scene.material, 0).noDiffuse);
 }
 
 TEST(ShaderSpecialisation, KeysDifferOnlyWhenTheShaderWould) {
@@ -55,11 +88,11 @@ TEST(ShaderSpecialisation, KeysDifferOnlyWhenTheShaderWould) {
     Scene b = a;
     b.lights[0].position = {9.0f, 1.0f, 0.0f};   // a uniform: same shader
     b.material.roughness = 0.9f;
-    EXPECT_EQ(specialiseFor(packEnabledLights(a.lights), a.material),
-              specialiseFor(packEnabledLights(b.lights), b.material));
+    EXPECT_EQ(specialiseFor(packEnabledLights(a.lights), a.material, 0),
+              specialiseFor(packEnabledLights(b.lights), b.material, 0));
     b.lights.push_back(b.lights[1]);
-    EXPECT_NE(specialiseFor(packEnabledLights(a.lights), a.material),
-              specialiseFor(packEnabledLights(b.lights), b.material));
+    EXPECT_NE(specialiseFor(packEnabledLights(a.lights), a.material, 0),
+              specialiseFor(packEnabledLights(b.lights), b.material, 0));
 }
 
 // Single reads the coefficients only when some point light has others than Karis's.
@@ -111,12 +144,12 @@ TEST(ShaderSpecialisation, CacheKeepsAtMostItsCapacity) {
     ShadingPrograms programs;
     const size_t extra = 3;
     for (size_t count = 0; count < ShadingPrograms::kSpecialisedCapacity + extra; ++count) {
-        programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(count));
+        programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(count, 0));
     }
     EXPECT_EQ(programs.specialisedCount(), ShadingPrograms::kSpecialisedCapacity);
     // The most recent key is still there and usable.
     GLint current = 0;
-    const GlProgram& last = programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(ShadingPrograms::kSpecialisedCapacity + extra - 1));
+    const GlProgram& last = programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(ShadingPrograms::kSpecialisedCapacity + extra - 1, 0));
     glGetIntegerv(GL_CURRENT_PROGRAM, &current);
     EXPECT_EQ(GLuint(current), last.id());
     EXPECT_EQ(programs.specialisedCount(), ShadingPrograms::kSpecialisedCapacity);

@@ -16,6 +16,7 @@ public:
     void upload(const Mesh& mesh);
     void draw() const;
     const BoundingBox& bounds() const { return bounds_; }
+    size_t triangleCount() const { return size_t(indexCount_) / 3; }
 
 private:
     GLuint vertexArray_ = 0, vertices_ = 0, indices_ = 0;

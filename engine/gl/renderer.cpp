@@ -105,6 +105,21 @@ int stripRowsFor(const RenderSettings& settings, int samples) {
                     (h + kMaxStrips - 1) / kMaxStrips);
 }
 
+// How many lights a specialised draw takes as flat inputs: the mesh is drawn once per strip
+// that meets its box on screen, and the box bounds the pixels it can cover.
+size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox, int stripRows,
+                         size_t triangles) {
+    if (mode != RenderSettings::FlatLights::WherePaying) {
+        return mode == RenderSettings::FlatLights::Always ? slots : 0;
+    }
+    if (meshBox.empty()) {
+        return 0;
+    }
+    const int draws = (meshBox.y1 - 1) / stripRows - meshBox.y0 / stripRows + 1;
+    const double pixels = double(meshBox.x1 - meshBox.x0) * double(meshBox.y1 - meshBox.y0);
+    return flatLightsPay(pixels, double(triangles) * draws) ? slots : 0;
+}
+
 template <typename T>
 void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
     for (int y = 0; y < rows / 2; ++y) {
@@ -159,6 +174,7 @@ struct Renderer::State {
     bool timerPending = false;
     double gpuMilliseconds = -1.0;
     int maxSamples = 0, maxSize = 0;
+    size_t flatLightSlots = 0;
 };
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
@@ -173,12 +189,23 @@ Renderer::Renderer() : state_(std::make_unique<State>()) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &textureSize);
     s.maxSamples = std::min(renderbufferSamples, textureSamples);
     s.maxSize = std::min(renderbufferSize, textureSize);
+    // Two vec4 rows a flat light, after mesh.vert's two outputs and one vec4 kept back in case the
+    // implementation counts gl_Position. GL 3.3's minimum (64 components) leaves 6 lights.
+    GLint vertexOutputs = 0, fragmentInputs = 0;
+    glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &vertexOutputs);
+    glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &fragmentInputs);
+    const int vectors = std::min(vertexOutputs, fragmentInputs) / 4;
+    s.flatLightSlots = size_t(std::max(vectors - 3, 0) / 2);
     setMesh(makeUvSphere());
 }
 
 Renderer::~Renderer() {
     glDeleteQueries(1, &state_->timerQuery);
     glDeleteVertexArrays(1, &state_->emptyVertexArray);
+}
+
+size_t Renderer::flatLightSlots() const {
+    return state_->flatLightSlots;
 }
 
 double Renderer::lastGpuMilliseconds() {
@@ -262,13 +289,18 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
+    const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
+    const PixelRect meshBox = screenBounds(transform, s.mesh.bounds(), w, h);
+    const size_t flatSlots = flatLightSlotsFor(settings.flatLights, s.flatLightSlots, meshBox, stripRows,
+                                               s.mesh.triangleCount());
     const GlProgram& shading =
         settings.passes == PassMode::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
         : settings.passes == PassMode::Multi
             ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
             : s.shading.useSpecialised(model,
-                                       settings.passes == PassMode::Specialised ? specialiseFor(packed, scene.material)
-                                                                                : brdfFloorFor(packed.size()),
+                                       settings.passes == PassMode::Specialised
+                                           ? specialiseFor(packed, scene.material, flatSlots)
+                                           : brdfFloorFor(packed.size(), flatSlots),
                                        output);
     if (settings.passes == PassMode::Multi) {
         s.depthPrepass.get();
@@ -290,7 +322,6 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const GLfloat clearDisplay[4] = {backgroundShown.r, backgroundShown.g, backgroundShown.b, 1.0f};
     const GLfloat clearDepth = 1.0f;
 
-    const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
     auto prepare = [&](const GlProgram& program) {
         glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(transform));
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
@@ -328,8 +359,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     // With MSAA, samples only where the mesh can be: most of a frame is often background, and
     // there a sample costs a clear, a store and a resolve for nothing.
     const PixelRect whole{0, 0, w, h};
-    const PixelRect meshArea =
-        msaa && settings.cropToMesh ? screenBounds(transform, s.mesh.bounds(), w, h) : whole;
+    const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
     if (meshArea != whole) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
         if (linear) {

@@ -44,6 +44,11 @@ struct RenderSettings {
     // on screen); the rest is background, filled without samples. false: every pixel, the
     // same image (for tests).
     bool cropToMesh = true;
+    // Specialised (and the floor): take the first lights as flat inputs from the vertex stage
+    // where that pays for this mesh and image (flatLightsPay, shader_specialisation.h), always,
+    // or never. The image is the same to rounding.
+    enum class FlatLights { WherePaying, Always, Never };
+    FlatLights flatLights = FlatLights::WherePaying;
 };
 
 struct RenderOutput {
@@ -77,6 +82,8 @@ public:
     static constexpr int kSlots = 2;
 
     void setMesh(const Mesh& mesh);
+    // How many lights a specialised shader takes as flat inputs (shader_specialisation.h).
+    size_t flatLightSlots() const;
     // Renders into `slot` and returns its display texture (GL_RGBA32F holding sRGB-encoded
     // values in [0, 1], GL's bottom-up rows), valid until the slot is drawn again at another
     // size. Float, not 8-bit: llvmpipe runs a shader writing 8-bit colour about 1.8x slower.

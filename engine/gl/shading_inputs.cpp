@@ -10,6 +10,7 @@ namespace patina {
 namespace shader_sources {
 extern const char* const brdf_glsl;
 extern const char* const lights_glsl;
+extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
 extern const char* const energy_table_glsl;
 extern const char* const brdf_model_glsl;
@@ -24,9 +25,9 @@ constexpr size_t kLightBlockSize = sizeof(shader::PackedLight) * shader::MAX_LIG
 }  // namespace
 
 std::vector<const char*> shadingFragmentParts() {
-    return {shader_sources::brdf_glsl,         shader_sources::lights_glsl,     shader_sources::energy_texel_glsl,
-            shader_sources::energy_table_glsl, shader_sources::brdf_model_glsl, shader_sources::display_glsl,
-            shader_sources::shade_frag};
+    return {shader_sources::brdf_glsl,         shader_sources::lights_glsl,       shader_sources::light_block_glsl,
+            shader_sources::energy_texel_glsl, shader_sources::energy_table_glsl, shader_sources::brdf_model_glsl,
+            shader_sources::display_glsl,      shader_sources::shade_frag};
 }
 
 LightBuffer::LightBuffer() {

@@ -14,6 +14,8 @@ namespace patina {
 namespace shader_sources {
 extern const char* const mesh_vert;
 extern const char* const probe_vert;
+extern const char* const lights_glsl;
+extern const char* const light_block_glsl;
 }  // namespace shader_sources
 
 namespace {
@@ -34,7 +36,12 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (output == Output::LinearAndDisplay) {
         defines.push_back("PATINA_DISPLAY_OUTPUT");
     }
-    auto program = std::make_unique<GlProgram>(std::vector<const char*>{vertex}, shadingFragmentParts(), defines);
+    // mesh.vert reads the light block for a specialised shader's flat lights.
+    const std::vector<const char*> vertexParts =
+        vertex == shader_sources::mesh_vert
+            ? std::vector<const char*>{shader_sources::lights_glsl, shader_sources::light_block_glsl, vertex}
+            : std::vector<const char*>{vertex};
+    auto program = std::make_unique<GlProgram>(vertexParts, shadingFragmentParts(), defines);
     LightBuffer::attach(*program);
     return program;
 }
