@@ -43,10 +43,13 @@ struct LightCountRow {
 };
 
 struct ScaleRow {
-    std::string axis;     // "resolution" or "triangles"
+    std::string axis;     // "resolution", "triangles" or "flat-lights"
     int width = 0, height = 0;
     size_t triangles = 0;
-    FrameTiming time;     // single pass, the default scene's three lights
+    FrameTiming time;     // the default scene's three lights
+    // "single"; on the flat-lights axis "specialised-flat" or "specialised-block" (specialised
+    // with its lights as flat inputs or from the block: what flatLightsPay weighs).
+    std::string path = "single";
 };
 
 struct RenderBenchResult {
@@ -57,6 +60,7 @@ struct RenderBenchResult {
     size_t gltfTriangles = 0;
     double gltfBytes = 0.0, gltfLoadSeconds = 0.0;   // a GLB of gltfTriangles, imported
     std::string renderer;   // GL_RENDERER
+    size_t flatLightSlots = 0;   // lights specialised takes as flat inputs (Renderer::flatLightSlots)
 };
 
 // The default scene with `lights` lights: its first `lights` for up to 3, then the ring.
