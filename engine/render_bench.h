@@ -21,7 +21,7 @@ struct RenderBenchOptions {
 
 // Medians over the runs, in milliseconds.
 struct FrameTiming {
-    double gpu = 0.0;     // GL_TIME_ELAPSED timer query around the frame
+    double gpu = 0.0;     // two GL_TIMESTAMP queries around the frame (Renderer::lastGpuMilliseconds)
     double cpu = 0.0;     // CPU time of the calling thread inside Renderer::draw (submission)
     double frame = 0.0;   // wall clock from draw to glFinish
 };

@@ -93,7 +93,7 @@ public:
     // drawn); without `hdr`, RenderOutput::hdr stays empty. Throws std::logic_error for `hdr`
     // when the draw did not keep it (RenderSettings::readHdr).
     RenderOutput readBack(int slot = 0, bool hdr = true) const;
-    // GPU time of the most recent draw whose timer query has completed (GL_TIME_ELAPSED,
+    // GPU time of the most recent draw whose timer queries have completed (two GL_TIMESTAMPs,
     // read without waiting), in milliseconds; negative before the first.
     double lastGpuMilliseconds();
     // draw into slot 0 and wait for it: the GPU time of that draw in milliseconds (for
