@@ -58,6 +58,19 @@ glm::mat4 viewProjection(const Camera& camera, float aspect) {
            glm::lookAt(camera.position, camera.target, up);
 }
 
+size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox,
+                         const PixelRect& drawnArea, int stripRows, size_t triangles) {
+    if (mode != RenderSettings::FlatLights::WherePaying) {
+        return mode == RenderSettings::FlatLights::Always ? slots : 0;
+    }
+    if (meshBox.empty() || drawnArea.empty()) {
+        return 0;
+    }
+    const int draws = (drawnArea.y1 - 1) / stripRows - drawnArea.y0 / stripRows + 1;
+    const double pixels = double(meshBox.x1 - meshBox.x0) * double(meshBox.y1 - meshBox.y0);
+    return flatLightsPay(pixels, double(triangles) * draws) ? slots : 0;
+}
+
 PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height) {
     if (box.empty()) {
         return {};
@@ -103,21 +116,6 @@ int stripRowsFor(const RenderSettings& settings, int samples) {
     const size_t bytesPerRow = size_t(settings.width) * size_t(samples) * 4 * sizeof(float);
     return std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
                     (h + kMaxStrips - 1) / kMaxStrips);
-}
-
-// How many lights a specialised draw takes as flat inputs: the mesh is drawn once per strip
-// that meets its box on screen, and the box bounds the pixels it can cover.
-size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox, int stripRows,
-                         size_t triangles) {
-    if (mode != RenderSettings::FlatLights::WherePaying) {
-        return mode == RenderSettings::FlatLights::Always ? slots : 0;
-    }
-    if (meshBox.empty()) {
-        return 0;
-    }
-    const int draws = (meshBox.y1 - 1) / stripRows - meshBox.y0 / stripRows + 1;
-    const double pixels = double(meshBox.x1 - meshBox.x0) * double(meshBox.y1 - meshBox.y0);
-    return flatLightsPay(pixels, double(triangles) * draws) ? slots : 0;
 }
 
 template <typename T>
@@ -175,6 +173,7 @@ struct Renderer::State {
     double gpuMilliseconds = -1.0;
     int maxSamples = 0, maxSize = 0;
     size_t flatLightSlots = 0;
+    bool flushTimerStart = false;
 };
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
@@ -190,12 +189,20 @@ Renderer::Renderer() : state_(std::make_unique<State>()) {
     s.maxSamples = std::min(renderbufferSamples, textureSamples);
     s.maxSize = std::min(renderbufferSize, textureSize);
     // Two vec4 rows a flat light, after mesh.vert's two outputs and one vec4 kept back in case the
-    // implementation counts gl_Position. GL 3.3's minimum (64 components) leaves 6 lights.
-    GLint vertexOutputs = 0, fragmentInputs = 0;
+    // implementation counts gl_Position. GL 3.3's minimum (60 varying components) leaves 6 lights.
+    GLint vertexOutputs = 0, fragmentInputs = 0, varyings = 0;
     glGetIntegerv(GL_MAX_VERTEX_OUTPUT_COMPONENTS, &vertexOutputs);
     glGetIntegerv(GL_MAX_FRAGMENT_INPUT_COMPONENTS, &fragmentInputs);
-    const int vectors = std::min(vertexOutputs, fragmentInputs) / 4;
+    glGetIntegerv(GL_MAX_VARYING_COMPONENTS, &varyings);
+    glGetError();   // a core context may refuse the last (deprecated in 3.x); draw() checks errors
+    const int vectors = std::min({vertexOutputs, fragmentInputs, varyings > 0 ? varyings : vertexOutputs}) / 4;
     s.flatLightSlots = size_t(std::max(vectors - 3, 0) / 2);
+    // llvmpipe bins a query into every tile of the scene it lands in, and each tile overwrites
+    // the last one's stamp: a query in the draw's own scene timed one tile (about 0.02 ms of a
+    // 40 ms frame; GL_TIME_ELAPSED the same). A flush after the start stamp gives it a scene of
+    // its own. Elsewhere the stamps go with the draw, so no gap in submission is counted.
+    const GLubyte* rendererName = glGetString(GL_RENDERER);
+    s.flushTimerStart = rendererName && std::string_view(reinterpret_cast<const char*>(rendererName)).starts_with("llvmpipe");
     setMesh(makeUvSphere());
 }
 
@@ -292,7 +299,11 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
     const PixelRect meshBox = screenBounds(transform, s.mesh.bounds(), w, h);
-    const size_t flatSlots = flatLightSlotsFor(settings.flatLights, s.flatLightSlots, meshBox, stripRows,
+    // With MSAA, samples only where the mesh can be: most of a frame is often background, and
+    // there a sample costs a clear, a store and a resolve for nothing.
+    const PixelRect whole{0, 0, w, h};
+    const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
+    const size_t flatSlots = flatLightSlotsFor(settings.flatLights, s.flatLightSlots, meshBox, meshArea, stripRows,
                                                s.mesh.triangleCount());
     const GlProgram& shading =
         settings.passes == PassMode::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
@@ -307,16 +318,14 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         s.depthPrepass.get();
     }
 
-    // One query in flight: a draw while the last is unread goes untimed.
+    // One pair of queries in flight: a draw while the last pair is unread goes untimed.
     lastGpuMilliseconds();
     const bool timed = !s.timerPending;
     if (timed) {
-        // llvmpipe bins a query into every tile of the scene it lands in, and a tile overwrites
-        // the last one's stamp: in the draw's own scene the pair timed one tile (about 0.02 ms
-        // of a 40 ms frame; GL_TIME_ELAPSED the same). The flush gives the start a scene of
-        // its own, run before the draw's.
         glQueryCounter(s.timerQueries[0], GL_TIMESTAMP);
-        glFlush();
+        if (s.flushTimerStart) {
+            glFlush();
+        }
     }
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
@@ -362,10 +371,6 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glBindVertexArray(0);
         glDisable(GL_SCISSOR_TEST);
     };
-    // With MSAA, samples only where the mesh can be: most of a frame is often background, and
-    // there a sample costs a clear, a store and a resolve for nothing.
-    const PixelRect whole{0, 0, w, h};
-    const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
     if (meshArea != whole) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
         if (linear) {

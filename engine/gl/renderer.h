@@ -69,6 +69,13 @@ struct PixelRect {
 // the eye (the projection of the box is then unbounded); empty for an empty box.
 PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height);
 
+// How many of `slots` lights a specialised draw takes as flat inputs under `mode`: with
+// WherePaying, all where flatLightsPay (shader_specialisation.h) says so for the pixels of
+// `meshBox` (what the mesh can cover) and the mesh's triangles drawn once per strip of
+// `stripRows` rows that meets `drawnArea` (the scissored area), otherwise none.
+size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox,
+                         const PixelRect& drawnArea, int stripRows, size_t triangles);
+
 // Draws scenes with the shared shaders. Needs a current OpenGL 3.3 core context (a
 // HeadlessContext or the editor's window) for its whole life.
 class Renderer {
@@ -94,7 +101,9 @@ public:
     // when the draw did not keep it (RenderSettings::readHdr).
     RenderOutput readBack(int slot = 0, bool hdr = true) const;
     // GPU time of the most recent draw whose timer queries have completed (two GL_TIMESTAMPs,
-    // read without waiting), in milliseconds; negative before the first.
+    // read without waiting), in milliseconds; negative before the first. On llvmpipe, where
+    // the rasteriser is the "GPU", it runs from the start of the draw's binning to the end of
+    // its rasterisation, close to the draw's wall time.
     double lastGpuMilliseconds();
     // draw into slot 0 and wait for it: the GPU time of that draw in milliseconds (for
     // benchmarks; it stalls the pipeline).
