@@ -24,6 +24,15 @@ void append(std::string& list, const std::string& entry) {
         list += (list.empty() ? "" : " ") + entry;
     }
 }
+
+// Light i's fragment-shader call, and its flat rows for mesh.vert where it has them.
+void addLight(ShaderSpecialisation& key, size_t i, const std::string& call, const LightSource& source) {
+    append(key.lights, call);
+    if (!source.vertex.empty()) {
+        append(key.flatLights, source.vertex);
+        key.flatLightCount = int(i) + 1;
+    }
+}
 }  // namespace
 
 std::vector<std::string> ShaderSpecialisation::defines() const {
@@ -59,10 +68,8 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
             source = sourceOf(i, flatSlots, "FLAT_HEMISPHERE");
             call = "SHADE_HEMISPHERE(" + source.fragment + ")";
         }
-        append(key.lights, call);
-        if (!call.empty() && !source.vertex.empty()) {
-            append(key.flatLights, source.vertex);
-            key.flatLightCount = int(i) + 1;
+        if (!call.empty()) {
+            addLight(key, i, call, source);
         }
     }
     return key;
@@ -77,11 +84,7 @@ ShaderSpecialisation brdfFloorFor(size_t count, size_t flatSlots) {
     for (size_t i = 0; i < count; ++i) {
         // The floor's scene has directional lights only (render_bench.cpp's brdfFloorScene).
         const LightSource source = sourceOf(i, flatSlots, "FLAT_DIRECTIONAL");
-        append(key.lights, "BRDF_ONLY(" + source.fragment + ")");
-        if (!source.vertex.empty()) {
-            append(key.flatLights, source.vertex);
-            key.flatLightCount = int(i) + 1;
-        }
+        addLight(key, i, "BRDF_ONLY(" + source.fragment + ")", source);
     }
     return key;
 }

@@ -31,6 +31,10 @@ flat in vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
 PackedLight flatLight(int i) {
     PackedLight light;
     light.type = -1;   // not read: each SHADE_* macro names its type
+    light.unused0 = 0.0f;
+    light.unused1 = 0.0f;
+    light.unused2 = 0.0f;
+    light.unused3 = 0.0f;
     light.radiance = vFlatLight[2 * i].xyz;
     light.sky = vFlatLight[2 * i].xyz;
     light.inverseRadius = vFlatLight[2 * i].w;
@@ -74,7 +78,7 @@ void main() {
 // The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for a light's
 // direction, with none of the light handling above (no type, no attenuation, no branch).
 // (One line: GLSL 3.30 has no line continuation.)
-#define BRDF_ONLY(light) { PackedLight l = light; vec3 L = l.directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += l.radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
+#define BRDF_ONLY(light) { vec3 L = light.directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += light.radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/light_packing.h): a loop per type, no type branch.

@@ -21,6 +21,11 @@ extern const char* const light_block_glsl;
 namespace {
 // Texture unit of uEnergyTable; unit 0 stays free for the display pass.
 constexpr int kEnergyUnit = 1;
+
+// mesh.vert reads the light block for a specialised shader's flat lights.
+std::vector<const char*> meshVertexParts() {
+    return {shader_sources::lights_glsl, shader_sources::light_block_glsl, shader_sources::mesh_vert};
+}
 }  // namespace
 
 ShadingPrograms::~ShadingPrograms() {
@@ -29,18 +34,14 @@ ShadingPrograms::~ShadingPrograms() {
     }
 }
 
-std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output output, const char* vertex,
+std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output output,
+                                                  const std::vector<const char*>& vertexParts,
                                                   std::vector<std::string> defines) {
     const std::vector<std::string> modelDefines = brdfModelDefines(model);
     defines.insert(defines.begin(), modelDefines.begin(), modelDefines.end());
     if (output == Output::LinearAndDisplay) {
         defines.push_back("PATINA_DISPLAY_OUTPUT");
     }
-    // mesh.vert reads the light block for a specialised shader's flat lights.
-    const std::vector<const char*> vertexParts =
-        vertex == shader_sources::mesh_vert
-            ? std::vector<const char*>{shader_sources::lights_glsl, shader_sources::light_block_glsl, vertex}
-            : std::vector<const char*>{vertex};
     auto program = std::make_unique<GlProgram>(vertexParts, shadingFragmentParts(), defines);
     LightBuffer::attach(*program);
     return program;
@@ -88,8 +89,8 @@ const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output)
     std::unique_ptr<GlProgram>& program = programs_[{model, use, output}];
     if (!program) {
         program = use == Use::Probe
-                      ? build(model, output, shader_sources::probe_vert, {"PATINA_SINGLE_PASS", "PATINA_PROBE"})
-                      : build(model, output, shader_sources::mesh_vert, {});
+                      ? build(model, output, {shader_sources::probe_vert}, {"PATINA_SINGLE_PASS", "PATINA_PROBE"})
+                      : build(model, output, meshVertexParts(), {});
     }
     return bind(model, *program);
 }
@@ -97,7 +98,7 @@ const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output)
 const GlProgram& ShadingPrograms::useSingle(BrdfModelId model, const SinglePass& pass, Output output) {
     std::unique_ptr<GlProgram>& program = singles_[{model, pass, output}];
     if (!program) {
-        program = build(model, output, shader_sources::mesh_vert, pass.defines());
+        program = build(model, output, meshVertexParts(), pass.defines());
     }
     return bind(model, *program);
 }
@@ -107,7 +108,7 @@ const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const Shader
     Specialised& entry = specialised_[{model, key, output}];
     if (!entry.program) {
         try {
-            entry.program = build(model, output, shader_sources::mesh_vert, key.defines());
+            entry.program = build(model, output, meshVertexParts(), key.defines());
         } catch (...) {
             specialised_.erase({model, key, output});
             throw;

@@ -62,7 +62,7 @@ private:
     std::map<BrdfModelId, unsigned> energyTextures_;
 
     unsigned energyTexture(BrdfModelId model);
-    std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, const char* vertex,
+    std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, const std::vector<const char*>& vertexParts,
                                      std::vector<std::string> defines);
     const GlProgram& bind(BrdfModelId model, const GlProgram& program);
 };
