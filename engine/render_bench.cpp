@@ -1,5 +1,6 @@
 #include "render_bench.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -89,14 +90,24 @@ constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
 // Every path with point lights added; single again with directional lights added (whose
 // light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
 // single and specialised again with points whose coefficients they must read. The floor's
-// scene is the lights as directions, the same for all.
+// scene is the lights as directions, the same for all. The floor is also measured at as many
+// lights as specialised takes as flat inputs (floorPerLight).
 void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                         RenderBenchResult& result) {
-    const std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
+    std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
+    const int slots = int(result.flatLightSlots);
+    const bool floorAtSlots = slots > 3 && slots < counts.back() && std::find(counts.begin(), counts.end(), slots) == counts.end();
+    if (floorAtSlots) {
+        counts.insert(std::upper_bound(counts.begin(), counts.end(), slots), slots);
+    }
+    auto measured = [&](PassMode path, int count) { return path == PassMode::BrdfFloor || !floorAtSlots || count != slots; };
     std::map<std::tuple<int, int, int>, Samples> samples;
     interleaved(options.runs, [&](bool keep) {
         for (int count : counts) {
             for (const auto& [path, added] : kLightSeries) {
+                if (!measured(path, count)) {
+                    continue;
+                }
                 const Scene scene = renderBenchScene(count, added);
                 RenderSettings s = settings;
                 s.passes = path;
@@ -107,7 +118,9 @@ void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, c
     });
     for (const auto& [path, added] : kLightSeries) {
         for (int count : counts) {
-            result.lightRows.push_back({path, added, count, samples[{int(path), int(added), count}].medians()});
+            if (measured(path, count)) {
+                result.lightRows.push_back({path, added, count, samples[{int(path), int(added), count}].medians()});
+            }
         }
     }
 }
@@ -266,12 +279,21 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     auto perLight = [&](PassMode path, AddedLights added) {
         return (gpu(path, most, added) - gpu(path, 8, added)) / double(most - 8);
     };
-    // The floor's own cost per light from 3 to 8 lights: there each of its lights is a flat input
-    // where the renderer uses them (room for 8 or more; llvmpipe has 14). Past the slots the
-    // floor would pay the uniform gathers it is meant to leave out.
-    const double floor =
-        (gpu(PassMode::BrdfFloor, 8, AddedLights::Points) - gpu(PassMode::BrdfFloor, 3, AddedLights::Points)) / 5.0;
-    const std::string range = " (8 to " + std::to_string(most) + " lights; floor 3 to 8)";
+    // The floor's own cost per light from 3 lights to as many as take flat inputs (14 on
+    // llvmpipe), where every one of its lights is flat when the renderer uses them; past the
+    // slots the floor would pay the uniform gathers it is meant to leave out. 3 to 8 where the
+    // GL has fewer slots or the floor was not measured at them.
+    int floorTop = 8;
+    for (const LightCountRow& row : result.lightRows) {
+        if (row.path == PassMode::BrdfFloor && row.lights > floorTop && row.lights <= int(result.flatLightSlots)) {
+            floorTop = row.lights;
+        }
+    }
+    const double floor = (gpu(PassMode::BrdfFloor, floorTop, AddedLights::Points) -
+                          gpu(PassMode::BrdfFloor, 3, AddedLights::Points)) /
+                         double(floorTop - 3);
+    const std::string range =
+        " (8 to " + std::to_string(most) + " lights; floor 3 to " + std::to_string(floorTop) + ")";
     add("single's cost per added directional light / the BRDF floor's" + range,
         perLight(PassMode::Single, AddedLights::Directionals) / floor, 1.3);
     add("single's cost per added point light / the BRDF floor's" + range,
