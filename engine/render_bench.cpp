@@ -91,16 +91,19 @@ constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
 // light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
 // single and specialised again with points whose coefficients they must read. The floor's
 // scene is the lights as directions, the same for all. The floor is also measured at as many
-// lights as specialised takes as flat inputs (floorPerLight).
+// lights as specialised takes as flat inputs (renderBenchTargets takes its slope up to there).
 void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                         RenderBenchResult& result) {
     std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
     const int slots = int(result.flatLightSlots);
-    const bool floorAtSlots = slots > 3 && slots < counts.back() && std::find(counts.begin(), counts.end(), slots) == counts.end();
+    const bool floorAtSlots =
+        slots > 3 && slots < counts.back() && std::find(counts.begin(), counts.end(), slots) == counts.end();
     if (floorAtSlots) {
         counts.insert(std::upper_bound(counts.begin(), counts.end(), slots), slots);
     }
-    auto measured = [&](PassMode path, int count) { return path == PassMode::BrdfFloor || !floorAtSlots || count != slots; };
+    auto measured = [&](PassMode path, int count) {
+        return path == PassMode::BrdfFloor || !floorAtSlots || count != slots;
+    };
     std::map<std::tuple<int, int, int>, Samples> samples;
     interleaved(options.runs, [&](bool keep) {
         for (int count : counts) {

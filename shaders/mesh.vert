@@ -14,9 +14,13 @@ out vec3 vNormal;
 // (docs/PERFORMANCE.md). PATINA_FLAT_LIGHTS lists FLAT_POINT(i), FLAT_DIRECTIONAL(i) and
 // FLAT_HEMISPHERE(i), each light's two rows (shade.frag's flatLight unpacks them).
 flat out vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
-#define FLAT_POINT(i) vFlatLight[2 * i] = vec4(uLights[i].radiance, uLights[i].inverseRadius); vFlatLight[2 * i + 1] = vec4(uLights[i].position, 0.0f);
-#define FLAT_DIRECTIONAL(i) vFlatLight[2 * i] = vec4(uLights[i].radiance, 0.0f); vFlatLight[2 * i + 1] = vec4(uLights[i].directionToLight, 0.0f);
-#define FLAT_HEMISPHERE(i) vFlatLight[2 * i] = vec4(uLights[i].sky, 0.0f); vFlatLight[2 * i + 1] = vec4(uLights[i].ground, 0.0f);
+void writeFlatLight(int i, vec3 first, float firstW, vec3 second) {
+    vFlatLight[2 * i] = vec4(first, firstW);
+    vFlatLight[2 * i + 1] = vec4(second, 0.0f);
+}
+#define FLAT_POINT(i) writeFlatLight(i, uLights[i].radiance, uLights[i].inverseRadius, uLights[i].position);
+#define FLAT_DIRECTIONAL(i) writeFlatLight(i, uLights[i].radiance, 0.0f, uLights[i].directionToLight);
+#define FLAT_HEMISPHERE(i) writeFlatLight(i, uLights[i].sky, 0.0f, uLights[i].ground);
 #endif
 
 // The multi-pass path draws the mesh once per light with depth test EQUAL: every pass must

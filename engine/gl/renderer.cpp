@@ -202,7 +202,8 @@ Renderer::Renderer() : state_(std::make_unique<State>()) {
     // 40 ms frame; GL_TIME_ELAPSED the same). A flush after the start stamp gives it a scene of
     // its own. Elsewhere the stamps go with the draw, so no gap in submission is counted.
     const GLubyte* rendererName = glGetString(GL_RENDERER);
-    s.flushTimerStart = rendererName && std::string_view(reinterpret_cast<const char*>(rendererName)).starts_with("llvmpipe");
+    s.flushTimerStart =
+        rendererName && std::string_view(reinterpret_cast<const char*>(rendererName)).starts_with("llvmpipe");
     setMesh(makeUvSphere());
 }
 
