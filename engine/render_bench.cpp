@@ -264,7 +264,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
 std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     std::vector<TargetCheck> targets;
     // Wall time to glFinish, what a user waits for; the timer queries' GPU time is in the CSV
-    // beside it (on llvmpipe within a few percent of it, as the rasteriser is the "GPU").
+    // beside it (on llvmpipe 83-100% of it, as the rasteriser is the "GPU").
     auto gpu = [&](PassMode path, int lights, AddedLights added = AddedLights::Points) {
         const FrameTiming* t = findLights(result, path, added, lights);
         return t ? t->frame : std::nan("");

@@ -36,10 +36,10 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
 
 // Whether handing lights on as flat inputs pays for a draw: it costs the vertex stage per
 // triangle drawn (each vertex writes two more outputs a light, each triangle sets them up) and
-// saves the fragment stage a gather per scalar per fragment. On llvmpipe flat won every case
+// saves the fragment stage a gather per scalar per 8 fragments. On llvmpipe flat won every case
 // measured down to 9 pixels a triangle drawn (1080p with MSAA strips, the 512x512 sheet cell,
-// 100k triangles at 1080p) and lost only at 1.1 without MSAA (1M triangles at 1080p: 177
-// against 141 ms; docs/PERFORMANCE.md). `pixels`: those the mesh can cover; `trianglesDrawn`:
+// 100k triangles at 1080p) and lost only at 1.1 without MSAA (1M triangles at 1080p: 179
+// against 143 ms; docs/PERFORMANCE.md). `pixels`: those the mesh can cover; `trianglesDrawn`:
 // the mesh's triangles times the draws (MSAA strips) that cover it.
 constexpr double kFlatLightPixelsPerTriangle = 4.0;
 bool flatLightsPay(double pixels, double trianglesDrawn);
