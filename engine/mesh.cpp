@@ -5,6 +5,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "gltf_import.h"
 
@@ -28,16 +29,26 @@ std::vector<uint32_t> gridIndices(int rows, int columns) {
     }
     return indices;
 }
+
+// (sin, cos) of the angle k / n of a full turn. The last column of a grid is its first again:
+// the same position to the bit, so the seam is closed (hidden_faces.h), as sin(float(2 pi))
+// is not 0.
+glm::vec2 turn(int k, int n) {
+    const float angle = 2.0f * kPi * float(k % n) / float(n);
+    return {std::sin(angle), std::cos(angle)};
+}
 }  // namespace
 
 Mesh makeUvSphere(int rings, int segments) {
     Mesh mesh;
     for (int ring = 0; ring <= rings; ++ring) {
         const float theta = kPi * float(ring) / float(rings);   // from +y down
+        // sin(float(pi)) is not 0: the south pole's copies would differ.
+        const float sinTheta = ring == rings ? 0.0f : std::sin(theta);
+        const float cosTheta = ring == rings ? -1.0f : std::cos(theta);
         for (int segment = 0; segment <= segments; ++segment) {
-            const float phi = 2.0f * kPi * float(segment) / float(segments);
-            const glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta),
-                              std::sin(theta) * std::cos(phi));
+            const glm::vec2 phi = turn(segment, segments);
+            const glm::vec3 n(sinTheta * phi.x, cosTheta, sinTheta * phi.y);
             mesh.positions.push_back(n);
             mesh.normals.push_back(n);
         }
@@ -49,12 +60,12 @@ Mesh makeUvSphere(int rings, int segments) {
 Mesh makeTorus(float majorRadius, float minorRadius, int rings, int segments) {
     Mesh mesh;
     for (int ring = 0; ring <= rings; ++ring) {
-        const float u = 2.0f * kPi * float(ring) / float(rings);   // around the y axis
-        const glm::vec3 tubeCenter(majorRadius * std::sin(u), 0.0f, majorRadius * std::cos(u));
-        const glm::vec3 outward(std::sin(u), 0.0f, std::cos(u));
+        const glm::vec2 u = turn(ring, rings);   // around the y axis
+        const glm::vec3 tubeCenter(majorRadius * u.x, 0.0f, majorRadius * u.y);
+        const glm::vec3 outward(u.x, 0.0f, u.y);
         for (int segment = 0; segment <= segments; ++segment) {
-            const float v = 2.0f * kPi * float(segment) / float(segments);
-            const glm::vec3 n = std::cos(v) * outward + std::sin(v) * glm::vec3(0.0f, 1.0f, 0.0f);
+            const glm::vec2 v = turn(segment, segments);
+            const glm::vec3 n = v.y * outward + v.x * glm::vec3(0.0f, 1.0f, 0.0f);
             mesh.positions.push_back(tubeCenter + minorRadius * n);
             mesh.normals.push_back(n);
         }

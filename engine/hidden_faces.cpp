@@ -1,0 +1,170 @@
+#include "hidden_faces.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <numeric>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace patina {
+
+namespace {
+
+// One id per distinct position. A UV sphere's seam and poles, and a glTF mesh's hard edges,
+// repeat a position with other normals; the surface is still closed there. An open-addressed
+// hash table: a million triangles' vertices in milliseconds, where a sort took a tenth of a
+// second.
+std::vector<uint32_t> weldedIds(const std::vector<glm::vec3>& positions) {
+    // + 0.0f makes -0 into +0, which compares equal but has other bits.
+    auto bits = [&](size_t v) {
+        const glm::vec3 p = positions[v] + glm::vec3(0.0f);
+        return std::array<uint32_t, 3>{std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
+                                       std::bit_cast<uint32_t>(p.z)};
+    };
+    const size_t capacity = std::bit_ceil(std::max<size_t>(2 * positions.size(), 16));
+    constexpr uint32_t kEmpty = ~0u;
+    std::vector<uint32_t> slots(capacity, kEmpty);   // the first vertex at each position
+    std::vector<uint32_t> ids(positions.size());
+    uint32_t next = 0;
+    for (size_t v = 0; v < positions.size(); ++v) {
+        const std::array<uint32_t, 3> key = bits(v);
+        uint64_t hash = (uint64_t(key[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(key[1]) * 0xC2B2AE3D27D4EB4Full) ^
+                        (uint64_t(key[2]) * 0x165667B19E3779F9ull);
+        hash ^= hash >> 29;
+        for (size_t slot = hash & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+            if (slots[slot] == kEmpty) {
+                slots[slot] = uint32_t(v);
+                ids[v] = next++;
+                break;
+            }
+            if (bits(slots[slot]) == key) {
+                ids[v] = ids[slots[slot]];
+                break;
+            }
+        }
+    }
+    return ids;
+}
+
+// The connected parts of a mesh: union-find over its welded vertices.
+struct Parts {
+    std::vector<uint32_t> parent;
+    explicit Parts(size_t count) : parent(count) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t root(uint32_t v) {
+        while (parent[v] != v) {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        return v;
+    }
+    void join(uint32_t a, uint32_t b) { parent[root(a)] = root(b); }
+};
+
+// Every edge of `triangles` exactly twice, once each way. The edges are bucketed by their
+// lower end (a counting sort, linear), so only each vertex's few edges are sorted.
+bool closedAndConsistent(const std::vector<std::array<uint32_t, 3>>& triangles, size_t vertices) {
+    std::vector<uint32_t> start(vertices + 1, 0);
+    for (const auto& t : triangles) {
+        for (int k = 0; k < 3; ++k) {
+            ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+        }
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    // Each edge as its higher end, with bit 0 set when it runs from the higher end down.
+    std::vector<uint64_t> far(start.back());
+    std::vector<uint32_t> filled(start.begin(), start.end() - 1);
+    for (const auto& t : triangles) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            far[filled[std::min(a, b)]++] = (uint64_t(std::max(a, b)) << 1) | uint64_t(a > b);
+        }
+    }
+    for (size_t v = 0; v < vertices; ++v) {
+        const auto first = far.begin() + std::ptrdiff_t(start[v]), last = far.begin() + std::ptrdiff_t(start[v + 1]);
+        std::sort(first, last);
+        // Sorted, the two triangles on a closed edge come out side by side, forward first.
+        for (auto e = first; e != last; e += 2) {
+            const bool pair = e + 1 != last && (*e & 1u) == 0 && e[1] == *e + 1;
+            const bool third = pair && e + 2 != last && (e[2] >> 1) == (*e >> 1);
+            if (!pair || third) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+HiddenFaces hiddenFaces(const Mesh& mesh) {
+    const std::vector<glm::vec3>& positions = mesh.positions;
+    // Ids are 32-bit with one to spare (kEmpty); NaN is not equal to itself.
+    if (positions.size() >= (size_t(1) << 31) || mesh.indices.size() % 3 != 0 ||
+        !std::all_of(positions.begin(), positions.end(), [](const glm::vec3& p) {
+            return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        })) {
+        return HiddenFaces::None;
+    }
+    const std::vector<uint32_t> ids = weldedIds(positions);
+    std::vector<std::array<uint32_t, 3>> triangles;   // welded, without the degenerate ones
+    triangles.reserve(mesh.indices.size() / 3);
+    Parts parts(positions.size());
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        if (std::max({mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]}) >= positions.size()) {
+            return HiddenFaces::None;
+        }
+        const uint32_t a = ids[mesh.indices[i]], b = ids[mesh.indices[i + 1]], c = ids[mesh.indices[i + 2]];
+        if (a == b || b == c || c == a) {
+            continue;
+        }
+        triangles.push_back({a, b, c});
+        parts.join(a, b);
+        parts.join(a, c);
+    }
+    if (triangles.empty() || !closedAndConsistent(triangles, positions.size())) {
+        return HiddenFaces::None;
+    }
+    // Each part's signed volume (the divergence theorem over its triangles, times 6), about
+    // its own first corner so that far-off parts lose no precision, and its box.
+    const std::vector<glm::vec3> welded = [&] {
+        std::vector<glm::vec3> p(positions.size());
+        for (size_t v = 0; v < positions.size(); ++v) {
+            p[ids[v]] = positions[v];
+        }
+        return p;
+    }();
+    struct Part {
+        glm::dvec3 origin{0.0}, low{HUGE_VAL}, high{-HUGE_VAL};
+        double volume = 0.0;
+    };
+    std::vector<Part> volumes;
+    std::vector<uint32_t> partOf(positions.size(), ~0u);   // by root
+    for (const auto& [a, b, c] : triangles) {
+        const glm::dvec3 p0(welded[a]), p1(welded[b]), p2(welded[c]);
+        uint32_t& index = partOf[parts.root(a)];
+        if (index == ~0u) {
+            index = uint32_t(volumes.size());
+            volumes.push_back({p0});
+        }
+        Part& part = volumes[index];
+        part.volume += glm::dot(p0 - part.origin, glm::cross(p1 - part.origin, p2 - part.origin));
+        part.low = glm::min(part.low, glm::min(p0, glm::min(p1, p2)));
+        part.high = glm::max(part.high, glm::max(p0, glm::max(p1, p2)));
+    }
+    int outward = 0, inward = 0;
+    for (const Part& part : volumes) {
+        // A closed part that encloses next to nothing (two sides of one sheet) shows either
+        // side; rounding alone would give it a sign.
+        const double size = glm::length(part.high - part.low);
+        if (std::abs(part.volume) <= 1e-6 * size * size * size) {
+            return HiddenFaces::None;
+        }
+        ++(part.volume > 0.0 ? outward : inward);
+    }
+    return inward == 0 ? HiddenFaces::Back : outward == 0 ? HiddenFaces::Front : HiddenFaces::None;
+}
+
+}  // namespace patina

@@ -1,0 +1,141 @@
+// Which faces of a mesh no outside eye can see (hidden_faces.h): only for closed meshes.
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "hidden_faces.h"
+
+namespace patina {
+namespace {
+
+// A unit cube [0, 1]^3 with four vertices of its own per face (flat normals, as a glTF cube
+// has), wound counter-clockwise seen from outside.
+Mesh splitCube() {
+    Mesh mesh;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 n(0.0f);
+            n[axis] = sign;
+            glm::vec3 u(0.0f);
+            u[(axis + 1) % 3] = 1.0f;
+            const glm::vec3 v = glm::cross(n, u);   // u x v = n: counter-clockwise about n
+            const glm::vec3 centre = glm::vec3(0.5f) + 0.5f * n;
+            const auto base = uint32_t(mesh.positions.size());
+            for (glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+                mesh.positions.push_back(centre + 0.5f * (corner.x * u + corner.y * v));
+                mesh.normals.push_back(n);
+            }
+            mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        }
+    }
+    return mesh;
+}
+
+Mesh reversed(Mesh mesh) {
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    }
+    return mesh;
+}
+
+// Both meshes in one, the second moved by `offset`.
+Mesh merged(Mesh a, const Mesh& b, glm::vec3 offset) {
+    const auto base = uint32_t(a.positions.size());
+    for (size_t v = 0; v < b.positions.size(); ++v) {
+        a.positions.push_back(b.positions[v] + offset);
+        a.normals.push_back(b.normals[v]);
+    }
+    for (uint32_t index : b.indices) {
+        a.indices.push_back(base + index);
+    }
+    return a;
+}
+
+TEST(HiddenFaces, BuiltInMeshesHideTheirBackFaces) {
+    // Their seams and poles repeat positions: that only holds if the copies are equal to the bit.
+    EXPECT_EQ(hiddenFaces(makeUvSphere()), HiddenFaces::Back);
+    EXPECT_EQ(hiddenFaces(makeUvSphere(3, 5)), HiddenFaces::Back);
+    EXPECT_EQ(hiddenFaces(makeTorus()), HiddenFaces::Back);
+}
+
+TEST(HiddenFaces, VerticesAtOnePositionAreOneVertex) {
+    Mesh cube = splitCube();
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::Back);
+    // -0 and +0 are one position.
+    for (glm::vec3& p : cube.positions) {
+        if (p.x == 0.0f) {
+            p.x = -0.0f;
+            break;
+        }
+    }
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::Back);
+}
+
+TEST(HiddenFaces, InwardWindingHidesTheFrontFaces) {
+    EXPECT_EQ(hiddenFaces(reversed(makeUvSphere(8, 16))), HiddenFaces::Front);
+    EXPECT_EQ(hiddenFaces(reversed(splitCube())), HiddenFaces::Front);
+}
+
+TEST(HiddenFaces, OpenMeshesShowEveryFace) {
+    Mesh sphere = makeUvSphere(8, 16);
+    // A hole at the equator (a pole's triangles are half degenerate: they leave no hole).
+    const size_t middle = sphere.indices.size() / 6 * 3;
+    sphere.indices.erase(sphere.indices.begin() + std::ptrdiff_t(middle), sphere.indices.begin() + std::ptrdiff_t(middle) + 3);
+    EXPECT_EQ(hiddenFaces(sphere), HiddenFaces::None);
+    Mesh quad = splitCube();
+    quad.indices.resize(6);
+    EXPECT_EQ(hiddenFaces(quad), HiddenFaces::None);
+    EXPECT_EQ(hiddenFaces(Mesh{}), HiddenFaces::None);
+}
+
+TEST(HiddenFaces, InconsistentWindingShowsEveryFace) {
+    Mesh cube = splitCube();
+    std::swap(cube.indices[1], cube.indices[2]);   // one triangle the other way round
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::None);
+}
+
+TEST(HiddenFaces, AnEdgeOfMoreThanTwoTrianglesShowsEveryFace) {
+    // Two cubes meeting along one edge: closed each, but that edge joins four triangles.
+    EXPECT_EQ(hiddenFaces(merged(splitCube(), splitCube(), {1.0f, 1.0f, 0.0f})), HiddenFaces::None);
+    // A triangle twice.
+    Mesh cube = splitCube();
+    cube.indices.insert(cube.indices.end(), {cube.indices[0], cube.indices[1], cube.indices[2]});
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::None);
+}
+
+TEST(HiddenFaces, EveryPartMustWindTheSameWay) {
+    const Mesh cube = splitCube();
+    EXPECT_EQ(hiddenFaces(merged(cube, cube, {3.0f, 0.0f, 0.0f})), HiddenFaces::Back);
+    EXPECT_EQ(hiddenFaces(merged(cube, reversed(cube), {3.0f, 0.0f, 0.0f})), HiddenFaces::None);
+    // A part far from the origin keeps its sign.
+    EXPECT_EQ(hiddenFaces(merged(cube, cube, {1e6f, 0.0f, 0.0f})), HiddenFaces::Back);
+}
+
+TEST(HiddenFaces, TwoSidesOfOneSheetShowEither) {
+    // A square and the same square the other way round: closed, but enclosing nothing.
+    Mesh quad = splitCube();
+    quad.indices.resize(6);
+    EXPECT_EQ(hiddenFaces(merged(quad, reversed(quad), glm::vec3(0.0f))), HiddenFaces::None);
+}
+
+TEST(HiddenFaces, TrianglesThatCoverNothingDoNotCount) {
+    Mesh cube = splitCube();
+    cube.indices.insert(cube.indices.end(), {0, 0, 1});
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::Back);
+}
+
+TEST(HiddenFaces, BadInputShowsEveryFace) {
+    Mesh cube = splitCube();
+    cube.indices.push_back(uint32_t(cube.positions.size()));   // out of range, and not a triangle
+    cube.indices.insert(cube.indices.end(), {0, 1});
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::None);
+    cube = splitCube();
+    cube.positions[0].x = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(hiddenFaces(cube), HiddenFaces::None);
+}
+
+}  // namespace
+}  // namespace patina
