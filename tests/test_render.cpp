@@ -448,6 +448,105 @@ TEST(Renderer, CroppingToTheMeshGivesTheSameImage) {
     }
 }
 
+// A box wholly beyond the near plane: not one with the eye inside, nor one the plane cuts.
+TEST(Renderer, BeyondNearPlaneOnlyWhenNothingIsCutOpen) {
+    const BoundingBox box = boundingBox(makeUvSphere(8, 16));
+    Camera camera = defaultScene().camera;
+    EXPECT_TRUE(beyondNearPlane(viewProjection(camera, 1.0f), box));
+    camera.position = {0.0f, 0.0f, 0.5f};   // inside
+    EXPECT_FALSE(beyondNearPlane(viewProjection(camera, 1.0f), box));
+    // Outside the sphere, the near plane (1% of the distance to the target) inside it.
+    camera.position = {0.0f, 0.0f, 1.005f};
+    EXPECT_FALSE(beyondNearPlane(viewProjection(camera, 1.0f), box));
+    camera.position = {0.0f, 0.0f, 1.2f};
+    EXPECT_TRUE(beyondNearPlane(viewProjection(camera, 1.0f), box));
+    EXPECT_FALSE(beyondNearPlane(viewProjection(camera, 1.0f), BoundingBox{}));
+}
+
+// Culling a closed mesh's hidden faces changes no pixel, with every path, with and without
+// MSAA: the sphere and torus framed, close up, a sphere wound inward; and where the eye can
+// see a closed mesh's inside (from inside, or through the hole the near plane cuts) the
+// renderer must not cull.
+TEST(Renderer, CullingHiddenFacesGivesTheSameImage) {
+    test::glContext();
+    Renderer renderer;
+    Mesh inward = makeUvSphere();
+    for (size_t i = 0; i < inward.indices.size(); i += 3) {
+        std::swap(inward.indices[i + 1], inward.indices[i + 2]);
+    }
+    struct Case {
+        std::string name;
+        Mesh mesh;
+        glm::vec3 eye;
+    };
+    const glm::vec3 framed = defaultScene().camera.position;
+    const std::vector<Case> cases = {{"sphere", makeUvSphere(), framed},
+                                     {"torus", makeTorus(), framed},
+                                     {"sphere wound inward", inward, framed},
+                                     {"sphere close up", makeUvSphere(), {0.3f, 0.2f, 1.15f}},
+                                     {"inside the sphere", makeUvSphere(), {0.1f, 0.2f, 0.5f}},
+                                     {"near plane cutting the sphere", makeUvSphere(), {0.0f, 0.0f, 1.005f}}};
+    const Scene lit = manyLightScene(2);
+    for (const Case& c : cases) {
+        renderer.setMesh(c.mesh);
+        Scene scene = lit;
+        scene.camera.position = c.eye;
+        for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+            for (int samples : {4, 1}) {
+                RenderSettings settings;
+                settings.width = 150;
+                settings.height = 110;
+                settings.passes = passes;
+                settings.samples = samples;
+                settings.cullHiddenFaces = false;
+                const RenderOutput every = renderer.render(scene, settings);
+                settings.cullHiddenFaces = true;
+                const RenderOutput culled = renderer.render(scene, settings);
+                const std::string what = c.name + ", " + std::string(passModeName(passes)) + ", " +
+                                         std::to_string(samples) + " samples";
+                EXPECT_EQ(maxByteDifference(every.ldr, culled.ldr), 0) << what;
+                // A sample exactly on a silhouette edge is in the front and the back triangle
+                // there at one depth, and the first drawn took it: a few linear values differ.
+                size_t differing = 0;
+                for (size_t i = 0; i < every.hdr.rgb.size(); ++i) {
+                    differing += std::abs(every.hdr.rgb[i] - culled.hdr.rgb[i]) > 1e-6f * std::abs(every.hdr.rgb[i]);
+                }
+                EXPECT_LE(differing, every.hdr.rgb.size() / 1000) << what;
+                EXPECT_LE(maxHdrRelativeDifference(every.hdr, culled.hdr), 1e-2) << what;
+            }
+        }
+    }
+}
+
+// What culling is for: the sphere's far half is never shaded. Counted with the GL's pipeline
+// statistics where it has them.
+TEST(Renderer, CullingSkipsTheSpheresFarHalf) {
+    test::glContext();
+    if (!epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+        GTEST_SKIP() << "no GL_ARB_pipeline_statistics_query";
+    }
+    Renderer renderer;
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    auto fragmentsShaded = [&](bool cull, int samples) {
+        RenderSettings settings;
+        settings.width = 320;
+        settings.height = 240;
+        settings.samples = samples;
+        settings.cullHiddenFaces = cull;
+        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
+        renderer.draw(defaultScene(), settings);
+        glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+        GLuint64 count = 0;
+        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
+        return double(count);
+    };
+    // Without MSAA the shading pass is all there is; with it, clears and the resolve too.
+    EXPECT_LT(fragmentsShaded(true, 1), 0.6 * fragmentsShaded(false, 1));
+    EXPECT_LT(fragmentsShaded(true, 4), 0.9 * fragmentsShaded(false, 4));
+    glDeleteQueries(1, &query);
+}
+
 TEST(Renderer, RejectsImpossibleSizes) {
     test::glContext();
     Renderer renderer;

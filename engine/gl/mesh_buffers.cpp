@@ -42,6 +42,7 @@ void MeshBuffers::upload(const Mesh& mesh) {
     glBindVertexArray(0);
     indexCount_ = GLsizei(mesh.indices.size());
     bounds_ = boundingBox(mesh);
+    hiddenFaces_ = patina::hiddenFaces(mesh);
 }
 
 void MeshBuffers::draw() const {

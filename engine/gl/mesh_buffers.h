@@ -1,6 +1,7 @@
 #pragma once
 #include <epoxy/gl.h>
 
+#include "../hidden_faces.h"
 #include "../mesh.h"
 
 namespace patina {
@@ -16,12 +17,14 @@ public:
     void upload(const Mesh& mesh);
     void draw() const;
     const BoundingBox& bounds() const { return bounds_; }
+    HiddenFaces hiddenFaces() const { return hiddenFaces_; }
     size_t triangleCount() const { return size_t(indexCount_) / 3; }
 
 private:
     GLuint vertexArray_ = 0, vertices_ = 0, indices_ = 0;
     GLsizei indexCount_ = 0;
     BoundingBox bounds_;
+    HiddenFaces hiddenFaces_ = HiddenFaces::None;
 };
 
 }  // namespace patina

@@ -58,6 +58,22 @@ glm::mat4 viewProjection(const Camera& camera, float aspect) {
            glm::lookAt(camera.position, camera.target, up);
 }
 
+bool beyondNearPlane(const glm::mat4& transform, const BoundingBox& box) {
+    if (box.empty()) {
+        return false;
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
+                          (corner & 4) ? box.high.z : box.low.z);
+        const glm::vec4 clip = transform * glm::vec4(p, 1.0f);
+        // GL's near plane is z = -w; a margin for the rounding of the corners' transform.
+        if (!(clip.w > 0.0f && clip.z > -clip.w * (1.0f - 1e-4f))) {
+            return false;
+        }
+    }
+    return true;
+}
+
 size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox,
                          const PixelRect& drawnArea, int stripRows, size_t triangles) {
     if (mode != RenderSettings::FlatLights::WherePaying) {
@@ -304,6 +320,10 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     // there a sample costs a clear, a store and a resolve for nothing.
     const PixelRect whole{0, 0, w, h};
     const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
+    // A box beyond the near plane holds the whole mesh, so the eye is outside it.
+    const HiddenFaces hidden = settings.cullHiddenFaces && beyondNearPlane(transform, s.mesh.bounds())
+                                   ? s.mesh.hiddenFaces()
+                                   : HiddenFaces::None;
     const size_t flatSlots = flatLightSlotsFor(settings.flatLights, s.flatLightSlots, meshBox, meshArea, stripRows,
                                                s.mesh.triangleCount());
     const GlProgram& shading =
@@ -401,7 +421,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
             glClearBufferfv(GL_COLOR, 1, clearDisplay);
         }
         glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+        if (hidden != HiddenFaces::None) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(hidden == HiddenFaces::Back ? GL_BACK : GL_FRONT);
+        }
         drawPasses(s, settings.passes, shading, packed.size(), prepare);
+        glDisable(GL_CULL_FACE);
         glDisable(GL_SCISSOR_TEST);
         if (displayPass) {
             displayStrip(top, area);

@@ -49,6 +49,10 @@ struct RenderSettings {
     // or never. The image is the same to rounding.
     enum class FlatLights { WherePaying, Always, Never };
     FlatLights flatLights = FlatLights::WherePaying;
+    // Skip the faces of a closed mesh that no eye outside it can see (hidden_faces.h) where
+    // this camera is outside it: the same image from fewer fragments. llvmpipe with MSAA
+    // shades a fragment that fails the depth test all the same. false: every face (for tests).
+    bool cullHiddenFaces = true;
 };
 
 struct RenderOutput {
@@ -68,6 +72,10 @@ struct PixelRect {
 // corners' bounds, a pixel wider on each side; the whole image when a corner is not in front of
 // the eye (the projection of the box is then unbounded); empty for an empty box.
 PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height);
+
+// Whether every point of `box` lies beyond the near plane of `transform` (a perspective
+// view-projection): then the eye is outside it and the near plane cuts nothing inside open.
+bool beyondNearPlane(const glm::mat4& transform, const BoundingBox& box);
 
 // How many of `slots` lights a specialised draw takes as flat inputs under `mode`: with
 // WherePaying, all where flatLightsPay (shader_specialisation.h) says so for the pixels of
