@@ -20,8 +20,9 @@ struct LdrImage {
     std::vector<uint8_t> rgba;   // width * height * 4
 };
 
-// PNG bytes of the image (opaque RGB), or an exception on failure.
-std::vector<uint8_t> encodePng(const LdrImage& image);
+// PNG bytes of the image (opaque RGB), or an exception on failure. Compressed on up to
+// `threads` threads (0: one per core, at most 8), each a band of rows.
+std::vector<uint8_t> encodePng(const LdrImage& image, unsigned threads = 0);
 LdrImage decodePng(const std::vector<uint8_t>& bytes);   // throws std::runtime_error
 
 // Portable float map (little-endian "PF"), the usual linear HDR interchange format.

@@ -5,12 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include "png_crc.h"
 #include "scratch_test.h"
 
 #include "image.h"
 #include "input_error.h"
 #include "json_writer.h"
+#include "png_chunks.h"
 #include "png_text.h"
 #include "scene_file.h"
 
@@ -94,6 +97,48 @@ TEST(PngEncode, DecodesToTheSameBytes) {
         EXPECT_EQ(decoded.rgba, image.rgba) << width << "x" << height;
     }
     EXPECT_THROW(encodePng(LdrImage{2, 2, std::vector<uint8_t>(3)}), std::runtime_error);
+}
+
+// Bands of rows deflated on threads of their own join into one zlib stream: zlib's own
+// inflate (which checks the Adler-32 the bands' sums combine into) reads back every row,
+// filter byte and all, whatever the number of threads.
+TEST(PngEncode, BandsOnThreadsMakeOneValidStream) {
+    const int width = 700, height = 900;   // 2.5 MB raw: up to 9 bands of 256 KiB
+    LdrImage image{width, height, std::vector<uint8_t>(size_t(width) * height * 4)};
+    for (size_t i = 0; i < image.rgba.size(); ++i) {
+        image.rgba[i] = uint8_t((i / 4 % width) * 3 + (i / 4 / width) * (i % 4 + 1));
+    }
+    auto idat = [](const std::vector<uint8_t>& png) {
+        std::vector<uint8_t> data;
+        for (size_t at = kPngSignature.size(); at + 12 <= png.size();) {
+            const uint32_t length = readBigEndian32(&png[at]);
+            if (std::equal(&png[at + 4], &png[at + 8], "IDAT")) {
+                data.insert(data.end(), &png[at + 8], &png[at + 8 + length]);
+            }
+            at += 12 + length;
+        }
+        return data;
+    };
+    const std::vector<uint8_t> one = idat(encodePng(image, 1));
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+        const std::vector<uint8_t> stream = idat(encodePng(image, threads));
+        std::vector<uint8_t> raw(size_t(height) * (size_t(width) * 4 + 1));
+        uLongf rawSize = uLongf(raw.size());
+        ASSERT_EQ(uncompress(raw.data(), &rawSize, stream.data(), uLong(stream.size())), Z_OK) << threads;
+        ASSERT_EQ(rawSize, raw.size()) << threads;
+        for (int y = 0; y < height; ++y) {
+            const uint8_t* row = &raw[size_t(y) * (size_t(width) * 4 + 1)];
+            ASSERT_EQ(row[0], 1) << "Sub filter, row " << y;
+            for (size_t i = 0; i < size_t(width) * 4; ++i) {
+                const uint8_t left = i >= 4 ? image.rgba[size_t(y) * width * 4 + i - 4] : 0;
+                ASSERT_EQ(uint8_t(row[1 + i] + left), image.rgba[size_t(y) * width * 4 + i])
+                    << threads << " threads, row " << y << ", byte " << i;
+            }
+        }
+        if (threads > 1) {
+            EXPECT_NE(stream, one) << threads << " threads: bands of their own";
+        }
+    }
 }
 
 TEST_F(PngText, RoundTripsEntriesAndKeepsThePixels) {
