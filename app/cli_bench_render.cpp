@@ -144,7 +144,8 @@ Command addBenchRenderCommand(CLI::App& app) {
                   << batch.size << "x" << batch.size << "), " << double(batch.images) / batch.separateSeconds
                   << " images/s as separate renders\n";
         std::cout << "  glTF: " << result.gltfTriangles << " triangles (" << result.gltfBytes / 1e6
-                  << " MB GLB) imported in " << result.gltfLoadSeconds << " s\n";
+                  << " MB GLB) imported in " << result.gltfLoadSeconds << " s; its hidden faces found in "
+                  << result.hiddenFacesSeconds << " s (" << (result.gltfClosed ? "closed" : "not closed") << ")\n";
     };
 }
 

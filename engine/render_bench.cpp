@@ -14,6 +14,7 @@
 
 #include "gltf_export.h"
 #include "gltf_import.h"
+#include "hidden_faces.h"
 #include "mesh.h"
 #include "temporary_folder.h"
 #include "timing.h"
@@ -176,6 +177,30 @@ void measureScale(Renderer& renderer, const Mesh& mesh, const RenderBenchOptions
     renderer.setMesh(mesh);
 }
 
+// Single and multi on the default scene with its sphere's hidden faces culled and drawn
+// (RenderSettings::cullHiddenFaces), interleaved: what culling saves.
+void measureCulling(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                    RenderBenchResult& result) {
+    const Scene scene = defaultScene();
+    const std::tuple<const char*, PassMode, bool> kinds[] = {{"single", PassMode::Single, true},
+                                                             {"single-every-face", PassMode::Single, false},
+                                                             {"multi", PassMode::Multi, true},
+                                                             {"multi-every-face", PassMode::Multi, false}};
+    std::array<Samples, std::size(kinds)> samples;
+    interleaved(options.runs, [&](bool keep) {
+        for (size_t k = 0; k < std::size(kinds); ++k) {
+            RenderSettings s = settings;
+            s.passes = std::get<1>(kinds[k]);
+            s.cullHiddenFaces = std::get<2>(kinds[k]);
+            timeFrame(renderer, scene, s, keep ? &samples[k] : nullptr);
+        }
+    });
+    for (size_t k = 0; k < std::size(kinds); ++k) {
+        result.scaleRows.push_back({"culling", settings.width, settings.height, result.triangles,
+                                    samples[k].medians(), std::get<0>(kinds[k])});
+    }
+}
+
 // Export a big sphere as GLB and time importing it (what opening a heavy model costs).
 void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& result) {
     const Mesh mesh = sphereOfAbout(options.quick ? 40'000 : 1'000'000);
@@ -183,14 +208,18 @@ void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& resul
     const std::filesystem::path file = folder.path() / "sphere.glb";
     exportGltf(file, mesh, defaultScene().material);
     result.gltfBytes = double(std::filesystem::file_size(file));
-    std::vector<double> seconds;
+    std::vector<double> seconds, hiddenSeconds;
     for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
-        const Clock::time_point start = Clock::now();
+        Clock::time_point start = Clock::now();
         const GltfImport imported = importGltf(file);
         seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
         result.gltfTriangles = triangleCount(imported.mesh);
+        start = Clock::now();
+        result.gltfClosed = hiddenFaces(imported.mesh) != HiddenFaces::None;
+        hiddenSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     }
     result.gltfLoadSeconds = median(seconds);
+    result.hiddenFacesSeconds = median(hiddenSeconds);
 }
 }  // namespace
 
@@ -256,6 +285,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     result.triangles = triangleCount(mesh);
     renderer.setMesh(mesh);
     measureLightCounts(renderer, options, settings, result);
+    measureCulling(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
     measureGltfLoad(options, result);
     return result;

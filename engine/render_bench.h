@@ -43,12 +43,13 @@ struct LightCountRow {
 };
 
 struct ScaleRow {
-    std::string axis;     // "resolution", "triangles" or "flat-lights"
+    std::string axis;     // "resolution", "triangles", "flat-lights" or "culling"
     int width = 0, height = 0;
     size_t triangles = 0;
     FrameTiming time;     // the default scene's three lights
     // "single"; on the flat-lights axis "specialised-flat" or "specialised-block" (specialised
-    // with its lights as flat inputs or from the block: what flatLightsPay weighs).
+    // with its lights as flat inputs or from the block: what flatLightsPay weighs); on the
+    // culling axis "single", "multi" and the same drawing every face ("single-every-face").
     std::string path = "single";
 };
 
@@ -59,6 +60,10 @@ struct RenderBenchResult {
     size_t triangles = 0;   // of the default scene's mesh, which the light rows draw
     size_t gltfTriangles = 0;
     double gltfBytes = 0.0, gltfLoadSeconds = 0.0;   // a GLB of gltfTriangles, imported
+    // Finding that mesh's hidden faces (hiddenFaces, as Renderer::setMesh does), and whether
+    // it is closed.
+    double hiddenFacesSeconds = 0.0;
+    bool gltfClosed = false;
     std::string renderer;   // GL_RENDERER
     size_t flatLightSlots = 0;   // lights specialised takes as flat inputs (Renderer::flatLightSlots)
 };

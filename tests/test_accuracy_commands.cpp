@@ -71,6 +71,10 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
     EXPECT_EQ(perSeries["triangles single "], 2);
     EXPECT_EQ(perSeries["flat-lights specialised-flat "], 2);
     EXPECT_EQ(perSeries["flat-lights specialised-block "], 2);
+    for (const char* series : {"culling single ", "culling single-every-face ", "culling multi ",
+                               "culling multi-every-face "}) {
+        EXPECT_EQ(perSeries[series], 1) << series;
+    }
     const std::string targets = read("render_targets.csv");
     for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
                                "single's cost per added point light /",
