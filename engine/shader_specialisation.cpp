@@ -1,6 +1,5 @@
 #include "shader_specialisation.h"
 
-#include <algorithm>
 
 #include "light_packing.h"
 
