@@ -6,6 +6,7 @@
 #include "input_error.h"
 #include "inputs.h"
 #include "material_renders.h"
+#include "png_stream.h"
 
 namespace patina::cli {
 
@@ -29,19 +30,25 @@ Command addSheetCommand(CLI::App& app) {
         inputs.scenePath = options->scenePath;
         const Scene scene = inputs.load();
         const std::vector<Material> materials = loadMaterials(options->materials);
-        try {   // refuse an oversized sheet before rendering anything
-            sheetLayout(options->size, options->size, int(materials.size()), options->columns);
-        } catch (const std::invalid_argument& error) {
-            throw InputError(std::string("the sheet is too large: ") + error.what() +
-                             "; use a smaller --size or other --columns");
-        }
-        const std::vector<LdrImage> cells =
-            renderMaterials(scene, materials, options->size, options->size);
         std::vector<std::string> names;
         for (const Material& material : materials) {
             names.push_back(material.name);
         }
-        writeOutput(options->out, encodePng(contactSheet(cells, names, options->columns)));
+        std::unique_ptr<SheetBuilder> sheet;
+        try {   // refuse an oversized sheet before rendering anything
+            sheet = std::make_unique<SheetBuilder>(options->size, options->size, names, options->columns);
+        } catch (const std::invalid_argument& error) {
+            throw InputError(std::string("the sheet is too large: ") + error.what() +
+                             "; use a smaller --size or other --columns");
+        }
+        // Each finished row of cells is deflated while the next renders: a sheet's renders
+        // leave part of the second core idle.
+        PngStream png(sheet->image());
+        renderMaterials(scene, materials, options->size, options->size, [&](LdrImage&& cell) {
+            sheet->add(cell);
+            png.rowsReady(sheet->finishedRows());
+        });
+        writeOutput(options->out, png.finish());
     };
 }
 

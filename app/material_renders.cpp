@@ -17,8 +17,8 @@ std::vector<Material> loadMaterials(const std::vector<std::string>& paths) {
     return materials;
 }
 
-std::vector<LdrImage> renderMaterials(Scene scene, const std::vector<Material>& materials,
-                                      int width, int height) {
+void renderMaterials(Scene scene, const std::vector<Material>& materials, int width, int height,
+                     const std::function<void(LdrImage&&)>& each) {
     HeadlessContext context;
     Renderer renderer;
     renderer.setMesh(makeMesh(scene));
@@ -29,11 +29,16 @@ std::vector<LdrImage> renderMaterials(Scene scene, const std::vector<Material>& 
     // or two compiled shaders (with and without diffuse). Only the sRGB image is needed.
     settings.passes = PassMode::Specialised;
     settings.readHdr = false;
-    std::vector<LdrImage> images;
     for (const Material& material : materials) {
         scene.material = material;
-        images.push_back(renderer.render(scene, settings).ldr);
+        each(renderer.render(scene, settings).ldr);
     }
+}
+
+std::vector<LdrImage> renderMaterials(const Scene& scene, const std::vector<Material>& materials,
+                                      int width, int height) {
+    std::vector<LdrImage> images;
+    renderMaterials(scene, materials, width, height, [&](LdrImage&& image) { images.push_back(std::move(image)); });
     return images;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,11 @@ namespace patina::cli {
 // Warnings go to stderr; errors throw InputError.
 std::vector<Material> loadMaterials(const std::vector<std::string>& paths);
 
-// The scene once per material, all with one headless context and one compiled renderer.
-std::vector<LdrImage> renderMaterials(Scene scene, const std::vector<Material>& materials,
+// The scene once per material, all with one headless context and one compiled renderer,
+// each image handed to `each` as it is read back.
+void renderMaterials(Scene scene, const std::vector<Material>& materials, int width, int height,
+                     const std::function<void(LdrImage&&)>& each);
+std::vector<LdrImage> renderMaterials(const Scene& scene, const std::vector<Material>& materials,
                                       int width, int height);
 
 }  // namespace patina::cli

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 namespace patina {
 
@@ -94,20 +95,38 @@ LdrImage contactSheet(const std::vector<LdrImage>& cells, const std::vector<std:
         cellWidth = std::max(cellWidth, cells[i].width);
         cellHeight = std::max(cellHeight, cells[i].height);
     }
-    const SheetLayout layout = sheetLayout(cellWidth, cellHeight, int(cells.size()), columns);
-    const int scale = captionScale(cellWidth);
-    const int padding = kCaptionPadding * scale;
-    LdrImage sheet = filledImage(layout.width, layout.height, kSheetBackground);
-    for (size_t i = 0; i < cells.size(); ++i) {
-        const int x = layout.cellX(int(i));
-        const int y = layout.cellY(int(i));
-        paste(sheet, cells[i], x + (cellWidth - cells[i].width) / 2,
-              y + (cellHeight - cells[i].height) / 2);
-        const std::string caption = fitText(names[i], cellWidth - 2 * padding, scale);
-        drawText(sheet, x + (cellWidth - textWidth(caption, scale)) / 2, y + cellHeight + padding,
-                 caption, scale, kCaptionColour);
+    SheetBuilder sheet(cellWidth, cellHeight, names, columns);
+    for (const LdrImage& cell : cells) {
+        sheet.add(cell);
     }
-    return sheet;
+    return std::move(sheet).release();
+}
+
+SheetBuilder::SheetBuilder(int cellWidth, int cellHeight, std::vector<std::string> names, int columns)
+    : layout_(sheetLayout(cellWidth, cellHeight, int(names.size()), columns)), names_(std::move(names)),
+      sheet_(filledImage(layout_.width, layout_.height, kSheetBackground)) {}
+
+void SheetBuilder::add(const LdrImage& cell) {
+    if (added_ >= names_.size()) {
+        throw std::invalid_argument("the sheet has room for " + std::to_string(names_.size()) + " cells");
+    }
+    checkImage(cell, "cell " + std::to_string(added_));
+    if (cell.width > layout_.cellWidth || cell.height > layout_.cellHeight) {
+        throw std::invalid_argument("cell " + std::to_string(added_) + " is larger than the sheet's boxes");
+    }
+    const int scale = captionScale(layout_.cellWidth);
+    const int padding = kCaptionPadding * scale;
+    const int x = layout_.cellX(int(added_));
+    const int y = layout_.cellY(int(added_));
+    paste(sheet_, cell, x + (layout_.cellWidth - cell.width) / 2, y + (layout_.cellHeight - cell.height) / 2);
+    const std::string caption = fitText(names_[added_], layout_.cellWidth - 2 * padding, scale);
+    drawText(sheet_, x + (layout_.cellWidth - textWidth(caption, scale)) / 2, y + layout_.cellHeight + padding,
+             caption, scale, kCaptionColour);
+    ++added_;
+}
+
+int SheetBuilder::finishedRows() const {
+    return added_ == names_.size() ? layout_.height : layout_.cellY(int(added_));
 }
 
 LdrImage sideBySide(const LdrImage& a, const LdrImage& b, const std::string& captionA,

@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "caption.h"
@@ -35,6 +36,30 @@ SheetLayout sheetLayout(int cellWidth, int cellHeight, int count, int columns);
 // Throws std::invalid_argument for no cells, a name count that differs, or a bad image.
 LdrImage contactSheet(const std::vector<LdrImage>& cells, const std::vector<std::string>& names,
                       int columns);
+
+// A contact sheet put together as its cells come, in order, so that its finished rows can be
+// encoded (PngStream) while the next cells are drawn. contactSheet is this with every cell
+// at hand.
+class SheetBuilder {
+public:
+    // One cell per name, in boxes of cellWidth x cellHeight. Throws std::invalid_argument as
+    // sheetLayout does.
+    SheetBuilder(int cellWidth, int cellHeight, std::vector<std::string> names, int columns);
+    // The next cell, centred in its box and captioned. Throws std::invalid_argument for a bad
+    // image, one larger than the box, or a cell past the last name.
+    void add(const LdrImage& cell);
+    // Rows of the sheet no later cell changes: all above the next cell's box.
+    int finishedRows() const;
+    const LdrImage& image() const { return sheet_; }
+    LdrImage release() && { return std::move(sheet_); }
+    const SheetLayout& layout() const { return layout_; }
+
+private:
+    SheetLayout layout_;
+    std::vector<std::string> names_;
+    LdrImage sheet_;
+    size_t added_ = 0;
+};
 // "name  r 0.30 s 0.50 m 1.00  base 1.00 0.78 0.34": the name cut with "..." so that the
 // numbers always fit the caption of a panel this wide.
 std::string materialCaption(const Material& material, int panelWidth);

@@ -21,7 +21,7 @@ struct LdrImage {
 };
 
 // PNG bytes of the image (opaque RGB), or an exception on failure. Compressed on up to
-// `threads` threads (0: one per core, at most 8), each a band of rows.
+// `threads` threads (0: one per core, at most 8), each a band of rows (png_stream.h).
 std::vector<uint8_t> encodePng(const LdrImage& image, unsigned threads = 0);
 LdrImage decodePng(const std::vector<uint8_t>& bytes);   // throws std::runtime_error
 

@@ -168,6 +168,37 @@ TEST(Compositing, SideBySideIsATwoColumnSheet) {
     EXPECT_EQ(pair.rgba, contactSheet({a, b}, {"left", "right"}, 2).rgba);
 }
 
+// Built cell by cell, a sheet's finished rows never change again (the sheet command encodes
+// them while the next cells render), they grow a row of cells at a time, and the result is
+// the sheet made at once.
+TEST(Compositing, SheetBuilderFinishesRowsThatNoLaterCellChanges) {
+    std::vector<LdrImage> cells;
+    std::vector<std::string> names;
+    for (int i = 0; i < 7; ++i) {
+        cells.push_back(solid(30, 20, {uint8_t(30 * i), 255, uint8_t(255 - 30 * i)}));
+        names.push_back("cell " + std::to_string(i));
+    }
+    SheetBuilder sheet(30, 20, names, 3);
+    const SheetLayout& layout = sheet.layout();
+    EXPECT_EQ(sheet.finishedRows(), 0);
+    std::vector<std::pair<int, std::vector<uint8_t>>> snapshots;   // finished rows, their bytes
+    for (size_t i = 0; i < cells.size(); ++i) {
+        sheet.add(cells[i]);
+        const int rows = sheet.finishedRows();
+        const int expected = i + 1 == cells.size() ? layout.height : layout.cellY(int(i) + 1);
+        EXPECT_EQ(rows, expected) << "after cell " << i;
+        const auto& bytes = sheet.image().rgba;
+        snapshots.emplace_back(rows, std::vector<uint8_t>(bytes.begin(), bytes.begin() + size_t(rows) * layout.width * 4));
+    }
+    for (const auto& [rows, bytes] : snapshots) {
+        EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), sheet.image().rgba.begin())) << rows << " rows";
+    }
+    EXPECT_EQ(sheet.image().rgba, contactSheet(cells, names, 3).rgba);
+    EXPECT_THROW(sheet.add(cells[0]), std::invalid_argument);   // no name left
+    SheetBuilder small(30, 20, {"a"}, 1);
+    EXPECT_THROW(small.add(solid(31, 20, kBlack)), std::invalid_argument);   // larger than its box
+}
+
 TEST(Compositing, RefusesBadArguments) {
     const LdrImage a = solid(4, 4, kBlack);
     EXPECT_THROW(contactSheet({}, {}, 1), std::invalid_argument);

@@ -14,6 +14,7 @@
 #include "input_error.h"
 #include "json_writer.h"
 #include "png_chunks.h"
+#include "png_stream.h"
 #include "png_text.h"
 #include "scene_file.h"
 
@@ -139,6 +140,36 @@ TEST(PngEncode, BandsOnThreadsMakeOneValidStream) {
             EXPECT_NE(stream, one) << threads << " threads: bands of their own";
         }
     }
+}
+
+// Rows handed on while the rest of the image is still being drawn: the PNG holds the
+// finished image, as encodePng of it does, and only rows handed on were read early (the rows
+// below are drawn after each hand-on, so an early read of one would show its blank).
+TEST(PngEncode, StreamTakesRowsAsTheyAreFinished) {
+    const int width = 300, height = 1200;   // 1.4 MB raw: bands of 218 rows
+    const LdrImage finished = [&] {
+        LdrImage image{width, height, std::vector<uint8_t>(size_t(width) * height * 4)};
+        for (size_t i = 0; i < image.rgba.size(); ++i) {
+            image.rgba[i] = uint8_t(i * 7 / 5 + i / 4 / width);
+        }
+        return image;
+    }();
+    LdrImage drawing{width, height, std::vector<uint8_t>(finished.rgba.size(), 0)};
+    PngStream png(drawing, 2);
+    for (int rows = 0; rows < height;) {
+        const int next = std::min(height, rows + 150);
+        std::copy(finished.rgba.begin() + ptrdiff_t(rows) * width * 4, finished.rgba.begin() + ptrdiff_t(next) * width * 4,
+                  drawing.rgba.begin() + ptrdiff_t(rows) * width * 4);
+        rows = next;
+        png.rowsReady(rows);
+        EXPECT_LE(png.rowsHandedOn(), rows);   // never a row still to be drawn
+    }
+    EXPECT_GE(png.rowsHandedOn(), height - 218) << "rows deflated while the rest was drawn";
+    const std::vector<uint8_t> file = png.finish();
+    EXPECT_EQ(decodePng(file).rgba, finished.rgba);
+    EXPECT_EQ(decodePng(encodePng(finished)).rgba, finished.rgba);
+    EXPECT_THROW(png.finish(), std::logic_error);
+    EXPECT_THROW(PngStream(LdrImage{2, 2, std::vector<uint8_t>(3)}), std::runtime_error);
 }
 
 TEST_F(PngText, RoundTripsEntriesAndKeepsThePixels) {

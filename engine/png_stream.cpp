@@ -1,0 +1,154 @@
+#include "png_stream.h"
+
+#include <algorithm>
+#include <future>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include <zlib.h>
+
+#include "png_chunks.h"
+
+namespace patina {
+
+namespace {
+// Rows [first, last) of a PNG's image data, each with the Sub filter (each byte minus the one
+// 4 to its left), as raw deflate at level 1 that ends on a byte boundary (Z_SYNC_FLUSH), or
+// with the stream's final block for the last band; and the Adler-32 of those filtered bytes.
+struct Band {
+    std::vector<uint8_t> deflated;
+    uLong adler = 0;
+    size_t filteredBytes = 0;
+};
+
+Band deflateBand(const LdrImage& image, int first, int last, bool final) {
+    const size_t stride = size_t(image.width) * 4;
+    // Ends the stream however this function leaves (an allocation below can throw).
+    struct Deflate {
+        z_stream zs{};
+        Deflate() {
+            if (deflateInit2(&zs, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+                throw std::runtime_error("zlib: cannot start compressing");
+            }
+        }
+        ~Deflate() { deflateEnd(&zs); }
+    } stream;
+    z_stream& zs = stream.zs;
+    Band band;
+    band.filteredBytes = (stride + 1) * size_t(last - first);
+    band.adler = adler32(0L, Z_NULL, 0);
+    // deflateBound is what the whole band can take (plus a sync flush's 5 bytes), so one
+    // output buffer holds it (a 16384 x 16384 image is 1 GiB raw: inside zlib's 32-bit counts).
+    band.deflated.resize(deflateBound(&zs, uLong(band.filteredBytes)) + 16);
+    zs.next_out = band.deflated.data();
+    zs.avail_out = uInt(band.deflated.size());
+    std::vector<uint8_t> row(stride + 1);
+    row[0] = 1;   // Sub
+    for (int y = first; y < last; ++y) {
+        const uint8_t* pixels = &image.rgba[size_t(y) * stride];
+        std::copy_n(pixels, std::min<size_t>(4, stride), &row[1]);
+        for (size_t i = 4; i < stride; ++i) {
+            row[1 + i] = uint8_t(pixels[i] - pixels[i - 4]);
+        }
+        band.adler = adler32(band.adler, row.data(), uInt(row.size()));
+        zs.next_in = row.data();
+        zs.avail_in = uInt(row.size());
+        const int flush = y + 1 < last ? Z_NO_FLUSH : final ? Z_FINISH : Z_SYNC_FLUSH;
+        const int status = deflate(&zs, flush);
+        if ((flush == Z_FINISH ? status != Z_STREAM_END : status != Z_OK) || zs.avail_in != 0) {
+            throw std::runtime_error("zlib: compressing the PNG failed");
+        }
+    }
+    band.deflated.resize(zs.total_out);
+    return band;
+}
+}  // namespace
+
+// PNG (spec 2nd ed.): 8-bit RGBA, every row with the Sub filter, one zlib stream at level 1.
+// stb's writer tries five filters per row at level 8: on a 3072x2048 contact sheet it took
+// 0.45 s for 2.2 MB where one stream like this took 0.10 s for 2.1 MB. Bands of rows are
+// deflated on a thread each, as pigz does: each band starts with an empty dictionary and
+// ends on a byte boundary, so the bands joined are one deflate stream, and their Adler-32s
+// combine (RFC 1950, 1951). It costs a few bytes per band.
+struct PngStream::State {
+    const LdrImage& image;
+    unsigned threads = 1;
+    int rowsPerBand = 1;   // at least 256 KiB raw, so a thread's start is a small part of it
+    int handedOn = 0;
+    std::vector<std::future<Band>> bands;   // in row order
+    bool finished = false;
+};
+
+PngStream::PngStream(const LdrImage& image, unsigned threads) : state_(new State{image}) {
+    const size_t stride = size_t(std::max(image.width, 0)) * 4;
+    if (image.width <= 0 || image.height <= 0 || image.width > 0x7FFFFFFF / 4 ||
+        image.rgba.size() != stride * size_t(image.height)) {
+        throw std::runtime_error("cannot encode a " + std::to_string(image.width) + "x" +
+                                 std::to_string(image.height) + " PNG");
+    }
+    state_->threads = threads == 0 ? std::clamp(std::thread::hardware_concurrency(), 1u, 8u) : threads;
+    state_->rowsPerBand = int(std::max<size_t>(1, (size_t(256) << 10) / (stride + 1)));
+}
+
+PngStream::~PngStream() = default;   // std::async's futures wait in their destructors
+
+void PngStream::rowsReady(int rows) {
+    State& s = *state_;
+    // The last row waits for finish(), which ends the stream with it.
+    rows = std::min(rows, s.image.height - 1);
+    if (s.finished || rows - s.handedOn < s.rowsPerBand) {
+        return;
+    }
+    s.bands.push_back(std::async(std::launch::async, deflateBand, std::cref(s.image), s.handedOn, rows, false));
+    s.handedOn = rows;
+}
+
+int PngStream::rowsHandedOn() const {
+    return state_->handedOn;
+}
+
+std::vector<uint8_t> PngStream::finish() {
+    State& s = *state_;
+    if (s.finished) {
+        throw std::logic_error("PngStream::finish called twice");
+    }
+    s.finished = true;
+    // The rest in up to `threads` bands, the last one on this thread.
+    const int rest = s.image.height - s.handedOn;
+    const int count = std::clamp((rest + s.rowsPerBand - 1) / s.rowsPerBand, 1, int(s.threads));
+    auto bandRow = [&](int band) { return s.handedOn + int(int64_t(rest) * band / count); };
+    for (int band = 0; band + 1 < count; ++band) {
+        s.bands.push_back(std::async(std::launch::async, deflateBand, std::cref(s.image), bandRow(band),
+                                     bandRow(band + 1), false));
+    }
+    const Band last = deflateBand(s.image, bandRow(count - 1), s.image.height, true);
+
+    std::vector<uint8_t> compressed = {0x78, 0x01};   // zlib: deflate, 32 KiB window, fastest
+    uLong adler = adler32(0L, Z_NULL, 0);
+    auto append = [&](const Band& band) {
+        compressed.insert(compressed.end(), band.deflated.begin(), band.deflated.end());
+        adler = adler32_combine(adler, band.adler, z_off_t(band.filteredBytes));
+    };
+    for (std::future<Band>& band : s.bands) {
+        append(band.get());
+    }
+    append(last);
+    appendBigEndian32(compressed, uint32_t(adler));
+
+    std::vector<uint8_t> png(kPngSignature.begin(), kPngSignature.end());
+    std::vector<uint8_t> header;
+    appendBigEndian32(header, uint32_t(s.image.width));
+    appendBigEndian32(header, uint32_t(s.image.height));
+    header.insert(header.end(), {8, 6, 0, 0, 0});   // 8 bits, RGBA, deflate, adaptive filters, no interlace
+    appendPngChunk(png, "IHDR", header.data(), header.size());
+    appendPngChunk(png, "IDAT", compressed.data(), compressed.size());
+    appendPngChunk(png, "IEND", nullptr, 0);
+    return png;
+}
+
+std::vector<uint8_t> encodePng(const LdrImage& image, unsigned threads) {
+    return PngStream(image, threads).finish();
+}
+
+}  // namespace patina
