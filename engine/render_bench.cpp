@@ -65,6 +65,22 @@ void interleaved(int runs, Each each) {
     }
 }
 
+// Frames of `scene` under each of `variants`, rounds interleaved: the medians, in order.
+std::vector<FrameTiming> interleavedMedians(Renderer& renderer, const Scene& scene,
+                                            const std::vector<RenderSettings>& variants, int runs) {
+    std::vector<Samples> samples(variants.size());
+    interleaved(runs, [&](bool keep) {
+        for (size_t k = 0; k < variants.size(); ++k) {
+            timeFrame(renderer, scene, variants[k], keep ? &samples[k] : nullptr);
+        }
+    });
+    std::vector<FrameTiming> medians;
+    for (Samples& each : samples) {
+        medians.push_back(each.medians());
+    }
+    return medians;
+}
+
 // A sphere of about `triangles` triangles (2 rings x segments, segments = 2 rings).
 Mesh sphereOfAbout(size_t triangles) {
     const int rings = std::max(4, int(std::lround(std::sqrt(double(triangles) / 4.0))));
@@ -159,22 +175,19 @@ void measureScale(Renderer& renderer, const Mesh& mesh, const RenderBenchOptions
         {"single", PassMode::Single, FlatLights::WherePaying},
         {"specialised-flat", PassMode::Specialised, FlatLights::Always},
         {"specialised-block", PassMode::Specialised, FlatLights::Never}};
+    std::vector<RenderSettings> variants;
+    for (const auto& [path, passes, flatLights] : kinds) {
+        variants.push_back(settings);
+        variants.back().passes = passes;
+        variants.back().flatLights = flatLights;
+    }
     for (size_t target : triangles) {
         const Mesh sphere = sphereOfAbout(target);
         renderer.setMesh(sphere);
-        std::array<Samples, std::size(kinds)> samples;
-        interleaved(options.runs, [&](bool keep) {
-            for (size_t k = 0; k < std::size(kinds); ++k) {
-                RenderSettings s = settings;
-                s.passes = std::get<1>(kinds[k]);
-                s.flatLights = std::get<2>(kinds[k]);
-                timeFrame(renderer, scene, s, keep ? &samples[k] : nullptr);
-            }
-        });
+        const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
         for (size_t k = 0; k < std::size(kinds); ++k) {
-            const char* path = std::get<0>(kinds[k]);
             result.scaleRows.push_back({k == 0 ? "triangles" : "flat-lights", settings.width, settings.height,
-                                        triangleCount(sphere), samples[k].medians(), path});
+                                        triangleCount(sphere), times[k], std::get<0>(kinds[k])});
         }
     }
     renderer.setMesh(mesh);
@@ -189,18 +202,16 @@ void measureCulling(Renderer& renderer, const RenderBenchOptions& options, const
                                                              {"single-every-face", PassMode::Single, false},
                                                              {"multi", PassMode::Multi, true},
                                                              {"multi-every-face", PassMode::Multi, false}};
-    std::array<Samples, std::size(kinds)> samples;
-    interleaved(options.runs, [&](bool keep) {
-        for (size_t k = 0; k < std::size(kinds); ++k) {
-            RenderSettings s = settings;
-            s.passes = std::get<1>(kinds[k]);
-            s.cullHiddenFaces = std::get<2>(kinds[k]);
-            timeFrame(renderer, scene, s, keep ? &samples[k] : nullptr);
-        }
-    });
+    std::vector<RenderSettings> variants;
+    for (const auto& [path, passes, cull] : kinds) {
+        variants.push_back(settings);
+        variants.back().passes = passes;
+        variants.back().cullHiddenFaces = cull;
+    }
+    const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
     for (size_t k = 0; k < std::size(kinds); ++k) {
-        result.scaleRows.push_back({"culling", settings.width, settings.height, result.triangles,
-                                    samples[k].medians(), std::get<0>(kinds[k])});
+        result.scaleRows.push_back({"culling", settings.width, settings.height, result.triangles, times[k],
+                                    std::get<0>(kinds[k])});
     }
 }
 
