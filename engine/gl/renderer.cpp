@@ -46,6 +46,14 @@ std::optional<PassMode> passModeFromName(std::string_view name) {
     return enumFromName(name, all, passModeName);
 }
 
+namespace {
+// Corner 0-7 of `box`: bit 0 picks x, bit 1 y, bit 2 z.
+glm::vec3 boxCorner(const BoundingBox& box, int corner) {
+    return {(corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
+            (corner & 4) ? box.high.z : box.low.z};
+}
+}  // namespace
+
 glm::mat4 viewProjection(const Camera& camera, float aspect) {
     const glm::vec3 forward = camera.target - camera.position;
     const float distance = glm::length(forward);
@@ -63,9 +71,7 @@ bool beyondNearPlane(const glm::mat4& transform, const BoundingBox& box) {
         return false;
     }
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
-                          (corner & 4) ? box.high.z : box.low.z);
-        const glm::vec4 clip = transform * glm::vec4(p, 1.0f);
+        const glm::vec4 clip = transform * glm::vec4(boxCorner(box, corner), 1.0f);
         // GL's near plane is z = -w; a margin for the rounding of the corners' transform.
         if (!(clip.w > 0.0f && clip.z > -clip.w * (1.0f - 1e-4f))) {
             return false;
@@ -94,9 +100,7 @@ PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int w
     const PixelRect whole{0, 0, width, height};
     glm::vec2 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
-                          (corner & 4) ? box.high.z : box.low.z);
-        const glm::vec4 clip = transform * glm::vec4(p, 1.0f);
+        const glm::vec4 clip = transform * glm::vec4(boxCorner(box, corner), 1.0f);
         // In front of the eye the projection keeps the box's image inside its corners' hull;
         // at or behind the eye plane it does not.
         if (!(clip.w > 1e-6f)) {
