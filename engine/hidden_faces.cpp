@@ -18,11 +18,11 @@ namespace {
 // hash table: a million triangles' vertices in milliseconds, where a sort took a tenth of a
 // second.
 std::vector<uint32_t> weldedIds(const std::vector<glm::vec3>& positions) {
-    // + 0.0f makes -0 into +0, which compares equal but has other bits.
+    // -0 as +0: equal, but other bits.
     auto bits = [&](size_t v) {
-        const glm::vec3 p = positions[v] + glm::vec3(0.0f);
-        return std::array<uint32_t, 3>{std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
-                                       std::bit_cast<uint32_t>(p.z)};
+        const glm::vec3& p = positions[v];
+        auto word = [](float x) { return std::bit_cast<uint32_t>(x == 0.0f ? 0.0f : x); };
+        return std::array<uint32_t, 3>{word(p.x), word(p.y), word(p.z)};
     };
     const size_t capacity = std::bit_ceil(std::max<size_t>(2 * positions.size(), 16));
     constexpr uint32_t kEmpty = ~0u;
@@ -49,7 +49,7 @@ std::vector<uint32_t> weldedIds(const std::vector<glm::vec3>& positions) {
     return ids;
 }
 
-// The connected parts of a mesh: union-find over its welded vertices.
+// Union-find: which triangles reach one another across closed edges.
 struct Parts {
     std::vector<uint32_t> parent;
     explicit Parts(size_t count) : parent(count) { std::iota(parent.begin(), parent.end(), 0u); }
@@ -63,35 +63,42 @@ struct Parts {
     void join(uint32_t a, uint32_t b) { parent[root(a)] = root(b); }
 };
 
-// Every edge of `triangles` exactly twice, once each way. The edges are bucketed by their
-// lower end (a counting sort, linear), so only each vertex's few edges are sorted.
-bool closedAndConsistent(const std::vector<std::array<uint32_t, 3>>& triangles, size_t vertices) {
-    std::vector<uint32_t> start(vertices + 1, 0);
-    for (const auto& t : triangles) {
+using Triangle = std::array<uint32_t, 3>;
+
+// Every edge of `triangles` exactly twice, once each way; the two triangles of each edge are
+// joined in `parts`. Parts are edge-connected, not vertex-connected: two closed surfaces
+// touching at a corner, or a two-sided fin hung off one, are parts of their own. The edges
+// are bucketed by their lower end (a counting sort, linear), so only each vertex's few edges
+// are sorted.
+bool closedAndConsistent(const std::vector<Triangle>& triangles, size_t vertices, Parts& parts) {
+    std::vector<size_t> start(vertices + 1, 0);
+    for (const Triangle& t : triangles) {
         for (int k = 0; k < 3; ++k) {
             ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
         }
     }
     std::partial_sum(start.begin(), start.end(), start.begin());
-    // Each edge as its higher end, with bit 0 set when it runs from the higher end down.
+    // Each edge as its higher end (31 bits), bit 32 set when it runs from the higher end down,
+    // and its triangle (32 bits): sorted, the two triangles on a closed edge come out side by
+    // side, forward first.
     std::vector<uint64_t> far(start.back());
-    std::vector<uint32_t> filled(start.begin(), start.end() - 1);
-    for (const auto& t : triangles) {
+    std::vector<size_t> filled(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < triangles.size(); ++i) {
         for (int k = 0; k < 3; ++k) {
-            const uint32_t a = t[k], b = t[(k + 1) % 3];
-            far[filled[std::min(a, b)]++] = (uint64_t(std::max(a, b)) << 1) | uint64_t(a > b);
+            const uint32_t a = triangles[i][k], b = triangles[i][(k + 1) % 3];
+            far[filled[std::min(a, b)]++] = (uint64_t(std::max(a, b)) << 33) | (uint64_t(a > b) << 32) | i;
         }
     }
     for (size_t v = 0; v < vertices; ++v) {
         const auto first = far.begin() + std::ptrdiff_t(start[v]), last = far.begin() + std::ptrdiff_t(start[v + 1]);
         std::sort(first, last);
-        // Sorted, the two triangles on a closed edge come out side by side, forward first.
         for (auto e = first; e != last; e += 2) {
-            const bool pair = e + 1 != last && (*e & 1u) == 0 && e[1] == *e + 1;
-            const bool third = pair && e + 2 != last && (e[2] >> 1) == (*e >> 1);
+            const bool pair = e + 1 != last && (*e >> 32) == (e[1] >> 32) - 1 && ((*e >> 32) & 1u) == 0;
+            const bool third = pair && e + 2 != last && (e[2] >> 33) == (*e >> 33);
             if (!pair || third) {
                 return false;
             }
+            parts.join(uint32_t(*e), uint32_t(e[1]));
         }
     }
     return true;
@@ -101,17 +108,17 @@ bool closedAndConsistent(const std::vector<std::array<uint32_t, 3>>& triangles, 
 
 HiddenFaces hiddenFaces(const Mesh& mesh) {
     const std::vector<glm::vec3>& positions = mesh.positions;
-    // Ids are 32-bit with one to spare (kEmpty); NaN is not equal to itself.
+    // Vertex ids take 31 bits in closedAndConsistent, triangles 32; NaN is not equal to itself.
     if (positions.size() >= (size_t(1) << 31) || mesh.indices.size() % 3 != 0 ||
+        mesh.indices.size() / 3 >= (size_t(1) << 32) ||
         !std::all_of(positions.begin(), positions.end(), [](const glm::vec3& p) {
             return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
         })) {
         return HiddenFaces::None;
     }
     const std::vector<uint32_t> ids = weldedIds(positions);
-    std::vector<std::array<uint32_t, 3>> triangles;   // welded, without the degenerate ones
+    std::vector<Triangle> triangles;   // welded, without the degenerate ones
     triangles.reserve(mesh.indices.size() / 3);
-    Parts parts(positions.size());
     for (size_t i = 0; i < mesh.indices.size(); i += 3) {
         if (std::max({mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]}) >= positions.size()) {
             return HiddenFaces::None;
@@ -121,10 +128,9 @@ HiddenFaces hiddenFaces(const Mesh& mesh) {
             continue;
         }
         triangles.push_back({a, b, c});
-        parts.join(a, b);
-        parts.join(a, c);
     }
-    if (triangles.empty() || !closedAndConsistent(triangles, positions.size())) {
+    Parts parts(triangles.size());
+    if (triangles.empty() || !closedAndConsistent(triangles, positions.size(), parts)) {
         return HiddenFaces::None;
     }
     // Each part's signed volume (the divergence theorem over its triangles, times 6), about
@@ -141,10 +147,11 @@ HiddenFaces hiddenFaces(const Mesh& mesh) {
         double volume = 0.0;
     };
     std::vector<Part> volumes;
-    std::vector<uint32_t> partOf(positions.size(), ~0u);   // by root
-    for (const auto& [a, b, c] : triangles) {
+    std::vector<uint32_t> partOf(triangles.size(), ~0u);   // by root
+    for (size_t i = 0; i < triangles.size(); ++i) {
+        const auto& [a, b, c] = triangles[i];
         const glm::dvec3 p0(welded[a]), p1(welded[b]), p2(welded[c]);
-        uint32_t& index = partOf[parts.root(a)];
+        uint32_t& index = partOf[parts.root(uint32_t(i))];
         if (index == ~0u) {
             index = uint32_t(volumes.size());
             volumes.push_back({p0});

@@ -13,8 +13,9 @@ enum class HiddenFaces {
 
 // Back (or Front) when, with vertices at equal positions taken as one, every edge joins
 // exactly two triangles that run it in opposite directions (closed, consistently wound; a
-// triangle with two equal corners covers nothing and is left out), and every connected part
-// winds the same way round a volume that is not zero. A ray from an eye outside such a mesh
+// triangle with two equal corners covers nothing and is left out), and every part (triangles
+// that reach one another across edges; a shared corner does not join) winds the same way
+// round a volume that is not zero. A ray from an eye outside such a mesh
 // enters it before it can leave, so it meets a face wound towards the eye first and the
 // other side is always behind. Assumes the parts do not pass through themselves.
 HiddenFaces hiddenFaces(const Mesh& mesh);

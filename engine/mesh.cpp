@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -34,6 +35,7 @@ std::vector<uint32_t> gridIndices(int rows, int columns) {
 // the same position to the bit, so the seam is closed (hidden_faces.h), as sin(float(2 pi))
 // is not 0.
 glm::vec2 turn(int k, int n) {
+    n = std::max(n, 1);
     const float angle = 2.0f * kPi * float(k % n) / float(n);
     return {std::sin(angle), std::cos(angle)};
 }
@@ -80,6 +82,13 @@ Mesh makeMesh(MeshKind kind) {
     case MeshKind::Sphere: break;
     }
     return makeUvSphere();
+}
+
+Mesh reversedWinding(Mesh mesh) {
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    }
+    return mesh;
 }
 
 Mesh makeMesh(const Scene& scene) {

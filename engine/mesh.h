@@ -22,6 +22,8 @@ Mesh makeUvSphere(int rings = 64, int segments = 128);
 Mesh makeTorus(float majorRadius = 0.75f, float minorRadius = 0.3f, int rings = 96,
                int segments = 48);
 Mesh makeMesh(MeshKind kind);
+// Every triangle wound the other way (its last two corners swapped): front faces turn back.
+Mesh reversedWinding(Mesh mesh);
 // The scene's mesh: its glTF file when it names one (InputError if that cannot be loaded),
 // else the built-in kind.
 Mesh makeMesh(const Scene& scene);

@@ -34,13 +34,6 @@ Mesh splitCube() {
     return mesh;
 }
 
-Mesh reversed(Mesh mesh) {
-    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
-        std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
-    }
-    return mesh;
-}
-
 // Both meshes in one, the second moved by `offset`.
 Mesh merged(Mesh a, const Mesh& b, glm::vec3 offset) {
     const auto base = uint32_t(a.positions.size());
@@ -75,8 +68,8 @@ TEST(HiddenFaces, VerticesAtOnePositionAreOneVertex) {
 }
 
 TEST(HiddenFaces, InwardWindingHidesTheFrontFaces) {
-    EXPECT_EQ(hiddenFaces(reversed(makeUvSphere(8, 16))), HiddenFaces::Front);
-    EXPECT_EQ(hiddenFaces(reversed(splitCube())), HiddenFaces::Front);
+    EXPECT_EQ(hiddenFaces(reversedWinding(makeUvSphere(8, 16))), HiddenFaces::Front);
+    EXPECT_EQ(hiddenFaces(reversedWinding(splitCube())), HiddenFaces::Front);
 }
 
 TEST(HiddenFaces, OpenMeshesShowEveryFace) {
@@ -109,16 +102,34 @@ TEST(HiddenFaces, AnEdgeOfMoreThanTwoTrianglesShowsEveryFace) {
 TEST(HiddenFaces, EveryPartMustWindTheSameWay) {
     const Mesh cube = splitCube();
     EXPECT_EQ(hiddenFaces(merged(cube, cube, {3.0f, 0.0f, 0.0f})), HiddenFaces::Back);
-    EXPECT_EQ(hiddenFaces(merged(cube, reversed(cube), {3.0f, 0.0f, 0.0f})), HiddenFaces::None);
+    EXPECT_EQ(hiddenFaces(merged(cube, reversedWinding(cube), {3.0f, 0.0f, 0.0f})), HiddenFaces::None);
     // A part far from the origin keeps its sign.
     EXPECT_EQ(hiddenFaces(merged(cube, cube, {1e6f, 0.0f, 0.0f})), HiddenFaces::Back);
+}
+
+// Parts are joined across edges, not corners: a cube wound inward that touches an outward
+// one at a corner, or a two-sided fin hung off a corner, is a part of its own.
+TEST(HiddenFaces, PartsTouchingAtACornerAreJudgedApart) {
+    const Mesh cube = splitCube();
+    Mesh small = splitCube();
+    for (glm::vec3& p : small.positions) {
+        p *= 0.5f;
+    }
+    EXPECT_EQ(hiddenFaces(merged(cube, small, {1.0f, 1.0f, 1.0f})), HiddenFaces::Back);
+    EXPECT_EQ(hiddenFaces(merged(cube, reversedWinding(small), {1.0f, 1.0f, 1.0f})), HiddenFaces::None);
+    Mesh fin = cube;
+    const auto base = uint32_t(fin.positions.size());
+    fin.positions.insert(fin.positions.end(), {{1.0f, 1.0f, 1.0f}, {2.0f, 1.0f, 1.0f}, {1.0f, 2.0f, 1.0f}});
+    fin.normals.resize(fin.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+    fin.indices.insert(fin.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 1});
+    EXPECT_EQ(hiddenFaces(fin), HiddenFaces::None);
 }
 
 TEST(HiddenFaces, TwoSidesOfOneSheetShowEither) {
     // A square and the same square the other way round: closed, but enclosing nothing.
     Mesh quad = splitCube();
     quad.indices.resize(6);
-    EXPECT_EQ(hiddenFaces(merged(quad, reversed(quad), glm::vec3(0.0f))), HiddenFaces::None);
+    EXPECT_EQ(hiddenFaces(merged(quad, reversedWinding(quad), glm::vec3(0.0f))), HiddenFaces::None);
 }
 
 TEST(HiddenFaces, TrianglesThatCoverNothingDoNotCount) {

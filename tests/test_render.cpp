@@ -470,10 +470,7 @@ TEST(Renderer, BeyondNearPlaneOnlyWhenNothingIsCutOpen) {
 TEST(Renderer, CullingHiddenFacesGivesTheSameImage) {
     test::glContext();
     Renderer renderer;
-    Mesh inward = makeUvSphere();
-    for (size_t i = 0; i < inward.indices.size(); i += 3) {
-        std::swap(inward.indices[i + 1], inward.indices[i + 2]);
-    }
+    const Mesh inward = reversedWinding(makeUvSphere());
     struct Case {
         std::string name;
         Mesh mesh;

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "gltf_import.h"
+#include "hidden_faces.h"
 #include "input_error.h"
 #include "scratch_folder.h"
 
@@ -52,6 +53,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!finite(mesh.positions[i]) || std::abs(glm::length(mesh.normals[i]) - 1.0f) > 1e-3f) {
             std::abort();
         }
+    }
+    // What the renderer culls (hidden_faces.h) turns over with the winding: every triangle
+    // reversed hides the other side, or still none.
+    const patina::HiddenFaces hidden = patina::hiddenFaces(mesh),
+                              flipped = patina::hiddenFaces(patina::reversedWinding(mesh));
+    using patina::HiddenFaces;
+    if (flipped != (hidden == HiddenFaces::Back ? HiddenFaces::Front
+                    : hidden == HiddenFaces::Front ? HiddenFaces::Back
+                                                   : HiddenFaces::None)) {
+        std::abort();
     }
     return 0;
 }
