@@ -27,6 +27,10 @@ MeshBuffers::~MeshBuffers() {
 }
 
 void MeshBuffers::upload(const Mesh& mesh) {
+    // Before anything changes: a throw leaves the old mesh whole, never new buffers beside the
+    // old mesh's verdict on its faces.
+    const BoundingBox bounds = boundingBox(mesh);
+    const HiddenFaces hidden = patina::hiddenFaces(mesh);
     std::vector<float> interleaved;
     interleaved.reserve(mesh.positions.size() * 6);
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -41,8 +45,8 @@ void MeshBuffers::upload(const Mesh& mesh) {
                  mesh.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     indexCount_ = GLsizei(mesh.indices.size());
-    bounds_ = boundingBox(mesh);
-    hiddenFaces_ = patina::hiddenFaces(mesh);
+    bounds_ = bounds;
+    hiddenFaces_ = hidden;
 }
 
 void MeshBuffers::draw() const {
