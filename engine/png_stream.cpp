@@ -1,6 +1,7 @@
 #include "png_stream.h"
 
 #include <algorithm>
+#include <chrono>
 #include <future>
 #include <stdexcept>
 #include <string>
@@ -56,28 +57,54 @@ Band deflateBand(const LdrImage& image, int first, int last, bool final) {
         zs.avail_in = uInt(row.size());
         const int flush = y + 1 < last ? Z_NO_FLUSH : final ? Z_FINISH : Z_SYNC_FLUSH;
         const int status = deflate(&zs, flush);
-        if ((flush == Z_FINISH ? status != Z_STREAM_END : status != Z_OK) || zs.avail_in != 0) {
+        // A full output buffer could leave a flush unfinished: deflateBound says it cannot be.
+        if ((flush == Z_FINISH ? status != Z_STREAM_END : status != Z_OK) || zs.avail_in != 0 || zs.avail_out == 0) {
             throw std::runtime_error("zlib: compressing the PNG failed");
         }
     }
     band.deflated.resize(zs.total_out);
     return band;
 }
+
+// Rows [first, last) as bands of `rowsPerBand` rows, none ending the stream, one after another:
+// what one thread deflates.
+std::vector<Band> deflateBands(const LdrImage& image, int rowsPerBand, int first, int last) {
+    std::vector<Band> bands;
+    for (int row = first; row < last; row += rowsPerBand) {
+        bands.push_back(deflateBand(image, row, std::min(last, row + rowsPerBand), false));
+    }
+    return bands;
+}
 }  // namespace
 
 // PNG (spec 2nd ed.): 8-bit RGBA, every row with the Sub filter, one zlib stream at level 1.
 // stb's writer tries five filters per row at level 8: on a 3072x2048 contact sheet it took
-// 0.45 s for 2.2 MB where one stream like this took 0.10 s for 2.1 MB. Bands of rows are
-// deflated on a thread each, as pigz does: each band starts with an empty dictionary and
-// ends on a byte boundary, so the bands joined are one deflate stream, and their Adler-32s
-// combine (RFC 1950, 1951). It costs a few bytes per band.
+// 0.45 s for 2.2 MB where one stream like this took 0.10 s for 2.1 MB. The rows are deflated
+// in bands, as pigz does: each band starts with an empty dictionary and ends on a byte
+// boundary, so the bands joined are one deflate stream, and their Adler-32s combine (RFC
+// 1950, 1951). It costs a few bytes per band. Bands are cut at fixed rows, so the file's
+// bytes do not depend on the threads or on when rows were handed on.
 struct PngStream::State {
     const LdrImage& image;
     unsigned threads = 1;
-    int rowsPerBand = 1;   // at least 256 KiB raw, so a thread's start is a small part of it
+    int rowsPerBand = 1;   // about 1 MiB raw: a thread's start is a small part of a band
     int handedOn = 0;
-    std::vector<std::future<Band>> bands;   // in row order
+    std::vector<std::future<std::vector<Band>>> tasks;   // in row order
     bool finished = false;
+
+    // Bands of rows [handedOn, rows) on a thread, unless `threads` are still busy (the rows
+    // then wait for a later call): never blocks the caller.
+    void handOn(int rows) {
+        rows = handedOn + (rows - handedOn) / rowsPerBand * rowsPerBand;
+        const auto busy = std::count_if(tasks.begin(), tasks.end(), [](const auto& task) {
+            return task.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+        });
+        if (rows <= handedOn || size_t(busy) >= threads) {
+            return;
+        }
+        tasks.push_back(std::async(std::launch::async, deflateBands, std::cref(image), rowsPerBand, handedOn, rows));
+        handedOn = rows;
+    }
 };
 
 PngStream::PngStream(const LdrImage& image, unsigned threads) : state_(new State{image}) {
@@ -88,20 +115,18 @@ PngStream::PngStream(const LdrImage& image, unsigned threads) : state_(new State
                                  std::to_string(image.height) + " PNG");
     }
     state_->threads = threads == 0 ? std::clamp(std::thread::hardware_concurrency(), 1u, 8u) : threads;
-    state_->rowsPerBand = int(std::max<size_t>(1, (size_t(256) << 10) / (stride + 1)));
+    state_->rowsPerBand = int(std::max<size_t>(1, (size_t(1) << 20) / (stride + 1)));
 }
 
 PngStream::~PngStream() = default;   // std::async's futures wait in their destructors
 
 void PngStream::rowsReady(int rows) {
     State& s = *state_;
-    // The last row waits for finish(), which ends the stream with it.
-    rows = std::min(rows, s.image.height - 1);
-    if (s.finished || rows - s.handedOn < s.rowsPerBand) {
-        return;
+    // The band with the last row waits for finish(), which ends the stream with it.
+    const int lastBand = (s.image.height - 1) / s.rowsPerBand * s.rowsPerBand;
+    if (!s.finished) {
+        s.handOn(std::min(rows, lastBand));
     }
-    s.bands.push_back(std::async(std::launch::async, deflateBand, std::cref(s.image), s.handedOn, rows, false));
-    s.handedOn = rows;
 }
 
 int PngStream::rowsHandedOn() const {
@@ -114,15 +139,18 @@ std::vector<uint8_t> PngStream::finish() {
         throw std::logic_error("PngStream::finish called twice");
     }
     s.finished = true;
-    // The rest in up to `threads` bands, the last one on this thread.
-    const int rest = s.image.height - s.handedOn;
-    const int count = std::clamp((rest + s.rowsPerBand - 1) / s.rowsPerBand, 1, int(s.threads));
-    auto bandRow = [&](int band) { return s.handedOn + int(int64_t(rest) * band / count); };
-    for (int band = 0; band + 1 < count; ++band) {
-        s.bands.push_back(std::async(std::launch::async, deflateBand, std::cref(s.image), bandRow(band),
-                                     bandRow(band + 1), false));
+    // What is left, but the last band, over the threads; the last band on this one.
+    const int lastBand = (s.image.height - 1) / s.rowsPerBand * s.rowsPerBand;
+    int bandsLeft = (lastBand - s.handedOn) / s.rowsPerBand;
+    for (int workers = std::min<int>(bandsLeft, int(std::min(s.threads, 64u))); workers > 0; --workers) {
+        const int take = (bandsLeft + workers - 1) / workers;
+        const int end = s.handedOn + take * s.rowsPerBand;
+        s.tasks.push_back(
+            std::async(std::launch::async, deflateBands, std::cref(s.image), s.rowsPerBand, s.handedOn, end));
+        s.handedOn = end;
+        bandsLeft -= take;
     }
-    const Band last = deflateBand(s.image, bandRow(count - 1), s.image.height, true);
+    const Band last = deflateBand(s.image, s.handedOn, s.image.height, true);
 
     std::vector<uint8_t> compressed = {0x78, 0x01};   // zlib: deflate, 32 KiB window, fastest
     uLong adler = adler32(0L, Z_NULL, 0);
@@ -130,8 +158,10 @@ std::vector<uint8_t> PngStream::finish() {
         compressed.insert(compressed.end(), band.deflated.begin(), band.deflated.end());
         adler = adler32_combine(adler, band.adler, z_off_t(band.filteredBytes));
     };
-    for (std::future<Band>& band : s.bands) {
-        append(band.get());
+    for (auto& task : s.tasks) {
+        for (const Band& band : task.get()) {
+            append(band);
+        }
     }
     append(last);
     appendBigEndian32(compressed, uint32_t(adler));
