@@ -65,12 +65,36 @@ struct Parts {
 
 using Triangle = std::array<uint32_t, 3>;
 
+// Which ways a mesh's edges fold, seen from the side its triangles wind counter-clockwise on.
+struct Folds {
+    bool towards = false;   // the neighbour rises in front of a triangle's plane (concave)
+    bool away = false;      // it falls behind it (convex)
+};
+
+// Where triangle b's corner off the edge it shares with `a` lies against a's plane. Within 8
+// float roundings of the corners' coordinates counts as flat: a UV sphere's quads are planar,
+// and the rounding of their corners gives the diagonals either sign.
+void addFold(const std::vector<glm::vec3>& at, const Triangle& a, const Triangle& b, uint32_t v, uint32_t w,
+             Folds& folds) {
+    const uint32_t corner = b[0] != v && b[0] != w ? b[0] : b[1] != v && b[1] != w ? b[1] : b[2];
+    const glm::dvec3 p0(at[a[0]]), p1(at[a[1]]), p2(at[a[2]]), q(at[corner]);
+    const glm::dvec3 normal = glm::cross(p1 - p0, p2 - p0);
+    const double height = glm::dot(normal, q - p0);
+    auto largest = [](const glm::dvec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); };
+    const double rounding = 0x1p-24 * std::max({largest(p0), largest(p1), largest(p2), largest(q)});
+    if (std::abs(height) > 8.0 * rounding * glm::length(normal)) {
+        (height > 0.0 ? folds.towards : folds.away) = true;
+    }
+}
+
 // Every edge of `triangles` exactly twice, once each way; the two triangles of each edge are
-// joined in `parts`. Parts are edge-connected, not vertex-connected: two closed surfaces
-// touching at a corner, or a two-sided fin hung off one, are parts of their own. The edges
-// are bucketed by their lower end (a counting sort, linear), so only each vertex's few edges
-// are sorted.
-bool closedAndConsistent(const std::vector<Triangle>& triangles, size_t vertices, Parts& parts) {
+// joined in `parts`, and the way they fold is added to `folds`. Parts are edge-connected, not
+// vertex-connected: two closed surfaces touching at a corner, or a two-sided fin hung off one,
+// are parts of their own. The edges are bucketed by their lower end (a counting sort,
+// linear), so only each vertex's few edges are sorted.
+bool closedAndConsistent(const std::vector<Triangle>& triangles, const std::vector<glm::vec3>& at, Parts& parts,
+                         Folds& folds) {
+    const size_t vertices = at.size();
     std::vector<size_t> start(vertices + 1, 0);
     for (const Triangle& t : triangles) {
         for (int k = 0; k < 3; ++k) {
@@ -99,6 +123,7 @@ bool closedAndConsistent(const std::vector<Triangle>& triangles, size_t vertices
                 return false;
             }
             parts.join(uint32_t(*e), uint32_t(e[1]));
+            addFold(at, triangles[uint32_t(*e)], triangles[uint32_t(e[1])], uint32_t(v), uint32_t(*e >> 33), folds);
         }
     }
     return true;
@@ -106,7 +131,7 @@ bool closedAndConsistent(const std::vector<Triangle>& triangles, size_t vertices
 
 }  // namespace
 
-HiddenFaces hiddenFaces(const Mesh& mesh) {
+FaceCulling faceCulling(const Mesh& mesh) {
     const std::vector<glm::vec3>& positions = mesh.positions;
     // Vertex ids take 31 bits in closedAndConsistent, triangles 32; NaN is not equal to itself.
     if (positions.size() >= (size_t(1) << 31) || mesh.indices.size() % 3 != 0 ||
@@ -114,14 +139,14 @@ HiddenFaces hiddenFaces(const Mesh& mesh) {
         !std::all_of(positions.begin(), positions.end(), [](const glm::vec3& p) {
             return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
         })) {
-        return HiddenFaces::None;
+        return {};
     }
     const std::vector<uint32_t> ids = weldedIds(positions);
     std::vector<Triangle> triangles;   // welded, without the degenerate ones
     triangles.reserve(mesh.indices.size() / 3);
     for (size_t i = 0; i < mesh.indices.size(); i += 3) {
         if (std::max({mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]}) >= positions.size()) {
-            return HiddenFaces::None;
+            return {};
         }
         const uint32_t a = ids[mesh.indices[i]], b = ids[mesh.indices[i + 1]], c = ids[mesh.indices[i + 2]];
         if (a == b || b == c || c == a) {
@@ -129,12 +154,6 @@ HiddenFaces hiddenFaces(const Mesh& mesh) {
         }
         triangles.push_back({a, b, c});
     }
-    Parts parts(triangles.size());
-    if (triangles.empty() || !closedAndConsistent(triangles, positions.size(), parts)) {
-        return HiddenFaces::None;
-    }
-    // Each part's signed volume (the divergence theorem over its triangles, times 6), about
-    // its own first corner so that far-off parts lose no precision, and its box.
     const std::vector<glm::vec3> welded = [&] {
         std::vector<glm::vec3> p(positions.size());
         for (size_t v = 0; v < positions.size(); ++v) {
@@ -142,6 +161,13 @@ HiddenFaces hiddenFaces(const Mesh& mesh) {
         }
         return p;
     }();
+    Parts parts(triangles.size());
+    Folds folds;
+    if (triangles.empty() || !closedAndConsistent(triangles, welded, parts, folds)) {
+        return {};
+    }
+    // Each part's signed volume (the divergence theorem over its triangles, times 6), about
+    // its own first corner so that far-off parts lose no precision, and its box.
     struct Part {
         glm::dvec3 origin{0.0}, low{HUGE_VAL}, high{-HUGE_VAL};
         double volume = 0.0;
@@ -167,11 +193,22 @@ HiddenFaces hiddenFaces(const Mesh& mesh) {
         // side; rounding alone would give it a sign.
         const double size = glm::length(part.high - part.low);
         if (std::abs(part.volume) <= 1e-6 * size * size * size) {
-            return HiddenFaces::None;
+            return {};
         }
         ++(part.volume > 0.0 ? outward : inward);
     }
-    return inward == 0 ? HiddenFaces::Back : outward == 0 ? HiddenFaces::Front : HiddenFaces::None;
+    if (inward != 0 && outward != 0) {
+        return {};
+    }
+    FaceCulling culling;
+    culling.hidden = inward == 0 ? HiddenFaces::Back : HiddenFaces::Front;
+    // Wound inward, the visible side is the other one: its "towards" is our "away".
+    culling.convex = volumes.size() == 1 && !(inward == 0 ? folds.towards : folds.away);
+    return culling;
+}
+
+HiddenFaces hiddenFaces(const Mesh& mesh) {
+    return faceCulling(mesh).hidden;
 }
 
 }  // namespace patina

@@ -20,4 +20,14 @@ enum class HiddenFaces {
 // other side is always behind. Assumes the parts do not pass through themselves.
 HiddenFaces hiddenFaces(const Mesh& mesh);
 
+struct FaceCulling {
+    HiddenFaces hidden = HiddenFaces::None;
+    // One part that is convex: every edge folds away from the visible side or lies flat
+    // (within 8 float roundings of its corners). With the hidden side culled, no two faces
+    // then cover one sample, and the depth test decides nothing.
+    bool convex = false;
+};
+// hiddenFaces, and whether the mesh is convex, in one pass.
+FaceCulling faceCulling(const Mesh& mesh);
+
 }  // namespace patina

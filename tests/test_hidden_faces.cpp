@@ -132,6 +132,38 @@ TEST(HiddenFaces, TwoSidesOfOneSheetShowEither) {
     EXPECT_EQ(hiddenFaces(merged(quad, reversedWinding(quad), glm::vec3(0.0f))), HiddenFaces::None);
 }
 
+// An octahedron with its top corner at height `top` (below 0: a dent).
+Mesh octahedron(float top) {
+    Mesh mesh;
+    mesh.positions = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, top}, {0, 0, -1}};
+    mesh.normals = mesh.positions;
+    for (uint32_t i = 0; i < 4; ++i) {
+        const uint32_t next = (i + 1) % 4;
+        mesh.indices.insert(mesh.indices.end(), {i, next, 4, next, i, 5});
+    }
+    return mesh;
+}
+
+// Convex: one part whose edges all fold away from the visible side (or lie flat, as a cube's
+// faces and a UV sphere's quads do); then the renderer needs no depth test once it culls.
+TEST(HiddenFaces, ConvexOnlyForOnePartThatNeverFoldsTowardsTheEye) {
+    for (const Mesh& mesh : {makeUvSphere(), makeUvSphere(3, 5), splitCube(), octahedron(1.0f), octahedron(0.3f)}) {
+        EXPECT_EQ(faceCulling(mesh).hidden, HiddenFaces::Back);
+        EXPECT_TRUE(faceCulling(mesh).convex);
+        EXPECT_EQ(faceCulling(reversedWinding(mesh)).hidden, HiddenFaces::Front);
+        EXPECT_TRUE(faceCulling(reversedWinding(mesh)).convex);
+    }
+    const Mesh dented = octahedron(-0.3f);
+    EXPECT_EQ(faceCulling(dented).hidden, HiddenFaces::Back);
+    EXPECT_FALSE(faceCulling(dented).convex);
+    EXPECT_FALSE(faceCulling(reversedWinding(dented)).convex);
+    EXPECT_FALSE(faceCulling(makeTorus()).convex);
+    EXPECT_FALSE(faceCulling(merged(splitCube(), splitCube(), {3.0f, 0.0f, 0.0f})).convex);   // two parts
+    Mesh open = makeUvSphere(8, 16);
+    open.indices.resize(open.indices.size() / 2);
+    EXPECT_FALSE(faceCulling(open).convex);
+}
+
 TEST(HiddenFaces, TrianglesThatCoverNothingDoNotCount) {
     Mesh cube = splitCube();
     cube.indices.insert(cube.indices.end(), {0, 0, 1});

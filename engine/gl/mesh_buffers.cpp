@@ -30,7 +30,7 @@ void MeshBuffers::upload(const Mesh& mesh) {
     // Before anything changes: a throw leaves the old mesh whole, never new buffers beside the
     // old mesh's verdict on its faces.
     const BoundingBox bounds = boundingBox(mesh);
-    const HiddenFaces hidden = patina::hiddenFaces(mesh);
+    const FaceCulling culling = faceCulling(mesh);
     std::vector<float> interleaved;
     interleaved.reserve(mesh.positions.size() * 6);
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -46,7 +46,7 @@ void MeshBuffers::upload(const Mesh& mesh) {
     glBindVertexArray(0);
     indexCount_ = GLsizei(mesh.indices.size());
     bounds_ = bounds;
-    hiddenFaces_ = hidden;
+    culling_ = culling;
 }
 
 void MeshBuffers::draw() const {

@@ -17,14 +17,14 @@ public:
     void upload(const Mesh& mesh);
     void draw() const;
     const BoundingBox& bounds() const { return bounds_; }
-    HiddenFaces hiddenFaces() const { return hiddenFaces_; }
+    const FaceCulling& culling() const { return culling_; }
     size_t triangleCount() const { return size_t(indexCount_) / 3; }
 
 private:
     GLuint vertexArray_ = 0, vertices_ = 0, indices_ = 0;
     GLsizei indexCount_ = 0;
     BoundingBox bounds_;
-    HiddenFaces hiddenFaces_ = HiddenFaces::None;
+    FaceCulling culling_;
 };
 
 }  // namespace patina

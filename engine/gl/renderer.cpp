@@ -326,8 +326,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
     // A box beyond the near plane holds the whole mesh, so the eye is outside it.
     const HiddenFaces hidden = settings.cullHiddenFaces && beyondNearPlane(transform, s.mesh.bounds())
-                                   ? s.mesh.hiddenFaces()
+                                   ? s.mesh.culling().hidden
                                    : HiddenFaces::None;
+    // One convex part with its far side culled: no two faces share a sample, so the depth test
+    // decides nothing, and its clear and per-sample test are saved (llvmpipe, 4x MSAA: a
+    // 512x512 frame of the default sphere 17.5 ms against 13.5).
+    const bool depthTest = hidden == HiddenFaces::None || !s.mesh.culling().convex;
     const size_t flatSlots = flatLightSlotsFor(settings.flatLights, s.flatLightSlots, meshBox, meshArea, stripRows,
                                                s.mesh.triangleCount());
     const GlProgram& shading =
@@ -415,7 +419,6 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glViewport(0, -top, w, h);
         glEnable(GL_SCISSOR_TEST);
         glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
-        glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
         if (msaa || linear) {
@@ -424,7 +427,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         if (displayInPass) {
             glClearBufferfv(GL_COLOR, 1, clearDisplay);
         }
-        glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+        if (depthTest) {
+            glEnable(GL_DEPTH_TEST);
+            glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+        } else {
+            glDisable(GL_DEPTH_TEST);
+        }
         if (hidden != HiddenFaces::None) {
             glEnable(GL_CULL_FACE);
             glCullFace(hidden == HiddenFaces::Back ? GL_BACK : GL_FRONT);

@@ -55,13 +55,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
     }
     // What the renderer culls (hidden_faces.h) turns over with the winding: every triangle
-    // reversed hides the other side, or still none.
-    const patina::HiddenFaces hidden = patina::hiddenFaces(mesh),
-                              flipped = patina::hiddenFaces(patina::reversedWinding(mesh));
+    // reversed hides the other side, or still none, and is as convex as before.
+    const patina::FaceCulling culling = patina::faceCulling(mesh),
+                              flipped = patina::faceCulling(patina::reversedWinding(mesh));
     using patina::HiddenFaces;
-    if (flipped != (hidden == HiddenFaces::Back ? HiddenFaces::Front
-                    : hidden == HiddenFaces::Front ? HiddenFaces::Back
-                                                   : HiddenFaces::None)) {
+    if (flipped.hidden != (culling.hidden == HiddenFaces::Back    ? HiddenFaces::Front
+                           : culling.hidden == HiddenFaces::Front ? HiddenFaces::Back
+                                                                  : HiddenFaces::None) ||
+        flipped.convex != culling.convex || (culling.convex && culling.hidden == HiddenFaces::None)) {
         std::abort();
     }
     return 0;
