@@ -92,6 +92,10 @@ struct PngStream::State {
     std::vector<std::future<std::vector<Band>>> tasks;   // in row order
     bool finished = false;
 
+    // Where the band with the last row starts: it waits for finish(), which ends the stream
+    // with it.
+    int lastBand() const { return (image.height - 1) / rowsPerBand * rowsPerBand; }
+
     // Bands of rows [handedOn, rows) on a thread, unless `threads` are still busy (the rows
     // then wait for a later call): never blocks the caller.
     void handOn(int rows) {
@@ -122,10 +126,8 @@ PngStream::~PngStream() = default;   // std::async's futures wait in their destr
 
 void PngStream::rowsReady(int rows) {
     State& s = *state_;
-    // The band with the last row waits for finish(), which ends the stream with it.
-    const int lastBand = (s.image.height - 1) / s.rowsPerBand * s.rowsPerBand;
     if (!s.finished) {
-        s.handOn(std::min(rows, lastBand));
+        s.handOn(std::min(rows, s.lastBand()));
     }
 }
 
@@ -140,8 +142,7 @@ std::vector<uint8_t> PngStream::finish() {
     }
     s.finished = true;
     // What is left, but the last band, over the threads; the last band on this one.
-    const int lastBand = (s.image.height - 1) / s.rowsPerBand * s.rowsPerBand;
-    int bandsLeft = (lastBand - s.handedOn) / s.rowsPerBand;
+    int bandsLeft = (s.lastBand() - s.handedOn) / s.rowsPerBand;
     for (int workers = std::min<int>(bandsLeft, int(std::min(s.threads, 64u))); workers > 0; --workers) {
         const int take = (bandsLeft + workers - 1) / workers;
         const int end = s.handedOn + take * s.rowsPerBand;
