@@ -31,8 +31,8 @@ double threadCpuMilliseconds() {
 }
 
 struct Samples {
-    std::vector<double> gpu, cpu, frame;
-    FrameTiming medians() const { return {median(gpu), median(cpu), median(frame)}; }
+    std::vector<double> gpu, cpu, frame, readBack;
+    FrameTiming medians() const { return {median(gpu), median(cpu), median(frame), median(readBack)}; }
 };
 
 // One frame, drawn after the pipeline is idle so neither its timer query nor its wall time
@@ -45,14 +45,18 @@ void timeFrame(Renderer& renderer, const Scene& scene, const RenderSettings& set
     renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed
     const Clock::time_point start = Clock::now();
     const double cpuStart = threadCpuMilliseconds();
-    renderer.draw(scene, settings, settings.passes == PassMode::Multi ? 1 : 0);
+    const int slot = settings.passes == PassMode::Multi ? 1 : 0;
+    renderer.draw(scene, settings, slot);
     const double cpu = threadCpuMilliseconds() - cpuStart;
     glFinish();
-    const double frame = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    const Clock::time_point drawn = Clock::now();
+    renderer.readBack(slot, false);
+    const double readBack = std::chrono::duration<double, std::milli>(Clock::now() - drawn).count();
     if (into) {
         into->gpu.push_back(renderer.lastGpuMilliseconds());
         into->cpu.push_back(cpu);
-        into->frame.push_back(frame);
+        into->frame.push_back(std::chrono::duration<double, std::milli>(drawn - start).count());
+        into->readBack.push_back(readBack);
     }
 }
 
@@ -355,18 +359,19 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
 }
 
 std::string renderBenchCsv(const RenderBenchResult& result) {
-    std::string csv = "section,path,added,lights,width,height,triangles,gpu_ms,cpu_ms,frame_ms\n";
+    std::string csv = "section,path,added,lights,width,height,triangles,gpu_ms,cpu_ms,frame_ms,read_back_ms\n";
     char line[256];
     for (const LightCountRow& row : result.lightRows) {
-        std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f\n",
+        std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n",
                       std::string(passModeName(row.path)).c_str(), std::string(addedLightsName(row.added)).c_str(),
                       row.lights, result.width, result.height,
-                      result.triangles, row.time.gpu, row.time.cpu, row.time.frame);
+                      result.triangles, row.time.gpu, row.time.cpu, row.time.frame, row.time.readBack);
         csv += line;
     }
     for (const ScaleRow& row : result.scaleRows) {
-        std::snprintf(line, sizeof line, "%s,%s,,3,%d,%d,%zu,%.4f,%.4f,%.4f\n", row.axis.c_str(), row.path.c_str(),
-                      row.width, row.height, row.triangles, row.time.gpu, row.time.cpu, row.time.frame);
+        std::snprintf(line, sizeof line, "%s,%s,,3,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n", row.axis.c_str(),
+                      row.path.c_str(), row.width, row.height, row.triangles, row.time.gpu, row.time.cpu,
+                      row.time.frame, row.time.readBack);
         csv += line;
     }
     return csv;

@@ -24,6 +24,7 @@ struct FrameTiming {
     double gpu = 0.0;     // two GL_TIMESTAMP queries around the frame (Renderer::lastGpuMilliseconds)
     double cpu = 0.0;     // CPU time of the calling thread inside Renderer::draw (submission)
     double frame = 0.0;   // wall clock from draw to glFinish
+    double readBack = 0.0;   // then reading the display image back as bytes (Renderer::readBack)
 };
 
 // The lights past the default scene's first 3: a ring in front of the sphere.

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "gl/renderer.h"
+#include "shading.h"
 #include "test_support.h"
 
 namespace patina {
@@ -261,6 +262,48 @@ TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
             } else {
                 EXPECT_LE(maxByteDifference(shown.ldr, multi), 1) << what;
             }
+        }
+    }
+}
+
+// The display image is stored as bytes, so reading it back is a copy (llvmpipe converting a
+// float image in glReadPixels took 3 ms of a 512x512 sheet cell). Storing rounds to nearest, as
+// that conversion did: the bytes are the linear image's display values rounded.
+TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = manyLightScene(2);
+    scene.display.exposure = 0.4f;
+    scene.display.tonemap = Tonemap::Aces;
+    for (int samples : {1, 4}) {
+        for (PassMode passes : {PassMode::Multi, PassMode::Single}) {
+            RenderSettings settings;
+            settings.width = settings.height = 64;
+            settings.passes = passes;
+            settings.samples = samples;
+            const GLuint texture = renderer.draw(scene, settings);
+            const std::string what = std::string(passModeName(passes)) + ", " + std::to_string(samples) + " samples";
+            GLint format = 0;
+            glBindTexture(GL_TEXTURE_2D, texture);
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+            glBindTexture(GL_TEXTURE_2D, 0);
+            EXPECT_EQ(format, GL_RGBA8) << what;
+            const RenderOutput image = renderer.readBack();
+            size_t exact = 0, values = 0;
+            for (size_t p = 0; p * 3 < image.hdr.rgb.size(); ++p) {
+                const glm::vec3 linear(image.hdr.rgb[3 * p], image.hdr.rgb[3 * p + 1], image.hdr.rgb[3 * p + 2]);
+                const glm::vec3 shown = shader::displayTransform(linear, scene.display.exposure, shader::TONEMAP_ACES);
+                for (int c = 0; c < 3; ++c) {
+                    const int expected = int(std::lround(std::clamp(shown[c], 0.0f, 1.0f) * 255.0f));
+                    const int stored = image.ldr.rgba[4 * p + size_t(c)];
+                    ASSERT_LE(std::abs(stored - expected), 1) << what << ", pixel " << p;
+                    exact += stored == expected;
+                    ++values;
+                }
+            }
+            // Truncating would put about half the values one below; the GPU's and the CPU's
+            // float arithmetic may differ by an ulp at a rounding boundary.
+            EXPECT_GE(double(exact), 0.99 * double(values)) << what;
         }
     }
 }

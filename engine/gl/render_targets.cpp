@@ -76,7 +76,11 @@ RenderTargets::~RenderTargets() {
 }
 
 void RenderTargets::prepare(int w, int h, int stripRows, int sampleCount, bool keepLinear, bool displayInPass) {
-    display.ensure(w, h, 0, GL_RGBA32F);
+    // Bytes, as they are read back: llvmpipe converts floats to bytes in glReadPixels at
+    // about 13 ns a pixel (3 ms for 512x512, 20-26 for 1920x1080), and on storing them costs
+    // nothing measurable; without MSAA a frame that writes 8-bit display values is faster
+    // too (docs/PERFORMANCE.md). The bytes are the same either way: both round to nearest.
+    display.ensure(w, h, 0, GL_RGBA8);
     if (keepLinear) {
         linear.ensure(w, h, 0, GL_RGBA32F);
     } else {

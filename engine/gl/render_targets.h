@@ -37,7 +37,7 @@ struct RenderTargets {
     GlImage samples;   // multisampled linear radiance, one strip tall (MSAA only)
     GlImage depth;     // the shading pass's (multisampled with MSAA, one strip tall)
     GlImage linear;    // the linear image, when kept
-    GlImage display;   // display-referred sRGB values, RGBA32F: bytes only on reading back
+    GlImage display;   // display-referred sRGB values, RGBA8: reading back is a copy
     GLuint shadingFramebuffer = 0, displayFramebuffer = 0, readFramebuffer = 0;
     bool drawn = false;       // the last draw finished: there is an image to read back
     bool hasLinear = false;

@@ -481,7 +481,7 @@ RenderOutput Renderer::readBack(int slot, bool hdr) const {
         glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, output.hdr.rgb.data());
         flipRows(output.hdr.rgb, size_t(w) * 3, h);
     }
-    // The display values become bytes here, as GL converts float to 8-bit normalised.
+    // The display image is bytes already: a copy.
     output.ldr = {w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
     glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, t.display.name, 0);
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, output.ldr.rgba.data());

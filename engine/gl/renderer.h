@@ -99,9 +99,8 @@ public:
     void setMesh(const Mesh& mesh);
     // How many lights a specialised shader takes as flat inputs (shader_specialisation.h).
     size_t flatLightSlots() const;
-    // Renders into `slot` and returns its display texture (GL_RGBA32F holding sRGB-encoded
-    // values in [0, 1], GL's bottom-up rows), valid until the slot is drawn again at another
-    // size. Float, not 8-bit: llvmpipe runs a shader writing 8-bit colour about 1.8x slower.
+    // Renders into `slot` and returns its display texture (GL_RGBA8, sRGB-encoded, GL's
+    // bottom-up rows), valid until the slot is drawn again at another size.
     // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size].
     unsigned draw(const Scene& scene, const RenderSettings& settings, int slot = 0);
     // The last draw of `slot`, read back to the CPU with rows top to bottom (empty if never
