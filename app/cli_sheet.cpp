@@ -1,4 +1,6 @@
+#include <future>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "cli.h"
@@ -34,21 +36,31 @@ Command addSheetCommand(CLI::App& app) {
         for (const Material& material : materials) {
             names.push_back(material.name);
         }
-        std::unique_ptr<SheetBuilder> sheet;
         try {   // refuse an oversized sheet before rendering anything
-            sheet = std::make_unique<SheetBuilder>(options->size, options->size, names, options->columns);
+            sheetLayout(options->size, options->size, int(names.size()), options->columns);
         } catch (const std::invalid_argument& error) {
             throw InputError(std::string("the sheet is too large: ") + error.what() +
                              "; use a smaller --size or other --columns");
         }
+        // Filling the sheet's pixels is mostly the kernel's first touch of each page (24 cells
+        // at 512: 26 MB, 25-40 ms); a worker does it while this thread starts the GL context
+        // and compiles the first shader.
+        std::future<std::unique_ptr<SheetBuilder>> filling = std::async(std::launch::async, [&] {
+            return std::make_unique<SheetBuilder>(options->size, options->size, names, options->columns);
+        });
+        std::unique_ptr<SheetBuilder> sheet;
         // Each finished row of cells is deflated while the next renders: a sheet's renders
         // leave part of the second core idle.
-        PngStream png(sheet->image());
+        std::optional<PngStream> png;
         renderMaterials(scene, materials, options->size, options->size, [&](LdrImage&& cell) {
+            if (!sheet) {
+                sheet = filling.get();
+                png.emplace(sheet->image());
+            }
             sheet->add(cell);
-            png.rowsReady(sheet->finishedRows());
+            png->rowsReady(sheet->finishedRows());
         });
-        writeOutput(options->out, png.finish());
+        writeOutput(options->out, png->finish());
     };
 }
 
