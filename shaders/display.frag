@@ -6,6 +6,10 @@
 uniform sampler2DMS uSamples;
 uniform int uSampleCount;
 uniform int uStripTop;   // the strip's first row in the image
+// The samples are not cleared: one whose alpha is not this strip's stamp was not drawn in this
+// strip and is background (RenderTargets::SampleStamp).
+uniform float uSampleStamp;
+uniform vec3 uBackground;
 #else
 uniform sampler2D uHdr;
 #endif
@@ -23,7 +27,8 @@ void main() {
     vec3 sum = vec3(0.0f);
     int i = 0;
     do {
-        sum += texelFetch(uSamples, texel, i).rgb;
+        vec4 value = texelFetch(uSamples, texel, i);
+        sum += value.a == uSampleStamp ? value.rgb : uBackground;
     } while (++i < uSampleCount);
     vec3 linear = sum / float(uSampleCount);
 #else

@@ -53,6 +53,10 @@ PackedLight flatLight(int i) {
 uniform int uLightIndex;
 #endif
 
+#ifndef PATINA_PROBE
+uniform float uSampleStamp;   // alpha: which strip wrote a sample (RenderTargets::SampleStamp)
+#endif
+
 layout(location = 0) out vec4 fragColor;   // linear radiance
 #ifdef PATINA_DISPLAY_OUTPUT
 // Without MSAA there is nothing to resolve, so the pass also writes the display value itself
@@ -124,7 +128,11 @@ void main() {
 #else
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
 #endif
+#ifdef PATINA_PROBE
     fragColor = vec4(radiance, 1.0f);
+#else
+    fragColor = vec4(radiance, uSampleStamp);
+#endif
 #ifdef PATINA_DISPLAY_OUTPUT
     displayColor = vec4(displayTransform(radiance, uExposure, uTonemap), 1.0f);
 #endif

@@ -8,6 +8,7 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include "gl/render_targets.h"
 #include "gl/renderer.h"
 #include "shading.h"
 #include "test_support.h"
@@ -220,6 +221,45 @@ TEST(Renderer, StripsGiveTheWholeImage) {
             EXPECT_GT(identical, int(whole.ldr.rgba.size() * 99 / 100)) << passModeName(passes) << " " << budget;
         }
     }
+}
+
+// MSAA samples are never cleared: each strip stamps the samples it draws, and the resolve takes
+// any other for background. So a large sphere drawn first must leave no trace in a small one
+// drawn next into the same slot (inside the small one's box, around it, and in later strips).
+TEST(Renderer, SamplesOfAnEarlierDrawNeverShow) {
+    test::glContext();
+    Renderer renderer, fresh;
+    Scene near = defaultScene(), far = defaultScene();
+    near.camera.position *= 0.5f;
+    far.camera.position *= 2.5f;
+    far.lights[0].intensity *= 3.0f;   // other values in the samples too, not only other coverage
+    for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+        for (size_t budget : {size_t(0), size_t(120) * 4 * 16 * 30}) {   // whole, or strips of 30 rows
+            RenderSettings settings;
+            settings.width = settings.height = 120;
+            settings.passes = passes;
+            settings.maxTargetBytes = budget;
+            renderer.render(near, settings);
+            const RenderOutput after = renderer.render(far, settings);
+            const RenderOutput alone = fresh.render(far, settings);
+            const std::string what = std::string(passModeName(passes)) + ", budget " + std::to_string(budget);
+            EXPECT_EQ(after.ldr.rgba, alone.ldr.rgba) << what;
+            EXPECT_EQ(after.hdr.rgb, alone.hdr.rgb) << what;
+        }
+    }
+}
+
+TEST(RenderTargets, SampleStampsAskForAClearWhenNewAndWhenFloatsRunOut) {
+    RenderTargets::SampleStamp stamp;
+    EXPECT_TRUE(stamp.advance());   // samples just made: undefined contents
+    EXPECT_EQ(stamp.value, 1.0f);
+    EXPECT_FALSE(stamp.advance());
+    EXPECT_EQ(stamp.value, 2.0f);
+    stamp.value = 16777215.0f;      // 2^24 - 1
+    EXPECT_FALSE(stamp.advance());
+    EXPECT_EQ(stamp.value, 16777216.0f);
+    EXPECT_TRUE(stamp.advance());   // 2^24 + 1 is not a float: start again from a clear
+    EXPECT_EQ(stamp.value, 1.0f);
 }
 
 TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {

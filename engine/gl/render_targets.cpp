@@ -14,9 +14,9 @@ void GlImage::release() {
     name = 0, width = height = 0, samples = -1, format = 0;
 }
 
-void GlImage::ensure(int w, int h, int s, GLenum f) {
+bool GlImage::ensure(int w, int h, int s, GLenum f) {
     if (name && w == width && h == height && s == samples && f == format) {
-        return;
+        return false;
     }
     release();
     width = w, height = h, samples = s, format = f;
@@ -36,6 +36,7 @@ void GlImage::ensure(int w, int h, int s, GLenum f) {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
+    return true;
 }
 
 void attach(GLuint framebuffer, const GlImage* linear, const GlImage* display, const GlImage* depth) {
@@ -88,7 +89,9 @@ void RenderTargets::prepare(int w, int h, int stripRows, int sampleCount, bool k
     }
     const GlImage* kept = keepLinear ? &linear : nullptr;
     if (sampleCount > 1) {
-        samples.ensure(w, stripRows, sampleCount, GL_RGBA32F);
+        if (samples.ensure(w, stripRows, sampleCount, GL_RGBA32F)) {
+            sampleStamp = {};
+        }
         // The same count as the colour got: a GL may round textures and renderbuffers apart,
         // and attachments of different counts make the framebuffer incomplete.
         depth.ensure(w, stripRows, samples.actualSamples, GL_DEPTH_COMPONENT24);
@@ -104,6 +107,13 @@ void RenderTargets::prepare(int w, int h, int stripRows, int sampleCount, bool k
     } else {
         attach(displayFramebuffer, nullptr, &display, nullptr);
     }
+}
+
+bool RenderTargets::SampleStamp::advance() {
+    constexpr float kLastExact = 16777216.0f;   // 2^24: a float counts exactly up to here
+    const bool clear = value == 0.0f || value >= kLastExact;
+    value = clear ? 1.0f : value + 1.0f;
+    return clear;
 }
 
 }  // namespace patina

@@ -19,7 +19,8 @@ struct GlImage {
 
     bool isDepth() const { return format == GL_DEPTH_COMPONENT24; }
     void release();
-    void ensure(int w, int h, int s, GLenum f);
+    // True when it made a new image (whose contents are undefined).
+    bool ensure(int w, int h, int s, GLenum f);
 };
 
 // Colour attachment 0 takes linear radiance and 1 display values, in every pass that writes
@@ -41,6 +42,17 @@ struct RenderTargets {
     GLuint shadingFramebuffer = 0, displayFramebuffer = 0, readFramebuffer = 0;
     bool drawn = false;       // the last draw finished: there is an image to read back
     bool hasLinear = false;
+    // With MSAA the shading passes write a stamp into the samples' alpha, new for each strip,
+    // and the resolve takes a sample with another stamp for background: the samples are not
+    // cleared for each strip (a clear of 4 float samples a pixel was a tenth of a 512x512
+    // frame on llvmpipe).
+    struct SampleStamp {
+        float value = 0.0f;   // the last strip's; 0: none since the samples were made
+        // To the next strip's stamp. True when the samples must first be cleared to stamp 0:
+        // just made (contents undefined), or past the last count a float holds exactly.
+        bool advance();
+    };
+    SampleStamp sampleStamp;
 
     RenderTargets();
     ~RenderTargets();

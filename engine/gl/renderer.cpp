@@ -272,6 +272,8 @@ void Renderer::drawPasses(State& s, PassMode passes, const GlProgram& shading, s
     // (mesh.vert's gl_Position is invariant).
     shading.use();
     prepare(shading);
+    // The passes add 0 to alpha, so the pre-pass's stamp (RenderTargets::SampleStamp) stays.
+    glUniform1f(shading.uniform("uSampleStamp"), 0.0f);
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_BLEND);
@@ -365,8 +367,11 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const GLfloat clearLinear[4] = {background.r, background.g, background.b, 1.0f};
     const GLfloat clearDisplay[4] = {backgroundShown.r, backgroundShown.g, backgroundShown.b, 1.0f};
     const GLfloat clearDepth = 1.0f;
+    const GLfloat clearStamp[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
 
     auto prepare = [&](const GlProgram& program) {
+        glUniform1f(program.uniform("uSampleStamp"), stamp);
         glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(transform));
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
         setMaterialUniforms(program, scene.material);
@@ -389,6 +394,8 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
             glUniform1i(displayPass->uniform("uSamples"), 0);
             glUniform1i(displayPass->uniform("uSampleCount"), t.samples.actualSamples);
             glUniform1i(displayPass->uniform("uStripTop"), top);
+            glUniform1f(displayPass->uniform("uSampleStamp"), stamp);
+            glUniform3fv(displayPass->uniform("uBackground"), 1, glm::value_ptr(background));
         } else {
             glBindTexture(GL_TEXTURE_2D, t.linear.name);
             glUniform1i(displayPass->uniform("uHdr"), 0);
@@ -414,6 +421,12 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
             continue;
         }
         glBindFramebuffer(GL_FRAMEBUFFER, t.shadingFramebuffer);
+        if (msaa) {
+            if (t.sampleStamp.advance()) {
+                glClearBufferfv(GL_COLOR, 0, clearStamp);   // the whole strip: no scissor yet
+            }
+            stamp = t.sampleStamp.value;
+        }
         // The whole image's viewport, moved down so rows [top, top + rows) land in the strip;
         // the scissor (which clears obey too) keeps to the area.
         glViewport(0, -top, w, h);
@@ -421,7 +434,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
-        if (msaa || linear) {
+        if (!msaa && linear) {   // MSAA samples are stamped instead (RenderTargets::SampleStamp)
             glClearBufferfv(GL_COLOR, 0, clearLinear);
         }
         if (displayInPass) {
