@@ -2,9 +2,10 @@
 // image written too where the renderer keeps it. With PATINA_MULTISAMPLED it is also the MSAA
 // resolve: it reads one strip's samples and writes their mean, so no resolved copy is made
 // first (location 0 the linear mean, location 1 its display value, as shade.frag's outputs).
+// PATINA_SAMPLE_COUNT: the samples the GL made; a constant, the loop unrolls (llvmpipe runs a
+// loop of a uniform count with per-lane masks: 4-8% of a 512x512 frame).
 #ifdef PATINA_MULTISAMPLED
 uniform sampler2DMS uSamples;
-uniform int uSampleCount;
 uniform int uStripTop;   // the strip's first row in the image
 // The samples are not cleared: one whose alpha is not this strip's stamp was not drawn in this
 // strip and is background (RenderTargets::SampleStamp).
@@ -22,15 +23,12 @@ layout(location = 1) out vec4 displayColor;
 void main() {
 #ifdef PATINA_MULTISAMPLED
     ivec2 texel = ivec2(gl_FragCoord.xy) - ivec2(0, uStripTop);
-    // Tested at the end, as shade.frag's light loops are (a test at the top costs llvmpipe one
-    // more fetch with every lane off); a multisampled texture has at least one sample.
     vec3 sum = vec3(0.0f);
-    int i = 0;
-    do {
+    for (int i = 0; i < PATINA_SAMPLE_COUNT; ++i) {
         vec4 value = texelFetch(uSamples, texel, i);
         sum += value.a == uSampleStamp ? value.rgb : uBackground;
-    } while (++i < uSampleCount);
-    vec3 linear = sum / float(uSampleCount);
+    }
+    vec3 linear = sum / float(PATINA_SAMPLE_COUNT);
 #else
     vec3 linear = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb;
 #endif

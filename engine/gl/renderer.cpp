@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -181,9 +182,20 @@ struct Renderer::State {
     ShadingPrograms shading;
     LazyProgram depthPrepass{{shader_sources::mesh_vert}, {shader_sources::black_frag}};
     LazyProgram display{{shader_sources::fullscreen_vert}, {shader_sources::display_glsl, shader_sources::display_frag}};
-    LazyProgram resolve{{shader_sources::fullscreen_vert},
-                        {shader_sources::display_glsl, shader_sources::display_frag},
-                        {"PATINA_MULTISAMPLED"}};
+    std::map<int, LazyProgram> resolves;   // by the sample count the GL made
+
+    LazyProgram& resolve(int samples) {
+        auto found = resolves.find(samples);
+        if (found == resolves.end()) {
+            found = resolves
+                        .try_emplace(samples, std::vector<const char*>{shader_sources::fullscreen_vert},
+                                     std::vector<const char*>{shader_sources::display_glsl, shader_sources::display_frag},
+                                     std::vector<std::string>{"PATINA_MULTISAMPLED",
+                                                              "PATINA_SAMPLE_COUNT " + std::to_string(samples)})
+                        .first;
+        }
+        return found->second;
+    }
     LightBuffer lights;
     MeshBuffers mesh;
     GLuint emptyVertexArray = 0;
@@ -316,7 +328,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const bool keepLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
     t.prepare(w, h, stripRows, samples, keepLinear, displayInPass);
     const GlImage* linear = keepLinear ? &t.linear : nullptr;
-    const GlProgram* displayPass = msaa ? &s.resolve.get() : displayInPass ? nullptr : &s.display.get();
+    const GlProgram* displayPass = msaa ? &s.resolve(t.samples.actualSamples).get() : displayInPass ? nullptr : &s.display.get();
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
@@ -392,7 +404,6 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         if (msaa) {
             glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.samples.name);
             glUniform1i(displayPass->uniform("uSamples"), 0);
-            glUniform1i(displayPass->uniform("uSampleCount"), t.samples.actualSamples);
             glUniform1i(displayPass->uniform("uStripTop"), top);
             glUniform1f(displayPass->uniform("uSampleStamp"), stamp);
             glUniform3fv(displayPass->uniform("uBackground"), 1, glm::value_ptr(background));
