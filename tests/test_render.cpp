@@ -68,6 +68,14 @@ Scene manyLightScene(int perType) {
     return scene;
 }
 
+// Two lights of each type, shown with an exposure and a tone map.
+Scene toneMappedScene(float exposure, Tonemap tonemap) {
+    Scene scene = manyLightScene(2);
+    scene.display.exposure = exposure;
+    scene.display.tonemap = tonemap;
+    return scene;
+}
+
 Scene onlyLightsOfType(LightType type, int count) {
     Scene scene = manyLightScene(count);
     std::erase_if(scene.lights, [type](const Light& light) { return light.type != type; });
@@ -282,9 +290,7 @@ TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
 TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
     test::glContext();
     Renderer renderer;
-    Scene scene = manyLightScene(2);
-    scene.display.exposure = 0.7f;
-    scene.display.tonemap = Tonemap::Reinhard;
+    const Scene scene = toneMappedScene(0.7f, Tonemap::Reinhard);
     for (int samples : {1, 4}) {
         LdrImage multi;
         for (PassMode passes : {PassMode::Multi, PassMode::Single, PassMode::Specialised}) {
@@ -312,9 +318,7 @@ TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
 TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
     test::glContext();
     Renderer renderer;
-    Scene scene = manyLightScene(2);
-    scene.display.exposure = 0.4f;
-    scene.display.tonemap = Tonemap::Aces;
+    const Scene scene = toneMappedScene(0.4f, Tonemap::Aces);
     for (int samples : {1, 4}) {
         for (PassMode passes : {PassMode::Multi, PassMode::Single}) {
             RenderSettings settings;
