@@ -52,14 +52,18 @@ Command addSheetCommand(CLI::App& app) {
         // Each finished row of cells is deflated while the next renders: a sheet's renders
         // leave part of the second core idle.
         std::optional<PngStream> png;
-        renderMaterials(scene, materials, options->size, options->size, [&](LdrImage&& cell) {
+        auto take = [&] {
             if (!sheet) {
                 sheet = filling.get();
                 png.emplace(sheet->image());
             }
+        };
+        renderMaterials(scene, materials, options->size, options->size, [&](LdrImage&& cell) {
+            take();
             sheet->add(cell);
             png->rowsReady(sheet->finishedRows());
         });
+        take();
         writeOutput(options->out, png->finish());
     };
 }

@@ -53,8 +53,11 @@ PackedLight flatLight(int i) {
 uniform int uLightIndex;
 #endif
 
-#ifndef PATINA_PROBE
-uniform float uSampleStamp;   // alpha: which strip wrote a sample (RenderTargets::SampleStamp)
+// Alpha: which strip wrote a sample (RenderTargets::SampleStamp). Only MSAA samples need it;
+// elsewhere it is not read, and a uniform costs llvmpipe a gather.
+#if !defined(PATINA_PROBE) && !defined(PATINA_DISPLAY_OUTPUT)
+#define PATINA_STAMPED
+uniform float uSampleStamp;
 #endif
 
 layout(location = 0) out vec4 fragColor;   // linear radiance
@@ -128,10 +131,10 @@ void main() {
 #else
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
 #endif
-#ifdef PATINA_PROBE
-    fragColor = vec4(radiance, 1.0f);
-#else
+#ifdef PATINA_STAMPED
     fragColor = vec4(radiance, uSampleStamp);
+#else
+    fragColor = vec4(radiance, 1.0f);
 #endif
 #ifdef PATINA_DISPLAY_OUTPUT
     displayColor = vec4(displayTransform(radiance, uExposure, uTonemap), 1.0f);

@@ -231,9 +231,10 @@ TEST(Renderer, StripsGiveTheWholeImage) {
     }
 }
 
-// MSAA samples are never cleared: each strip stamps the samples it draws, and the resolve takes
-// any other for background. So a large sphere drawn first must leave no trace in a small one
-// drawn next into the same slot (inside the small one's box, around it, and in later strips).
+// MSAA samples are not cleared for each strip: each strip stamps the samples it draws, and the
+// resolve takes any other for background. So a large sphere drawn first must leave no trace in
+// a small one drawn next into the same slot, whole or in strips. (Strips against the whole
+// image: StripsGiveTheWholeImage.)
 TEST(Renderer, SamplesOfAnEarlierDrawNeverShow) {
     test::glContext();
     Renderer renderer, fresh;
@@ -268,6 +269,24 @@ TEST(RenderTargets, SampleStampsAskForAClearWhenNewAndWhenFloatsRunOut) {
     EXPECT_EQ(stamp.value, 16777216.0f);
     EXPECT_TRUE(stamp.advance());   // 2^24 + 1 is not a float: start again from a clear
     EXPECT_EQ(stamp.value, 1.0f);
+}
+
+// New samples hold anything, a stamp still to come included: remaking them starts the count
+// again, so the next strip clears them first.
+TEST(RenderTargets, NewSamplesStartTheStampsAgain) {
+    test::glContext();
+    RenderTargets targets;
+    targets.prepare(64, 64, 64, 4, false, false);
+    EXPECT_TRUE(targets.sampleStamp.advance());
+    EXPECT_FALSE(targets.sampleStamp.advance());
+    targets.prepare(64, 64, 64, 4, false, false);   // the same size: the same samples
+    EXPECT_EQ(targets.sampleStamp.value, 2.0f);
+    targets.prepare(80, 64, 32, 4, false, false);
+    EXPECT_EQ(targets.sampleStamp.value, 0.0f);
+    EXPECT_TRUE(targets.sampleStamp.advance());
+    targets.prepare(80, 64, 64, 1, false, true);   // no MSAA: the samples go
+    targets.prepare(80, 64, 32, 4, false, false);
+    EXPECT_EQ(targets.sampleStamp.value, 0.0f);
 }
 
 TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {

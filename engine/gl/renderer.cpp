@@ -328,14 +328,14 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const bool keepLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
     t.prepare(w, h, stripRows, samples, keepLinear, displayInPass);
     const GlImage* linear = keepLinear ? &t.linear : nullptr;
-    const GlProgram* displayPass = msaa ? &s.resolve(t.samples.actualSamples).get() : displayInPass ? nullptr : &s.display.get();
+    const GlProgram* displayPass = msaa ? &s.resolve(std::max(t.samples.actualSamples, 1)).get() : displayInPass ? nullptr : &s.display.get();
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
     const PixelRect meshBox = screenBounds(transform, s.mesh.bounds(), w, h);
     // With MSAA, samples only where the mesh can be: most of a frame is often background, and
-    // there a sample costs a clear, a store and a resolve for nothing.
+    // there a sample costs a store and a resolve for nothing.
     const PixelRect whole{0, 0, w, h};
     const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
     // A box beyond the near plane holds the whole mesh, so the eye is outside it.
@@ -370,6 +370,9 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
             glFlush();
         }
     }
+    // The display image is bytes: a GL may dither what it writes there, and the bytes must
+    // be the display values rounded (a float image read back was never dithered).
+    glDisable(GL_DITHER);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);

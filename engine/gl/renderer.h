@@ -40,8 +40,8 @@ struct RenderSettings {
     // Keep the linear image, for readBack(slot, true) (and render() reads it back). Without it
     // no full-size linear image is written at all, which saves a pass's memory and bandwidth.
     bool readHdr = true;
-    // With MSAA, clear, shade and resolve only the pixels the mesh can cover (its bounding box
-    // on screen); the rest is background, filled without samples. false: every pixel, the
+    // With MSAA, shade and resolve only the pixels the mesh can cover (its bounding box on
+    // screen); the rest is background, filled without samples. false: every pixel, the
     // same image (for tests).
     bool cropToMesh = true;
     // Specialised (and the floor): take the first lights as flat inputs from the vertex stage
