@@ -36,10 +36,10 @@ struct Samples {
 };
 
 // One frame, drawn after the pipeline is idle so neither its timer query nor its wall time
-// includes earlier work, then read back as `patina render` does (timed apart). Multi draws into a slot of its own: without MSAA it keeps a linear
-// image to sum into and the others do not, so in one slot every switch between them would
-// allocate it again (and touch its pages first), 8-20 ms a multi frame that a user drawing
-// multi never pays.
+// includes earlier work, then read back as `patina render` does (timed apart). Multi draws
+// into a slot of its own: without MSAA it keeps a linear image to sum into and the others do
+// not, so in one slot every switch between them would allocate it again (and touch its pages
+// first), 8-20 ms a multi frame that a user drawing multi never pays.
 void timeFrame(Renderer& renderer, const Scene& scene, const RenderSettings& settings, Samples* into) {
     glFinish();
     renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed

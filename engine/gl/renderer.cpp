@@ -187,12 +187,11 @@ struct Renderer::State {
     LazyProgram& resolve(int samples) {
         auto found = resolves.find(samples);
         if (found == resolves.end()) {
-            found = resolves
-                        .try_emplace(samples, std::vector<const char*>{shader_sources::fullscreen_vert},
-                                     std::vector<const char*>{shader_sources::display_glsl, shader_sources::display_frag},
-                                     std::vector<std::string>{"PATINA_MULTISAMPLED",
-                                                              "PATINA_SAMPLE_COUNT " + std::to_string(samples)})
-                        .first;
+            const std::vector<const char*> vertex{shader_sources::fullscreen_vert};
+            const std::vector<const char*> fragment{shader_sources::display_glsl, shader_sources::display_frag};
+            const std::vector<std::string> defines{"PATINA_MULTISAMPLED",
+                                                   "PATINA_SAMPLE_COUNT " + std::to_string(samples)};
+            found = resolves.try_emplace(samples, vertex, fragment, defines).first;
         }
         return found->second;
     }
@@ -328,7 +327,9 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     const bool keepLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
     t.prepare(w, h, stripRows, samples, keepLinear, displayInPass);
     const GlImage* linear = keepLinear ? &t.linear : nullptr;
-    const GlProgram* displayPass = msaa ? &s.resolve(std::max(t.samples.actualSamples, 1)).get() : displayInPass ? nullptr : &s.display.get();
+    const GlProgram* displayPass = msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
+                                   : displayInPass ? nullptr
+                                                   : &s.display.get();
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
