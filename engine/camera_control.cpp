@@ -6,7 +6,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "gl/renderer.h"
+#include "view.h"
 
 namespace patina {
 

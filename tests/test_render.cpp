@@ -147,26 +147,6 @@ TEST(Renderer, AllThreePassModesAgree) {
     }
 }
 
-// The mesh is drawn once per strip that meets the drawn area, and the box bounds its pixels.
-TEST(Renderer, FlatLightSlotsWeighTheBoxAgainstTrianglesDrawn) {
-    const size_t slots = 14;
-    const PixelRect box{0, 0, 1000, 1000};
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 1000, 16384), slots);
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 1000, 1'000'000), 0u);
-    // 30,000 triangles: 33 pixels each in one draw, 3.3 in ten strips of 100 rows.
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 1000, 30'000), slots);
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 100, 30'000), 0u);
-    // A box 200 rows high meets 2 strips when drawn cropped, all 10 when not (cropToMesh off).
-    const PixelRect band{0, 400, 1000, 600};
-    const PixelRect whole{0, 0, 1000, 1000};
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, band, band, 100, 10'000), slots);
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, band, whole, 100, 10'000), 0u);
-    // Nothing on screen: nothing to gain. Forced either way, the box does not matter.
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, PixelRect{}, whole, 1000, 10), 0u);
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::Always, slots, PixelRect{}, whole, 1000, 1'000'000), slots);
-    EXPECT_EQ(flatLightSlotsFor(FlatLights::Never, slots, box, box, 1000, 10), 0u);
-}
-
 // The timer queries time the whole draw, not a piece of it: on llvmpipe a query in the draw's
 // own scene timed one tile, about 0.02 ms of a frame of tens of ms.
 TEST(Renderer, GpuTimeCoversTheDraw) {

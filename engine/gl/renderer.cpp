@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -11,11 +9,11 @@
 #include <vector>
 
 #include <epoxy/gl.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "../enum_names.h"
 #include "../light_packing.h"
+#include "frame_plan.h"
 #include "mesh_buffers.h"
 #include "program.h"
 #include "render_targets.h"
@@ -47,98 +45,8 @@ std::optional<PassMode> passModeFromName(std::string_view name) {
     return enumFromName(name, all, passModeName);
 }
 
-namespace {
-// Corner 0-7 of `box`: bit 0 picks x, bit 1 y, bit 2 z.
-glm::vec3 boxCorner(const BoundingBox& box, int corner) {
-    return {(corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
-            (corner & 4) ? box.high.z : box.low.z};
-}
-}  // namespace
-
-glm::mat4 viewProjection(const Camera& camera, float aspect) {
-    const glm::vec3 forward = camera.target - camera.position;
-    const float distance = glm::length(forward);
-    // Looking straight up or down, +y cannot be the up vector.
-    const glm::vec3 unitForward = forward / distance;
-    const glm::vec3 up = std::abs(unitForward.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
-    const float nearPlane = std::max(1e-3f, distance * 0.01f);
-    const float farPlane = distance * 10.0f + 10.0f;
-    return glm::perspective(glm::radians(camera.fovYDegrees), aspect, nearPlane, farPlane) *
-           glm::lookAt(camera.position, camera.target, up);
-}
-
-bool beyondNearPlane(const glm::mat4& transform, const BoundingBox& box) {
-    if (box.empty()) {
-        return false;
-    }
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 clip = transform * glm::vec4(boxCorner(box, corner), 1.0f);
-        // GL's near plane is z = -w; a margin for the rounding of the corners' transform.
-        if (!(clip.w > 0.0f && clip.z > -clip.w * (1.0f - 1e-4f))) {
-            return false;
-        }
-    }
-    return true;
-}
-
-size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox,
-                         const PixelRect& drawnArea, int stripRows, size_t triangles) {
-    if (mode != RenderSettings::FlatLights::WherePaying) {
-        return mode == RenderSettings::FlatLights::Always ? slots : 0;
-    }
-    if (meshBox.empty() || drawnArea.empty()) {
-        return 0;
-    }
-    const int draws = (drawnArea.y1 - 1) / stripRows - drawnArea.y0 / stripRows + 1;
-    const double pixels = double(meshBox.x1 - meshBox.x0) * double(meshBox.y1 - meshBox.y0);
-    return flatLightsPay(pixels, double(triangles) * draws) ? slots : 0;
-}
-
-PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height) {
-    if (box.empty()) {
-        return {};
-    }
-    const PixelRect whole{0, 0, width, height};
-    glm::vec2 low(std::numeric_limits<float>::max()), high(-std::numeric_limits<float>::max());
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 clip = transform * glm::vec4(boxCorner(box, corner), 1.0f);
-        // In front of the eye the projection keeps the box's image inside its corners' hull;
-        // at or behind the eye plane it does not.
-        if (!(clip.w > 1e-6f)) {
-            return whole;
-        }
-        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-        low = glm::min(low, ndc);
-        high = glm::max(high, ndc);
-    }
-    // NDC to pixels, out to whole pixels and one more for rounding; clamped so that far-off
-    // corners cannot overflow an int.
-    auto toPixel = [](float ndc, int size, float direction) {
-        const float pixel = (std::clamp(ndc, -2.0f, 2.0f) * 0.5f + 0.5f) * float(size) + direction;
-        return direction < 0 ? int(std::floor(pixel)) : int(std::ceil(pixel));
-    };
-    PixelRect rect{toPixel(low.x, width, -1.0f), toPixel(low.y, height, -1.0f), toPixel(high.x, width, 1.0f),
-                   toPixel(high.y, height, 1.0f)};
-    rect.x0 = std::clamp(rect.x0, 0, width), rect.x1 = std::clamp(rect.x1, 0, width);
-    rect.y0 = std::clamp(rect.y0, 0, height), rect.y1 = std::clamp(rect.y1, 0, height);
-    return rect;
-}
 
 namespace {
-// Rows per strip of an MSAA draw: as many as settings.maxTargetBytes of multisampled colour
-// allows, but never more than 16 strips (each draws the whole mesh). Without MSAA the shading
-// pass draws into the full-size images, so strips would save nothing.
-int stripRowsFor(const RenderSettings& settings, int samples) {
-    const int h = settings.height;
-    if (settings.maxTargetBytes == 0) {
-        return h;
-    }
-    constexpr int kMaxStrips = 16;
-    const size_t bytesPerRow = size_t(settings.width) * size_t(samples) * 4 * sizeof(float);
-    return std::max(int(std::clamp<size_t>(settings.maxTargetBytes / bytesPerRow, 1, size_t(h))),
-                    (h + kMaxStrips - 1) / kMaxStrips);
-}
-
 template <typename T>
 void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
     for (int y = 0; y < rows / 2; ++y) {
@@ -310,53 +218,33 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     }
     RenderTargets& t = s.targets[size_t(slot)];
     const int w = settings.width, h = settings.height;
-    const int samples = std::clamp(settings.samples, 0, s.maxSamples);
-    const bool msaa = samples > 1;
-    // Without MSAA, single and specialised write display values in the shading pass; multi
-    // must sum its passes first, and MSAA must resolve first (tone mapping is not linear).
-    const bool displayInPass = !msaa && settings.passes != PassMode::Multi;
+    const FramePlan plan = planFrame(settings, scene.camera,
+                                     {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()}, s.maxSamples,
+                                     s.flatLightSlots);
     const std::vector<shader::PackedLight> packed = packEnabledLights(scene.lights);
     s.lights.upload(packed);
     s.lights.bind();
 
     // Everything that can throw (targets the GL cannot make, a shader that does not compile)
     // comes before the timer query starts, so a failed draw leaves no state behind.
-    const int stripRows = msaa ? stripRowsFor(settings, samples) : h;
     // Until this draw succeeds the slot has nothing to read back.
     t.drawn = false;
-    const bool keepLinear = settings.readHdr || (!msaa && !displayInPass);   // no MSAA, multi: the sum
-    t.prepare(w, h, stripRows, samples, keepLinear, displayInPass);
-    const GlImage* linear = keepLinear ? &t.linear : nullptr;
-    const GlProgram* displayPass = msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
-                                   : displayInPass ? nullptr
-                                                   : &s.display.get();
+    t.prepare(w, h, plan.stripRows, plan.samples, plan.keepLinear, plan.displayInPass);
+    const GlImage* linear = plan.keepLinear ? &t.linear : nullptr;
+    const GlProgram* displayPass = plan.msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
+                                   : plan.displayInPass ? nullptr
+                                                        : &s.display.get();
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
-        displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
-    const glm::mat4 transform = viewProjection(scene.camera, float(w) / float(h));
-    const PixelRect meshBox = screenBounds(transform, s.mesh.bounds(), w, h);
-    // With MSAA, samples only where the mesh can be: most of a frame is often background, and
-    // there a sample costs a store and a resolve for nothing.
-    const PixelRect whole{0, 0, w, h};
-    const PixelRect meshArea = msaa && settings.cropToMesh ? meshBox : whole;
-    // A box beyond the near plane holds the whole mesh, so the eye is outside it.
-    const HiddenFaces hidden = settings.cullHiddenFaces && beyondNearPlane(transform, s.mesh.bounds())
-                                   ? s.mesh.culling().hidden
-                                   : HiddenFaces::None;
-    // One convex part with its far side culled: no two faces share a sample, so the depth test
-    // decides nothing, and its clear and per-sample test are saved (llvmpipe, 4x MSAA: a
-    // 512x512 frame of the default sphere 17.5 ms against 13.5).
-    const bool depthTest = hidden == HiddenFaces::None || !s.mesh.culling().convex;
-    const size_t flatSlots = flatLightSlotsFor(settings.flatLights, s.flatLightSlots, meshBox, meshArea, stripRows,
-                                               s.mesh.triangleCount());
+        plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     const GlProgram& shading =
         settings.passes == PassMode::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
         : settings.passes == PassMode::Multi
             ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
             : s.shading.useSpecialised(model,
                                        settings.passes == PassMode::Specialised
-                                           ? specialiseFor(packed, scene.material, flatSlots)
-                                           : brdfFloorFor(packed.size(), flatSlots),
+                                           ? specialiseFor(packed, scene.material, plan.flatLights)
+                                           : brdfFloorFor(packed.size(), plan.flatLights),
                                        output);
     if (settings.passes == PassMode::Multi) {
         s.depthPrepass.get();
@@ -388,10 +276,10 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
 
     auto prepare = [&](const GlProgram& program) {
         glUniform1f(program.uniform("uSampleStamp"), stamp);
-        glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(transform));
+        glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
         setMaterialUniforms(program, scene.material);
-        if (displayInPass) {
+        if (plan.displayInPass) {
             glUniform1f(program.uniform("uExposure"), scene.display.exposure);
             glUniform1i(program.uniform("uTonemap"), exposureTonemap);
         }
@@ -405,7 +293,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glDisable(GL_DEPTH_TEST);
         displayPass->use();
         glActiveTexture(GL_TEXTURE0);
-        if (msaa) {
+        if (plan.msaa) {
             glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.samples.name);
             glUniform1i(displayPass->uniform("uSamples"), 0);
             glUniform1i(displayPass->uniform("uStripTop"), top);
@@ -422,21 +310,22 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glBindVertexArray(0);
         glDisable(GL_SCISSOR_TEST);
     };
-    if (meshArea != whole) {
+    if (plan.meshArea != PixelRect{0, 0, w, h}) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
         if (linear) {
             glClearBufferfv(GL_COLOR, 0, clearLinear);
         }
         glClearBufferfv(GL_COLOR, 1, clearDisplay);
     }
-    for (int top = 0; top < h; top += stripRows) {
-        const int rows = std::min(stripRows, h - top);
-        const PixelRect area{meshArea.x0, std::max(meshArea.y0, top), meshArea.x1, std::min(meshArea.y1, top + rows)};
+    for (int top = 0; top < h; top += plan.stripRows) {
+        const int rows = std::min(plan.stripRows, h - top);
+        const PixelRect area{plan.meshArea.x0, std::max(plan.meshArea.y0, top), plan.meshArea.x1,
+                             std::min(plan.meshArea.y1, top + rows)};
         if (area.empty()) {
             continue;
         }
         glBindFramebuffer(GL_FRAMEBUFFER, t.shadingFramebuffer);
-        if (msaa) {
+        if (plan.msaa) {
             if (t.sampleStamp.advance()) {
                 glClearBufferfv(GL_COLOR, 0, clearStamp);   // the whole strip: no scissor yet
             }
@@ -449,21 +338,21 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
         glDepthMask(GL_TRUE);
         glDepthFunc(GL_LESS);
-        if (!msaa && linear) {   // MSAA samples are stamped instead (RenderTargets::SampleStamp)
+        if (!plan.msaa && linear) {   // MSAA samples are stamped instead (RenderTargets::SampleStamp)
             glClearBufferfv(GL_COLOR, 0, clearLinear);
         }
-        if (displayInPass) {
+        if (plan.displayInPass) {
             glClearBufferfv(GL_COLOR, 1, clearDisplay);
         }
-        if (depthTest) {
+        if (plan.depthTest) {
             glEnable(GL_DEPTH_TEST);
             glClearBufferfv(GL_DEPTH, 0, &clearDepth);
         } else {
             glDisable(GL_DEPTH_TEST);
         }
-        if (hidden != HiddenFaces::None) {
+        if (plan.culled != HiddenFaces::None) {
             glEnable(GL_CULL_FACE);
-            glCullFace(hidden == HiddenFaces::Back ? GL_BACK : GL_FRONT);
+            glCullFace(plan.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
         }
         drawPasses(s, settings.passes, shading, packed.size(), prepare);
         glDisable(GL_CULL_FACE);
@@ -483,7 +372,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
         throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
     }
     t.drawn = true;
-    t.hasLinear = keepLinear;
+    t.hasLinear = plan.keepLinear;
     return t.display.name;
 }
 

@@ -11,6 +11,7 @@
 #include "../mesh.h"
 #include "../scene.h"
 #include "../shading.h"
+#include "../view.h"
 
 namespace patina {
 
@@ -59,30 +60,6 @@ struct RenderOutput {
     HdrImage hdr;   // linear radiance, before exposure and tone map (MSAA resolved)
     LdrImage ldr;   // after the display transform, sRGB
 };
-
-glm::mat4 viewProjection(const Camera& camera, float aspect);
-
-// Pixels [x0, x1) x [y0, y1) of a w x h image, GL's bottom-up rows.
-struct PixelRect {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    bool empty() const { return x0 >= x1 || y0 >= y1; }
-    auto operator<=>(const PixelRect&) const = default;
-};
-// Every pixel that anything inside `box` can cover, seen through `transform`: the projected
-// corners' bounds, a pixel wider on each side; the whole image when a corner is not in front of
-// the eye (the projection of the box is then unbounded); empty for an empty box.
-PixelRect screenBounds(const glm::mat4& transform, const BoundingBox& box, int width, int height);
-
-// Whether every point of `box` lies beyond the near plane of `transform` (a perspective
-// view-projection): then the eye is outside it and the near plane cuts nothing inside open.
-bool beyondNearPlane(const glm::mat4& transform, const BoundingBox& box);
-
-// How many of `slots` lights a specialised draw takes as flat inputs under `mode`: with
-// WherePaying, all where flatLightsPay (shader_specialisation.h) says so for the pixels of
-// `meshBox` (what the mesh can cover) and the mesh's triangles drawn once per strip of
-// `stripRows` rows that meets `drawnArea` (the scissored area), otherwise none.
-size_t flatLightSlotsFor(RenderSettings::FlatLights mode, size_t slots, const PixelRect& meshBox,
-                         const PixelRect& drawnArea, int stripRows, size_t triangles);
 
 // Draws scenes with the shared shaders. Needs a current OpenGL 3.3 core context (a
 // HeadlessContext or the editor's window) for its whole life.
