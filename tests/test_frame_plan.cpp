@@ -5,6 +5,7 @@
 #include "hidden_faces.h"
 #include "mesh.h"
 #include "scene.h"
+#include "test_support.h"
 
 namespace patina {
 namespace {
@@ -12,11 +13,7 @@ namespace {
 using FlatLights = RenderSettings::FlatLights;
 
 RenderSettings settingsOf(PassMode passes, int samples) {
-    RenderSettings settings;
-    settings.width = 320;
-    settings.height = 200;
-    settings.passes = passes;
-    settings.samples = samples;
+    RenderSettings settings = test::renderSettings(320, 200, passes, samples);
     settings.readHdr = false;
     return settings;
 }

@@ -20,12 +20,8 @@ using FlatLights = RenderSettings::FlatLights;
 
 RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160, int samples = 4,
                          FlatLights flatLights = FlatLights::WherePaying) {
-    RenderSettings settings;
+    RenderSettings settings = test::renderSettings(size, size, passes, samples);
     settings.flatLights = flatLights;
-    settings.width = size;
-    settings.height = size;
-    settings.passes = passes;
-    settings.samples = samples;
     return renderer.render(scene, settings);
 }
 
@@ -576,11 +572,7 @@ TEST(Renderer, CullingHiddenFacesGivesTheSameImage) {
         scene.camera.position = c.eye;
         for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
             for (int samples : {4, 1}) {
-                RenderSettings settings;
-                settings.width = 150;
-                settings.height = 110;
-                settings.passes = passes;
-                settings.samples = samples;
+                RenderSettings settings = test::renderSettings(150, 110, passes, samples);
                 settings.cullHiddenFaces = false;
                 const RenderOutput every = renderer.render(scene, settings);
                 settings.cullHiddenFaces = true;

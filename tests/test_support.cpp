@@ -44,6 +44,15 @@ std::vector<reference::Light> toReference(const std::vector<Light>& lights) {
     return result;
 }
 
+RenderSettings renderSettings(int width, int height, PassMode passes, int samples) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.passes = passes;
+    settings.samples = samples;
+    return settings;
+}
+
 glm::vec3 randomUnitVector(std::mt19937& rng) {
     std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
     for (;;) {

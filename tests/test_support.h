@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/headless_context.h"
+#include "gl/renderer.h"
 #include "probe.h"
 #include "reference_shading.h"
 #include "scene.h"
@@ -16,6 +17,9 @@ namespace patina::test {
 
 // Created on first use and kept for the whole test binary (contexts are slow to make).
 HeadlessContext& glContext();
+
+// Default settings but for the image size, path and MSAA samples.
+RenderSettings renderSettings(int width, int height, PassMode passes, int samples);
 
 reference::Vec3 toReference(glm::vec3 v);
 reference::Material toReference(const Material& material);
