@@ -1,4 +1,6 @@
 // What a draw decides before it touches the GL (engine/gl/frame_plan.h).
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "gl/frame_plan.h"
@@ -18,7 +20,7 @@ RenderSettings settingsOf(PassMode passes, int samples) {
     return settings;
 }
 
-// The default sphere as MeshBuffers describes it: closed, wound outward, one convex part.
+// A UV sphere as MeshBuffers describes it: closed, wound outward, one convex part.
 MeshFacts sphereFacts() {
     const Mesh sphere = makeUvSphere(16, 32);
     return {boundingBox(sphere), faceCulling(sphere), sphere.indices.size() / 3};
@@ -74,6 +76,7 @@ TEST(FramePlan, MsaaResolvesAndShadesOnlyTheMeshsBox) {
     EXPECT_TRUE(plan.msaa);
     EXPECT_FALSE(plan.displayInPass);
     EXPECT_FALSE(plan.keepLinear);
+    EXPECT_EQ(plan.transform, viewProjection(camera, 320.0f / 200.0f));
     EXPECT_EQ(plan.meshBox, screenBounds(plan.transform, sphereFacts().bounds, 320, 200));
     EXPECT_EQ(plan.meshArea, plan.meshBox);
     EXPECT_LT(plan.meshArea.x1 - plan.meshArea.x0, 320) << "the framed sphere leaves background beside it";
@@ -88,9 +91,21 @@ TEST(FramePlan, MsaaResolvesAndShadesOnlyTheMeshsBox) {
     EXPECT_EQ(planFrame(capped, camera, sphereFacts(), kMaxSamples, kSlots).stripRows, 50);
     EXPECT_EQ(stripRowsFor(capped, 4), 50);
 
-    for (int samples : {0, 1}) {
+    RenderSettings hdr = settingsOf(PassMode::Single, 4);
+    hdr.readHdr = true;
+    EXPECT_TRUE(planFrame(hdr, camera, sphereFacts(), kMaxSamples, kSlots).keepLinear);
+
+    RenderSettings single = settingsOf(PassMode::Single, 1);
+    single.maxTargetBytes = size_t(320) * 16 * 50;   // 50 rows of one float RGBA sample
+    ASSERT_EQ(stripRowsFor(single, 1), 50);
+    EXPECT_EQ(planFrame(single, camera, sphereFacts(), kMaxSamples, kSlots).stripRows, 200)
+        << "without MSAA the full-size images are drawn whole";
+
+    for (int samples : {-3, 0, 1}) {
         const RenderSettings settings = settingsOf(PassMode::Single, samples);
-        EXPECT_FALSE(planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots).msaa);
+        const FramePlan none = planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots);
+        EXPECT_FALSE(none.msaa);
+        EXPECT_EQ(none.samples, std::max(samples, 0));
     }
     EXPECT_FALSE(planFrame(settingsOf(PassMode::Single, 4), camera, sphereFacts(), 1, kSlots).msaa)
         << "a GL without multisampling";
@@ -148,6 +163,22 @@ TEST(FramePlan, FlatLightsWeighThisPlansBoxAndStrips) {
     MeshFacts dense = sphereFacts();
     dense.triangles = 10'000'000;   // far under a pixel a triangle
     EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLights, 0u);
+
+    // In strips of 20 rows the mesh is drawn once per strip that meets the area drawn: all 10
+    // uncropped, fewer cropped to a distant sphere's box. With triangles just too many for 4
+    // pixels each over 10 draws, the cropped plan takes flat lights and the uncropped does not.
+    Camera distant = camera;
+    distant.position = camera.target + 2.0f * (camera.position - camera.target);
+    RenderSettings strips = settingsOf(PassMode::Specialised, 4);
+    strips.maxTargetBytes = size_t(320) * 4 * 16 * 20;
+    const PixelRect box = screenBounds(viewProjection(distant, 1.6f), sphereFacts().bounds, 320, 200);
+    ASSERT_LT(box.y1 - box.y0, 120) << "the box meets at most 7 of the 10 strips";
+    MeshFacts many = sphereFacts();
+    many.triangles = size_t(double(box.x1 - box.x0) * double(box.y1 - box.y0) / 40.0) + 1;
+    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLights, kSlots);
+    strips.cropToMesh = false;
+    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLights, 0u);
+
     settings.flatLights = FlatLights::Always;
     EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLights, kSlots);
     settings.flatLights = FlatLights::Never;

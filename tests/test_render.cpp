@@ -11,6 +11,7 @@
 #include "gl/render_targets.h"
 #include "gl/renderer.h"
 #include "shading.h"
+#include "view.h"
 #include "test_support.h"
 
 namespace patina {

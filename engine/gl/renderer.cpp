@@ -13,6 +13,7 @@
 
 #include "../enum_names.h"
 #include "../light_packing.h"
+#include "../view.h"
 #include "frame_plan.h"
 #include "mesh_buffers.h"
 #include "program.h"

@@ -1,17 +1,13 @@
 #pragma once
-#include <compare>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
 
-#include <glm/mat4x4.hpp>
-
 #include "../image.h"
 #include "../mesh.h"
 #include "../scene.h"
 #include "../shading.h"
-#include "../view.h"
 
 namespace patina {
 
