@@ -46,7 +46,6 @@ std::optional<PassMode> passModeFromName(std::string_view name) {
     return enumFromName(name, all, passModeName);
 }
 
-
 namespace {
 template <typename T>
 void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
