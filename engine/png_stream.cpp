@@ -85,6 +85,8 @@ std::vector<Band> deflateBands(const LdrImage& image, int rowsPerBand, int first
 // 1950, 1951). It costs a few bytes per band. Bands are cut at fixed rows, so the file's
 // bytes do not depend on the threads or on when rows were handed on.
 struct PngStream::State {
+    explicit State(const LdrImage& shown) : image(shown) {}
+
     const LdrImage& image;
     unsigned threads = 1;
     int rowsPerBand = 1;   // about 1 MiB raw: a thread's start is a small part of a band
@@ -111,7 +113,7 @@ struct PngStream::State {
     }
 };
 
-PngStream::PngStream(const LdrImage& image, unsigned threads) : state_(new State{image}) {
+PngStream::PngStream(const LdrImage& image, unsigned threads) : state_(new State(image)) {
     const size_t stride = size_t(std::max(image.width, 0)) * 4;
     if (image.width <= 0 || image.height <= 0 || image.width > 0x7FFFFFFF / 4 ||
         image.rgba.size() != stride * size_t(image.height)) {
