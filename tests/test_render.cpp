@@ -290,10 +290,7 @@ TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
     for (int samples : {1, 4}) {
         LdrImage multi;
         for (PassMode passes : {PassMode::Multi, PassMode::Single, PassMode::Specialised}) {
-            RenderSettings settings;
-            settings.width = settings.height = 96;
-            settings.passes = passes;
-            settings.samples = samples;
+            RenderSettings settings = test::renderSettings(96, 96, passes, samples);
             const RenderOutput kept = renderer.render(scene, settings);
             settings.readHdr = false;
             const RenderOutput shown = renderer.render(scene, settings);
@@ -317,10 +314,7 @@ TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
     const Scene scene = toneMappedScene(0.4f, Tonemap::Aces);
     for (int samples : {1, 4}) {
         for (PassMode passes : {PassMode::Multi, PassMode::Single}) {
-            RenderSettings settings;
-            settings.width = settings.height = 64;
-            settings.passes = passes;
-            settings.samples = samples;
+            RenderSettings settings = test::renderSettings(64, 64, passes, samples);
             const GLuint texture = renderer.draw(scene, settings);
             const std::string what = std::string(passModeName(passes)) + ", " + std::to_string(samples) + " samples";
             GLint format = 0;
