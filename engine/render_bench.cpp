@@ -35,22 +35,27 @@ struct Samples {
     FrameTiming medians() const { return {median(gpu), median(cpu), median(frame), median(readBack)}; }
 };
 
+// A renderer with two targets. Multi draws into one of its own: without MSAA it keeps a linear
+// image to sum into and the others do not, so in one target every switch between them would
+// allocate it again (and touch its pages first), 8-20 ms a multi frame that a user drawing
+// multi never pays.
+struct BenchRenderer : Renderer {
+    RenderTarget multi, others;
+};
+
 // One frame, drawn after the pipeline is idle so neither its timer query nor its wall time
-// includes earlier work, then read back as `patina render` does (timed apart). Multi draws
-// into a slot of its own: without MSAA it keeps a linear image to sum into and the others do
-// not, so in one slot every switch between them would allocate it again (and touch its pages
-// first), 8-20 ms a multi frame that a user drawing multi never pays.
-void timeFrame(Renderer& renderer, const Scene& scene, const RenderSettings& settings, Samples* into) {
+// includes earlier work, then read back as `patina render` does (timed apart).
+void timeFrame(BenchRenderer& renderer, const Scene& scene, const RenderSettings& settings, Samples* into) {
     glFinish();
     renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed
     const Clock::time_point start = Clock::now();
     const double cpuStart = threadCpuMilliseconds();
-    const int slot = settings.passes == PassMode::Multi ? 1 : 0;
-    renderer.draw(scene, settings, slot);
+    RenderTarget& target = settings.passes == PassMode::Multi ? renderer.multi : renderer.others;
+    renderer.draw(scene, settings, target);
     const double cpu = threadCpuMilliseconds() - cpuStart;
     glFinish();
     const Clock::time_point drawn = Clock::now();
-    renderer.readBack(slot, false);
+    renderer.readBack(target, false);
     const double readBack = std::chrono::duration<double, std::milli>(Clock::now() - drawn).count();
     if (into) {
         into->gpu.push_back(renderer.lastGpuMilliseconds());
@@ -70,7 +75,7 @@ void interleaved(int runs, Each each) {
 }
 
 // Frames of `scene` under each of `variants`, rounds interleaved: the medians, in order.
-std::vector<FrameTiming> interleavedMedians(Renderer& renderer, const Scene& scene,
+std::vector<FrameTiming> interleavedMedians(BenchRenderer& renderer, const Scene& scene,
                                             const std::vector<RenderSettings>& variants, int runs) {
     std::vector<Samples> samples(variants.size());
     interleaved(runs, [&](bool keep) {
@@ -116,7 +121,7 @@ constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
 // single and specialised again with points whose coefficients they must read. The floor's
 // scene is the lights as directions, the same for all. The floor is also measured at as many
 // lights as specialised takes as flat inputs (renderBenchTargets takes its slope up to there).
-void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                         RenderBenchResult& result) {
     std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
     const int slots = int(result.flatLightSlots);
@@ -153,7 +158,7 @@ void measureLightCounts(Renderer& renderer, const RenderBenchOptions& options, c
 }
 
 // `mesh`: the default scene's, which the renderer holds on entry and gets back on return.
-void measureScale(Renderer& renderer, const Mesh& mesh, const RenderBenchOptions& options,
+void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOptions& options,
                   const RenderSettings& settings, RenderBenchResult& result) {
     const Scene scene = defaultScene();
     const std::vector<std::pair<int, int>> sizes =
@@ -199,7 +204,7 @@ void measureScale(Renderer& renderer, const Mesh& mesh, const RenderBenchOptions
 
 // Single and multi on the default scene with its sphere's hidden faces culled and drawn
 // (RenderSettings::cullHiddenFaces), interleaved: what culling saves.
-void measureCulling(Renderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                     RenderBenchResult& result) {
     const Scene scene = defaultScene();
     const std::tuple<const char*, PassMode, bool> kinds[] = {{"single", PassMode::Single, true},
@@ -292,7 +297,7 @@ Scene brdfFloorScene(const Scene& scene) {
 RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     RenderBenchResult result;
     result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    Renderer renderer;
+    BenchRenderer renderer;
     result.flatLightSlots = renderer.flatLightSlots();
     RenderSettings settings;   // the defaults a render gets, at the bench's size
     settings.width = result.width = options.quick ? 480 : options.width;

@@ -1,5 +1,6 @@
 // The real editor window under Xvfb, driven by xdotool: a slider drag shows in F12 screenshots
 // and in the --stats log, and an idle editor sleeps. Needs xvfb and xdotool (scripts/setup.sh installs both).
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -174,6 +175,50 @@ protected:
         return files;
     }
 
+    // Moves to a named widget (its centre, or `fromLeft` pixels in) and clicks it; false when the
+    // layout has no such name.
+    bool clickOn(const std::string& name, int fromLeft = -1) {
+        const std::vector<float> r = rect(name);
+        if (r.size() != 4) {
+            return false;
+        }
+        const int x = fromLeft < 0 ? int((r[0] + r[2]) / 2) : int(r[0]) + fromLeft;
+        xdotool("mousemove --window " + window_ + " " + std::to_string(x) + " " +
+                std::to_string(int((r[1] + r[3]) / 2)) + " click 1");
+        std::this_thread::sleep_for(300ms);
+        return true;
+    }
+
+    // Clicks into a number field (its text box is on the left, then - and + and the label) and
+    // replaces its text with `value` (applied as it is typed).
+    void typeInto(const std::string& name, const std::string& value) {
+        ASSERT_TRUE(waitFor([&] { return rect(name).size() == 4; }, 10s)) << name << " is not shown";
+        ASSERT_TRUE(clickOn(name, 20));
+        xdotool("key --window " + window_ + " ctrl+a");
+        xdotool("type --window " + window_ + " " + value);
+        std::this_thread::sleep_for(300ms);
+    }
+
+    // F12 with the mouse over the viewport; waits for the file and then checks that the
+    // editor is still alive a moment later (the crash came in the frame after the PNG).
+    fs::path screenshotOfViewport() {
+        const size_t before = screenshots().size();
+        const std::vector<float> view = rect("viewport");
+        EXPECT_EQ(view.size(), 4u);
+        if (view.size() != 4) {
+            return {};
+        }
+        xdotool("mousemove --window " + window_ + " " + std::to_string(int((view[0] + view[2]) / 2)) + " " +
+                std::to_string(int((view[1] + view[3]) / 2)) + " key --window " + window_ + " F12");
+        EXPECT_TRUE(waitFor([&] { return screenshots().size() > before; }, 20s)) << "F12 wrote no screenshot";
+        std::this_thread::sleep_for(1500ms);
+        EXPECT_TRUE(editor_->running()) << "the editor ended after F12";
+        std::vector<fs::path> files = screenshots();
+        std::sort(files.begin(), files.end(),
+                  [](const fs::path& a, const fs::path& b) { return fs::last_write_time(a) < fs::last_write_time(b); });
+        return files.empty() ? fs::path() : files.back();
+    }
+
     void screenshot(size_t expected) {
         xdotool("mousemove --window " + window_ + " 640 400 key --window " + window_ + " F12");
         ASSERT_TRUE(waitFor([&] { return screenshots().size() >= expected; }, 20s)) << "F12 wrote no screenshot";
@@ -223,6 +268,35 @@ TEST_F(EditorWindow, DraggingASliderShowsInTheScreenshot) {
     ASSERT_NE(drag, std::string::npos) << log;
     EXPECT_GE(std::atoi(log.c_str() + drag + 13), 3) << "frames during the drag: " << log;
     EXPECT_NE(log.find("MB)", drag), std::string::npos) << log;
+}
+
+// The editor issue's two crash routes, as a user takes them. Both used to write the PNG and
+// then end the editor on ImGui's "Mismatched Begin/End" assertion.
+// (a) Set A, Side by side, F12 over the viewport.
+TEST_F(EditorWindow, F12InSideBySideKeepsTheEditorRunning) {
+    ASSERT_TRUE(clickOn("Set A"));
+    ASSERT_TRUE(clickOn("Side by side"));
+    const fs::path sideBySide = screenshotOfViewport();
+    ASSERT_FALSE(sideBySide.empty());
+    const std::vector<float> view = rect("viewport");
+    const LdrImage both = decodePng(readFileBytes(sideBySide));
+    EXPECT_GE(both.width, int(view[2] - view[0]) - 2) << "both halves, not B alone";
+    // Still drawing frames: one more screenshot goes through.
+    EXPECT_FALSE(screenshotOfViewport().empty());
+}
+
+// (b) View: screenshot 800 x 600, then F12 in the Single view.
+TEST_F(EditorWindow, F12AtAFixedSizeKeepsTheEditorRunning) {
+    ASSERT_TRUE(clickOn("menu:View"));
+    typeInto("Screenshot width", "800");
+    typeInto("Screenshot height", "600");
+    ASSERT_TRUE(clickOn("viewport"));   // closes the menu (Escape would undo the field being typed in)
+    const fs::path fixed = screenshotOfViewport();
+    ASSERT_FALSE(fixed.empty());
+    const LdrImage image = decodePng(readFileBytes(fixed));
+    EXPECT_EQ(image.width, 800);
+    EXPECT_EQ(image.height, 600);
+    EXPECT_FALSE(screenshotOfViewport().empty());
 }
 
 TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {

@@ -159,7 +159,7 @@ TEST(Renderer, GpuTimeCoversTheDraw) {
         glFinish();
         renderer.lastGpuMilliseconds();   // collect the last draw's queries so this one is timed
         const auto start = std::chrono::steady_clock::now();
-        renderer.draw(scene, settings, 0);
+        renderer.draw(scene, settings);
         glFinish();
         const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const double gpu = renderer.lastGpuMilliseconds();
@@ -266,10 +266,46 @@ TEST(RenderTargets, NewSamplesStartTheStampsAgain) {
     EXPECT_EQ(targets.sampleStamp.value, 0.0f);
 }
 
+// Each caller's target is its own: drawing into one, at another size, leaves the other's
+// texture and pixels as they were (the editor's viewport keeps showing its texture while a
+// screenshot renders).
+TEST(Renderer, DrawingIntoOneTargetLeavesAnotherAlone) {
+    test::glContext();
+    Renderer renderer;
+    RenderTarget shown, other;
+    EXPECT_EQ(shown.displayTexture(), 0u) << "nothing drawn yet";
+    const RenderSettings small = test::renderSettings(48, 32, PassMode::Single, 4);
+    const unsigned texture = renderer.draw(defaultScene(), small, shown);
+    EXPECT_EQ(texture, shown.displayTexture());
+    const RenderOutput before = renderer.readBack(shown, false);
+    Scene dark = defaultScene();
+    dark.material.baseColor = glm::vec3(0.0f);
+    renderer.draw(dark, test::renderSettings(80, 60, PassMode::Multi, 1), other);
+    renderer.render(dark, test::renderSettings(100, 20, PassMode::Single, 1));
+    EXPECT_TRUE(glIsTexture(texture));
+    EXPECT_EQ(shown.displayTexture(), texture);
+    const RenderOutput after = renderer.readBack(shown, false);
+    EXPECT_EQ(after.ldr.width, 48);
+    EXPECT_EQ(after.ldr.rgba, before.ldr.rgba);
+    EXPECT_EQ(renderer.readBack(other, false).ldr.width, 80);
+}
+
+// A GL error someone else left on the queue (the UI drawing a deleted texture, say) is not
+// reported as the next draw's.
+TEST(Renderer, AnErrorLeftByOtherCodeIsNotTheDrawsError) {
+    test::glContext();
+    Renderer renderer;
+    glBindTexture(GL_TEXTURE_2D, 987654);   // never generated: GL_INVALID_OPERATION in a core context
+    ASSERT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION)) << "the error this test leaves behind";
+    glBindTexture(GL_TEXTURE_2D, 987654);
+    EXPECT_NO_THROW(renderer.render(defaultScene(), test::renderSettings(16, 16, PassMode::Single, 1)));
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
     test::glContext();
     Renderer renderer;
-    EXPECT_TRUE(renderer.readBack(0).ldr.rgba.empty()) << "a slot never drawn reads back empty";
+    EXPECT_TRUE(renderer.readBack().ldr.rgba.empty()) << "a target never drawn reads back empty";
     RenderSettings settings;
     settings.width = settings.height = 32;
     settings.readHdr = false;
@@ -277,7 +313,7 @@ TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
     EXPECT_TRUE(output.hdr.rgb.empty());
     EXPECT_EQ(output.ldr.rgba.size(), 32u * 32u * 4u);
     // The draw kept no linear image, so there is none to read: a clear error, not garbage.
-    EXPECT_THROW(renderer.readBack(0, true), std::logic_error);
+    EXPECT_THROW(renderer.readBack(true), std::logic_error);
 }
 
 // Keeping the linear image or not changes nothing shown, with MSAA or without, on every path;

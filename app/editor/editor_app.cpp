@@ -12,6 +12,7 @@
 
 #include "editor_settings.h"
 #include "frame_stats.h"
+#include "panel_guard.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -112,10 +113,13 @@ int runEditor(const EditorOptions& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
+            // Each panel catches its own errors (drawGuarded); this is the last resort for
+            // anything between them, with ImGui's stacks closed so the frame still ends cleanly.
             try {
                 drawEditorFrame(state, services);
             } catch (const std::exception& error) {
-                state.error = error.what();   // e.g. a render target the GL cannot make
+                recoverFrame();
+                state.error = error.what();
             }
             ImGui::Render();
             int width = 0, height = 0;

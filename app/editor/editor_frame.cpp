@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include "panel_guard.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -49,7 +50,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         services.provideMesh(state.scene.meshFile, *state.importedMesh);
         state.importedMesh.reset();
     }
-    drawMenuBar(state, services);
+    drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();
     const float height = std::max(display.y - top, 100.0f);
@@ -60,15 +61,17 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     const float centreWidth = std::max(display.x - layout.leftWidth - layout.rightWidth, 100.0f);
 
     if (beginPanel("Material", ImVec2(0, top), ImVec2(layout.leftWidth, height), true, &layout.leftWidth)) {
-        drawMaterialPanel(state);
-        ImGui::Separator();
-        ImGui::TextDisabled("Presets");
-        drawPresetsPanel(state, services);
+        drawGuarded(state, "The material panel", [&] {
+            drawMaterialPanel(state);
+            ImGui::Separator();
+            ImGui::TextDisabled("Presets");
+            drawPresetsPanel(state, services);
+        });
     }
     ImGui::End();
     if (beginPanel("Lights", ImVec2(display.x - layout.rightWidth, top), ImVec2(layout.rightWidth, height), true,
                    &layout.rightWidth)) {
-        drawLightsPanel(state);
+        drawGuarded(state, "The lights panel", [&] { drawLightsPanel(state); });
     }
     ImGui::End();
     const float viewportHeight = std::max(height - layout.lobeHeight, 80.0f);
@@ -77,29 +80,31 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
     if (ImGui::Begin("Viewport", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar |
                                               ImGuiWindowFlags_NoScrollWithMouse)) {
-        drawViewportPanel(state, services);
+        drawGuarded(state, "The viewport", [&] { drawViewportPanel(state, services); });
     }
     ImGui::End();
     ImGui::PopStyleVar();
     if (beginPanel("Lobe", ImVec2(layout.leftWidth, top + viewportHeight), ImVec2(centreWidth, layout.lobeHeight),
                    false, &layout.lobeHeight)) {
-        if (ImGui::BeginTabBar("bottom")) {
-            if (ImGui::BeginTabItem("Lobe")) {
-                drawLobePanel(state);
-                ImGui::EndTabItem();
+        drawGuarded(state, "The lobe panel", [&] {
+            if (ImGui::BeginTabBar("bottom")) {
+                if (ImGui::BeginTabItem("Lobe")) {
+                    drawLobePanel(state);
+                    ImGui::EndTabItem();
+                }
+                if (ImGui::BeginTabItem("Accuracy")) {
+                    drawAccuracyPanel(state, services);
+                    ImGui::EndTabItem();
+                }
+                ImGui::EndTabBar();
             }
-            if (ImGui::BeginTabItem("Accuracy")) {
-                drawAccuracyPanel(state, services);
-                ImGui::EndTabItem();
-            }
-            ImGui::EndTabBar();
-        }
+        });
     }
     ImGui::End();
 
     drawError(state, ImVec2(layout.leftWidth + 8.0f, top + 64.0f), centreWidth - 16.0f);
-    drawDialogs(state, services);
-    handleShortcuts(state, services);
+    drawGuarded(state, "A dialog", [&] { drawDialogs(state, services); });
+    drawGuarded(state, "A shortcut", [&] { handleShortcuts(state, services); });
     // Whatever the widgets changed becomes one undo step once none of them is active.
     if (!ImGui::IsAnyItemActive()) {
         commitEdits(state);

@@ -1,6 +1,8 @@
 #include "editor_services.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 
 #include "compositing.h"
@@ -47,16 +49,17 @@ void EditorServices::replaceMesh(const Mesh& mesh, MeshKind kind, const std::str
     renderer_->setMesh(mesh);
     mesh_ = kind;
     meshFile_ = meshFile;
-    for (auto& slot : slots_) {
-        slot.reset();
+    for (ViewImage& image : views_) {
+        image.drawn.reset();
     }
 }
 
 unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, PassMode passes,
-                                         int slot, int samples) {
+                                         Shown shown, int samples) {
     useMesh(scene);
-    SlotKey key{scene, width, height, passes, samples};
-    if (slots_[slot] != key) {
+    ViewImage& image = view(shown);
+    ViewKey key{scene, width, height, passes, samples};
+    if (image.drawn != key) {
         RenderSettings settings;
         settings.width = width;
         settings.height = height;
@@ -64,13 +67,14 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
         settings.samples = samples;
         settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
-        slotTextures_[slot] = renderer_->draw(scene, settings, slot);
+        image.drawn.reset();   // until the draw succeeds
+        renderer_->draw(scene, settings, image.target);
         lastRenderMilliseconds_ =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        slots_[slot] = std::move(key);
+        image.drawn = std::move(key);
     }
     lastGpuMilliseconds_ = renderer_->lastGpuMilliseconds();
-    return slotTextures_[slot];
+    return image.target.displayTexture();
 }
 
 RenderOutput EditorServices::renderImage(const Scene& scene, int width, int height, PassMode passes) {
@@ -80,9 +84,7 @@ RenderOutput EditorServices::renderImage(const Scene& scene, int width, int heig
     settings.height = height;
     settings.passes = passes;
     settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
-    // Slot 0 is the viewport's: it must be drawn again afterwards.
-    slots_[0].reset();
-    return renderer_->render(scene, settings);
+    return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
 }
 
 const Texture* EditorServices::thumbnail(const std::filesystem::path& material, const Scene& scene) {
@@ -130,12 +132,42 @@ const Texture* EditorServices::benchChart(const std::filesystem::path& png) {
     return benchChart_.texture.get();
 }
 
+LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {
+    const LdrImage a = renderImage(withMaterial(state, *state.compareA), halfWidth, height, state.passes).ldr;
+    const LdrImage b = renderImage(renderedScene(state), halfWidth, height, state.passes).ldr;
+    return sideBySide(a, b, materialCaption(*state.compareA, halfWidth),
+                      materialCaption(state.scene.material, halfWidth));
+}
+
+LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
+    if (!state.compareA || state.compareView == CompareView::Single) {
+        return renderImage(renderedScene(state), width, height, state.passes).ldr;
+    }
+    if (state.compareView == CompareView::SideBySide) {
+        return comparisonImage(state, std::max(width / 2, 1), height);
+    }
+    // Split: A's columns left of the divider over B's, the divider and the labels as drawn.
+    const LdrImage a = renderImage(withMaterial(state, *state.compareA), width, height, state.passes).ldr;
+    LdrImage shown = renderImage(renderedScene(state), width, height, state.passes).ldr;
+    const int split = std::clamp(int(std::lround(std::clamp(state.splitPosition, 0.0f, 1.0f) * float(width))), 0, width);
+    for (int y = 0; y < height; ++y) {
+        const size_t row = size_t(y) * size_t(width) * 4;
+        std::copy_n(a.rgba.begin() + std::ptrdiff_t(row), size_t(split) * 4, shown.rgba.begin() + std::ptrdiff_t(row));
+        for (int x = std::max(split - 1, 0); x < std::min(split + 1, width); ++x) {
+            std::fill_n(shown.rgba.begin() + std::ptrdiff_t(row + size_t(x) * 4), 3, uint8_t(255));
+        }
+    }
+    const int scale = captionScale(width);
+    drawText(shown, 8, 24, "A", scale, kCaptionColour);
+    drawText(shown, width - 8 - textWidth("B", scale), 24, "B", scale, kCaptionColour);
+    return shown;
+}
+
 std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& state, int width, int height) {
     try {
-        const Scene scene = renderedScene(state);
-        const RenderOutput image = renderImage(scene, width, height, state.passes);
-        const std::filesystem::path path = screenshotPath(state.screenshotFolder, scene.material.name);
-        writeFileAtomic(path, encodePngWithText(image.ldr, {{kSceneTextKeyword, sceneToJson(state.scene).dump()}}));
+        const LdrImage image = shownImage(state, width, height);
+        const std::filesystem::path path = screenshotPath(state.screenshotFolder, state.scene.material.name);
+        writeFileAtomic(path, encodePngWithText(image, {{kSceneTextKeyword, sceneToJson(state.scene).dump()}}));
         state.status = "Screenshot " + path.string();
         return path;
     } catch (const std::exception& error) {
@@ -152,10 +184,7 @@ std::optional<std::filesystem::path> EditorServices::exportComparison(EditorStat
     }
     try {
         const int width = std::max(viewportWidth / 2, 64), height = std::max(viewportHeight, 64);
-        const LdrImage a = renderImage(withMaterial(state, *state.compareA), width, height, state.passes).ldr;
-        const LdrImage b = renderImage(renderedScene(state), width, height, state.passes).ldr;
-        writeFileAtomic(path, encodePng(sideBySide(a, b, materialCaption(*state.compareA, width),
-                                                   materialCaption(state.scene.material, width))));
+        writeFileAtomic(path, encodePng(comparisonImage(state, width, height)));
         state.status = "Exported " + path.string();
         return path;
     } catch (const std::exception& error) {

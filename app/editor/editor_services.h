@@ -25,24 +25,28 @@ class EditorServices {
 public:
     EditorServices();
 
-    // The display texture of `scene` at `size` in `slot`, re-rendered only when the scene,
-    // size, pass mode or MSAA samples changed since that slot's last render. Returns the GL
-    // texture name.
-    unsigned viewportTexture(const Scene& scene, int width, int height, PassMode passes, int slot,
+    // What the viewport shows: the material being edited, or the comparison's A. Each has its
+    // own render target, and offscreen renders (screenshots, thumbnails, exports) another, so
+    // none of them replaces a texture the current UI frame already shows.
+    enum class Shown { Edited, A };
+    // The display texture of `scene` at `size` for `shown`, re-rendered only when the scene,
+    // size, pass mode or MSAA samples changed since its last render. Returns the GL texture.
+    unsigned viewportTexture(const Scene& scene, int width, int height, PassMode passes, Shown shown,
                              int samples = 4);
     double lastRenderMilliseconds() const { return lastRenderMilliseconds_; }
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
     int viewportWidth = 0, viewportHeight = 0;   // set by the viewport panel
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
 
-    // What the viewport shows in `slot`, read back (for tests and automation).
-    LdrImage viewportPixels(int slot) const { return renderer_->readBack(slot, false).ldr; }
+    // What the viewport shows for `shown`, read back (for tests and automation).
+    LdrImage viewportPixels(Shown shown) const { return renderer_->readBack(view(shown).target, false).ldr; }
 
     // The mesh the next draw of a scene with this meshFile uses (the editor imports it once,
     // in openFile, and hands it over here).
     void provideMesh(const std::string& meshFile, const Mesh& mesh);
 
-    // Renders `scene` at the given size and returns the image (for screenshots and exports).
+    // Renders `scene` at the given size offscreen and returns the image (for screenshots,
+    // thumbnails and exports); what the viewport shows is untouched.
     RenderOutput renderImage(const Scene& scene, int width, int height, PassMode passes);
 
     // Thumbnails of material files, rendered once per file modification time.
@@ -53,24 +57,32 @@ public:
     // The bench chart PNG as a texture, reloaded when the file changes; null when there is none.
     const Texture* benchChart(const std::filesystem::path& png);
 
-    // Screenshot of the current view with the scene embedded; returns the file written.
+    // What the viewport shows, at width x height: the edited material alone; or A and B side
+    // by side, each half as wide and captioned; or A left of the split and B right of it,
+    // with the divider and labels.
+    LdrImage shownImage(const EditorState& state, int width, int height);
+    // Screenshot of what the viewport shows (shownImage) with the scene embedded; returns the
+    // file written.
     std::optional<std::filesystem::path> screenshot(EditorState& state, int width, int height);
     // A and B side by side with captions; returns the file written.
     std::optional<std::filesystem::path> exportComparison(EditorState& state, const std::filesystem::path& path);
 
 private:
-    struct SlotKey {
+    struct ViewKey {
         Scene scene;
         int width = 0, height = 0;
         PassMode passes = PassMode::Single;
         int samples = 4;
-        bool operator==(const SlotKey&) const = default;
+        bool operator==(const ViewKey&) const = default;
+    };
+    struct ViewImage {
+        RenderTarget target;
+        std::optional<ViewKey> drawn;   // what the target holds
     };
     std::unique_ptr<Renderer> renderer_;
     MeshKind mesh_ = MeshKind::Sphere;
     std::string meshFile_;
-    std::optional<SlotKey> slots_[Renderer::kSlots];
-    unsigned slotTextures_[Renderer::kSlots] = {};
+    ViewImage views_[2];   // by Shown
     double lastRenderMilliseconds_ = 0.0, lastGpuMilliseconds_ = 0.0;
     struct Thumbnail {
         std::filesystem::file_time_type modified;
@@ -80,6 +92,10 @@ private:
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
     Thumbnail benchChart_;
 
+    // A and B, each halfWidth x height, side by side with their captions.
+    LdrImage comparisonImage(const EditorState& state, int halfWidth, int height);
+    ViewImage& view(Shown shown) { return views_[shown == Shown::A ? 1 : 0]; }
+    const ViewImage& view(Shown shown) const { return views_[shown == Shown::A ? 1 : 0]; }
     // The renderer's mesh for `scene` (a glTF arrives through provideMesh, read once).
     void useMesh(const Scene& scene);
     void replaceMesh(const Mesh& mesh, MeshKind kind, const std::string& meshFile);

@@ -110,12 +110,18 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         }
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
+    const bool viewMenu = ImGui::BeginMenu("View");
+    if (!viewMenu) {
+        recordItem("menu:View");   // while open, the last item is the menu's window
+    }
+    if (viewMenu) {
         ImGui::MenuItem("Frame mesh", "F");
         ImGui::SetNextItemWidth(90);
         ImGui::InputInt("Screenshot width (0: viewport)", &state.screenshotWidth);
+        recordItem("Screenshot width");
         ImGui::SetNextItemWidth(90);
         ImGui::InputInt("Screenshot height (0: viewport)", &state.screenshotHeight);
+        recordItem("Screenshot height");
         state.screenshotWidth = std::clamp(state.screenshotWidth, 0, 8192);
         state.screenshotHeight = std::clamp(state.screenshotHeight, 0, 8192);
         std::string folder = state.screenshotFolder.string();

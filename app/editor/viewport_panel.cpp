@@ -63,10 +63,13 @@ void drawToolbar(EditorState& state) {
     ImGui::BeginDisabled(!state.compareA);
     int view = int(state.compareView);
     ImGui::RadioButton("Single", &view, int(CompareView::Single));
+    recordItem("Single");
     ImGui::SameLine();
     ImGui::RadioButton("Split", &view, int(CompareView::Split));
+    recordItem("Split");
     ImGui::SameLine();
     ImGui::RadioButton("Side by side", &view, int(CompareView::SideBySide));
+    recordItem("Side by side");
     state.compareView = state.compareA ? CompareView(view) : CompareView::Single;
     ImGui::SameLine();
     if (ImGui::Button("Clear A")) {
@@ -185,15 +188,16 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (state.compareA && state.compareView == CompareView::SideBySide) {
         const int half = std::max(width / 2, 8);
         const ImVec2 halfSize(float(half), size.y);
-        image(services.viewportTexture(withMaterial(state, *state.compareA), half, height, state.passes, 1, samples), halfSize);
+        image(services.viewportTexture(withMaterial(state, *state.compareA), half, height, state.passes,
+                                            EditorServices::Shown::A, samples), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
-        image(services.viewportTexture(b, half, height, state.passes, 0, samples), halfSize);
+        image(services.viewportTexture(b, half, height, state.passes, EditorServices::Shown::Edited, samples), halfSize);
     } else {
-        image(services.viewportTexture(b, width, height, state.passes, 0, samples), size);
+        image(services.viewportTexture(b, width, height, state.passes, EditorServices::Shown::Edited, samples), size);
         if (state.compareA && state.compareView == CompareView::Split) {
             // A left of the divider, B right, one camera: A's image drawn over B's left part.
             const unsigned a = services.viewportTexture(withMaterial(state, *state.compareA), width, height,
-                                                        state.passes, 1, samples);
+                                                        state.passes, EditorServices::Shown::A, samples);
             const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
             ImGui::SetCursorScreenPos(origin);
             image(a, ImVec2(size.x * split, size.y), 0.0f, split);

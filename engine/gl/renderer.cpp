@@ -106,7 +106,6 @@ struct Renderer::State {
     LightBuffer lights;
     MeshBuffers mesh;
     GLuint emptyVertexArray = 0;
-    std::array<RenderTargets, kSlots> targets;
     GLuint timerQueries[2] = {0, 0};   // GL_TIMESTAMP before and after a draw
     bool timerPending = false;
     double gpuMilliseconds = -1.0;
@@ -114,6 +113,13 @@ struct Renderer::State {
     size_t flatLightSlots = 0;
     bool flushTimerStart = false;
 };
+
+RenderTarget::RenderTarget() : images_(std::make_unique<RenderTargets>()) {}
+RenderTarget::~RenderTarget() = default;
+
+unsigned RenderTarget::displayTexture() const {
+    return images_->drawn ? images_->display.name : 0;
+}
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
     State& s = *state_;
@@ -205,18 +211,19 @@ void Renderer::drawPasses(State& s, PassMode passes, const GlProgram& shading, s
     glDepthMask(GL_TRUE);
 }
 
-unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int slot) {
+unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, RenderTarget& target) {
     State& s = *state_;
+    // An error someone else left (the UI's own drawing, say) is not this draw's: take it off
+    // the queue so the check at the end reports only what this draw did.
+    while (glGetError() != GL_NO_ERROR) {
+    }
     if (settings.width < 1 || settings.height < 1 || settings.width > s.maxSize ||
         settings.height > s.maxSize) {
         throw std::invalid_argument("image size " + std::to_string(settings.width) + "x" +
                                     std::to_string(settings.height) + " is outside 1.." +
                                     std::to_string(s.maxSize));
     }
-    if (slot < 0 || slot >= kSlots) {
-        throw std::invalid_argument("render slot " + std::to_string(slot) + " does not exist");
-    }
-    RenderTargets& t = s.targets[size_t(slot)];
+    RenderTargets& t = *target.images_;
     const int w = settings.width, h = settings.height;
     const FramePlan plan = planFrame(settings, scene.camera,
                                      {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()}, s.maxSamples,
@@ -227,7 +234,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
 
     // Everything that can throw (targets the GL cannot make, a shader that does not compile)
     // comes before the timer query starts, so a failed draw leaves no state behind.
-    // Until this draw succeeds the slot has nothing to read back.
+    // Until this draw succeeds the target has nothing to read back.
     t.drawn = false;
     t.prepare(w, h, plan.stripRows, plan.samples, plan.keepLinear, plan.displayInPass);
     const GlImage* linear = plan.keepLinear ? &t.linear : nullptr;
@@ -376,11 +383,10 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, int 
     return t.display.name;
 }
 
-RenderOutput Renderer::readBack(int slot, bool hdr) const {
-    const RenderTargets& t = state_->targets.at(size_t(slot));
+RenderOutput Renderer::readBack(const RenderTarget& target, bool hdr) const {
+    const RenderTargets& t = *target.images_;
     if (hdr && t.drawn && !t.hasLinear) {
-        throw std::logic_error("render slot " + std::to_string(slot) +
-                               " was drawn without its linear image (RenderSettings::readHdr)");
+        throw std::logic_error("the render target was drawn without its linear image (RenderSettings::readHdr)");
     }
     RenderOutput output;
     if (!t.drawn) {
@@ -411,14 +417,14 @@ RenderOutput Renderer::readBack(int slot, bool hdr) const {
 double Renderer::timedDraw(const Scene& scene, const RenderSettings& settings) {
     glFinish();
     lastGpuMilliseconds();   // collect a pending query so this draw is timed
-    draw(scene, settings, 0);
+    draw(scene, settings);
     glFinish();
     return lastGpuMilliseconds();
 }
 
 RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
-    draw(scene, settings, 0);
-    return readBack(0, settings.readHdr);
+    draw(scene, settings);
+    return readBack(settings.readHdr);
 }
 
 }  // namespace patina

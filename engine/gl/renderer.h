@@ -12,6 +12,27 @@
 namespace patina {
 
 class GlProgram;
+struct RenderTargets;
+
+// The images a draw writes into, owned by whoever shows or reads them: the viewport, each side
+// of a comparison, a screenshot. Drawing into one never touches another's textures, so a
+// texture a UI frame already refers to stays valid while other images are rendered. Needs the
+// GL context of the renderer that draws into it for its whole life.
+class RenderTarget {
+public:
+    RenderTarget();
+    ~RenderTarget();
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+
+    // The last draw's display texture (GL_RGBA8, sRGB-encoded, GL's bottom-up rows); 0 before
+    // the first. Valid until this target is drawn again at another size.
+    unsigned displayTexture() const;
+
+private:
+    friend class Renderer;
+    std::unique_ptr<RenderTargets> images_;
+};
 
 // multi: one additive pass per enabled light after a depth pre-pass (the seed's design);
 // single: every light in one pass from the LightBlock uniform buffer;
@@ -34,7 +55,7 @@ struct RenderSettings {
     // 0: no limit. Strips trade memory for vertex work (the mesh is drawn once per strip), so
     // there are never more than 16: past that the strips grow beyond the budget.
     size_t maxTargetBytes = 0;
-    // Keep the linear image, for readBack(slot, true) (and render() reads it back). Without it
+    // Keep the linear image, for readBack(target, true) (and render() reads it back). Without it
     // no full-size linear image is written at all, which saves a pass's memory and bandwidth.
     bool readHdr = true;
     // With MSAA, shade and resolve only the pixels the mesh can cover (its bounding box on
@@ -66,34 +87,34 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Independent sets of targets, so the editor can keep A and B side by side.
-    static constexpr int kSlots = 2;
-
     void setMesh(const Mesh& mesh);
     // How many lights a specialised shader takes as flat inputs (shader_specialisation.h).
     size_t flatLightSlots() const;
-    // Renders into `slot` and returns its display texture (GL_RGBA8, sRGB-encoded, GL's
-    // bottom-up rows), valid until the slot is drawn again at another size.
+    // Renders into `target` and returns its display texture (RenderTarget::displayTexture).
     // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size].
-    unsigned draw(const Scene& scene, const RenderSettings& settings, int slot = 0);
-    // The last draw of `slot`, read back to the CPU with rows top to bottom (empty if never
+    unsigned draw(const Scene& scene, const RenderSettings& settings, RenderTarget& target);
+    // The same into the renderer's own target (for render(), benchmarks and tests).
+    unsigned draw(const Scene& scene, const RenderSettings& settings) { return draw(scene, settings, own_); }
+    // The last draw into `target`, read back to the CPU with rows top to bottom (empty if never
     // drawn); without `hdr`, RenderOutput::hdr stays empty. Throws std::logic_error for `hdr`
     // when the draw did not keep it (RenderSettings::readHdr).
-    RenderOutput readBack(int slot = 0, bool hdr = true) const;
+    RenderOutput readBack(const RenderTarget& target, bool hdr = true) const;
+    RenderOutput readBack(bool hdr = true) const { return readBack(own_, hdr); }
     // GPU time of the most recent draw whose timer queries have completed (two GL_TIMESTAMPs,
     // read without waiting), in milliseconds; negative before the first. On llvmpipe, where
     // the rasteriser is the "GPU", it runs from the start of the draw's binning to the end of
     // its rasterisation, close to the draw's wall time.
     double lastGpuMilliseconds();
-    // draw into slot 0 and wait for it: the GPU time of that draw in milliseconds (for
+    // draw into the renderer's own target and wait for it: the GPU time of that draw in milliseconds (for
     // benchmarks; it stalls the pipeline).
     double timedDraw(const Scene& scene, const RenderSettings& settings);
-    // draw + readBack of slot 0.
+    // draw + readBack of the renderer's own target.
     RenderOutput render(const Scene& scene, const RenderSettings& settings);
 
 private:
     struct State;
     std::unique_ptr<State> state_;
+    RenderTarget own_;
     using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
     // The passes of one strip with `shading` (compiled for `passes`) and `lights` lights.
     static void drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
