@@ -4,14 +4,14 @@
 #include <iostream>
 #include <memory>
 
-#include "bench.h"
+#include "bench/bench.h"
 #include "cli.h"
-#include "furnace.h"
+#include "accuracy/furnace.h"
 #include "gl/headless_context.h"
-#include "image.h"
-#include "input_error.h"
+#include "image/image.h"
+#include "io/input_error.h"
 #include "inputs.h"
-#include "stability.h"
+#include "accuracy/stability.h"
 
 namespace patina::cli {
 

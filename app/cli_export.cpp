@@ -1,9 +1,9 @@
 #include <memory>
 
 #include "cli.h"
-#include "gltf_export.h"
-#include "gltf_import.h"
-#include "input_error.h"
+#include "gltf/export.h"
+#include "gltf/import.h"
+#include "io/input_error.h"
 #include "inputs.h"
 
 namespace patina::cli {

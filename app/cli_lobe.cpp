@@ -2,7 +2,7 @@
 
 #include "cli.h"
 #include "inputs.h"
-#include "lobe.h"
+#include "shading/lobe.h"
 
 namespace patina::cli {
 

@@ -4,7 +4,8 @@
 #include "gl/gpu_probe.h"
 #include "gl/headless_context.h"
 #include "inputs.h"
-#include "probe.h"
+#include "scene/probe.h"
+#include "io/probe_csv.h"
 
 namespace patina::cli {
 

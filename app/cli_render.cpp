@@ -3,8 +3,9 @@
 #include "cli.h"
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
-#include "image.h"
+#include "image/image.h"
 #include "inputs.h"
+#include "gltf/scene_mesh.h"
 
 namespace patina::cli {
 

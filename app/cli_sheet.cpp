@@ -4,11 +4,11 @@
 #include <stdexcept>
 
 #include "cli.h"
-#include "compositing.h"
-#include "input_error.h"
+#include "image/compositing.h"
+#include "io/input_error.h"
 #include "inputs.h"
 #include "material_renders.h"
-#include "png_stream.h"
+#include "image/png_stream.h"
 
 namespace patina::cli {
 

@@ -2,10 +2,11 @@
 
 #include <iostream>
 
-#include "brdf_models.h"
-#include "image.h"
-#include "input_error.h"
-#include "scene_file.h"
+#include "shading/brdf_models.h"
+#include "image/image.h"
+#include "io/input_error.h"
+#include "io/scene_file.h"
+#include "io/file_bytes.h"
 
 namespace patina::cli {
 

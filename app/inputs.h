@@ -3,7 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace patina::cli {
 

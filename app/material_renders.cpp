@@ -3,7 +3,8 @@
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
 #include "inputs.h"
-#include "mesh.h"
+#include "geometry/mesh.h"
+#include "gltf/scene_mesh.h"
 
 namespace patina::cli {
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "image.h"
-#include "scene.h"
+#include "image/image.h"
+#include "scene/scene.h"
 
 namespace patina::cli {
 

@@ -10,10 +10,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "gltf_glb.h"
-#include "gltf_import.h"
-#include "input_error.h"
-#include "json_reader.h"
+#include "gltf/glb.h"
+#include "gltf/import.h"
+#include "io/input_error.h"
+#include "io/json_reader.h"
 
 namespace patina::test {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "json_value.h"
+#include "scene/json_value.h"
 
 namespace patina::test {
 

@@ -9,9 +9,9 @@
 
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
-#include "probe.h"
+#include "scene/probe.h"
 #include "reference_shading.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace patina::test {
 

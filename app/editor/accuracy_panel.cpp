@@ -1,6 +1,6 @@
 #include <imgui.h>
 
-#include "accuracy.h"
+#include "accuracy/accuracy.h"
 #include "panels.h"
 #include "widgets.h"
 

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <ctime>
 
-#include "compositing.h"
-#include "png_text.h"
-#include "scene_file.h"
+#include "image/compositing.h"
+#include "image/png_text.h"
+#include "io/scene_file.h"
+#include "io/file_bytes.h"
+#include "gltf/scene_mesh.h"
 
 namespace patina::editor {
 

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "gl/renderer.h"
-#include "accuracy.h"
+#include "accuracy/accuracy.h"
 #include "editor_state.h"
 #include "gl/texture.h"
 #include "keys.h"

@@ -2,9 +2,10 @@
 
 #include <cstdlib>
 
-#include "image.h"
-#include "json_writer.h"
-#include "scene_file.h"
+#include "image/image.h"
+#include "io/json_writer.h"
+#include "io/scene_file.h"
+#include "io/file_bytes.h"
 
 namespace patina::editor {
 

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "camera_control.h"
-#include "gltf_import.h"
-#include "input_error.h"
-#include "png_text.h"
-#include "scene_file.h"
-#include "shading.h"
+#include "scene/camera_control.h"
+#include "gltf/import.h"
+#include "io/input_error.h"
+#include "image/png_text.h"
+#include "io/scene_file.h"
+#include "shading/shading.h"
 
 namespace patina::editor {
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "gl/renderer.h"
-#include "mesh.h"
-#include "scene.h"
+#include "geometry/mesh.h"
+#include "scene/scene.h"
 #include "undo_history.h"
 
 namespace patina::editor {

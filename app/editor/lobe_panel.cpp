@@ -4,9 +4,9 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
-#include "brdf_models.h"
-#include "cpu_shading.h"
-#include "lobe.h"
+#include "shading/brdf_models.h"
+#include "shading/cpu_shading.h"
+#include "shading/lobe.h"
 #include "panels.h"
 #include "widgets.h"
 

@@ -1,7 +1,7 @@
 #include <imgui.h>
 
-#include "brdf_models.h"
-#include "cpu_shading.h"
+#include "shading/brdf_models.h"
+#include "shading/cpu_shading.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -34,7 +34,7 @@ void drawMaterialPanel(EditorState& state) {
     }
     recordItem("Model");
 
-    // What the shader derives from the four parameters (shaders/brdf.glsl), guards included.
+    // What the shader derives from the four parameters (shaders/shared/brdf.glsl), guards included.
     const shader::SurfaceMaterial derived = surfaceMaterial(material);
     ImGui::Separator();
     ImGui::TextDisabled("Derived");

@@ -3,7 +3,7 @@
 #include <imgui.h>
 
 #include "panels.h"
-#include "scene_file.h"
+#include "io/scene_file.h"
 #include "widgets.h"
 
 namespace patina::editor {

@@ -3,7 +3,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene.h"
+#include "scene/scene.h"
 
 namespace patina::editor {
 

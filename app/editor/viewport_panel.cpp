@@ -5,7 +5,7 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
-#include "camera_control.h"
+#include "scene/camera_control.h"
 #include "panels.h"
 #include "keys.h"
 #include "widgets.h"

@@ -5,7 +5,7 @@
 #include <map>
 #include <vector>
 
-#include "shading.h"
+#include "shading/shading.h"
 
 namespace patina::editor {
 

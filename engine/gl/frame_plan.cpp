@@ -1,8 +1,8 @@
-#include "frame_plan.h"
+#include "gl/frame_plan.h"
 
 #include <algorithm>
 
-#include "../shader_specialisation.h"
+#include "gl/shader_specialisation.h"
 
 namespace patina {
 

@@ -3,11 +3,11 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "../hidden_faces.h"
-#include "../mesh.h"
-#include "../scene.h"
-#include "../view.h"
-#include "renderer.h"
+#include "geometry/hidden_faces.h"
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+#include "scene/view.h"
+#include "gl/renderer.h"
 
 namespace patina {
 

@@ -1,4 +1,4 @@
-#include "gpu_probe.h"
+#include "gl/gpu_probe.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -6,10 +6,10 @@
 
 #include <epoxy/gl.h>
 
-#include "../light_packing.h"
-#include "program.h"
-#include "shading_inputs.h"
-#include "shading_programs.h"
+#include "scene/light_packing.h"
+#include "gl/program.h"
+#include "gl/shading_inputs.h"
+#include "gl/shading_programs.h"
 
 namespace patina {
 

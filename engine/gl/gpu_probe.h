@@ -2,11 +2,11 @@
 #include <memory>
 #include <vector>
 
-#include "../probe.h"
+#include "scene/probe.h"
 
 namespace patina {
 
-// Evaluates shaders/shade.frag itself, one probe per pixel of a float target, so the GPU's
+// Evaluates shaders/stages/shade.frag itself, one probe per pixel of a float target, so the GPU's
 // arithmetic can be checked against the CPU and the double reference. Needs a current context.
 class GpuProbe {
 public:

@@ -1,4 +1,4 @@
-#include "headless_context.h"
+#include "gl/headless_context.h"
 
 #include <stdexcept>
 #include <string_view>

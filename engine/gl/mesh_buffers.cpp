@@ -1,4 +1,4 @@
-#include "mesh_buffers.h"
+#include "gl/mesh_buffers.h"
 
 #include <vector>
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <epoxy/gl.h>
 
-#include "../hidden_faces.h"
-#include "../mesh.h"
+#include "geometry/hidden_faces.h"
+#include "geometry/mesh.h"
 
 namespace patina {
 

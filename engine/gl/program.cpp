@@ -1,4 +1,4 @@
-#include "program.h"
+#include "gl/program.h"
 
 #include <stdexcept>
 
@@ -6,7 +6,7 @@ namespace patina {
 
 namespace {
 std::string assemble(const std::vector<const char*>& parts, const std::vector<std::string>& defines) {
-    // PATINA_INLINE marks shared functions `inline` for C++ (engine/shading.h); GLSL has none.
+    // PATINA_INLINE marks shared functions `inline` for C++ (engine/shading/shading.h); GLSL has none.
     std::string source = "#version 330 core\n#define PATINA_INLINE\n";
     for (const std::string& define : defines) {
         source += "#define " + define + "\n";

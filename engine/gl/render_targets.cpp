@@ -1,4 +1,4 @@
-#include "render_targets.h"
+#include "gl/render_targets.h"
 
 #include <stdexcept>
 #include <string>

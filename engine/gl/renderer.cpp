@@ -1,4 +1,4 @@
-#include "renderer.h"
+#include "gl/renderer.h"
 
 #include <algorithm>
 #include <array>
@@ -11,15 +11,15 @@
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "../enum_names.h"
-#include "../light_packing.h"
-#include "../view.h"
-#include "frame_plan.h"
-#include "mesh_buffers.h"
-#include "program.h"
-#include "render_targets.h"
-#include "shading_inputs.h"
-#include "shading_programs.h"
+#include "common/enum_names.h"
+#include "scene/light_packing.h"
+#include "scene/view.h"
+#include "gl/frame_plan.h"
+#include "gl/mesh_buffers.h"
+#include "gl/program.h"
+#include "gl/render_targets.h"
+#include "gl/shading_inputs.h"
+#include "gl/shading_programs.h"
 
 namespace patina {
 

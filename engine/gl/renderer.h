@@ -4,10 +4,10 @@
 #include <optional>
 #include <string_view>
 
-#include "../image.h"
-#include "../mesh.h"
-#include "../scene.h"
-#include "../shading.h"
+#include "image/image.h"
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+#include "shading/shading.h"
 
 namespace patina {
 

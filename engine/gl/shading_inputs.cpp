@@ -1,9 +1,9 @@
-#include "shading_inputs.h"
+#include "gl/shading_inputs.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "../light_packing.h"
+#include "scene/light_packing.h"
 
 namespace patina {
 

@@ -3,9 +3,9 @@
 
 #include <epoxy/gl.h>
 
-#include "../material.h"
-#include "../shading.h"
-#include "program.h"
+#include "scene/material.h"
+#include "shading/shading.h"
+#include "gl/program.h"
 
 namespace patina {
 
@@ -13,7 +13,7 @@ namespace patina {
 // the model dispatch (its PATINA_* defines select the model), the display transform and shade.frag.
 std::vector<const char*> shadingFragmentParts();
 
-// The LightBlock uniform buffer of shaders/shade.frag: MAX_LIGHTS packed lights and a count.
+// The LightBlock uniform buffer of shaders/stages/shade.frag: MAX_LIGHTS packed lights and a count.
 class LightBuffer {
 public:
     static constexpr GLuint kBindingPoint = 0;

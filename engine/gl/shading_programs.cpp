@@ -1,13 +1,13 @@
-#include "shading_programs.h"
+#include "gl/shading_programs.h"
 
 #include <algorithm>
 
 #include <epoxy/gl.h>
 
-#include "../brdf_models.h"
-#include "../energy_table.h"
-#include "../light_packing.h"
-#include "shading_inputs.h"
+#include "shading/brdf_models.h"
+#include "shading/energy_table.h"
+#include "scene/light_packing.h"
+#include "gl/shading_inputs.h"
 
 namespace patina {
 
@@ -134,7 +134,7 @@ unsigned ShadingPrograms::energyTexture(BrdfModelId model) {
         glBindTexture(GL_TEXTURE_2D, texture);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kEnergyTableSize, kEnergyTableSize, 0, GL_RED, GL_FLOAT,
                      table.data());
-        // texelFetch only: shaders/energy_table.glsl interpolates itself.
+        // texelFetch only: shaders/shared/energy_table.glsl interpolates itself.
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }

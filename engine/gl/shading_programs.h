@@ -5,13 +5,13 @@
 #include <tuple>
 #include <vector>
 
-#include "../brdf_model_id.h"
-#include "../shader_specialisation.h"
-#include "program.h"
+#include "shading/brdf_model_id.h"
+#include "gl/shader_specialisation.h"
+#include "gl/program.h"
 
 namespace patina {
 
-// The shading programs of shaders/shade.frag, one permutation per BRDF model and use, compiled
+// The shading programs of shaders/stages/shade.frag, one permutation per BRDF model and use, compiled
 // on first use (a model nobody selects is never compiled), with the LightBlock attached and,
 // for models with energy compensation, their E(NoV, r) table as a texture.
 class ShadingPrograms {

@@ -9,9 +9,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "gltf_import.h"
-#include "hidden_faces.h"
-#include "input_error.h"
+#include "gltf/import.h"
+#include "geometry/hidden_faces.h"
+#include "io/input_error.h"
 #include "scratch_folder.h"
 
 namespace {

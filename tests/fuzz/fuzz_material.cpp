@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "json_writer.h"
-#include "scene_file.h"
+#include "io/json_writer.h"
+#include "io/scene_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace patina;

@@ -8,8 +8,8 @@
 #include <cstdlib>
 
 #include "png_crc.h"
-#include "png_text.h"
-#include "scene_file.h"
+#include "image/png_text.h"
+#include "io/scene_file.h"
 
 namespace {
 // Every chunk that fits: length, type, data, CRC, big-endian, after the 8-byte signature.

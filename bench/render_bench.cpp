@@ -1,0 +1,443 @@
+#include "bench/render_bench.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <tuple>
+
+#include <epoxy/gl.h>
+
+#include "gltf/export.h"
+#include "gltf/import.h"
+#include "geometry/hidden_faces.h"
+#include "geometry/mesh.h"
+#include "bench/temporary_folder.h"
+#include "bench/timing.h"
+
+namespace patina {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double threadCpuMilliseconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
+struct Samples {
+    std::vector<double> gpu, cpu, frame, readBack;
+    FrameTiming medians() const { return {median(gpu), median(cpu), median(frame), median(readBack)}; }
+};
+
+// A renderer with two targets. Multi draws into one of its own: without MSAA it keeps a linear
+// image to sum into and the others do not, so in one target every switch between them would
+// allocate it again (and touch its pages first), 8-20 ms a multi frame that a user drawing
+// multi never pays.
+struct BenchRenderer : Renderer {
+    RenderTarget multi, others;
+};
+
+// One frame, drawn after the pipeline is idle so neither its timer query nor its wall time
+// includes earlier work, then read back as `patina render` does (timed apart).
+void timeFrame(BenchRenderer& renderer, const Scene& scene, const RenderSettings& settings, Samples* into) {
+    glFinish();
+    renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed
+    const Clock::time_point start = Clock::now();
+    const double cpuStart = threadCpuMilliseconds();
+    RenderTarget& target = settings.passes == PassMode::Multi ? renderer.multi : renderer.others;
+    renderer.draw(scene, settings, target);
+    const double cpu = threadCpuMilliseconds() - cpuStart;
+    glFinish();
+    const Clock::time_point drawn = Clock::now();
+    renderer.readBack(target, false);
+    const double readBack = std::chrono::duration<double, std::milli>(Clock::now() - drawn).count();
+    if (into) {
+        into->gpu.push_back(renderer.lastGpuMilliseconds());
+        into->cpu.push_back(cpu);
+        into->frame.push_back(std::chrono::duration<double, std::milli>(drawn - start).count());
+        into->readBack.push_back(readBack);
+    }
+}
+
+// Runs every measurement once per round, rounds interleaved, so slow drift of this machine's
+// speed spreads over all of them instead of biasing one; two warm-up rounds compile shaders.
+template <typename Each>
+void interleaved(int runs, Each each) {
+    for (int round = -2; round < runs; ++round) {
+        each(round >= 0);
+    }
+}
+
+// Frames of `scene` under each of `variants`, rounds interleaved: the medians, in order.
+std::vector<FrameTiming> interleavedMedians(BenchRenderer& renderer, const Scene& scene,
+                                            const std::vector<RenderSettings>& variants, int runs) {
+    std::vector<Samples> samples(variants.size());
+    interleaved(runs, [&](bool keep) {
+        for (size_t k = 0; k < variants.size(); ++k) {
+            timeFrame(renderer, scene, variants[k], keep ? &samples[k] : nullptr);
+        }
+    });
+    std::vector<FrameTiming> medians;
+    for (Samples& each : samples) {
+        medians.push_back(each.medians());
+    }
+    return medians;
+}
+
+// A sphere of about `triangles` triangles (2 rings x segments, segments = 2 rings).
+Mesh sphereOfAbout(size_t triangles) {
+    const int rings = std::max(4, int(std::lround(std::sqrt(double(triangles) / 4.0))));
+    return makeUvSphere(rings, 2 * rings);
+}
+
+size_t triangleCount(const Mesh& mesh) {
+    return mesh.indices.size() / 3;
+}
+
+const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, AddedLights added, int lights) {
+    for (const LightCountRow& row : result.lightRows) {
+        if (row.path == path && row.added == added && row.lights == lights) {
+            return &row.time;
+        }
+    }
+    return nullptr;
+}
+
+// Each path and kind of added light that bench-render measures against light count.
+constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
+    {PassMode::Multi, AddedLights::Points},       {PassMode::Single, AddedLights::Points},
+    {PassMode::Specialised, AddedLights::Points}, {PassMode::BrdfFloor, AddedLights::Points},
+    {PassMode::Single, AddedLights::Directionals}, {PassMode::Single, AddedLights::PointsOtherCoefficients},
+    {PassMode::Specialised, AddedLights::PointsOtherCoefficients}};
+
+// Every path with point lights added; single again with directional lights added (whose
+// light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
+// single and specialised again with points whose coefficients they must read. The floor's
+// scene is the lights as directions, the same for all. The floor is also measured at as many
+// lights as specialised takes as flat inputs (renderBenchTargets takes its slope up to there).
+void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                        RenderBenchResult& result) {
+    std::vector<int> counts = options.quick ? std::vector<int>{1, 3, 8, 16} : std::vector<int>{1, 3, 8, 16, 32};
+    const int slots = int(result.flatLightSlots);
+    const bool floorAtSlots =
+        slots > 3 && slots < counts.back() && std::find(counts.begin(), counts.end(), slots) == counts.end();
+    if (floorAtSlots) {
+        counts.insert(std::upper_bound(counts.begin(), counts.end(), slots), slots);
+    }
+    auto measured = [&](PassMode path, int count) {
+        return path == PassMode::BrdfFloor || !floorAtSlots || count != slots;
+    };
+    std::map<std::tuple<int, int, int>, Samples> samples;
+    interleaved(options.runs, [&](bool keep) {
+        for (int count : counts) {
+            for (const auto& [path, added] : kLightSeries) {
+                if (!measured(path, count)) {
+                    continue;
+                }
+                const Scene scene = renderBenchScene(count, added);
+                RenderSettings s = settings;
+                s.passes = path;
+                timeFrame(renderer, path == PassMode::BrdfFloor ? brdfFloorScene(scene) : scene, s,
+                          keep ? &samples[{int(path), int(added), count}] : nullptr);
+            }
+        }
+    });
+    for (const auto& [path, added] : kLightSeries) {
+        for (int count : counts) {
+            if (measured(path, count)) {
+                result.lightRows.push_back({path, added, count, samples[{int(path), int(added), count}].medians()});
+            }
+        }
+    }
+}
+
+// `mesh`: the default scene's, which the renderer holds on entry and gets back on return.
+void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOptions& options,
+                  const RenderSettings& settings, RenderBenchResult& result) {
+    const Scene scene = defaultScene();
+    const std::vector<std::pair<int, int>> sizes =
+        options.quick ? std::vector<std::pair<int, int>>{{256, 256}, {512, 512}}
+                      : std::vector<std::pair<int, int>>{{512, 512}, {1280, 720}, {1920, 1080}, {2560, 1440}, {3840, 2160}};
+    const std::vector<size_t> triangles =
+        options.quick ? std::vector<size_t>{10'000, 100'000} : std::vector<size_t>{10'000, 100'000, 1'000'000};
+
+    // One size after another: interleaved, every frame would reallocate the render targets.
+    for (const auto& [width, height] : sizes) {
+        RenderSettings s = settings;
+        s.width = width;
+        s.height = height;
+        Samples samples;
+        interleaved(options.runs, [&](bool keep) { timeFrame(renderer, scene, s, keep ? &samples : nullptr); });
+        result.scaleRows.push_back({"resolution", width, height, triangleCount(mesh), samples.medians()});
+    }
+    // A mesh upload per size is slow at 1M triangles: sizes one after another, not interleaved.
+    // Specialised with and without flat lights too, interleaved with single: the cost per
+    // triangle and the saving per pixel that flatLightsPay weighs.
+    using FlatLights = RenderSettings::FlatLights;
+    const std::tuple<const char*, PassMode, FlatLights> kinds[] = {
+        {"single", PassMode::Single, FlatLights::WherePaying},
+        {"specialised-flat", PassMode::Specialised, FlatLights::Always},
+        {"specialised-block", PassMode::Specialised, FlatLights::Never}};
+    std::vector<RenderSettings> variants;
+    for (const auto& [path, passes, flatLights] : kinds) {
+        variants.push_back(settings);
+        variants.back().passes = passes;
+        variants.back().flatLights = flatLights;
+    }
+    for (size_t target : triangles) {
+        const Mesh sphere = sphereOfAbout(target);
+        renderer.setMesh(sphere);
+        const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
+        for (size_t k = 0; k < std::size(kinds); ++k) {
+            result.scaleRows.push_back({k == 0 ? "triangles" : "flat-lights", settings.width, settings.height,
+                                        triangleCount(sphere), times[k], std::get<0>(kinds[k])});
+        }
+    }
+    renderer.setMesh(mesh);
+}
+
+// Single and multi on the default scene with its sphere's hidden faces culled and drawn
+// (RenderSettings::cullHiddenFaces), interleaved: what culling saves.
+void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                    RenderBenchResult& result) {
+    const Scene scene = defaultScene();
+    const std::tuple<const char*, PassMode, bool> kinds[] = {{"single", PassMode::Single, true},
+                                                             {"single-every-face", PassMode::Single, false},
+                                                             {"multi", PassMode::Multi, true},
+                                                             {"multi-every-face", PassMode::Multi, false}};
+    std::vector<RenderSettings> variants;
+    for (const auto& [path, passes, cull] : kinds) {
+        variants.push_back(settings);
+        variants.back().passes = passes;
+        variants.back().cullHiddenFaces = cull;
+    }
+    const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
+    for (size_t k = 0; k < std::size(kinds); ++k) {
+        result.scaleRows.push_back({"culling", settings.width, settings.height, result.triangles, times[k],
+                                    std::get<0>(kinds[k])});
+    }
+}
+
+// Export a big sphere as GLB and time importing it (what opening a heavy model costs).
+void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& result) {
+    const Mesh mesh = sphereOfAbout(options.quick ? 40'000 : 1'000'000);
+    const TemporaryFolder folder("patina-bench-gltf");
+    const std::filesystem::path file = folder.path() / "sphere.glb";
+    exportGltf(file, mesh, defaultScene().material);
+    result.gltfBytes = double(std::filesystem::file_size(file));
+    std::vector<double> seconds, hiddenSeconds;
+    for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
+        Clock::time_point start = Clock::now();
+        const GltfImport imported = importGltf(file);
+        seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        result.gltfTriangles = triangleCount(imported.mesh);
+        start = Clock::now();
+        result.gltfClosed = hiddenFaces(imported.mesh) != HiddenFaces::None;
+        hiddenSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    result.gltfLoadSeconds = median(seconds);
+    result.hiddenFacesSeconds = median(hiddenSeconds);
+}
+}  // namespace
+
+std::string_view addedLightsName(AddedLights added) {
+    switch (added) {
+    case AddedLights::Points: return "point";
+    case AddedLights::PointsOtherCoefficients: return "point-other-coefficients";
+    case AddedLights::Directionals: return "directional";
+    }
+    return "point";
+}
+
+Scene renderBenchScene(int lights, AddedLights added) {
+    Scene scene = defaultScene();
+    if (lights <= int(scene.lights.size())) {
+        scene.lights.resize(size_t(std::max(lights, 0)));
+        return scene;
+    }
+    const int extra = lights - int(scene.lights.size());
+    for (int i = 0; i < extra; ++i) {
+        const float angle = 6.2831853f * (float(i) + 0.5f) / float(extra);
+        Light light;
+        const bool point = added != AddedLights::Directionals;
+        light.type = point ? LightType::Point : LightType::Directional;
+        light.name = "ring " + std::to_string(i + 1);
+        light.position = {2.5f * std::cos(angle), 2.5f * std::sin(angle), 2.0f};
+        light.direction = -light.position;
+        light.radius = 12.0f;
+        // At the ring's distance (about 3.2) both give about the same light.
+        light.attenuation = added == AddedLights::PointsOtherCoefficients ? glm::vec3(0.5f, 0.25f, 0.9f)
+                                                                         : glm::vec3(1.0f, 0.0f, 1.0f);
+        // The ring adds about one key light in all.
+        light.intensity = (point ? 24.0f : 2.0f) / float(extra);
+        scene.lights.push_back(light);
+    }
+    return scene;
+}
+
+Scene brdfFloorScene(const Scene& scene) {
+    Scene floor = scene;
+    for (Light& light : floor.lights) {
+        if (light.type == LightType::Point) {
+            light.direction = -light.position;
+        } else if (light.type == LightType::Hemisphere) {
+            light.direction = {0.0f, -1.0f, 0.0f};
+        }
+        light.type = LightType::Directional;
+    }
+    return floor;
+}
+
+RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
+    RenderBenchResult result;
+    result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    BenchRenderer renderer;
+    result.flatLightSlots = renderer.flatLightSlots();
+    RenderSettings settings;   // the defaults a render gets, at the bench's size
+    settings.width = result.width = options.quick ? 480 : options.width;
+    settings.height = result.height = options.quick ? 270 : options.height;
+    settings.samples = result.samples = options.samples;
+    settings.readHdr = false;   // as `patina render` without --hdr and the editor's viewport
+    const Mesh mesh = makeMesh(defaultScene().mesh);
+    result.triangles = triangleCount(mesh);
+    renderer.setMesh(mesh);
+    measureLightCounts(renderer, options, settings, result);
+    measureCulling(renderer, options, settings, result);
+    measureScale(renderer, mesh, options, settings, result);
+    measureGltfLoad(options, result);
+    return result;
+}
+
+std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
+    std::vector<TargetCheck> targets;
+    // Wall time to glFinish, what a user waits for; the timer queries' GPU time is in the CSV
+    // beside it (on llvmpipe 83-100% of it, as the rasteriser is the "GPU").
+    auto gpu = [&](PassMode path, int lights, AddedLights added = AddedLights::Points) {
+        const FrameTiming* t = findLights(result, path, added, lights);
+        return t ? t->frame : std::nan("");
+    };
+    auto add = [&](std::string name, double value, double bound) {
+        targets.push_back({std::move(name), value, bound, value <= bound});
+    };
+    add("single / multi at 8 lights", gpu(PassMode::Single, 8) / gpu(PassMode::Multi, 8), 0.35);
+    add("specialised / single, default scene (3 lights)", gpu(PassMode::Specialised, 3) / gpu(PassMode::Single, 3), 0.9);
+    // Cost per added light from 8 lights to the most measured, against the floor's.
+    int most = 8;
+    for (const LightCountRow& row : result.lightRows) {
+        most = std::max(most, row.lights);
+    }
+    auto perLight = [&](PassMode path, AddedLights added) {
+        return (gpu(path, most, added) - gpu(path, 8, added)) / double(most - 8);
+    };
+    // The floor's own cost per light from 3 lights to as many as take flat inputs (14 on
+    // llvmpipe), where every one of its lights is flat when the renderer uses them; past the
+    // slots the floor would pay the uniform gathers it is meant to leave out. 3 to 8 where the
+    // GL has fewer slots or the floor was not measured at them.
+    int floorTop = 8;
+    for (const LightCountRow& row : result.lightRows) {
+        if (row.path == PassMode::BrdfFloor && row.lights > floorTop && row.lights <= int(result.flatLightSlots)) {
+            floorTop = row.lights;
+        }
+    }
+    const double floor = (gpu(PassMode::BrdfFloor, floorTop, AddedLights::Points) -
+                          gpu(PassMode::BrdfFloor, 3, AddedLights::Points)) /
+                         double(floorTop - 3);
+    const std::string range =
+        " (8 to " + std::to_string(most) + " lights; floor 3 to " + std::to_string(floorTop) + ")";
+    add("single's cost per added directional light / the BRDF floor's" + range,
+        perLight(PassMode::Single, AddedLights::Directionals) / floor, 1.3);
+    add("single's cost per added point light / the BRDF floor's" + range,
+        perLight(PassMode::Single, AddedLights::Points) / floor, 1.3);
+    add("single's cost per added point light with other coefficients / the BRDF floor's" + range,
+        perLight(PassMode::Single, AddedLights::PointsOtherCoefficients) / floor, 1.3);
+    add("specialised's cost per added point light / the BRDF floor's" + range,
+        perLight(PassMode::Specialised, AddedLights::Points) / floor, 1.3);
+    add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,
+        perLight(PassMode::Specialised, AddedLights::PointsOtherCoefficients) / floor, 1.3);
+    return targets;
+}
+
+std::string renderBenchCsv(const RenderBenchResult& result) {
+    std::string csv = "section,path,added,lights,width,height,triangles,gpu_ms,cpu_ms,frame_ms,read_back_ms\n";
+    char line[256];
+    for (const LightCountRow& row : result.lightRows) {
+        std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n",
+                      std::string(passModeName(row.path)).c_str(), std::string(addedLightsName(row.added)).c_str(),
+                      row.lights, result.width, result.height,
+                      result.triangles, row.time.gpu, row.time.cpu, row.time.frame, row.time.readBack);
+        csv += line;
+    }
+    for (const ScaleRow& row : result.scaleRows) {
+        std::snprintf(line, sizeof line, "%s,%s,,3,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n", row.axis.c_str(),
+                      row.path.c_str(), row.width, row.height, row.triangles, row.time.gpu, row.time.cpu,
+                      row.time.frame, row.time.readBack);
+        csv += line;
+    }
+    return csv;
+}
+
+std::string targetsCsv(const std::vector<TargetCheck>& targets) {
+    std::string csv = "target,value,bound,met\n";
+    char line[320];
+    for (const TargetCheck& t : targets) {
+        std::snprintf(line, sizeof line, "\"%s\",%.4f,%.2f,%s\n", t.name.c_str(), t.value, t.bound,
+                      t.met ? "yes" : "no");
+        csv += line;
+    }
+    return csv;
+}
+
+Chart renderBenchLightChart(const RenderBenchResult& result) {
+    char title[128];
+    std::snprintf(title, sizeof title, "Frame time against lights, %dx%d, %dx MSAA", result.width, result.height,
+                  result.samples);
+    ChartPanel panel{title, "enabled lights (point lights added unless named)", "frame time to glFinish (ms, median)",
+                     false, false, {}};
+    size_t colour = 0;
+    for (const auto& [path, added] : kLightSeries) {
+        // Short enough for the legend: the axis says that point lights are added.
+        std::string label = path == PassMode::BrdfFloor ? "BRDF floor" : std::string(passModeName(path));
+        if (added != AddedLights::Points) {
+            label = (path == PassMode::Specialised ? "spec." : label) +
+                    (added == AddedLights::Directionals ? ", directionals" : ", other coeffs");
+        }
+        ChartSeries series{label, {}, chartColour(colour++), true, true, path == PassMode::BrdfFloor, {}};
+        for (const LightCountRow& row : result.lightRows) {
+            if (row.path == path && row.added == added) {
+                series.points.emplace_back(row.lights, row.time.frame);
+            }
+        }
+        panel.series.push_back(series);
+    }
+    return Chart{{panel}};
+}
+
+Chart renderBenchScaleChart(const RenderBenchResult& result) {
+    Chart chart;
+    for (const char* axis : {"resolution", "triangles"}) {
+        const bool pixels = std::string(axis) == "resolution";
+        ChartPanel panel{pixels ? "Frame time against resolution (3 lights, single)"
+                                : "Frame time against triangles (3 lights, single)",
+                         pixels ? "megapixels" : "triangles", "frame time to glFinish (ms, median)", !pixels, !pixels, {}};
+        ChartSeries series{"single", {}, chartColour(1), true, true, false, {}};
+        for (const ScaleRow& row : result.scaleRows) {
+            if (row.axis == axis) {
+                series.points.emplace_back(pixels ? double(row.width) * row.height * 1e-6 : double(row.triangles),
+                                           row.time.frame);
+                series.pointLabels.push_back(pixels ? std::to_string(row.width) + "x" + std::to_string(row.height)
+                                                    : std::to_string(row.triangles));
+            }
+        }
+        panel.series.push_back(series);
+        chart.panels.push_back(panel);
+    }
+    return chart;
+}
+
+}  // namespace patina

@@ -1,0 +1,94 @@
+#pragma once
+// `patina bench-render`: what a frame costs the renderer, per path, against light count,
+// resolution and triangle count (issue 6). Needs a current GL context. Times are medians of
+// interleaved runs in one process; compare ratios, not absolute times, across machines.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "accuracy/chart.h"
+#include "gl/renderer.h"
+#include "scene/scene.h"
+
+namespace patina {
+
+struct RenderBenchOptions {
+    bool quick = false;   // smaller frames, fewer lights and triangles (for CI)
+    int runs = 7;         // timed runs per measurement after 2 warm-ups
+    int width = 1920, height = 1080;
+    int samples = 4;      // MSAA, as `patina render` draws
+};
+
+// Medians over the runs, in milliseconds.
+struct FrameTiming {
+    double gpu = 0.0;     // two GL_TIMESTAMP queries around the frame (Renderer::lastGpuMilliseconds)
+    double cpu = 0.0;     // CPU time of the calling thread inside Renderer::draw (submission)
+    double frame = 0.0;   // wall clock from draw to glFinish
+    double readBack = 0.0;   // then reading the display image back as bytes (Renderer::readBack)
+};
+
+// The lights past the default scene's first 3: a ring in front of the sphere.
+enum class AddedLights {
+    Points,                  // windowed points with Karis's coefficients (1, 0, 1), the default
+    PointsOtherCoefficients,  // the same with other coefficients, which a shader must read
+    Directionals,
+};
+// "point", "point-other-coefficients", "directional" (the CSV's `added` column).
+std::string_view addedLightsName(AddedLights added);
+
+struct LightCountRow {
+    PassMode path;        // Single, Multi, Specialised or BrdfFloor
+    AddedLights added = AddedLights::Points;
+    int lights = 0;
+    FrameTiming time;
+};
+
+struct ScaleRow {
+    std::string axis;     // "resolution", "triangles", "flat-lights" or "culling"
+    int width = 0, height = 0;
+    size_t triangles = 0;
+    FrameTiming time;     // the default scene's three lights
+    // "single"; on the flat-lights axis "specialised-flat" or "specialised-block" (specialised
+    // with its lights as flat inputs or from the block: what flatLightsPay weighs); on the
+    // culling axis "single", "multi" and the same drawing every face ("single-every-face").
+    std::string path = "single";
+};
+
+struct RenderBenchResult {
+    std::vector<LightCountRow> lightRows;
+    std::vector<ScaleRow> scaleRows;
+    int width = 0, height = 0, samples = 0;
+    size_t triangles = 0;   // of the default scene's mesh, which the light rows draw
+    size_t gltfTriangles = 0;
+    double gltfBytes = 0.0, gltfLoadSeconds = 0.0;   // a GLB of gltfTriangles, imported
+    // Finding that mesh's hidden faces (hiddenFaces, as Renderer::setMesh does), and whether
+    // it is closed.
+    double hiddenFacesSeconds = 0.0;
+    bool gltfClosed = false;
+    std::string renderer;   // GL_RENDERER
+    size_t flatLightSlots = 0;   // lights specialised takes as flat inputs (Renderer::flatLightSlots)
+};
+
+// The default scene with `lights` lights: its first `lights` for up to 3, then the ring.
+Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
+// The same lights as directions only, for the BrdfFloor pass.
+Scene brdfFloorScene(const Scene& scene);
+
+RenderBenchResult runRenderBench(const RenderBenchOptions& options);
+
+struct TargetCheck {
+    std::string name;       // what is compared, e.g. "single / multi at 8 lights"
+    double value = 0.0, bound = 0.0;
+    bool met = false;       // value <= bound
+};
+// Issue 6's targets as ratios of this run's frame times.
+std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result);
+
+std::string renderBenchCsv(const RenderBenchResult& result);
+std::string targetsCsv(const std::vector<TargetCheck>& targets);
+// Frame time against light count, a line per path and the floor dashed.
+Chart renderBenchLightChart(const RenderBenchResult& result);
+// Frame time against pixels and against triangles.
+Chart renderBenchScaleChart(const RenderBenchResult& result);
+
+}  // namespace patina

@@ -1,0 +1,58 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace patina {
+
+// The built-in meshes.
+enum class MeshKind { Sphere, Torus };
+std::string_view meshKindName(MeshKind mesh);
+std::optional<MeshKind> meshKindFromName(std::string_view name);
+
+// An indexed triangle mesh in world space with smooth per-vertex normals.
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<uint32_t> indices;
+};
+
+// Unit sphere at the origin: `rings` latitude bands, `segments` longitude bands.
+Mesh makeUvSphere(int rings = 64, int segments = 128);
+// Torus around the y axis: major radius R, tube radius r.
+Mesh makeTorus(float majorRadius = 0.75f, float minorRadius = 0.3f, int rings = 96,
+               int segments = 48);
+Mesh makeMesh(MeshKind kind);
+// Every triangle wound the other way (its last two corners swapped): front faces turn back.
+Mesh reversedWinding(Mesh mesh);
+
+// `n` at length 1, or +y when it has no direction (zero or not finite); correct to rounding
+// also where its squared length would overflow or underflow a float (components above 1e19
+// or below 1e-19).
+glm::vec3 unitNormal(const glm::vec3& n);
+
+// Area-weighted vertex normals of `positions` over `triangles` (three indices each); a vertex
+// on no triangle of non-zero area gets +y.
+std::vector<glm::vec3> smoothNormals(std::span<const glm::vec3> positions,
+                                     std::span<const uint32_t> triangles);
+
+// The axis-aligned box around every position; low > high (empty) for a mesh with none.
+struct BoundingBox {
+    glm::vec3 low{1.0f}, high{-1.0f};
+    bool empty() const { return low.x > high.x; }
+};
+BoundingBox boundingBox(const Mesh& mesh);
+
+// Where the camera frames a mesh: the centre of its bounding box and the distance from there
+// to the farthest vertex.
+struct BoundingSphere {
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+};
+BoundingSphere boundingSphere(const Mesh& mesh);
+
+}  // namespace patina

@@ -1,0 +1,91 @@
+#include "gl/shader_specialisation.h"
+
+
+#include "scene/light_packing.h"
+
+namespace patina {
+
+namespace {
+// Where light i comes from in the fragment shader, and its entry in mesh.vert's list.
+struct LightSource {
+    std::string fragment, vertex;
+};
+LightSource sourceOf(size_t i, size_t flatSlots, const char* flatWrite) {
+    const std::string index = std::to_string(i);
+    if (i < flatSlots) {
+        return {"FLAT(" + index + ")", std::string(flatWrite) + "(" + index + ")"};
+    }
+    return {"BLOCK(" + index + ")", ""};
+}
+
+void append(std::string& list, const std::string& entry) {
+    if (!entry.empty()) {
+        list += (list.empty() ? "" : " ") + entry;
+    }
+}
+
+// Light i's fragment-shader call, and its flat rows for mesh.vert where it has them.
+void addLight(ShaderSpecialisation& key, size_t i, const std::string& call, const LightSource& source) {
+    append(key.lights, call);
+    if (!source.vertex.empty()) {
+        append(key.flatLights, source.vertex);
+        key.flatLightCount = int(i) + 1;
+    }
+}
+}  // namespace
+
+std::vector<std::string> ShaderSpecialisation::defines() const {
+    std::vector<std::string> result{"PATINA_SINGLE_PASS", "PATINA_SPECIALISED", "PATINA_LIGHTS " + lights};
+    if (flatLightCount > 0) {
+        result.push_back("PATINA_FLAT_LIGHT_COUNT " + std::to_string(flatLightCount));
+        result.push_back("PATINA_FLAT_LIGHTS " + flatLights);
+    }
+    if (noDiffuse) {
+        result.push_back("PATINA_NO_DIFFUSE");
+    }
+    return result;
+}
+
+ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights, const Material& material,
+                                   size_t flatSlots) {
+    ShaderSpecialisation key;
+    // The same fp32 product as deriveSurfaceMaterial, so "exactly 0" means what the shader sees.
+    const glm::vec3 diffuseColor = (1.0f - material.metallic) * material.baseColor;
+    key.noDiffuse = diffuseColor == glm::vec3(0.0f);
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const shader::PackedLight& light = lights[i];
+        std::string call;
+        LightSource source;
+        if (light.type == shader::LIGHT_POINT) {
+            source = sourceOf(i, flatSlots, "FLAT_POINT");
+            call = "SHADE_POINT(" + source.fragment + (light.inverseRadius > 0.0f ? ", true, " : ", false, ") +
+                   (hasKarisAttenuation(light) ? "true)" : "false)");
+        } else if (light.type == shader::LIGHT_DIRECTIONAL) {
+            source = sourceOf(i, flatSlots, "FLAT_DIRECTIONAL");
+            call = "SHADE_DIRECTIONAL(" + source.fragment + ")";
+        } else if (!key.noDiffuse) {
+            source = sourceOf(i, flatSlots, "FLAT_HEMISPHERE");
+            call = "SHADE_HEMISPHERE(" + source.fragment + ")";
+        }
+        if (!call.empty()) {
+            addLight(key, i, call, source);
+        }
+    }
+    return key;
+}
+
+bool flatLightsPay(double pixels, double trianglesDrawn) {
+    return pixels >= kFlatLightPixelsPerTriangle * trianglesDrawn;
+}
+
+ShaderSpecialisation brdfFloorFor(size_t count, size_t flatSlots) {
+    ShaderSpecialisation key;
+    for (size_t i = 0; i < count; ++i) {
+        // The floor's scene has directional lights only (render_bench.cpp's brdfFloorScene).
+        const LightSource source = sourceOf(i, flatSlots, "FLAT_DIRECTIONAL");
+        addLight(key, i, "BRDF_ONLY(" + source.fragment + ")", source);
+    }
+    return key;
+}
+
+}  // namespace patina

@@ -1,0 +1,51 @@
+#pragma once
+// What a shader specialised to one scene compiles (shaders/stages/shade.frag, PATINA_SPECIALISED):
+// exactly the scene's enabled lights, in order, each with only its type's code; no attenuation
+// window for a point light of radius <= 0, and constant coefficients for one with
+// KARIS_ATTENUATION; no diffuse term (and no hemisphere light, which is
+// diffuse only) for a material whose c_diff is exactly 0. Values the artist drags (positions,
+// colours, material parameters) stay uniforms, so only a change of this key recompiles.
+//
+// The first `flatSlots` lights reach the fragment shader as flat inputs written by mesh.vert
+// (FLAT(i)) rather than from the uniform block (BLOCK(i)): with a light count fixed at compile
+// time the fragment shader needs no indexing, and on llvmpipe a flat input costs one load per
+// block of pixels where a uniform costs a gather per lane (docs/PERFORMANCE.md).
+#include <compare>
+#include <string>
+#include <vector>
+
+#include "scene/material.h"
+#include "shading/shading.h"
+
+namespace patina {
+
+struct ShaderSpecialisation {
+    std::string lights;       // PATINA_LIGHTS: "SHADE_POINT(FLAT(0), true, true) SHADE_DIRECTIONAL(FLAT(1)) ..."
+    std::string flatLights;   // PATINA_FLAT_LIGHTS, for mesh.vert: "FLAT_POINT(0) FLAT_DIRECTIONAL(1) ..."
+    int flatLightCount = 0;   // lights 0 to flatLightCount - 1 are flat inputs
+    bool noDiffuse = false;
+
+    auto operator<=>(const ShaderSpecialisation&) const = default;
+    std::vector<std::string> defines() const;
+};
+
+// `lights` as packEnabledLights gives them (the uniform block's order). `flatSlots`: how many
+// lights the vertex stage can hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).
+ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights, const Material& material,
+                                   size_t flatSlots);
+
+// Whether handing lights on as flat inputs pays for a draw: it costs the vertex stage per
+// triangle drawn (each vertex writes two more outputs a light, each triangle sets them up) and
+// saves the fragment stage a gather per scalar per 8 fragments. On llvmpipe flat won every case
+// measured down to 9 pixels a triangle drawn (1080p with MSAA strips, the 512x512 sheet cell,
+// 100k triangles at 1080p) and lost only at 1.1 without MSAA (1M triangles at 1080p: 179
+// against 143 ms; docs/PERFORMANCE.md). `pixels`: those the mesh can cover; `trianglesDrawn`:
+// the mesh's triangles times the draws (MSAA strips) that cover it.
+constexpr double kFlatLightPixelsPerTriangle = 4.0;
+bool flatLightsPay(double pixels, double trianglesDrawn);
+
+// The benchmark floor's key: BRDF_ONLY for each of `count` lights (shade.frag), read the same
+// way as specialiseFor would read them.
+ShaderSpecialisation brdfFloorFor(size_t count, size_t flatSlots);
+
+}  // namespace patina

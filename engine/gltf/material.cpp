@@ -1,0 +1,97 @@
+#include "gltf/material.h"
+
+#include <algorithm>
+
+#include "io/input_error.h"
+
+namespace patina::gltf {
+
+namespace {
+
+constexpr const char* kSpecular = "KHR_materials_specular";
+constexpr const char* kIor = "KHR_materials_ior";
+
+// JSON numbers are finite: checkGltfJson refuses any that a double cannot hold.
+double numberOf(const tinygltf::Value& value, const std::string& what, const std::string& source) {
+    if (!value.IsNumber()) {
+        throw InputError(source + ": " + what + ": must be a number");
+    }
+    return value.GetNumberAsDouble();
+}
+
+// The extension's object (tinygltf keeps only objects), or null when the material has none.
+const tinygltf::Value* extension(const tinygltf::Material& material, const char* name) {
+    const auto found = material.extensions.find(name);
+    return found == material.extensions.end() ? nullptr : &found->second;
+}
+
+double field(const tinygltf::Value* object, const char* key, double fallback, const std::string& what,
+             const std::string& source) {
+    return object && object->Has(key) ? numberOf(object->Get(key), what + "/" + key, source) : fallback;
+}
+
+float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
+
+// Written as the float's exact value, so that reading it back gives the same float.
+double exact(float value) { return double(value); }
+
+}  // namespace
+
+const char* const kMaterialExtensions[2] = {kSpecular, kIor};
+
+double f0FromIor(double ior) {
+    const double r = (ior - 1.0) / (ior + 1.0);
+    return r * r;
+}
+
+Material materialFromGltf(const tinygltf::Material& material, const std::string& what,
+                          const std::string& source, const std::string& fallbackName) {
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+    Material result;
+    result.name = material.name.empty() ? fallbackName : material.name;
+    for (int i = 0; i < 3; ++i) {
+        result.baseColor[i] = unit(pbr.baseColorFactor.at(size_t(i)));
+    }
+    result.metallic = unit(pbr.metallicFactor);
+    result.roughness = unit(pbr.roughnessFactor);
+
+    const std::string specularAt = what + "/extensions/" + kSpecular;
+    const tinygltf::Value* specular = extension(material, kSpecular);
+    const double specularFactor = field(specular, "specularFactor", 1.0, specularAt, source);
+    double largestColor = 1.0;   // Patina's F0 is grey: the largest channel keeps the highlight
+    if (specular && specular->Has("specularColorFactor")) {
+        const tinygltf::Value& color = specular->Get("specularColorFactor");
+        const std::string colorAt = specularAt + "/specularColorFactor";
+        if (!color.IsArray() || color.ArrayLen() != 3) {
+            throw InputError(source + ": " + colorAt + ": must be an array of 3 numbers");
+        }
+        largestColor = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            largestColor = std::max(largestColor, numberOf(color.Get(i), colorAt + "/" + std::to_string(i), source));
+        }
+    }
+    const std::string iorAt = what + "/extensions/" + kIor;
+    const double ior = field(extension(material, kIor), "ior", kExportIor, iorAt, source);
+    if (ior < 1.0) {
+        throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1");
+    }
+    const double f0 = std::min(f0FromIor(ior) * largestColor, 1.0) * specularFactor;
+    result.specular = unit(f0 / kF0PerSpecular);
+    return result;
+}
+
+Json materialToGltf(const Material& material) {
+    const double color = exact(float(kF0PerSpecular * double(material.specular) / f0FromIor(kExportIor)));
+    const glm::vec3& base = material.baseColor;
+    return Json{
+        {"name", material.name},
+        {"pbrMetallicRoughness",
+         {{"baseColorFactor", {exact(base.r), exact(base.g), exact(base.b), 1.0}},
+          {"metallicFactor", exact(material.metallic)},
+          {"roughnessFactor", exact(material.roughness)}}},
+        {"extensions",
+         {{kSpecular, {{"specularFactor", 1.0}, {"specularColorFactor", {color, color, color}}}},
+          {kIor, {{"ior", kExportIor}}}}}};
+}
+
+}  // namespace patina::gltf

@@ -1,0 +1,33 @@
+#pragma once
+// Patina's material in glTF's terms, both ways; docs/FORMATS.md ("glTF") derives the mapping.
+//   Patina:   F0 = 0.08 * specular (dielectric), F90 = 1.
+//   glTF, KHR_materials_ior and KHR_materials_specular (air outside):
+//             F0 = min(((ior - 1) / (ior + 1))^2 * specularColorFactor, 1) * specularFactor,
+//             F90 = specularFactor.
+#include <string>
+
+#include <tiny_gltf.h>
+
+#include "io/json_reader.h"
+#include "scene/material.h"
+
+namespace patina::gltf {
+
+constexpr double kF0PerSpecular = 0.08;   // Karis 2013, as in shaders/shared/brdf.glsl
+constexpr double kExportIor = 1.5;        // glTF's own default: F0 = 0.04
+
+// ((ior - 1) / (ior + 1))^2: normal-incidence reflectance against air.
+double f0FromIor(double ior);
+
+// `what` is its JSON pointer ("/materials/0"); values outside [0, 1] are clamped; a value of
+// the wrong type or an ior below 1 throws InputError("SOURCE: WHAT/...: ...").
+// `fallbackName` names a material that has no name.
+Material materialFromGltf(const tinygltf::Material& material, const std::string& what,
+                          const std::string& source, const std::string& fallbackName);
+
+// pbrMetallicRoughness plus KHR_materials_specular (specularFactor 1, so that F90 stays 1, and
+// specularColorFactor 0.08 * specular / f0FromIor(1.5) = 2 * specular) and KHR_materials_ior 1.5.
+Json materialToGltf(const Material& material);
+extern const char* const kMaterialExtensions[2];   // the extensions materialToGltf uses
+
+}  // namespace patina::gltf

@@ -1,0 +1,31 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace patina {
+
+// Linear RGB, float per channel, rows top to bottom.
+struct HdrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;   // width * height * 3
+};
+
+// Display-referred sRGB bytes, RGBA, rows top to bottom.
+struct LdrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> rgba;   // width * height * 4
+};
+
+// PNG bytes of the image (opaque RGB), or an exception on failure. Compressed on up to
+// `threads` threads (0: one per core, at most 8), each a band of rows (png_stream.h).
+std::vector<uint8_t> encodePng(const LdrImage& image, unsigned threads = 0);
+LdrImage decodePng(const std::vector<uint8_t>& bytes);   // throws std::runtime_error
+
+// Portable float map (little-endian "PF"), the usual linear HDR interchange format.
+std::vector<uint8_t> encodePfm(const HdrImage& image);
+HdrImage decodePfm(const std::vector<uint8_t>& bytes);   // throws std::runtime_error
+
+}  // namespace patina

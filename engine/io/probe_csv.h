@@ -1,0 +1,17 @@
+#pragma once
+// The probe command's files (README, "The command line").
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/probe.h"
+
+namespace patina {
+
+// Reads `px,py,pz,nx,ny,nz,vx,vy,vz` CSV; throws InputError naming file and line.
+std::vector<ProbeSample> parseProbeCsv(const std::string& text, const std::string& source);
+// `r,g,b` with 9 significant digits, one row per value.
+std::string formatRadianceCsv(const std::vector<glm::vec3>& radiance);
+
+}  // namespace patina

@@ -1,0 +1,299 @@
+#include "io/scene_file.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+
+#include "shading/brdf_models.h"
+#include "io/file_kinds.h"
+#include "io/file_bytes.h"
+#include "io/json_writer.h"
+#include "shading/shading.h"
+
+namespace patina {
+
+namespace {
+constexpr Range kUnit{0.0, 1.0};
+constexpr Range kNonNegative{0.0, 3.4e38};
+
+// The shortest decimal that reads back as the same float, so files say 0.8, not
+// 0.800000011920929.
+double toJson(float value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text - 1, value);
+    *result.ptr = '\0';
+    return std::strtod(text, nullptr);
+}
+
+Json toJson(glm::vec3 v) {
+    return Json::array({toJson(v.x), toJson(v.y), toJson(v.z)});
+}
+
+// Kept unknown keys go back after the known ones; a known key always wins over an extra.
+Json withExtras(Json json, const Json& extras) {
+    for (auto it = extras.begin(); it != extras.end(); ++it) {
+        if (!json.contains(it.key())) {
+            json[it.key()] = it.value();
+        }
+    }
+    return json;
+}
+
+// Whether `value` has more than `levels` levels of arrays and objects; looks no deeper.
+bool nestsDeeperThan(const Json& value, int levels) {
+    if (!value.is_structured()) {
+        return false;
+    }
+    if (levels == 0) {
+        return true;
+    }
+    for (const Json& child : value) {
+        if (nestsDeeperThan(child, levels - 1)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+Light lightFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                    std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    Light light;
+    const Json& typeValue = reader.required("type");
+    const auto type = typeValue.is_string() ? lightTypeFromName(typeValue.get<std::string>())
+                                            : std::nullopt;
+    if (!type) {
+        reader.fail("type", "unknown light type " + shortJson(typeValue) +
+                                " (expected \"point\", \"directional\" or \"hemisphere\")");
+    }
+    light.type = *type;
+    light.name = reader.string("name", std::string(lightTypeName(light.type)));
+    light.enabled = reader.boolean("enabled", true);
+    light.color = reader.vec3("color", light.color, kNonNegative);
+    light.intensity = reader.number("intensity", light.intensity, kNonNegative);
+    switch (light.type) {
+    case LightType::Point:
+        light.position = reader.vec3("position", light.position);
+        light.radius = reader.number("radius", light.radius, kNonNegative);
+        light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
+        break;
+    case LightType::Directional:
+        light.direction = reader.vec3("direction", light.direction);
+        if (glm::dot(light.direction, light.direction) == 0.0f) {
+            reader.fail("direction", "a directional light needs a non-zero direction");
+        }
+        break;
+    case LightType::Hemisphere:
+        light.sky = reader.vec3("sky", light.sky, kNonNegative);
+        light.ground = reader.vec3("ground", light.ground, kNonNegative);
+        break;
+    }
+    light.extras = reader.keepUnknown(warnings);
+    return light;
+}
+
+Camera cameraFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                      std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    Camera camera;
+    camera.position = reader.vec3("position", camera.position);
+    camera.target = reader.vec3("target", camera.target);
+    camera.fovYDegrees = reader.number("fovYDegrees", camera.fovYDegrees, {1.0, 179.0});
+    if (camera.position == camera.target) {
+        reader.fail("target", "the camera target equals its position");
+    }
+    camera.extras = reader.keepUnknown(warnings);
+    return camera;
+}
+
+DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
+                                const std::string& source, std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    DisplaySettings display;
+    display.exposure = reader.number("exposure", display.exposure, {-20.0, 20.0});
+    const std::string tonemap = reader.string("tonemap", "none");
+    const auto parsed = tonemapFromName(tonemap);
+    if (!parsed) {
+        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) +
+                                   " (expected \"none\", \"aces\" or \"reinhard\")");
+    }
+    display.tonemap = *parsed;
+    display.background = reader.vec3("background", display.background, kNonNegative);
+    display.extras = reader.keepUnknown(warnings);
+    return display;
+}
+
+Json lightToJson(const Light& light) {
+    Json json{{"type", lightTypeName(light.type)},
+              {"name", light.name},
+              {"enabled", light.enabled},
+              {"color", toJson(light.color)},
+              {"intensity", toJson(light.intensity)}};
+    switch (light.type) {
+    case LightType::Point:
+        json["position"] = toJson(light.position);
+        json["radius"] = toJson(light.radius);
+        json["attenuation"] = toJson(light.attenuation);
+        break;
+    case LightType::Directional: json["direction"] = toJson(light.direction); break;
+    case LightType::Hemisphere:
+        json["sky"] = toJson(light.sky);
+        json["ground"] = toJson(light.ground);
+        break;
+    }
+    return withExtras(json, light.extras);
+}
+}  // namespace
+
+Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
+                          bool requireHeader, std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, pointer, source);
+    if (requireHeader || reader.has("format") || reader.has("version")) {
+        reader.checkFormatAndVersion("patina-material", kMaterialFormatVersion);
+    }
+    Material material;
+    material.name = reader.string("name", material.name);
+    material.baseColor = reader.vec3("baseColor", material.baseColor, kUnit);
+    material.roughness = reader.number("roughness", material.roughness, kUnit);
+    material.specular = reader.number("specular", material.specular, kUnit);
+    material.metallic = reader.number("metallic", material.metallic, kUnit);
+    const std::string model = reader.string("model", std::string(brdfModel(material.model).name));
+    const auto modelId = brdfModelFromName(model);
+    if (!modelId) {
+        reader.fail("model", "unknown BRDF model " + shortJson(model) + " (known: " + brdfModelNames() + ")");
+    }
+    material.model = *modelId;
+    material.notes = reader.string("notes", material.notes);
+    material.extras = reader.keepUnknown(warnings);
+    // Saved inline in a scene (a screenshot's), the material is one level down: it must still
+    // fit in kMaxJsonNesting there, counting itself.
+    for (auto it = material.extras.begin(); it != material.extras.end(); ++it) {
+        if (nestsDeeperThan(it.value(), kMaxJsonNesting - 2)) {
+            reader.fail(it.key().c_str(), "nested deeper than " + std::to_string(kMaxJsonNesting - 2) +
+                                              " levels (a material must fit inside a scene)");
+        }
+    }
+    return material;
+}
+
+std::vector<std::filesystem::path> materialFilesIn(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        if (entry.path().extension() == ".json") {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    return materialFromJson(readJsonFile(path), "", path.string(), true, warnings);
+}
+
+Scene sceneFromJson(const Json& json, const std::string& source,
+                    const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings) {
+    JsonObjectReader reader(json, "", source);
+    reader.checkFormatAndVersion("patina-scene", kSceneFormatVersion);
+    Scene scene;
+    const std::string mesh = reader.string("mesh", "sphere");
+    if (const auto meshKind = meshKindFromName(mesh)) {
+        scene.mesh = *meshKind;
+    } else if (!gltfExtension(mesh).empty()) {
+        // Absolute, so that the scene reads the same file wherever it is written back to.
+        scene.meshFile = std::filesystem::absolute(baseDirectory / mesh).lexically_normal().string();
+    } else {
+        reader.fail("mesh", "unknown mesh " + shortJson(mesh) +
+                                " (expected \"sphere\", \"torus\" or a .gltf or .glb file)");
+    }
+    if (const Json* material = reader.child("material")) {
+        if (material->is_string()) {
+            const std::filesystem::path materialPath = baseDirectory / material->get<std::string>();
+            scene.material = loadMaterialFile(materialPath, warnings);
+        } else {
+            scene.material = materialFromJson(*material, "/material", source, false, warnings);
+        }
+    }
+    if (const Json* camera = reader.child("camera")) {
+        scene.camera = cameraFromJson(*camera, "/camera", source, warnings);
+    }
+    if (const Json* lights = reader.child("lights")) {
+        if (!lights->is_array()) {
+            reader.fail("lights", "expected an array of lights");
+        }
+        if (lights->size() > size_t(shader::MAX_LIGHTS)) {
+            reader.fail("lights", std::to_string(lights->size()) + " lights; at most " +
+                                      std::to_string(shader::MAX_LIGHTS) + " are supported");
+        }
+        for (size_t i = 0; i < lights->size(); ++i) {
+            scene.lights.push_back(
+                lightFromJson((*lights)[i], "/lights/" + std::to_string(i), source, warnings));
+        }
+    } else {
+        scene.lights.clear();
+    }
+    if (const Json* display = reader.child("display")) {
+        scene.display = displayFromJson(*display, "/display", source, warnings);
+    }
+    scene.extras = reader.keepUnknown(warnings);
+    return scene;
+}
+
+Scene loadSceneFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    return sceneFromJson(readJsonFile(path), path.string(), path.parent_path(), warnings);
+}
+
+Json materialToJson(const Material& material) {
+    Json json{{"format", "patina-material"},
+              {"version", kMaterialFormatVersion},
+              {"name", material.name},
+              {"baseColor", toJson(material.baseColor)},
+              {"roughness", toJson(material.roughness)},
+              {"specular", toJson(material.specular)},
+              {"metallic", toJson(material.metallic)},
+              {"model", brdfModel(material.model).name}};
+    if (!material.notes.empty()) {
+        json["notes"] = material.notes;
+    }
+    return withExtras(json, material.extras);
+}
+
+void saveMaterialFile(const std::filesystem::path& path, const Material& material) {
+    // The previous version goes to PATH.bak first, itself atomically: whenever this stops,
+    // both files hold a complete version.
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) {
+        std::filesystem::path backup = path;
+        backup += ".bak";
+        writeFileAtomic(backup, readFileBytes(path));
+    }
+    const std::string text = prettyJson(materialToJson(material));
+    writeFileAtomic(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+Json sceneToJson(const Scene& scene) {
+    Json lights = Json::array();
+    for (const Light& light : scene.lights) {
+        lights.push_back(lightToJson(light));
+    }
+    const Camera& camera = scene.camera;
+    const DisplaySettings& display = scene.display;
+    return withExtras(
+        Json{{"format", "patina-scene"},
+             {"version", kSceneFormatVersion},
+             {"mesh", scene.meshFile.empty() ? std::string(meshKindName(scene.mesh)) : scene.meshFile},
+             {"material", materialToJson(scene.material)},
+             {"camera", withExtras({{"position", toJson(camera.position)},
+                                    {"target", toJson(camera.target)},
+                                    {"fovYDegrees", toJson(camera.fovYDegrees)}},
+                                   camera.extras)},
+             {"lights", lights},
+             {"display", withExtras({{"exposure", toJson(display.exposure)},
+                                     {"tonemap", tonemapName(display.tonemap)},
+                                     {"background", toJson(display.background)}},
+                                    display.extras)}},
+        scene.extras);
+}
+
+}  // namespace patina

@@ -1,0 +1,21 @@
+#include "scene/light.h"
+
+#include "common/enum_names.h"
+
+namespace patina {
+
+std::string_view lightTypeName(LightType type) {
+    switch (type) {
+    case LightType::Point: return "point";
+    case LightType::Directional: return "directional";
+    case LightType::Hemisphere: return "hemisphere";
+    }
+    return "point";
+}
+
+std::optional<LightType> lightTypeFromName(std::string_view name) {
+    static const LightType all[] = {LightType::Point, LightType::Directional, LightType::Hemisphere};
+    return enumFromName(name, all, lightTypeName);
+}
+
+}  // namespace patina

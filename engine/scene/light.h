@@ -1,0 +1,40 @@
+#pragma once
+#include <string>
+#include <string_view>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "scene/json_value.h"
+
+namespace patina {
+
+enum class LightType { Point, Directional, Hemisphere };
+
+std::string_view lightTypeName(LightType type);
+std::optional<LightType> lightTypeFromName(std::string_view name);
+
+// One light of any type; fields a type does not use keep their defaults and are ignored.
+// c_light = color * intensity (spec section 1).
+struct Light {
+    LightType type = LightType::Point;
+    std::string name = "light";
+    bool enabled = true;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    // point
+    glm::vec3 position{0.0f, 2.0f, 2.0f};
+    float radius = 0.0f;                       // <= 0: no window
+    glm::vec3 attenuation{1.0f, 0.0f, 1.0f};   // a_c, a_l, a_q
+    // directional: where the light travels
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};
+    // hemisphere (colour acts as a tint on both)
+    glm::vec3 sky{1.0f};
+    glm::vec3 ground{0.0f};
+    // Keys of the file Patina does not know (another type's too), written back on save.
+    Json extras = Json::object();
+
+    bool operator==(const Light&) const = default;
+};
+
+}  // namespace patina

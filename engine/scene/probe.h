@@ -1,0 +1,22 @@
+#pragma once
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/material.h"
+#include "scene/scene.h"
+
+namespace patina {
+
+// One shading query: world position, normal, unit vector towards the camera.
+struct ProbeSample {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec3 toViewer;
+};
+
+// Linear radiance summed over the enabled lights, by the shared shading code compiled as C++.
+std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Light>& lights,
+                                  const std::vector<ProbeSample>& samples);
+
+}  // namespace patina

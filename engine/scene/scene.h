@@ -1,0 +1,57 @@
+#pragma once
+#include <string>
+#include <string_view>
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geometry/mesh.h"
+#include "scene/light.h"
+#include "scene/material.h"
+
+namespace patina {
+
+struct Camera {
+    glm::vec3 position{0.0f, 0.6f, 3.4f};
+    glm::vec3 target{0.0f};
+    float fovYDegrees = 45.0f;
+    Json extras = Json::object();   // unknown keys of the file, as Material::extras
+
+    bool operator==(const Camera&) const = default;
+};
+
+enum class Tonemap { None, Aces, Reinhard };
+std::string_view tonemapName(Tonemap tonemap);
+std::optional<Tonemap> tonemapFromName(std::string_view name);
+
+struct DisplaySettings {
+    float exposure = 0.0f;                         // stops
+    Tonemap tonemap = Tonemap::None;
+    glm::vec3 background{0.02f, 0.02f, 0.025f};    // linear
+    Json extras = Json::object();
+
+    bool operator==(const DisplaySettings&) const = default;
+};
+
+
+// Everything a render needs: plain data, no graph.
+struct Scene {
+    MeshKind mesh = MeshKind::Sphere;
+    // A .gltf or .glb file shown instead of `mesh` when not empty; an absolute path (a scene
+    // file's relative path is resolved against the scene file's folder when it is read).
+    std::string meshFile;
+    Material material;
+    Camera camera;
+    std::vector<Light> lights;
+    DisplaySettings display;
+    Json extras = Json::object();   // top-level unknown keys; the parts keep their own
+
+    bool operator==(const Scene&) const = default;
+};
+
+// The embedded default: a sphere lit by a warm point light, a cool directional light and a
+// sky/ground hemisphere light.
+Scene defaultScene();
+
+}  // namespace patina

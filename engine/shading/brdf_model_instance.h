@@ -1,0 +1,46 @@
+// One BRDF model's permutation of shaders/shared/brdf_model.glsl, compiled as C++. No include guard:
+// engine/shading/brdf_models.cpp includes this once per model and precision, inside the namespace of the
+// shared types (patina::shader or patina::shader_f64), with PATINA_INSTANCE set to an
+// identifier of PATINA_BRDF_MODELS. It opens namespace model_<identifier>.
+#define PATINA_D PATINA_APPLY(PATINA_TERM_D, (PATINA_TERMS_OF(PATINA_INSTANCE)))
+#define PATINA_V PATINA_APPLY(PATINA_TERM_V, (PATINA_TERMS_OF(PATINA_INSTANCE)))
+#define PATINA_F PATINA_APPLY(PATINA_TERM_F, (PATINA_TERMS_OF(PATINA_INSTANCE)))
+#define PATINA_FD PATINA_APPLY(PATINA_TERM_FD, (PATINA_TERMS_OF(PATINA_INSTANCE)))
+#define PATINA_MS PATINA_APPLY(PATINA_TERM_MS, (PATINA_TERMS_OF(PATINA_INSTANCE)))
+
+namespace PATINA_MODEL_NAMESPACE(PATINA_INSTANCE) {
+
+inline float energyTexel(int x, int y) {
+    return energyTable(BrdfModelId::PATINA_INSTANCE)[size_t(y) * size_t(kEnergyTableSize) + size_t(x)];
+}
+
+#include "energy_table.glsl"
+#include "brdf_model.glsl"
+
+// D * V with F = 1 and no compensation: the lobe the white furnace integrates (C++ only).
+inline float specularLobe(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+    vec3 H = safeNormalize(L + V);
+    float NoV = max(dot(N, V), MIN_N_DOT_V);
+    float NoL = clamp(dot(N, L), 0.0f, 1.0f);
+    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
+    return distribution(NoH, cross(N, H), material.alpha) * visibility(NoV, NoL, material);
+}
+
+// The model's D, V and F for one configuration, for plots (C++ only).
+inline SpecularTerms specularTerms(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+    vec3 H = safeNormalize(L + V);
+    float NoV = max(dot(N, V), MIN_N_DOT_V);
+    float NoL = clamp(dot(N, L), 0.0f, 1.0f);
+    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
+    return SpecularTerms(distribution(NoH, cross(N, H), material.alpha), visibility(NoV, NoL, material),
+                         fresnel(material.f0, clamp(dot(V, H), 0.0f, 1.0f)));
+}
+
+}  // namespace
+
+#undef PATINA_D
+#undef PATINA_V
+#undef PATINA_F
+#undef PATINA_FD
+#undef PATINA_MS
+#undef PATINA_INSTANCE

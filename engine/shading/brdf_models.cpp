@@ -1,0 +1,153 @@
+#include "shading/brdf_models.h"
+
+#include "shading/energy_table.h"
+#include "shading/shading_f16.h"
+#include "shading/shading_f64.h"
+
+// Every model's permutation in fp32, fp64 and emulated fp16 (`float` redefined around the
+// include, as engine/shading/shading_f64.h and shading_f16.h do for the shared types).
+namespace patina::shader {
+#include "shading/brdf_model_instances.h"
+}  // namespace patina::shader
+
+namespace patina::shader_f64 {
+#define float double
+#include "shading/brdf_model_instances.h"
+#undef float
+}  // namespace patina::shader_f64
+
+namespace patina::shader_f16 {
+#define float Half
+#include "shading/brdf_model_instances.h"
+#undef float
+}  // namespace patina::shader_f16
+
+namespace patina {
+
+namespace {
+constexpr BrdfModelInfo kModels[] = {
+#define PATINA_MODEL_INFO(id, name, summary) {BrdfModelId::id, name, {PATINA_TERMS_OF(id)}, summary},
+    PATINA_BRDF_MODELS(PATINA_MODEL_INFO)
+#undef PATINA_MODEL_INFO
+};
+}  // namespace
+
+std::span<const BrdfModelInfo> brdfModels() {
+    return kModels;
+}
+
+const BrdfModelInfo& brdfModel(BrdfModelId id) {
+    return kModels[size_t(id)];
+}
+
+std::optional<BrdfModelId> brdfModelFromName(std::string_view name) {
+    for (const BrdfModelInfo& model : kModels) {
+        if (model.name == name) {
+            return model.id;
+        }
+    }
+    return std::nullopt;
+}
+
+std::string brdfModelNames() {
+    std::string names;
+    for (const BrdfModelInfo& model : kModels) {
+        names += (names.empty() ? "" : ", ") + std::string(model.name);
+    }
+    return names;
+}
+
+std::vector<std::string> brdfModelDefines(BrdfModelId id) {
+    const BrdfTerms& t = brdfModel(id).terms;
+    return {"PATINA_D " + std::to_string(t.d), "PATINA_V " + std::to_string(t.v),
+            "PATINA_F " + std::to_string(t.f), "PATINA_FD " + std::to_string(t.fd),
+            "PATINA_MS " + std::to_string(t.ms)};
+}
+
+// Runtime dispatch to the compile-time permutations: one case per model.
+#define PATINA_CASE(space, model, call) \
+    case BrdfModelId::model:            \
+        return space::PATINA_MODEL_NAMESPACE(model)::call;
+
+shader::BrdfValue evaluateBrdf(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
+                               glm::vec3 V, glm::vec3 L) {
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary) PATINA_CASE(shader, model, evaluateBrdf(material, N, V, L))
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    return shader::evaluateBrdf(material, N, V, L);
+}
+
+shader::SpecularTerms specularTerms(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
+                                    glm::vec3 V, glm::vec3 L) {
+    switch (id) {
+#define PATINA_TERMS(model, name, summary) PATINA_CASE(shader, model, specularTerms(material, N, V, L))
+        PATINA_BRDF_MODELS(PATINA_TERMS)
+#undef PATINA_TERMS
+    }
+    return shader::model_Epic::specularTerms(material, N, V, L);
+}
+
+glm::vec3 shadeLight(BrdfModelId id, const shader::PackedLight& light, const shader::SurfaceMaterial& material,
+                     glm::vec3 P, glm::vec3 N, glm::vec3 V) {
+    switch (id) {
+#define PATINA_SHADE(model, name, summary) PATINA_CASE(shader, model, shadeLight(light, material, P, N, V))
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return shader::shadeLight(light, material, P, N, V);
+}
+
+BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V,
+                             glm::dvec3 L) {
+    const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(
+        glm::dvec3(material.baseColor), material.roughness, material.specular, material.metallic);
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary)                                                   \
+    case BrdfModelId::model: {                                                                 \
+        const shader_f64::BrdfValue f = shader_f64::PATINA_MODEL_NAMESPACE(model)::evaluateBrdf(m, N, V, L); \
+        return {f.diffuse, f.specular};                                                        \
+    }
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    return {};
+}
+
+float tabulatedAlbedo(BrdfModelId id, float NoV, float roughness) {
+    switch (id) {
+#define PATINA_LOOKUP(model, name, summary) PATINA_CASE(shader, model, energyTableLookup(NoV, roughness))
+        PATINA_BRDF_MODELS(PATINA_LOOKUP)
+#undef PATINA_LOOKUP
+    }
+    return 1.0f;
+}
+
+glm::dvec3 reflectedF16(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {
+    auto half3 = [](glm::dvec3 v) { return HalfVec3(Half(v.x), Half(v.y), Half(v.z)); };
+    const shader_f16::SurfaceMaterial m = shader_f16::deriveSurfaceMaterial(
+        half3(glm::dvec3(material.baseColor)), Half(material.roughness), Half(material.specular), Half(material.metallic));
+    const HalfVec3 n = half3(N), v = half3(V), l = half3(L);
+    shader_f16::BrdfValue f{};
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary) \
+    case BrdfModelId::model: f = shader_f16::PATINA_MODEL_NAMESPACE(model)::evaluateBrdf(m, n, v, l); break;
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    const HalfVec3 reflected = (f.diffuse + f.specular) * half_glsl::max(half_glsl::dot(n, l), Half(0.0f));
+    return {double(reflected.x), double(reflected.y), double(reflected.z)};
+}
+
+double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {
+    const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(glm::dvec3(1.0), roughness, 0.5, 0.0);
+    switch (id) {
+#define PATINA_LOBE(model, name, summary) PATINA_CASE(shader_f64, model, specularLobe(m, N, V, L))
+        PATINA_BRDF_MODELS(PATINA_LOBE)
+#undef PATINA_LOBE
+    }
+    return 0.0;
+}
+
+}  // namespace patina

@@ -1,0 +1,66 @@
+#pragma once
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "shading/brdf_model_id.h"
+#include "shading/material_parameters.h"
+#include "shading/shading.h"
+
+namespace patina {
+
+constexpr size_t brdfModelCount() {
+#define PATINA_MODEL_COUNT(id, name, summary) +1
+    return 0 PATINA_BRDF_MODELS(PATINA_MODEL_COUNT);
+#undef PATINA_MODEL_COUNT
+}
+
+struct BrdfTerms {
+    int d, v, f, fd, ms;
+};
+
+struct BrdfModelInfo {
+    BrdfModelId id;
+    std::string_view name;
+    BrdfTerms terms;
+    std::string_view summary;
+    // Single scattering with exact Smith visibility: its white-furnace albedo must stay <= 1.
+    bool energyConserving() const { return (terms.v == 2 || terms.v == 3) && terms.ms == 0 && terms.fd == 0; }
+    bool multipleScattering() const { return terms.ms != 0; }
+};
+
+std::span<const BrdfModelInfo> brdfModels();
+const BrdfModelInfo& brdfModel(BrdfModelId id);
+std::optional<BrdfModelId> brdfModelFromName(std::string_view name);
+// "epic, epic-standard-d, ...": for messages.
+std::string brdfModelNames();
+// The GLSL defines that compile this model's permutation, e.g. {"PATINA_V 3", ...}.
+std::vector<std::string> brdfModelDefines(BrdfModelId id);
+
+// The model's BRDF on the CPU, fp32: the very GLSL of shaders/shared/brdf_model.glsl compiled for it.
+shader::BrdfValue evaluateBrdf(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
+                               glm::vec3 V, glm::vec3 L);
+shader::SpecularTerms specularTerms(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
+                                    glm::vec3 V, glm::vec3 L);
+glm::vec3 shadeLight(BrdfModelId id, const shader::PackedLight& light, const shader::SurfaceMaterial& material,
+                     glm::vec3 P, glm::vec3 N, glm::vec3 V);
+
+// The same in double precision (engine/shading/shading_f64.h): the guarded code without fp32 rounding.
+struct BrdfValueF64 {
+    glm::dvec3 diffuse;
+    glm::dvec3 specular;
+};
+BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V,
+                             glm::dvec3 L);
+// f * NoL with every operation in emulated binary16 (engine/shading/half.h): the fp16 precision row.
+glm::dvec3 reflectedF16(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L);
+
+// D * V of the model's specular lobe (F = 1, no compensation), double: what the white furnace
+// and the energy table integrate.
+double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L);
+
+}  // namespace patina

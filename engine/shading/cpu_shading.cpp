@@ -1,0 +1,24 @@
+#include "shading/cpu_shading.h"
+
+#include "shading/brdf_models.h"
+
+namespace patina {
+
+shader::SurfaceMaterial surfaceMaterial(const MaterialParameters& material) {
+    return shader::deriveSurfaceMaterial(material.baseColor, material.roughness,
+                                         material.specular, material.metallic);
+}
+
+glm::vec3 shadePoint(BrdfModelId model, const shader::SurfaceMaterial& material,
+                     const std::vector<shader::PackedLight>& lights, glm::vec3 position,
+                     glm::vec3 normal, glm::vec3 toViewer) {
+    const glm::vec3 N = shader::safeNormalize(normal);
+    const glm::vec3 V = shader::safeNormalize(toViewer);
+    glm::vec3 radiance(0.0f);
+    for (const shader::PackedLight& light : lights) {
+        radiance += shadeLight(model, light, material, position, N, V);
+    }
+    return radiance;
+}
+
+}  // namespace patina

@@ -1,0 +1,19 @@
+#pragma once
+#include <glm/vec3.hpp>
+
+#include "shading/brdf_model_id.h"
+
+namespace patina {
+
+// Karis 2013's material as the BRDF reads it: base colour (linear RGB) and three scalars, each
+// in [0, 1], and the model that shades them. scene/material.h adds what a file keeps beside it.
+struct MaterialParameters {
+    glm::vec3 baseColor{0.8f, 0.25f, 0.15f};
+    float roughness = 0.4f;
+    float specular = 0.5f;
+    float metallic = 0.0f;
+    BrdfModelId model = BrdfModelId::Epic;   // how it is shaded (shading/brdf_models.h)
+    bool operator==(const MaterialParameters&) const = default;
+};
+
+}  // namespace patina

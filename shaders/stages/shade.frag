@@ -1,0 +1,142 @@
+// Shades the mesh (or, with PATINA_PROBE, one probe row per pixel) in linear light.
+// PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
+// renderer adds the passes with blending (the seed's multi-pass design). PATINA_KARIS_POINTS:
+// every point light has KARIS_ATTENUATION, so single need not read the coefficients.
+// PATINA_NO_POINT_LIGHTS, PATINA_NO_DIRECTIONAL_LIGHTS, PATINA_NO_HEMISPHERE_LIGHTS: single
+// leaves out the loop of a type the scene lacks (ShadingPrograms::singlePassFor).
+// PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as
+// SHADE_POINT(light, windowed, karis), SHADE_DIRECTIONAL(light) and SHADE_HEMISPHERE(light), so
+// the shader has no light loop and no code for a type the scene lacks; `light` is FLAT(i), a
+// flat input from mesh.vert, or BLOCK(i), read from the block (engine/gl/shader_specialisation.h
+// builds the list and says why).
+#ifdef PATINA_PROBE
+flat in vec3 vPosition;
+flat in vec3 vNormal;
+flat in vec3 vView;
+#else
+in vec3 vPosition;
+in vec3 vNormal;
+uniform vec3 uCameraPosition;
+#endif
+
+uniform vec3 uBaseColor;
+uniform float uRoughness;
+uniform float uSpecular;
+uniform float uMetallic;
+
+#ifdef PATINA_FLAT_LIGHT_COUNT
+// Lights 0 to PATINA_FLAT_LIGHT_COUNT - 1 as mesh.vert's FLAT_* wrote them: two rows each, the
+// fields of the light's type (radiance or sky, and 1/radius; position, direction or ground).
+flat in vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
+PackedLight flatLight(int i) {
+    PackedLight light;
+    light.type = -1;   // not read: each SHADE_* macro names its type
+    light.unused0 = 0.0f;
+    light.unused1 = 0.0f;
+    light.unused2 = 0.0f;
+    light.unused3 = 0.0f;
+    light.radiance = vFlatLight[2 * i].xyz;
+    light.sky = vFlatLight[2 * i].xyz;
+    light.inverseRadius = vFlatLight[2 * i].w;
+    light.position = vFlatLight[2 * i + 1].xyz;
+    light.directionToLight = vFlatLight[2 * i + 1].xyz;
+    light.ground = vFlatLight[2 * i + 1].xyz;
+    // Read only for a point light with other coefficients than Karis's (not a constant).
+    light.attenuation = uLights[i].attenuation;
+    return light;
+}
+#define FLAT(i) flatLight(i)
+#endif
+#define BLOCK(i) uLights[i]
+
+#ifndef PATINA_SINGLE_PASS
+uniform int uLightIndex;
+#endif
+
+// Alpha: which strip wrote a sample (RenderTargets::SampleStamp). Only MSAA samples need it;
+// elsewhere it is not read, and a uniform costs llvmpipe a gather.
+#if !defined(PATINA_PROBE) && !defined(PATINA_DISPLAY_OUTPUT)
+#define PATINA_STAMPED
+uniform float uSampleStamp;
+#endif
+
+layout(location = 0) out vec4 fragColor;   // linear radiance
+#ifdef PATINA_DISPLAY_OUTPUT
+// Without MSAA there is nothing to resolve, so the pass also writes the display value itself
+// (display.glsl) and the renderer needs no display pass.
+uniform float uExposure;
+uniform int uTonemap;
+layout(location = 1) out vec4 displayColor;
+#endif
+
+void main() {
+    SurfaceMaterial material = deriveSurfaceMaterial(uBaseColor, uRoughness, uSpecular, uMetallic);
+    vec3 N = safeNormalize(vNormal);
+#ifdef PATINA_PROBE
+    vec3 V = safeNormalize(vView);
+#else
+    vec3 V = safeNormalize(uCameraPosition - vPosition);
+#endif
+    vec3 radiance = vec3(0.0f);
+#if defined(PATINA_SPECIALISED)
+#define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V);
+#define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V);
+#define SHADE_HEMISPHERE(light) radiance += shadeHemisphereLight(light, material, N, V);
+// The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for a light's
+// direction, with none of the light handling above (no type, no attenuation, no branch).
+// (One line: GLSL 3.30 has no line continuation.)
+#define BRDF_ONLY(light) { vec3 L = light.directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += light.radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
+    PATINA_LIGHTS
+#elif defined(PATINA_SINGLE_PASS)
+    // Lights come grouped by type (engine/scene/light_packing.h): a loop per type, no type branch.
+    // Each loop tests at its end. llvmpipe has no jump for a test all lanes agree on: a body
+    // runs until no lane is left in the loop, so a test at the top costs one more pass of the
+    // body with every lane off. The `if` costs such a pass when a type has no lights, so the
+    // renderer compiles out the loop of a type the scene lacks.
+#ifdef PATINA_KARIS_POINTS
+    const bool karisPoints = true;   // every point light has KARIS_ATTENUATION
+#else
+    const bool karisPoints = false;
+#endif
+    int first = 0;
+    int end = uLightCount.y;
+#ifndef PATINA_NO_POINT_LIGHTS
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+        } while (++i < end);
+    }
+#endif
+    first = end;
+    end += uLightCount.z;
+#ifndef PATINA_NO_DIRECTIONAL_LIGHTS
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadeDirectionalLight(uLights[i], material, N, V);
+        } while (++i < end);
+    }
+#endif
+    first = end;
+    end += uLightCount.w;
+#ifndef PATINA_NO_HEMISPHERE_LIGHTS
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadeHemisphereLight(uLights[i], material, N, V);
+        } while (++i < end);
+    }
+#endif
+#else
+    radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
+#endif
+#ifdef PATINA_STAMPED
+    fragColor = vec4(radiance, uSampleStamp);
+#else
+    fragColor = vec4(radiance, 1.0f);
+#endif
+#ifdef PATINA_DISPLAY_OUTPUT
+    displayColor = vec4(displayTransform(radiance, uExposure, uTonemap), 1.0f);
+#endif
+}

@@ -1,0 +1,234 @@
+// bench, stability, furnace and bench-render: their outputs exist, parse and have one row per
+// model (or path and light count), and the shipped models are finite and non-negative
+// everywhere in the stability grid.
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "shading/brdf_models.h"
+#include "shading/half.h"
+#include "cli_runner.h"
+#include "image/image.h"
+#include "scene/light_packing.h"
+#include "bench/render_bench.h"
+#include "scratch_test.h"
+#include "accuracy/stability.h"
+#include "test_support.h"
+#include "io/file_bytes.h"
+
+namespace patina {
+namespace {
+
+// Rows of a CSV file split at commas, header first.
+std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path) {
+    std::ifstream file(path);
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(file, line)) {
+        std::vector<std::string> cells;
+        std::stringstream stream(line);
+        std::string cell;
+        while (std::getline(stream, cell, ',')) {
+            cells.push_back(cell);
+        }
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+class AccuracyCommands : public test::ScratchTest {};
+
+// Every path at every light count, both scale axes, every target with a finite value, the
+// charts. Times are not checked: benchmarks, not timed tests.
+TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
+    const test::CliRun run = test::runPatina("bench-render --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("render_bench.csv"));
+    ASSERT_FALSE(rows.empty());
+    EXPECT_EQ(rows[0][0], "section");
+    std::map<std::string, int> perSeries;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), rows[0].size());
+        perSeries[rows[i][0] + " " + rows[i][1] + " " + rows[i][2]] += 1;
+        for (size_t c = 7; c < rows[i].size(); ++c) {
+            EXPECT_GT(std::stod(rows[i][c]), 0.0) << rows[0][c] << " in row " << i;
+        }
+    }
+    for (const char* series : {"lights multi point", "lights single point", "lights specialised point",
+                               "lights single directional", "lights single point-other-coefficients",
+                               "lights specialised point-other-coefficients"}) {
+        EXPECT_EQ(perSeries[series], 4) << series;   // --quick: 1, 3, 8 and 16 lights
+    }
+    // The floor also at the flat-light slots, where they fall between (14 on llvmpipe).
+    test::glContext();
+    const int slots = int(Renderer().flatLightSlots());
+    const bool between = slots > 3 && slots < 16 && slots != 8;
+    EXPECT_EQ(perSeries["lights brdf-floor point"], between ? 5 : 4) << slots << " slots";
+    EXPECT_EQ(perSeries["resolution single "], 2);
+    EXPECT_EQ(perSeries["triangles single "], 2);
+    EXPECT_EQ(perSeries["flat-lights specialised-flat "], 2);
+    EXPECT_EQ(perSeries["flat-lights specialised-block "], 2);
+    for (const char* series : {"culling single ", "culling single-every-face ", "culling multi ",
+                               "culling multi-every-face "}) {
+        EXPECT_EQ(perSeries[series], 1) << series;
+    }
+    const std::string targets = read("render_targets.csv");
+    for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
+                               "single's cost per added point light /",
+                               "single's cost per added point light with other coefficients",
+                               "specialised's cost per added point light with other coefficients", "separate renders",
+                               "peak RSS"}) {
+        EXPECT_NE(targets.find(target), std::string::npos) << target;
+    }
+    EXPECT_EQ(targets.find("nan"), std::string::npos) << targets;
+    EXPECT_GT(decodePng(readFileBytes(path("render_lights.png"))).width, 100);
+    EXPECT_GT(decodePng(readFileBytes(path("render_scale.png"))).width, 100);
+}
+
+TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
+    for (int count : {0, 1, 3, 8, 32}) {
+        const Scene scene = renderBenchScene(count, AddedLights::Directionals);
+        ASSERT_EQ(int(scene.lights.size()), count);
+        for (const Light& light : brdfFloorScene(scene).lights) {
+            EXPECT_EQ(light.type, LightType::Directional);
+            EXPECT_GT(glm::length(light.direction), 0.0f);
+        }
+    }
+    const Scene points = renderBenchScene(8);
+    EXPECT_EQ(points.lights.back().type, LightType::Point);
+    EXPECT_TRUE(hasKarisAttenuation(packLight(points.lights.back())));
+    const Scene others = renderBenchScene(8, AddedLights::PointsOtherCoefficients);
+    EXPECT_EQ(others.lights.back().type, LightType::Point);
+    EXPECT_FALSE(hasKarisAttenuation(packLight(others.lights.back())));
+    EXPECT_EQ(points.lights[1].type, defaultScene().lights[1].type);   // the default scene's first
+}
+
+TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
+    RenderBenchResult result;
+    result.flatLightSlots = 14;
+    auto add = [&](PassMode path, AddedLights added, int lights, double frame) {
+        result.lightRows.push_back({path, added, lights, {0.0, 0.0, frame}});
+    };
+    add(PassMode::Multi, AddedLights::Points, 8, 100.0);
+    add(PassMode::Single, AddedLights::Points, 8, 30.0);
+    add(PassMode::Single, AddedLights::Points, 3, 20.0);
+    add(PassMode::Specialised, AddedLights::Points, 3, 16.0);
+    add(PassMode::Single, AddedLights::Points, 16, 30.0 + 8 * 3.0);
+    // The floor's cost per light is taken from 3 lights to the flat slots (14, all flat inputs),
+    // 2 here; past them it grows faster (lights from the block), which the targets leave out.
+    add(PassMode::BrdfFloor, AddedLights::Points, 3, 4.0);
+    add(PassMode::BrdfFloor, AddedLights::Points, 8, 4.0 + 5 * 2.5);   // not a point of the slope
+    add(PassMode::BrdfFloor, AddedLights::Points, 14, 4.0 + 11 * 2.0);
+    add(PassMode::BrdfFloor, AddedLights::Points, 16, 26.0 + 2 * 3.0);
+    add(PassMode::Single, AddedLights::Directionals, 8, 20.0);
+    add(PassMode::Single, AddedLights::Directionals, 16, 20.0 + 8 * 2.4);
+    add(PassMode::Specialised, AddedLights::Points, 8, 20.0);
+    add(PassMode::Specialised, AddedLights::Points, 16, 20.0 + 8 * 2.8);
+    add(PassMode::Single, AddedLights::PointsOtherCoefficients, 8, 40.0);
+    add(PassMode::Single, AddedLights::PointsOtherCoefficients, 16, 40.0 + 8 * 4.4);
+    add(PassMode::Specialised, AddedLights::PointsOtherCoefficients, 8, 32.0);
+    add(PassMode::Specialised, AddedLights::PointsOtherCoefficients, 16, 32.0 + 8 * 3.6);
+    const std::vector<TargetCheck> targets = renderBenchTargets(result);
+    ASSERT_EQ(targets.size(), 7u);
+    EXPECT_DOUBLE_EQ(targets[0].value, 0.3);
+    EXPECT_TRUE(targets[0].met);
+    EXPECT_DOUBLE_EQ(targets[1].value, 0.8);
+    EXPECT_NEAR(targets[2].value, 1.2, 1e-12);   // directional: 2.4 / 2
+    EXPECT_TRUE(targets[2].met);
+    EXPECT_NEAR(targets[3].value, 1.5, 1e-12);   // point: 3 / 2
+    EXPECT_FALSE(targets[3].met);
+    EXPECT_NEAR(targets[4].value, 2.2, 1e-12);   // single, points with other coefficients
+    EXPECT_NE(targets[4].name.find("single's cost per added point light with other"), std::string::npos);
+    EXPECT_NEAR(targets[5].value, 1.4, 1e-12);
+    EXPECT_NEAR(targets[6].value, 1.8, 1e-12);   // specialised, other coefficients: 3.6 / 2
+    EXPECT_NE(targets[6].name.find("specialised's cost per added point light with other"), std::string::npos);
+}
+
+TEST_F(AccuracyCommands, BenchWritesOneRowPerModelAndTheChart) {
+    const test::CliRun run = test::runPatina("bench --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("bench.csv"));
+    ASSERT_EQ(rows.size(), brdfModelCount() + 1);
+    EXPECT_EQ(rows[0][0], "model");
+    for (size_t i = 1; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), rows[0].size());
+        EXPECT_TRUE(brdfModelFromName(rows[i][0]).has_value()) << rows[i][0];
+        for (size_t c = 1; c < rows[i].size(); ++c) {
+            EXPECT_TRUE(std::isfinite(std::stod(rows[i][c]))) << rows[i][0] << " " << rows[0][c];
+        }
+    }
+    // The reference has no physical error; every other model some.
+    for (size_t i = 1; i < rows.size(); ++i) {
+        const double physical = std::stod(rows[i][7]);
+        EXPECT_EQ(physical == 0.0, rows[i][0] == "reference") << rows[i][0];
+    }
+    EXPECT_NE(read("speed_accuracy.svg").find("<svg"), std::string::npos);
+    EXPECT_GT(decodePng(readFileBytes(path("speed_accuracy.png"))).width, 100);
+}
+
+TEST_F(AccuracyCommands, StabilityWritesTheTableAndAHeatMapPerModel) {
+    const test::CliRun run = test::runPatina("stability --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("stability.csv"));
+    ASSERT_EQ(rows.size(), 4 * brdfModelCount() + 1);   // fp64, fp32 CPU, fp16 CPU, fp32 GPU
+    for (const BrdfModelInfo& model : brdfModels()) {
+        EXPECT_TRUE(std::filesystem::exists(path("stability_" + std::string(model.name) + ".png"))) << model.name;
+    }
+}
+
+TEST_F(AccuracyCommands, FurnaceWritesCurvesForEveryModel) {
+    const test::CliRun run = test::runPatina("furnace --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("furnace.csv"));
+    EXPECT_EQ(rows.size(), brdfModelCount() * 2 * 11 + 1);   // two mu, 11 roughness steps
+    EXPECT_TRUE(std::filesystem::exists(path("furnace.png")));
+    EXPECT_EQ(test::runPatina("furnace --out-dir " + path("missing").string(), dir_).exitCode, 3);
+}
+
+TEST(Stability, ShippedModelsAreFiniteAndNonNegativeEverywhere) {
+    // What ships runs in fp32 (GPU) and fp64; fp16 is the study of where precision runs out.
+    test::glContext();
+    for (const StabilityRow& row : runStability(false)) {
+        if (row.precision == Precision::Fp16Cpu) {
+            continue;
+        }
+        EXPECT_EQ(row.grid.nan, 0u) << row.model << " " << precisionName(row.precision);
+        EXPECT_EQ(row.grid.inf, 0u) << row.model << " " << precisionName(row.precision);
+        EXPECT_EQ(row.grid.negative, 0u) << row.model << " " << precisionName(row.precision);
+        EXPECT_EQ(row.specialCases.nan + row.specialCases.inf + row.specialCases.negative, 0u) << row.model;
+    }
+}
+
+TEST(HalfPrecision, RoundsLikeBinary16) {
+    EXPECT_EQ(roundToHalf(65504.0f), 65504.0f);                    // the largest half
+    EXPECT_TRUE(std::isinf(roundToHalf(65520.0f)));                // halfway past it: infinity
+    EXPECT_EQ(roundToHalf(1.0f + 1.0f / 1024.0f), 1.0f + 1.0f / 1024.0f);   // 10 fraction bits
+    EXPECT_EQ(roundToHalf(1.0f + 1.0f / 2048.0f), 1.0f);          // a tie goes to even
+    EXPECT_EQ(roundToHalf(1.0f + 3.0f / 2048.0f), 1.0f + 2.0f / 1024.0f);
+    EXPECT_EQ(roundToHalf(std::ldexp(1.0f, -24)), std::ldexp(1.0f, -24));   // smallest subnormal
+    EXPECT_EQ(roundToHalf(std::ldexp(1.0f, -26)), 0.0f);
+    EXPECT_EQ(float(Half(0.1f) + Half(0.2f)), roundToHalf(roundToHalf(0.1f) + roundToHalf(0.2f)));
+}
+
+TEST(HalfPrecision, FloorsAndErrorsShowInTheStabilityTable) {
+    test::glContext();
+    double halfError = 0.0, floatError = 0.0;
+    for (const StabilityRow& row : runStability(true)) {
+        if (row.model == "epic" && row.precision == Precision::Fp16Cpu) {
+            halfError = row.grid.maxRelativeError;
+        }
+        if (row.model == "epic" && row.precision == Precision::Fp32Cpu) {
+            floatError = row.grid.maxRelativeError;
+        }
+    }
+    // Half has 11 significant bits to float's 24: its error is orders of magnitude larger.
+    EXPECT_GT(halfError, 100.0 * floatError);
+    EXPECT_GT(halfError, 1e-3);
+}
+
+}  // namespace
+}  // namespace patina

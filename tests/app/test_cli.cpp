@@ -1,0 +1,176 @@
+// The `patina` program end to end: outputs, exit codes (2 usage, 3 bad input) and messages,
+// and no output file left behind by a failure.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "cli_runner.h"
+#include "image/image.h"
+#include "scratch_test.h"
+#include "io/file_bytes.h"
+
+namespace patina {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Cli : public test::ScratchTest {
+protected:
+    test::CliRun run(const std::string& arguments) const { return test::runPatina(arguments, dir_); }
+};
+
+TEST_F(Cli, RendersTheDefaultSceneToPngAndPfm) {
+    const test::CliRun r = run("render --width 96 --height 64 --out " + path("a.png").string() + " --hdr " +
+                      path("a.pfm").string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    const LdrImage png = decodePng(readFileBytes(path("a.png")));
+    EXPECT_EQ(png.width, 96);
+    EXPECT_EQ(png.height, 64);
+    const HdrImage pfm = decodePfm(readFileBytes(path("a.pfm")));
+    EXPECT_EQ(pfm.width, 96);
+    EXPECT_GT(pfm.rgb[(32 * 96 + 48) * 3], 0.0f);
+}
+
+TEST_F(Cli, MultiPassGivesTheSamePicture) {
+    ASSERT_EQ(run("render --width 64 --height 64 --passes multi --out " + path("m.png").string()).exitCode, 0);
+    ASSERT_EQ(run("render --width 64 --height 64 --passes single --out " + path("s.png").string()).exitCode, 0);
+    const LdrImage m = decodePng(readFileBytes(path("m.png")));
+    const LdrImage s = decodePng(readFileBytes(path("s.png")));
+    int worst = 0;
+    for (size_t i = 0; i < m.rgba.size(); ++i) {
+        worst = std::max(worst, std::abs(int(m.rgba[i]) - int(s.rgba[i])));
+    }
+    EXPECT_LE(worst, 1);
+}
+
+TEST_F(Cli, BadSceneExitsThreeNamingTheProblemAndWritesNothing) {
+    write("bad.json", R"({"format": "patina-scene", "version": 1, "lights": [{"type": "laser"}]})");
+    const test::CliRun r = run("render --scene " + path("bad.json").string() + " --out " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("bad.json: /lights/0/type: unknown light type"), std::string::npos)
+        << r.stderrText;
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+TEST_F(Cli, BadInputsExitThree) {
+    write("syntax.json", "{\n\"format\": \"patina-material\",\n\"version\": 1,,\n}");
+    write("range.json", R"({"format": "patina-material", "version": 1, "metallic": 2})");
+    const std::string out = " --out " + path("x.png").string();
+    test::CliRun r = run("render --material " + path("syntax.json").string() + out);
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("syntax.json:3:"), std::string::npos) << r.stderrText;
+    r = run("render --material " + path("range.json").string() + out);
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("/metallic: value 2 is outside [0, 1]"), std::string::npos) << r.stderrText;
+    r = run("render --scene " + path("missing.json").string() + out);
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("missing.json"), std::string::npos);
+    r = run("render --out " + path("no/such/dir/x.png").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+    EXPECT_EQ(run("render").exitCode, 2);                                   // no --out
+    EXPECT_EQ(run("render --passes triple --out x.png").exitCode, 2);
+    EXPECT_EQ(run("render --width 0 --out x.png").exitCode, 2);
+    EXPECT_EQ(run("--paint").exitCode, 2);
+    EXPECT_EQ(run("paint").exitCode, 3);   // not a subcommand: a file for the editor, missing
+    EXPECT_EQ(run("render --help").exitCode, 0);
+    EXPECT_EQ(run("probe --help").exitCode, 0);
+    EXPECT_EQ(run("lobe --help").exitCode, 0);
+}
+
+TEST_F(Cli, ProbeOnCpuAndGpuAgree) {
+    write("in.csv",
+          "px,py,pz,nx,ny,nz,vx,vy,vz\n"
+          "0,0,1,0,0,1,0,0,1\n"
+          "0.6,0.8,0,0.6,0.8,0,0,0.3,0.95\n"
+          "0,-1,0,0,-1,0,0,-1,0\n");
+    ASSERT_EQ(run("probe --backend cpu --in " + path("in.csv").string() + " --out " + path("cpu.csv").string()).exitCode, 0);
+    ASSERT_EQ(run("probe --backend gpu --in " + path("in.csv").string() + " --out " + path("gpu.csv").string()).exitCode, 0);
+    std::istringstream cpu(read("cpu.csv")), gpu(read("gpu.csv"));
+    std::string cpuLine, gpuLine;
+    std::getline(cpu, cpuLine);
+    std::getline(gpu, gpuLine);
+    EXPECT_EQ(cpuLine, "r,g,b");
+    EXPECT_EQ(gpuLine, "r,g,b");
+    int rows = 0;
+    while (std::getline(cpu, cpuLine) && std::getline(gpu, gpuLine)) {
+        ++rows;
+        double c[3], g[3];
+        ASSERT_EQ(std::sscanf(cpuLine.c_str(), "%lf,%lf,%lf", &c[0], &c[1], &c[2]), 3);
+        ASSERT_EQ(std::sscanf(gpuLine.c_str(), "%lf,%lf,%lf", &g[0], &g[1], &g[2]), 3);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_GT(c[i], 0.0);   // every row faces at least the hemisphere light
+            EXPECT_NEAR(g[i], c[i], 1e-5 * c[i]);
+        }
+    }
+    EXPECT_EQ(rows, 3);
+}
+
+TEST_F(Cli, ProbeRejectsBadCsvByLine) {
+    write("in.csv", "px,py,pz,nx,ny,nz,vx,vy,vz\n0,0,1,0,0,1,0,0,1\n0,0,1,0,zero,1,0,0,1\n");
+    const test::CliRun r = run("probe --backend cpu --in " + path("in.csv").string() + " --out " + path("o.csv").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("in.csv:3: column 5"), std::string::npos) << r.stderrText;
+    EXPECT_FALSE(fs::exists(path("o.csv")));
+    write("header.csv", "x,y,z\n");
+    EXPECT_EQ(run("probe --in " + path("header.csv").string() + " --out " + path("o.csv").string()).exitCode, 3);
+}
+
+TEST_F(Cli, LobePeaksAtTheMirrorDirection) {
+    write("shiny.json", R"({"format": "patina-material", "version": 1, "roughness": 0.2})");
+    ASSERT_EQ(run("lobe --material " + path("shiny.json").string() +
+                  " --theta-in 30 --samples 181 --out " + path("lobe.csv").string()).exitCode, 0);
+    std::istringstream csv(read("lobe.csv"));
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "theta_out_deg,diffuse_r,diffuse_g,diffuse_b,specular_r,specular_g,specular_b,"
+                    "total_r,total_g,total_b");
+    double bestAngle = 0, bestSpecular = -1;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        double v[10];
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1],
+                              &v[2], &v[3], &v[4], &v[5], &v[6], &v[7], &v[8], &v[9]), 10);
+        EXPECT_NEAR(v[7], v[1] + v[4], 1e-6 * v[7]);
+        if (v[4] > bestSpecular) {
+            bestSpecular = v[4];
+            bestAngle = v[0];
+        }
+        ++rows;
+    }
+    EXPECT_EQ(rows, 181);
+    EXPECT_NEAR(bestAngle, -30.0, 1.0);
+}
+
+}  // namespace
+}  // namespace patina
+
+namespace patina {
+namespace {
+
+TEST_F(Cli, ModelOptionAndKeyChooseTheBrdf) {
+    write("in.csv", "px,py,pz,nx,ny,nz,vx,vy,vz\n0,0,1,0,0,1,0.6,0,0.8\n");
+    ASSERT_EQ(run("probe --backend cpu --in " + path("in.csv").string() + " --out " + path("epic.csv").string()).exitCode, 0);
+    ASSERT_EQ(run("probe --backend cpu --model reference --in " + path("in.csv").string() + " --out " +
+                  path("reference.csv").string()).exitCode, 0);
+    EXPECT_NE(read("epic.csv"), read("reference.csv"));
+    write("m.json", R"({"format": "patina-material", "version": 1, "model": "reference"})");
+    ASSERT_EQ(run("probe --backend cpu --material " + path("m.json").string() + " --in " + path("in.csv").string() +
+                  " --out " + path("from-file.csv").string()).exitCode, 0);
+    EXPECT_EQ(read("from-file.csv"), read("reference.csv"));
+    const test::CliRun bad = run("probe --model phong --in " + path("in.csv").string() + " --out " + path("x.csv").string());
+    EXPECT_EQ(bad.exitCode, 3);
+    EXPECT_NE(bad.stderrText.find("unknown BRDF model \"phong\""), std::string::npos) << bad.stderrText;
+    write("bad.json", R"({"format": "patina-material", "version": 1, "model": "phong"})");
+    EXPECT_NE(run("lobe --theta-in 30 --material " + path("bad.json").string() + " --out " + path("l.csv").string())
+                  .stderrText.find("bad.json: /model: unknown BRDF model"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace patina

@@ -1,0 +1,269 @@
+// The editor's state without a window: undo/redo, the dirty flag, light list operations,
+// opening files and their errors, and persisted settings.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "editor_settings.h"
+#include "editor_state.h"
+#include "io/json_writer.h"
+#include "scratch_test.h"
+#include "io/scene_file.h"
+
+namespace patina::editor {
+namespace {
+
+namespace fs = std::filesystem;
+
+class EditorStateTest : public test::ScratchTest {
+protected:
+
+    fs::path writeMaterial(const std::string& name, float roughness) const {
+        Material m;
+        m.name = name;
+        m.roughness = roughness;
+        const fs::path path = dir_ / (name + ".json");
+        std::ofstream(path) << prettyJson(materialToJson(m));
+        return path;
+    }
+
+    EditorState state;
+};
+
+TEST_F(EditorStateTest, UndoAndRedoStepThroughEdits) {
+    const float original = state.scene.material.roughness;
+    state.scene.material.roughness = 0.9f;
+    commitEdits(state);
+    state.scene.material.metallic = 1.0f;
+    commitEdits(state);
+    undo(state);
+    EXPECT_EQ(state.scene.material.metallic, 0.0f);
+    EXPECT_EQ(state.scene.material.roughness, 0.9f);
+    undo(state);
+    EXPECT_EQ(state.scene.material.roughness, original);
+    redo(state);
+    EXPECT_EQ(state.scene.material.roughness, 0.9f);
+    redo(state);
+    EXPECT_EQ(state.scene.material.metallic, 1.0f);
+    EXPECT_FALSE(state.history.canRedo());
+}
+
+TEST_F(EditorStateTest, AContinuousDragIsOneStep) {
+    const float original = state.scene.material.roughness;
+    for (float r = 0.1f; r < 0.9f; r += 0.05f) {
+        state.scene.material.roughness = r;   // many frames of one drag, nothing committed
+    }
+    commitEdits(state);                       // the widget is released
+    EXPECT_EQ(state.history.undoSteps(), 1u);
+    undo(state);
+    EXPECT_EQ(state.scene.material.roughness, original);
+}
+
+TEST_F(EditorStateTest, UndoTakesPendingEditsFirst) {
+    const float original = state.scene.material.specular;
+    state.scene.material.specular = 0.9f;     // not committed yet
+    undo(state);
+    EXPECT_EQ(state.scene.material.specular, original);
+}
+
+TEST_F(EditorStateTest, KeepsAtLeastOneHundredSteps) {
+    for (int i = 1; i <= 150; ++i) {
+        state.scene.material.roughness = float(i) / 150.0f;
+        commitEdits(state);
+    }
+    for (int i = 0; i < 149; ++i) {
+        undo(state);
+    }
+    EXPECT_FLOAT_EQ(state.scene.material.roughness, 1.0f / 150.0f);
+}
+
+TEST_F(EditorStateTest, NewEditClearsRedo) {
+    state.scene.material.roughness = 0.7f;
+    commitEdits(state);
+    undo(state);
+    state.scene.material.metallic = 0.3f;
+    commitEdits(state);
+    EXPECT_FALSE(state.history.canRedo());
+}
+
+TEST_F(EditorStateTest, DirtyUntilSavedAndTitleShowsIt) {
+    EXPECT_FALSE(state.dirty());
+    state.scene.material.roughness = 0.77f;
+    EXPECT_TRUE(state.dirty());
+    EXPECT_EQ(windowTitle(state).front(), '*');
+    ASSERT_TRUE(saveMaterial(state, dir_ / "saved.json"));
+    EXPECT_FALSE(state.dirty());
+    EXPECT_EQ(windowTitle(state), "saved.json - Patina");
+    std::vector<std::string> warnings;
+    EXPECT_EQ(loadMaterialFile(dir_ / "saved.json", warnings), state.scene.material);
+    // Undoing back to what is on disk is clean again.
+    state.scene.material.metallic = 0.5f;
+    commitEdits(state);
+    EXPECT_TRUE(state.dirty());
+    undo(state);
+    EXPECT_FALSE(state.dirty());
+}
+
+TEST_F(EditorStateTest, FailedSaveKeepsTheChangesAndSaysWhy) {
+    state.scene.material.roughness = 0.66f;
+    EXPECT_FALSE(saveMaterial(state, dir_ / "no" / "such" / "folder.json"));
+    EXPECT_TRUE(state.dirty());
+    EXPECT_NE(state.error.find("Could not save"), std::string::npos);
+}
+
+TEST_F(EditorStateTest, SavingWritesBackUnknownKeysAndKeepsTheOldFileAsBak) {
+    const std::string original =
+        R"({"format": "patina-material", "version": 1, "name": "tagged", "author": "me",
+            "roughness": 0.5, "vendor": {"id": 7}})";
+    std::ofstream(dir_ / "tagged.json") << original;
+    ASSERT_TRUE(openFile(state, dir_ / "tagged.json")) << state.error;
+    EXPECT_NE(state.status.find("unknown key 'author'"), std::string::npos) << state.status;
+    state.scene.material.roughness = 0.25f;
+    ASSERT_TRUE(saveMaterial(state, dir_ / "tagged.json")) << state.error;
+    const Json saved = readJsonFile(dir_ / "tagged.json");
+    EXPECT_EQ(saved["author"], "me");
+    EXPECT_EQ(saved["vendor"]["id"], 7);
+    EXPECT_FLOAT_EQ(saved["roughness"].get<float>(), 0.25f);
+    EXPECT_EQ(readJsonFile(dir_ / "tagged.json.bak"), Json::parse(original));
+}
+
+TEST_F(EditorStateTest, LightListOperations) {
+    const size_t initial = state.scene.lights.size();
+    addLight(state, LightType::Point);
+    ASSERT_EQ(state.scene.lights.size(), initial + 1);
+    EXPECT_EQ(state.scene.lights.back().type, LightType::Point);
+    EXPECT_EQ(state.selectedLight, int(initial));
+
+    duplicateLight(state, 0);
+    ASSERT_EQ(state.scene.lights.size(), initial + 2);
+    EXPECT_EQ(state.scene.lights[1].name, state.scene.lights[0].name + " copy");
+
+    renameLight(state, 1, "renamed");
+    EXPECT_EQ(state.scene.lights[1].name, "renamed");
+    moveLight(state, 1, -1);
+    EXPECT_EQ(state.scene.lights[0].name, "renamed");
+    moveLight(state, 0, -1);   // already first: nothing
+    EXPECT_EQ(state.scene.lights[0].name, "renamed");
+
+    deleteLight(state, 0);
+    EXPECT_EQ(state.scene.lights.size(), initial + 1);
+    // Each operation is one undo step.
+    EXPECT_EQ(state.history.undoSteps(), 5u);
+    undo(state);
+    EXPECT_EQ(state.scene.lights[0].name, "renamed");
+}
+
+TEST_F(EditorStateTest, SoloRendersOneLightWithoutEditingTheScene) {
+    toggleSolo(state, 1);
+    const Scene rendered = renderedScene(state);
+    for (size_t i = 0; i < rendered.lights.size(); ++i) {
+        EXPECT_EQ(rendered.lights[i].enabled, i == 1);
+    }
+    for (const Light& light : state.scene.lights) {
+        EXPECT_TRUE(light.enabled);
+    }
+    EXPECT_FALSE(state.history.canUndo());
+    deleteLight(state, 1);
+    EXPECT_EQ(state.soloLight, -1);
+}
+
+TEST_F(EditorStateTest, OpeningAMaterialIsUndoable) {
+    const Material before = state.scene.material;
+    ASSERT_TRUE(openFile(state, writeMaterial("shiny", 0.1f)));
+    EXPECT_EQ(state.scene.material.name, "shiny");
+    EXPECT_EQ(state.materialPath.filename(), "shiny.json");
+    EXPECT_FALSE(state.dirty());
+    EXPECT_EQ(state.recentFiles.front().filename(), "shiny.json");
+    undo(state);
+    EXPECT_EQ(state.scene.material, before);
+}
+
+TEST_F(EditorStateTest, ABadFileChangesNothingAndSaysWhy) {
+    state.scene.material.roughness = 0.33f;
+    const EditSnapshot before = state.snapshot();
+    const size_t steps = state.history.undoSteps();
+    std::ofstream(dir_ / "bad.json") << R"({"format": "patina-material", "version": 1, "metallic": "lots"})";
+    EXPECT_FALSE(openFile(state, dir_ / "bad.json"));
+    EXPECT_NE(state.error.find("bad.json: /metallic: expected a number"), std::string::npos) << state.error;
+    EXPECT_EQ(state.snapshot(), before);
+    EXPECT_EQ(state.history.undoSteps(), steps);
+    EXPECT_FALSE(openFile(state, dir_ / "missing.json"));
+    EXPECT_NE(state.error.find("missing.json"), std::string::npos);
+    std::ofstream(dir_ / "plain.png") << "not a png";
+    EXPECT_FALSE(openFile(state, dir_ / "plain.png"));
+    EXPECT_EQ(state.snapshot(), before);
+}
+
+TEST_F(EditorStateTest, OpeningWhileDirtyAsksFirst) {
+    state.scene.material.roughness = 0.12f;
+    requestOpen(state, writeMaterial("other", 0.8f));
+    ASSERT_TRUE(state.pendingOpen.has_value());
+    EXPECT_EQ(state.scene.material.roughness, 0.12f);
+}
+
+TEST_F(EditorStateTest, OpeningASceneBringsItsLightsAndCamera) {
+    Scene scene = defaultScene();
+    scene.lights.resize(1);
+    scene.camera.position = {0.0f, 0.0f, 5.0f};
+    scene.material.name = "from scene";
+    std::ofstream(dir_ / "scene.json") << prettyJson(sceneToJson(scene));
+    ASSERT_TRUE(openFile(state, dir_ / "scene.json")) << state.error;
+    EXPECT_EQ(state.scene.lights.size(), 1u);
+    EXPECT_EQ(state.scene.camera.position, scene.camera.position);
+    EXPECT_EQ(state.scene.material.name, "from scene");
+}
+
+TEST_F(EditorStateTest, AnOpenedScenesUnknownKeysSurviveEditsAndUndo) {
+    Scene scene = defaultScene();
+    scene.extras["author"] = "me";
+    scene.camera.extras["lens"] = Json::object({{"mm", 35}});
+    scene.display.extras["lut"] = "film.cube";
+    scene.lights[0].extras["tags"] = Json::array({"key", 2});
+    std::ofstream(dir_ / "scene.json") << prettyJson(sceneToJson(scene));
+    ASSERT_TRUE(openFile(state, dir_ / "scene.json")) << state.error;
+    state.scene.lights[0].intensity = 3.0f;
+    commitEdits(state);
+    undo(state);
+    // What a screenshot embeds is the scene as opened.
+    EXPECT_EQ(sceneToJson(state.scene), sceneToJson(scene));
+    redo(state);
+    EXPECT_EQ(state.scene.lights[0].intensity, 3.0f);
+    EXPECT_EQ(state.scene.lights[0].extras, scene.lights[0].extras);
+}
+
+TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
+    state.layout.leftWidth = 411.0f;
+    state.recentFiles = {dir_ / "a.json", dir_ / "b.json"};
+    state.scene.material.name = "last session";
+    state.scene.material.metallic = 0.25f;
+    WindowGeometry window{1234, 777};
+    ASSERT_TRUE(saveSettings(state, window, dir_ / "config" / "settings.json"));
+
+    EditorState next;
+    WindowGeometry nextWindow;
+    loadSettings(next, nextWindow, dir_ / "config" / "settings.json");
+    EXPECT_TRUE(next.error.empty()) << next.error;
+    EXPECT_EQ(nextWindow.width, 1234);
+    EXPECT_EQ(next.layout.leftWidth, 411.0f);
+    EXPECT_EQ(next.recentFiles, state.recentFiles);
+    EXPECT_EQ(next.scene.material, state.scene.material);
+
+    std::ofstream(dir_ / "broken.json") << "{ nope";
+    EditorState broken;
+    loadSettings(broken, nextWindow, dir_ / "broken.json");
+    EXPECT_NE(broken.error.find("Settings ignored"), std::string::npos);
+    EXPECT_EQ(broken.scene.material, defaultScene().material);
+}
+
+TEST(EditorConfig, FollowsXdgConfigHome) {
+    setenv("XDG_CONFIG_HOME", "/tmp/patina-xdg", 1);
+    EXPECT_EQ(configFolder(), fs::path("/tmp/patina-xdg/patina"));
+    unsetenv("XDG_CONFIG_HOME");
+    const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
+    setenv("HOME", "/tmp/patina-home", 1);
+    EXPECT_EQ(configFolder(), fs::path("/tmp/patina-home/.config/patina"));
+    setenv("HOME", home.c_str(), 1);
+}
+
+}  // namespace
+}  // namespace patina::editor

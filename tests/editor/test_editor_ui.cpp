@@ -1,0 +1,393 @@
+// The editor's UI driven headlessly: Dear ImGui with synthetic mouse and keys, the engine
+// renderer on the EGL context, no window.
+#include <algorithm>
+#include <fstream>
+#include <map>
+
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include "image/compositing.h"
+#include "image/image.h"
+#include "gltf/export.h"
+#include "keys.h"
+#include "panels.h"
+#include "image/png_text.h"
+#include "scratch_test.h"
+#include "io/scene_file.h"
+#include "test_support.h"
+#include "widgets.h"
+#include "io/file_bytes.h"
+
+namespace patina::editor {
+namespace {
+
+class EditorUi : public test::ScratchTest {
+protected:
+    void SetUp() override {
+        ScratchTest::SetUp();
+        test::glContext();
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(1280, 800);
+        unsigned char* pixels = nullptr;
+        int width = 0, height = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);   // builds the font atlas
+        services_ = std::make_unique<EditorServices>();
+        state_.screenshotFolder = dir_;
+        frames(3);   // lay out every panel
+    }
+
+    void TearDown() override {
+        services_.reset();
+        ImGui::DestroyContext();
+        ScratchTest::TearDown();
+    }
+
+    void frames(int count) {
+        for (int i = 0; i < count; ++i) {
+            ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+            ImGui::NewFrame();
+            drawEditorFrame(state_, *services_);
+            ImGui::Render();
+        }
+    }
+
+    ImVec2 centreOf(const std::string& item) {
+        ImVec2 min, max;
+        EXPECT_TRUE(itemRect(item, &min, &max)) << item;
+        return ImVec2((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
+    }
+
+    void click(ImVec2 at) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = at;
+        frames(1);
+        io.MouseDown[0] = true;
+        frames(1);
+        io.MouseDown[0] = false;
+        frames(2);
+    }
+
+    void drag(ImVec2 from, ImVec2 to, int steps = 8) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = from;
+        frames(1);
+        io.MouseDown[0] = true;
+        frames(1);
+        for (int i = 1; i <= steps; ++i) {
+            io.MousePos = ImVec2(from.x + (to.x - from.x) * float(i) / float(steps),
+                                 from.y + (to.y - from.y) * float(i) / float(steps));
+            frames(1);
+        }
+        io.MouseDown[0] = false;
+        frames(2);
+    }
+
+    void press(int key, bool ctrl = false, bool shift = false) {
+        services_->keyPresses = {{key, ctrl, shift}};
+        frames(1);
+        services_->keyPresses.clear();
+        frames(1);
+    }
+
+    EditorState state_;
+    std::unique_ptr<EditorServices> services_;
+};
+
+int differingPixels(const LdrImage& a, const LdrImage& b) {
+    int count = 0;
+    for (size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
+        count += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
+    }
+    return count;
+}
+
+TEST_F(EditorUi, DraggingTheRoughnessSliderChangesMaterialAndPixels) {
+    const float before = state_.scene.material.roughness;
+    const LdrImage pixelsBefore = services_->viewportPixels(EditorServices::Shown::Edited);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Roughness", &min, &max));
+    drag(ImVec2(min.x + (max.x - min.x) * before, (min.y + max.y) * 0.5f),
+         ImVec2(min.x + 4.0f, (min.y + max.y) * 0.5f));
+    EXPECT_LT(state_.scene.material.roughness, 0.1f);
+    frames(1);   // the full-quality render after release
+    const LdrImage pixelsAfter = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(differingPixels(pixelsBefore, pixelsAfter), 100);
+    // The whole drag is one undo step.
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.material.roughness, before);
+    press(kKeyZ, true, true);   // Ctrl+Shift+Z redoes
+    EXPECT_LT(state_.scene.material.roughness, 0.1f);
+}
+
+TEST_F(EditorUi, AddPointLightButtonAddsALight) {
+    const size_t before = state_.scene.lights.size();
+    click(centreOf("Add point"));
+    ASSERT_EQ(state_.scene.lights.size(), before + 1);
+    EXPECT_EQ(state_.scene.lights.back().type, LightType::Point);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights.size(), before);
+}
+
+TEST_F(EditorUi, ScreenshotEmbedsTheSceneAndReopensIt) {
+    state_.scene.material.name = "round trip";
+    state_.scene.material.roughness = 0.123456f;
+    state_.scene.material.baseColor = {0.1f, 0.2f, 0.3f};
+    frames(1);
+    press(kKeyF12);
+    std::vector<std::filesystem::path> shots;
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+        shots.push_back(entry.path());
+    }
+    ASSERT_EQ(shots.size(), 1u) << state_.error;
+    const LdrImage image = decodePng(readFileBytes(shots[0]));
+    EXPECT_EQ(image.width, services_->viewportWidth);
+    EXPECT_EQ(image.height, services_->viewportHeight);
+
+    EditorState reopened;
+    ASSERT_TRUE(openFile(reopened, shots[0])) << reopened.error;
+    EXPECT_EQ(reopened.scene.material, state_.scene.material);   // exactly, every bit
+    EXPECT_EQ(reopened.scene.lights, state_.scene.lights);
+}
+
+TEST_F(EditorUi, SetAThenSplitShowsBothMaterials) {
+    click(centreOf("Set A"));
+    ASSERT_TRUE(state_.compareA.has_value());
+    EXPECT_EQ(state_.compareView, CompareView::Split);
+    state_.scene.material.baseColor = {0.1f, 0.3f, 0.9f};   // B turns blue
+    frames(2);
+    const LdrImage a = services_->viewportPixels(EditorServices::Shown::A);
+    const LdrImage b = services_->viewportPixels(EditorServices::Shown::Edited);
+    const int centre = (a.height / 2 * a.width + a.width / 2) * 4;
+    EXPECT_GT(int(a.rgba[size_t(centre)]), int(a.rgba[size_t(centre) + 2]));   // A is terracotta
+    EXPECT_GT(int(b.rgba[size_t(centre) + 2]), int(b.rgba[size_t(centre)]));   // B is blue
+    const std::filesystem::path exported = dir_ / "ab.png";
+    ASSERT_TRUE(services_->exportComparison(state_, exported).has_value()) << state_.error;
+    EXPECT_EQ(decodePng(readFileBytes(exported)).width % 2, 0);
+}
+
+TEST_F(EditorUi, LoadingABadPresetShowsTheErrorAndKeepsTheMaterial) {
+    std::ofstream(dir_ / "broken.json") << "{\"format\": \"patina-material\", \"version\": 9}";
+    state_.presetFolders = {dir_};
+    const Material before = state_.scene.material;
+    frames(2);
+    click(centreOf("preset:broken"));
+    EXPECT_EQ(state_.scene.material, before);
+    EXPECT_NE(state_.error.find("newer"), std::string::npos) << state_.error;
+}
+
+TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAsking) {
+    Material other;
+    other.name = "other";
+    std::ofstream(dir_ / "other.json") << materialToJson(other).dump();
+    state_.presetFolders = {dir_};
+    state_.scene.material.metallic = 0.7f;   // dirty
+    frames(2);
+    click(centreOf("preset:other"));
+    EXPECT_TRUE(state_.pendingOpen.has_value());
+    EXPECT_EQ(state_.scene.material.metallic, 0.7f);
+    frames(2);
+    click(centreOf("Discard changes"));
+    EXPECT_EQ(state_.scene.material.name, "other");
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
+    const LdrImage epic = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(services_->accuracy(state_.scene.material).physical.relativeRmse, 1e-3);
+    state_.scene.material.model = BrdfModelId::Reference;
+    frames(2);
+    EXPECT_GT(differingPixels(epic, services_->viewportPixels(EditorServices::Shown::Edited)), 100);
+    EXPECT_EQ(services_->accuracy(state_.scene.material).physical.relativeRmse, 0.0);
+    press(kKeyZ, true);   // the model is part of the material: undoable
+    EXPECT_EQ(state_.scene.material.model, BrdfModelId::Epic);
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
+    const LdrImage sphere = services_->viewportPixels(EditorServices::Shown::Edited);
+    Mesh torus = makeTorus();
+    for (glm::vec3& p : torus.positions) {
+        p = p * 3.0f + glm::vec3(10.0f, 0.0f, 0.0f);   // far from the origin: the camera must follow
+    }
+    exportGltf(path("torus.glb"), torus, Material{});
+    ASSERT_TRUE(openFile(state_, path("torus.glb"))) << state_.error;
+    frames(2);
+    EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
+    EXPECT_NEAR(state_.scene.camera.target.x, 10.0f, 0.5f);   // framed on the model
+    EXPECT_GT(differingPixels(sphere, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+
+    write("broken.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "../../etc/passwd", "byteLength": 4}]})");
+    const std::string before = state_.scene.meshFile;
+    EXPECT_FALSE(openFile(state_, path("broken.gltf")));
+    EXPECT_FALSE(state_.error.empty());
+    EXPECT_EQ(state_.scene.meshFile, before);
+
+    // A scene naming a glTF brings its mesh; one naming a missing file fails and changes nothing.
+    write("with-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "torus.glb"})");
+    ASSERT_TRUE(openFile(state_, path("with-mesh.json"))) << state_.error;
+    EXPECT_TRUE(state_.importedMesh != nullptr);
+    frames(1);
+    write("missing-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "gone.glb", "lights": []})");
+    const EditSnapshot snapshot = state_.snapshot();
+    EXPECT_FALSE(openFile(state_, path("missing-mesh.json")));
+    EXPECT_NE(state_.error.find("gone.glb"), std::string::npos) << state_.error;
+    EXPECT_EQ(state_.snapshot(), snapshot);
+    EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// Every texture the last rendered UI frame draws (the font atlas has none headlessly), with
+// its size as the GL has it now; -1 x -1 for a name that is no longer a texture.
+std::map<unsigned, std::pair<int, int>> drawnTextures() {
+    std::map<unsigned, std::pair<int, int>> textures;
+    const ImDrawData* data = ImGui::GetDrawData();
+    for (int list = 0; data && list < data->CmdListsCount; ++list) {
+        for (const ImDrawCmd& command : data->CmdLists[list]->CmdBuffer) {
+            const auto name = unsigned(reinterpret_cast<intptr_t>(command.TextureId));
+            if (name == 0) {
+                continue;
+            }
+            GLint width = -1, height = -1;
+            if (glIsTexture(name)) {
+                glBindTexture(GL_TEXTURE_2D, name);
+                glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+                glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &height);
+                glBindTexture(GL_TEXTURE_2D, 0);
+            }
+            textures[name] = {width, height};
+        }
+    }
+    return textures;
+}
+
+// The PNGs in `folder`, oldest first.
+std::vector<std::filesystem::path> pngsIn(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.path().extension() == ".png") {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
+        return std::filesystem::last_write_time(a) < std::filesystem::last_write_time(b);
+    });
+    return files;
+}
+
+class EditorScreenshots : public EditorUi {
+protected:
+    // F12 handled in one frame: the textures that frame draws must be those of the frame before,
+    // alive and of the same size (the window's GL backend draws them after the frame's code ran).
+    void expectF12KeepsTheFramesTextures(const std::string& what) {
+        frames(2);
+        const auto before = drawnTextures();
+        ASSERT_FALSE(before.empty());
+        const size_t shots = pngsIn(dir_).size();
+        services_->keyPresses = {{kKeyF12, false, false}};
+        frames(1);
+        services_->keyPresses.clear();
+        EXPECT_EQ(drawnTextures(), before) << what;
+        ASSERT_EQ(pngsIn(dir_).size(), shots + 1) << what << ": " << state_.error;
+        EXPECT_TRUE(state_.error.empty()) << what << ": " << state_.error;
+        frames(2);
+        EXPECT_EQ(drawnTextures(), before) << what << ", the frames after";
+    }
+};
+
+// The two crash routes of the editor issue: F12 in Side by side, and F12 at a fixed
+// screenshot size. Each rendered the screenshot into the viewport's own target, replacing a
+// texture the frame had already queued for drawing.
+TEST_F(EditorScreenshots, F12InSideBySideLeavesTheViewportsTexturesAlone) {
+    click(centreOf("Set A"));
+    click(centreOf("Side by side"));
+    ASSERT_EQ(state_.compareView, CompareView::SideBySide);
+    expectF12KeepsTheFramesTextures("side by side");
+}
+
+TEST_F(EditorScreenshots, F12AtAFixedSizeLeavesTheViewportsTextureAlone) {
+    state_.screenshotWidth = 800;
+    state_.screenshotHeight = 600;
+    expectF12KeepsTheFramesTextures("800 x 600");
+    const LdrImage shot = decodePng(readFileBytes(pngsIn(dir_).back()));
+    EXPECT_EQ(shot.width, 800);
+    EXPECT_EQ(shot.height, 600);
+}
+
+// A screenshot shows what the viewport shows: in Side by side both halves, captioned; in
+// Split A's side left of the divider and B's right of it.
+TEST_F(EditorScreenshots, ComparisonsAreScreenshotAsShown) {
+    click(centreOf("Set A"));
+    state_.scene.material.baseColor = {0.1f, 0.3f, 0.9f};   // B turns blue; A stays terracotta
+    click(centreOf("Side by side"));
+    state_.screenshotWidth = 600;
+    state_.screenshotHeight = 400;
+    press(kKeyF12);
+    const LdrImage both = decodePng(readFileBytes(pngsIn(dir_).back()));
+    const int half = 300, middle = 200;
+    EXPECT_EQ(both.width, 2 * half + kCellGap);
+    EXPECT_GT(both.height, 400) << "captions under the halves";
+    auto pixel = [](const LdrImage& image, int x, int y) {
+        const size_t at = (size_t(y) * size_t(image.width) + size_t(x)) * 4;
+        return glm::ivec3(image.rgba[at], image.rgba[at + 1], image.rgba[at + 2]);
+    };
+    EXPECT_GT(pixel(both, half / 2, middle).r, pixel(both, half / 2, middle).b) << "A on the left";
+    EXPECT_GT(pixel(both, half + kCellGap + half / 2, middle).b, pixel(both, half + kCellGap + half / 2, middle).r)
+        << "B on the right";
+
+    click(centreOf("Split"));
+    state_.splitPosition = 0.5f;
+    press(kKeyF12);
+    const LdrImage split = decodePng(readFileBytes(pngsIn(dir_).back()));
+    ASSERT_EQ(split.width, 600);
+    // The sphere's left and right of the centre: A's colour, then B's.
+    const int quarter = split.width / 2 - split.width / 10;
+    EXPECT_GT(pixel(split, quarter, middle).r, pixel(split, quarter, middle).b);
+    EXPECT_GT(pixel(split, split.width - quarter, middle).b, pixel(split, split.width - quarter, middle).r);
+    EXPECT_EQ(pixel(split, split.width / 2, middle), glm::ivec3(255)) << "the divider";
+}
+
+// An error thrown while a panel draws (here a viewport wider than the GL can render) is shown
+// and the editor goes on: ImGui's window stack is closed, and the next frames draw normally.
+TEST_F(EditorUi, AnErrorInsideAPanelIsShownAndTheEditorGoesOn) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    ImGui::GetIO().DisplaySize = ImVec2(float(maxSize) + 2000.0f, 800.0f);
+    frames(3);
+    EXPECT_NE(state_.error.find("The viewport failed"), std::string::npos) << state_.error;
+    EXPECT_NE(state_.error.find("outside"), std::string::npos) << state_.error;
+    // What comes after the viewport in a frame still runs: the undo commit and the shortcuts.
+    const size_t lights = state_.scene.lights.size();
+    click(centreOf("Add point"));
+    EXPECT_EQ(state_.scene.lights.size(), lights + 1);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights.size(), lights);
+
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+    state_.error.clear();
+    frames(3);
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+    EXPECT_EQ(services_->viewportPixels(EditorServices::Shown::Edited).width, services_->viewportWidth);
+}
+
+}  // namespace
+}  // namespace patina::editor

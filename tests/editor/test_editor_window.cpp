@@ -1,0 +1,315 @@
+// The real editor window under Xvfb, driven by xdotool: a slider drag shows in F12 screenshots
+// and in the --stats log, and an idle editor sleeps. Needs xvfb and xdotool (scripts/setup.sh installs both).
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "image/image.h"
+#include "io/file_bytes.h"
+
+namespace patina {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+template <typename Predicate>
+bool waitFor(Predicate predicate, std::chrono::milliseconds limit) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < end) {
+        if (predicate()) {
+            return true;
+        }
+        std::this_thread::sleep_for(50ms);
+    }
+    return predicate();
+}
+
+// A child process, ended when this goes out of scope.
+class Child {
+public:
+    // keepFd stays open in the child (for Xvfb's -displayfd).
+    Child(const std::vector<std::string>& argv, const std::vector<std::string>& env, const fs::path& cwd,
+          int keepFd = -1) {
+        pid_ = fork();
+        if (pid_ == 0) {
+            (void)keepFd;
+            if (chdir(cwd.c_str()) != 0) {
+                _exit(127);
+            }
+            for (const std::string& assignment : env) {
+                putenv(const_cast<char*>(assignment.c_str()));
+            }
+            std::vector<char*> args;
+            for (const std::string& arg : argv) {
+                args.push_back(const_cast<char*>(arg.c_str()));
+            }
+            args.push_back(nullptr);
+            execvp(args[0], args.data());
+            _exit(127);
+        }
+    }
+    // SIGTERM first, so Xvfb removes its lock and socket; SIGKILL if it lingers.
+    ~Child() {
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            if (!waitFor([&] { return waitpid(pid_, nullptr, WNOHANG) == pid_; }, std::chrono::seconds(3))) {
+                kill(pid_, SIGKILL);
+                waitpid(pid_, nullptr, 0);
+            }
+        }
+    }
+    pid_t pid() const { return pid_; }
+    bool running() const { return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0; }
+
+private:
+    pid_t pid_ = -1;
+};
+
+
+std::string readText(const fs::path& path) {
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// CPU time (user + system) of a process, in clock ticks, from /proc/PID/stat.
+long cpuTicks(pid_t pid) {
+    std::string stat = readText("/proc/" + std::to_string(pid) + "/stat");
+    std::istringstream fields(stat.substr(stat.rfind(')') + 2));
+    std::string field;
+    long utime = 0, stime = 0;
+    for (int i = 3; fields >> field; ++i) {   // field 3 is the state, after "pid (comm)"
+        if (i == 14) {
+            utime = std::stol(field);
+        } else if (i == 15) {
+            stime = std::stol(field);
+            break;
+        }
+    }
+    return utime + stime;
+}
+
+class EditorWindow : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_EQ(std::system("command -v Xvfb >/dev/null && command -v xdotool >/dev/null"), 0)
+            << "Xvfb and xdotool are needed: bash scripts/setup.sh installs them";
+        dir_ = fs::temp_directory_path() / ("patina_window_" + std::to_string(getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "config");
+        // Xvfb picks a free display itself and writes its number to the pipe (-displayfd).
+        int pipeFds[2];
+        ASSERT_EQ(pipe(pipeFds), 0);
+        xvfb_ = std::make_unique<Child>(
+            std::vector<std::string>{"Xvfb", "-displayfd", std::to_string(pipeFds[1]), "-screen", "0",
+                                     "1280x800x24", "-nolisten", "tcp"},
+            std::vector<std::string>{}, dir_, pipeFds[1]);
+        close(pipeFds[1]);
+        char number[16] = {};
+        const ssize_t length = read(pipeFds[0], number, sizeof number - 1);
+        close(pipeFds[0]);
+        ASSERT_GT(length, 0) << "Xvfb did not start";
+        display_ = ":" + std::to_string(std::atoi(number));
+        // With --stats, its log (stderr) in a file the tests read.
+        editor_ = std::make_unique<Child>(
+            std::vector<std::string>{"/bin/sh", "-c", std::string("exec '") + PATINA_EXECUTABLE + "' --stats 2>stats.log"},
+            std::vector<std::string>{"DISPLAY=" + display_, "XDG_CONFIG_HOME=" + (dir_ / "config").string(),
+                                     "PATINA_UI_LAYOUT=" + (dir_ / "layout.json").string()},
+            dir_);
+        ASSERT_TRUE(waitFor([&] { return readText(dir_ / "layout.json").find("Roughness") != std::string::npos; }, 60s))
+            << "the editor showed no frame";
+        window_ = xdotool("search --sync --name Patina");
+        ASSERT_FALSE(window_.empty());
+        window_ = window_.substr(0, window_.find('\n'));
+    }
+
+    void TearDown() override {
+        editor_.reset();
+        xvfb_.reset();
+        fs::remove_all(dir_);
+    }
+
+    std::string xdotool(const std::string& arguments) {
+        const std::string command = "DISPLAY=" + display_ + " xdotool " + arguments + " 2>/dev/null";
+        std::string output;
+        if (FILE* pipe = popen(command.c_str(), "r")) {
+            char buffer[256];
+            while (fgets(buffer, sizeof buffer, pipe)) {
+                output += buffer;
+            }
+            pclose(pipe);
+        }
+        return output;
+    }
+
+    // [x0, y0, x1, y1] of a named widget, window coordinates (PATINA_UI_LAYOUT).
+    std::vector<float> rect(const std::string& name) {
+        const std::string layout = readText(dir_ / "layout.json");
+        const size_t at = layout.find("\"" + name + "\": [");
+        if (at == std::string::npos) {
+            return {};
+        }
+        std::vector<float> values(4);
+        std::sscanf(layout.c_str() + layout.find('[', at), "[%f, %f, %f, %f]", &values[0], &values[1],
+                    &values[2], &values[3]);
+        return values;
+    }
+
+    std::vector<fs::path> screenshots() {
+        std::vector<fs::path> files;
+        for (const auto& entry : fs::directory_iterator(dir_)) {
+            if (entry.path().extension() == ".png") {
+                files.push_back(entry.path());
+            }
+        }
+        std::sort(files.begin(), files.end());
+        return files;
+    }
+
+    // Moves to a named widget (its centre, or `fromLeft` pixels in) and clicks it; false when the
+    // layout has no such name.
+    bool clickOn(const std::string& name, int fromLeft = -1) {
+        const std::vector<float> r = rect(name);
+        if (r.size() != 4) {
+            return false;
+        }
+        const int x = fromLeft < 0 ? int((r[0] + r[2]) / 2) : int(r[0]) + fromLeft;
+        xdotool("mousemove --window " + window_ + " " + std::to_string(x) + " " +
+                std::to_string(int((r[1] + r[3]) / 2)) + " click 1");
+        std::this_thread::sleep_for(300ms);
+        return true;
+    }
+
+    // Clicks into a number field (its text box is on the left, then - and + and the label) and
+    // replaces its text with `value` (applied as it is typed).
+    void typeInto(const std::string& name, const std::string& value) {
+        ASSERT_TRUE(waitFor([&] { return rect(name).size() == 4; }, 10s)) << name << " is not shown";
+        ASSERT_TRUE(clickOn(name, 20));
+        xdotool("key --window " + window_ + " ctrl+a");
+        xdotool("type --window " + window_ + " " + value);
+        std::this_thread::sleep_for(300ms);
+    }
+
+    // F12 with the mouse over the viewport; waits for the file and then checks that the
+    // editor is still alive a moment later (the crash came in the frame after the PNG).
+    fs::path screenshotOfViewport() {
+        const size_t before = screenshots().size();
+        const std::vector<float> view = rect("viewport");
+        EXPECT_EQ(view.size(), 4u);
+        if (view.size() != 4) {
+            return {};
+        }
+        xdotool("mousemove --window " + window_ + " " + std::to_string(int((view[0] + view[2]) / 2)) + " " +
+                std::to_string(int((view[1] + view[3]) / 2)) + " key --window " + window_ + " F12");
+        EXPECT_TRUE(waitFor([&] { return screenshots().size() > before; }, 20s)) << "F12 wrote no screenshot";
+        std::this_thread::sleep_for(1500ms);
+        EXPECT_TRUE(editor_->running()) << "the editor ended after F12";
+        std::vector<fs::path> files = screenshots();
+        std::sort(files.begin(), files.end(),
+                  [](const fs::path& a, const fs::path& b) { return fs::last_write_time(a) < fs::last_write_time(b); });
+        return files.empty() ? fs::path() : files.back();
+    }
+
+    void screenshot(size_t expected) {
+        xdotool("mousemove --window " + window_ + " 640 400 key --window " + window_ + " F12");
+        ASSERT_TRUE(waitFor([&] { return screenshots().size() >= expected; }, 20s)) << "F12 wrote no screenshot";
+    }
+
+    fs::path dir_;
+    std::string display_, window_;
+    std::unique_ptr<Child> xvfb_, editor_;
+};
+
+TEST_F(EditorWindow, DraggingASliderShowsInTheScreenshot) {
+    screenshot(1);
+    const std::vector<float> slider = rect("Roughness");
+    ASSERT_EQ(slider.size(), 4u);
+    const int y = int((slider[1] + slider[3]) / 2);
+    const int from = int(slider[0] + (slider[2] - slider[0]) * 0.4f);
+    xdotool("mousemove --window " + window_ + " " + std::to_string(from) + " " + std::to_string(y));
+    xdotool("mousedown 1");
+    for (int step = 1; step <= 5; ++step) {
+        xdotool("mousemove --window " + window_ + " " + std::to_string(from - step * (from - int(slider[0]) - 2) / 5) +
+                " " + std::to_string(y));
+        std::this_thread::sleep_for(100ms);
+    }
+    xdotool("mouseup 1");
+    std::this_thread::sleep_for(500ms);
+    screenshot(2);
+    ASSERT_TRUE(editor_->running());
+
+    const std::vector<fs::path> files = screenshots();
+    ASSERT_EQ(files.size(), 2u);
+    const LdrImage before = decodePng(readFileBytes(files[0]));
+    const LdrImage after = decodePng(readFileBytes(files[1]));
+    ASSERT_EQ(before.width, after.width);
+    ASSERT_GT(before.width, 100);
+    int distinct = 0, changed = 0;
+    for (size_t i = 0; i < before.rgba.size(); i += 4) {
+        distinct += before.rgba[i] != before.rgba[0];
+        changed += before.rgba[i] != after.rgba[i] || before.rgba[i + 2] != after.rgba[i + 2];
+    }
+    EXPECT_GT(distinct, before.width * before.height / 10) << "the screenshot is blank";
+    EXPECT_GT(changed, 200) << "the drag did not change the picture";
+
+    // --stats logged the first frame and this drag's frame times, each with the peak memory.
+    const std::string log = readText(dir_ / "stats.log");
+    EXPECT_NE(log.find("stats: first frame "), std::string::npos) << log;
+    const size_t drag = log.find("stats: drag: ");
+    ASSERT_NE(drag, std::string::npos) << log;
+    EXPECT_GE(std::atoi(log.c_str() + drag + 13), 3) << "frames during the drag: " << log;
+    EXPECT_NE(log.find("MB)", drag), std::string::npos) << log;
+}
+
+// The editor issue's two crash routes, as a user takes them. Both used to write the PNG and
+// then end the editor on ImGui's "Mismatched Begin/End" assertion.
+// (a) Set A, Side by side, F12 over the viewport.
+TEST_F(EditorWindow, F12InSideBySideKeepsTheEditorRunning) {
+    ASSERT_TRUE(clickOn("Set A"));
+    ASSERT_TRUE(clickOn("Side by side"));
+    const fs::path sideBySide = screenshotOfViewport();
+    ASSERT_FALSE(sideBySide.empty());
+    const std::vector<float> view = rect("viewport");
+    const LdrImage both = decodePng(readFileBytes(sideBySide));
+    EXPECT_GE(both.width, int(view[2] - view[0]) - 2) << "both halves, not B alone";
+    // Still drawing frames: one more screenshot goes through.
+    EXPECT_FALSE(screenshotOfViewport().empty());
+}
+
+// (b) View: screenshot 800 x 600, then F12 in the Single view.
+TEST_F(EditorWindow, F12AtAFixedSizeKeepsTheEditorRunning) {
+    ASSERT_TRUE(clickOn("menu:View"));
+    typeInto("Screenshot width", "800");
+    typeInto("Screenshot height", "600");
+    ASSERT_TRUE(clickOn("viewport"));   // closes the menu (Escape would undo the field being typed in)
+    const fs::path fixed = screenshotOfViewport();
+    ASSERT_FALSE(fixed.empty());
+    const LdrImage image = decodePng(readFileBytes(fixed));
+    EXPECT_EQ(image.width, 800);
+    EXPECT_EQ(image.height, 600);
+    EXPECT_FALSE(screenshotOfViewport().empty());
+}
+
+TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {
+    std::this_thread::sleep_for(2s);   // let start-up work and the first frames finish
+    const long start = cpuTicks(editor_->pid());
+    std::this_thread::sleep_for(10s);
+    const long used = cpuTicks(editor_->pid()) - start;
+    const double fraction = double(used) / (10.0 * double(sysconf(_SC_CLK_TCK)));
+    RecordProperty("idle_cpu_fraction", std::to_string(fraction));
+    EXPECT_LT(fraction, 0.02);
+    EXPECT_TRUE(editor_->running());
+}
+
+}  // namespace
+}  // namespace patina

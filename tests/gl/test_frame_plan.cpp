@@ -1,0 +1,189 @@
+// What a draw decides before it touches the GL (engine/gl/frame_plan.h).
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "gl/frame_plan.h"
+#include "geometry/hidden_faces.h"
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+using FlatLights = RenderSettings::FlatLights;
+
+RenderSettings settingsOf(PassMode passes, int samples) {
+    RenderSettings settings = test::renderSettings(320, 200, passes, samples);
+    settings.readHdr = false;
+    return settings;
+}
+
+// A UV sphere as MeshBuffers describes it: closed, wound outward, one convex part.
+MeshFacts sphereFacts() {
+    const Mesh sphere = makeUvSphere(16, 32);
+    return {boundingBox(sphere), faceCulling(sphere), sphere.indices.size() / 3};
+}
+
+constexpr int kMaxSamples = 8;
+constexpr size_t kSlots = 14;
+
+// The mesh is drawn once per strip that meets the drawn area, and the box bounds its pixels.
+TEST(FramePlan, FlatLightSlotsWeighTheBoxAgainstTrianglesDrawn) {
+    const size_t slots = 14;
+    const PixelRect box{0, 0, 1000, 1000};
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 1000, 16384), slots);
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 1000, 1'000'000), 0u);
+    // 30,000 triangles: 33 pixels each in one draw, 3.3 in ten strips of 100 rows.
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 1000, 30'000), slots);
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, box, box, 100, 30'000), 0u);
+    // A box 200 rows high meets 2 strips when drawn cropped, all 10 when not (cropToMesh off).
+    const PixelRect band{0, 400, 1000, 600};
+    const PixelRect whole{0, 0, 1000, 1000};
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, band, band, 100, 10'000), slots);
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, band, whole, 100, 10'000), 0u);
+    // Nothing on screen: nothing to gain. Forced either way, the box does not matter.
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::WherePaying, slots, PixelRect{}, whole, 1000, 10), 0u);
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::Always, slots, PixelRect{}, whole, 1000, 1'000'000), slots);
+    EXPECT_EQ(flatLightSlotsFor(FlatLights::Never, slots, box, box, 1000, 10), 0u);
+}
+
+// Without MSAA single and specialised show their values from the shading pass itself; multi
+// sums its passes into the linear image first, so it keeps one even when not asked to.
+TEST(FramePlan, WithoutMsaaOnlyMultiNeedsADisplayPass) {
+    const Camera camera = defaultScene().camera;
+    for (PassMode passes : {PassMode::Single, PassMode::Specialised, PassMode::BrdfFloor, PassMode::Multi}) {
+        const bool multi = passes == PassMode::Multi;
+        const FramePlan plan = planFrame(settingsOf(passes, 1), camera, sphereFacts(), kMaxSamples, kSlots);
+        EXPECT_FALSE(plan.msaa);
+        EXPECT_EQ(plan.displayInPass, !multi) << passModeName(passes);
+        EXPECT_EQ(plan.keepLinear, multi) << passModeName(passes);
+        EXPECT_EQ(plan.stripRows, 200);
+        EXPECT_EQ(plan.meshArea, (PixelRect{0, 0, 320, 200})) << "no samples to save: every pixel";
+        RenderSettings hdr = settingsOf(passes, 1);
+        hdr.readHdr = true;
+        EXPECT_TRUE(planFrame(hdr, camera, sphereFacts(), kMaxSamples, kSlots).keepLinear);
+    }
+}
+
+// MSAA: the count the GL offers at most, a resolve for every path, samples only in the mesh's
+// box unless told otherwise, strips when the samples' bytes are capped.
+TEST(FramePlan, MsaaResolvesAndShadesOnlyTheMeshsBox) {
+    const Camera camera = defaultScene().camera;
+    const FramePlan plan = planFrame(settingsOf(PassMode::Single, 16), camera, sphereFacts(), kMaxSamples, kSlots);
+    EXPECT_EQ(plan.samples, kMaxSamples);
+    EXPECT_TRUE(plan.msaa);
+    EXPECT_FALSE(plan.displayInPass);
+    EXPECT_FALSE(plan.keepLinear);
+    EXPECT_EQ(plan.transform, viewProjection(camera, 320.0f / 200.0f));
+    EXPECT_EQ(plan.meshBox, screenBounds(plan.transform, sphereFacts().bounds, 320, 200));
+    EXPECT_EQ(plan.meshArea, plan.meshBox);
+    EXPECT_LT(plan.meshArea.x1 - plan.meshArea.x0, 320) << "the framed sphere leaves background beside it";
+    EXPECT_EQ(plan.stripRows, 200);
+
+    RenderSettings uncropped = settingsOf(PassMode::Single, 4);
+    uncropped.cropToMesh = false;
+    EXPECT_EQ(planFrame(uncropped, camera, sphereFacts(), kMaxSamples, kSlots).meshArea, (PixelRect{0, 0, 320, 200}));
+
+    RenderSettings capped = settingsOf(PassMode::Single, 4);
+    capped.maxTargetBytes = size_t(320) * 4 * 16 * 50;   // 50 rows of 4 float RGBA samples
+    EXPECT_EQ(planFrame(capped, camera, sphereFacts(), kMaxSamples, kSlots).stripRows, 50);
+    EXPECT_EQ(stripRowsFor(capped, 4), 50);
+
+    RenderSettings hdr = settingsOf(PassMode::Single, 4);
+    hdr.readHdr = true;
+    EXPECT_TRUE(planFrame(hdr, camera, sphereFacts(), kMaxSamples, kSlots).keepLinear);
+
+    RenderSettings single = settingsOf(PassMode::Single, 1);
+    single.maxTargetBytes = size_t(320) * 16 * 50;   // 50 rows of one float RGBA sample
+    ASSERT_EQ(stripRowsFor(single, 1), 50);
+    EXPECT_EQ(planFrame(single, camera, sphereFacts(), kMaxSamples, kSlots).stripRows, 200)
+        << "without MSAA the full-size images are drawn whole";
+
+    for (int samples : {-3, 0, 1}) {
+        const RenderSettings settings = settingsOf(PassMode::Single, samples);
+        const FramePlan none = planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots);
+        EXPECT_FALSE(none.msaa);
+        EXPECT_EQ(none.samples, std::max(samples, 0));
+    }
+    EXPECT_FALSE(planFrame(settingsOf(PassMode::Single, 4), camera, sphereFacts(), 1, kSlots).msaa)
+        << "a GL without multisampling";
+}
+
+// Faces are culled only where the eye is outside a closed mesh, and the depth test is left
+// out only when what is left is one convex part.
+TEST(FramePlan, CullsOnlyWithTheEyeOutsideAClosedMesh) {
+    const Camera outside = defaultScene().camera;
+    const MeshFacts sphere = sphereFacts();
+    ASSERT_EQ(sphere.culling.hidden, HiddenFaces::Back);
+    ASSERT_TRUE(sphere.culling.convex);
+    const RenderSettings settings = settingsOf(PassMode::Single, 4);
+
+    FramePlan plan = planFrame(settings, outside, sphere, kMaxSamples, kSlots);
+    EXPECT_EQ(plan.culled, HiddenFaces::Back);
+    EXPECT_FALSE(plan.depthTest);
+
+    Camera inside = outside;
+    inside.position = {0.0f, 0.0f, 0.5f};
+    plan = planFrame(settings, inside, sphere, kMaxSamples, kSlots);
+    EXPECT_EQ(plan.culled, HiddenFaces::None);
+    EXPECT_TRUE(plan.depthTest);
+
+    RenderSettings everyFace = settings;
+    everyFace.cullHiddenFaces = false;
+    plan = planFrame(everyFace, outside, sphere, kMaxSamples, kSlots);
+    EXPECT_EQ(plan.culled, HiddenFaces::None);
+    EXPECT_TRUE(plan.depthTest);
+
+    MeshFacts inward = sphere;
+    inward.culling.hidden = HiddenFaces::Front;
+    EXPECT_EQ(planFrame(settings, outside, inward, kMaxSamples, kSlots).culled, HiddenFaces::Front);
+
+    MeshFacts torusLike = sphere;
+    torusLike.culling.convex = false;
+    plan = planFrame(settings, outside, torusLike, kMaxSamples, kSlots);
+    EXPECT_EQ(plan.culled, HiddenFaces::Back);
+    EXPECT_TRUE(plan.depthTest) << "culled faces of a non-convex mesh can still overlap";
+
+    MeshFacts open = sphere;
+    open.culling = {};
+    plan = planFrame(settings, outside, open, kMaxSamples, kSlots);
+    EXPECT_EQ(plan.culled, HiddenFaces::None);
+    EXPECT_TRUE(plan.depthTest);
+}
+
+// Flat lights follow the settings, weighed over the box and strips this plan draws.
+TEST(FramePlan, FlatLightsWeighThisPlansBoxAndStrips) {
+    const Camera camera = defaultScene().camera;
+    RenderSettings settings = settingsOf(PassMode::Specialised, 4);
+    const FramePlan plan = planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots);
+    EXPECT_EQ(plan.flatLights, flatLightSlotsFor(FlatLights::WherePaying, kSlots, plan.meshBox, plan.meshArea,
+                                                 plan.stripRows, sphereFacts().triangles));
+    MeshFacts dense = sphereFacts();
+    dense.triangles = 10'000'000;   // far under a pixel a triangle
+    EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLights, 0u);
+
+    // In strips of 20 rows the mesh is drawn once per strip that meets the area drawn: all 10
+    // uncropped, fewer cropped to a distant sphere's box. With triangles just too many for 4
+    // pixels each over 10 draws, the cropped plan takes flat lights and the uncropped does not.
+    Camera distant = camera;
+    distant.position = camera.target + 2.0f * (camera.position - camera.target);
+    RenderSettings strips = settingsOf(PassMode::Specialised, 4);
+    strips.maxTargetBytes = size_t(320) * 4 * 16 * 20;
+    const PixelRect box = screenBounds(viewProjection(distant, 1.6f), sphereFacts().bounds, 320, 200);
+    ASSERT_LT(box.y1 - box.y0, 120) << "the box meets at most 7 of the 10 strips";
+    MeshFacts many = sphereFacts();
+    many.triangles = size_t(double(box.x1 - box.x0) * double(box.y1 - box.y0) / 40.0) + 1;
+    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLights, kSlots);
+    strips.cropToMesh = false;
+    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLights, 0u);
+
+    settings.flatLights = FlatLights::Always;
+    EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLights, kSlots);
+    settings.flatLights = FlatLights::Never;
+    EXPECT_EQ(planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots).flatLights, 0u);
+}
+
+}  // namespace
+}  // namespace patina

@@ -1,0 +1,159 @@
+// glTF export (engine/gltf/export.h, `patina export`): the Khronos glTF-Validator finds no
+// error and no warning, import gives back the material and the triangles, writes are atomic.
+#include <cstdio>
+#include <filesystem>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "cli_runner.h"
+#include "gltf_builder.h"
+#include "gltf/export.h"
+#include "gltf/import.h"
+#include "image/image.h"
+#include "io/json_writer.h"
+#include "io/scene_file.h"
+#include "scratch_test.h"
+
+namespace patina {
+namespace {
+
+namespace fs = std::filesystem;
+
+class GltfExport : public test::ScratchTest {
+protected:
+    test::CliRun run(const std::string& arguments) const { return test::runPatina(arguments, dir_); }
+
+    // The validator's report (tests/gltf/validate.js); fails the test when it cannot run.
+    Json validate(const fs::path& file) const {
+        // Where scripts/setup.sh installs the npm package.
+        const fs::path modules = fs::path(PATINA_SOURCE_DIR) / "third_party/gltf-validator/node_modules";
+        const fs::path script = fs::path(PATINA_SOURCE_DIR) / "tests/gltf/validate.js";
+        const fs::path report = path("report.json"), errors = path("validator-errors.txt");
+        const std::string command = "node '" + script.string() + "' '" + modules.string() + "' '" + file.string() +
+                                    "' > '" + report.string() + "' 2> '" + errors.string() + "'";
+        const int status = std::system(command.c_str());
+        EXPECT_EQ(status, 0) << "the glTF validator did not run: " << read("validator-errors.txt");
+        // Parsed directly: the report lists every info message and outgrows the limit on
+        // Patina's own JSON files (readJsonFile).
+        return status == 0 ? Json::parse(read("report.json")) : Json::object();
+    }
+    void expectValid(const fs::path& file) const {
+        const Json report = validate(file);
+        ASSERT_TRUE(report.contains("issues")) << file;
+        EXPECT_EQ(report["issues"]["numErrors"], 0) << file << "\n" << report["issues"].dump(2);
+        EXPECT_EQ(report["issues"]["numWarnings"], 0) << file << "\n" << report["issues"].dump(2);
+    }
+};
+
+Material unusualMaterial() {
+    Material material;
+    material.name = "blue \"enamel\" \xc3\xa9";
+    material.baseColor = {0.123456f, 0.5f, 0.987654f};
+    material.roughness = 0.0123f;
+    material.specular = 0.8312f;
+    material.metallic = 0.25f;
+    return material;
+}
+
+void expectSameMaterial(const Material& a, const Material& b) {
+    EXPECT_EQ(a.name, b.name);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a.baseColor[i], b.baseColor[i], 1e-6);
+    }
+    EXPECT_NEAR(a.roughness, b.roughness, 1e-6);
+    EXPECT_NEAR(a.specular, b.specular, 1e-6);
+    EXPECT_NEAR(a.metallic, b.metallic, 1e-6);
+}
+
+TEST_F(GltfExport, ImportGivesBackTheMaterialAndTheTriangles) {
+    Material black = unusualMaterial(), white = unusualMaterial();
+    black.specular = 0.0f;
+    white.specular = 1.0f;
+    const Mesh torus = makeTorus();
+    for (const Material& material : {Material{}, unusualMaterial(), black, white}) {
+        for (const auto& [name, buffer] : {std::pair{"t.gltf", GltfBuffer::Embedded},
+                                           std::pair{"t b.gltf", GltfBuffer::BinFile},
+                                           std::pair{"t.glb", GltfBuffer::Embedded}}) {
+            exportGltf(path(name), torus, material, buffer);
+            const GltfImport back = importGltf(path(name));
+            ASSERT_TRUE(back.material.has_value());
+            expectSameMaterial(*back.material, material);
+            EXPECT_EQ(back.mesh.indices, torus.indices) << name;
+            EXPECT_EQ(back.mesh.positions, torus.positions) << name;
+            ASSERT_EQ(back.mesh.normals.size(), torus.normals.size());
+            for (size_t i = 0; i < torus.normals.size(); ++i) {   // normalised again on import
+                ASSERT_NEAR(glm::distance(back.mesh.normals[i], torus.normals[i]), 0.0f, 1e-6f) << name << " " << i;
+            }
+        }
+    }
+    EXPECT_TRUE(fs::exists(path("t b.bin")));
+}
+
+TEST_F(GltfExport, SpecularIsWrittenSoThatF0Is008TimesSpecular) {
+    Material material;
+    material.specular = 0.3f;
+    exportGltf(path("s.gltf"), makeUvSphere(4, 8), material);
+    const Json json = readJsonFile(path("s.gltf"));
+    const Json& extensions = json["materials"][0]["extensions"];
+    EXPECT_EQ(extensions["KHR_materials_ior"]["ior"], 1.5);
+    EXPECT_EQ(extensions["KHR_materials_specular"]["specularFactor"], 1.0);
+    // ((1.5 - 1) / (1.5 + 1))^2 * colour = 0.04 * colour = 0.08 * 0.3
+    for (const Json& channel : extensions["KHR_materials_specular"]["specularColorFactor"]) {
+        EXPECT_NEAR(channel.get<double>(), 0.6, 1e-7);
+    }
+    EXPECT_EQ(json["extensionsUsed"], Json::array({"KHR_materials_specular", "KHR_materials_ior"}));
+}
+
+TEST_F(GltfExport, TheKhronosValidatorFindsNoErrorsOrWarnings) {
+    const std::string material = path("m.json").string();
+    write("m.json", prettyJson(materialToJson(unusualMaterial())));
+    ASSERT_EQ(run("export --material " + material + " --out " + path("sphere.gltf").string()).exitCode, 0);
+    ASSERT_EQ(run("export --mesh torus --out " + path("torus.glb").string()).exitCode, 0);
+    ASSERT_EQ(run("export --mesh torus --bin --out '" + path("torus bin.gltf").string() + "'").exitCode, 0);
+    // Generated normals too: a cube without normals, through import and export again.
+    test::cubeModel(false).writeGltf(path("cube.gltf"));
+    ASSERT_EQ(run("export --mesh " + path("cube.gltf").string() + " --out " + path("cube.glb").string()).exitCode, 0);
+    for (const char* name : {"sphere.gltf", "torus.glb", "torus bin.gltf", "cube.glb"}) {
+        expectValid(path(name));
+    }
+    // The check itself works: a file with a broken accessor has errors.
+    Json broken = readJsonFile(path("sphere.gltf"));
+    broken["accessors"][0]["count"] = 1;
+    write("broken.gltf", broken.dump());
+    EXPECT_GT(validate(path("broken.gltf"))["issues"]["numErrors"].get<int>(), 0);
+}
+
+TEST_F(GltfExport, TheCommandTakesAMeshFileAndRefusesBadArguments) {
+    write("m.json", prettyJson(materialToJson(unusualMaterial())));
+    ASSERT_EQ(run("export --mesh torus --out " + path("t.glb").string()).exitCode, 0);
+    const test::CliRun again = run("export --material " + path("m.json").string() + " --mesh " +
+                                   path("t.glb").string() + " --out " + path("again.gltf").string());
+    ASSERT_EQ(again.exitCode, 0) << again.stderrText;
+    const GltfImport back = importGltf(path("again.gltf"));
+    EXPECT_EQ(back.mesh.indices, makeTorus().indices);
+    expectSameMaterial(*back.material, unusualMaterial());
+    EXPECT_EQ(importGltf(path("t.glb")).material->name, defaultScene().material.name);
+
+    EXPECT_EQ(run("export --out " + path("x.obj").string()).exitCode, 2);
+    EXPECT_EQ(run("export").exitCode, 2);
+    const test::CliRun missing = run("export --mesh " + path("none.glb").string() + " --out " + path("x.glb").string());
+    EXPECT_EQ(missing.exitCode, 3);
+    EXPECT_NE(missing.stderrText.find("none.glb"), std::string::npos) << missing.stderrText;
+    EXPECT_EQ(run("export --out " + path("no/such/dir/x.glb").string()).exitCode, 3);
+    EXPECT_FALSE(fs::exists(path("x.glb")));
+}
+
+TEST_F(GltfExport, AFailedWriteLeavesNoFileBehind) {
+    fs::create_directory(path("taken.gltf"));   // the .bin can be written, the .gltf cannot
+    EXPECT_THROW(exportGltf(path("taken.gltf"), makeTorus(), Material{}, GltfBuffer::BinFile), std::runtime_error);
+    EXPECT_FALSE(fs::exists(path("taken.bin")));
+    EXPECT_THROW(encodeGltf(path("mesh.obj"), makeTorus(), Material{}), InputError);
+    EXPECT_THROW(encodeGltf(path("empty.glb"), Mesh{}, Material{}), InputError);
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir_)) {
+        EXPECT_EQ(entry.path().filename(), "taken.gltf");   // no temporary files either
+    }
+}
+
+}  // namespace
+}  // namespace patina

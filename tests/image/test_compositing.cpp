@@ -1,0 +1,243 @@
+// Captions (engine/image/caption.h) and the images compare and sheet write (engine/image/compositing.h).
+#include <gtest/gtest.h>
+
+#include "image/caption.h"
+#include "image/compositing.h"
+
+namespace patina {
+namespace {
+
+LdrImage solid(int width, int height, Rgb8 colour) {
+    LdrImage image{width, height, std::vector<uint8_t>(size_t(width) * size_t(height) * 4, 255)};
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+        image.rgba[i] = colour.r;
+        image.rgba[i + 1] = colour.g;
+        image.rgba[i + 2] = colour.b;
+    }
+    return image;
+}
+
+Rgb8 pixel(const LdrImage& image, int x, int y) {
+    const uint8_t* p = &image.rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
+    return {p[0], p[1], p[2]};
+}
+
+bool operator==(Rgb8 a, Rgb8 b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+}
+
+// Pixels of `colour` in [x0, x1) x [y0, y1).
+int countColour(const LdrImage& image, Rgb8 colour, int x0, int y0, int x1, int y1) {
+    int count = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            count += pixel(image, x, y) == colour;
+        }
+    }
+    return count;
+}
+
+constexpr Rgb8 kBlack{0, 0, 0};
+constexpr Rgb8 kInk{200, 100, 50};
+
+TEST(Caption, DrawsOnlyInsideTheMeasuredBox) {
+    const std::string text = "Hg|y 0.5";
+    for (const int scale : {1, 3}) {
+        LdrImage image = solid(200, 50, kBlack);
+        drawText(image, 5, 7, text, scale, kInk);
+        const int right = 5 + textWidth(text, scale);
+        const int bottom = 7 + kGlyphHeight * scale;
+        ASSERT_LE(right, image.width);
+        const int inside = countColour(image, kInk, 5, 7, right, bottom);
+        EXPECT_GT(inside, 20 * scale * scale);
+        EXPECT_EQ(countColour(image, kInk, 0, 0, image.width, image.height), inside);
+        EXPECT_EQ(countColour(image, kBlack, 0, 0, image.width, image.height) + inside,
+                  image.width * image.height);
+    }
+}
+
+TEST(Caption, ScalesByWholeBlocks) {
+    LdrImage one = solid(60, 20, kBlack), two = solid(120, 40, kBlack);
+    drawText(one, 0, 0, "Ab3", 1, kInk);
+    drawText(two, 0, 0, "Ab3", 2, kInk);
+    for (int y = 0; y < two.height; ++y) {
+        for (int x = 0; x < two.width; ++x) {
+            ASSERT_EQ(pixel(two, x, y) == kInk, pixel(one, x / 2, y / 2) == kInk) << x << "," << y;
+        }
+    }
+    EXPECT_EQ(textWidth("Ab3", 2), 2 * textWidth("Ab3", 1));
+    EXPECT_EQ(captionHeight(2), 2 * captionHeight(1));
+    EXPECT_GT(captionHeight(1), kGlyphHeight);
+}
+
+TEST(Caption, ClipsAtTheImageEdges) {
+    LdrImage whole = solid(30, 20, kBlack), shifted = solid(30, 20, kBlack);
+    drawText(whole, 0, 0, "W#", 1, kInk);
+    drawText(shifted, -3, -2, "W#", 1, kInk);
+    for (int y = 0; y + 2 < 20; ++y) {
+        for (int x = 0; x + 3 < 30; ++x) {
+            ASSERT_EQ(pixel(shifted, x, y) == kInk, pixel(whole, x + 3, y + 2) == kInk);
+        }
+    }
+    drawText(shifted, 28, 15, "far past the right and bottom edges", 4, kInk);
+    drawText(shifted, -100000, -100000, "nowhere", 1, kInk);
+    EXPECT_EQ(shifted.rgba.size(), 30u * 20u * 4u);
+}
+
+TEST(Caption, ReplacesWhatTheFontCannotDraw) {
+    EXPECT_EQ(drawableText("caf\xc3\xa9\tok\x01~ \xe2\x9c\x93!"), "caf? ok?~ ?!");
+    EXPECT_EQ(textWidth("\xc3\xa9", 1), textWidth("?", 1));
+    EXPECT_EQ(textWidth("", 3), 0);
+}
+
+TEST(Caption, CutsLongTextWithAnEllipsis) {
+    const std::string name = "a very long material name that goes on";
+    EXPECT_EQ(fitText(name, textWidth(name, 1), 1), name);
+    for (const int width : {30, 61, 100, 150}) {
+        const std::string cut = fitText(name, width, 1);
+        EXPECT_LE(textWidth(cut, 1), width) << cut;
+        ASSERT_GE(cut.size(), 4u) << cut;
+        EXPECT_EQ(cut.substr(cut.size() - 3), "...");
+        EXPECT_EQ(name.rfind(cut.substr(0, cut.size() - 3), 0), 0u) << cut;
+        EXPECT_NE(cut[cut.size() - 4], ' ') << cut;
+    }
+    EXPECT_EQ(fitText(name, textWidth("..", 2), 2), "..");
+    EXPECT_EQ(fitText(name, 0, 1), "");
+    EXPECT_EQ(fitText(name, -5, 1), "");
+}
+
+TEST(Compositing, LaysOutCellsWithCaptionStrips) {
+    const SheetLayout layout = sheetLayout(50, 40, 3, 2);
+    EXPECT_EQ(layout.columns, 2);
+    EXPECT_EQ(layout.rows, 2);
+    EXPECT_EQ(layout.captionHeight, captionHeight(1));
+    EXPECT_EQ(layout.width, 2 * 50 + kCellGap);
+    EXPECT_EQ(layout.height, 2 * (40 + captionHeight(1)) + kCellGap);
+    EXPECT_EQ(layout.cellX(1), 50 + kCellGap);
+    EXPECT_EQ(layout.cellY(2), 40 + captionHeight(1) + kCellGap);
+    EXPECT_EQ(sheetLayout(50, 40, 2, 8).columns, 2);   // no empty columns
+    EXPECT_EQ(captionScale(799), 1);
+    EXPECT_EQ(captionScale(800), 2);
+    EXPECT_EQ(captionScale(100000), 4);
+    EXPECT_EQ(sheetLayout(800, 800, 1, 1).captionHeight, captionHeight(2));
+}
+
+TEST(Compositing, ContactSheetPlacesAndCaptionsEveryCell) {
+    const std::vector<LdrImage> cells{solid(50, 40, {255, 0, 0}), solid(50, 40, {0, 255, 0}),
+                                      solid(50, 40, {0, 0, 255})};
+    const LdrImage sheet = contactSheet(cells, {"red", "", "blue"}, 2);
+    const SheetLayout layout = sheetLayout(50, 40, 3, 2);
+    ASSERT_EQ(sheet.width, layout.width);
+    ASSERT_EQ(sheet.height, layout.height);
+    for (int i = 0; i < 3; ++i) {
+        const int x = layout.cellX(i), y = layout.cellY(i);
+        EXPECT_TRUE(pixel(sheet, x + 25, y + 20) == pixel(cells[size_t(i)], 0, 0)) << i;
+        EXPECT_EQ(countColour(sheet, pixel(cells[size_t(i)], 0, 0), x, y, x + 50, y + 40), 50 * 40);
+        const int ink = countColour(sheet, kCaptionColour, x, y + 40, x + 50, y + 40 + layout.captionHeight);
+        EXPECT_EQ(ink > 0, i != 1) << i;   // the second cell has no name
+    }
+    EXPECT_TRUE(pixel(sheet, 50, 10) == kSheetBackground);                  // the gap
+    EXPECT_TRUE(pixel(sheet, layout.cellX(1) + 25, layout.cellY(3) + 20) == kSheetBackground);
+}
+
+TEST(Compositing, LongCaptionsStayInTheirCell) {
+    const std::string longName(200, 'W');
+    const LdrImage sheet =
+        contactSheet({solid(40, 30, kBlack), solid(40, 30, kBlack)}, {longName, longName}, 2);
+    const SheetLayout layout = sheetLayout(40, 30, 2, 2);
+    EXPECT_GT(countColour(sheet, kCaptionColour, 0, 30, 40, sheet.height), 0);
+    EXPECT_EQ(countColour(sheet, kCaptionColour, 40, 0, 40 + kCellGap, sheet.height), 0);
+    EXPECT_EQ(countColour(sheet, kCaptionColour, 0, 30, 1, sheet.height), 0);
+    EXPECT_EQ(countColour(sheet, kCaptionColour, layout.width - 1, 30, layout.width, sheet.height), 0);
+}
+
+TEST(Compositing, CentresSmallerCells) {
+    const LdrImage sheet =
+        contactSheet({solid(20, 10, {255, 0, 0}), solid(50, 40, {0, 0, 255})}, {"a", "b"}, 2);
+    EXPECT_EQ(countColour(sheet, {255, 0, 0}, 15, 15, 35, 25), 20 * 10);
+    EXPECT_EQ(countColour(sheet, {255, 0, 0}, 0, 0, sheet.width, sheet.height), 20 * 10);
+}
+
+TEST(Compositing, SideBySideIsATwoColumnSheet) {
+    const LdrImage a = solid(30, 20, {255, 0, 0}), b = solid(30, 20, {0, 0, 255});
+    const LdrImage pair = sideBySide(a, b, "left", "right");
+    EXPECT_EQ(pair.width, 2 * 30 + kCellGap);
+    EXPECT_EQ(pair.height, 20 + captionHeight(1));
+    EXPECT_TRUE(pixel(pair, 15, 10) == pixel(a, 0, 0));
+    EXPECT_TRUE(pixel(pair, 30 + kCellGap + 15, 10) == pixel(b, 0, 0));
+    EXPECT_EQ(pair.rgba, contactSheet({a, b}, {"left", "right"}, 2).rgba);
+}
+
+// Built cell by cell, a sheet's finished rows never change again (the sheet command encodes
+// them while the next cells render), they grow a row of cells at a time, and the result is
+// the sheet made at once.
+TEST(Compositing, SheetBuilderFinishesRowsThatNoLaterCellChanges) {
+    std::vector<LdrImage> cells;
+    std::vector<std::string> names;
+    for (int i = 0; i < 7; ++i) {
+        cells.push_back(solid(30, 20, {uint8_t(30 * i), 255, uint8_t(255 - 30 * i)}));
+        names.push_back("cell " + std::to_string(i));
+    }
+    SheetBuilder sheet(30, 20, names, 3);
+    const SheetLayout& layout = sheet.layout();
+    EXPECT_EQ(sheet.finishedRows(), 0);
+    std::vector<std::pair<int, std::vector<uint8_t>>> snapshots;   // finished rows, their bytes
+    for (size_t i = 0; i < cells.size(); ++i) {
+        sheet.add(cells[i]);
+        const int rows = sheet.finishedRows();
+        const int expected = i + 1 == cells.size() ? layout.height : layout.cellY(int(i) + 1);
+        EXPECT_EQ(rows, expected) << "after cell " << i;
+        const auto& bytes = sheet.image().rgba;
+        snapshots.emplace_back(rows, std::vector<uint8_t>(bytes.begin(), bytes.begin() + size_t(rows) * layout.width * 4));
+    }
+    for (const auto& [rows, bytes] : snapshots) {
+        EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), sheet.image().rgba.begin())) << rows << " rows";
+    }
+    EXPECT_EQ(sheet.image().rgba, contactSheet(cells, names, 3).rgba);
+    EXPECT_THROW(sheet.add(cells[0]), std::invalid_argument);   // no name left
+    SheetBuilder small(30, 20, {"a"}, 1);
+    EXPECT_THROW(small.add(solid(31, 20, kBlack)), std::invalid_argument);   // larger than its box
+}
+
+TEST(Compositing, RefusesBadArguments) {
+    const LdrImage a = solid(4, 4, kBlack);
+    EXPECT_THROW(contactSheet({}, {}, 1), std::invalid_argument);
+    EXPECT_THROW(contactSheet({a}, {"a", "b"}, 1), std::invalid_argument);
+    EXPECT_THROW(contactSheet({a}, {"a"}, 0), std::invalid_argument);
+    EXPECT_THROW(contactSheet({a, LdrImage{4, 4, {}}}, {"a", "b"}, 2), std::invalid_argument);
+    EXPECT_THROW(sheetLayout(kMaxSheetSide, 10, 2, 2), std::invalid_argument);
+    EXPECT_THROW(sheetLayout(10, 2000000000, 2, 1), std::invalid_argument);
+    EXPECT_NO_THROW(sheetLayout(kMaxSheetSide, 10, 1, 1));
+    EXPECT_THROW(differenceHeatMap(a, solid(4, 5, kBlack)), std::invalid_argument);
+    EXPECT_THROW(differenceStats(a, solid(5, 4, kBlack)), std::invalid_argument);
+}
+
+TEST(Compositing, HeatMapIsBlackWhereEqualAndShowsTheLargestChannel) {
+    const LdrImage a = solid(8, 6, {100, 100, 100});
+    LdrImage b = a;
+    EXPECT_EQ(countColour(differenceHeatMap(a, b), kBlack, 0, 0, 8, 6), 8 * 6);
+    EXPECT_EQ(differenceStats(a, b).max, 0);
+    b.rgba[(2 * 8 + 3) * 4 + 0] = 110;   // +10 red, -40 green, +5 blue at (3, 2)
+    b.rgba[(2 * 8 + 3) * 4 + 1] = 60;
+    b.rgba[(2 * 8 + 3) * 4 + 2] = 105;
+    const LdrImage map = differenceHeatMap(a, b);
+    EXPECT_TRUE(pixel(map, 3, 2) == heatColour(40));
+    EXPECT_EQ(countColour(map, kBlack, 0, 0, 8, 6), 8 * 6 - 1);
+    const DifferenceStats stats = differenceStats(a, b);
+    EXPECT_EQ(stats.max, 40);
+    EXPECT_DOUBLE_EQ(stats.mean, 40.0 / 48.0);
+}
+
+TEST(Compositing, HeatRampRisesInLuma) {
+    EXPECT_TRUE(heatColour(0) == kBlack);
+    EXPECT_TRUE(heatColour(-5) == kBlack);
+    EXPECT_TRUE(heatColour(300) == heatColour(255));
+    auto luma = [](Rgb8 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    for (int d = 1; d <= 255; ++d) {
+        EXPECT_GT(luma(heatColour(d)), luma(heatColour(d - 1))) << d;
+    }
+    EXPECT_GT(luma(heatColour(255)), 240.0);
+}
+
+}  // namespace
+}  // namespace patina

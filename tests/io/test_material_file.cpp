@@ -1,0 +1,147 @@
+// Material files: notes, unknown keys kept for saving, required keys, the version; and the
+// shipped presets.
+#include <regex>
+
+#include <gtest/gtest.h>
+
+#include "io/scene_file.h"
+#include "scratch_test.h"
+
+namespace patina {
+namespace {
+
+Material read(const std::string& text, std::vector<std::string>& warnings) {
+    return materialFromJson(parseJsonText(text, "m.json"), "", "m.json", true, warnings);
+}
+
+std::string errorOf(const std::string& text) {
+    std::vector<std::string> warnings;
+    try {
+        read(text, warnings);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST(MaterialFile, NotesRoundTripAndAreLeftOutWhenEmpty) {
+    Material material;
+    EXPECT_FALSE(materialToJson(material).contains("notes"));
+    material.notes = "F0 from somewhere, 2024";
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["notes"], "F0 from somewhere, 2024");
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "notes": 5})")
+                  .find("m.json: /notes: expected a string"), std::string::npos);
+}
+
+TEST(MaterialFile, UnknownKeysAreWarnedAboutAndWrittenBack) {
+    std::vector<std::string> warnings;
+    const Material material = read(R"({"format": "patina-material", "version": 1,
+        "author": "me", "roughness": 0.2, "layers": {"clearcoat": [1, 0.1]}})", warnings);
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_EQ(warnings[0], "m.json: /author: unknown key 'author' (kept, not used)");
+    EXPECT_NE(warnings[1].find("/layers: unknown key"), std::string::npos);
+    const Json written = materialToJson(material);
+    EXPECT_EQ(written["author"], "me");
+    EXPECT_EQ(written["layers"], Json::parse(R"({"clearcoat": [1, 0.1]})"));
+    EXPECT_FLOAT_EQ(written["roughness"].get<float>(), 0.2f);
+    EXPECT_EQ(materialFromJson(written, "", "x", true, warnings), material);
+}
+
+TEST(MaterialFile, ExtrasTakePartInEqualityButNeverOverrideKnownKeys) {
+    Material a, b;
+    b.extras["author"] = "me";
+    EXPECT_NE(a, b);
+    b.extras = Json::object({{"roughness", 0.9}});
+    EXPECT_FLOAT_EQ(materialToJson(b)["roughness"].get<float>(), b.roughness);
+}
+
+TEST(MaterialFile, FormatAndVersionAreRequiredInAFileButOptionalInline) {
+    EXPECT_NE(errorOf(R"({"version": 1, "roughness": 0.2})")
+                  .find("m.json: /: missing required key 'format'"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "roughness": 0.2})")
+                  .find("m.json: /: missing required key 'version'"), std::string::npos);
+    std::vector<std::string> warnings;
+    EXPECT_NO_THROW(materialFromJson(Json::parse(R"({"roughness": 0.2})"), "/material", "s.json",
+                                     false, warnings));
+    try {
+        materialFromJson(Json::parse(R"({"version": 1})"), "/material", "s.json", false, warnings);
+        ADD_FAILURE() << "version without format";
+    } catch (const InputError& error) {
+        EXPECT_STREQ(error.what(), "s.json: /material: missing required key 'format'");
+    }
+}
+
+TEST(MaterialFile, VersionIsAnIntegerUpToTheSupportedOne) {
+    EXPECT_EQ(errorOf(R"({"format": "patina-material", "version": 1.0})"), "");
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1.5})")
+                  .find("m.json: /version: expected an integer, got 1.5"), std::string::npos);
+    EXPECT_EQ(errorOf(R"({"format": "patina-material", "version": 2})"),
+              "m.json: /version: version 2 is newer than this Patina reads (up to 1)");
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 0})").find("/version: value 0"),
+              std::string::npos);
+}
+
+std::vector<std::pair<std::filesystem::path, Material>> shippedPresets() {
+    std::vector<std::pair<std::filesystem::path, Material>> presets;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(PATINA_SOURCE_DIR) / "presets")) {
+        if (entry.path().extension() == ".json") {
+            std::vector<std::string> warnings;
+            presets.emplace_back(entry.path(), loadMaterialFile(entry.path(), warnings));
+        }
+    }
+    return presets;
+}
+
+TEST(ShippedPresets, AtLeastTwentyFourAndEachSaysWhereItsNumbersComeFrom) {
+    const auto presets = shippedPresets();
+    EXPECT_GE(presets.size(), 24u);
+    for (const auto& [file, material] : presets) {
+        EXPECT_GT(material.notes.size(), 40u) << file;
+        EXPECT_TRUE(material.extras.empty()) << file;
+    }
+}
+
+// Metals take F0 as their base colour; a dielectric's specular is its IOR's F0 / 0.08.
+TEST(ShippedPresets, DielectricSpecularMatchesTheIorItsNotesCite) {
+    const std::regex ior("IOR ([0-9]+\\.[0-9]+)");
+    for (const auto& [file, material] : shippedPresets()) {
+        std::smatch match;
+        if (material.metallic == 1.0f) {
+            EXPECT_NE(material.notes.find("F0"), std::string::npos) << file;
+            continue;
+        }
+        ASSERT_TRUE(std::regex_search(material.notes, match, ior)) << file << ": no IOR in the notes";
+        const double n = std::stod(match[1]);
+        const double f0 = (n - 1.0) * (n - 1.0) / ((n + 1.0) * (n + 1.0));
+        EXPECT_NEAR(material.specular, f0 / 0.08, 5e-4) << file;
+        EXPECT_EQ(material.metallic, 0.0f) << file;
+    }
+}
+
+}  // namespace
+}  // namespace patina
+
+namespace patina {
+namespace {
+
+class MaterialFolder : public test::ScratchTest {};
+
+// The preset library's listing (editor presets panel, bench-render's batch): .json files only,
+// sorted; a missing folder lists nothing rather than throwing.
+TEST_F(MaterialFolder, ListsJsonFilesSorted) {
+    write("b.json", "{}");
+    write("a.json", "{}");
+    write("notes.txt", "not a material");
+    std::filesystem::create_directories(path("sub"));
+    write("sub/c.json", "{}");
+    EXPECT_EQ(materialFilesIn(dir_), (std::vector<std::filesystem::path>{path("a.json"), path("b.json")}));
+    EXPECT_TRUE(materialFilesIn(path("missing")).empty());
+}
+
+}  // namespace
+}  // namespace patina

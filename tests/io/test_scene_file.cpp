@@ -1,0 +1,226 @@
+// docs/FORMATS.md: material and scene JSON, and the messages for bad files.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "io/json_writer.h"
+#include "io/scene_file.h"
+
+namespace patina {
+namespace {
+
+std::string errorOf(const std::string& text, bool scene = true) {
+    std::vector<std::string> warnings;
+    try {
+        const Json json = parseJsonText(text, "test.json");
+        if (scene) {
+            sceneFromJson(json, "test.json", ".", warnings);
+        } else {
+            materialFromJson(json, "", "test.json", true, warnings);
+        }
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+const char* kMaterialHeader = R"("format": "patina-material", "version": 1)";
+
+TEST(MaterialFile, ReadsEveryField) {
+    std::vector<std::string> warnings;
+    const Json json = parseJsonText(std::string("{") + kMaterialHeader +
+                                        R"(, "name": "gold", "baseColor": [1, 0.78, 0.34],
+                                        "roughness": 0.3, "specular": 0.6, "metallic": 1})",
+                                    "gold.json");
+    const Material m = materialFromJson(json, "", "gold.json", true, warnings);
+    EXPECT_EQ(m.name, "gold");
+    EXPECT_FLOAT_EQ(m.baseColor.g, 0.78f);
+    EXPECT_FLOAT_EQ(m.roughness, 0.3f);
+    EXPECT_FLOAT_EQ(m.specular, 0.6f);
+    EXPECT_FLOAT_EQ(m.metallic, 1.0f);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(MaterialFile, RoundTripsThroughJson) {
+    Material m;
+    m.name = "round trip";
+    m.baseColor = {0.123456f, 0.5f, 0.987654f};
+    m.roughness = 0.0123f;
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(materialToJson(m), "", "x", true, warnings), m);
+}
+
+TEST(SceneFile, RoundTripsTheDefaultScene) {
+    std::vector<std::string> warnings;
+    const Scene scene = defaultScene();
+    EXPECT_EQ(sceneFromJson(sceneToJson(scene), "x", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(SceneFile, SyntaxErrorsNameLineAndColumn) {
+    EXPECT_EQ(errorOf("{\n  \"format\": \"patina-scene\",\n  \"version\": 1,\n  oops\n}").substr(0, 16),
+              "test.json:4:3: i");
+}
+
+TEST(SceneFile, WrongValuesNameTheirJsonPointer) {
+    const std::string head = R"({"format": "patina-scene", "version": 1, )";
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "point"}, {"type": "laser"}]})")
+                  .find("/lights/1/type: unknown light type \"laser\""), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "point", "intensity": "bright"}]})")
+                  .find("/lights/0/intensity: expected a number, got string"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "point", "attenuation": [1, -1, 0]}]})")
+                  .find("/lights/0/attenuation/1: value -1 is outside"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("material": {"roughness": 1.5}})").find("/material/roughness"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("camera": {"fovYDegrees": 1e300}})").find("not finite in float"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("mesh": "teapot"})").find("/mesh: unknown mesh"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("display": {"tonemap": "filmic"}})").find("/display/tonemap"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "directional", "direction": [0, 0, 0]}]})")
+                  .find("non-zero direction"), std::string::npos);
+}
+
+TEST(SceneFile, RefusesOtherFormatsAndNewerVersions) {
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1})").find("/format"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 2})").find("newer"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene"})").find("missing required key 'version'"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"([1, 2])").find("expected an object"), std::string::npos);
+}
+
+TEST(SceneFile, NanIsNotJson) {
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 1, "display": {"exposure": NaN}})")
+                  .find("test.json:1:"), std::string::npos);
+}
+
+TEST(SceneFile, UnknownKeysAreWarningsNotErrors) {
+    std::vector<std::string> warnings;
+    const Json json = parseJsonText(
+        R"({"format": "patina-scene", "version": 1, "author": "me",
+            "lights": [{"type": "point", "direction": [0, 1, 0]}]})", "s.json");
+    const Scene scene = sceneFromJson(json, "s.json", ".", warnings);
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("/lights/0/direction: unknown key"), std::string::npos);
+    EXPECT_NE(warnings[1].find("/author: unknown key"), std::string::npos);
+    EXPECT_EQ(scene.lights.size(), 1u);
+}
+
+// Unknown keys at every level, with nested values, as a newer Patina or another tool writes.
+const char* kSceneWithExtras = R"({
+    "format": "patina-scene", "version": 1, "author": "me",
+    "material": {"roughness": 0.2, "layers": {"clearcoat": [1, 0.1]}},
+    "camera": {"fovYDegrees": 30, "lens": {"mm": 35, "stops": [1.4, 2, 2.8]}},
+    "lights": [{"type": "point", "direction": [0, 1, 0], "tags": ["key", {"group": 2}]},
+               {"type": "hemisphere", "shadow": null}],
+    "display": {"exposure": 1, "lut": "film.cube"},
+    "rig": [{"name": "turntable", "period": 4.5}, []]
+})";
+
+TEST(SceneFile, UnknownKeysAtEveryLevelAreWarnedAboutWithTheirPointer) {
+    std::vector<std::string> warnings;
+    sceneFromJson(parseJsonText(kSceneWithExtras, "s.json"), "s.json", ".", warnings);
+    const std::vector<std::string> expected = {
+        "s.json: /material/layers: unknown key 'layers' (kept, not used)",
+        "s.json: /camera/lens: unknown key 'lens' (kept, not used)",
+        "s.json: /lights/0/direction: unknown key 'direction' (kept, not used)",
+        "s.json: /lights/0/tags: unknown key 'tags' (kept, not used)",
+        "s.json: /lights/1/shadow: unknown key 'shadow' (kept, not used)",
+        "s.json: /display/lut: unknown key 'lut' (kept, not used)",
+        "s.json: /author: unknown key 'author' (kept, not used)",
+        "s.json: /rig: unknown key 'rig' (kept, not used)"};
+    EXPECT_EQ(warnings, expected);
+}
+
+TEST(SceneFile, UnknownKeysAtEveryLevelAreWrittenBackUnchanged) {
+    const Json original = parseJsonText(kSceneWithExtras, "s.json");
+    std::vector<std::string> warnings;
+    const Scene scene = sceneFromJson(original, "s.json", ".", warnings);
+    // Saved as text and read again, as a file or a screenshot's embedded scene is.
+    const Json saved = parseJsonText(prettyJson(sceneToJson(scene)), "saved.json");
+    for (const char* pointer :
+         {"/author", "/rig", "/material/layers", "/camera/lens", "/lights/0/direction",
+          "/lights/0/tags", "/lights/1/shadow", "/display/lut"}) {
+        const Json::json_pointer at(pointer);
+        ASSERT_TRUE(saved.contains(at)) << pointer;
+        EXPECT_EQ(saved[at], original[at]) << pointer;
+    }
+    std::vector<std::string> reloadWarnings;
+    EXPECT_EQ(sceneFromJson(saved, "saved.json", ".", reloadWarnings), scene);
+    EXPECT_EQ(reloadWarnings.size(), warnings.size());
+}
+
+TEST(SceneFile, ExtrasNeverOverrideKnownKeys) {
+    Scene scene = defaultScene();
+    scene.extras = Json::object({{"mesh", "torus"}, {"author", "me"}});
+    scene.camera.extras = Json::object({{"fovYDegrees", 90}});
+    scene.lights[0].extras = Json::object({{"intensity", 123}});
+    scene.display.extras = Json::object({{"tonemap", "aces"}});
+    const Json json = sceneToJson(scene);
+    EXPECT_EQ(json["mesh"], "sphere");
+    EXPECT_EQ(json["author"], "me");
+    EXPECT_EQ(json["camera"]["fovYDegrees"], 45);
+    EXPECT_FLOAT_EQ(json["lights"][0]["intensity"].get<float>(), scene.lights[0].intensity);
+    EXPECT_EQ(json["display"]["tonemap"], "none");
+}
+
+TEST(SceneFile, MaterialPathIsRelativeToTheSceneFile) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "patina_scene_file_test";
+    std::filesystem::create_directories(dir / "materials");
+    std::ofstream(dir / "materials" / "red.json")
+        << R"({"format": "patina-material", "version": 1, "name": "red", "baseColor": [1, 0, 0]})";
+    std::ofstream(dir / "scene.json")
+        << R"({"format": "patina-scene", "version": 1, "material": "materials/red.json"})";
+    std::vector<std::string> warnings;
+    const Scene scene = loadSceneFile(dir / "scene.json", warnings);
+    EXPECT_EQ(scene.material.name, "red");
+    std::ofstream(dir / "broken.json")
+        << R"({"format": "patina-scene", "version": 1, "material": "materials/missing.json"})";
+    try {
+        loadSceneFile(dir / "broken.json", warnings);
+        ADD_FAILURE() << "a missing material file must fail";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("missing.json"), std::string::npos);
+    }
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace patina
+
+namespace patina {
+namespace {
+
+TEST(ShippedFiles, ExampleSceneIsTheEmbeddedDefault) {
+    std::vector<std::string> warnings;
+    const Scene scene =
+        loadSceneFile(std::filesystem::path(PATINA_SOURCE_DIR) / "examples/default_scene.json", warnings);
+    EXPECT_EQ(scene, defaultScene());
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(ShippedFiles, EveryPresetLoadsCleanly) {
+    int presets = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PATINA_SOURCE_DIR) / "presets")) {
+        if (entry.path().extension() != ".json") {
+            continue;
+        }
+        std::vector<std::string> warnings;
+        EXPECT_NO_THROW(loadMaterialFile(entry.path(), warnings)) << entry.path();
+        EXPECT_TRUE(warnings.empty()) << entry.path();
+        ++presets;
+    }
+    EXPECT_GT(presets, 0);
+}
+
+TEST(JsonWriter, WritesWhatReadsBackTheSame) {
+    const Json scene = sceneToJson(defaultScene());
+    const std::string text = prettyJson(scene);
+    EXPECT_EQ(parseJsonText(text, "x"), scene);
+    EXPECT_NE(text.find("\"baseColor\": [0.8, 0.25, 0.15]"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.800000"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace patina
