@@ -6,8 +6,9 @@ namespace patina {
 
 namespace {
 std::string assemble(const std::vector<const char*>& parts, const std::vector<std::string>& defines) {
-    // PATINA_INLINE marks shared functions `inline` for C++ (engine/shading/shading.h); GLSL has none.
-    std::string source = "#version 330 core\n#define PATINA_INLINE\n";
+    // PATINA_INLINE marks shared functions `inline` for C++ (engine/shading/shading.h); GLSL has
+    // none. `real` is the shared code's scalar, float on the GPU (shaders/shared/brdf.glsl).
+    std::string source = "#version 330 core\n#define PATINA_INLINE\n#define real float\n";
     for (const std::string& define : defines) {
         source += "#define " + define + "\n";
     }

@@ -13,6 +13,7 @@ extern const char* const lights_glsl;
 extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
 extern const char* const energy_table_glsl;
+extern const char* const brdf_terms_glsl;
 extern const char* const brdf_model_glsl;
 extern const char* const display_glsl;
 extern const char* const shade_frag;
@@ -26,8 +27,8 @@ constexpr size_t kLightBlockSize = sizeof(shader::PackedLight) * shader::MAX_LIG
 
 std::vector<const char*> shadingFragmentParts() {
     return {shader_sources::brdf_glsl,         shader_sources::lights_glsl,       shader_sources::light_block_glsl,
-            shader_sources::energy_texel_glsl, shader_sources::energy_table_glsl, shader_sources::brdf_model_glsl,
-            shader_sources::display_glsl,      shader_sources::shade_frag};
+            shader_sources::energy_texel_glsl, shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,
+            shader_sources::brdf_model_glsl,   shader_sources::display_glsl,      shader_sources::shade_frag};
 }
 
 LightBuffer::LightBuffer() {

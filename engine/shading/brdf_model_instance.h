@@ -10,30 +10,35 @@
 
 namespace PATINA_MODEL_NAMESPACE(PATINA_INSTANCE) {
 
-inline float energyTexel(int x, int y) {
+inline real energyTexel(int x, int y) {
     return energyTable(BrdfModelId::PATINA_INSTANCE)[size_t(y) * size_t(kEnergyTableSize) + size_t(x)];
 }
 
 #include "energy_table.glsl"
 #include "brdf_model.glsl"
 
-// D * V with F = 1 and no compensation: the lobe the white furnace integrates (C++ only).
-inline float specularLobe(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+// The half vector and the cosines the specular terms read, clamped as evaluateBrdf clamps them
+// (C++ only: evaluateBrdf guards L = -V itself).
+struct LobeAngles {
+    vec3 H;
+    real NoV, NoL, NoH;
+};
+inline LobeAngles lobeAngles(vec3 N, vec3 V, vec3 L) {
     vec3 H = safeNormalize(L + V);
-    float NoV = max(dot(N, V), MIN_N_DOT_V);
-    float NoL = clamp(dot(N, L), 0.0f, 1.0f);
-    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
-    return distribution(NoH, cross(N, H), material.alpha) * visibility(NoV, NoL, material);
+    return {H, max(dot(N, V), MIN_N_DOT_V), clamp(dot(N, L), 0.0f, 1.0f), clamp(dot(N, H), 0.0f, 1.0f)};
+}
+
+// D * V with F = 1 and no compensation: the lobe the white furnace integrates (C++ only).
+inline real specularLobe(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+    const LobeAngles a = lobeAngles(N, V, L);
+    return distribution(a.NoH, cross(N, a.H), material.alpha) * visibility(a.NoV, a.NoL, material);
 }
 
 // The model's D, V and F for one configuration, for plots (C++ only).
 inline SpecularTerms specularTerms(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
-    vec3 H = safeNormalize(L + V);
-    float NoV = max(dot(N, V), MIN_N_DOT_V);
-    float NoL = clamp(dot(N, L), 0.0f, 1.0f);
-    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
-    return SpecularTerms(distribution(NoH, cross(N, H), material.alpha), visibility(NoV, NoL, material),
-                         fresnel(material.f0, clamp(dot(V, H), 0.0f, 1.0f)));
+    const LobeAngles a = lobeAngles(N, V, L);
+    return SpecularTerms(distribution(a.NoH, cross(N, a.H), material.alpha), visibility(a.NoV, a.NoL, material),
+                         fresnel(material.f0, clamp(dot(V, a.H), 0.0f, 1.0f)));
 }
 
 }  // namespace

@@ -1,20 +1,34 @@
 #pragma once
 // Patina's named BRDF models: which term each uses (shaders/shared/brdf_model.glsl's PATINA_D, _V, _F,
-// _FD, _MS). One list, read by the runtime registry (brdf_models.cpp), the C++ permutations
-// (brdf_model_instance.h) and the GLSL defines.
-//                                   D  V  F  FD MS
-#define PATINA_TERMS_Epic             0, 0, 0, 0, 0
-#define PATINA_TERMS_EpicStandardD    1, 0, 0, 0, 0
-#define PATINA_TERMS_SchlickAlphaHalf 0, 1, 0, 0, 0
-#define PATINA_TERMS_SmithSeparable   0, 2, 0, 0, 0
-#define PATINA_TERMS_SmithCorrelated  0, 3, 0, 0, 0
-#define PATINA_TERMS_Hammon           0, 4, 0, 0, 0
-#define PATINA_TERMS_SchlickPow5      0, 0, 1, 0, 0
-#define PATINA_TERMS_ExactFresnel     0, 0, 2, 0, 0
-#define PATINA_TERMS_Burley           0, 0, 0, 1, 0
-#define PATINA_TERMS_EpicMultiScatter 0, 0, 0, 0, 1
-#define PATINA_TERMS_Filament         0, 4, 1, 0, 1
-#define PATINA_TERMS_Reference        0, 3, 2, 0, 1
+// _FD, _MS, by the names of brdf_terms.glsl). One list, read by the runtime registry
+// (brdf_models.cpp), the C++ permutations (brdf_model_instance.h) and the GLSL defines.
+#include "brdf_terms.glsl"
+
+// D, V, F, FD, MS
+#define PATINA_TERMS_Epic \
+    PATINA_D_GGX, PATINA_V_SCHLICK_KARIS, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_EpicStandardD \
+    PATINA_D_GGX_STANDARD, PATINA_V_SCHLICK_KARIS, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_SchlickAlphaHalf \
+    PATINA_D_GGX, PATINA_V_SCHLICK_ALPHA_HALF, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_SmithSeparable \
+    PATINA_D_GGX, PATINA_V_SMITH_SEPARABLE, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_SmithCorrelated \
+    PATINA_D_GGX, PATINA_V_SMITH_CORRELATED, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_Hammon \
+    PATINA_D_GGX, PATINA_V_HAMMON, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_SchlickPow5 \
+    PATINA_D_GGX, PATINA_V_SCHLICK_KARIS, PATINA_F_SCHLICK_POW5, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_ExactFresnel \
+    PATINA_D_GGX, PATINA_V_SCHLICK_KARIS, PATINA_F_DIELECTRIC_EXACT, PATINA_FD_LAMBERT, PATINA_MS_NONE
+#define PATINA_TERMS_Burley \
+    PATINA_D_GGX, PATINA_V_SCHLICK_KARIS, PATINA_F_SCHLICK_SG, PATINA_FD_BURLEY, PATINA_MS_NONE
+#define PATINA_TERMS_EpicMultiScatter \
+    PATINA_D_GGX, PATINA_V_SCHLICK_KARIS, PATINA_F_SCHLICK_SG, PATINA_FD_LAMBERT, PATINA_MS_TURQUIN
+#define PATINA_TERMS_Filament \
+    PATINA_D_GGX, PATINA_V_HAMMON, PATINA_F_SCHLICK_POW5, PATINA_FD_LAMBERT, PATINA_MS_TURQUIN
+#define PATINA_TERMS_Reference \
+    PATINA_D_GGX, PATINA_V_SMITH_CORRELATED, PATINA_F_DIELECTRIC_EXACT, PATINA_FD_LAMBERT, PATINA_MS_TURQUIN
 
 // X(identifier, name, summary)
 #define PATINA_BRDF_MODELS(X)                                                                        \

@@ -4,22 +4,18 @@
 #include "shading/shading_f16.h"
 #include "shading/shading_f64.h"
 
-// Every model's permutation in fp32, fp64 and emulated fp16 (`float` redefined around the
-// include, as engine/shading/shading_f64.h and shading_f16.h do for the shared types).
+// Every model's permutation in fp32, fp64 and emulated fp16, each in the namespace whose `real`
+// it takes (engine/shading/shading.h, shading_f64.h, shading_f16.h).
 namespace patina::shader {
 #include "shading/brdf_model_instances.h"
 }  // namespace patina::shader
 
 namespace patina::shader_f64 {
-#define float double
 #include "shading/brdf_model_instances.h"
-#undef float
 }  // namespace patina::shader_f64
 
 namespace patina::shader_f16 {
-#define float Half
 #include "shading/brdf_model_instances.h"
-#undef float
 }  // namespace patina::shader_f16
 
 namespace patina {
@@ -76,7 +72,7 @@ shader::BrdfValue evaluateBrdf(BrdfModelId id, const shader::SurfaceMaterial& ma
         PATINA_BRDF_MODELS(PATINA_EVALUATE)
 #undef PATINA_EVALUATE
     }
-    return shader::evaluateBrdf(material, N, V, L);
+    return shader::model_Epic::evaluateBrdf(material, N, V, L);
 }
 
 shader::SpecularTerms specularTerms(BrdfModelId id, const shader::SurfaceMaterial& material, glm::vec3 N,
@@ -96,7 +92,7 @@ glm::vec3 shadeLight(BrdfModelId id, const shader::PackedLight& light, const sha
         PATINA_BRDF_MODELS(PATINA_SHADE)
 #undef PATINA_SHADE
     }
-    return shader::shadeLight(light, material, P, N, V);
+    return shader::model_Epic::shadeLight(light, material, P, N, V);
 }
 
 BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V,

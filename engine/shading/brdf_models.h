@@ -29,8 +29,11 @@ struct BrdfModelInfo {
     BrdfTerms terms;
     std::string_view summary;
     // Single scattering with exact Smith visibility: its white-furnace albedo must stay <= 1.
-    bool energyConserving() const { return (terms.v == 2 || terms.v == 3) && terms.ms == 0 && terms.fd == 0; }
-    bool multipleScattering() const { return terms.ms != 0; }
+    bool energyConserving() const {
+        return (terms.v == PATINA_V_SMITH_SEPARABLE || terms.v == PATINA_V_SMITH_CORRELATED) &&
+               terms.ms == PATINA_MS_NONE && terms.fd == PATINA_FD_LAMBERT;
+    }
+    bool multipleScattering() const { return terms.ms != PATINA_MS_NONE; }
 };
 
 std::span<const BrdfModelInfo> brdfModels();

@@ -8,6 +8,7 @@
 namespace patina::shader {
 using namespace glm;
 using std::sqrt;
+using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
 #include "lights.glsl"
@@ -15,29 +16,5 @@ using std::sqrt;
 #undef PATINA_INLINE
 }  // namespace patina::shader
 
-// The default model, "epic", as shader::evaluateBrdf and shader::shadeLight; every model is in
-// engine/shading/brdf_models.h.
-#include "shading/energy_table.h"
-namespace patina::shader {
-// In a namespace of its own so that argument-dependent lookup from the other models'
-// namespaces (brdf_model_instance.h) never sees it; the using-directive serves shader::name.
-namespace seed {
-#define PATINA_INLINE inline
-inline float energyTexel(int, int) {
-    return 1.0f;   // epic has no energy compensation: never read
-}
-#include "energy_table.glsl"
-// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "brdf_model.glsl"
-#pragma GCC diagnostic pop
-#undef PATINA_INLINE
-}  // namespace seed
-using namespace seed;
-#undef PATINA_D
-#undef PATINA_V
-#undef PATINA_F
-#undef PATINA_FD
-#undef PATINA_MS
-}  // namespace patina::shader
+// The BRDF models built from these, the default "epic" among them, are compiled once each in
+// shading/brdf_models.cpp and reached through shading/brdf_models.h.

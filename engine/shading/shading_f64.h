@@ -1,5 +1,5 @@
 #pragma once
-// The shared GLSL (shaders/shared/brdf.glsl, lights.glsl) compiled a second time with every float a
+// The shared GLSL (shaders/shared/brdf.glsl, lights.glsl) compiled a second time with `real` a
 // double: the guarded code itself in double precision. It tells fp32 rounding apart from what
 // the guards do, and is the fp64 row of the precision comparisons.
 // Literal constants keep their float rounding (5.55473f and PATINA_PI differ from the decimal
@@ -20,29 +20,9 @@ using glm::min;
 inline double max(double a, double b) { return a > b ? a : b; }
 inline double min(double a, double b) { return a < b ? a : b; }
 inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi); }
-#define float double
+using real = double;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
 #include "lights.glsl"
-// The default model, "epic" (every model: engine/shading/brdf_models.h), in its own namespace as in
-// shading.h.
-namespace seed {
-inline float energyTexel(int, int) {
-    return 1.0f;   // epic has no energy compensation: never read
-}
-#include "energy_table.glsl"
-// A permutation uses only some parameters of each dispatch function (Lambert ignores the angles).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include "brdf_model.glsl"
-#pragma GCC diagnostic pop
-}  // namespace seed
-using namespace seed;
 #undef PATINA_INLINE
-#undef float
-#undef PATINA_D
-#undef PATINA_V
-#undef PATINA_F
-#undef PATINA_FD
-#undef PATINA_MS
 }  // namespace patina::shader_f64

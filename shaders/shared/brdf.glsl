@@ -3,28 +3,30 @@
 // the lobe plot and the tests evaluate the same code. Keep to the common subset: float
 // literals with an f suffix, no overloads, no inout, no swizzles, structs built with
 // constructor syntax, and PATINA_INLINE before each function (C++ `inline`, empty in GLSL).
+// Scalars are `real`, as pbrt's are `Float`: `#define real float` in GLSL (gl/program.cpp),
+// `using real = ...` in each C++ namespace that compiles this (float, double or emulated half).
 
-const float PATINA_PI = 3.14159265358979f;
+const real PATINA_PI = 3.14159265358979f;
 
 // Perceptual roughness below this makes D = 0/0 at NoH = 1 (alpha^2 = 0). 0.045 is the fp32
 // floor used by Frostbite and Filament; it lies below 0.05, so well-defined inputs are unchanged.
 // In half precision (PATINA_HALF_PRECISION) the floor is 0.089, as Filament's for mobile: at
 // 0.045 the peak of D, 1 / (pi alpha^2) = 7.8e4, would overflow fp16's 65504.
 #ifdef PATINA_HALF_PRECISION
-const float MIN_PERCEPTUAL_ROUGHNESS = 0.089f;
-const float MAX_HALF = 65504.0f;
+const real MIN_PERCEPTUAL_ROUGHNESS = 0.089f;
+const real MAX_HALF = 65504.0f;
 #else
-const float MIN_PERCEPTUAL_ROUGHNESS = 0.045f;
+const real MIN_PERCEPTUAL_ROUGHNESS = 0.045f;
 #endif
 // sp divides by NoV; a normal that faces away from the camera (smooth normals at the
 // silhouette) would make it 0 or negative. 1e-4 is the usual floor (spec section 2).
-const float MIN_N_DOT_V = 1e-4f;
+const real MIN_N_DOT_V = 1e-4f;
 
 struct SurfaceMaterial {
     vec3 diffuseColor;   // c_diff = (1 - m) c_base
     vec3 f0;             // c_spec: reflectance at normal incidence
-    float roughness;     // perceptual r, after the floor above
-    float alpha;         // r^2
+    real roughness;     // perceptual r, after the floor above
+    real alpha;         // r^2
 };
 
 struct BrdfValue {
@@ -34,14 +36,14 @@ struct BrdfValue {
 
 // The specular lobe's factors, sp = D * Vis * F (for plots and tests).
 struct SpecularTerms {
-    float D;
-    float Vis;           // G / (4 NoL NoV)
+    real D;
+    real Vis;           // G / (4 NoL NoV)
     vec3 F;
 };
 
 // Karis 2013, p. 3 ("Material model"): c_diff, c_spec = mix(0.08 s, c_base, m), alpha = r^2.
-PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, float roughness, float specular, float metallic) {
-    float r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
+PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, real roughness, real specular, real metallic) {
+    real r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
     return SurfaceMaterial((1.0f - metallic) * baseColor,
                            mix(vec3(0.08f * specular), baseColor, metallic),
                            r, r * r);
@@ -57,10 +59,10 @@ PATINA_INLINE vec3 Fd_Lambert(vec3 diffuseColor) {
 // Written as alpha^2 / (pi (NoH^2 alpha^2 + |N x H|^2)^2): the same value, but 1 - NoH^2 taken
 // as |N x H|^2 keeps its digits near NoH = 1, where fp32 cancellation costs 2% at alpha = 0.002
 // (the Lagrange form, as in Filament's D_GGX).
-PATINA_INLINE float D_GGX(float NoH, vec3 NxH, float alpha) {
-    float oneMinusNoHSquared = dot(NxH, NxH);
-    float a = NoH * alpha;
-    float k = alpha / (oneMinusNoHSquared + a * a);
+PATINA_INLINE real D_GGX(real NoH, vec3 NxH, real alpha) {
+    real oneMinusNoHSquared = dot(NxH, NxH);
+    real a = NoH * alpha;
+    real k = alpha / (oneMinusNoHSquared + a * a);
 #ifdef PATINA_HALF_PRECISION
     // k itself can pass 65504 below the floor's peak; cap as spec section 2 does.
     return min(min(k, 256.0f) * min(k, 256.0f) * (1.0f / PATINA_PI), MAX_HALF);
@@ -73,90 +75,90 @@ PATINA_INLINE float D_GGX(float NoH, vec3 NxH, float alpha) {
 
 // Schlick-GGX geometry G1(x) = x / (x (1 - k) + k) (Karis 2013, eq. 4). Since G1(x) / x =
 // 1 / (x (1 - k) + k), the division by NoL NoV cancels exactly: V stays finite as NoV or NoL -> 0.
-PATINA_INLINE float V_SchlickGGX(float NoV, float NoL, float k) {
-    float gv = NoV * (1.0f - k) + k;
-    float gl = NoL * (1.0f - k) + k;
+PATINA_INLINE real V_SchlickGGX(real NoV, real NoL, real k) {
+    real gv = NoV * (1.0f - k) + k;
+    real gl = NoL * (1.0f - k) + k;
     return 0.25f / (gv * gl);
 }
 
 // Karis's remap of k for analytic lights: k = (r + 1)^2 / 8 (Karis 2013, eq. 4).
-PATINA_INLINE float k_Karis(float roughness) {
+PATINA_INLINE real k_Karis(real roughness) {
     return (roughness + 1.0f) * (roughness + 1.0f) / 8.0f;
 }
 
 // Smith GGX, separable (Walter et al. 2007, eq. 34): G1(x) = 2x / (x + sqrt(a^2 + (1 - a^2) x^2)),
 // so V = 1 / ((NoL + sqrt(...NoL)) (NoV + sqrt(...NoV))).
-PATINA_INLINE float V_SmithGGX(float NoV, float NoL, float alpha) {
-    float a2 = alpha * alpha;
-    float gv = NoV + sqrt(a2 + (1.0f - a2) * NoV * NoV);
-    float gl = NoL + sqrt(a2 + (1.0f - a2) * NoL * NoL);
+PATINA_INLINE real V_SmithGGX(real NoV, real NoL, real alpha) {
+    real a2 = alpha * alpha;
+    real gv = NoV + sqrt(a2 + (1.0f - a2) * NoV * NoV);
+    real gl = NoL + sqrt(a2 + (1.0f - a2) * NoL * NoL);
     return 1.0f / (gv * gl);
 }
 
 // Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 99
 // (height-correlated Smith GGX): V = 0.5 / (NoL sqrt(NoV^2 (1 - a^2) + a^2) + NoV sqrt(NoL^2 (1 - a^2) + a^2)).
 // NoV and NoL both 0 would be 0/0; the callers floor NoV at MIN_N_DOT_V.
-PATINA_INLINE float V_SmithGGXCorrelated(float NoV, float NoL, float alpha) {
-    float a2 = alpha * alpha;
-    float lambdaV = NoL * sqrt(NoV * NoV * (1.0f - a2) + a2);
-    float lambdaL = NoV * sqrt(NoL * NoL * (1.0f - a2) + a2);
+PATINA_INLINE real V_SmithGGXCorrelated(real NoV, real NoL, real alpha) {
+    real a2 = alpha * alpha;
+    real lambdaV = NoL * sqrt(NoV * NoV * (1.0f - a2) + a2);
+    real lambdaL = NoV * sqrt(NoL * NoL * (1.0f - a2) + a2);
     return 0.5f / (lambdaV + lambdaL);
 }
 
 // Hammon 2017, "PBR Diffuse Lighting for GGX+Smith Microsurfaces": the height-correlated V
 // approximated as 0.5 / mix(2 NoL NoV, NoL + NoV, alpha) (UE4 Vis_SmithJointApprox).
-PATINA_INLINE float V_SmithGGXCorrelated_Fast(float NoV, float NoL, float alpha) {
+PATINA_INLINE real V_SmithGGXCorrelated_Fast(real NoV, real NoL, real alpha) {
     return 0.5f / mix(2.0f * NoL * NoV, NoL + NoV, alpha);
 }
 
 // Schlick Fresnel with the spherical-Gaussian exponent (Karis 2013, eq. 5):
 // F = F0 + (1 - F0) 2^((-5.55473 VoH - 6.98316) VoH). VoH is clamped to [0, 1] by the caller.
-PATINA_INLINE vec3 F_SchlickSphericalGaussian(vec3 f0, float VoH) {
-    float fresnel = exp2((-5.55473f * VoH - 6.98316f) * VoH);
+PATINA_INLINE vec3 F_SchlickSphericalGaussian(vec3 f0, real VoH) {
+    real fresnel = exp2((-5.55473f * VoH - 6.98316f) * VoH);
     return f0 + (vec3(1.0f) - f0) * fresnel;
 }
 
 // Schlick 1994, "An Inexpensive BRDF Model for Physically-based Rendering", eq. 15:
 // F = F0 + (1 - F0) (1 - VoH)^5, as repeated products (no pow of a possibly negative base).
-PATINA_INLINE vec3 F_Schlick(vec3 f0, float VoH) {
-    float m = clamp(1.0f - VoH, 0.0f, 1.0f);
-    float m2 = m * m;
+PATINA_INLINE vec3 F_Schlick(vec3 f0, real VoH) {
+    real m = clamp(1.0f - VoH, 0.0f, 1.0f);
+    real m2 = m * m;
     return f0 + (vec3(1.0f) - f0) * (m2 * m2 * m);
 }
 
 // Exact Fresnel reflectance of a dielectric for unpolarised light (Walter et al. 2007, eq. 22),
 // with eta from F0 = ((eta - 1) / (eta + 1))^2. F0 near 1 (metals) would make eta infinite:
 // sqrt(F0) is capped at 0.9999 (eta <= 19999), where F is 1 to within 1e-4 anyway.
-PATINA_INLINE float F_DielectricExact1(float f0, float c) {
-    float s = min(sqrt(max(f0, 0.0f)), 0.9999f);
-    float eta = (1.0f + s) / (1.0f - s);
-    float g2 = eta * eta - 1.0f + c * c;   // > 0 for eta >= 1: no total internal reflection
-    float g = sqrt(g2);
-    float a = (g - c) / (g + c);
-    float b = (c * (g + c) - 1.0f) / (c * (g - c) + 1.0f);
+PATINA_INLINE real F_DielectricExact1(real f0, real c) {
+    real s = min(sqrt(max(f0, 0.0f)), 0.9999f);
+    real eta = (1.0f + s) / (1.0f - s);
+    real g2 = eta * eta - 1.0f + c * c;   // > 0 for eta >= 1: no total internal reflection
+    real g = sqrt(g2);
+    real a = (g - c) / (g + c);
+    real b = (c * (g + c) - 1.0f) / (c * (g - c) + 1.0f);
     return 0.5f * a * a * (1.0f + b * b);
 }
 
-PATINA_INLINE vec3 F_DielectricExact(vec3 f0, float VoH) {
+PATINA_INLINE vec3 F_DielectricExact(vec3 f0, real VoH) {
     return vec3(F_DielectricExact1(f0.x, VoH), F_DielectricExact1(f0.y, VoH), F_DielectricExact1(f0.z, VoH));
 }
 
 // Burley 2012, "Physically-Based Shading at Disney", eq. 3 (not energy conserving: albedo 1.04
 // at mu = 1, r = 1): (c / pi)(1 + (FD90 - 1)(1 - NoL)^5)(1 + (FD90 - 1)(1 - NoV)^5),
 // FD90 = 0.5 + 2 r LoH^2.
-PATINA_INLINE vec3 Fd_Burley(vec3 diffuseColor, float roughness, float NoV, float NoL, float LoH) {
-    float fd90 = 0.5f + 2.0f * roughness * LoH * LoH;
-    float mv = clamp(1.0f - NoV, 0.0f, 1.0f);
-    float ml = clamp(1.0f - NoL, 0.0f, 1.0f);
-    float lightScatter = 1.0f + (fd90 - 1.0f) * (ml * ml * ml * ml * ml);
-    float viewScatter = 1.0f + (fd90 - 1.0f) * (mv * mv * mv * mv * mv);
+PATINA_INLINE vec3 Fd_Burley(vec3 diffuseColor, real roughness, real NoV, real NoL, real LoH) {
+    real fd90 = 0.5f + 2.0f * roughness * LoH * LoH;
+    real mv = clamp(1.0f - NoV, 0.0f, 1.0f);
+    real ml = clamp(1.0f - NoL, 0.0f, 1.0f);
+    real lightScatter = 1.0f + (fd90 - 1.0f) * (ml * ml * ml * ml * ml);
+    real viewScatter = 1.0f + (fd90 - 1.0f) * (mv * mv * mv * mv * mv);
     return diffuseColor * (lightScatter * viewScatter / PATINA_PI);
 }
 
 // GGX D in its standard form (Karis 2013, eq. 3), for comparison: 1 - NoH^2 cancels in fp32
 // near NoH = 1 (2% at alpha = 0.002). D_GGX above is the guarded form.
-PATINA_INLINE float D_GGX_Standard(float NoH, float alpha) {
-    float a2 = alpha * alpha;
-    float base = NoH * NoH * (a2 - 1.0f) + 1.0f;
+PATINA_INLINE real D_GGX_Standard(real NoH, real alpha) {
+    real a2 = alpha * alpha;
+    real base = NoH * NoH * (a2 - 1.0f) + 1.0f;
     return a2 / (PATINA_PI * base * base);
 }

@@ -1,69 +1,64 @@
 // One BRDF model: the terms brdf.glsl offers, chosen at compile time (Filament's dispatch
 // style), then evaluateBrdf and shadeLight built from them. Shared GLSL / C++; include after
-// brdf.glsl, lights.glsl and energy_table.glsl. Every permutation compiles only the terms it uses.
-//   PATINA_D   0: GGX, Lagrange form (guarded)   1: GGX, standard form
-//   PATINA_V   0: Schlick-GGX k = (r+1)^2/8      1: Schlick-GGX k = alpha/2
-//              2: Smith separable                3: Smith height-correlated
-//              4: height-correlated, Hammon's approximation
-//   PATINA_F   0: Schlick, spherical-Gaussian    1: Schlick pow5   2: exact dielectric
-//   PATINA_FD  0: Lambert                        1: Burley
-//   PATINA_MS  0: single scattering              1: Turquin 2019 energy compensation
+// brdf.glsl, lights.glsl, energy_table.glsl and brdf_terms.glsl (the terms' names). Every
+// permutation compiles only the terms it uses:
+//   PATINA_D, PATINA_V, PATINA_F, PATINA_FD, PATINA_MS   one of brdf_terms.glsl's names each
 //   PATINA_NO_DIFFUSE (defined or not): c_diff = 0, no diffuse term (specialised shaders)
 // The defaults are the seed model, "epic".
 #ifndef PATINA_D
-#define PATINA_D 0
+#define PATINA_D PATINA_D_GGX
 #endif
 #ifndef PATINA_V
-#define PATINA_V 0
+#define PATINA_V PATINA_V_SCHLICK_KARIS
 #endif
 #ifndef PATINA_F
-#define PATINA_F 0
+#define PATINA_F PATINA_F_SCHLICK_SG
 #endif
 #ifndef PATINA_FD
-#define PATINA_FD 0
+#define PATINA_FD PATINA_FD_LAMBERT
 #endif
 #ifndef PATINA_MS
-#define PATINA_MS 0
+#define PATINA_MS PATINA_MS_NONE
 #endif
 
-PATINA_INLINE float distribution(float NoH, vec3 NxH, float alpha) {
-#if PATINA_D == 1
+PATINA_INLINE real distribution(real NoH, vec3 NxH, real alpha) {
+#if PATINA_D == PATINA_D_GGX_STANDARD
     return D_GGX_Standard(NoH, alpha);
 #else
     return D_GGX(NoH, NxH, alpha);
 #endif
 }
 
-PATINA_INLINE float visibility(float NoV, float NoL, SurfaceMaterial material) {
-#if PATINA_V == 1
+PATINA_INLINE real visibility(real NoV, real NoL, SurfaceMaterial material) {
+#if PATINA_V == PATINA_V_SCHLICK_ALPHA_HALF
     return V_SchlickGGX(NoV, NoL, material.alpha * 0.5f);
-#elif PATINA_V == 2
+#elif PATINA_V == PATINA_V_SMITH_SEPARABLE
     return V_SmithGGX(NoV, NoL, material.alpha);
-#elif PATINA_V == 3
+#elif PATINA_V == PATINA_V_SMITH_CORRELATED
     return V_SmithGGXCorrelated(NoV, NoL, material.alpha);
-#elif PATINA_V == 4
+#elif PATINA_V == PATINA_V_HAMMON
     return V_SmithGGXCorrelated_Fast(NoV, NoL, material.alpha);
 #else
     return V_SchlickGGX(NoV, NoL, k_Karis(material.roughness));
 #endif
 }
 
-PATINA_INLINE vec3 fresnel(vec3 f0, float VoH) {
-#if PATINA_F == 1
+PATINA_INLINE vec3 fresnel(vec3 f0, real VoH) {
+#if PATINA_F == PATINA_F_SCHLICK_POW5
     return F_Schlick(f0, VoH);
-#elif PATINA_F == 2
+#elif PATINA_F == PATINA_F_DIELECTRIC_EXACT
     return F_DielectricExact(f0, VoH);
 #else
     return F_SchlickSphericalGaussian(f0, VoH);
 #endif
 }
 
-PATINA_INLINE vec3 diffuse(SurfaceMaterial material, float NoV, float NoL, float LoH) {
+PATINA_INLINE vec3 diffuse(SurfaceMaterial material, real NoV, real NoL, real LoH) {
 #if defined(PATINA_NO_DIFFUSE)
     // Set only for a material whose c_diff is exactly 0 (pure metal or black base): the terms
     // would multiply by 0.
     return vec3(0.0f);
-#elif PATINA_FD == 1
+#elif PATINA_FD == PATINA_FD_BURLEY
     return Fd_Burley(material.diffuseColor, material.roughness, NoV, NoL, LoH);
 #else
     return Fd_Lambert(material.diffuseColor);
@@ -73,9 +68,9 @@ PATINA_INLINE vec3 diffuse(SurfaceMaterial material, float NoV, float NoL, float
 // Turquin 2019, "Practical multiple scattering compensation for microfacet models", eq. 18 in
 // Filament's form: sp *= 1 + F0 (1 / E(NoV) - 1), E the single-scattering directional albedo
 // with F = 1, from the model's own table (energy_table.glsl; include it first).
-PATINA_INLINE vec3 energyCompensation(vec3 f0, float NoV, float roughness) {
-#if PATINA_MS == 1
-    float albedo = max(energyTableLookup(NoV, roughness), 1e-4f);
+PATINA_INLINE vec3 energyCompensation(vec3 f0, real NoV, real roughness) {
+#if PATINA_MS == PATINA_MS_TURQUIN
+    real albedo = max(energyTableLookup(NoV, roughness), 1e-4f);
     return vec3(1.0f) + f0 * (1.0f / albedo - 1.0f);
 #else
     return vec3(1.0f);
@@ -85,18 +80,18 @@ PATINA_INLINE vec3 energyCompensation(vec3 f0, float NoV, float roughness) {
 // f = d + sp for unit N, V, L on the lit side (NoL > 0); the caller skips NoL <= 0.
 PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
     vec3 LplusV = L + V;
-    float lengthSquared = dot(LplusV, LplusV);
-    float NoV = max(dot(N, V), MIN_N_DOT_V);
-    float NoL = clamp(dot(N, L), 0.0f, 1.0f);
+    real lengthSquared = dot(LplusV, LplusV);
+    real NoV = max(dot(N, V), MIN_N_DOT_V);
+    real NoL = clamp(dot(N, L), 0.0f, 1.0f);
     // L = -V: H is 0/0. Only reachable with V below the surface; no half vector, no specular.
     if (lengthSquared <= 0.0f) {
         return BrdfValue(diffuse(material, NoV, NoL, 0.0f), vec3(0.0f));
     }
     vec3 H = LplusV * inversesqrt(lengthSquared);
-    float NoH = clamp(dot(N, H), 0.0f, 1.0f);
-    float VoH = clamp(dot(V, H), 0.0f, 1.0f);
-    float D = distribution(NoH, cross(N, H), material.alpha);
-    float Vis = visibility(NoV, NoL, material);
+    real NoH = clamp(dot(N, H), 0.0f, 1.0f);
+    real VoH = clamp(dot(V, H), 0.0f, 1.0f);
+    real D = distribution(NoH, cross(N, H), material.alpha);
+    real Vis = visibility(NoV, NoL, material);
     vec3 F = fresnel(material.f0, VoH);
     vec3 specular = (D * Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
     // LoH = VoH: H bisects L and V.
@@ -109,7 +104,7 @@ PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, v
 // than the branch's mask bookkeeping. evaluateBrdf clamps NoL, so the unselected value is
 // finite for the models' own guards; a select discards it even if it were not.
 PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial material, vec3 N, vec3 V) {
-    float NoL = dot(N, L);
+    real NoL = dot(N, L);
     BrdfValue f = evaluateBrdf(material, N, V, L);
     vec3 value = radiance * min(NoL, 1.0f) * (f.diffuse + f.specular);
     return NoL > 0.0f ? value : vec3(0.0f);
@@ -124,12 +119,12 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
                                    vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
-    float distanceSquared = dot(toLight, toLight);
+    real distanceSquared = dot(toLight, toLight);
     // Clamped so the light on the shaded point still gives finite numbers; selected away below.
-    float inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
-    float t = distanceSquared * inverseDistance;
+    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
+    real t = distanceSquared * inverseDistance;
     // 0 turns the window off: with `windowed` a constant, the compiler folds it away.
-    float attenuation = pointLightAttenuation(t, windowed ? light.inverseRadius : 0.0f,
+    real attenuation = pointLightAttenuation(t, windowed ? light.inverseRadius : 0.0f,
                                               karis ? KARIS_ATTENUATION : light.attenuation);
     vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
     // A light on the shaded point has no direction: no light.
@@ -142,7 +137,7 @@ PATINA_INLINE vec3 shadeDirectionalLight(PackedLight light, SurfaceMaterial mate
 
 // Diffuse only, seen with L = N.
 PATINA_INLINE vec3 shadeHemisphereLight(PackedLight light, SurfaceMaterial material, vec3 N, vec3 V) {
-    float NoV = max(dot(N, V), MIN_N_DOT_V);
+    real NoV = max(dot(N, V), MIN_N_DOT_V);
     vec3 H = safeNormalize(N + V);
     return hemisphereRadiance(light, N) * diffuse(material, NoV, 1.0f, clamp(dot(N, H), 0.0f, 1.0f));
 }

@@ -18,7 +18,7 @@ PATINA_INLINE vec3 tonemapReinhard(vec3 x) {
 }
 
 // IEC 61966-2-1 sRGB encoding of one channel in [0, 1].
-PATINA_INLINE float srgbEncode(float linear) {
+PATINA_INLINE real srgbEncode(real linear) {
     if (linear <= 0.0031308f) {
         return 12.92f * linear;
     }
@@ -26,7 +26,7 @@ PATINA_INLINE float srgbEncode(float linear) {
 }
 
 // Inverse of srgbEncode (IEC 61966-2-1), for colour pickers that show sRGB and store linear.
-PATINA_INLINE float srgbDecode(float encoded) {
+PATINA_INLINE real srgbDecode(real encoded) {
     if (encoded <= 0.04045f) {
         return encoded / 12.92f;
     }
@@ -35,7 +35,7 @@ PATINA_INLINE float srgbDecode(float encoded) {
 
 // Exposure in stops (x 2^exposure), then the tone map, then sRGB. Negative or NaN radiance
 // (never produced by the shading guards, but possible from a bad HDR input) displays as 0.
-PATINA_INLINE vec3 displayTransform(vec3 linear, float exposureStops, int tonemap) {
+PATINA_INLINE vec3 displayTransform(vec3 linear, real exposureStops, int tonemap) {
     vec3 exposed = max(linear * exp2(exposureStops), vec3(0.0f));
     vec3 mapped;
     if (tonemap == TONEMAP_ACES) {

@@ -13,25 +13,25 @@ const int MAX_LIGHTS = 64;
 
 // A window of 1/x^2-style attenuation that never divides by less than this; it only acts when
 // a_c + a_l t + a_q t^2 < 1e-4 (all three zero, or a light at the surface with a_c = 0).
-const float MIN_ATTENUATION_DENOMINATOR = 1e-4f;
+const real MIN_ATTENUATION_DENOMINATOR = 1e-4f;
 // Below this squared distance a point light sits on the shaded point and L has no direction.
-const float MIN_LIGHT_DISTANCE_SQUARED = 1e-12f;
+const real MIN_LIGHT_DISTANCE_SQUARED = 1e-12f;
 
-// No swizzles here (C++ has none): each vec3 is followed by the float that fills its std140
+// No swizzles here (C++ has none): each vec3 is followed by the scalar that fills its std140
 // slot, so a light is six 16-byte rows in both languages.
 struct PackedLight {
     vec3 radiance;           // colour * intensity
     int type;                // LIGHT_*
     vec3 position;           // point
-    float inverseRadius;     // point: 1 / radius, 0 for no window (radius 0)
+    real inverseRadius;      // point: 1 / radius, 0 for no window (radius 0)
     vec3 directionToLight;   // directional: -normalize(direction)
-    float unused0;
+    real unused0;
     vec3 attenuation;        // point: a_c, a_l, a_q
-    float unused1;
+    real unused1;
     vec3 sky;                // hemisphere: sky colour * colour * intensity
-    float unused2;
+    real unused2;
     vec3 ground;             // hemisphere: ground colour * colour * intensity
-    float unused3;
+    real unused3;
 };
 
 // a_c, a_l, a_q of Karis 2013's falloff denominator d^2 + 1 (eq. 9), every Light's default.
@@ -46,25 +46,25 @@ const vec3 KARIS_ATTENUATION = vec3(1.0f, 0.0f, 1.0f);
 // Takes 1/radius, packed on the CPU: no division, and no branch for "no window", which
 // inverseRadius = 0 gives exactly (t * 0 = 0, window 1), so a loop over lights of both kinds
 // runs one straight path.
-PATINA_INLINE float pointLightAttenuation(float t, float inverseRadius, vec3 coefficients) {
-    float ratio = t * inverseRadius;
-    float ratio2 = ratio * ratio;
-    float w = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
-    float window = w * w;
-    float denominator = coefficients.x + coefficients.y * t + coefficients.z * t * t;
+PATINA_INLINE real pointLightAttenuation(real t, real inverseRadius, vec3 coefficients) {
+    real ratio = t * inverseRadius;
+    real ratio2 = ratio * ratio;
+    real w = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
+    real window = w * w;
+    real denominator = coefficients.x + coefficients.y * t + coefficients.z * t * t;
     return window / max(denominator, MIN_ATTENUATION_DENOMINATOR);
 }
 
 // Hemisphere light: mix(ground, sky, clamp(N . up, 0, 1)) seen with L = N (NoL = 1), diffuse only.
 PATINA_INLINE vec3 hemisphereRadiance(PackedLight light, vec3 N) {
-    float skyWeight = clamp(N.y, 0.0f, 1.0f);
+    real skyWeight = clamp(N.y, 0.0f, 1.0f);
     return mix(light.ground, light.sky, skyWeight);
 }
 
 // Unit normal, or zero for a zero (or non-finite-length) normal so every light adds nothing
 // but the hemisphere's ground term, instead of NaN from normalize(0).
 PATINA_INLINE vec3 safeNormalize(vec3 v) {
-    float lengthSquared = dot(v, v);
+    real lengthSquared = dot(v, v);
     if (!(lengthSquared > 0.0f)) {
         return vec3(0.0f);
     }

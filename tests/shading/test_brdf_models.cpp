@@ -72,9 +72,9 @@ TEST(BrdfModels, NamesAndDefinesAreConsistent) {
     EXPECT_EQ(brdfModelFromName("epic"), BrdfModelId::Epic);
     EXPECT_FALSE(brdfModelFromName("phong").has_value());
     const BrdfTerms reference = brdfModel(BrdfModelId::Reference).terms;
-    EXPECT_EQ(reference.v, 3);   // exact height-correlated Smith
-    EXPECT_EQ(reference.f, 2);   // exact Fresnel
-    EXPECT_EQ(reference.ms, 1);  // multiple scattering
+    EXPECT_EQ(reference.v, PATINA_V_SMITH_CORRELATED);
+    EXPECT_EQ(reference.f, PATINA_F_DIELECTRIC_EXACT);
+    EXPECT_EQ(reference.ms, PATINA_MS_TURQUIN);
 }
 
 TEST(BrdfModels, DifferWhereTheirTermsDiffer) {
@@ -84,7 +84,9 @@ TEST(BrdfModels, DifferWhereTheirTermsDiffer) {
     for (const BrdfModelInfo& model : brdfModels()) {
         const shader::BrdfValue f = evaluateBrdf(model.id, m, N, V, L);
         const BrdfTerms t = model.terms;
-        const bool sameSpecular = t.v == 0 && t.f == 0 && t.ms == 0;   // D forms agree here
+        // The two forms of D agree here.
+        const bool sameSpecular =
+            t.v == PATINA_V_SCHLICK_KARIS && t.f == PATINA_F_SCHLICK_SG && t.ms == PATINA_MS_NONE;
         if (sameSpecular) {
             EXPECT_NEAR(f.specular.x, epic, 1e-5f * epic) << model.name;
         } else {

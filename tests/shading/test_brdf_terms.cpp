@@ -2,6 +2,7 @@
 // ../shared/spec/shading.md section 1, and the whole BRDF against the double reference.
 #include <gtest/gtest.h>
 
+#include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
 #include "test_support.h"
@@ -96,7 +97,7 @@ TEST(EpicBrdf, MatchesTheDoubleReference) {
         const glm::vec3 N = test::randomUnitVector(rng);
         const glm::vec3 V = test::vectorAtCosine(N, 0.01f + 0.99f * unit(rng), rng);
         const glm::vec3 L = test::vectorAtCosine(N, 0.01f + 0.99f * unit(rng), rng);
-        const BrdfValue f = shader::evaluateBrdf(surfaceMaterial(material), N, V, L);
+        const BrdfValue f = evaluateBrdf(BrdfModelId::Epic, surfaceMaterial(material), N, V, L);
         const reference::Brdf expected = reference::brdf(
             test::toReference(material), test::toReference(N), test::toReference(V), test::toReference(L));
         worst = std::max(worst, test::maxRelativeError({f.diffuse + f.specular},
@@ -114,8 +115,8 @@ TEST(EpicBrdf, IsReciprocal) {
         const glm::vec3 N = test::randomUnitVector(rng);
         const glm::vec3 V = test::vectorAtCosine(N, 0.05f + 0.95f * unit(rng), rng);
         const glm::vec3 L = test::vectorAtCosine(N, 0.05f + 0.95f * unit(rng), rng);
-        const BrdfValue a = shader::evaluateBrdf(m, N, V, L);
-        const BrdfValue b = shader::evaluateBrdf(m, N, L, V);
+        const BrdfValue a = evaluateBrdf(BrdfModelId::Epic, m, N, V, L);
+        const BrdfValue b = evaluateBrdf(BrdfModelId::Epic, m, N, L, V);
         EXPECT_NEAR(a.specular.x, b.specular.x, 1e-5 * std::max(1.0f, a.specular.x));
     }
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "accuracy/edge_cases.h"
 #include "scene/probe.h"
@@ -38,7 +39,7 @@ TEST(Guards, EveryTermStaysFiniteAtItsFailurePoint) {
     EXPECT_TRUE(std::isfinite(shader::pointLightAttenuation(0.0f, 0.0f, glm::vec3(0.0f))));
     // L = -V.
     const glm::vec3 N(0, 0, 1), V = glm::normalize(glm::vec3(0.3f, 0.0f, -1.0f));
-    const shader::BrdfValue f = shader::evaluateBrdf(smooth, N, V, -V);
+    const shader::BrdfValue f = evaluateBrdf(BrdfModelId::Epic, smooth, N, V, -V);
     EXPECT_TRUE(std::isfinite(f.specular.x));
     EXPECT_EQ(f.specular.x, 0.0f);
 }
@@ -73,9 +74,10 @@ TEST(Guards, ChangeNothingWhereTheFormulaIsWellDefined) {
     const glm::dvec3 N(0.0, 0.0, 1.0);
     double worst = 0.0;
     for (int i = 0; i < 40000; ++i) {
-        const double roughness = i % 2 ? 0.05 + 0.01 * unit(rng) : 0.05 + 0.95 * unit(rng);
-        const double metallic = unit(rng);
-        const glm::dvec3 base(unit(rng), unit(rng), unit(rng));
+        // Parameters a Material holds (floats), the same numbers for both sides.
+        const double roughness = float(i % 2 ? 0.05 + 0.01 * unit(rng) : 0.05 + 0.95 * unit(rng));
+        const double metallic = float(unit(rng));
+        const glm::dvec3 base(glm::vec3(unit(rng), unit(rng), unit(rng)));
         const glm::dvec3 V = test::vectorAtCosine(N, 0.01 + 0.99 * unit(rng), rng);
         glm::dvec3 L = test::vectorAtCosine(N, 0.01 + 0.99 * unit(rng), rng);
         if (i % 2) {
@@ -84,9 +86,8 @@ TEST(Guards, ChangeNothingWhereTheFormulaIsWellDefined) {
         if (glm::dot(N, L) < 0.01) {
             continue;
         }
-        const shader_f64::SurfaceMaterial m =
-            shader_f64::deriveSurfaceMaterial(base, roughness, 0.5, metallic);
-        const shader_f64::BrdfValue f = shader_f64::evaluateBrdf(m, N, V, L);
+        const MaterialParameters m{glm::vec3(base), float(roughness), 0.5f, float(metallic)};
+        const BrdfValueF64 f = evaluateBrdfF64(BrdfModelId::Epic, m, N, V, L);
         const reference::Material rm{{base.x, base.y, base.z}, roughness, 0.5, metallic};
         const reference::Brdf expected =
             reference::brdf(rm, {N.x, N.y, N.z}, {V.x, V.y, V.z}, {L.x, L.y, L.z});
@@ -116,7 +117,7 @@ TEST(Guards, LagrangeFormKeepsTheSharpestFp32PeakNearDouble) {
         if (glm::dot(N, L) < 0.1f) {
             continue;
         }
-        const shader::BrdfValue f = shader::evaluateBrdf(surfaceMaterial(material), N, V, L);
+        const shader::BrdfValue f = evaluateBrdf(BrdfModelId::Epic, surfaceMaterial(material), N, V, L);
         const reference::Brdf expected = reference::brdf(
             test::toReference(material), test::toReference(N), test::toReference(V), test::toReference(L));
         worst = std::max(worst, test::maxRelativeError({f.specular}, {expected.specular}, 1e-3));

@@ -6,7 +6,20 @@
 #include "shading/cpu_shading.h"
 #include "scene/light_packing.h"
 #include "scene/probe.h"
+#include "shading/energy_table.h"
 #include "test_support.h"
+
+// The per-type light functions with their compile-time switches, which the model dispatch of
+// shading/brdf_models.h does not expose: the default model's permutation compiled here as well.
+namespace patina::shader {
+#define PATINA_INLINE inline
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#define PATINA_INSTANCE Epic
+#include "shading/brdf_model_instance.h"
+#pragma GCC diagnostic pop
+#undef PATINA_INLINE
+}  // namespace patina::shader
 
 namespace patina {
 namespace {
@@ -150,12 +163,12 @@ TEST(PointLight, KarisConstantMatchesReadingKarisCoefficients) {
     light.position = {1.0f, 2.0f, 0.5f};
     light.attenuation = {1.0f, 0.0f, 1.0f};
     const shader::PackedLight karis = packLight(light);
-    EXPECT_EQ(shader::shadePointLight(karis, true, true, material, P, N, V),
-              shader::shadePointLight(karis, true, false, material, P, N, V));
+    EXPECT_EQ(shader::model_Epic::shadePointLight(karis, true, true, material, P, N, V),
+              shader::model_Epic::shadePointLight(karis, true, false, material, P, N, V));
     light.attenuation = {0.5f, 0.25f, 1.0f};
     const shader::PackedLight other = packLight(light);
-    EXPECT_NE(shader::shadePointLight(other, true, true, material, P, N, V),
-              shader::shadePointLight(other, true, false, material, P, N, V));
+    EXPECT_NE(shader::model_Epic::shadePointLight(other, true, true, material, P, N, V),
+              shader::model_Epic::shadePointLight(other, true, false, material, P, N, V));
 }
 
 }  // namespace
