@@ -270,7 +270,7 @@ Scene renderBenchScene(int lights, AddedLights added) {
         light.name = "ring " + std::to_string(i + 1);
         light.position = {2.5f * std::cos(angle), 2.5f * std::sin(angle), 2.0f};
         light.direction = -light.position;
-        light.radius = 12.0f;
+        light.range = 12.0f;
         // At the ring's distance (about 3.2) both give about the same light.
         light.attenuation = added == AddedLights::PointsOtherCoefficients ? glm::vec3(0.5f, 0.25f, 0.9f)
                                                                          : glm::vec3(1.0f, 0.0f, 1.0f);

@@ -8,10 +8,68 @@
 # The inputs: the default scene's sphere, a torus and a glTF model (the torus exported as .glb
 # by the binary under test) through the single, multi and specialised paths at 1 and 4 samples,
 # as PNG and PFM; compare (with --diff); a sheet of every preset; probe on the CPU and the GPU;
-# lobe; export as .gltf and .glb. Scene files are written as version 1, which every later
-# version still reads.
+# lobe; export as .gltf and .glb. The scenes are the default scene as a version 1 file, which
+# every later version still reads, so that builds before and after a format change compare.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
+
+default_scene_v1() {
+  cat <<'EOF'
+{
+  "format": "patina-scene",
+  "version": 1,
+  "mesh": "sphere",
+  "material": {
+    "format": "patina-material",
+    "version": 1,
+    "name": "terracotta",
+    "baseColor": [0.8, 0.25, 0.15],
+    "roughness": 0.4,
+    "specular": 0.5,
+    "metallic": 0.0
+  },
+  "camera": {
+    "position": [0.0, 0.6, 3.4],
+    "target": [0.0, 0.0, 0.0],
+    "fovYDegrees": 45.0
+  },
+  "lights": [
+    {
+      "type": "point",
+      "name": "warm key",
+      "enabled": true,
+      "color": [1.0, 0.78, 0.55],
+      "intensity": 16.0,
+      "position": [2.2, 2.0, 2.4],
+      "radius": 12.0,
+      "attenuation": [1.0, 0.0, 1.0]
+    },
+    {
+      "type": "directional",
+      "name": "cool fill",
+      "enabled": true,
+      "color": [0.55, 0.7, 1.0],
+      "intensity": 2.0,
+      "direction": [1.0, -0.35, -0.6]
+    },
+    {
+      "type": "hemisphere",
+      "name": "sky",
+      "enabled": true,
+      "color": [1.0, 1.0, 1.0],
+      "intensity": 0.8,
+      "sky": [0.22, 0.3, 0.45],
+      "ground": [0.12, 0.09, 0.06]
+    }
+  ],
+  "display": {
+    "exposure": 0.0,
+    "tonemap": "none",
+    "background": [0.02, 0.02, 0.025]
+  }
+}
+EOF
+}
 
 run() {
   local patina out
@@ -20,10 +78,10 @@ run() {
   mkdir -p "$out/inputs"
   out=$(realpath "$out")
   local in=$out/inputs
-  sed 's/"mesh": "sphere"/"mesh": "torus"/' "$here/examples/default_scene.json" >"$in/torus.json"
+  default_scene_v1 >"$in/sphere.json"
+  sed 's/"mesh": "sphere"/"mesh": "torus"/' "$in/sphere.json" >"$in/torus.json"
   "$patina" export --mesh torus --out "$in/model.glb" >/dev/null
-  sed 's/"mesh": "sphere"/"mesh": "model.glb"/' "$here/examples/default_scene.json" >"$in/model.json"
-  cp "$here/examples/default_scene.json" "$in/sphere.json"
+  sed 's/"mesh": "sphere"/"mesh": "model.glb"/' "$in/sphere.json" >"$in/model.json"
   local scene passes msaa
   for scene in sphere torus model; do
     for passes in single multi specialised; do

@@ -31,7 +31,7 @@ struct Light {
     Vec3 color;
     double intensity;
     Vec3 position;
-    double radius;
+    double range;
     double ac, al, aq;
     Vec3 direction;
     Vec3 sky, ground;
@@ -95,8 +95,8 @@ inline Vec3 shade(const Material& m, const Light& light, Vec3 P, Vec3 N, Vec3 V)
         const double t = length(toLight);
         L = (1.0 / t) * toLight;
         double window = 1.0;
-        if (light.radius > 0) {
-            window = std::clamp(1.0 - std::pow(t / light.radius, 4.0), 0.0, 1.0);
+        if (light.range > 0) {
+            window = std::clamp(1.0 - std::pow(t / light.range, 4.0), 0.0, 1.0);
             window *= window;
         }
         attenuation = window / (light.ac + light.al * t + light.aq * t * t);

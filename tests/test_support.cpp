@@ -32,7 +32,7 @@ std::vector<reference::Light> toReference(const std::vector<Light>& lights) {
         r.color = toReference(light.color);
         r.intensity = light.intensity;
         r.position = toReference(light.position);
-        r.radius = light.radius;
+        r.range = light.range;
         r.ac = light.attenuation.x;
         r.al = light.attenuation.y;
         r.aq = light.attenuation.z;

@@ -78,7 +78,7 @@ void addLight(EditorState& state, LightType type) {
     light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
     if (type == LightType::Point) {
         light.position = {1.5f, 1.5f, 1.5f};
-        light.radius = 10.0f;
+        light.range = 10.0f;
         light.intensity = 8.0f;
     } else if (type == LightType::Directional) {
         light.direction = {-0.5f, -0.7f, -0.5f};

@@ -50,7 +50,7 @@ void editLight(EditorState& state, Light& light, int index) {
     switch (light.type) {
     case LightType::Point:
         ImGui::DragFloat3("Position", &light.position.x, 0.01f);
-        ImGui::DragFloat("Radius", &light.radius, 0.05f, 0.0f, 1e4f, light.radius > 0 ? "%.3f" : "none",
+        ImGui::DragFloat("Range", &light.range, 0.05f, 0.0f, 1e4f, light.range > 0 ? "%.3f" : "none",
                          ImGuiSliderFlags_AlwaysClamp);
         ImGui::DragFloat("a_c", &light.attenuation.x, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
         ImGui::DragFloat("a_l", &light.attenuation.y, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);

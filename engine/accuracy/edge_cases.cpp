@@ -15,11 +15,11 @@ Light directionalFrom(glm::vec3 toLight) {
     return light;
 }
 
-Light pointAt(glm::vec3 position, float radius, glm::vec3 attenuation) {
+Light pointAt(glm::vec3 position, float range, glm::vec3 attenuation) {
     Light light;
     light.type = LightType::Point;
     light.position = position;
-    light.radius = radius;
+    light.range = range;
     light.attenuation = attenuation;
     light.intensity = 5.0f;
     return light;
@@ -90,11 +90,11 @@ std::vector<EdgeCase> edgeCases() {
                      {pointAt({1, 2, 3}, 5, {1, 0, 1}), pointAt({1, 2, 3}, 5, {0, 0, 1})},
                      {{glm::vec3(1, 2, 3), up, up}}});
     // Radius 0 (no window), all attenuation terms 0, and both together.
-    cases.push_back({"radius 0", roughMaterial(0.3f), {pointAt({0, 0, 2}, 0, {1, 0, 1})},
+    cases.push_back({"range 0", roughMaterial(0.3f), {pointAt({0, 0, 2}, 0, {1, 0, 1})},
                      {{glm::vec3(0.0f), up, up}}});
     cases.push_back({"zero attenuation", roughMaterial(0.3f), {pointAt({0, 0, 2}, 5, {0, 0, 0})},
                      {{glm::vec3(0.0f), up, up}}});
-    cases.push_back({"radius 0 and zero attenuation", roughMaterial(0.3f),
+    cases.push_back({"range 0 and zero attenuation", roughMaterial(0.3f),
                      {pointAt({0, 0, 1e-3f}, 0, {0, 0, 0})},
                      {{glm::vec3(0.0f), up, up}}});
     return cases;

@@ -58,7 +58,7 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
         LightSource source;
         if (light.type == shader::LIGHT_POINT) {
             source = sourceOf(i, flatSlots, "FLAT_POINT");
-            call = "SHADE_POINT(" + source.fragment + (light.inverseRadius > 0.0f ? ", true, " : ", false, ") +
+            call = "SHADE_POINT(" + source.fragment + (light.inverseRange > 0.0f ? ", true, " : ", false, ") +
                    (hasKarisAttenuation(light) ? "true)" : "false)");
         } else if (light.type == shader::LIGHT_DIRECTIONAL) {
             source = sourceOf(i, flatSlots, "FLAT_DIRECTIONAL");

@@ -198,7 +198,7 @@ glm::vec3 JsonObjectReader::vec3(const char* key, glm::vec3 fallback, Range rang
     return result;
 }
 
-void JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int supportedVersion) {
+int JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int supportedVersion) {
     const Json& format = required("format");
     if (!format.is_string() || format.get<std::string>() != expectedFormat) {
         fail("format", std::string("expected \"") + expectedFormat + "\", got " + shortJson(format));
@@ -210,6 +210,7 @@ void JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int sup
                             " is newer than this Patina reads (up to " +
                             std::to_string(supportedVersion) + ")");
     }
+    return version;
 }
 
 Json JsonObjectReader::keepUnknown(std::vector<std::string>& warnings) const {

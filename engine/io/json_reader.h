@@ -54,8 +54,8 @@ public:
     Json keepUnknown(std::vector<std::string>& warnings) const;
     [[noreturn]] void fail(const char* key, const std::string& what) const;
 
-    // Requires "format": expectedFormat and "version" <= supportedVersion.
-    void checkFormatAndVersion(const char* expectedFormat, int supportedVersion);
+    // Requires "format": expectedFormat and "version" <= supportedVersion; returns the version.
+    int checkFormatAndVersion(const char* expectedFormat, int supportedVersion);
 
 private:
     const Json* find(const char* key);

@@ -55,7 +55,7 @@ bool nestsDeeperThan(const Json& value, int levels) {
     return false;
 }
 
-Light lightFromJson(const Json& json, const std::string& pointer, const std::string& source,
+Light lightFromJson(const Json& json, int version, const std::string& pointer, const std::string& source,
                     std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, pointer, source);
     Light light;
@@ -74,7 +74,7 @@ Light lightFromJson(const Json& json, const std::string& pointer, const std::str
     switch (light.type) {
     case LightType::Point:
         light.position = reader.vec3("position", light.position);
-        light.radius = reader.number("radius", light.radius, kNonNegative);
+        light.range = reader.number(version >= 2 ? "range" : "radius", light.range, kNonNegative);
         light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
         break;
     case LightType::Directional:
@@ -132,7 +132,7 @@ Json lightToJson(const Light& light) {
     switch (light.type) {
     case LightType::Point:
         json["position"] = toJson(light.position);
-        json["radius"] = toJson(light.radius);
+        json["range"] = toJson(light.range);
         json["attenuation"] = toJson(light.attenuation);
         break;
     case LightType::Directional: json["direction"] = toJson(light.direction); break;
@@ -195,7 +195,7 @@ Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::st
 Scene sceneFromJson(const Json& json, const std::string& source,
                     const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, "", source);
-    reader.checkFormatAndVersion("patina-scene", kSceneFormatVersion);
+    const int version = reader.checkFormatAndVersion("patina-scene", kSceneFormatVersion);
     Scene scene;
     const std::string mesh = reader.string("mesh", "sphere");
     if (const auto meshKind = meshKindFromName(mesh)) {
@@ -228,7 +228,7 @@ Scene sceneFromJson(const Json& json, const std::string& source,
         }
         for (size_t i = 0; i < lights->size(); ++i) {
             scene.lights.push_back(
-                lightFromJson((*lights)[i], "/lights/" + std::to_string(i), source, warnings));
+                lightFromJson((*lights)[i], version, "/lights/" + std::to_string(i), source, warnings));
         }
     } else {
         scene.lights.clear();

@@ -11,7 +11,9 @@ namespace patina {
 // Loaders throw InputError and append non-fatal notes (unknown keys) to `warnings`.
 // docs/FORMATS.md describes both formats.
 constexpr int kMaterialFormatVersion = 1;
-constexpr int kSceneFormatVersion = 1;
+// 2: a point light's attenuation window is "range" (version 1 called it "radius", which sphere
+// lights need for their size). Version 1 files still load; saving writes version 2.
+constexpr int kSceneFormatVersion = 2;
 
 Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
                           bool requireHeader, std::vector<std::string>& warnings);

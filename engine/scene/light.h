@@ -24,7 +24,8 @@ struct Light {
     float intensity = 1.0f;
     // point
     glm::vec3 position{0.0f, 2.0f, 2.0f};
-    float radius = 0.0f;                       // <= 0: no window
+    // The attenuation window: the light reaches this far (Karis 2013 eq. 9); <= 0: no window.
+    float range = 0.0f;
     glm::vec3 attenuation{1.0f, 0.0f, 1.0f};   // a_c, a_l, a_q
     // directional: where the light travels
     glm::vec3 direction{0.0f, -1.0f, 0.0f};

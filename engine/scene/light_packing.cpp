@@ -19,7 +19,7 @@ shader::PackedLight packLight(const Light& light) {
     packed.radiance = radiance;
     packed.type = shaderLightType(light.type);
     packed.position = light.position;
-    packed.inverseRadius = light.radius > 0.0f ? 1.0f / light.radius : 0.0f;
+    packed.inverseRange = light.range > 0.0f ? 1.0f / light.range : 0.0f;
     // Spec: L = -normalize(direction). A zero direction (rejected by the loaders) gives no light
     // rather than NaN.
     packed.directionToLight = -shader::safeNormalize(light.direction);

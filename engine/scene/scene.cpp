@@ -28,7 +28,7 @@ Scene defaultScene() {
     key.color = {1.0f, 0.78f, 0.55f};
     key.intensity = 16.0f;
     key.position = {2.2f, 2.0f, 2.4f};
-    key.radius = 12.0f;
+    key.range = 12.0f;
     key.attenuation = {1.0f, 0.0f, 1.0f};
 
     Light fill;

@@ -113,7 +113,7 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 // Each light type on its own, so a shader specialised to a scene (shade.frag's
 // PATINA_SPECIALISED) compiles only the types it has; shadeLight picks one at run time.
 // `windowed` false skips the window's arithmetic: a constant, for a specialised shader whose
-// light has radius 0 (true is right for every light: 1/radius = 0 gives window 1). `karis`
+// light has range 0 (true is right for every light: 1/range = 0 gives window 1). `karis`
 // true takes KARIS_ATTENUATION for the light's coefficients instead of reading them: only for
 // a light that has exactly those (hasKarisAttenuation, light_packing.h).
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
@@ -124,7 +124,7 @@ PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis,
     real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     real t = distanceSquared * inverseDistance;
     // 0 turns the window off: with `windowed` a constant, the compiler folds it away.
-    real attenuation = pointLightAttenuation(t, windowed ? light.inverseRadius : 0.0f,
+    real attenuation = pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f,
                                               karis ? KARIS_ATTENUATION : light.attenuation);
     vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
     // A light on the shaded point has no direction: no light.

@@ -23,7 +23,7 @@ struct PackedLight {
     vec3 radiance;           // colour * intensity
     int type;                // LIGHT_*
     vec3 position;           // point
-    real inverseRadius;      // point: 1 / radius, 0 for no window (radius 0)
+    real inverseRange;      // point: 1 / range, 0 for no window (range 0)
     vec3 directionToLight;   // directional: -normalize(direction)
     real unused0;
     vec3 attenuation;        // point: a_c, a_l, a_q
@@ -42,12 +42,12 @@ struct PackedLight {
 const vec3 KARIS_ATTENUATION = vec3(1.0f, 0.0f, 1.0f);
 
 // Windowed distance attenuation (spec section 1, after Karis 2013 eq. 9, with the general
-// a_c + a_l t + a_q t^2 denominator): clamp(1 - (t/radius)^4, 0, 1)^2 / (a_c + a_l t + a_q t^2).
-// Takes 1/radius, packed on the CPU: no division, and no branch for "no window", which
-// inverseRadius = 0 gives exactly (t * 0 = 0, window 1), so a loop over lights of both kinds
+// a_c + a_l t + a_q t^2 denominator): clamp(1 - (t/range)^4, 0, 1)^2 / (a_c + a_l t + a_q t^2).
+// Takes 1/range, packed on the CPU: no division, and no branch for "no window", which
+// inverseRange = 0 gives exactly (t * 0 = 0, window 1), so a loop over lights of both kinds
 // runs one straight path.
-PATINA_INLINE real pointLightAttenuation(real t, real inverseRadius, vec3 coefficients) {
-    real ratio = t * inverseRadius;
+PATINA_INLINE real pointLightAttenuation(real t, real inverseRange, vec3 coefficients) {
+    real ratio = t * inverseRange;
     real ratio2 = ratio * ratio;
     real w = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
     real window = w * w;

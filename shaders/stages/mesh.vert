@@ -18,7 +18,7 @@ void writeFlatLight(int i, vec3 first, float firstW, vec3 second) {
     vFlatLight[2 * i] = vec4(first, firstW);
     vFlatLight[2 * i + 1] = vec4(second, 0.0f);
 }
-#define FLAT_POINT(i) writeFlatLight(i, uLights[i].radiance, uLights[i].inverseRadius, uLights[i].position);
+#define FLAT_POINT(i) writeFlatLight(i, uLights[i].radiance, uLights[i].inverseRange, uLights[i].position);
 #define FLAT_DIRECTIONAL(i) writeFlatLight(i, uLights[i].radiance, 0.0f, uLights[i].directionToLight);
 #define FLAT_HEMISPHERE(i) writeFlatLight(i, uLights[i].sky, 0.0f, uLights[i].ground);
 #endif

@@ -26,7 +26,7 @@ uniform float uMetallic;
 
 #ifdef PATINA_FLAT_LIGHT_COUNT
 // Lights 0 to PATINA_FLAT_LIGHT_COUNT - 1 as mesh.vert's FLAT_* wrote them: two rows each, the
-// fields of the light's type (radiance or sky, and 1/radius; position, direction or ground).
+// fields of the light's type (radiance or sky, and 1/range; position, direction or ground).
 flat in vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
 PackedLight flatLight(int i) {
     PackedLight light;
@@ -37,7 +37,7 @@ PackedLight flatLight(int i) {
     light.unused3 = 0.0f;
     light.radiance = vFlatLight[2 * i].xyz;
     light.sky = vFlatLight[2 * i].xyz;
-    light.inverseRadius = vFlatLight[2 * i].w;
+    light.inverseRange = vFlatLight[2 * i].w;
     light.position = vFlatLight[2 * i + 1].xyz;
     light.directionToLight = vFlatLight[2 * i + 1].xyz;
     light.ground = vFlatLight[2 * i + 1].xyz;

@@ -35,7 +35,7 @@ std::vector<ProbeBatch> randomBatches(int batches, int perBatch, unsigned seed) 
         Light lamp;
         lamp.type = LightType::Point;
         lamp.position = 3.0f * test::randomUnitVector(rng);
-        lamp.radius = 6.0f;
+        lamp.range = 6.0f;
         lamp.attenuation = {1.0f, 0.1f, 1.0f};
         lamp.intensity = 8.0f;
         Light sky;

@@ -51,7 +51,7 @@ Scene manyLightScene(int perType) {
         Light point;
         point.type = LightType::Point;
         point.position = {2.5f * std::cos(angle), 1.0f, 2.5f * std::sin(angle) + 1.0f};
-        point.radius = 6.0f;
+        point.range = 6.0f;
         point.intensity = 3.0f;
         Light sun;
         sun.type = LightType::Directional;
@@ -96,7 +96,7 @@ TEST(Renderer, AllThreePassModesAgree) {
     EXPECT_GE(renderer.flatLightSlots(), 6u);
     EXPECT_LT(renderer.flatLightSlots(), torus.lights.size());
     Scene unwindowed = onlyLightsOfType(LightType::Point, 3);
-    unwindowed.lights[1].radius = 0.0f;
+    unwindowed.lights[1].range = 0.0f;
     // Points with Karis's coefficients and others, interleaved: specialised compiles each its
     // own way, and single reads them all.
     Scene mixedAttenuation = onlyLightsOfType(LightType::Point, 4);
@@ -110,7 +110,7 @@ TEST(Renderer, AllThreePassModesAgree) {
         Scene scene;
     };
     std::vector<Case> cases = {{"default", defaultScene()},  {"no lights", noLights},
-                               {"30 lights on a torus", torus}, {"a point light of radius 0", unwindowed},
+                               {"30 lights on a torus", torus}, {"a point light of range 0", unwindowed},
                                {"pure metal", metal}, {"points with other coefficients", mixedAttenuation}};
     for (LightType type : {LightType::Point, LightType::Directional, LightType::Hemisphere}) {
         for (int count : {1, 12}) {

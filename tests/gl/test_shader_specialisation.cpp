@@ -52,7 +52,7 @@ TEST(ShaderSpecialisation, FlatLightsPayOnlyWherePixelsOutnumberTrianglesDrawn) 
 TEST(ShaderSpecialisation, DisabledLightsAndUnwindowedPointsCompileLess) {
     Scene scene = defaultScene();
     scene.lights[1].enabled = false;
-    scene.lights[0].radius = 0.0f;
+    scene.lights[0].range = 0.0f;
     const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
     // Indices follow the uniform block, which holds enabled lights only.
     EXPECT_EQ(key.lights, "SHADE_POINT(BLOCK(0), false, true) SHADE_HEMISPHERE(BLOCK(1))");

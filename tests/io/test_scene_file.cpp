@@ -57,6 +57,35 @@ TEST(SceneFile, RoundTripsTheDefaultScene) {
     EXPECT_TRUE(warnings.empty());
 }
 
+// Version 2 renamed a point light's "radius" (its attenuation window) to "range": a version 1
+// file still loads with the same light, and saving writes version 2.
+TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {
+    const char* lights = R"(, "lights": [{"type": "point", "position": [1, 2, 3], "radius": 7.5}]})";
+    std::vector<std::string> warnings;
+    const Scene old = sceneFromJson(
+        parseJsonText(std::string(R"({"format": "patina-scene", "version": 1)") + lights, "old.json"), "old.json",
+        ".", warnings);
+    ASSERT_EQ(old.lights.size(), 1u);
+    EXPECT_EQ(old.lights[0].range, 7.5f);
+    EXPECT_TRUE(warnings.empty()) << warnings[0];
+
+    const Json saved = sceneToJson(old);
+    EXPECT_EQ(saved["version"], kSceneFormatVersion);
+    EXPECT_EQ(kSceneFormatVersion, 2);
+    EXPECT_EQ(saved["lights"][0]["range"], 7.5);
+    EXPECT_FALSE(saved["lights"][0].contains("radius"));
+    EXPECT_EQ(sceneFromJson(saved, "new.json", ".", warnings), old);
+
+    // In version 2, "radius" on a point light is no longer the window: kept as unknown, and said.
+    const Scene renamed = sceneFromJson(
+        parseJsonText(std::string(R"({"format": "patina-scene", "version": 2)") + lights, "new.json"), "new.json",
+        ".", warnings);
+    EXPECT_EQ(renamed.lights[0].range, 0.0f);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("/lights/0/radius: unknown key"), std::string::npos) << warnings[0];
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 3})").find("up to 2"), std::string::npos);
+}
+
 TEST(SceneFile, SyntaxErrorsNameLineAndColumn) {
     EXPECT_EQ(errorOf("{\n  \"format\": \"patina-scene\",\n  \"version\": 1,\n  oops\n}").substr(0, 16),
               "test.json:4:3: i");
@@ -84,7 +113,7 @@ TEST(SceneFile, WrongValuesNameTheirJsonPointer) {
 TEST(SceneFile, RefusesOtherFormatsAndNewerVersions) {
     EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1})").find("/format"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 2})").find("newer"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 3})").find("newer"), std::string::npos);
     EXPECT_NE(errorOf(R"({"format": "patina-scene"})").find("missing required key 'version'"),
               std::string::npos);
     EXPECT_NE(errorOf(R"([1, 2])").find("expected an object"), std::string::npos);

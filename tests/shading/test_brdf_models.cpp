@@ -127,7 +127,7 @@ TEST(BrdfModels, EveryModelOnTheGpuMatchesTheCpu) {
     sun.direction = {-0.3f, -1.0f, -0.2f};
     Light lamp;
     lamp.position = {1.0f, 2.0f, 1.5f};
-    lamp.radius = 8.0f;
+    lamp.range = 8.0f;
     Light sky;
     sky.type = LightType::Hemisphere;
     sky.sky = {0.3f, 0.4f, 0.5f};

@@ -33,11 +33,11 @@ Light hemisphereLight() {
     return light;
 }
 
-Light pointLight(float radius) {
+Light pointLight(float range) {
     Light light;
     light.type = LightType::Point;
     light.position = {0.0f, 0.0f, 0.0f};
-    light.radius = radius;
+    light.range = range;
     light.attenuation = {0.5f, 0.25f, 1.0f};
     light.intensity = 10.0f;
     light.color = {1.0f, 0.5f, 0.25f};
@@ -114,10 +114,10 @@ TEST(PointLight, InsideTheRadiusMatchesTheWindowedFormula) {
                                                              test::toReference(V));
         EXPECT_LT(test::maxRelativeError({value}, {expected}, 1e-9), 1e-5) << "t = " << t;
     }
-    // The attenuation itself, by hand: t = 2, radius 4: window = (1 - 1/16)^2 = 0.87890625,
+    // The attenuation itself, by hand: t = 2, range 4: window = (1 - 1/16)^2 = 0.87890625,
     // denominator = 0.5 + 0.5 + 4 = 5.
     EXPECT_FLOAT_EQ(shader::pointLightAttenuation(2.0f, 1.0f / 4.0f, light.attenuation), 0.87890625f / 5.0f);
-    // Radius 0 (packed as inverse radius 0): no window at all.
+    // Range 0 (packed as inverse range 0): no window at all.
     EXPECT_FLOAT_EQ(shader::pointLightAttenuation(2.0f, 0.0f, light.attenuation), 1.0f / 5.0f);
 }
 
