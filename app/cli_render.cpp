@@ -27,10 +27,10 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--out", options->out, "Output PNG")->required();
     command->add_option("--hdr", options->hdr, "Also write the linear image (PFM), before exposure and tone map");
     return [options] {
-        const Scene scene = options->inputs.load();
+        Scene scene = options->inputs.load();
+        resolveMesh(scene);
         HeadlessContext context;
         Renderer renderer;
-        renderer.setMesh(makeMesh(scene));
         RenderSettings settings;
         settings.width = options->width;
         settings.height = options->height;

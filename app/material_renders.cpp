@@ -22,7 +22,9 @@ void renderMaterials(Scene scene, const std::vector<Material>& materials, int wi
                      const std::function<void(LdrImage&&)>& each) {
     HeadlessContext context;
     Renderer renderer;
-    renderer.setMesh(makeMesh(scene));
+    if (!scene.resolvedMesh) {
+        resolveMesh(scene);   // once for every material
+    }
     RenderSettings settings;
     settings.width = width;
     settings.height = height;

@@ -157,10 +157,10 @@ void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& optio
     }
 }
 
-// `mesh`: the default scene's, which the renderer holds on entry and gets back on return.
+// `mesh`: the default scene's.
 void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOptions& options,
                   const RenderSettings& settings, RenderBenchResult& result) {
-    const Scene scene = defaultScene();
+    Scene scene = defaultScene();
     const std::vector<std::pair<int, int>> sizes =
         options.quick ? std::vector<std::pair<int, int>>{{256, 256}, {512, 512}}
                       : std::vector<std::pair<int, int>>{{512, 512}, {1280, 720}, {1920, 1080}, {2560, 1440}, {3840, 2160}};
@@ -191,15 +191,14 @@ void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOp
         variants.back().flatLights = flatLights;
     }
     for (size_t target : triangles) {
-        const Mesh sphere = sphereOfAbout(target);
-        renderer.setMesh(sphere);
+        const auto sphere = std::make_shared<const Mesh>(sphereOfAbout(target));
+        scene.resolvedMesh = sphere;
         const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
         for (size_t k = 0; k < std::size(kinds); ++k) {
             result.scaleRows.push_back({k == 0 ? "triangles" : "flat-lights", settings.width, settings.height,
-                                        triangleCount(sphere), times[k], std::get<0>(kinds[k])});
+                                        triangleCount(*sphere), times[k], std::get<0>(kinds[k])});
         }
     }
-    renderer.setMesh(mesh);
 }
 
 // Single and multi on the default scene with its sphere's hidden faces culled and drawn
@@ -304,9 +303,8 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     settings.height = result.height = options.quick ? 270 : options.height;
     settings.samples = result.samples = options.samples;
     settings.readHdr = false;   // as `patina render` without --hdr and the editor's viewport
-    const Mesh mesh = makeMesh(defaultScene().mesh);
+    const Mesh& mesh = *builtinMesh(defaultScene().mesh);
     result.triangles = triangleCount(mesh);
-    renderer.setMesh(mesh);
     measureLightCounts(renderer, options, settings, result);
     measureCulling(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);

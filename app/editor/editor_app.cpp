@@ -23,20 +23,27 @@
 namespace patina::editor {
 
 namespace {
-// Files dropped on the window and key presses, handled by the next frame.
-std::vector<std::filesystem::path> droppedFiles;
-KeyPresses keyPresses;
+// Files dropped on the window and key presses since the last frame, which handles them. The
+// window's user pointer: GLFW's callbacks carry no other.
+struct WindowInput {
+    std::vector<std::filesystem::path> droppedFiles;
+    KeyPresses keyPresses;
+};
+
+WindowInput& inputOf(GLFWwindow* window) {
+    return *static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
+}
 
 // Installed before ImGui's, which calls it after its own (imgui_impl_glfw chains callbacks).
-void onKey(GLFWwindow*, int key, int, int action, int mods) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
+        inputOf(window).keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
     }
 }
 
-void onDrop(GLFWwindow*, int count, const char** paths) {
+void onDrop(GLFWwindow* window, int count, const char** paths) {
     for (int i = 0; i < count; ++i) {
-        droppedFiles.emplace_back(paths[i]);
+        inputOf(window).droppedFiles.emplace_back(paths[i]);
     }
 }
 
@@ -69,6 +76,8 @@ int runEditor(const EditorOptions& options) {
     }
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
+    WindowInput input;
+    glfwSetWindowUserPointer(window, &input);
     glfwSetDropCallback(window, onDrop);
     glfwSetKeyCallback(window, onKey);
 
@@ -103,12 +112,12 @@ int runEditor(const EditorOptions& options) {
                 glfwSetWindowShouldClose(window, GLFW_FALSE);
                 state.pendingQuit = true;
             }
-            for (const std::filesystem::path& path : droppedFiles) {
+            for (const std::filesystem::path& path : input.droppedFiles) {
                 requestOpen(state, path);
             }
-            droppedFiles.clear();
-            services.keyPresses.swap(keyPresses);
-            keyPresses.clear();
+            input.droppedFiles.clear();
+            services.keyPresses.swap(input.keyPresses);
+            input.keyPresses.clear();
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();

@@ -46,10 +46,6 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
-    if (state.importedMesh) {
-        services.provideMesh(state.scene.meshFile, *state.importedMesh);
-        state.importedMesh.reset();
-    }
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();

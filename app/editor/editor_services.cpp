@@ -9,7 +9,6 @@
 #include "image/png_text.h"
 #include "io/scene_file.h"
 #include "io/file_bytes.h"
-#include "gltf/scene_mesh.h"
 
 namespace patina::editor {
 
@@ -35,32 +34,10 @@ std::filesystem::path screenshotPath(const std::filesystem::path& folder, const 
 
 EditorServices::EditorServices() : renderer_(std::make_unique<Renderer>()) {}
 
-void EditorServices::useMesh(const Scene& scene) {
-    // A file mesh is the same whatever the built-in kind says; a built-in one is its kind.
-    const bool same = scene.meshFile == meshFile_ && (!meshFile_.empty() || scene.mesh == mesh_);
-    if (!same) {
-        replaceMesh(makeMesh(scene), scene.mesh, scene.meshFile);
-    }
-}
-
-void EditorServices::provideMesh(const std::string& meshFile, const Mesh& mesh) {
-    replaceMesh(mesh, mesh_, meshFile);
-}
-
-void EditorServices::replaceMesh(const Mesh& mesh, MeshKind kind, const std::string& meshFile) {
-    renderer_->setMesh(mesh);
-    mesh_ = kind;
-    meshFile_ = meshFile;
-    for (ViewImage& image : views_) {
-        image.drawn.reset();
-    }
-}
-
 unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, PassMode passes,
                                          Shown shown, int samples) {
-    useMesh(scene);
     ViewImage& image = view(shown);
-    ViewKey key{scene, width, height, passes, samples};
+    ViewKey key{renderInputs(scene), width, height, passes, samples};
     if (image.drawn != key) {
         RenderSettings settings;
         settings.width = width;
@@ -80,7 +57,6 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
 }
 
 RenderOutput EditorServices::renderImage(const Scene& scene, int width, int height, PassMode passes) {
-    useMesh(scene);
     RenderSettings settings;
     settings.width = width;
     settings.height = height;

@@ -8,6 +8,7 @@
 #include "accuracy/accuracy.h"
 #include "editor_state.h"
 #include "gl/texture.h"
+#include "scene/render_inputs.h"
 #include "keys.h"
 
 namespace patina::editor {
@@ -41,10 +42,6 @@ public:
     // What the viewport shows for `shown`, read back (for tests and automation).
     LdrImage viewportPixels(Shown shown) const { return renderer_->readBack(view(shown).target, false).ldr; }
 
-    // The mesh the next draw of a scene with this meshFile uses (the editor imports it once,
-    // in openFile, and hands it over here).
-    void provideMesh(const std::string& meshFile, const Mesh& mesh);
-
     // Renders `scene` at the given size offscreen and returns the image (for screenshots,
     // thumbnails and exports); what the viewport shows is untouched.
     RenderOutput renderImage(const Scene& scene, int width, int height, PassMode passes);
@@ -69,7 +66,7 @@ public:
 
 private:
     struct ViewKey {
-        Scene scene;
+        RenderInputs inputs;   // what the image depends on: no names or unknown keys compared
         int width = 0, height = 0;
         PassMode passes = PassMode::Single;
         int samples = 4;
@@ -80,8 +77,6 @@ private:
         std::optional<ViewKey> drawn;   // what the target holds
     };
     std::unique_ptr<Renderer> renderer_;
-    MeshKind mesh_ = MeshKind::Sphere;
-    std::string meshFile_;
     ViewImage views_[2];   // by Shown
     double lastRenderMilliseconds_ = 0.0, lastGpuMilliseconds_ = 0.0;
     struct Thumbnail {
@@ -96,9 +91,6 @@ private:
     LdrImage comparisonImage(const EditorState& state, int halfWidth, int height);
     ViewImage& view(Shown shown) { return views_[shown == Shown::A ? 1 : 0]; }
     const ViewImage& view(Shown shown) const { return views_[shown == Shown::A ? 1 : 0]; }
-    // The renderer's mesh for `scene` (a glTF arrives through provideMesh, read once).
-    void useMesh(const Scene& scene);
-    void replaceMesh(const Mesh& mesh, MeshKind kind, const std::string& meshFile);
 };
 
 }  // namespace patina::editor

@@ -4,6 +4,7 @@
 
 #include "scene/camera_control.h"
 #include "gltf/import.h"
+#include "gltf/scene_mesh.h"
 #include "io/input_error.h"
 #include "image/png_text.h"
 #include "io/scene_file.h"
@@ -170,32 +171,24 @@ void rememberRecent(EditorState& state, const std::filesystem::path& path) {
     }
 }
 
+void frameMesh(EditorState& state) {
+    if (state.scene.meshFile.empty() || !state.scene.resolvedMesh) {
+        frameCamera(state.scene.camera, glm::vec3(0.0f), state.scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
+        return;
+    }
+    const BoundingSphere bounds = boundingSphere(*state.scene.resolvedMesh);
+    frameCamera(state.scene.camera, bounds.center, std::max(bounds.radius, 1e-3f));
+}
+
 namespace {
-// A glTF mesh read for the editor, with the bounding sphere the camera frames.
-struct EditorMesh {
-    std::shared_ptr<const Mesh> mesh;
-    glm::vec3 centre;
-    float radius;
-};
-
-EditorMesh importEditorMesh(const std::filesystem::path& path) {   // throws InputError
-    auto mesh = std::make_shared<Mesh>(importGltf(path).mesh);
-    const BoundingSphere bounds = boundingSphere(*mesh);
-    return {std::move(mesh), bounds.center, std::max(bounds.radius, 1e-3f)};
-}
-
-// Hands the mesh to the next frame (EditorServices::provideMesh) as scene.meshFile's.
-void useEditorMesh(EditorState& state, const std::filesystem::path& path, EditorMesh mesh) {
-    state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
-    state.importedMesh = std::move(mesh.mesh);
-    state.meshCentre = mesh.centre;
-    state.meshRadius = mesh.radius;
-}
-
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
-        useEditorMesh(state, path, importEditorMesh(path));
-        frameCamera(state.scene.camera, state.meshCentre, state.meshRadius);
+        Scene scene = state.scene;   // read before anything changes: a bad file changes nothing
+        scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+        resolveMesh(scene);
+        state.scene.meshFile = scene.meshFile;
+        state.scene.resolvedMesh = scene.resolvedMesh;
+        frameMesh(state);
         state.error.clear();
         state.status = "Mesh " + path.filename().string();
         rememberRecent(state, path);
@@ -231,9 +224,8 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         }
         // A scene's glTF is read now, before anything changes, so a missing or bad one fails
         // the open instead of every later frame.
-        std::optional<EditorMesh> sceneMesh;
-        if (scene && !scene->meshFile.empty()) {
-            sceneMesh = importEditorMesh(scene->meshFile);
+        if (scene) {
+            resolveMesh(*scene);
         }
         applyEdit(state, [&](EditorState& s) {
             if (scene) {
@@ -249,9 +241,7 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
             state.scene.camera = scene->camera;
             state.scene.mesh = scene->mesh;
             state.scene.meshFile = scene->meshFile;
-            if (sceneMesh) {
-                useEditorMesh(state, scene->meshFile, *sceneMesh);
-            }
+            state.scene.resolvedMesh = scene->resolvedMesh;
             state.scene.display = scene->display;
             state.scene.extras = scene->extras;
             state.materialPath.clear();

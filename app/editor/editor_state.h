@@ -45,6 +45,9 @@ struct EditorState {
     std::optional<Material> compareA;        // "Set A"; B is the current material
     CompareView compareView = CompareView::Single;
     float splitPosition = 0.5f;              // split wipe divider, fraction of the width
+    // The viewport's drags in progress: the light whose gizmo is held (-1: none), the divider.
+    int draggedLight = -1;
+    bool draggingDivider = false;
 
     LobeSettings lobe;
     PanelLayout layout;
@@ -53,11 +56,6 @@ struct EditorState {
     std::filesystem::path screenshotFolder = ".";
     std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
     int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
-
-    // A glTF mesh opened for scene.meshFile, waiting to be uploaded (data, not GL state).
-    std::shared_ptr<const Mesh> importedMesh;
-    glm::vec3 meshCentre{0.0f};              // the file mesh's bounding sphere, for framing
-    float meshRadius = 1.0f;
 
     std::string error;                       // shown until dismissed
     std::string status;                      // last completed action
@@ -100,6 +98,8 @@ void toggleSolo(EditorState& state, int index);
 
 // The scene as rendered: solo applied.
 Scene renderedScene(const EditorState& state);
+// Aims the camera at the whole mesh (F, View > Frame mesh).
+void frameMesh(EditorState& state);
 Scene withMaterial(const EditorState& state, const Material& material);
 
 // --- Files -------------------------------------------------------------------------------

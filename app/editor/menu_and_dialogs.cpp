@@ -115,7 +115,10 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         recordItem("menu:View");   // while open, the last item is the menu's window
     }
     if (viewMenu) {
-        ImGui::MenuItem("Frame mesh", "F");
+        if (ImGui::MenuItem("Frame mesh", "F")) {
+            frameMesh(state);
+        }
+        recordItem("Frame mesh");
         ImGui::SetNextItemWidth(90);
         ImGui::InputInt("Screenshot width (0: viewport)", &state.screenshotWidth);
         recordItem("Screenshot width");

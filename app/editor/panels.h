@@ -15,9 +15,6 @@ void drawMenuBar(EditorState& state, EditorServices& services);
 void drawDialogs(EditorState& state, EditorServices& services);
 void handleShortcuts(EditorState& state, EditorServices& services);
 
-// Aims the camera at the whole mesh (F).
-void frameMesh(EditorState& state);
-
 // The whole editor for one frame: menu, panels around the viewport, dialogs, shortcuts, and
 // the undo commit once no widget is active.
 void drawEditorFrame(EditorState& state, EditorServices& services);

@@ -28,6 +28,7 @@ void drawToolbar(EditorState& state) {
                                   state.scene.meshFile.empty() && state.scene.mesh == kind)) {
                 state.scene.mesh = kind;
                 state.scene.meshFile.clear();
+                state.scene.resolvedMesh.reset();   // the built-in kind's
             }
         }
         ImGui::TextDisabled("or open / drop a .gltf or .glb");
@@ -79,10 +80,13 @@ void drawToolbar(EditorState& state) {
 }
 
 // Point lights as a marker, directional lights as an arrow from the centre of the view;
-// both can be dragged. Returns true while a gizmo is being dragged.
-bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size) {
-    static int dragged = -1;
+// both can be dragged. `pressed`: the viewport's button was clicked this frame (it holds the
+// mouse from then on, so ImGui reports the window as not hovered). Drawn clipped to the image.
+// Returns true while a gizmo is being dragged.
+bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool pressed) {
+    int& dragged = state.draggedLight;
     ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     const glm::vec2 viewSize(size.x, size.y);
     const Camera& camera = state.scene.camera;
     const ImVec2 mouse = ImGui::GetIO().MousePos;
@@ -113,11 +117,12 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size) {
             draw->AddCircleFilled(at, kGizmoRadius * 0.7f, color);
             draw->AddTriangleFilled(tip, ImVec2(tip.x - 4, tip.y - 4), ImVec2(tip.x + 4, tip.y - 4), color);
         }
-        if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::IsWindowHovered()) {
+        if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
             dragged = i;
             state.selectedLight = i;
         }
     }
+    draw->PopClipRect();
     if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         Light& light = state.scene.lights[size_t(dragged)];
         if (light.type == LightType::Point) {
@@ -164,14 +169,6 @@ void image(unsigned texture, ImVec2 size, float u0 = 0.0f, float u1 = 1.0f) {
 }
 }  // namespace
 
-void frameMesh(EditorState& state) {
-    if (!state.scene.meshFile.empty()) {
-        frameCamera(state.scene.camera, state.meshCentre, state.meshRadius);
-    } else {
-        frameCamera(state.scene.camera, glm::vec3(0.0f), state.scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
-    }
-}
-
 void drawViewportPanel(EditorState& state, EditorServices& services) {
     drawToolbar(state);
     const ImVec2 available = ImGui::GetContentRegionAvail();
@@ -208,6 +205,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     ImGui::InvisibleButton("viewport-input", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
     const bool viewportActive = ImGui::IsItemActive();
+    const bool viewportPressed = ImGui::IsItemActivated();
     const bool hovered = ImGui::IsItemHovered();
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -217,7 +215,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
         draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + size.y), IM_COL32(255, 255, 255, 220), 2.0f);
         draw->AddText(ImVec2(origin.x + 8, origin.y + 24), IM_COL32(255, 255, 255, 255), "A");
         draw->AddText(ImVec2(origin.x + size.x - 16, origin.y + 24), IM_COL32(255, 255, 255, 255), "B");
-        static bool draggingDivider = false;
+        bool& draggingDivider = state.draggingDivider;
         onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
         if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
             draggingDivider = true;
@@ -233,7 +231,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
             ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
         }
     }
-    const bool gizmo = state.compareView != CompareView::SideBySide && drawLightGizmos(state, origin, size);
+    const bool gizmo = state.compareView != CompareView::SideBySide && drawLightGizmos(state, origin, size, viewportPressed);
     if (viewportActive && !gizmo && !onDivider) {
         handleCameraInput(state, size);
     } else if (hovered && ImGui::GetIO().MouseWheel != 0.0f) {

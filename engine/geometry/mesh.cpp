@@ -97,6 +97,12 @@ Mesh makeMesh(MeshKind kind) {
     return makeUvSphere();
 }
 
+std::shared_ptr<const Mesh> builtinMesh(MeshKind kind) {
+    static const std::shared_ptr<const Mesh> sphere = std::make_shared<const Mesh>(makeMesh(MeshKind::Sphere));
+    static const std::shared_ptr<const Mesh> torus = std::make_shared<const Mesh>(makeMesh(MeshKind::Torus));
+    return kind == MeshKind::Torus ? torus : sphere;
+}
+
 Mesh reversedWinding(Mesh mesh) {
     for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);

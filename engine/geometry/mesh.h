@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -27,6 +28,9 @@ Mesh makeUvSphere(int rings = 64, int segments = 128);
 Mesh makeTorus(float majorRadius = 0.75f, float minorRadius = 0.3f, int rings = 96,
                int segments = 48);
 Mesh makeMesh(MeshKind kind);
+// The built-in mesh of `kind`, made once and shared: every scene of that kind draws these very
+// triangles (immutable, so sharing them is safe across threads).
+std::shared_ptr<const Mesh> builtinMesh(MeshKind kind);
 // Every triangle wound the other way (its last two corners swapped): front faces turn back.
 Mesh reversedWinding(Mesh mesh);
 

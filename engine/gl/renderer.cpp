@@ -105,6 +105,7 @@ struct Renderer::State {
     }
     LightBuffer lights;
     MeshBuffers mesh;
+    std::shared_ptr<const Mesh> meshShown;   // what `mesh` holds
     GLuint emptyVertexArray = 0;
     GLuint timerQueries[2] = {0, 0};   // GL_TIMESTAMP before and after a draw
     bool timerPending = false;
@@ -149,7 +150,6 @@ Renderer::Renderer() : state_(std::make_unique<State>()) {
     const GLubyte* rendererName = glGetString(GL_RENDERER);
     s.flushTimerStart =
         rendererName && std::string_view(reinterpret_cast<const char*>(rendererName)).starts_with("llvmpipe");
-    setMesh(makeUvSphere());
 }
 
 Renderer::~Renderer() {
@@ -177,8 +177,15 @@ double Renderer::lastGpuMilliseconds() {
     return s.gpuMilliseconds;
 }
 
-void Renderer::setMesh(const Mesh& mesh) {
-    state_->mesh.upload(mesh);
+void Renderer::useMesh(State& s, const Scene& scene) {
+    if (!scene.resolvedMesh && !scene.meshFile.empty()) {
+        throw std::invalid_argument("the scene's mesh " + scene.meshFile + " was never loaded (resolveMesh)");
+    }
+    std::shared_ptr<const Mesh> mesh = scene.resolvedMesh ? scene.resolvedMesh : builtinMesh(scene.mesh);
+    if (mesh != s.meshShown) {
+        s.mesh.upload(*mesh);   // the hidden-faces analysis runs here, once per mesh shown
+        s.meshShown = std::move(mesh);
+    }
 }
 
 void Renderer::drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
@@ -224,6 +231,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
                                     std::to_string(s.maxSize));
     }
     RenderTargets& t = *target.images_;
+    useMesh(s, scene);
     const int w = settings.width, h = settings.height;
     const FramePlan plan = planFrame(settings, scene.camera,
                                      {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()}, s.maxSamples,

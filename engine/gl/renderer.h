@@ -78,8 +78,8 @@ struct RenderOutput {
     LdrImage ldr;   // after the display transform, sRGB
 };
 
-// Draws scenes with the shared shaders. Needs a current OpenGL 3.3 core context (a
-// HeadlessContext or the editor's window) for its whole life.
+// Draws scenes, each with its own mesh (Scene::resolvedMesh), with the shared shaders. Needs a
+// current OpenGL 3.3 core context (a HeadlessContext or the editor's window) for its whole life.
 class Renderer {
 public:
     Renderer();
@@ -87,7 +87,6 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    void setMesh(const Mesh& mesh);
     // How many lights a specialised shader takes as flat inputs (shader_specialisation.h).
     size_t flatLightSlots() const;
     // Renders into `target` and returns its display texture (RenderTarget::displayTexture).
@@ -117,6 +116,9 @@ private:
     RenderTarget own_;
     using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
     // The passes of one strip with `shading` (compiled for `passes`) and `lights` lights.
+    // Uploads the scene's mesh unless it is the one drawn last. Throws std::invalid_argument
+    // for a scene whose mesh file was never resolved.
+    static void useMesh(State& s, const Scene& scene);
     static void drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
                            const Prepare& prepare);
 };

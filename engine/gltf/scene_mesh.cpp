@@ -4,8 +4,9 @@
 
 namespace patina {
 
-Mesh makeMesh(const Scene& scene) {
-    return scene.meshFile.empty() ? makeMesh(scene.mesh) : importGltf(scene.meshFile).mesh;
+void resolveMesh(Scene& scene) {
+    scene.resolvedMesh = scene.meshFile.empty() ? builtinMesh(scene.mesh)
+                                                : std::make_shared<const Mesh>(importGltf(scene.meshFile).mesh);
 }
 
 }  // namespace patina

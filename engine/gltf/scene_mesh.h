@@ -4,8 +4,8 @@
 
 namespace patina {
 
-// The scene's mesh: its glTF file when it names one (InputError if that cannot be loaded),
-// else the built-in kind.
-Mesh makeMesh(const Scene& scene);
+// Sets scene.resolvedMesh: its glTF file's triangles when it names one (read here, once; an
+// InputError if that cannot be loaded, leaving the scene as it was), else the built-in kind's.
+void resolveMesh(Scene& scene);
 
 }  // namespace patina

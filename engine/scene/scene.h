@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <string>
 #include <string_view>
 #include <optional>
@@ -41,6 +42,10 @@ struct Scene {
     // A .gltf or .glb file shown instead of `mesh` when not empty; an absolute path (a scene
     // file's relative path is resolved against the scene file's folder when it is read).
     std::string meshFile;
+    // The triangles drawn, resolved once by whoever loads the scene (gltf/scene_mesh.h) and shared
+    // by every copy; null stands for the built-in kind's (and is an error with a meshFile).
+    // Compared by identity: two scenes draw the same mesh when they hold the same one.
+    std::shared_ptr<const Mesh> resolvedMesh;
     Material material;
     Camera camera;
     std::vector<Light> lights;

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "image/compositing.h"
+#include "scene/camera_control.h"
 #include "image/image.h"
 #include "gltf/export.h"
 #include "keys.h"
@@ -240,7 +241,8 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     // A scene naming a glTF brings its mesh; one naming a missing file fails and changes nothing.
     write("with-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "torus.glb"})");
     ASSERT_TRUE(openFile(state_, path("with-mesh.json"))) << state_.error;
-    EXPECT_TRUE(state_.importedMesh != nullptr);
+    EXPECT_TRUE(state_.scene.resolvedMesh != nullptr);
+    EXPECT_EQ(state_.scene.resolvedMesh->positions.size(), makeTorus().positions.size());
     frames(1);
     write("missing-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "gone.glb", "lights": []})");
     const EditSnapshot snapshot = state_.snapshot();
@@ -387,6 +389,70 @@ TEST_F(EditorUi, AnErrorInsideAPanelIsShownAndTheEditorGoesOn) {
     frames(3);
     EXPECT_TRUE(state_.error.empty()) << state_.error;
     EXPECT_EQ(services_->viewportPixels(EditorServices::Shown::Edited).width, services_->viewportWidth);
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// View > Frame mesh aims the camera as the F key does (it used to do nothing).
+TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
+    state_.scene.camera.target = {3.0f, 1.0f, 0.0f};
+    click(centreOf("menu:View"));
+    click(centreOf("Frame mesh"));
+    EXPECT_NEAR(glm::length(state_.scene.camera.target), 0.0f, 1e-5f);
+}
+
+// The scene owns its mesh: the editor draws the very triangles openFile resolved, and choosing
+// a built-in mesh lets go of the file's.
+TEST_F(EditorUi, TheSceneHoldsTheMeshItDraws) {
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    ASSERT_TRUE(openFile(state_, path("torus.glb"))) << state_.error;
+    const std::shared_ptr<const Mesh> torus = state_.scene.resolvedMesh;
+    ASSERT_TRUE(torus);
+    frames(2);
+    const LdrImage shown = services_->viewportPixels(EditorServices::Shown::Edited);
+    state_.scene.meshFile.clear();
+    state_.scene.resolvedMesh.reset();
+    frames(2);
+    EXPECT_GT(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 1000)
+        << "the sphere again";
+    state_.scene.meshFile = path("torus.glb").string();
+    state_.scene.resolvedMesh = torus;
+    frames(2);
+    EXPECT_EQ(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// A point light's dot is dragged, not the camera orbited (the viewport's button held the click
+// and the gizmo asked whether the window was hovered, which it then is not), and the drag is
+// one undo step.
+TEST_F(EditorUi, DraggingAPointLightsGizmoMovesTheLightNotTheCamera) {
+    Light lamp;
+    lamp.name = "lamp";
+    lamp.position = {0.4f, 0.5f, 1.2f};   // in front of the sphere, in view
+    state_.scene.lights = {lamp};
+    state_.committed = state_.snapshot();
+    frames(2);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const Camera camera = state_.scene.camera;
+    const auto at = projectToViewport(camera, glm::vec2(max.x - min.x, max.y - min.y), lamp.position);
+    ASSERT_TRUE(at.has_value());
+    const ImVec2 from(min.x + at->x, min.y + at->y);
+    drag(from, ImVec2(from.x + 60.0f, from.y + 30.0f));
+    EXPECT_EQ(state_.scene.camera, camera) << "the camera orbited";
+    EXPECT_GT(glm::distance(state_.scene.lights[0].position, lamp.position), 0.1f) << "the light did not move";
+    EXPECT_EQ(state_.selectedLight, 0);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights[0].position, lamp.position);
 }
 
 }  // namespace

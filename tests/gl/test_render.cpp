@@ -124,7 +124,6 @@ TEST(Renderer, AllThreePassModesAgree) {
         cases.push_back({"no " + std::string(lightTypeName(type)), without});
     }
     for (const Case& c : cases) {
-        renderer.setMesh(makeMesh(c.scene.mesh));
         for (int samples : {4, 1}) {
             const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single, 160, samples);
             // Specialised with its first lights as flat inputs and with every light from the block.
@@ -542,15 +541,16 @@ TEST(Renderer, CroppingToTheMeshGivesTheSameImage) {
                                      {"aside, in strips", aside, size_t(150) * 4 * 16 * 23},
                                      {"a flat quad", quad}};
     for (const Case& c : cases) {
-        renderer.setMesh(c.name == "a flat quad" ? facingQuad() : makeUvSphere());
+        Scene scene = c.scene;
+        scene.resolvedMesh = std::make_shared<const Mesh>(c.name == "a flat quad" ? facingQuad() : makeUvSphere());
         RenderSettings settings;
         settings.width = 150;
         settings.height = 110;
         settings.maxTargetBytes = c.budget;
         settings.cropToMesh = false;
-        const RenderOutput whole = renderer.render(c.scene, settings);
+        const RenderOutput whole = renderer.render(scene, settings);
         settings.cropToMesh = true;
-        const RenderOutput cropped = renderer.render(c.scene, settings);
+        const RenderOutput cropped = renderer.render(scene, settings);
         EXPECT_LE(maxByteDifference(whole.ldr, cropped.ldr), 1) << c.name;
         EXPECT_LE(maxHdrRelativeDifference(whole.hdr, cropped.hdr), 1e-6) << c.name;
         int identical = 0;
@@ -598,8 +598,8 @@ TEST(Renderer, CullingHiddenFacesGivesTheSameImage) {
                                      {"near plane cutting the sphere", makeUvSphere(), {0.0f, 0.0f, 1.005f}}};
     const Scene lit = manyLightScene(2);
     for (const Case& c : cases) {
-        renderer.setMesh(c.mesh);
         Scene scene = lit;
+        scene.resolvedMesh = std::make_shared<const Mesh>(c.mesh);
         scene.camera.position = c.eye;
         for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
             for (int samples : {4, 1}) {

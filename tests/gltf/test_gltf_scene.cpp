@@ -39,10 +39,11 @@ protected:
 TEST_F(GltfScene, AMeshPathIsResolvedAgainstTheSceneFileAndRoundTrips) {
     write("scene.json", scene("models/cube.glb"));
     std::vector<std::string> warnings;
-    const Scene loaded = loadSceneFile(path("scene.json"), warnings);
+    Scene loaded = loadSceneFile(path("scene.json"), warnings);
     EXPECT_EQ(fs::path(loaded.meshFile), fs::absolute(path("models/cube.glb")));
     EXPECT_EQ(sceneFromJson(sceneToJson(loaded), "x", "/elsewhere", warnings), loaded);
-    EXPECT_EQ(makeMesh(loaded).positions.size(), 24u);
+    resolveMesh(loaded);
+    EXPECT_EQ(loaded.resolvedMesh->positions.size(), 24u);
     EXPECT_EQ(sceneToJson(defaultScene())["mesh"], "sphere");
 
     write("typo.json", scene("models/cube"));

@@ -1,0 +1,34 @@
+#include "scene/render_inputs.h"
+
+#include <cstring>
+
+#include "scene/light_packing.h"
+
+namespace patina {
+
+RenderInputs renderInputs(const Scene& scene) {
+    RenderInputs inputs;
+    inputs.mesh = scene.resolvedMesh ? scene.resolvedMesh
+                                     : scene.meshFile.empty() ? builtinMesh(scene.mesh) : nullptr;
+    inputs.meshFile = scene.meshFile;
+    inputs.material = scene.material;
+    inputs.cameraPosition = scene.camera.position;
+    inputs.cameraTarget = scene.camera.target;
+    inputs.fovYDegrees = scene.camera.fovYDegrees;
+    inputs.lights = packEnabledLights(scene.lights);
+    inputs.exposure = scene.display.exposure;
+    inputs.tonemap = scene.display.tonemap;
+    inputs.background = scene.display.background;
+    return inputs;
+}
+
+bool RenderInputs::operator==(const RenderInputs& other) const {
+    return mesh == other.mesh && meshFile == other.meshFile && material == other.material &&
+           cameraPosition == other.cameraPosition && cameraTarget == other.cameraTarget &&
+           fovYDegrees == other.fovYDegrees && exposure == other.exposure && tonemap == other.tonemap &&
+           background == other.background && lights.size() == other.lights.size() &&
+           (lights.empty() ||
+            std::memcmp(lights.data(), other.lights.data(), lights.size() * sizeof(shader::PackedLight)) == 0);
+}
+
+}  // namespace patina

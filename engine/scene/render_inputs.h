@@ -1,0 +1,35 @@
+#pragma once
+// What a render of a scene reads, and nothing it does not: no names, notes or a file's unknown
+// keys. Two scenes whose inputs are equal draw the same image, so a cache of rendered images
+// (the editor's viewport) compares these each frame instead of whole scenes, walking no JSON.
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+#include "shading/material_parameters.h"
+#include "shading/shading.h"
+
+namespace patina {
+
+struct RenderInputs {
+    std::shared_ptr<const Mesh> mesh;                 // the scene's, or the built-in kind's
+    std::string meshFile;                             // for a scene whose mesh is not resolved
+    MaterialParameters material;
+    glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f};
+    float fovYDegrees = 0.0f;
+    std::vector<shader::PackedLight> lights;          // the enabled ones, as the shaders read them
+    float exposure = 0.0f;
+    Tonemap tonemap = Tonemap::None;
+    glm::vec3 background{0.0f};
+
+    // Light rows compared as their bytes: plain floats and ints, so equal bytes are equal
+    // lights (a -0 against a 0 only costs one render more).
+    bool operator==(const RenderInputs& other) const;
+};
+
+RenderInputs renderInputs(const Scene& scene);
+
+}  // namespace patina

@@ -1,0 +1,66 @@
+// RenderInputs: what a render reads. Names, notes and a file's unknown keys change nothing
+// drawn, so they leave the inputs equal; everything the shaders or the rasteriser read does not.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "scene/render_inputs.h"
+
+namespace patina {
+namespace {
+
+TEST(RenderInputs, NamesAndUnknownKeysDrawNothing) {
+    const Scene scene = defaultScene();
+    Scene renamed = scene;
+    renamed.material.name = "another";
+    renamed.material.notes = "from a file";
+    renamed.material.extras["vendor"] = Json::array({1, 2, 3});
+    renamed.lights[0].name = "key light";
+    renamed.lights[1].extras["colourTemperature"] = 6500;
+    renamed.camera.extras["lens"] = "50mm";
+    renamed.display.extras["grain"] = true;
+    renamed.extras["author"] = "someone";
+    EXPECT_EQ(renderInputs(renamed), renderInputs(scene));
+}
+
+TEST(RenderInputs, EverythingDrawnChangesThem) {
+    const Scene scene = defaultScene();
+    const std::vector<std::pair<std::string, std::function<void(Scene&)>>> changes = {
+        {"roughness", [](Scene& s) { s.material.roughness += 0.01f; }},
+        {"model", [](Scene& s) { s.material.model = BrdfModelId::Burley; }},
+        {"base colour", [](Scene& s) { s.material.baseColor.g = 0.5f; }},
+        {"light intensity", [](Scene& s) { s.lights[0].intensity *= 2.0f; }},
+        {"light disabled", [](Scene& s) { s.lights[1].enabled = false; }},
+        {"light range", [](Scene& s) { s.lights[0].range = 3.0f; }},
+        {"light added", [](Scene& s) { s.lights.push_back(s.lights[0]); }},
+        {"camera", [](Scene& s) { s.camera.position.x += 0.1f; }},
+        {"field of view", [](Scene& s) { s.camera.fovYDegrees = 30.0f; }},
+        {"exposure", [](Scene& s) { s.display.exposure = 1.0f; }},
+        {"tone map", [](Scene& s) { s.display.tonemap = Tonemap::Aces; }},
+        {"background", [](Scene& s) { s.display.background = glm::vec3(1.0f); }},
+        {"built-in mesh", [](Scene& s) { s.mesh = MeshKind::Torus; }},
+        {"a mesh of its own", [](Scene& s) { s.resolvedMesh = std::make_shared<const Mesh>(makeUvSphere(8, 16)); }},
+    };
+    const RenderInputs original = renderInputs(scene);
+    for (const auto& [what, change] : changes) {
+        Scene changed = scene;
+        change(changed);
+        EXPECT_FALSE(renderInputs(changed) == original) << what;
+    }
+    // A disabled light draws nothing, whatever its values.
+    Scene off = scene;
+    off.lights[1].enabled = false;
+    Scene offAndChanged = off;
+    offAndChanged.lights[1].intensity = 99.0f;
+    EXPECT_EQ(renderInputs(offAndChanged), renderInputs(off));
+    // The built-in mesh is one shared mesh, resolved or not.
+    Scene resolved = scene;
+    resolved.resolvedMesh = builtinMesh(scene.mesh);
+    EXPECT_EQ(renderInputs(resolved), original);
+}
+
+}  // namespace
+}  // namespace patina
