@@ -16,6 +16,7 @@
 #include "gltf/import.h"
 #include "geometry/hidden_faces.h"
 #include "geometry/mesh.h"
+#include "bench/brdf_floor.h"
 #include "bench/temporary_folder.h"
 #include "bench/timing.h"
 
@@ -100,7 +101,7 @@ size_t triangleCount(const Mesh& mesh) {
     return mesh.indices.size() / 3;
 }
 
-const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, AddedLights added, int lights) {
+const FrameTiming* findLights(const RenderBenchResult& result, BenchPath path, AddedLights added, int lights) {
     for (const LightCountRow& row : result.lightRows) {
         if (row.path == path && row.added == added && row.lights == lights) {
             return &row.time;
@@ -110,11 +111,11 @@ const FrameTiming* findLights(const RenderBenchResult& result, PassMode path, Ad
 }
 
 // Each path and kind of added light that bench-render measures against light count.
-constexpr std::pair<PassMode, AddedLights> kLightSeries[] = {
-    {PassMode::Multi, AddedLights::Points},       {PassMode::Single, AddedLights::Points},
-    {PassMode::Specialised, AddedLights::Points}, {PassMode::BrdfFloor, AddedLights::Points},
-    {PassMode::Single, AddedLights::Directionals}, {PassMode::Single, AddedLights::PointsOtherCoefficients},
-    {PassMode::Specialised, AddedLights::PointsOtherCoefficients}};
+constexpr std::pair<BenchPath, AddedLights> kLightSeries[] = {
+    {BenchPath::Multi, AddedLights::Points},       {BenchPath::Single, AddedLights::Points},
+    {BenchPath::Specialised, AddedLights::Points}, {BenchPath::BrdfFloor, AddedLights::Points},
+    {BenchPath::Single, AddedLights::Directionals}, {BenchPath::Single, AddedLights::PointsOtherCoefficients},
+    {BenchPath::Specialised, AddedLights::PointsOtherCoefficients}};
 
 // Every path with point lights added; single again with directional lights added (whose
 // light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
@@ -130,8 +131,8 @@ void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& optio
     if (floorAtSlots) {
         counts.insert(std::upper_bound(counts.begin(), counts.end(), slots), slots);
     }
-    auto measured = [&](PassMode path, int count) {
-        return path == PassMode::BrdfFloor || !floorAtSlots || count != slots;
+    auto measured = [&](BenchPath path, int count) {
+        return path == BenchPath::BrdfFloor || !floorAtSlots || count != slots;
     };
     std::map<std::tuple<int, int, int>, Samples> samples;
     interleaved(options.runs, [&](bool keep) {
@@ -142,8 +143,9 @@ void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& optio
                 }
                 const Scene scene = renderBenchScene(count, added);
                 RenderSettings s = settings;
-                s.passes = path;
-                timeFrame(renderer, path == PassMode::BrdfFloor ? brdfFloorScene(scene) : scene, s,
+                s.passes = passModeOf(path);
+                const bool floor = path == BenchPath::BrdfFloor;
+                timeFrame(renderer, floor ? brdfFloorScene(scene) : scene, floor ? brdfFloorSettings(s) : s,
                           keep ? &samples[{int(path), int(added), count}] : nullptr);
             }
         }
@@ -245,6 +247,26 @@ void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& resul
 }
 }  // namespace
 
+std::string_view benchPathName(BenchPath path) {
+    switch (path) {
+    case BenchPath::Single: return passModeName(PassMode::Single);
+    case BenchPath::Multi: return passModeName(PassMode::Multi);
+    case BenchPath::Specialised: return passModeName(PassMode::Specialised);
+    case BenchPath::BrdfFloor: return "brdf-floor";
+    }
+    return "single";
+}
+
+PassMode passModeOf(BenchPath path) {
+    switch (path) {
+    case BenchPath::Multi: return PassMode::Multi;
+    case BenchPath::Specialised:
+    case BenchPath::BrdfFloor: return PassMode::Specialised;
+    case BenchPath::Single: break;
+    }
+    return PassMode::Single;
+}
+
 std::string_view addedLightsName(AddedLights added) {
     switch (added) {
     case AddedLights::Points: return "point";
@@ -280,19 +302,6 @@ Scene renderBenchScene(int lights, AddedLights added) {
     return scene;
 }
 
-Scene brdfFloorScene(const Scene& scene) {
-    Scene floor = scene;
-    for (Light& light : floor.lights) {
-        if (light.type == LightType::Point) {
-            light.direction = -light.position;
-        } else if (light.type == LightType::Hemisphere) {
-            light.direction = {0.0f, -1.0f, 0.0f};
-        }
-        light.type = LightType::Directional;
-    }
-    return floor;
-}
-
 RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     RenderBenchResult result;
     result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -316,21 +325,21 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     std::vector<TargetCheck> targets;
     // Wall time to glFinish, what a user waits for; the timer queries' GPU time is in the CSV
     // beside it (on llvmpipe 83-100% of it, as the rasteriser is the "GPU").
-    auto gpu = [&](PassMode path, int lights, AddedLights added = AddedLights::Points) {
+    auto gpu = [&](BenchPath path, int lights, AddedLights added = AddedLights::Points) {
         const FrameTiming* t = findLights(result, path, added, lights);
         return t ? t->frame : std::nan("");
     };
     auto add = [&](std::string name, double value, double bound) {
         targets.push_back({std::move(name), value, bound, value <= bound});
     };
-    add("single / multi at 8 lights", gpu(PassMode::Single, 8) / gpu(PassMode::Multi, 8), 0.35);
-    add("specialised / single, default scene (3 lights)", gpu(PassMode::Specialised, 3) / gpu(PassMode::Single, 3), 0.9);
+    add("single / multi at 8 lights", gpu(BenchPath::Single, 8) / gpu(BenchPath::Multi, 8), 0.35);
+    add("specialised / single, default scene (3 lights)", gpu(BenchPath::Specialised, 3) / gpu(BenchPath::Single, 3), 0.9);
     // Cost per added light from 8 lights to the most measured, against the floor's.
     int most = 8;
     for (const LightCountRow& row : result.lightRows) {
         most = std::max(most, row.lights);
     }
-    auto perLight = [&](PassMode path, AddedLights added) {
+    auto perLight = [&](BenchPath path, AddedLights added) {
         return (gpu(path, most, added) - gpu(path, 8, added)) / double(most - 8);
     };
     // The floor's own cost per light from 3 lights to as many as take flat inputs (14 on
@@ -339,25 +348,25 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     // GL has fewer slots or the floor was not measured at them.
     int floorTop = 8;
     for (const LightCountRow& row : result.lightRows) {
-        if (row.path == PassMode::BrdfFloor && row.lights > floorTop && row.lights <= int(result.flatLightSlots)) {
+        if (row.path == BenchPath::BrdfFloor && row.lights > floorTop && row.lights <= int(result.flatLightSlots)) {
             floorTop = row.lights;
         }
     }
-    const double floor = (gpu(PassMode::BrdfFloor, floorTop, AddedLights::Points) -
-                          gpu(PassMode::BrdfFloor, 3, AddedLights::Points)) /
+    const double floor = (gpu(BenchPath::BrdfFloor, floorTop, AddedLights::Points) -
+                          gpu(BenchPath::BrdfFloor, 3, AddedLights::Points)) /
                          double(floorTop - 3);
     const std::string range =
         " (8 to " + std::to_string(most) + " lights; floor 3 to " + std::to_string(floorTop) + ")";
     add("single's cost per added directional light / the BRDF floor's" + range,
-        perLight(PassMode::Single, AddedLights::Directionals) / floor, 1.3);
+        perLight(BenchPath::Single, AddedLights::Directionals) / floor, 1.3);
     add("single's cost per added point light / the BRDF floor's" + range,
-        perLight(PassMode::Single, AddedLights::Points) / floor, 1.3);
+        perLight(BenchPath::Single, AddedLights::Points) / floor, 1.3);
     add("single's cost per added point light with other coefficients / the BRDF floor's" + range,
-        perLight(PassMode::Single, AddedLights::PointsOtherCoefficients) / floor, 1.3);
+        perLight(BenchPath::Single, AddedLights::PointsOtherCoefficients) / floor, 1.3);
     add("specialised's cost per added point light / the BRDF floor's" + range,
-        perLight(PassMode::Specialised, AddedLights::Points) / floor, 1.3);
+        perLight(BenchPath::Specialised, AddedLights::Points) / floor, 1.3);
     add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,
-        perLight(PassMode::Specialised, AddedLights::PointsOtherCoefficients) / floor, 1.3);
+        perLight(BenchPath::Specialised, AddedLights::PointsOtherCoefficients) / floor, 1.3);
     return targets;
 }
 
@@ -366,7 +375,7 @@ std::string renderBenchCsv(const RenderBenchResult& result) {
     char line[256];
     for (const LightCountRow& row : result.lightRows) {
         std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n",
-                      std::string(passModeName(row.path)).c_str(), std::string(addedLightsName(row.added)).c_str(),
+                      std::string(benchPathName(row.path)).c_str(), std::string(addedLightsName(row.added)).c_str(),
                       row.lights, result.width, result.height,
                       result.triangles, row.time.gpu, row.time.cpu, row.time.frame, row.time.readBack);
         csv += line;
@@ -400,12 +409,12 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
     size_t colour = 0;
     for (const auto& [path, added] : kLightSeries) {
         // Short enough for the legend: the axis says that point lights are added.
-        std::string label = path == PassMode::BrdfFloor ? "BRDF floor" : std::string(passModeName(path));
+        std::string label = path == BenchPath::BrdfFloor ? "BRDF floor" : std::string(benchPathName(path));
         if (added != AddedLights::Points) {
-            label = (path == PassMode::Specialised ? "spec." : label) +
+            label = (path == BenchPath::Specialised ? "spec." : label) +
                     (added == AddedLights::Directionals ? ", directionals" : ", other coeffs");
         }
-        ChartSeries series{label, {}, chartColour(colour++), true, true, path == PassMode::BrdfFloor, {}};
+        ChartSeries series{label, {}, chartColour(colour++), true, true, path == BenchPath::BrdfFloor, {}};
         for (const LightCountRow& row : result.lightRows) {
             if (row.path == path && row.added == added) {
                 series.points.emplace_back(row.lights, row.time.frame);

@@ -36,8 +36,16 @@ enum class AddedLights {
 // "point", "point-other-coefficients", "directional" (the CSV's `added` column).
 std::string_view addedLightsName(AddedLights added);
 
+// What a light-count row measured: one of the renderer's paths, or the BRDF-only floor
+// (bench/brdf_floor.h: the specialised path with the bench's own light code).
+enum class BenchPath { Single, Multi, Specialised, BrdfFloor };
+// "single", "multi", "specialised", "brdf-floor" (the CSV's `path` column).
+std::string_view benchPathName(BenchPath path);
+// The renderer's path that draws it (the floor is specialised).
+PassMode passModeOf(BenchPath path);
+
 struct LightCountRow {
-    PassMode path;        // Single, Multi, Specialised or BrdfFloor
+    BenchPath path = BenchPath::Single;
     AddedLights added = AddedLights::Points;
     int lights = 0;
     FrameTiming time;
@@ -71,8 +79,6 @@ struct RenderBenchResult {
 
 // The default scene with `lights` lights: its first `lights` for up to 3, then the ring.
 Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
-// The same lights as directions only, for the BrdfFloor pass.
-Scene brdfFloorScene(const Scene& scene);
 
 RenderBenchResult runRenderBench(const RenderBenchOptions& options);
 

@@ -36,7 +36,6 @@ std::string_view passModeName(PassMode mode) {
     case PassMode::Single: return "single";
     case PassMode::Multi: return "multi";
     case PassMode::Specialised: return "specialised";
-    case PassMode::BrdfFloor: return "brdf-floor";
     }
     return "single";
 }
@@ -257,9 +256,8 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
         : settings.passes == PassMode::Multi
             ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
             : s.shading.useSpecialised(model,
-                                       settings.passes == PassMode::Specialised
-                                           ? specialiseFor(packed, scene.material, plan.flatLights)
-                                           : brdfFloorFor(packed.size(), plan.flatLights),
+                                       settings.lightCode ? settings.lightCode(packed, plan.flatLights)
+                                                          : specialiseFor(packed, scene.material, plan.flatLights),
                                        output);
     if (settings.passes == PassMode::Multi) {
         s.depthPrepass.get();

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "gl/shader_specialisation.h"
 #include "image/image.h"
 #include "geometry/mesh.h"
 #include "scene/scene.h"
@@ -38,9 +39,7 @@ private:
 // single: every light in one pass from the LightBlock uniform buffer;
 // specialised: one pass compiled for the scene's light types and count (shader_specialisation.h).
 // The three agree to rounding.
-// BrdfFloor is for benchmarks only (no name): every light as a direction with the BRDF alone,
-// the arithmetic floor of a light's cost.
-enum class PassMode { Single, Multi, Specialised, BrdfFloor };
+enum class PassMode { Single, Multi, Specialised };
 std::string_view passModeName(PassMode mode);
 // single, multi or specialised.
 std::optional<PassMode> passModeFromName(std::string_view name);
@@ -71,6 +70,10 @@ struct RenderSettings {
     // this camera is outside it: the same image from fewer fragments. llvmpipe with MSAA
     // shades a fragment that fails the depth test all the same. false: every face (for tests).
     bool cullHiddenFaces = true;
+    // Specialised only: the light code to compile, from the enabled lights as packed and the
+    // number taken as flat inputs, instead of specialiseFor's; for callers that write their
+    // own (bench/'s BRDF-only floor). Empty: the scene's.
+    std::function<ShaderSpecialisation(const std::vector<shader::PackedLight>&, size_t flatSlots)> lightCode;
 };
 
 struct RenderOutput {

@@ -6,10 +6,13 @@
 namespace patina {
 
 namespace {
-// Where light i comes from in the fragment shader, and its entry in mesh.vert's list.
-struct LightSource {
-    std::string fragment, vertex;
-};
+void append(std::string& list, const std::string& entry) {
+    if (!entry.empty()) {
+        list += (list.empty() ? "" : " ") + entry;
+    }
+}
+}  // namespace
+
 LightSource sourceOf(size_t i, size_t flatSlots, const char* flatWrite) {
     const std::string index = std::to_string(i);
     if (i < flatSlots) {
@@ -18,13 +21,6 @@ LightSource sourceOf(size_t i, size_t flatSlots, const char* flatWrite) {
     return {"BLOCK(" + index + ")", ""};
 }
 
-void append(std::string& list, const std::string& entry) {
-    if (!entry.empty()) {
-        list += (list.empty() ? "" : " ") + entry;
-    }
-}
-
-// Light i's fragment-shader call, and its flat rows for mesh.vert where it has them.
 void addLight(ShaderSpecialisation& key, size_t i, const std::string& call, const LightSource& source) {
     append(key.lights, call);
     if (!source.vertex.empty()) {
@@ -32,7 +28,6 @@ void addLight(ShaderSpecialisation& key, size_t i, const std::string& call, cons
         key.flatLightCount = int(i) + 1;
     }
 }
-}  // namespace
 
 std::vector<std::string> ShaderSpecialisation::defines() const {
     std::vector<std::string> result{"PATINA_SINGLE_PASS", "PATINA_SPECIALISED", "PATINA_LIGHTS " + lights};
@@ -76,16 +71,6 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
 
 bool flatLightsPay(double pixels, double trianglesDrawn) {
     return pixels >= kFlatLightPixelsPerTriangle * trianglesDrawn;
-}
-
-ShaderSpecialisation brdfFloorFor(size_t count, size_t flatSlots) {
-    ShaderSpecialisation key;
-    for (size_t i = 0; i < count; ++i) {
-        // The floor's scene has directional lights only (render_bench.cpp's brdfFloorScene).
-        const LightSource source = sourceOf(i, flatSlots, "FLAT_DIRECTIONAL");
-        addLight(key, i, "BRDF_ONLY(" + source.fragment + ")", source);
-    }
-    return key;
 }
 
 }  // namespace patina

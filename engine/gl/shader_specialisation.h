@@ -44,8 +44,13 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
 constexpr double kFlatLightPixelsPerTriangle = 4.0;
 bool flatLightsPay(double pixels, double trianglesDrawn);
 
-// The benchmark floor's key: BRDF_ONLY for each of `count` lights (shade.frag), read the same
-// way as specialiseFor would read them.
-ShaderSpecialisation brdfFloorFor(size_t count, size_t flatSlots);
+// The pieces of a key, for a caller writing light code of its own (bench/'s BRDF-only floor):
+// where light i comes from in the fragment shader ("FLAT(i)" or "BLOCK(i)") and its entry in
+// mesh.vert's list (`flatWrite`(i), for a flat one), and adding light i's fragment code.
+struct LightSource {
+    std::string fragment, vertex;
+};
+LightSource sourceOf(size_t i, size_t flatSlots, const char* flatWrite);
+void addLight(ShaderSpecialisation& key, size_t i, const std::string& code, const LightSource& source);
 
 }  // namespace patina

@@ -82,10 +82,6 @@ void main() {
 #define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V);
 #define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V);
 #define SHADE_HEMISPHERE(light) radiance += shadeHemisphereLight(light, material, N, V);
-// The benchmark's floor (PassMode::BrdfFloor): the BRDF and cosine alone for a light's
-// direction, with none of the light handling above (no type, no attenuation, no branch).
-// (One line: GLSL 3.30 has no line continuation.)
-#define BRDF_ONLY(light) { vec3 L = light.directionToLight; BrdfValue f = evaluateBrdf(material, N, V, L); radiance += light.radiance * max(dot(N, L), 0.0f) * (f.diffuse + f.specular); }
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/scene/light_packing.h): a loop per type, no type branch.

@@ -14,6 +14,7 @@
 #include "cli_runner.h"
 #include "image/image.h"
 #include "scene/light_packing.h"
+#include "bench/brdf_floor.h"
 #include "bench/render_bench.h"
 #include "scratch_test.h"
 #include "accuracy/stability.h"
@@ -110,28 +111,28 @@ TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
 TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     RenderBenchResult result;
     result.flatLightSlots = 14;
-    auto add = [&](PassMode path, AddedLights added, int lights, double frame) {
+    auto add = [&](BenchPath path, AddedLights added, int lights, double frame) {
         result.lightRows.push_back({path, added, lights, {0.0, 0.0, frame}});
     };
-    add(PassMode::Multi, AddedLights::Points, 8, 100.0);
-    add(PassMode::Single, AddedLights::Points, 8, 30.0);
-    add(PassMode::Single, AddedLights::Points, 3, 20.0);
-    add(PassMode::Specialised, AddedLights::Points, 3, 16.0);
-    add(PassMode::Single, AddedLights::Points, 16, 30.0 + 8 * 3.0);
+    add(BenchPath::Multi, AddedLights::Points, 8, 100.0);
+    add(BenchPath::Single, AddedLights::Points, 8, 30.0);
+    add(BenchPath::Single, AddedLights::Points, 3, 20.0);
+    add(BenchPath::Specialised, AddedLights::Points, 3, 16.0);
+    add(BenchPath::Single, AddedLights::Points, 16, 30.0 + 8 * 3.0);
     // The floor's cost per light is taken from 3 lights to the flat slots (14, all flat inputs),
     // 2 here; past them it grows faster (lights from the block), which the targets leave out.
-    add(PassMode::BrdfFloor, AddedLights::Points, 3, 4.0);
-    add(PassMode::BrdfFloor, AddedLights::Points, 8, 4.0 + 5 * 2.5);   // not a point of the slope
-    add(PassMode::BrdfFloor, AddedLights::Points, 14, 4.0 + 11 * 2.0);
-    add(PassMode::BrdfFloor, AddedLights::Points, 16, 26.0 + 2 * 3.0);
-    add(PassMode::Single, AddedLights::Directionals, 8, 20.0);
-    add(PassMode::Single, AddedLights::Directionals, 16, 20.0 + 8 * 2.4);
-    add(PassMode::Specialised, AddedLights::Points, 8, 20.0);
-    add(PassMode::Specialised, AddedLights::Points, 16, 20.0 + 8 * 2.8);
-    add(PassMode::Single, AddedLights::PointsOtherCoefficients, 8, 40.0);
-    add(PassMode::Single, AddedLights::PointsOtherCoefficients, 16, 40.0 + 8 * 4.4);
-    add(PassMode::Specialised, AddedLights::PointsOtherCoefficients, 8, 32.0);
-    add(PassMode::Specialised, AddedLights::PointsOtherCoefficients, 16, 32.0 + 8 * 3.6);
+    add(BenchPath::BrdfFloor, AddedLights::Points, 3, 4.0);
+    add(BenchPath::BrdfFloor, AddedLights::Points, 8, 4.0 + 5 * 2.5);   // not a point of the slope
+    add(BenchPath::BrdfFloor, AddedLights::Points, 14, 4.0 + 11 * 2.0);
+    add(BenchPath::BrdfFloor, AddedLights::Points, 16, 26.0 + 2 * 3.0);
+    add(BenchPath::Single, AddedLights::Directionals, 8, 20.0);
+    add(BenchPath::Single, AddedLights::Directionals, 16, 20.0 + 8 * 2.4);
+    add(BenchPath::Specialised, AddedLights::Points, 8, 20.0);
+    add(BenchPath::Specialised, AddedLights::Points, 16, 20.0 + 8 * 2.8);
+    add(BenchPath::Single, AddedLights::PointsOtherCoefficients, 8, 40.0);
+    add(BenchPath::Single, AddedLights::PointsOtherCoefficients, 16, 40.0 + 8 * 4.4);
+    add(BenchPath::Specialised, AddedLights::PointsOtherCoefficients, 8, 32.0);
+    add(BenchPath::Specialised, AddedLights::PointsOtherCoefficients, 16, 32.0 + 8 * 3.6);
     const std::vector<TargetCheck> targets = renderBenchTargets(result);
     ASSERT_EQ(targets.size(), 7u);
     EXPECT_DOUBLE_EQ(targets[0].value, 0.3);

@@ -53,7 +53,7 @@ TEST(FramePlan, FlatLightSlotsWeighTheBoxAgainstTrianglesDrawn) {
 // sums its passes into the linear image first, so it keeps one even when not asked to.
 TEST(FramePlan, WithoutMsaaOnlyMultiNeedsADisplayPass) {
     const Camera camera = defaultScene().camera;
-    for (PassMode passes : {PassMode::Single, PassMode::Specialised, PassMode::BrdfFloor, PassMode::Multi}) {
+    for (PassMode passes : {PassMode::Single, PassMode::Specialised, PassMode::Multi}) {
         const bool multi = passes == PassMode::Multi;
         const FramePlan plan = planFrame(settingsOf(passes, 1), camera, sphereFacts(), kMaxSamples, kSlots);
         EXPECT_FALSE(plan.msaa);

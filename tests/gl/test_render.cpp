@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "gl/render_targets.h"
+#include "bench/brdf_floor.h"
 #include "gl/renderer.h"
 #include "shading/shading.h"
 #include "scene/view.h"
@@ -175,7 +176,9 @@ TEST(Renderer, BrdfFloorMatchesSinglePassForDirectionalLights) {
     const Scene scene = onlyLightsOfType(LightType::Directional, 8);
     const RenderOutput single = renderScene(renderer, scene, PassMode::Single);
     for (FlatLights flat : {FlatLights::Always, FlatLights::Never}) {
-        const RenderOutput floor = renderScene(renderer, scene, PassMode::BrdfFloor, 160, 4, flat);
+        RenderSettings settings = brdfFloorSettings(test::renderSettings(160, 160, PassMode::Specialised, 4));
+        settings.flatLights = flat;
+        const RenderOutput floor = renderer.render(scene, settings);
         EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4) << (flat == FlatLights::Always);
     }
 }
