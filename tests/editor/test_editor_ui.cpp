@@ -196,11 +196,6 @@ TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAsking) {
     EXPECT_EQ(state_.scene.material.name, "other");
 }
 
-}  // namespace
-}  // namespace patina::editor
-
-namespace patina::editor {
-namespace {
 
 TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
     const LdrImage epic = services_->viewportPixels(EditorServices::Shown::Edited);
@@ -213,11 +208,6 @@ TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
     EXPECT_EQ(state_.scene.material.model, BrdfModelId::Epic);
 }
 
-}  // namespace
-}  // namespace patina::editor
-
-namespace patina::editor {
-namespace {
 
 TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     const LdrImage sphere = services_->viewportPixels(EditorServices::Shown::Edited);
@@ -252,11 +242,6 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
 }
 
-}  // namespace
-}  // namespace patina::editor
-
-namespace patina::editor {
-namespace {
 
 // Every texture the last rendered UI frame draws (the font atlas has none headlessly), with
 // its size as the GL has it now; -1 x -1 for a name that is no longer a texture.
@@ -391,11 +376,6 @@ TEST_F(EditorUi, AnErrorInsideAPanelIsShownAndTheEditorGoesOn) {
     EXPECT_EQ(services_->viewportPixels(EditorServices::Shown::Edited).width, services_->viewportWidth);
 }
 
-}  // namespace
-}  // namespace patina::editor
-
-namespace patina::editor {
-namespace {
 
 // View > Frame mesh aims the camera as the F key does (it used to do nothing).
 TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
@@ -425,11 +405,6 @@ TEST_F(EditorUi, TheSceneHoldsTheMeshItDraws) {
     EXPECT_EQ(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
 
-}  // namespace
-}  // namespace patina::editor
-
-namespace patina::editor {
-namespace {
 
 // A point light's dot is dragged, not the camera orbited (the viewport's button held the click
 // and the gizmo asked whether the window was hovered, which it then is not), and the drag is
