@@ -95,13 +95,20 @@ int runEditor(const EditorOptions& options) {
         for (const std::string& file : options.files) {
             openFile(state, file);
         }
+        startAutosave(state, configFolder() / "autosave.json");
         const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
         std::string title;
         int framesLeft = kFramesAfterInput;
+        std::optional<std::chrono::milliseconds> autosaveDue;
         FrameStats stats(options.stats ? &std::cerr : nullptr, options.start);
         while (!state.quitConfirmed) {
             if (framesLeft <= 0) {
-                glfwWaitEvents();
+                // Asleep until input, or until a change waiting to be autosaved is due.
+                if (autosaveDue) {
+                    glfwWaitEventsTimeout(std::chrono::duration<double>(*autosaveDue).count() + 0.01);
+                } else {
+                    glfwWaitEvents();
+                }
                 framesLeft = kFramesAfterInput;
             } else {
                 glfwPollEvents();
@@ -149,7 +156,9 @@ int runEditor(const EditorOptions& options) {
             if (layoutDump) {
                 std::ofstream(layoutDump) << layoutJson();
             }
+            autosaveDue = updateAutosave(state, AutosaveClock::now());
         }
+        removeAutosave(state);   // a clean quit: nothing to recover
         stats.finish();
         glfwGetWindowSize(window, &geometry.width, &geometry.height);
         if (!saveSettings(state, geometry, settingsFile)) {

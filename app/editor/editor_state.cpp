@@ -180,6 +180,23 @@ void frameMesh(EditorState& state) {
     frameCamera(state.scene.camera, bounds.center, std::max(bounds.radius, 1e-3f));
 }
 
+void applyScene(EditorState& state, const Scene& scene) {
+    applyEdit(state, [&](EditorState& s) {
+        s.scene.material = scene.material;
+        s.scene.lights = scene.lights;
+    });
+    // Camera, mesh, display and the file's unknown keys are views, not edits: they follow the
+    // file.
+    state.scene.camera = scene.camera;
+    state.scene.mesh = scene.mesh;
+    state.scene.meshFile = scene.meshFile;
+    state.scene.resolvedMesh = scene.resolvedMesh;
+    state.scene.display = scene.display;
+    state.scene.extras = scene.extras;
+    state.soloLight = -1;
+    state.selectedLight = state.scene.lights.empty() ? -1 : 0;
+}
+
 namespace {
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
@@ -227,27 +244,11 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         if (scene) {
             resolveMesh(*scene);
         }
-        applyEdit(state, [&](EditorState& s) {
-            if (scene) {
-                s.scene.material = scene->material;
-                s.scene.lights = scene->lights;
-            } else {
-                s.scene.material = *material;
-            }
-        });
         if (scene) {
-            // Camera, mesh, display and the file's unknown keys are views, not edits: they
-            // follow the file.
-            state.scene.camera = scene->camera;
-            state.scene.mesh = scene->mesh;
-            state.scene.meshFile = scene->meshFile;
-            state.scene.resolvedMesh = scene->resolvedMesh;
-            state.scene.display = scene->display;
-            state.scene.extras = scene->extras;
+            applyScene(state, *scene);
             state.materialPath.clear();
-            state.soloLight = -1;
-            state.selectedLight = state.scene.lights.empty() ? -1 : 0;
         } else {
+            applyEdit(state, [&](EditorState& s) { s.scene.material = *material; });
             state.materialPath = path;
         }
         state.savedMaterial = state.scene.material;

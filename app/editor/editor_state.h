@@ -8,6 +8,7 @@
 #include "gl/renderer.h"
 #include "geometry/mesh.h"
 #include "scene/scene.h"
+#include "autosave.h"
 #include "undo_history.h"
 
 namespace patina::editor {
@@ -57,6 +58,9 @@ struct EditorState {
     std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
     int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
 
+    Autosave autosave;                       // crash recovery (autosave.h)
+    std::optional<Recoverable> recoverable;  // the last session's work, offered at start
+
     std::string error;                       // shown until dismissed
     std::string status;                      // last completed action
     std::optional<std::filesystem::path> pendingOpen;   // waits for "discard changes?"
@@ -103,6 +107,9 @@ void frameMesh(EditorState& state);
 Scene withMaterial(const EditorState& state, const Material& material);
 
 // --- Files -------------------------------------------------------------------------------
+// Makes `scene` (its mesh resolved) the one edited: material and lights as one undoable edit,
+// camera, mesh and display as views.
+void applyScene(EditorState& state, const Scene& scene);
 // Opens a material, scene or Patina screenshot (PNG with an embedded scene), undoably, or a
 // .gltf/.glb mesh (shown instead of the sphere, the camera framed on it). A file that fails to
 // load sets state.error and changes nothing else.

@@ -210,6 +210,33 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         ImGui::EndPopup();
     }
 
+    // The last session's work, offered before anything else.
+    if (state.recoverable && !ImGui::IsPopupOpen("Restore unsaved work?")) {
+        ImGui::OpenPopup("Restore unsaved work?");
+    }
+    if (ImGui::BeginPopupModal("Restore unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (!state.recoverable) {
+            ImGui::CloseCurrentPopup();
+        } else {
+            ImGui::Text("Patina did not close normally last time. Its working scene was kept%s%s.",
+                        state.recoverable->savedAt.empty() ? "" : " at ", state.recoverable->savedAt.c_str());
+            ImGui::Text("Material \"%s\", %zu light(s).", state.recoverable->scene.material.name.c_str(),
+                        state.recoverable->scene.lights.size());
+            if (ImGui::Button("Restore")) {
+                restoreRecoverable(state);
+                ImGui::CloseCurrentPopup();
+            }
+            recordItem("Restore");
+            ImGui::SameLine();
+            if (ImGui::Button("Discard")) {
+                discardRecoverable(state);
+                ImGui::CloseCurrentPopup();
+            }
+            recordItem("Discard");
+        }
+        ImGui::EndPopup();
+    }
+
     // Unsaved changes are never dropped without asking.
     const bool asking = state.pendingOpen.has_value() || state.pendingQuit;
     if (asking && !ImGui::IsPopupOpen("Unsaved changes")) {

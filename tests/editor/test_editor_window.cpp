@@ -13,6 +13,8 @@
 #include <unistd.h>
 
 #include "image/image.h"
+#include "image/png_text.h"
+#include "io/json_reader.h"
 #include "io/file_bytes.h"
 
 namespace patina {
@@ -119,7 +121,14 @@ protected:
         const ssize_t length = read(pipeFds[0], number, sizeof number - 1);
         close(pipeFds[0]);
         ASSERT_GT(length, 0) << "Xvfb did not start";
-        display_ = ":" + std::to_string(std::atoi(number));
+        display_ = ":";   // appended, not ":" + ...: GCC 12 warns falsely (-Wrestrict) on that form here
+        display_ += std::to_string(std::atoi(number));
+        startEditor();
+    }
+
+    // The editor on this display and config folder; waits for its first frame and window.
+    void startEditor() {
+        fs::remove(dir_ / "layout.json");
         // With --stats, its log (stderr) in a file the tests read.
         editor_ = std::make_unique<Child>(
             std::vector<std::string>{"/bin/sh", "-c", std::string("exec '") + PATINA_EXECUTABLE + "' --stats 2>stats.log"},
@@ -174,6 +183,22 @@ protected:
         }
         std::sort(files.begin(), files.end());
         return files;
+    }
+
+    // Drags the Roughness slider to near its left end, as a user would.
+    void dragRoughness() {
+        const std::vector<float> slider = rect("Roughness");
+        ASSERT_EQ(slider.size(), 4u);
+        const int y = int((slider[1] + slider[3]) / 2);
+        const int from = int(slider[0] + (slider[2] - slider[0]) * 0.4f);
+        xdotool("mousemove --window " + window_ + " " + std::to_string(from) + " " + std::to_string(y));
+        xdotool("mousedown 1");
+        for (int step = 1; step <= 5; ++step) {
+            xdotool("mousemove --window " + window_ + " " +
+                    std::to_string(from - step * (from - int(slider[0]) - 2) / 5) + " " + std::to_string(y));
+            std::this_thread::sleep_for(100ms);
+        }
+        xdotool("mouseup 1");
     }
 
     // Moves to a named widget (its centre, or `fromLeft` pixels in) and clicks it; false when the
@@ -232,18 +257,7 @@ protected:
 
 TEST_F(EditorWindow, DraggingASliderShowsInTheScreenshot) {
     screenshot(1);
-    const std::vector<float> slider = rect("Roughness");
-    ASSERT_EQ(slider.size(), 4u);
-    const int y = int((slider[1] + slider[3]) / 2);
-    const int from = int(slider[0] + (slider[2] - slider[0]) * 0.4f);
-    xdotool("mousemove --window " + window_ + " " + std::to_string(from) + " " + std::to_string(y));
-    xdotool("mousedown 1");
-    for (int step = 1; step <= 5; ++step) {
-        xdotool("mousemove --window " + window_ + " " + std::to_string(from - step * (from - int(slider[0]) - 2) / 5) +
-                " " + std::to_string(y));
-        std::this_thread::sleep_for(100ms);
-    }
-    xdotool("mouseup 1");
+    dragRoughness();
     std::this_thread::sleep_for(500ms);
     screenshot(2);
     ASSERT_TRUE(editor_->running());
@@ -298,6 +312,29 @@ TEST_F(EditorWindow, F12AtAFixedSizeKeepsTheEditorRunning) {
     EXPECT_EQ(image.width, 800);
     EXPECT_EQ(image.height, 600);
     EXPECT_FALSE(screenshotOfViewport().empty());
+}
+
+// Crash recovery as the issue asks: an edit, the editor killed (SIGKILL: no chance to save),
+// started again; it offers the work back, and Restore brings the edit.
+TEST_F(EditorWindow, AKilledEditorOffersItsWorkBack) {
+    dragRoughness();
+    const fs::path autosave = dir_ / "config" / "patina" / "autosave.json";
+    ASSERT_TRUE(waitFor([&] { return fs::exists(autosave); }, 15s)) << "no autosave after the edit";
+    std::vector<std::string> warnings;
+    const Json saved = readJsonFile(autosave);
+    const float edited = saved["scene"]["material"]["roughness"].get<float>();
+    EXPECT_LT(edited, 0.3f) << "the drag's roughness";
+    kill(editor_->pid(), SIGKILL);
+    ASSERT_TRUE(waitFor([&] { return !editor_->running(); }, 5s));
+
+    startEditor();
+    ASSERT_TRUE(waitFor([&] { return rect("Restore").size() == 4; }, 20s)) << "no offer to restore";
+    ASSERT_TRUE(clickOn("Restore"));
+    const fs::path shot = screenshotOfViewport();
+    ASSERT_FALSE(shot.empty());
+    const std::optional<Scene> shown = sceneFromPng(shot, warnings);
+    ASSERT_TRUE(shown.has_value());
+    EXPECT_EQ(shown->material.roughness, edited) << "the edit came back";
 }
 
 TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {
