@@ -20,6 +20,7 @@ Json autosaveJson(const EditorState& state) {
     return Json{{"format", kFormat},
                 {"version", kVersion},
                 {"materialPath", state.materialPath.string()},
+                {"scenePath", state.scenePath.string()},
                 {"scene", sceneToJson(state.scene)}};
 }
 
@@ -68,6 +69,7 @@ void startAutosave(EditorState& state, const std::filesystem::path& file) {
         Recoverable found;
         found.savedAt = reader.string("savedAt", "");
         found.materialPath = reader.string("materialPath", "");
+        found.scenePath = reader.string("scenePath", "");
         const Json& scene = reader.required("scene");
         std::vector<std::string> warnings;
         found.scene = sceneFromJson(scene, file.string() + " (scene)", file.parent_path(), warnings);
@@ -117,6 +119,15 @@ void restoreRecoverable(EditorState& state) {
     applyScene(state, found.scene);
     commitEdits(state);   // one undo step back to what was there before
     state.materialPath = found.materialPath;
+    state.scenePath = found.scenePath;
+    // As for the material below: the scene file on disk, if there is one, is what is saved.
+    if (!found.scenePath.empty()) {
+        try {
+            std::vector<std::string> warnings;
+            state.savedScene = loadSceneFile(found.scenePath, warnings);
+        } catch (const std::exception&) {
+        }
+    }
     // The file on disk decides whether the restored material is saved; without one, it is
     // compared with what the editor started with, as always.
     if (!found.materialPath.empty()) {

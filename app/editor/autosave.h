@@ -29,11 +29,12 @@ struct Autosave {
 struct Recoverable {
     Scene scene;                          // its mesh resolved when it has a file
     std::filesystem::path materialPath;   // where its material was saved, if anywhere
+    std::filesystem::path scenePath;      // the scene file it was, if any
     std::string savedAt;                  // local time, for the prompt
 };
 
 // The autosave document: {"format": "patina-autosave", "version": 1, "savedAt", "materialPath",
-// "scene": a scene file's object}.
+// "scenePath", "scene": a scene file's object}.
 std::string autosaveText(const EditorState& state);
 
 // At start, before any edit: remembers the state as it is (nothing to write yet) and, when the

@@ -37,7 +37,8 @@ WindowInput& inputOf(GLFWwindow* window) {
 // Installed before ImGui's, which calls it after its own (imgui_impl_glfw chains callbacks).
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        inputOf(window).keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
+        inputOf(window).keyPresses.push_back(
+            {key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
     }
 }
 

@@ -28,10 +28,43 @@ std::string joinWarnings(const std::vector<std::string>& warnings) {
 }
 }  // namespace
 
+bool EditorState::sceneChanged() const {
+    return scene.lights != savedScene.lights || scene.camera != savedScene.camera ||
+           scene.display != savedScene.display || scene.mesh != savedScene.mesh ||
+           scene.meshFile != savedScene.meshFile;
+}
+
 std::string windowTitle(const EditorState& state) {
-    const std::string name =
-        state.materialPath.empty() ? state.scene.material.name : state.materialPath.filename().string();
+    const std::string name = !state.scenePath.empty()      ? state.scenePath.filename().string()
+                             : !state.materialPath.empty() ? state.materialPath.filename().string()
+                                                           : state.scene.material.name;
     return (state.dirty() ? "*" : "") + name + " - Patina";
+}
+
+std::string unsavedParts(const EditorState& state) {
+    const Scene& now = state.scene;
+    const Scene& saved = state.savedScene;
+    std::vector<std::string> parts;
+    if (state.materialChanged()) {
+        parts.push_back("the material");
+    }
+    if (now.lights != saved.lights) {
+        parts.push_back("the lights");
+    }
+    if (now.camera != saved.camera) {
+        parts.push_back("the camera");
+    }
+    if (now.display != saved.display) {
+        parts.push_back("the display settings");
+    }
+    if (now.mesh != saved.mesh || now.meshFile != saved.meshFile) {
+        parts.push_back("the mesh");
+    }
+    std::string text;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return text;
 }
 
 void commitEdits(EditorState& state) {
@@ -247,6 +280,9 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         if (scene) {
             applyScene(state, *scene);
             state.materialPath.clear();
+            // A scene file is the document; a screenshot's scene is not a file to save into.
+            state.scenePath = path.extension() == ".png" ? std::filesystem::path() : path;
+            state.savedScene = state.scene;
         } else {
             applyEdit(state, [&](EditorState& s) { s.scene.material = *material; });
             state.materialPath = path;
@@ -269,6 +305,23 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
     } else {
         openFile(state, path);
     }
+}
+
+bool saveScene(EditorState& state, const std::filesystem::path& path) {
+    commitEdits(state);
+    try {
+        saveSceneFile(path, state.scene);
+    } catch (const std::exception& error) {
+        state.error = "Could not save the scene: " + std::string(error.what());
+        return false;
+    }
+    state.scenePath = path;
+    state.savedScene = state.scene;
+    state.savedMaterial = state.scene.material;   // inline in the scene file
+    state.error.clear();
+    state.status = "Saved " + path.filename().string();
+    rememberRecent(state, path);
+    return true;
 }
 
 bool saveMaterial(EditorState& state, const std::filesystem::path& path) {

@@ -34,8 +34,13 @@ struct PanelLayout {
 // write it back. No ImGui or GL types here, so it is tested without a window.
 struct EditorState {
     Scene scene = defaultScene();
-    std::filesystem::path materialPath;      // where Save writes; empty: never saved
+    std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
+    // The scene as a document: where it was opened from or saved to (empty: none), and the
+    // scene as it was then (or at start), against which lights, camera, display and mesh are
+    // unsaved changes.
+    std::filesystem::path scenePath;
+    Scene savedScene = scene;
     UndoHistory history;
     EditSnapshot committed = snapshot();     // the state history knows; edits since are pending
 
@@ -67,15 +72,22 @@ struct EditorState {
     bool pendingQuit = false;
     bool quitConfirmed = false;
     bool showShortcuts = false;
-    enum class PathDialog { None, Open, SaveAs, ExportComparison } pathDialog = PathDialog::None;
+    enum class PathDialog { None, Open, SaveAs, SaveSceneAs, ExportComparison } pathDialog = PathDialog::None;
     std::string pathDialogText;
 
-    bool dirty() const { return scene.material != savedMaterial; }
+    // What differs from the files: the material from its own (or the scene's), the rest of the
+    // scene from the scene as opened, saved or started with.
+    bool materialChanged() const { return scene.material != savedMaterial; }
+    bool sceneChanged() const;
+    bool dirty() const { return materialChanged() || sceneChanged(); }
     EditSnapshot snapshot() const { return {scene.material, scene.lights}; }
 };
 
-// The window title: file name (or "untitled"), a '*' while the material is unsaved.
+// The window title: the document's file name (the scene's, else the material's, else the
+// material's name), a '*' while anything is unsaved.
 std::string windowTitle(const EditorState& state);
+// "the material", "the lights and the camera", ...: what is unsaved, for the prompt.
+std::string unsavedParts(const EditorState& state);
 
 // --- Undoable edits ---------------------------------------------------------------------
 // Widgets write straight into state.scene. Whatever changed since the last commit becomes
@@ -119,6 +131,8 @@ void requestOpen(EditorState& state, const std::filesystem::path& path);
 // Writes the material (saveMaterialFile: atomically, the old file kept as .bak); on failure
 // sets state.error, stays dirty and leaves the file on disk as it was.
 bool saveMaterial(EditorState& state, const std::filesystem::path& path);
+// Saves the whole scene, material inline; the scene becomes the document. Same failure rules.
+bool saveScene(EditorState& state, const std::filesystem::path& path);
 void rememberRecent(EditorState& state, const std::filesystem::path& path);
 
 }  // namespace patina::editor

@@ -19,12 +19,13 @@ struct KeyPress {
     int key;
     bool ctrl = false;
     bool shift = false;
+    bool alt = false;
 };
 using KeyPresses = std::vector<KeyPress>;
 
-inline bool pressed(const KeyPresses& presses, int key, bool ctrl = false, bool shift = false) {
+inline bool pressed(const KeyPresses& presses, int key, bool ctrl = false, bool shift = false, bool alt = false) {
     for (const KeyPress& press : presses) {
-        if (press.key == key && press.ctrl == ctrl && press.shift == shift) {
+        if (press.key == key && press.ctrl == ctrl && press.shift == shift && press.alt == alt) {
             return true;
         }
     }

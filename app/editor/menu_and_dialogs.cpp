@@ -21,8 +21,25 @@ void saveAs(EditorState& state) {
                                                : state.materialPath);
 }
 
+void saveSceneAs(EditorState& state) {
+    startPathDialog(state, EditorState::PathDialog::SaveSceneAs,
+                    state.scenePath.empty() ? std::filesystem::path(state.scene.material.name + "-scene.json")
+                                            : state.scenePath);
+}
+
+void saveSceneDocument(EditorState& state) {
+    if (state.scenePath.empty()) {
+        saveSceneAs(state);
+    } else {
+        saveScene(state, state.scenePath);
+    }
+}
+
+// Ctrl+S: the document: the scene when one is open, else the material.
 void save(EditorState& state) {
-    if (state.materialPath.empty()) {
+    if (!state.scenePath.empty()) {
+        saveScene(state, state.scenePath);
+    } else if (state.materialPath.empty()) {
         saveAs(state);
     } else {
         saveMaterial(state, state.materialPath);
@@ -85,8 +102,15 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         if (ImGui::MenuItem("Save", "Ctrl+S")) {
             save(state);
         }
-        if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S")) {
+        if (ImGui::MenuItem("Save material as...", "Ctrl+Shift+S")) {
             saveAs(state);
+        }
+        if (ImGui::MenuItem("Save scene", "Ctrl+Alt+S")) {
+            saveSceneDocument(state);
+        }
+        recordItem("Save scene");
+        if (ImGui::MenuItem("Save scene as...")) {
+            saveSceneAs(state);
         }
         ImGui::Separator();
         if (ImGui::MenuItem("Screenshot", "F12")) {
@@ -163,6 +187,9 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
     if (pressed(keys, kKeyS, true, true)) {
         saveAs(state);
     }
+    if (pressed(keys, kKeyS, true, false, true)) {
+        saveSceneDocument(state);
+    }
     if (pressed(keys, kKeyO, true)) {
         startPathDialog(state, EditorState::PathDialog::Open, state.materialPath.parent_path() / "");
     }
@@ -183,19 +210,25 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         ImGui::OpenPopup("Path");
     }
     if (ImGui::BeginPopupModal("Path", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const char* verb = state.pathDialog == EditorState::PathDialog::Open     ? "Open"
-                           : state.pathDialog == EditorState::PathDialog::SaveAs ? "Save"
-                                                                                 : "Export";
+        const EditorState::PathDialog kind = state.pathDialog;
+        const char* verb = kind == EditorState::PathDialog::Open ? "Open"
+                           : kind == EditorState::PathDialog::SaveAs || kind == EditorState::PathDialog::SaveSceneAs
+                               ? "Save"
+                               : "Export";
         ImGui::Text("%s: a material (.json), scene (.json) or Patina screenshot (.png)", verb);
         ImGui::SetNextItemWidth(520);
         const bool entered = inputString("##path", &state.pathDialogText, ImGuiInputTextFlags_EnterReturnsTrue);
         drawFolderListing(state);
-        if (ImGui::Button(verb) || entered) {
+        const bool confirmed = ImGui::Button(verb);
+        recordItem("path:confirm");
+        if (confirmed || entered) {
             const std::filesystem::path path = state.pathDialogText;
             if (state.pathDialog == EditorState::PathDialog::Open) {
                 requestOpen(state, path);
             } else if (state.pathDialog == EditorState::PathDialog::SaveAs) {
                 saveMaterial(state, path);
+            } else if (state.pathDialog == EditorState::PathDialog::SaveSceneAs) {
+                saveScene(state, path);
             } else {
                 services.exportComparison(state, path);
             }
@@ -237,37 +270,47 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         ImGui::EndPopup();
     }
 
-    // Unsaved changes are never dropped without asking.
+    // Unsaved changes are never dropped without asking. While a Save as started from the
+    // prompt is open, the open or quit waits for it, and goes on once nothing is unsaved.
     const bool asking = state.pendingOpen.has_value() || state.pendingQuit;
-    if (asking && !ImGui::IsPopupOpen("Unsaved changes")) {
-        if (state.pendingQuit && !state.dirty()) {
+    auto proceed = [&] {
+        if (state.pendingOpen) {
+            openFile(state, *state.pendingOpen);
+        } else {
             state.quitConfirmed = true;
+        }
+        state.pendingOpen.reset();
+        state.pendingQuit = false;
+    };
+    if (asking && state.pathDialog == EditorState::PathDialog::None && !ImGui::IsPopupOpen("Unsaved changes")) {
+        if (!state.dirty()) {
+            proceed();
         } else {
             ImGui::OpenPopup("Unsaved changes");
         }
     }
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::Text("The material \"%s\" has unsaved changes.", state.scene.material.name.c_str());
-        auto proceed = [&] {
-            if (state.pendingOpen) {
-                openFile(state, *state.pendingOpen);
-            } else {
-                state.quitConfirmed = true;
-            }
-            state.pendingOpen.reset();
-            state.pendingQuit = false;
-            ImGui::CloseCurrentPopup();
-        };
+        const std::string parts = unsavedParts(state);
+        ImGui::Text("%s%s not saved.", parts.empty() ? "Nothing is" : "", parts.c_str());
+        ImGui::TextDisabled(state.sceneChanged() ? "Save writes the scene, its material inline."
+                                                 : "Save writes the material.");
         if (ImGui::Button("Save")) {
-            if (!state.materialPath.empty() && saveMaterial(state, state.materialPath)) {
+            // The whole scene when more than the material changed; a file first if it has none.
+            ImGui::CloseCurrentPopup();
+            if (state.sceneChanged() || !state.scenePath.empty()) {
+                saveSceneDocument(state);
+            } else {
+                save(state);
+            }
+            if (!state.dirty()) {
                 proceed();
-            } else if (state.materialPath.empty()) {
-                state.error = "Use Save as first: this material has no file yet.";
             }
         }
+        recordItem("Save changes");
         ImGui::SameLine();
         if (ImGui::Button("Discard changes")) {
             proceed();
+            ImGui::CloseCurrentPopup();
         }
         recordItem("Discard changes");
         ImGui::SameLine();
@@ -283,8 +326,9 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Appearing);
         if (ImGui::Begin("Shortcuts", &state.showShortcuts)) {
             const char* rows[][2] = {
-                {"Ctrl+O", "open a material, scene or screenshot"}, {"Ctrl+S", "save the material"},
-                {"Ctrl+Shift+S", "save as"}, {"Ctrl+Z", "undo"}, {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
+                {"Ctrl+O", "open a material, scene or screenshot"},
+                {"Ctrl+S", "save (the scene, if one is open; else the material)"},
+                {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"}, {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
                 {"F12", "screenshot of the viewport"}, {"F", "frame the mesh (viewport)"},
                 {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"},
                 {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"}, {"F1", "this list"},

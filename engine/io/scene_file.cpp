@@ -259,7 +259,8 @@ Json materialToJson(const Material& material) {
     return withExtras(json, material.extras);
 }
 
-void saveMaterialFile(const std::filesystem::path& path, const Material& material) {
+namespace {
+void saveWithBackup(const std::filesystem::path& path, const Json& json) {
     // The previous version goes to PATH.bak first, itself atomically: whenever this stops,
     // both files hold a complete version.
     std::error_code error;
@@ -268,8 +269,17 @@ void saveMaterialFile(const std::filesystem::path& path, const Material& materia
         backup += ".bak";
         writeFileAtomic(backup, readFileBytes(path));
     }
-    const std::string text = prettyJson(materialToJson(material));
+    const std::string text = prettyJson(json);
     writeFileAtomic(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+}  // namespace
+
+void saveMaterialFile(const std::filesystem::path& path, const Material& material) {
+    saveWithBackup(path, materialToJson(material));
+}
+
+void saveSceneFile(const std::filesystem::path& path, const Scene& scene) {
+    saveWithBackup(path, sceneToJson(scene));
 }
 
 Json sceneToJson(const Scene& scene) {

@@ -34,5 +34,7 @@ Json sceneToJson(const Scene& scene);   // the material inline
 // Saves a material file atomically and keeps the file it replaces as PATH.bak. Throws
 // std::runtime_error naming the path on failure; the previous file is then left as it was.
 void saveMaterialFile(const std::filesystem::path& path, const Material& material);
+// The same for a scene file (sceneToJson: the material inline, the mesh file by its path).
+void saveSceneFile(const std::filesystem::path& path, const Scene& scene);
 
 }  // namespace patina

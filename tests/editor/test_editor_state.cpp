@@ -267,3 +267,44 @@ TEST(EditorConfig, FollowsXdgConfigHome) {
 
 }  // namespace
 }  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// Scenes are documents: a light edit is an unsaved change (it used to be lost without a word),
+// Save scene writes lights, camera and display with the material inline, and reopening gives
+// them back with nothing unsaved.
+TEST_F(EditorStateTest, LightEditsAreUnsavedAndASavedSceneKeepsThem) {
+    EXPECT_FALSE(state.dirty());
+    addLight(state, LightType::Directional);
+    state.scene.camera.position = {0.5f, 1.0f, 4.0f};
+    EXPECT_TRUE(state.dirty());
+    EXPECT_FALSE(state.materialChanged());
+    EXPECT_EQ(unsavedParts(state), "the lights and the camera");
+    EXPECT_EQ(windowTitle(state).front(), '*');
+
+    const fs::path file = dir_ / "studio.json";
+    ASSERT_TRUE(saveScene(state, file)) << state.error;
+    EXPECT_FALSE(state.dirty());
+    EXPECT_EQ(windowTitle(state), "studio.json - Patina");
+
+    EditorState reopened;
+    ASSERT_TRUE(openFile(reopened, file)) << reopened.error;
+    EXPECT_EQ(reopened.scene.lights, state.scene.lights);
+    EXPECT_EQ(reopened.scene.camera, state.scene.camera);
+    EXPECT_EQ(reopened.scenePath, file);
+    EXPECT_FALSE(reopened.dirty()) << unsavedParts(reopened);
+    reopened.scene.lights[0].intensity *= 2.0f;
+    EXPECT_EQ(unsavedParts(reopened), "the lights");
+}
+
+TEST_F(EditorStateTest, AFailedSceneSaveKeepsTheDocumentAsItWas) {
+    addLight(state, LightType::Point);
+    EXPECT_FALSE(saveScene(state, dir_ / "missing-folder" / "scene.json"));
+    EXPECT_NE(state.error.find("Could not save the scene"), std::string::npos) << state.error;
+    EXPECT_TRUE(state.dirty());
+    EXPECT_TRUE(state.scenePath.empty());
+}
+
+}  // namespace
+}  // namespace patina::editor

@@ -377,6 +377,26 @@ TEST_F(EditorUi, AnErrorInsideAPanelIsShownAndTheEditorGoesOn) {
 }
 
 
+// Quitting after light edits asks, and Save on a scene without a file goes on to Save as
+// (it used to stop behind the prompt with "Use Save as first"); once saved, the quit goes on.
+TEST_F(EditorUi, QuittingAfterLightEditsAsksAndSaveGoesOnToSaveAs) {
+    click(centreOf("Add point"));
+    ASSERT_TRUE(state_.dirty());
+    state_.pendingQuit = true;
+    frames(2);
+    click(centreOf("Save changes"));
+    EXPECT_FALSE(state_.quitConfirmed);
+    EXPECT_EQ(state_.pathDialog, EditorState::PathDialog::SaveSceneAs) << state_.error;
+    state_.pathDialogText = path("quit-scene.json").string();
+    frames(2);
+    click(centreOf("path:confirm"));
+    frames(2);
+    EXPECT_TRUE(std::filesystem::exists(path("quit-scene.json"))) << state_.error;
+    EXPECT_TRUE(state_.quitConfirmed);
+    std::vector<std::string> warnings;
+    EXPECT_EQ(loadSceneFile(path("quit-scene.json"), warnings).lights, state_.scene.lights);
+}
+
 // View > Frame mesh aims the camera as the F key does (it used to do nothing).
 TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
     state_.scene.camera.target = {3.0f, 1.0f, 0.0f};
