@@ -13,7 +13,7 @@
 #include "inputs.h"
 #include "bench/render_bench.h"
 #include "io/scene_file.h"
-#include "bench/temporary_folder.h"
+#include "io/temporary_folder.h"
 #include "bench/timing.h"
 
 #ifndef PATINA_PRESETS_DIR

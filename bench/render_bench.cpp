@@ -17,7 +17,7 @@
 #include "geometry/hidden_faces.h"
 #include "geometry/mesh.h"
 #include "bench/brdf_floor.h"
-#include "bench/temporary_folder.h"
+#include "io/temporary_folder.h"
 #include "bench/timing.h"
 
 namespace patina {

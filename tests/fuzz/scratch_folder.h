@@ -3,7 +3,7 @@
 // process exits normally; after a crash it is left for the artifact's sake.
 #include <filesystem>
 
-#include "bench/temporary_folder.h"
+#include "io/temporary_folder.h"
 
 namespace patina::fuzz {
 
