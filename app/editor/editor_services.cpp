@@ -144,9 +144,11 @@ LdrImage EditorServices::shownImage(const EditorState& state, int width, int hei
 std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& state, int width, int height) {
     try {
         const LdrImage image = shownImage(state, width, height);
-        const std::filesystem::path path = screenshotPath(state.screenshotFolder, state.scene.material.name);
+        std::filesystem::create_directories(state.screenshotFolder);   // a folder set but not made yet
+        const std::filesystem::path path = std::filesystem::absolute(
+            screenshotPath(state.screenshotFolder, state.scene.material.name)).lexically_normal();
         writeFileAtomic(path, encodePngWithText(image, {{kSceneTextKeyword, sceneToJson(state.scene).dump()}}));
-        state.status = "Screenshot " + path.string();
+        state.status = "Screenshot saved: " + path.string();
         return path;
     } catch (const std::exception& error) {
         state.error = "Screenshot failed: " + std::string(error.what());

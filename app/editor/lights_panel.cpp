@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include <glm/glm.hpp>
@@ -38,14 +39,17 @@ void editDirection(Light& light) {
     }
 }
 
-void editLight(EditorState& state, Light& light, int index) {
-    std::string name = light.name;
-    if (inputString("Name", &name, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        renameLight(state, index, name);
-    }
+void editLight(Light& light) {
+    // Written as typed, as the material's name: the edit commits when the field lets go, by
+    // Enter or by a click elsewhere (it used to be lost unless Enter was pressed).
+    inputString("Name", &light.name);
+    recordItem("Light name");
     ImGui::Checkbox("Enabled", &light.enabled);
     colorEditLinear("Colour", &light.color, true);
-    ImGui::DragFloat("Intensity", &light.intensity, 0.05f, 0.0f, 1e6f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    // Each pixel of drag changes the intensity by 1% of itself: 8 to 100 is about 250 pixels,
+    // not 1800 as at a fixed step, and small values stay as easy to set as large ones.
+    ImGui::DragFloat("Intensity", &light.intensity, std::max(light.intensity, 0.1f) * 0.01f, 0.0f, 1e6f, "%.3f",
+                     ImGuiSliderFlags_AlwaysClamp);
     recordItem("Intensity");
     switch (light.type) {
     case LightType::Point:
@@ -133,7 +137,7 @@ void drawLightsPanel(EditorState& state) {
     ImGui::EndDisabled();
     if (state.selectedLight >= 0 && state.selectedLight < int(lights.size())) {
         ImGui::Separator();
-        editLight(state, lights[size_t(state.selectedLight)], state.selectedLight);
+        editLight(lights[size_t(state.selectedLight)]);
     }
 }
 

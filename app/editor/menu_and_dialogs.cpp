@@ -199,6 +199,9 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
     if (pressed(keys, kKeyF12)) {
         screenshot(state, services);
     }
+    if (pressed(keys, kKeyDelete)) {
+        deleteLight(state, state.selectedLight);   // one undo step, as the Delete button
+    }
     if (pressed(keys, kKeyF1)) {
         state.showShortcuts = !state.showShortcuts;
     }
@@ -329,7 +332,7 @@ void drawDialogs(EditorState& state, EditorServices& services) {
                 {"Ctrl+O", "open a material, scene or screenshot"},
                 {"Ctrl+S", "save (the scene, if one is open; else the material)"},
                 {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"}, {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
-                {"F12", "screenshot of the viewport"}, {"F", "frame the mesh (viewport)"},
+                {"F12", "screenshot of the viewport"}, {"Delete", "delete the selected light"}, {"F", "frame the mesh (viewport)"},
                 {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"},
                 {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"}, {"F1", "this list"},
                 {"Ctrl+Q", "quit"}};

@@ -397,6 +397,55 @@ TEST_F(EditorUi, QuittingAfterLightEditsAsksAndSaveGoesOnToSaveAs) {
     EXPECT_EQ(loadSceneFile(path("quit-scene.json"), warnings).lights, state_.scene.lights);
 }
 
+// A light's new name is kept when the field loses focus, not only on Enter, as one undo step.
+TEST_F(EditorUi, ARenamedLightKeepsItsNameWhenTheFieldLosesFocus) {
+    state_.selectedLight = 0;
+    frames(2);
+    const std::string before = state_.scene.lights[0].name;
+    click(centreOf("Light name"));
+    ImGuiIO& io = ImGui::GetIO();
+    for (char c : std::string(" two")) {
+        io.AddInputCharacter(static_cast<unsigned>(c));
+    }
+    frames(2);
+    click(centreOf("viewport"));   // focus elsewhere, no Enter
+    EXPECT_EQ(state_.scene.lights[0].name, before + " two");
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights[0].name, before);
+}
+
+// Intensity drags in proportion to itself: 8 to past 100 in 300 pixels (at the old fixed step
+// of 0.05 a pixel it took 1800).
+TEST_F(EditorUi, IntensityDragsInProportionToItself) {
+    state_.selectedLight = 0;
+    state_.scene.lights[0].intensity = 8.0f;
+    frames(2);
+    const ImVec2 at = centreOf("Intensity");
+    drag(at, ImVec2(at.x + 300.0f, at.y), 60);
+    EXPECT_GT(state_.scene.lights[0].intensity, 100.0f);
+    EXPECT_LT(state_.scene.lights[0].intensity, 1000.0f);
+}
+
+// The Delete key deletes the selected light, undoably; not while a text field has the keys.
+TEST_F(EditorUi, TheDeleteKeyDeletesTheSelectedLight) {
+    const std::vector<Light> lights = state_.scene.lights;
+    state_.selectedLight = 1;
+    press(kKeyDelete);
+    ASSERT_EQ(state_.scene.lights.size(), lights.size() - 1);
+    EXPECT_EQ(state_.scene.lights[1].name, lights[2].name);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights, lights);
+}
+
+// A screenshot folder that does not exist yet is made, and the message gives the whole path.
+TEST_F(EditorUi, AScreenshotMakesItsFolderAndSaysWhereItWent) {
+    state_.screenshotFolder = dir_ / "not" / "yet";
+    press(kKeyF12);
+    const std::vector<std::filesystem::path> shots = pngsIn(dir_ / "not" / "yet");
+    ASSERT_EQ(shots.size(), 1u) << state_.error;
+    EXPECT_NE(state_.status.find(std::filesystem::absolute(shots[0]).string()), std::string::npos) << state_.status;
+}
+
 // View > Frame mesh aims the camera as the F key does (it used to do nothing).
 TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
     state_.scene.camera.target = {3.0f, 1.0f, 0.0f};
