@@ -33,7 +33,12 @@ struct PanelLayout {
 // Everything the editor shows is a function of this state; panels read it, draw widgets and
 // write it back. No ImGui or GL types here, so it is tested without a window.
 struct EditorState {
-    Scene scene = defaultScene();
+    // The default scene under a tone map that keeps highlights (a file's own choice replaces it).
+    Scene scene = [] {
+        Scene editing = defaultScene();
+        editing.display.tonemap = Tonemap::PbrNeutral;
+        return editing;
+    }();
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
     // The scene as a document: where it was opened from or saved to (empty: none), and the

@@ -40,7 +40,7 @@ void drawToolbar(EditorState& state) {
     ImGui::SameLine();
     int tonemap = int(display.tonemap);
     ImGui::SetNextItemWidth(90);
-    ImGui::Combo("Tone map", &tonemap, "none\0aces\0reinhard\0");
+    ImGui::Combo("Tone map", &tonemap, "none\0aces\0reinhard\0pbr neutral\0");
     display.tonemap = Tonemap(tonemap);
     ImGui::SameLine();
     colorEditLinear("Background", &display.background, false, ImGuiColorEditFlags_NoInputs);

@@ -59,6 +59,7 @@ int toneMapIndex(Tonemap tonemap) {
     switch (tonemap) {
     case Tonemap::Aces: return shader::TONEMAP_ACES;
     case Tonemap::Reinhard: return shader::TONEMAP_REINHARD;
+    case Tonemap::PbrNeutral: return shader::TONEMAP_PBR_NEUTRAL;
     case Tonemap::None: break;
     }
     return shader::TONEMAP_NONE;

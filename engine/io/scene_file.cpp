@@ -115,7 +115,7 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     const auto parsed = tonemapFromName(tonemap);
     if (!parsed) {
         reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) +
-                                   " (expected \"none\", \"aces\" or \"reinhard\")");
+                                   " (expected \"none\", \"aces\", \"reinhard\" or \"pbr-neutral\")");
     }
     display.tonemap = *parsed;
     display.background = reader.vec3("background", display.background, kNonNegative);

@@ -9,12 +9,13 @@ std::string_view tonemapName(Tonemap tonemap) {
     case Tonemap::None: return "none";
     case Tonemap::Aces: return "aces";
     case Tonemap::Reinhard: return "reinhard";
+    case Tonemap::PbrNeutral: return "pbr-neutral";
     }
     return "none";
 }
 
 std::optional<Tonemap> tonemapFromName(std::string_view name) {
-    static const Tonemap all[] = {Tonemap::None, Tonemap::Aces, Tonemap::Reinhard};
+    static const Tonemap all[] = {Tonemap::None, Tonemap::Aces, Tonemap::Reinhard, Tonemap::PbrNeutral};
     return enumFromName(name, all, tonemapName);
 }
 

@@ -22,7 +22,7 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
-enum class Tonemap { None, Aces, Reinhard };
+enum class Tonemap { None, Aces, Reinhard, PbrNeutral };
 std::string_view tonemapName(Tonemap tonemap);
 std::optional<Tonemap> tonemapFromName(std::string_view name);
 

@@ -3,6 +3,7 @@
 const int TONEMAP_NONE = 0;      // clamp to [0, 1]
 const int TONEMAP_ACES = 1;
 const int TONEMAP_REINHARD = 2;
+const int TONEMAP_PBR_NEUTRAL = 3;
 
 // Narkowicz 2015, "ACES Filmic Tone Mapping Curve": a rational fit of the ACES RRT + ODT,
 // x (a x + b) / (x (c x + d) + e) with a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14.
@@ -15,6 +16,27 @@ PATINA_INLINE vec3 tonemapAcesNarkowicz(vec3 x) {
 // Reinhard et al. 2002, "Photographic Tone Reproduction for Digital Images", eq. 3: x / (1 + x).
 PATINA_INLINE vec3 tonemapReinhard(vec3 x) {
     return x / (vec3(1.0f) + x);
+}
+
+// Khronos PBR Neutral (Khronos 3D Commerce, "PBR Neutral Tone Mapping", 2024): colours up to
+// 0.8 pass through but for a small offset that lifts blacks a little less than they are,
+// brighter ones compress towards 1 and desaturate towards white, so a highlight keeps its hue
+// until it turns white. Constants and steps as published.
+PATINA_INLINE vec3 tonemapPbrNeutral(vec3 color) {
+    const real startCompression = 0.8f - 0.04f;
+    const real desaturation = 0.15f;
+    real x = min(color.x, min(color.y, color.z));
+    real offset = x < 0.08f ? x - 6.25f * x * x : 0.04f;
+    color = color - vec3(offset);
+    real peak = max(color.x, max(color.y, color.z));
+    if (peak < startCompression) {
+        return color;
+    }
+    const real d = 1.0f - startCompression;
+    real newPeak = 1.0f - d * d / (peak + d - startCompression);
+    color = color * (newPeak / peak);
+    real g = 1.0f - 1.0f / (desaturation * (peak - newPeak) + 1.0f);
+    return mix(color, vec3(newPeak), g);
 }
 
 // IEC 61966-2-1 sRGB encoding of one channel in [0, 1].
@@ -42,6 +64,8 @@ PATINA_INLINE vec3 displayTransform(vec3 linear, real exposureStops, int tonemap
         mapped = tonemapAcesNarkowicz(exposed);
     } else if (tonemap == TONEMAP_REINHARD) {
         mapped = clamp(tonemapReinhard(exposed), vec3(0.0f), vec3(1.0f));
+    } else if (tonemap == TONEMAP_PBR_NEUTRAL) {
+        mapped = clamp(tonemapPbrNeutral(exposed), vec3(0.0f), vec3(1.0f));
     } else {
         mapped = clamp(exposed, vec3(0.0f), vec3(1.0f));
     }
