@@ -34,7 +34,7 @@ Command addRenderCommand(CLI::App& app) {
         RenderSettings settings;
         settings.width = options->width;
         settings.height = options->height;
-        settings.passes = *passModeFromName(options->passes);
+        settings.path = *renderPathFromName(options->passes);
         settings.samples = options->samples;
         // A one-off render keeps its peak memory down: strips of at most 16 MiB of
         // multisampled colour, and the linear image read back only when asked for.

@@ -30,7 +30,7 @@ void renderMaterials(Scene scene, const std::vector<Material>& materials, int wi
     settings.height = height;
     // The same image as single or multi to rounding, faster: materials of one scene share one
     // or two compiled shaders (with and without diffuse). Only the sRGB image is needed.
-    settings.passes = PassMode::Specialised;
+    settings.path = RenderPath::Specialised;
     settings.readHdr = false;
     for (const Material& material : materials) {
         scene.material = material;

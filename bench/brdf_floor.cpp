@@ -31,7 +31,7 @@ Scene brdfFloorScene(const Scene& scene) {
 }
 
 RenderSettings brdfFloorSettings(RenderSettings settings) {
-    settings.passes = PassMode::Specialised;
+    settings.path = RenderPath::Specialised;
     settings.lightCode = [](const std::vector<shader::PackedLight>& lights, size_t flatSlots) {
         return brdfFloorFor(lights.size(), flatSlots);
     };

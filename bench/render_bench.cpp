@@ -51,7 +51,7 @@ void timeFrame(BenchRenderer& renderer, const Scene& scene, const RenderSettings
     renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed
     const Clock::time_point start = Clock::now();
     const double cpuStart = threadCpuMilliseconds();
-    RenderTarget& target = settings.passes == PassMode::Multi ? renderer.multi : renderer.others;
+    RenderTarget& target = settings.path == RenderPath::Multi ? renderer.multi : renderer.others;
     renderer.draw(scene, settings, target);
     const double cpu = threadCpuMilliseconds() - cpuStart;
     glFinish();
@@ -143,7 +143,7 @@ void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& optio
                 }
                 const Scene scene = renderBenchScene(count, added);
                 RenderSettings s = settings;
-                s.passes = passModeOf(path);
+                s.path = renderPathOf(path);
                 const bool floor = path == BenchPath::BrdfFloor;
                 timeFrame(renderer, floor ? brdfFloorScene(scene) : scene, floor ? brdfFloorSettings(s) : s,
                           keep ? &samples[{int(path), int(added), count}] : nullptr);
@@ -182,15 +182,15 @@ void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOp
     // Specialised with and without flat lights too, interleaved with single: the cost per
     // triangle and the saving per pixel that flatLightsPay weighs.
     using FlatLights = RenderSettings::FlatLights;
-    const std::tuple<const char*, PassMode, FlatLights> kinds[] = {
-        {"single", PassMode::Single, FlatLights::WherePaying},
-        {"specialised-flat", PassMode::Specialised, FlatLights::Always},
-        {"specialised-block", PassMode::Specialised, FlatLights::Never}};
+    const std::tuple<const char*, RenderPath, FlatLights> kinds[] = {
+        {"single", RenderPath::Single, FlatLights::WherePaying},
+        {"specialised-flat", RenderPath::Specialised, FlatLights::Always},
+        {"specialised-block", RenderPath::Specialised, FlatLights::Never}};
     std::vector<RenderSettings> variants;
     for (const auto& [path, passes, flatLights] : kinds) {
         variants.push_back(settings);
-        variants.back().passes = passes;
-        variants.back().flatLights = flatLights;
+        variants.back().path = passes;
+        variants.back().flatLightUse = flatLights;
     }
     for (size_t target : triangles) {
         const auto sphere = std::make_shared<const Mesh>(sphereOfAbout(target));
@@ -208,14 +208,14 @@ void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOp
 void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                     RenderBenchResult& result) {
     const Scene scene = defaultScene();
-    const std::tuple<const char*, PassMode, bool> kinds[] = {{"single", PassMode::Single, true},
-                                                             {"single-every-face", PassMode::Single, false},
-                                                             {"multi", PassMode::Multi, true},
-                                                             {"multi-every-face", PassMode::Multi, false}};
+    const std::tuple<const char*, RenderPath, bool> kinds[] = {{"single", RenderPath::Single, true},
+                                                             {"single-every-face", RenderPath::Single, false},
+                                                             {"multi", RenderPath::Multi, true},
+                                                             {"multi-every-face", RenderPath::Multi, false}};
     std::vector<RenderSettings> variants;
     for (const auto& [path, passes, cull] : kinds) {
         variants.push_back(settings);
-        variants.back().passes = passes;
+        variants.back().path = passes;
         variants.back().cullHiddenFaces = cull;
     }
     const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
@@ -249,22 +249,22 @@ void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& resul
 
 std::string_view benchPathName(BenchPath path) {
     switch (path) {
-    case BenchPath::Single: return passModeName(PassMode::Single);
-    case BenchPath::Multi: return passModeName(PassMode::Multi);
-    case BenchPath::Specialised: return passModeName(PassMode::Specialised);
+    case BenchPath::Single: return renderPathName(RenderPath::Single);
+    case BenchPath::Multi: return renderPathName(RenderPath::Multi);
+    case BenchPath::Specialised: return renderPathName(RenderPath::Specialised);
     case BenchPath::BrdfFloor: return "brdf-floor";
     }
     return "single";
 }
 
-PassMode passModeOf(BenchPath path) {
+RenderPath renderPathOf(BenchPath path) {
     switch (path) {
-    case BenchPath::Multi: return PassMode::Multi;
+    case BenchPath::Multi: return RenderPath::Multi;
     case BenchPath::Specialised:
-    case BenchPath::BrdfFloor: return PassMode::Specialised;
+    case BenchPath::BrdfFloor: return RenderPath::Specialised;
     case BenchPath::Single: break;
     }
-    return PassMode::Single;
+    return RenderPath::Single;
 }
 
 std::string_view addedLightsName(AddedLights added) {

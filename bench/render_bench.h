@@ -42,7 +42,7 @@ enum class BenchPath { Single, Multi, Specialised, BrdfFloor };
 // "single", "multi", "specialised", "brdf-floor" (the CSV's `path` column).
 std::string_view benchPathName(BenchPath path);
 // The renderer's path that draws it (the floor is specialised).
-PassMode passModeOf(BenchPath path);
+RenderPath renderPathOf(BenchPath path);
 
 struct LightCountRow {
     BenchPath path = BenchPath::Single;

@@ -44,11 +44,11 @@ std::vector<reference::Light> toReference(const std::vector<Light>& lights) {
     return result;
 }
 
-RenderSettings renderSettings(int width, int height, PassMode passes, int samples) {
+RenderSettings renderSettings(int width, int height, RenderPath passes, int samples) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
-    settings.passes = passes;
+    settings.path = passes;
     settings.samples = samples;
     return settings;
 }

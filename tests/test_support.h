@@ -19,7 +19,7 @@ namespace patina::test {
 HeadlessContext& glContext();
 
 // Default settings but for the image size, path and MSAA samples.
-RenderSettings renderSettings(int width, int height, PassMode passes, int samples);
+RenderSettings renderSettings(int width, int height, RenderPath passes, int samples);
 
 reference::Vec3 toReference(glm::vec3 v);
 reference::Material toReference(const Material& material);

@@ -34,7 +34,7 @@ std::filesystem::path screenshotPath(const std::filesystem::path& folder, const 
 
 EditorServices::EditorServices() : renderer_(std::make_unique<Renderer>()) {}
 
-unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, PassMode passes,
+unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, RenderPath passes,
                                          Shown shown, int samples) {
     ViewImage& image = view(shown);
     ViewKey key{renderInputs(scene), width, height, passes, samples};
@@ -42,7 +42,7 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
         RenderSettings settings;
         settings.width = width;
         settings.height = height;
-        settings.passes = passes;
+        settings.path = passes;
         settings.samples = samples;
         settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
@@ -56,11 +56,11 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
     return image.target.displayTexture();
 }
 
-RenderOutput EditorServices::renderImage(const Scene& scene, int width, int height, PassMode passes) {
+RenderOutput EditorServices::renderImage(const Scene& scene, int width, int height, RenderPath passes) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
-    settings.passes = passes;
+    settings.path = passes;
     settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
     return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
 }
@@ -77,7 +77,7 @@ const Texture* EditorServices::thumbnail(const std::filesystem::path& material, 
         try {
             Scene preview = scene;
             preview.material = loadMaterialFile(material, warnings);
-            entry.texture = std::make_unique<Texture>(renderImage(preview, 64, 64, PassMode::Single).ldr);
+            entry.texture = std::make_unique<Texture>(renderImage(preview, 64, 64, RenderPath::Single).ldr);
         } catch (const std::exception&) {
             entry.texture.reset();   // the browser shows the file without a picture
         }
@@ -111,22 +111,22 @@ const Texture* EditorServices::benchChart(const std::filesystem::path& png) {
 }
 
 LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {
-    const LdrImage a = renderImage(withMaterial(state, *state.compareA), halfWidth, height, state.passes).ldr;
-    const LdrImage b = renderImage(renderedScene(state), halfWidth, height, state.passes).ldr;
+    const LdrImage a = renderImage(withMaterial(state, *state.compareA), halfWidth, height, state.renderPath).ldr;
+    const LdrImage b = renderImage(renderedScene(state), halfWidth, height, state.renderPath).ldr;
     return sideBySide(a, b, materialCaption(*state.compareA, halfWidth),
                       materialCaption(state.scene.material, halfWidth));
 }
 
 LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
     if (!state.compareA || state.compareView == CompareView::Single) {
-        return renderImage(renderedScene(state), width, height, state.passes).ldr;
+        return renderImage(renderedScene(state), width, height, state.renderPath).ldr;
     }
     if (state.compareView == CompareView::SideBySide) {
         return comparisonImage(state, std::max(width / 2, 1), height);
     }
     // Split: A's columns left of the divider over B's, the divider and the labels as drawn.
-    const LdrImage a = renderImage(withMaterial(state, *state.compareA), width, height, state.passes).ldr;
-    LdrImage shown = renderImage(renderedScene(state), width, height, state.passes).ldr;
+    const LdrImage a = renderImage(withMaterial(state, *state.compareA), width, height, state.renderPath).ldr;
+    LdrImage shown = renderImage(renderedScene(state), width, height, state.renderPath).ldr;
     const int split = std::clamp(int(std::lround(std::clamp(state.splitPosition, 0.0f, 1.0f) * float(width))), 0, width);
     for (int y = 0; y < height; ++y) {
         const size_t row = size_t(y) * size_t(width) * 4;

@@ -32,7 +32,7 @@ public:
     enum class Shown { Edited, A };
     // The display texture of `scene` at `size` for `shown`, re-rendered only when the scene,
     // size, pass mode or MSAA samples changed since its last render. Returns the GL texture.
-    unsigned viewportTexture(const Scene& scene, int width, int height, PassMode passes, Shown shown,
+    unsigned viewportTexture(const Scene& scene, int width, int height, RenderPath passes, Shown shown,
                              int samples = 4);
     double lastRenderMilliseconds() const { return lastRenderMilliseconds_; }
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
@@ -44,7 +44,7 @@ public:
 
     // Renders `scene` at the given size offscreen and returns the image (for screenshots,
     // thumbnails and exports); what the viewport shows is untouched.
-    RenderOutput renderImage(const Scene& scene, int width, int height, PassMode passes);
+    RenderOutput renderImage(const Scene& scene, int width, int height, RenderPath passes);
 
     // Thumbnails of material files, rendered once per file modification time.
     const Texture* thumbnail(const std::filesystem::path& material, const Scene& scene);
@@ -68,7 +68,7 @@ private:
     struct ViewKey {
         RenderInputs inputs;   // what the image depends on: no names or unknown keys compared
         int width = 0, height = 0;
-        PassMode passes = PassMode::Single;
+        RenderPath path = RenderPath::Single;
         int samples = 4;
         bool operator==(const ViewKey&) const = default;
     };

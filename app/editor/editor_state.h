@@ -51,7 +51,7 @@ struct EditorState {
 
     int selectedLight = 0;
     int soloLight = -1;                      // -1: all enabled lights
-    PassMode passes = PassMode::Single;
+    RenderPath renderPath = RenderPath::Single;
 
     std::optional<Material> compareA;        // "Set A"; B is the current material
     CompareView compareView = CompareView::Single;

@@ -45,13 +45,13 @@ void drawToolbar(EditorState& state) {
     ImGui::SameLine();
     colorEditLinear("Background", &display.background, false, ImGuiColorEditFlags_NoInputs);
     ImGui::SameLine();
-    int passes = int(state.passes);
-    ImGui::RadioButton("single", &passes, int(PassMode::Single));
+    int passes = int(state.renderPath);
+    ImGui::RadioButton("single", &passes, int(RenderPath::Single));
     ImGui::SameLine();
-    ImGui::RadioButton("multi", &passes, int(PassMode::Multi));
+    ImGui::RadioButton("multi", &passes, int(RenderPath::Multi));
     ImGui::SameLine();
-    ImGui::RadioButton("specialised", &passes, int(PassMode::Specialised));
-    state.passes = PassMode(passes);
+    ImGui::RadioButton("specialised", &passes, int(RenderPath::Specialised));
+    state.renderPath = RenderPath(passes);
 
     if (ImGui::Button("Set A")) {
         state.compareA = state.scene.material;
@@ -185,16 +185,16 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (state.compareA && state.compareView == CompareView::SideBySide) {
         const int half = std::max(width / 2, 8);
         const ImVec2 halfSize(float(half), size.y);
-        image(services.viewportTexture(withMaterial(state, *state.compareA), half, height, state.passes,
+        image(services.viewportTexture(withMaterial(state, *state.compareA), half, height, state.renderPath,
                                             EditorServices::Shown::A, samples), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
-        image(services.viewportTexture(b, half, height, state.passes, EditorServices::Shown::Edited, samples), halfSize);
+        image(services.viewportTexture(b, half, height, state.renderPath, EditorServices::Shown::Edited, samples), halfSize);
     } else {
-        image(services.viewportTexture(b, width, height, state.passes, EditorServices::Shown::Edited, samples), size);
+        image(services.viewportTexture(b, width, height, state.renderPath, EditorServices::Shown::Edited, samples), size);
         if (state.compareA && state.compareView == CompareView::Split) {
             // A left of the divider, B right, one camera: A's image drawn over B's left part.
             const unsigned a = services.viewportTexture(withMaterial(state, *state.compareA), width, height,
-                                                        state.passes, EditorServices::Shown::A, samples);
+                                                        state.renderPath, EditorServices::Shown::A, samples);
             const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
             ImGui::SetCursorScreenPos(origin);
             image(a, ImVec2(size.x * split, size.y), 0.0f, split);
@@ -250,7 +250,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     char overlay[160];
     std::snprintf(overlay, sizeof overlay, "CPU %.1f ms  GPU %.1f ms  lights %d  %s pass",
                   services.lastRenderMilliseconds(), services.lastGpuMilliseconds(), enabled,
-                  std::string(passModeName(state.passes)).c_str());
+                  std::string(renderPathName(state.renderPath)).c_str());
     draw->AddRectFilled(ImVec2(origin.x + 4, origin.y + size.y - 22),
                         ImVec2(origin.x + 12 + ImGui::CalcTextSize(overlay).x, origin.y + size.y - 4),
                         IM_COL32(0, 0, 0, 150));

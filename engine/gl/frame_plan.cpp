@@ -36,7 +36,7 @@ FramePlan planFrame(const RenderSettings& settings, const Camera& camera, const 
     const int w = settings.width, h = settings.height;
     plan.samples = std::clamp(settings.samples, 0, maxSamples);
     plan.msaa = plan.samples > 1;
-    plan.displayInPass = !plan.msaa && settings.passes != PassMode::Multi;
+    plan.displayInPass = !plan.msaa && settings.path != RenderPath::Multi;
     plan.keepLinear = settings.readHdr || (!plan.msaa && !plan.displayInPass);
     // Without MSAA the shading pass draws into the full-size images: strips would save nothing.
     plan.stripRows = plan.msaa ? stripRowsFor(settings, plan.samples) : h;
@@ -53,7 +53,7 @@ FramePlan planFrame(const RenderSettings& settings, const Camera& camera, const 
     // decides nothing, and its clear and per-sample test are saved (llvmpipe, 4x MSAA: a
     // 512x512 frame of the default sphere 17.5 ms against 13.5).
     plan.depthTest = plan.culled == HiddenFaces::None || !mesh.culling.convex;
-    plan.flatLights = flatLightSlotsFor(settings.flatLights, flatLightSlots, plan.meshBox, plan.meshArea,
+    plan.flatLightCount = flatLightSlotsFor(settings.flatLightUse, flatLightSlots, plan.meshBox, plan.meshArea,
                                         plan.stripRows, mesh.triangles);
     return plan;
 }

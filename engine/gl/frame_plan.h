@@ -47,7 +47,7 @@ struct FramePlan {
     PixelRect meshArea;   // the pixels shaded: the mesh's box with MSAA and cropToMesh, else all
     HiddenFaces culled = HiddenFaces::None;   // the faces left out
     bool depthTest = true;
-    size_t flatLights = 0;   // lights a specialised (or floor) draw takes as flat inputs
+    size_t flatLightCount = 0;   // lights a specialised draw takes as flat inputs
 };
 FramePlan planFrame(const RenderSettings& settings, const Camera& camera, const MeshFacts& mesh,
                     int maxSamples, size_t flatLightSlots);

@@ -31,18 +31,18 @@ extern const char* const display_glsl;
 extern const char* const display_frag;
 }  // namespace shader_sources
 
-std::string_view passModeName(PassMode mode) {
+std::string_view renderPathName(RenderPath mode) {
     switch (mode) {
-    case PassMode::Single: return "single";
-    case PassMode::Multi: return "multi";
-    case PassMode::Specialised: return "specialised";
+    case RenderPath::Single: return "single";
+    case RenderPath::Multi: return "multi";
+    case RenderPath::Specialised: return "specialised";
     }
     return "single";
 }
 
-std::optional<PassMode> passModeFromName(std::string_view name) {
-    static const PassMode all[] = {PassMode::Single, PassMode::Multi, PassMode::Specialised};
-    return enumFromName(name, all, passModeName);
+std::optional<RenderPath> renderPathFromName(std::string_view name) {
+    static const RenderPath all[] = {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised};
+    return enumFromName(name, all, renderPathName);
 }
 
 namespace {
@@ -188,9 +188,9 @@ void Renderer::useMesh(State& s, const Scene& scene) {
     }
 }
 
-void Renderer::drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
+void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights,
                           const Prepare& prepare) {
-    if (passes != PassMode::Multi) {
+    if (passes != RenderPath::Multi) {
         shading.use();
         prepare(shading);
         s.mesh.draw();
@@ -253,14 +253,14 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     const ShadingPrograms::Output output =
         plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     const GlProgram& shading =
-        settings.passes == PassMode::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
-        : settings.passes == PassMode::Multi
+        settings.path == RenderPath::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
+        : settings.path == RenderPath::Multi
             ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
             : s.shading.useSpecialised(model,
-                                       settings.lightCode ? settings.lightCode(packed, plan.flatLights)
-                                                          : specialiseFor(packed, scene.material, plan.flatLights),
+                                       settings.lightCode ? settings.lightCode(packed, plan.flatLightCount)
+                                                          : specialiseFor(packed, scene.material, plan.flatLightCount),
                                        output);
-    if (settings.passes == PassMode::Multi) {
+    if (settings.path == RenderPath::Multi) {
         s.depthPrepass.get();
     }
 
@@ -368,7 +368,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
             glEnable(GL_CULL_FACE);
             glCullFace(plan.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
         }
-        drawPasses(s, settings.passes, shading, packed.size(), prepare);
+        drawPasses(s, settings.path, shading, packed.size(), prepare);
         glDisable(GL_CULL_FACE);
         glDisable(GL_SCISSOR_TEST);
         if (displayPass) {

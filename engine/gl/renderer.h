@@ -39,15 +39,15 @@ private:
 // single: every light in one pass from the LightBlock uniform buffer;
 // specialised: one pass compiled for the scene's light types and count (shader_specialisation.h).
 // The three agree to rounding.
-enum class PassMode { Single, Multi, Specialised };
-std::string_view passModeName(PassMode mode);
+enum class RenderPath { Single, Multi, Specialised };
+std::string_view renderPathName(RenderPath mode);
 // single, multi or specialised.
-std::optional<PassMode> passModeFromName(std::string_view name);
+std::optional<RenderPath> renderPathFromName(std::string_view name);
 
 struct RenderSettings {
     int width = 800;
     int height = 800;
-    PassMode passes = PassMode::Single;
+    RenderPath path = RenderPath::Single;
     int samples = 4;   // MSAA; clamped to what the implementation offers
     // Most bytes the multisampled colour target may take; a larger image is drawn in strips
     // of rows that fit, each resolved into place (the same pixels: the viewport only moves).
@@ -65,7 +65,7 @@ struct RenderSettings {
     // where that pays for this mesh and image (flatLightsPay, shader_specialisation.h), always,
     // or never. The image is the same to rounding.
     enum class FlatLights { WherePaying, Always, Never };
-    FlatLights flatLights = FlatLights::WherePaying;
+    FlatLights flatLightUse = FlatLights::WherePaying;
     // Skip the faces of a closed mesh that no eye outside it can see (hidden_faces.h) where
     // this camera is outside it: the same image from fewer fragments. llvmpipe with MSAA
     // shades a fragment that fails the depth test all the same. false: every face (for tests).
@@ -122,7 +122,7 @@ private:
     // Uploads the scene's mesh unless it is the one drawn last. Throws std::invalid_argument
     // for a scene whose mesh file was never resolved.
     static void useMesh(State& s, const Scene& scene);
-    static void drawPasses(State& s, PassMode passes, const GlProgram& shading, size_t lights,
+    static void drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights,
                            const Prepare& prepare);
 };
 

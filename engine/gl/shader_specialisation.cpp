@@ -24,7 +24,7 @@ LightSource sourceOf(size_t i, size_t flatSlots, const char* flatWrite) {
 void addLight(ShaderSpecialisation& key, size_t i, const std::string& call, const LightSource& source) {
     append(key.lights, call);
     if (!source.vertex.empty()) {
-        append(key.flatLights, source.vertex);
+        append(key.flatLightRows, source.vertex);
         key.flatLightCount = int(i) + 1;
     }
 }
@@ -33,7 +33,7 @@ std::vector<std::string> ShaderSpecialisation::defines() const {
     std::vector<std::string> result{"PATINA_SINGLE_PASS", "PATINA_SPECIALISED", "PATINA_LIGHTS " + lights};
     if (flatLightCount > 0) {
         result.push_back("PATINA_FLAT_LIGHT_COUNT " + std::to_string(flatLightCount));
-        result.push_back("PATINA_FLAT_LIGHTS " + flatLights);
+        result.push_back("PATINA_FLAT_LIGHTS " + flatLightRows);
     }
     if (noDiffuse) {
         result.push_back("PATINA_NO_DIFFUSE");

@@ -21,7 +21,7 @@ namespace patina {
 
 struct ShaderSpecialisation {
     std::string lights;       // PATINA_LIGHTS: "SHADE_POINT(FLAT(0), true, true) SHADE_DIRECTIONAL(FLAT(1)) ..."
-    std::string flatLights;   // PATINA_FLAT_LIGHTS, for mesh.vert: "FLAT_POINT(0) FLAT_DIRECTIONAL(1) ..."
+    std::string flatLightRows;   // PATINA_FLAT_LIGHTS, for mesh.vert: "FLAT_POINT(0) FLAT_DIRECTIONAL(1) ..."
     int flatLightCount = 0;   // lights 0 to flatLightCount - 1 are flat inputs
     bool noDiffuse = false;
 

@@ -14,7 +14,7 @@ namespace {
 
 using FlatLights = RenderSettings::FlatLights;
 
-RenderSettings settingsOf(PassMode passes, int samples) {
+RenderSettings settingsOf(RenderPath passes, int samples) {
     RenderSettings settings = test::renderSettings(320, 200, passes, samples);
     settings.readHdr = false;
     return settings;
@@ -53,12 +53,12 @@ TEST(FramePlan, FlatLightSlotsWeighTheBoxAgainstTrianglesDrawn) {
 // sums its passes into the linear image first, so it keeps one even when not asked to.
 TEST(FramePlan, WithoutMsaaOnlyMultiNeedsADisplayPass) {
     const Camera camera = defaultScene().camera;
-    for (PassMode passes : {PassMode::Single, PassMode::Specialised, PassMode::Multi}) {
-        const bool multi = passes == PassMode::Multi;
+    for (RenderPath passes : {RenderPath::Single, RenderPath::Specialised, RenderPath::Multi}) {
+        const bool multi = passes == RenderPath::Multi;
         const FramePlan plan = planFrame(settingsOf(passes, 1), camera, sphereFacts(), kMaxSamples, kSlots);
         EXPECT_FALSE(plan.msaa);
-        EXPECT_EQ(plan.displayInPass, !multi) << passModeName(passes);
-        EXPECT_EQ(plan.keepLinear, multi) << passModeName(passes);
+        EXPECT_EQ(plan.displayInPass, !multi) << renderPathName(passes);
+        EXPECT_EQ(plan.keepLinear, multi) << renderPathName(passes);
         EXPECT_EQ(plan.stripRows, 200);
         EXPECT_EQ(plan.meshArea, (PixelRect{0, 0, 320, 200})) << "no samples to save: every pixel";
         RenderSettings hdr = settingsOf(passes, 1);
@@ -71,7 +71,7 @@ TEST(FramePlan, WithoutMsaaOnlyMultiNeedsADisplayPass) {
 // box unless told otherwise, strips when the samples' bytes are capped.
 TEST(FramePlan, MsaaResolvesAndShadesOnlyTheMeshsBox) {
     const Camera camera = defaultScene().camera;
-    const FramePlan plan = planFrame(settingsOf(PassMode::Single, 16), camera, sphereFacts(), kMaxSamples, kSlots);
+    const FramePlan plan = planFrame(settingsOf(RenderPath::Single, 16), camera, sphereFacts(), kMaxSamples, kSlots);
     EXPECT_EQ(plan.samples, kMaxSamples);
     EXPECT_TRUE(plan.msaa);
     EXPECT_FALSE(plan.displayInPass);
@@ -82,32 +82,32 @@ TEST(FramePlan, MsaaResolvesAndShadesOnlyTheMeshsBox) {
     EXPECT_LT(plan.meshArea.x1 - plan.meshArea.x0, 320) << "the framed sphere leaves background beside it";
     EXPECT_EQ(plan.stripRows, 200);
 
-    RenderSettings uncropped = settingsOf(PassMode::Single, 4);
+    RenderSettings uncropped = settingsOf(RenderPath::Single, 4);
     uncropped.cropToMesh = false;
     EXPECT_EQ(planFrame(uncropped, camera, sphereFacts(), kMaxSamples, kSlots).meshArea, (PixelRect{0, 0, 320, 200}));
 
-    RenderSettings capped = settingsOf(PassMode::Single, 4);
+    RenderSettings capped = settingsOf(RenderPath::Single, 4);
     capped.maxTargetBytes = size_t(320) * 4 * 16 * 50;   // 50 rows of 4 float RGBA samples
     EXPECT_EQ(planFrame(capped, camera, sphereFacts(), kMaxSamples, kSlots).stripRows, 50);
     EXPECT_EQ(stripRowsFor(capped, 4), 50);
 
-    RenderSettings hdr = settingsOf(PassMode::Single, 4);
+    RenderSettings hdr = settingsOf(RenderPath::Single, 4);
     hdr.readHdr = true;
     EXPECT_TRUE(planFrame(hdr, camera, sphereFacts(), kMaxSamples, kSlots).keepLinear);
 
-    RenderSettings single = settingsOf(PassMode::Single, 1);
+    RenderSettings single = settingsOf(RenderPath::Single, 1);
     single.maxTargetBytes = size_t(320) * 16 * 50;   // 50 rows of one float RGBA sample
     ASSERT_EQ(stripRowsFor(single, 1), 50);
     EXPECT_EQ(planFrame(single, camera, sphereFacts(), kMaxSamples, kSlots).stripRows, 200)
         << "without MSAA the full-size images are drawn whole";
 
     for (int samples : {-3, 0, 1}) {
-        const RenderSettings settings = settingsOf(PassMode::Single, samples);
+        const RenderSettings settings = settingsOf(RenderPath::Single, samples);
         const FramePlan none = planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots);
         EXPECT_FALSE(none.msaa);
         EXPECT_EQ(none.samples, std::max(samples, 0));
     }
-    EXPECT_FALSE(planFrame(settingsOf(PassMode::Single, 4), camera, sphereFacts(), 1, kSlots).msaa)
+    EXPECT_FALSE(planFrame(settingsOf(RenderPath::Single, 4), camera, sphereFacts(), 1, kSlots).msaa)
         << "a GL without multisampling";
 }
 
@@ -118,7 +118,7 @@ TEST(FramePlan, CullsOnlyWithTheEyeOutsideAClosedMesh) {
     const MeshFacts sphere = sphereFacts();
     ASSERT_EQ(sphere.culling.hidden, HiddenFaces::Back);
     ASSERT_TRUE(sphere.culling.convex);
-    const RenderSettings settings = settingsOf(PassMode::Single, 4);
+    const RenderSettings settings = settingsOf(RenderPath::Single, 4);
 
     FramePlan plan = planFrame(settings, outside, sphere, kMaxSamples, kSlots);
     EXPECT_EQ(plan.culled, HiddenFaces::Back);
@@ -156,33 +156,33 @@ TEST(FramePlan, CullsOnlyWithTheEyeOutsideAClosedMesh) {
 // Flat lights follow the settings, weighed over the box and strips this plan draws.
 TEST(FramePlan, FlatLightsWeighThisPlansBoxAndStrips) {
     const Camera camera = defaultScene().camera;
-    RenderSettings settings = settingsOf(PassMode::Specialised, 4);
+    RenderSettings settings = settingsOf(RenderPath::Specialised, 4);
     const FramePlan plan = planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots);
-    EXPECT_EQ(plan.flatLights, flatLightSlotsFor(FlatLights::WherePaying, kSlots, plan.meshBox, plan.meshArea,
+    EXPECT_EQ(plan.flatLightCount, flatLightSlotsFor(FlatLights::WherePaying, kSlots, plan.meshBox, plan.meshArea,
                                                  plan.stripRows, sphereFacts().triangles));
     MeshFacts dense = sphereFacts();
     dense.triangles = 10'000'000;   // far under a pixel a triangle
-    EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLights, 0u);
+    EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLightCount, 0u);
 
     // In strips of 20 rows the mesh is drawn once per strip that meets the area drawn: all 10
     // uncropped, fewer cropped to a distant sphere's box. With triangles just too many for 4
     // pixels each over 10 draws, the cropped plan takes flat lights and the uncropped does not.
     Camera distant = camera;
     distant.position = camera.target + 2.0f * (camera.position - camera.target);
-    RenderSettings strips = settingsOf(PassMode::Specialised, 4);
+    RenderSettings strips = settingsOf(RenderPath::Specialised, 4);
     strips.maxTargetBytes = size_t(320) * 4 * 16 * 20;
     const PixelRect box = screenBounds(viewProjection(distant, 1.6f), sphereFacts().bounds, 320, 200);
     ASSERT_LT(box.y1 - box.y0, 120) << "the box meets at most 7 of the 10 strips";
     MeshFacts many = sphereFacts();
     many.triangles = size_t(double(box.x1 - box.x0) * double(box.y1 - box.y0) / 40.0) + 1;
-    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLights, kSlots);
+    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLightCount, kSlots);
     strips.cropToMesh = false;
-    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLights, 0u);
+    EXPECT_EQ(planFrame(strips, distant, many, kMaxSamples, kSlots).flatLightCount, 0u);
 
-    settings.flatLights = FlatLights::Always;
-    EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLights, kSlots);
-    settings.flatLights = FlatLights::Never;
-    EXPECT_EQ(planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots).flatLights, 0u);
+    settings.flatLightUse = FlatLights::Always;
+    EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLightCount, kSlots);
+    settings.flatLightUse = FlatLights::Never;
+    EXPECT_EQ(planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots).flatLightCount, 0u);
 }
 
 }  // namespace

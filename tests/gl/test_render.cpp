@@ -20,10 +20,10 @@ namespace {
 
 using FlatLights = RenderSettings::FlatLights;
 
-RenderOutput renderScene(Renderer& renderer, const Scene& scene, PassMode passes, int size = 160, int samples = 4,
+RenderOutput renderScene(Renderer& renderer, const Scene& scene, RenderPath passes, int size = 160, int samples = 4,
                          FlatLights flatLights = FlatLights::WherePaying) {
     RenderSettings settings = test::renderSettings(size, size, passes, samples);
-    settings.flatLights = flatLights;
+    settings.flatLightUse = flatLights;
     return renderer.render(scene, settings);
 }
 
@@ -126,14 +126,14 @@ TEST(Renderer, AllThreePassModesAgree) {
     }
     for (const Case& c : cases) {
         for (int samples : {4, 1}) {
-            const RenderOutput single = renderScene(renderer, c.scene, PassMode::Single, 160, samples);
+            const RenderOutput single = renderScene(renderer, c.scene, RenderPath::Single, 160, samples);
             // Specialised with its first lights as flat inputs and with every light from the block.
-            for (auto [other, flat] : {std::pair{PassMode::Multi, FlatLights::WherePaying},
-                                       std::pair{PassMode::Specialised, FlatLights::Always},
-                                       std::pair{PassMode::Specialised, FlatLights::Never}}) {
+            for (auto [other, flat] : {std::pair{RenderPath::Multi, FlatLights::WherePaying},
+                                       std::pair{RenderPath::Specialised, FlatLights::Always},
+                                       std::pair{RenderPath::Specialised, FlatLights::Never}}) {
                 const RenderOutput image = renderScene(renderer, c.scene, other, 160, samples, flat);
-                const std::string what = c.name + ", " + std::string(passModeName(other)) +
-                                         (other == PassMode::Multi        ? ", "
+                const std::string what = c.name + ", " + std::string(renderPathName(other)) +
+                                         (other == RenderPath::Multi        ? ", "
                                           : flat == FlatLights::Always ? " (flat lights), "
                                                                        : " (block lights), ") +
                                          std::to_string(samples) + " samples";
@@ -154,8 +154,8 @@ TEST(Renderer, GpuTimeCoversTheDraw) {
     settings.height = 720;
     settings.samples = 1;
     const Scene scene = manyLightScene(4);
-    for (PassMode passes : {PassMode::Single, PassMode::Specialised, PassMode::Multi, PassMode::Single}) {
-        settings.passes = passes;
+    for (RenderPath passes : {RenderPath::Single, RenderPath::Specialised, RenderPath::Multi, RenderPath::Single}) {
+        settings.path = passes;
         glFinish();
         renderer.lastGpuMilliseconds();   // collect the last draw's queries so this one is timed
         const auto start = std::chrono::steady_clock::now();
@@ -163,8 +163,8 @@ TEST(Renderer, GpuTimeCoversTheDraw) {
         glFinish();
         const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const double gpu = renderer.lastGpuMilliseconds();
-        EXPECT_GT(gpu, 0.25 * wall) << passModeName(passes) << ": " << gpu << " of " << wall << " ms";
-        EXPECT_LT(gpu, wall + 1.0) << passModeName(passes);
+        EXPECT_GT(gpu, 0.25 * wall) << renderPathName(passes) << ": " << gpu << " of " << wall << " ms";
+        EXPECT_LT(gpu, wall + 1.0) << renderPathName(passes);
     }
 }
 
@@ -174,10 +174,10 @@ TEST(Renderer, BrdfFloorMatchesSinglePassForDirectionalLights) {
     test::glContext();
     Renderer renderer;
     const Scene scene = onlyLightsOfType(LightType::Directional, 8);
-    const RenderOutput single = renderScene(renderer, scene, PassMode::Single);
+    const RenderOutput single = renderScene(renderer, scene, RenderPath::Single);
     for (FlatLights flat : {FlatLights::Always, FlatLights::Never}) {
-        RenderSettings settings = brdfFloorSettings(test::renderSettings(160, 160, PassMode::Specialised, 4));
-        settings.flatLights = flat;
+        RenderSettings settings = brdfFloorSettings(test::renderSettings(160, 160, RenderPath::Specialised, 4));
+        settings.flatLightUse = flat;
         const RenderOutput floor = renderer.render(scene, settings);
         EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4) << (flat == FlatLights::Always);
     }
@@ -189,23 +189,23 @@ TEST(Renderer, StripsGiveTheWholeImage) {
     test::glContext();
     Renderer renderer;
     const Scene scene = manyLightScene(2);
-    for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+    for (RenderPath passes : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
         RenderSettings settings;
         settings.width = 150;
         settings.height = 130;
-        settings.passes = passes;
+        settings.path = passes;
         const RenderOutput whole = renderer.render(scene, settings);
         // 37 rows of 4x RGBA32F a strip; then 1 byte, which the cap of 16 strips overrides.
         for (size_t budget : {size_t(settings.width) * 4 * 16 * 37, size_t(1)}) {
             settings.maxTargetBytes = budget;
             const RenderOutput strips = renderer.render(scene, settings);
-            EXPECT_LE(maxByteDifference(whole.ldr, strips.ldr), 1) << passModeName(passes) << " " << budget;
-            EXPECT_LE(maxHdrRelativeDifference(whole.hdr, strips.hdr), 1e-4) << passModeName(passes) << " " << budget;
+            EXPECT_LE(maxByteDifference(whole.ldr, strips.ldr), 1) << renderPathName(passes) << " " << budget;
+            EXPECT_LE(maxHdrRelativeDifference(whole.hdr, strips.hdr), 1e-4) << renderPathName(passes) << " " << budget;
             int identical = 0;
             for (size_t i = 0; i < whole.ldr.rgba.size(); ++i) {
                 identical += whole.ldr.rgba[i] == strips.ldr.rgba[i];
             }
-            EXPECT_GT(identical, int(whole.ldr.rgba.size() * 99 / 100)) << passModeName(passes) << " " << budget;
+            EXPECT_GT(identical, int(whole.ldr.rgba.size() * 99 / 100)) << renderPathName(passes) << " " << budget;
         }
     }
 }
@@ -221,16 +221,16 @@ TEST(Renderer, SamplesOfAnEarlierDrawNeverShow) {
     near.camera.position *= 0.5f;
     far.camera.position *= 2.5f;
     far.lights[0].intensity *= 3.0f;   // other values in the samples too, not only other coverage
-    for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+    for (RenderPath passes : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
         for (size_t budget : {size_t(0), size_t(120) * 4 * 16 * 30}) {   // whole, or strips of 30 rows
             RenderSettings settings;
             settings.width = settings.height = 120;
-            settings.passes = passes;
+            settings.path = passes;
             settings.maxTargetBytes = budget;
             renderer.render(near, settings);
             const RenderOutput after = renderer.render(far, settings);
             const RenderOutput alone = fresh.render(far, settings);
-            const std::string what = std::string(passModeName(passes)) + ", budget " + std::to_string(budget);
+            const std::string what = std::string(renderPathName(passes)) + ", budget " + std::to_string(budget);
             EXPECT_EQ(after.ldr.rgba, alone.ldr.rgba) << what;
             EXPECT_EQ(after.hdr.rgb, alone.hdr.rgb) << what;
         }
@@ -276,14 +276,14 @@ TEST(Renderer, DrawingIntoOneTargetLeavesAnotherAlone) {
     Renderer renderer;
     RenderTarget shown, other;
     EXPECT_EQ(shown.displayTexture(), 0u) << "nothing drawn yet";
-    const RenderSettings small = test::renderSettings(48, 32, PassMode::Single, 4);
+    const RenderSettings small = test::renderSettings(48, 32, RenderPath::Single, 4);
     const unsigned texture = renderer.draw(defaultScene(), small, shown);
     EXPECT_EQ(texture, shown.displayTexture());
     const RenderOutput before = renderer.readBack(shown, false);
     Scene dark = defaultScene();
     dark.material.baseColor = glm::vec3(0.0f);
-    renderer.draw(dark, test::renderSettings(80, 60, PassMode::Multi, 1), other);
-    renderer.render(dark, test::renderSettings(100, 20, PassMode::Single, 1));
+    renderer.draw(dark, test::renderSettings(80, 60, RenderPath::Multi, 1), other);
+    renderer.render(dark, test::renderSettings(100, 20, RenderPath::Single, 1));
     EXPECT_TRUE(glIsTexture(texture));
     EXPECT_EQ(shown.displayTexture(), texture);
     const RenderOutput after = renderer.readBack(shown, false);
@@ -300,7 +300,7 @@ TEST(Renderer, AnErrorLeftByOtherCodeIsNotTheDrawsError) {
     glBindTexture(GL_TEXTURE_2D, 987654);   // never generated: GL_INVALID_OPERATION in a core context
     ASSERT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION)) << "the error this test leaves behind";
     glBindTexture(GL_TEXTURE_2D, 987654);
-    EXPECT_NO_THROW(renderer.render(defaultScene(), test::renderSettings(16, 16, PassMode::Single, 1)));
+    EXPECT_NO_THROW(renderer.render(defaultScene(), test::renderSettings(16, 16, RenderPath::Single, 1)));
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
@@ -327,14 +327,14 @@ TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
     const Scene scene = toneMappedScene(0.7f, Tonemap::Reinhard);
     for (int samples : {1, 4}) {
         LdrImage multi;
-        for (PassMode passes : {PassMode::Multi, PassMode::Single, PassMode::Specialised}) {
+        for (RenderPath passes : {RenderPath::Multi, RenderPath::Single, RenderPath::Specialised}) {
             RenderSettings settings = test::renderSettings(96, 96, passes, samples);
             const RenderOutput kept = renderer.render(scene, settings);
             settings.readHdr = false;
             const RenderOutput shown = renderer.render(scene, settings);
-            const std::string what = std::string(passModeName(passes)) + ", " + std::to_string(samples) + " samples";
+            const std::string what = std::string(renderPathName(passes)) + ", " + std::to_string(samples) + " samples";
             EXPECT_EQ(kept.ldr.rgba, shown.ldr.rgba) << what;
-            if (passes == PassMode::Multi) {
+            if (passes == RenderPath::Multi) {
                 multi = shown.ldr;
             } else {
                 EXPECT_LE(maxByteDifference(shown.ldr, multi), 1) << what;
@@ -354,10 +354,10 @@ TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
                                          std::pair{Tonemap::PbrNeutral, shader::TONEMAP_PBR_NEUTRAL}}) {
         const Scene scene = toneMappedScene(0.4f, tonemap);
         for (int samples : {1, 4}) {
-            for (PassMode passes : {PassMode::Multi, PassMode::Single}) {
+            for (RenderPath passes : {RenderPath::Multi, RenderPath::Single}) {
                 RenderSettings settings = test::renderSettings(64, 64, passes, samples);
                 const GLuint texture = renderer.draw(scene, settings);
-                const std::string what = std::string(passModeName(passes)) + ", " + std::to_string(samples) +
+                const std::string what = std::string(renderPathName(passes)) + ", " + std::to_string(samples) +
                                          " samples, " + std::string(tonemapName(tonemap));
                 GLint format = 0;
                 glBindTexture(GL_TEXTURE_2D, texture);
@@ -390,13 +390,13 @@ TEST(Renderer, EachLightOfTheDefaultSceneShowsOnTheSphere) {
     Renderer renderer;
     const Scene scene = defaultScene();
     ASSERT_EQ(scene.lights.size(), 3u);
-    const RenderOutput all = renderScene(renderer, scene, PassMode::Single);
+    const RenderOutput all = renderScene(renderer, scene, RenderPath::Single);
     const int center = (80 * 160 + 80) * 3;
     EXPECT_GT(all.hdr.rgb[center], 0.0f);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         Scene without = scene;
         without.lights[i].enabled = false;
-        const RenderOutput image = renderScene(renderer, without, PassMode::Single);
+        const RenderOutput image = renderScene(renderer, without, RenderPath::Single);
         // Each light alone must move many pixels, not a stray one.
         int changed = 0;
         for (size_t p = 0; p < all.ldr.rgba.size(); p += 4) {
@@ -411,15 +411,15 @@ TEST(Renderer, BackgroundShowsAroundTheMesh) {
     Renderer renderer;
     Scene scene = defaultScene();
     scene.display.background = {0.25f, 0.5f, 0.75f};
-    const RenderOutput image = renderScene(renderer, scene, PassMode::Multi, 64);
+    const RenderOutput image = renderScene(renderer, scene, RenderPath::Multi, 64);
     EXPECT_FLOAT_EQ(image.hdr.rgb[0], 0.25f);
     EXPECT_FLOAT_EQ(image.hdr.rgb[2], 0.75f);
     // Without MSAA the single pass clears the display image to the background's display value
     // (computed on the CPU); it matches the display pass's to the byte.
     scene.display.tonemap = Tonemap::Aces;
     scene.display.exposure = 1.5f;
-    const RenderOutput shownByPass = renderScene(renderer, scene, PassMode::Multi, 64, 1);
-    const RenderOutput cleared = renderScene(renderer, scene, PassMode::Single, 64, 1);
+    const RenderOutput shownByPass = renderScene(renderer, scene, RenderPath::Multi, 64, 1);
+    const RenderOutput cleared = renderScene(renderer, scene, RenderPath::Single, 64, 1);
     for (int channel = 0; channel < 4; ++channel) {
         EXPECT_EQ(cleared.ldr.rgba[size_t(channel)], shownByPass.ldr.rgba[size_t(channel)]) << channel;
     }
@@ -433,7 +433,7 @@ TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {
     auto corner = [&](float exposure, Tonemap tonemap) {
         scene.display.exposure = exposure;
         scene.display.tonemap = tonemap;
-        return int(renderScene(renderer, scene, PassMode::Single, 32).ldr.rgba[0]);
+        return int(renderScene(renderer, scene, RenderPath::Single, 32).ldr.rgba[0]);
     };
     // sRGB(0.5) = 0.7354 -> 188; one stop up clips to 255; Reinhard: 0.5 / 1.5 -> sRGB 0.6136 -> 156.
     EXPECT_NEAR(corner(0.0f, Tonemap::None), 188, 1);
@@ -442,7 +442,7 @@ TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {
     EXPECT_LT(corner(1.0f, Tonemap::Aces), 255);
     // The HDR image is before exposure: unchanged by it.
     scene.display.exposure = 3.0f;
-    EXPECT_FLOAT_EQ(renderScene(renderer, scene, PassMode::Single, 32).hdr.rgb[0], 0.5f);
+    EXPECT_FLOAT_EQ(renderScene(renderer, scene, RenderPath::Single, 32).hdr.rgb[0], 0.5f);
 }
 
 // The GL may give more samples than asked (llvmpipe, like GPUs, makes 2 and 3 into 4): the
@@ -451,8 +451,8 @@ TEST(Renderer, ResolveAveragesEverySampleTheGlMade) {
     test::glContext();
     Renderer renderer;
     const Scene scene = manyLightScene(1);
-    const RenderOutput four = renderScene(renderer, scene, PassMode::Single, 64, 4);
-    const RenderOutput three = renderScene(renderer, scene, PassMode::Single, 64, 3);
+    const RenderOutput four = renderScene(renderer, scene, RenderPath::Single, 64, 4);
+    const RenderOutput three = renderScene(renderer, scene, RenderPath::Single, 64, 3);
     EXPECT_EQ(three.ldr.rgba, four.ldr.rgba);
     EXPECT_EQ(three.hdr.rgb, four.hdr.rgb);
 }
@@ -464,8 +464,8 @@ TEST(Renderer, ResolvedInteriorMatchesOneSample) {
     Renderer renderer;
     const Scene scene = defaultScene();
     const int size = 64;
-    const HdrImage four = renderScene(renderer, scene, PassMode::Single, size, 4).hdr;
-    const HdrImage one = renderScene(renderer, scene, PassMode::Single, size, 1).hdr;
+    const HdrImage four = renderScene(renderer, scene, RenderPath::Single, size, 4).hdr;
+    const HdrImage one = renderScene(renderer, scene, RenderPath::Single, size, 1).hdr;
     double worst = 0.0;
     for (int y = size / 2 - 8; y < size / 2 + 8; ++y) {   // the middle of the sphere
         for (int x = size / 2 - 8; x < size / 2 + 8; ++x) {
@@ -609,14 +609,14 @@ TEST(Renderer, CullingHiddenFacesGivesTheSameImage) {
         Scene scene = lit;
         scene.resolvedMesh = std::make_shared<const Mesh>(c.mesh);
         scene.camera.position = c.eye;
-        for (PassMode passes : {PassMode::Single, PassMode::Multi, PassMode::Specialised}) {
+        for (RenderPath passes : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
             for (int samples : {4, 1}) {
                 RenderSettings settings = test::renderSettings(150, 110, passes, samples);
                 settings.cullHiddenFaces = false;
                 const RenderOutput every = renderer.render(scene, settings);
                 settings.cullHiddenFaces = true;
                 const RenderOutput culled = renderer.render(scene, settings);
-                const std::string what = c.name + ", " + std::string(passModeName(passes)) + ", " +
+                const std::string what = c.name + ", " + std::string(renderPathName(passes)) + ", " +
                                          std::to_string(samples) + " samples";
                 EXPECT_EQ(maxByteDifference(every.ldr, culled.ldr), 0) << what;
                 // A sample exactly on a silhouette edge is in the front and the back triangle

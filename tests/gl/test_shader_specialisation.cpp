@@ -23,16 +23,16 @@ TEST(ShaderSpecialisation, LightsPastTheFlatSlotsComeFromTheBlock) {
     const std::vector<shader::PackedLight> lights = packEnabledLights(scene.lights);
     const ShaderSpecialisation key = specialiseFor(lights, scene.material, 2);
     EXPECT_EQ(key.lights, "SHADE_POINT(FLAT(0), true, true) SHADE_DIRECTIONAL(FLAT(1)) SHADE_HEMISPHERE(BLOCK(2))");
-    EXPECT_EQ(key.flatLights, "FLAT_POINT(0) FLAT_DIRECTIONAL(1)");
+    EXPECT_EQ(key.flatLightRows, "FLAT_POINT(0) FLAT_DIRECTIONAL(1)");
     EXPECT_EQ(key.flatLightCount, 2);
     const ShaderSpecialisation all = specialiseFor(lights, scene.material, 8);
-    EXPECT_EQ(all.flatLights, "FLAT_POINT(0) FLAT_DIRECTIONAL(1) FLAT_HEMISPHERE(2)");
+    EXPECT_EQ(all.flatLightRows, "FLAT_POINT(0) FLAT_DIRECTIONAL(1) FLAT_HEMISPHERE(2)");
     EXPECT_EQ(all.flatLightCount, 3);
     EXPECT_EQ(specialiseFor(lights, scene.material, 0).flatLightCount, 0);
     // A pure metal leaves the hemisphere light out: nothing to hand on for it either.
     Material metal = scene.material;
     metal.metallic = 1.0f;
-    EXPECT_EQ(specialiseFor(lights, metal, 8).flatLights, "FLAT_POINT(0) FLAT_DIRECTIONAL(1)");
+    EXPECT_EQ(specialiseFor(lights, metal, 8).flatLightRows, "FLAT_POINT(0) FLAT_DIRECTIONAL(1)");
     EXPECT_EQ(specialiseFor(lights, metal, 8).flatLightCount, 2);
     // The bench's floor reads its lights the same way, each as a direction.
     const ShaderSpecialisation floor = brdfFloorFor(3, 2);
@@ -40,7 +40,7 @@ TEST(ShaderSpecialisation, LightsPastTheFlatSlotsComeFromTheBlock) {
         EXPECT_NE(floor.lights.find(std::string("vec3 L = ") + light + ".directionToLight;"), std::string::npos)
             << light << " in " << floor.lights;
     }
-    EXPECT_EQ(floor.flatLights, "FLAT_DIRECTIONAL(0) FLAT_DIRECTIONAL(1)");
+    EXPECT_EQ(floor.flatLightRows, "FLAT_DIRECTIONAL(0) FLAT_DIRECTIONAL(1)");
     EXPECT_EQ(floor.flatLightCount, 2);
 }
 
