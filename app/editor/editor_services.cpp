@@ -9,6 +9,7 @@
 #include "image/png_text.h"
 #include "io/scene_file.h"
 #include "io/file_bytes.h"
+#include "preview_scene.h"
 
 namespace patina::editor {
 
@@ -65,25 +66,26 @@ RenderOutput EditorServices::renderImage(const Scene& scene, int width, int heig
     return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
 }
 
-const Texture* EditorServices::thumbnail(const std::filesystem::path& material, const Scene& scene) {
+const EditorServices::Preset* EditorServices::preset(const std::filesystem::path& material) {
     std::error_code error;
     const auto modified = std::filesystem::last_write_time(material, error);
     if (error) {
         return nullptr;
     }
-    Thumbnail& entry = thumbnails_[material];
-    if (!entry.texture || entry.modified != modified) {
-        std::vector<std::string> warnings;
-        try {
-            Scene preview = scene;
-            preview.material = loadMaterialFile(material, warnings);
-            entry.texture = std::make_unique<Texture>(renderImage(preview, 64, 64, RenderPath::Single).ldr);
-        } catch (const std::exception&) {
-            entry.texture.reset();   // the browser shows the file without a picture
-        }
+    PresetEntry& entry = presets_[material];
+    if (!entry.preset || entry.modified != modified) {
+        entry.preset.reset();
         entry.modified = modified;
+        try {
+            std::vector<std::string> warnings;
+            const Material loaded = loadMaterialFile(material, warnings);
+            entry.preset = Preset{std::make_unique<Texture>(renderImage(previewScene(loaded), 64, 64, RenderPath::Single).ldr),
+                                  loaded.name};
+        } catch (const std::exception&) {
+            // the browser shows the file without a picture
+        }
     }
-    return entry.texture.get();
+    return entry.preset ? &*entry.preset : nullptr;
 }
 
 const AccuracyNumbers& EditorServices::accuracy(const Material& material) {

@@ -46,8 +46,13 @@ public:
     // thumbnails and exports); what the viewport shows is untouched.
     RenderOutput renderImage(const Scene& scene, int width, int height, RenderPath passes);
 
-    // Thumbnails of material files, rendered once per file modification time.
-    const Texture* thumbnail(const std::filesystem::path& material, const Scene& scene);
+    // A material file's thumbnail, rendered in the fixed preview scene (preview_scene.h) once
+    // per file modification time, and its material's name; null for a file that does not read.
+    struct Preset {
+        std::unique_ptr<Texture> texture;
+        std::string name;
+    };
+    const Preset* preset(const std::filesystem::path& material);
 
     // accuracyOf(material), recomputed only when the material changes.
     const AccuracyNumbers& accuracy(const Material& material);
@@ -83,7 +88,11 @@ private:
         std::filesystem::file_time_type modified;
         std::unique_ptr<Texture> texture;
     };
-    std::map<std::filesystem::path, Thumbnail> thumbnails_;
+    struct PresetEntry {
+        std::filesystem::file_time_type modified;
+        std::optional<Preset> preset;
+    };
+    std::map<std::filesystem::path, PresetEntry> presets_;
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
     Thumbnail benchChart_;
 

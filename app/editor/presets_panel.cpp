@@ -8,8 +8,23 @@
 
 namespace patina::editor {
 
+namespace {
+// `text` cut with "..." to fit `width` pixels.
+std::string fitted(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) {
+        return text;
+    }
+    std::string cut = text;
+    while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) {
+        cut.pop_back();
+    }
+    return cut + "...";
+}
+}  // namespace
+
+// Each preset as its thumbnail in the fixed preview scene, captioned with its material's name.
 void drawPresetsPanel(EditorState& state, EditorServices& services) {
-    constexpr float kThumb = 56.0f;
+    constexpr float kThumb = 64.0f;
     const float cell = kThumb + ImGui::GetStyle().ItemSpacing.x;
     const int columns = std::max(1, int(ImGui::GetContentRegionAvail().x / cell));
     for (const std::filesystem::path& folder : state.presetFolders) {
@@ -21,18 +36,24 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
         int column = 0;
         for (const std::filesystem::path& file : files) {
             ImGui::PushID(file.string().c_str());
-            const Texture* texture = services.thumbnail(file, state.scene);
+            const EditorServices::Preset* preset = services.preset(file);
+            const std::string name = preset && !preset->name.empty() ? preset->name : file.stem().string();
+            ImGui::BeginGroup();
             bool clicked;
-            if (texture) {
-                clicked = ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture->id())),
-                                             ImVec2(kThumb, kThumb), ImVec2(0, 0), ImVec2(1, 1), 0);
+            if (preset) {
+                clicked = ImGui::ImageButton(
+                    reinterpret_cast<ImTextureID>(static_cast<intptr_t>(preset->texture->id())), ImVec2(kThumb, kThumb),
+                    ImVec2(0, 0), ImVec2(1, 1), 0);
             } else {
                 clicked = ImGui::Button("?", ImVec2(kThumb, kThumb));   // unreadable file
             }
             recordItem("preset:" + file.stem().string());
             if (ImGui::IsItemHovered()) {
-                ImGui::SetTooltip("%s", file.filename().string().c_str());
+                ImGui::SetTooltip("%s\n%s", name.c_str(), file.filename().string().c_str());
             }
+            ImGui::TextUnformatted(fitted(name, kThumb).c_str());
+            recordItem("caption:" + file.stem().string());
+            ImGui::EndGroup();
             if (clicked) {
                 requestOpen(state, file);
             }

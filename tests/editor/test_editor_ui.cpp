@@ -446,6 +446,61 @@ TEST_F(EditorUi, AScreenshotMakesItsFolderAndSaysWhereItWent) {
     EXPECT_NE(state_.status.find(std::filesystem::absolute(shots[0]).string()), std::string::npos) << state_.status;
 }
 
+// A texture's pixels (RGBA8, GL's rows).
+std::vector<uint8_t> texturePixels(const Texture& texture) {
+    std::vector<uint8_t> pixels(size_t(texture.width()) * size_t(texture.height()) * 4);
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return pixels;
+}
+
+glm::dvec3 meanColour(const std::vector<uint8_t>& rgba) {
+    glm::dvec3 sum(0.0);
+    for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        sum += glm::dvec3(rgba[i], rgba[i + 1], rgba[i + 2]);
+    }
+    return sum / double(rgba.size() / 4);
+}
+
+// Presets are thumbnails in one fixed preview scene, whatever is being edited (an unlit scene
+// used to give black thumbnails), captioned with their material's name, and metals under it
+// tell apart by colour.
+TEST_F(EditorUi, PresetsShowTheirNamesInAFixedPreviewScene) {
+    std::vector<std::string> warnings;
+    for (const char* name : {"gold", "silver"}) {
+        std::filesystem::copy_file(std::filesystem::path(PATINA_PRESETS_DIR) / (std::string(name) + ".json"),
+                                   path(std::string(name) + ".json"));
+    }
+    state_.presetFolders = {dir_};
+    state_.scene.lights.clear();
+    state_.scene.camera.position = {0.0f, 5.0f, 0.1f};
+    frames(3);
+    const EditorServices::Preset* gold = services_->preset(path("gold.json"));
+    const EditorServices::Preset* silver = services_->preset(path("silver.json"));
+    ASSERT_TRUE(gold && silver);
+    EXPECT_EQ(gold->name, loadMaterialFile(path("gold.json"), warnings).name);
+    const glm::dvec3 g = meanColour(texturePixels(*gold->texture));
+    const glm::dvec3 s = meanColour(texturePixels(*silver->texture));
+    EXPECT_GT(g.r + g.g + g.b, 3 * 0.18 * 255 * 0.5) << "lit, not black";
+    EXPECT_GT(g.r / g.b, 1.15 * (s.r / s.b)) << "gold is yellower than silver";
+    // The caption sits under its thumbnail.
+    ImVec2 buttonMin, buttonMax, captionMin, captionMax;
+    ASSERT_TRUE(itemRect("preset:gold", &buttonMin, &buttonMax));
+    ASSERT_TRUE(itemRect("caption:gold", &captionMin, &captionMax));
+    EXPECT_GE(captionMin.y, buttonMax.y - 1.0f);
+    EXPECT_LT(captionMin.x, buttonMax.x);
+    // Rendered again when the file changes.
+    const std::vector<uint8_t> before = texturePixels(*gold->texture);
+    Material rough = loadMaterialFile(path("gold.json"), warnings);
+    rough.roughness = 0.9f;
+    saveMaterialFile(path("gold.json"), rough);
+    std::filesystem::last_write_time(path("gold.json"),
+                                     std::filesystem::last_write_time(path("gold.json")) + std::chrono::seconds(2));
+    frames(2);
+    EXPECT_NE(texturePixels(*services_->preset(path("gold.json"))->texture), before);
+}
+
 // View > Frame mesh aims the camera as the F key does (it used to do nothing).
 TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
     state_.scene.camera.target = {3.0f, 1.0f, 0.0f};
