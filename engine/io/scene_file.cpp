@@ -75,6 +75,12 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     case LightType::Point:
         light.position = reader.vec3("position", light.position);
         light.range = reader.number(version >= 2 ? "range" : "radius", light.range, kNonNegative);
+        // In a version 1 file "range" means nothing; kept as an unknown key it would become the
+        // window once saved as version 2 (or be lost under the written one), so it is dropped.
+        if (version < 2 && reader.child("range")) {
+            warnings.push_back(source + ": " + reader.pointerOf("range") +
+                               ": 'range' is not a key of scene version 1 (there the window is 'radius'); ignored");
+        }
         light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
         break;
     case LightType::Directional:

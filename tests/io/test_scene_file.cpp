@@ -86,6 +86,24 @@ TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {
     EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 3})").find("up to 2"), std::string::npos);
 }
 
+// A version 1 file with a "range" key (unknown there) must not turn it into the window when
+// written as version 2, nor lose the round trip: found by fuzz_png (the seed corpus keeps it).
+TEST(SceneFile, ARangeKeyInVersion1IsIgnoredWithAWarning) {
+    std::vector<std::string> warnings;
+    const Scene old = sceneFromJson(
+        parseJsonText(R"({"format": "patina-scene", "version": 1,
+                          "lights": [{"type": "point", "range": [1, 0.78, 0.55], "radius": 12}]})", "old.json"),
+        "old.json", ".", warnings);
+    EXPECT_EQ(old.lights[0].range, 12.0f);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("/lights/0/range: 'range' is not a key of scene version 1"), std::string::npos)
+        << warnings[0];
+    EXPECT_TRUE(old.lights[0].extras.empty());
+    warnings.clear();
+    EXPECT_EQ(sceneFromJson(sceneToJson(old), "new.json", ".", warnings), old);
+    EXPECT_TRUE(warnings.empty());
+}
+
 TEST(SceneFile, SyntaxErrorsNameLineAndColumn) {
     EXPECT_EQ(errorOf("{\n  \"format\": \"patina-scene\",\n  \"version\": 1,\n  oops\n}").substr(0, 16),
               "test.json:4:3: i");
