@@ -10,17 +10,15 @@ namespace patina::editor {
 void drawMaterialPanel(EditorState& state) {
     Material& material = state.scene.material;
     const Material defaults;
+    const Material& file = state.savedMaterial;   // as opened or last saved
     inputString("Name", &material.name);
+    ImGui::SetNextItemWidth(widthBesideReset("Base colour"));
     colorEditLinear("Base colour", &material.baseColor);
     ImGui::SameLine();
-    ImGui::BeginDisabled(material.baseColor == defaults.baseColor);
-    if (ImGui::SmallButton("Reset##baseColor")) {
-        material.baseColor = defaults.baseColor;
-    }
-    ImGui::EndDisabled();
-    sliderWithReset("Roughness", &material.roughness, 0.0f, 1.0f, defaults.roughness);
-    sliderWithReset("Specular", &material.specular, 0.0f, 1.0f, defaults.specular);
-    sliderWithReset("Metallic", &material.metallic, 0.0f, 1.0f, defaults.metallic);
+    resetButton("Base colour", &material.baseColor, file.baseColor, defaults.baseColor);
+    sliderWithReset("Roughness", &material.roughness, 0.0f, 1.0f, file.roughness, defaults.roughness);
+    sliderWithReset("Specular", &material.specular, 0.0f, 1.0f, file.specular, defaults.specular);
+    sliderWithReset("Metallic", &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
     if (ImGui::BeginCombo("Model", std::string(brdfModel(material.model).name).c_str())) {
         for (const BrdfModelInfo& model : brdfModels()) {
             if (ImGui::Selectable(std::string(model.name).c_str(), model.id == material.model)) {

@@ -24,23 +24,22 @@ std::map<std::string, std::pair<ImVec2, ImVec2>>& itemRects() {
 }
 }  // namespace
 
-bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float defaultValue,
-                     const char* format) {
+float widthBesideReset(const char* label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float resetWidth = ImGui::CalcTextSize("Reset").x + style.FramePadding.x * 2;
+    return ImGui::GetContentRegionAvail().x - resetWidth - style.ItemSpacing.x - ImGui::CalcTextSize(label).x -
+           style.ItemInnerSpacing.x;
+}
+
+bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float fileValue,
+                     float defaultValue, const char* format) {
     ImGui::PushID(label);
-    const float resetWidth = ImGui::CalcTextSize("Reset").x + ImGui::GetStyle().FramePadding.x * 2;
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - resetWidth -
-                            ImGui::GetStyle().ItemSpacing.x - ImGui::CalcTextSize(label).x -
-                            ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(widthBesideReset(label));
     bool changed = ImGui::SliderFloat(label, value, minimum, maximum, format,
                                       ImGuiSliderFlags_AlwaysClamp);
     recordItem(label);
     ImGui::SameLine();
-    ImGui::BeginDisabled(*value == defaultValue);
-    if (ImGui::SmallButton("Reset")) {
-        *value = defaultValue;
-        changed = true;
-    }
-    ImGui::EndDisabled();
+    changed |= resetButton(label, value, fileValue, defaultValue);
     ImGui::PopID();
     return changed;
 }

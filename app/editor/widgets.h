@@ -8,9 +8,11 @@
 
 namespace patina::editor {
 
-// A slider (Ctrl+click types a value) with a reset button that restores `defaultValue`.
-bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float defaultValue,
-                     const char* format = "%.3f");
+// The width that leaves room for the item's label and a resetButton on its line.
+float widthBesideReset(const char* label);
+// A slider (Ctrl+click types a value) with a resetButton.
+bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float fileValue,
+                     float defaultValue, const char* format = "%.3f");
 // Shows and edits the colour in sRGB, stores linear RGB (values above 1 are kept as HDR).
 bool colorEditLinear(const char* label, glm::vec3* linear, bool hdr = false, ImGuiColorEditFlags flags = 0);
 // A swatch of a linear colour, shown in sRGB, with its numbers.
@@ -22,6 +24,31 @@ bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags
 // (PATINA_UI_LAYOUT, see editor_app.cpp).
 void recordItem(const std::string& name);
 bool itemRect(const std::string& name, ImVec2* min, ImVec2* max);
+
+// A small Reset button: a click restores the value of the file the material came from
+// (`fileValue`), a right-click the default; greyed out when the value is both already.
+// Recorded for automation as "Reset <name>". Returns whether it changed the value.
+template <typename T>
+bool resetButton(const char* name, T* value, const T& fileValue, const T& defaultValue) {
+    ImGui::PushID(name);
+    const bool disabled = *value == fileValue && *value == defaultValue;
+    ImGui::BeginDisabled(disabled);
+    const bool clicked = ImGui::SmallButton("Reset");
+    const bool toDefault = !disabled && ImGui::IsItemClicked(ImGuiMouseButton_Right);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("Click: back to the file's value. Right-click: back to the default.");
+    }
+    ImGui::EndDisabled();
+    recordItem(std::string("Reset ") + name);
+    ImGui::PopID();
+    const T wanted = toDefault ? defaultValue : fileValue;
+    if ((clicked || toDefault) && *value != wanted) {
+        *value = wanted;
+        return true;
+    }
+    return false;
+}
+
 std::string layoutJson();
 
 }  // namespace patina::editor

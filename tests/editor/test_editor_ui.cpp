@@ -501,6 +501,31 @@ TEST_F(EditorUi, PresetsShowTheirNamesInAFixedPreviewScene) {
     EXPECT_NE(texturePixels(*services_->preset(path("gold.json"))->texture), before);
 }
 
+// Reset goes back to the opened file's value; a right-click to the default.
+TEST_F(EditorUi, ResetRevertsToTheFilesValueAndRightClickToTheDefault) {
+    Material opened;
+    opened.name = "opened";
+    opened.roughness = 0.2f;
+    opened.baseColor = {0.1f, 0.5f, 0.9f};
+    saveMaterialFile(path("opened.json"), opened);
+    ASSERT_TRUE(openFile(state_, path("opened.json"))) << state_.error;
+    state_.scene.material.roughness = 0.9f;
+    state_.scene.material.baseColor = {1.0f, 1.0f, 1.0f};
+    frames(2);
+    click(centreOf("Reset Roughness"));
+    EXPECT_EQ(state_.scene.material.roughness, 0.2f);
+    click(centreOf("Reset Base colour"));
+    EXPECT_EQ(state_.scene.material.baseColor, opened.baseColor);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = centreOf("Reset Roughness");
+    frames(1);
+    io.MouseDown[1] = true;
+    frames(1);
+    io.MouseDown[1] = false;
+    frames(2);
+    EXPECT_EQ(state_.scene.material.roughness, Material{}.roughness);
+}
+
 // View > Frame mesh aims the camera as the F key does (it used to do nothing).
 TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
     state_.scene.camera.target = {3.0f, 1.0f, 0.0f};
