@@ -11,8 +11,8 @@ int main(int argc, char** argv) {
     CLI::App app{"Patina: a live editor for physically based materials (Karis 2013 shading)"};
     app.require_subcommand(0, 1);
     patina::editor::EditorOptions editor;   // its start time: now, for --stats
-    app.add_option("file", editor.files, "Without a subcommand: open the editor on this material, scene or "
-                                         "Patina screenshot (PNG)");
+    app.add_option("file", editor.files, "Without a subcommand: open the editor on this material or scene (.json), "
+                                         "Patina screenshot (.png) or glTF model (.gltf, .glb)");
     app.add_flag("--stats", editor.stats, "Editor: log time to first frame, frame times while dragging and peak "
                                           "memory to stderr");
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
@@ -32,11 +32,19 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
     if (app.get_subcommands().empty()) {
+        // A missing file does not keep the editor shut: it opens and says so there (and here,
+        // for a terminal without a window). A bare word that is no file is a subcommand
+        // mistyped, and refused.
         for (const std::string& file : editor.files) {
-            if (!std::filesystem::is_regular_file(file)) {
-                std::cerr << "error: " << file << ": no such file (nor a subcommand; see patina --help)\n";
+            std::error_code error;
+            if (std::filesystem::exists(file, error)) {
+                continue;
+            }
+            if (!std::filesystem::path(file).has_extension()) {
+                std::cerr << "error: " << file << ": neither a subcommand nor a file (see patina --help)\n";
                 return 3;
             }
+            std::cerr << "warning: " << file << ": no such file; the editor opens without it\n";
         }
         return patina::editor::runEditor(editor);
     }

@@ -93,9 +93,7 @@ int runEditor(const EditorOptions& options) {
     int exitCode = 0;
     {
         EditorServices services;
-        for (const std::string& file : options.files) {
-            openFile(state, file);
-        }
+        openFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
         startAutosave(state, configFolder() / "autosave.json");
         const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
         std::string title;

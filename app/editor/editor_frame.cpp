@@ -40,6 +40,7 @@ void drawError(EditorState& state, ImVec2 at, float width) {
         if (ImGui::SmallButton("Dismiss")) {
             state.error.clear();
         }
+        recordItem("error:dismiss");
     }
     ImGui::End();
 }

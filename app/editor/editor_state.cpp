@@ -251,6 +251,11 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
 }  // namespace
 
 bool openFile(EditorState& state, const std::filesystem::path& path) {
+    std::error_code kind;
+    if (std::filesystem::is_directory(path, kind)) {
+        state.error = path.string() + " is a folder: open a material, scene, screenshot (.png) or glTF (.gltf, .glb) file";
+        return false;
+    }
     if (!gltfExtension(path).empty()) {
         return openMesh(state, path);
     }
@@ -297,6 +302,17 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         state.error = error.what();
         return false;
     }
+}
+
+bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths) {
+    std::string errors;
+    for (const std::filesystem::path& path : paths) {
+        if (!openFile(state, path)) {
+            errors += (errors.empty() ? "" : "\n") + state.error;
+        }
+    }
+    state.error = errors;
+    return errors.empty();
 }
 
 void requestOpen(EditorState& state, const std::filesystem::path& path) {

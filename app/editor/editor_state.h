@@ -133,6 +133,9 @@ void applyScene(EditorState& state, const Scene& scene);
 bool openFile(EditorState& state, const std::filesystem::path& path);
 // Asks first when the material is unsaved (state.pendingOpen), else opens.
 void requestOpen(EditorState& state, const std::filesystem::path& path);
+// Opens each in turn (the command line's files): every file's error is kept, one a line, in
+// state.error, so a later file does not hide an earlier one's. False when any failed.
+bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths);
 // Writes the material (saveMaterialFile: atomically, the old file kept as .bak); on failure
 // sets state.error, stays dirty and leaves the file on disk as it was.
 bool saveMaterial(EditorState& state, const std::filesystem::path& path);

@@ -308,3 +308,23 @@ TEST_F(EditorStateTest, AFailedSceneSaveKeepsTheDocumentAsItWas) {
 
 }  // namespace
 }  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// The command line's files: each one's error shown (a later one used to hide the first's), a
+// folder called a folder, and what did open still open.
+TEST_F(EditorStateTest, EveryFilesErrorIsShownAndAFolderIsCalledAFolder) {
+    const fs::path good = writeMaterial("good", 0.25f);
+    fs::create_directories(dir_ / "a-folder");
+    EXPECT_FALSE(openFiles(state, {dir_ / "missing.json", dir_ / "a-folder", good}));
+    EXPECT_NE(state.error.find("missing.json"), std::string::npos) << state.error;
+    EXPECT_NE(state.error.find("a-folder is a folder"), std::string::npos) << state.error;
+    EXPECT_NE(state.error.find('\n'), std::string::npos) << "one a line: " << state.error;
+    EXPECT_EQ(state.scene.material.roughness, 0.25f) << "the good file opened";
+    EXPECT_TRUE(openFiles(state, {good}));
+    EXPECT_TRUE(state.error.empty());
+}
+
+}  // namespace
+}  // namespace patina::editor

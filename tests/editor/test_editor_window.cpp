@@ -126,12 +126,14 @@ protected:
         startEditor();
     }
 
-    // The editor on this display and config folder; waits for its first frame and window.
-    void startEditor() {
+    // The editor on this display and config folder, with `files`; waits for its first frame and
+    // window.
+    void startEditor(const std::string& files = "") {
         fs::remove(dir_ / "layout.json");
         // With --stats, its log (stderr) in a file the tests read.
         editor_ = std::make_unique<Child>(
-            std::vector<std::string>{"/bin/sh", "-c", std::string("exec '") + PATINA_EXECUTABLE + "' --stats 2>stats.log"},
+            std::vector<std::string>{"/bin/sh", "-c",
+                                     std::string("exec '") + PATINA_EXECUTABLE + "' --stats " + files + " 2>stats.log"},
             std::vector<std::string>{"DISPLAY=" + display_, "XDG_CONFIG_HOME=" + (dir_ / "config").string(),
                                      "PATINA_UI_LAYOUT=" + (dir_ / "layout.json").string()},
             dir_);
@@ -335,6 +337,16 @@ TEST_F(EditorWindow, AKilledEditorOffersItsWorkBack) {
     const std::optional<Scene> shown = sceneFromPng(shot, warnings);
     ASSERT_TRUE(shown.has_value());
     EXPECT_EQ(shown->material.roughness, edited) << "the edit came back";
+}
+
+// A file that is not there still opens the editor, which shows the error (the command line
+// used to refuse to start).
+TEST_F(EditorWindow, AMissingFileOpensTheEditorWithItsError) {
+    editor_.reset();
+    startEditor("missing-material.json");
+    EXPECT_TRUE(waitFor([&] { return rect("error:dismiss").size() == 4; }, 10s)) << "no error shown";
+    EXPECT_TRUE(editor_->running());
+    EXPECT_NE(readText(dir_ / "stats.log").find("missing-material.json: no such file"), std::string::npos);
 }
 
 TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {
