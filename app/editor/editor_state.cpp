@@ -231,16 +231,36 @@ void applyScene(EditorState& state, const Scene& scene) {
 }
 
 namespace {
+// "; 2 more materials and 3 textures not used (Patina reads the first material's factors)".
+std::string unusedParts(const GltfImport& imported) {
+    std::vector<std::string> parts;
+    if (imported.materialCount > 1) {
+        parts.push_back(std::to_string(imported.materialCount - 1) + " more material" +
+                        (imported.materialCount > 2 ? "s" : ""));
+    }
+    if (imported.textureCount > 0) {
+        parts.push_back(std::to_string(imported.textureCount) + " texture" + (imported.textureCount > 1 ? "s" : ""));
+    }
+    if (parts.empty()) {
+        return "";
+    }
+    return "; " + (parts.size() == 2 ? parts[0] + " and " + parts[1] : parts[0]) +
+           " not used (Patina reads the first material's factors)";
+}
+
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
-        Scene scene = state.scene;   // read before anything changes: a bad file changes nothing
-        scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
-        resolveMesh(scene);
-        state.scene.meshFile = scene.meshFile;
-        state.scene.resolvedMesh = scene.resolvedMesh;
+        GltfImport imported = importGltf(path);   // before anything changes: a bad file changes nothing
+        state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+        state.scene.resolvedMesh = std::make_shared<const Mesh>(std::move(imported.mesh));
         frameMesh(state);
+        std::string material = ", no material (the current one kept)";
+        if (imported.material) {
+            applyEdit(state, [&](EditorState& s) { s.scene.material = *imported.material; });
+            material = ", material \"" + imported.material->name + "\" applied";
+        }
         state.error.clear();
-        state.status = "Mesh " + path.filename().string();
+        state.status = "Mesh " + path.filename().string() + material + unusedParts(imported);
         rememberRecent(state, path);
         return true;
     } catch (const std::exception& error) {

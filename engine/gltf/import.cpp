@@ -90,6 +90,8 @@ GltfImport importGltf(const std::filesystem::path& path) {
     if (!model.materials.empty()) {
         result.material = gltf::materialFromGltf(model.materials[0], "/materials/0", source, path.stem().string());
     }
+    result.materialCount = model.materials.size();
+    result.textureCount = model.textures.size();
     return result;
 }
 

@@ -19,6 +19,8 @@ constexpr size_t kGltfMaxPrimitives = size_t(256) << 10;    // mesh primitives d
 struct GltfImport {
     Mesh mesh;                          // world space, counter-clockwise, unit normals
     std::optional<Material> material;   // the file's first material, when it has one
+    size_t materialCount = 0;           // all of the file's: Patina takes the first only
+    size_t textureCount = 0;            // Patina reads factors, no texture
 };
 
 // The triangles of every mesh primitive of the default scene (or scene 0, or every root node

@@ -6,6 +6,7 @@
 
 #include "editor_settings.h"
 #include "editor_state.h"
+#include "gltf/export.h"
 #include "io/json_writer.h"
 #include "scratch_test.h"
 #include "io/scene_file.h"
@@ -324,6 +325,31 @@ TEST_F(EditorStateTest, EveryFilesErrorIsShownAndAFolderIsCalledAFolder) {
     EXPECT_EQ(state.scene.material.roughness, 0.25f) << "the good file opened";
     EXPECT_TRUE(openFiles(state, {good}));
     EXPECT_TRUE(state.error.empty());
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// Opening a glTF applies its material's factors (it used to keep the edited material and say
+// nothing), undoably, and says so.
+TEST_F(EditorStateTest, OpeningAGltfAppliesItsMaterial) {
+    Material gold;
+    gold.name = "model gold";
+    gold.baseColor = {1.0f, 0.78f, 0.34f};
+    gold.roughness = 0.3f;
+    gold.metallic = 1.0f;
+    exportGltf(dir_ / "gold.glb", makeTorus(), gold);
+    const Material before = state.scene.material;
+    ASSERT_TRUE(openFile(state, dir_ / "gold.glb")) << state.error;
+    EXPECT_EQ(state.scene.material.name, "model gold");
+    EXPECT_NEAR(state.scene.material.roughness, 0.3f, 1e-6f);
+    EXPECT_EQ(state.scene.material.metallic, 1.0f);
+    EXPECT_NE(state.status.find("material \"model gold\" applied"), std::string::npos) << state.status;
+    undo(state);
+    EXPECT_EQ(state.scene.material, before);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "gltf_builder.h"
+#include "gltf/export.h"
 #include "gltf/import.h"
 #include "scratch_test.h"
 
@@ -294,6 +295,18 @@ TEST_F(Gltf, AMillionTrianglesLoadInSeconds) {
     EXPECT_EQ(mesh.indices, sphere.indices);
     EXPECT_LT(seconds, 5.0);
     std::cout << "1M triangles loaded in " << seconds << " s\n";
+}
+
+// What the editor reports as not used: how many materials and textures the file has.
+TEST(GltfImport, CountsTheFilesMaterialsAndTextures) {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "patina_counts.glb";
+    Material material;
+    material.name = "one";
+    exportGltf(file, makeTorus(), material);
+    const GltfImport imported = importGltf(file);
+    EXPECT_EQ(imported.materialCount, 1u);
+    EXPECT_EQ(imported.textureCount, 0u);
+    std::filesystem::remove(file);
 }
 
 }  // namespace
