@@ -1,6 +1,7 @@
 #include "widgets.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <vector>
@@ -44,13 +45,28 @@ bool sliderWithReset(const char* label, float* value, float minimum, float maxim
     return changed;
 }
 
+bool onlyQuantised(glm::vec3 before, glm::vec3 after) {
+    if (before == after) {
+        return true;
+    }
+    for (int c = 0; c < 3; ++c) {
+        if (after[c] != std::round(before[c] * 255.0f) / 255.0f) {
+            return false;
+        }
+    }
+    return true;
+}
+
 bool colorEditLinear(const char* label, glm::vec3* linear, bool hdr, ImGuiColorEditFlags flags) {
     // sRGB cannot show components above 1: the picker shows the colour over its peak, and the
     // peak multiplies back in (light colours may be HDR; material colours stay in [0, 1]).
     const float peak = hdr ? std::max({linear->r, linear->g, linear->b, 1.0f}) : 1.0f;
     const glm::vec3 srgb = toSrgb(glm::clamp(*linear / peak, 0.0f, 1.0f));
     float color[3] = {srgb.r, srgb.g, srgb.b};
-    const bool changed = ImGui::ColorEdit3(label, color, ImGuiColorEditFlags_Float | flags);
+    // Clicking into the picker's hex field writes the colour back rounded to 8 bits (0.8000 to
+    // 0.7991) without any edit: that is no change, and must not dirty the file or make a step.
+    const bool changed = ImGui::ColorEdit3(label, color, ImGuiColorEditFlags_Float | flags) &&
+                         !onlyQuantised(srgb, glm::vec3(color[0], color[1], color[2]));
     recordItem(label);
     if (changed) {
         *linear = glm::clamp(toLinear(glm::vec3(color[0], color[1], color[2])), 0.0f, 1.0f) * peak;

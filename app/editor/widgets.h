@@ -13,7 +13,11 @@ float widthBesideReset(const char* label);
 // A slider (Ctrl+click types a value) with a resetButton.
 bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float fileValue,
                      float defaultValue, const char* format = "%.3f");
-// Shows and edits the colour in sRGB, stores linear RGB (values above 1 are kept as HDR).
+// Whether `after` is `before` (sRGB) unchanged or merely rounded to 8 bits a channel, as
+// ImGui's hex field writes a colour back on a click without an edit.
+bool onlyQuantised(glm::vec3 before, glm::vec3 after);
+// Shows and edits the colour in sRGB, stores linear RGB (values above 1 are kept as HDR). A
+// write-back that only rounds to 8 bits is not a change (onlyQuantised).
 bool colorEditLinear(const char* label, glm::vec3* linear, bool hdr = false, ImGuiColorEditFlags flags = 0);
 // A swatch of a linear colour, shown in sRGB, with its numbers.
 void linearSwatch(const char* label, glm::vec3 linear);

@@ -1,11 +1,13 @@
 // The editor's state without a window: undo/redo, the dirty flag, light list operations,
 // opening files and their errors, and persisted settings.
+#include <cmath>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "editor_settings.h"
 #include "editor_state.h"
+#include "widgets.h"
 #include "gltf/export.h"
 #include "io/json_writer.h"
 #include "scratch_test.h"
@@ -350,6 +352,24 @@ TEST_F(EditorStateTest, OpeningAGltfAppliesItsMaterial) {
     EXPECT_NE(state.status.find("material \"model gold\" applied"), std::string::npos) << state.status;
     undo(state);
     EXPECT_EQ(state.scene.material, before);
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// ImGui's hex field writes a colour back rounded to 8 bits when clicked: that is no edit.
+TEST(ColourEdit, A8BitRoundingIsNoChangeButAnEditIs) {
+    const glm::vec3 before(0.8f, 0.25f, 0.123456f);
+    const glm::vec3 rounded(std::round(0.8f * 255.0f) / 255.0f, std::round(0.25f * 255.0f) / 255.0f,
+                            std::round(0.123456f * 255.0f) / 255.0f);
+    EXPECT_TRUE(onlyQuantised(before, before));
+    EXPECT_TRUE(onlyQuantised(before, rounded)) << "0.8000 to 0.7991 is not an edit";
+    EXPECT_FALSE(onlyQuantised(before, glm::vec3(rounded.r + 1.0f / 255.0f, rounded.g, rounded.b)))
+        << "one step of 8 bits is";
+    EXPECT_FALSE(onlyQuantised(before, glm::vec3(0.81f, 0.25f, 0.123456f)));
 }
 
 }  // namespace
