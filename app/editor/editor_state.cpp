@@ -166,12 +166,6 @@ void moveLight(EditorState& state, int index, int delta) {
     }
 }
 
-void renameLight(EditorState& state, int index, const std::string& name) {
-    if (validIndex(state, index)) {
-        applyEdit(state, [&](EditorState& s) { s.scene.lights[size_t(index)].name = name; });
-    }
-}
-
 void toggleSolo(EditorState& state, int index) {
     state.soloLight = state.soloLight == index ? -1 : index;
 }

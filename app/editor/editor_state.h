@@ -114,7 +114,6 @@ void addLight(EditorState& state, LightType type);
 void duplicateLight(EditorState& state, int index);
 void deleteLight(EditorState& state, int index);
 void moveLight(EditorState& state, int index, int delta);
-void renameLight(EditorState& state, int index, const std::string& name);
 void toggleSolo(EditorState& state, int index);
 
 // The scene as rendered: solo applied.

@@ -141,7 +141,8 @@ TEST_F(EditorStateTest, LightListOperations) {
     ASSERT_EQ(state.scene.lights.size(), initial + 2);
     EXPECT_EQ(state.scene.lights[1].name, state.scene.lights[0].name + " copy");
 
-    renameLight(state, 1, "renamed");
+    state.scene.lights[1].name = "renamed";   // as the panel's name field writes it
+    commitEdits(state);
     EXPECT_EQ(state.scene.lights[1].name, "renamed");
     moveLight(state, 1, -1);
     EXPECT_EQ(state.scene.lights[0].name, "renamed");
