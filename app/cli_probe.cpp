@@ -13,6 +13,7 @@ Command addProbeCommand(CLI::App& app) {
     struct Options {
         SceneInputs inputs;
         std::string in, out, backend = "gpu";
+        int samples = 4096;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -20,21 +21,27 @@ Command addProbeCommand(CLI::App& app) {
     options->inputs.addOptions(*command);
     command->add_option("--in", options->in, "Input CSV: px,py,pz,nx,ny,nz,vx,vy,vz")->required();
     command->add_option("--out", options->out, "Output CSV: r,g,b")->required();
-    command->add_option("--backend", options->backend, "gpu: the real shader; cpu: the same code as C++")
-        ->check(CLI::IsMember({"cpu", "gpu"}));
+    command->add_option("--backend", options->backend,
+                        "gpu: the real shader; cpu: the same code as C++; reference: the ground truth by Monte "
+                        "Carlo (environment; the lights exactly), with standard errors")
+        ->check(CLI::IsMember({"cpu", "gpu", "reference"}));
+    command->add_option("--samples", options->samples, "reference: iterations per row (3 directions each)")
+        ->check(CLI::Range(1, 1 << 24));
     return [options] {
         const Scene scene = options->inputs.load();
         const std::vector<ProbeSample> samples =
             parseProbeCsv(readInputText(options->in), options->in);
-        std::vector<glm::vec3> radiance;
-        if (options->backend == "cpu") {
-            radiance = probeOnCpu(scene.material, scene.lights, samples);
+        std::string csv;
+        if (options->backend == "reference") {
+            csv = formatReferenceCsv(
+                probeReference(scene.material, scene.lights, samples, scene.resolvedEnvironment, options->samples));
+        } else if (options->backend == "cpu") {
+            csv = formatRadianceCsv(probeOnCpu(scene.material, scene.lights, samples, scene.resolvedEnvironment));
         } else {
             HeadlessContext context;
             GpuProbe probe;
-            radiance = probe.evaluate(scene.material, scene.lights, samples);
+            csv = formatRadianceCsv(probe.evaluate(scene.material, scene.lights, samples, scene.resolvedEnvironment));
         }
-        const std::string csv = formatRadianceCsv(radiance);
         writeOutput(options->out, std::vector<uint8_t>(csv.begin(), csv.end()));
     };
 }

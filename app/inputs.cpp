@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "shading/brdf_models.h"
+#include "image/environment_source.h"
 #include "image/image.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
@@ -39,6 +40,7 @@ Scene SceneInputs::load() const {
         }
         scene.material.model = *id;
     }
+    resolveEnvironment(scene, warnings);
     printWarnings(warnings);
     return scene;
 }

@@ -19,6 +19,8 @@ ShaderSpecialisation brdfFloorFor(size_t count, size_t flatSlots) {
 
 Scene brdfFloorScene(const Scene& scene) {
     Scene floor = scene;
+    // The floor is the analytic lights' BRDF cost: an environment has no direction to take.
+    std::erase_if(floor.lights, [](const Light& light) { return light.type == LightType::Environment; });
     for (Light& light : floor.lights) {
         if (light.type == LightType::Point) {
             light.direction = -light.position;

@@ -11,7 +11,7 @@ bash scripts/setup.sh --sanitizers
 build_dir=build-fuzz
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-16 -DPATINA_FUZZ=ON \
   -DPATINA_BUILD_TESTS=OFF >/dev/null
-targets=(${FUZZ_TARGETS:-fuzz_material fuzz_scene fuzz_png fuzz_gltf fuzz_glb})
+targets=(${FUZZ_TARGETS:-fuzz_material fuzz_scene fuzz_png fuzz_gltf fuzz_glb fuzz_hdr fuzz_exr})
 cmake --build "$build_dir" -j"$(nproc)" --target "${targets[@]}"
 
 # The working corpus lives in the build folder: what the fuzzer adds never reaches the tree.
@@ -24,10 +24,13 @@ run_target() {
     material | scene) cat tests/fuzz/json.dict >"$dict" ;;
     png) cat tests/fuzz/png.dict tests/fuzz/json.dict >"$dict" ;;
     gltf | glb) cat tests/fuzz/gltf.dict tests/fuzz/json.dict >"$dict" ;;
+    # Binary formats: the seeds hold their tokens, and libFuzzer picks up the ones the readers
+    # compare against.
+    *) dict= ;;
   esac
   # -timeout: one input taking 10 s is a hang. Sanitizer reports end the run (halt_on_error).
   "$build_dir/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -dict="$dict" -artifact_prefix="$artifacts/" -print_final_stats=1 "$corpus" \
+    ${dict:+-dict="$dict"} -artifact_prefix="$artifacts/" -print_final_stats=1 "$corpus" \
     >"$build_dir/$target.log" 2>&1
 }
 

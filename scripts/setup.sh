@@ -7,8 +7,11 @@ packages=(
   build-essential cmake pkg-config
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev nlohmann-json3-dev zlib1g-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
-  libcli11-dev libgtest-dev libbenchmark-dev
+  libcli11-dev libgtest-dev libbenchmark-dev libopenexr-dev
   xvfb xdotool
+  # Blender's eight CC0 HDRIs (/usr/share/blender/datafiles/studiolights/world/*.exr), which the
+  # environment tests read: real files from a real writer.
+  blender-data
 )
 # Clang 16, the first to take the shaders' C++ (parenthesized aggregate initialization, P0960);
 # libclang-rt-16-dev holds libFuzzer and the ASan/UBSan runtimes (clang-16 only recommends it);

@@ -5,6 +5,7 @@
 #include "scene/camera_control.h"
 #include "gltf/import.h"
 #include "gltf/scene_mesh.h"
+#include "image/environment_source.h"
 #include "io/input_error.h"
 #include "image/png_text.h"
 #include "io/scene_file.h"
@@ -102,9 +103,28 @@ void redo(EditorState& state) {
     }
 }
 
+namespace {
+int environmentIndex(const EditorState& state) {
+    const std::vector<Light>& lights = state.scene.lights;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].type == LightType::Environment) {
+            return int(i);
+        }
+    }
+    return -1;
+}
+
+constexpr const char* kOneEnvironment = "A scene has one environment at most: change the one in the light list.";
+}  // namespace
+
 void addLight(EditorState& state, LightType type) {
     if (state.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
         state.error = "A scene holds at most " + std::to_string(shader::MAX_LIGHTS) + " lights.";
+        return;
+    }
+    if (type == LightType::Environment && environmentIndex(state) >= 0) {
+        state.error = kOneEnvironment;
+        state.selectedLight = environmentIndex(state);
         return;
     }
     Light light;
@@ -117,9 +137,11 @@ void addLight(EditorState& state, LightType type) {
     } else if (type == LightType::Directional) {
         light.direction = {-0.5f, -0.7f, -0.5f};
         light.intensity = 2.0f;
-    } else {
+    } else if (type == LightType::Hemisphere) {
         light.sky = {0.3f, 0.4f, 0.6f};
         light.ground = {0.1f, 0.08f, 0.06f};
+    } else {
+        light.name = "studio";   // builtin:studio, the default source
     }
     applyEdit(state, [&](EditorState& s) { s.scene.lights.push_back(light); });
     state.selectedLight = int(state.scene.lights.size()) - 1;
@@ -130,6 +152,10 @@ void duplicateLight(EditorState& state, int index) {
         return;
     }
     Light copy = state.scene.lights[size_t(index)];
+    if (copy.type == LightType::Environment) {
+        state.error = kOneEnvironment;
+        return;
+    }
     copy.name += " copy";
     applyEdit(state, [&](EditorState& s) { s.scene.lights.insert(s.scene.lights.begin() + index + 1, copy); });
     state.selectedLight = index + 1;
@@ -264,6 +290,37 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
 }
 }  // namespace
 
+bool setEnvironmentSource(EditorState& state, const std::string& source) {
+    std::vector<std::string> warnings;
+    try {
+        const std::shared_ptr<const Environment> environment = loadEnvironment(source, warnings);
+        if (environmentIndex(state) < 0) {
+            addLight(state, LightType::Environment);
+        }
+        const int index = environmentIndex(state);
+        applyEdit(state, [&](EditorState& s) {
+            Light& light = s.scene.lights[size_t(index)];
+            light.source = source;
+            light.name = environmentName(source);
+            s.scene.resolvedEnvironment = environment;   // kept while disabled, for the checkbox
+        });
+        state.selectedLight = index;
+        state.error = joinWarnings(warnings);
+        state.status = "Environment " + environmentName(source);
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();   // the previous environment stays
+        return false;
+    }
+}
+
+std::string environmentName(const std::string& source) {
+    if (source.starts_with("builtin:")) {
+        return source.substr(8);
+    }
+    return std::filesystem::path(source).stem().string();
+}
+
 bool openFile(EditorState& state, const std::filesystem::path& path) {
     std::error_code kind;
     if (std::filesystem::is_directory(path, kind)) {
@@ -272,6 +329,9 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
     }
     if (!gltfExtension(path).empty()) {
         return openMesh(state, path);
+    }
+    if (path.extension() == ".hdr" || path.extension() == ".exr") {
+        return setEnvironmentSource(state, std::filesystem::absolute(path).lexically_normal().string());
     }
     std::vector<std::string> warnings;
     try {
@@ -295,6 +355,7 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         // the open instead of every later frame.
         if (scene) {
             resolveMesh(*scene);
+            resolveEnvironment(*scene, warnings);
         }
         if (scene) {
             applyScene(state, *scene);

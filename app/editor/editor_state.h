@@ -111,6 +111,12 @@ void redo(EditorState& state);
 
 // --- Light list --------------------------------------------------------------------------
 void addLight(EditorState& state, LightType type);
+// Makes `source` ("builtin:NAME", an .hdr or .exr path) the scene's environment, adding one if
+// there is none: loaded (and prefiltered) first, so a file that cannot be read leaves the
+// previous environment as it was and says why in state.error. Undoable.
+bool setEnvironmentSource(EditorState& state, const std::string& source);
+// "studio" for builtin:studio, a file's stem.
+std::string environmentName(const std::string& source);
 void duplicateLight(EditorState& state, int index);
 void deleteLight(EditorState& state, int index);
 void moveLight(EditorState& state, int index, int delta);

@@ -1,9 +1,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include <filesystem>
+#include <string>
+#include <vector>
+
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include "environment/builtin_environments.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -15,6 +20,7 @@ const char* typeIcon(LightType type) {
     case LightType::Point: return "(o)";
     case LightType::Directional: return "-->";
     case LightType::Hemisphere: return "(^)";
+    case LightType::Environment: return "(*)";
     }
     return "?";
 }
@@ -39,13 +45,65 @@ void editDirection(Light& light) {
     }
 }
 
+// Blender's eight CC0 studio HDRIs (Debian's blender-data), offered when installed.
+std::vector<std::filesystem::path> blenderEnvironments() {
+    static const std::vector<std::filesystem::path> found = [] {
+        std::vector<std::filesystem::path> files;
+        std::error_code error;
+        for (const auto& entry :
+             std::filesystem::directory_iterator("/usr/share/blender/datafiles/studiolights/world", error)) {
+            if (entry.path().extension() == ".exr") {
+                files.push_back(entry.path());
+            }
+        }
+        std::sort(files.begin(), files.end());
+        return files;
+    }();
+    return found;
+}
+
+// The environment's own editor: where it comes from, how bright, how turned, and whether it is
+// the background too. A source is loaded before it replaces the current one.
+void editEnvironment(EditorState& state, Light& light) {
+    if (ImGui::BeginCombo("Source", environmentName(light.source).c_str())) {
+        for (std::string_view builtin : builtinEnvironmentNames()) {
+            const std::string source = "builtin:" + std::string(builtin);
+            if (ImGui::Selectable(("built-in " + std::string(builtin)).c_str(), light.source == source)) {
+                setEnvironmentSource(state, source);
+            }
+        }
+        for (const std::filesystem::path& file : blenderEnvironments()) {
+            if (ImGui::Selectable(("Blender " + file.stem().string()).c_str(), light.source == file.string())) {
+                setEnvironmentSource(state, file.string());
+            }
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Environment source");
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s\nOpen or drop an .hdr or .exr file to light with it", light.source.c_str());
+    }
+    ImGui::SliderFloat("Rotation", &light.rotationDegrees, -180.0f, 180.0f, "%.1f deg");
+    recordItem("Environment rotation");
+    bool background = state.scene.display.backgroundFromEnvironment;
+    if (ImGui::Checkbox("Show as background", &background)) {
+        state.scene.display.backgroundFromEnvironment = background;
+    }
+    recordItem("Environment background");
+    ImGui::BeginDisabled(!background);
+    ImGui::SliderFloat("Background blur", &state.scene.display.backgroundBlur, 0.0f, 1.0f, "%.2f");
+    ImGui::EndDisabled();
+}
+
 void editLight(Light& light) {
     // Written as typed, as the material's name: the edit commits when the field lets go, by
     // Enter or by a click elsewhere (it used to be lost unless Enter was pressed).
     inputString("Name", &light.name);
     recordItem("Light name");
     ImGui::Checkbox("Enabled", &light.enabled);
-    colorEditLinear("Colour", &light.color, true);
+    if (light.type != LightType::Environment) {   // an environment's colour is its image's
+        colorEditLinear("Colour", &light.color, true);
+    }
     // Each pixel of drag changes the intensity by 1% of itself: 8 to 100 is about 250 pixels,
     // not 1800 as at a fixed step, and small values stay as easy to set as large ones.
     ImGui::DragFloat("Intensity", &light.intensity, std::max(light.intensity, 0.1f) * 0.01f, 0.0f, 1e6f, "%.3f",
@@ -65,6 +123,7 @@ void editLight(Light& light) {
         colorEditLinear("Sky", &light.sky, true);
         colorEditLinear("Ground", &light.ground, true);
         break;
+    case LightType::Environment: break;   // editEnvironment, which needs the scene
     }
 }
 }  // namespace
@@ -82,6 +141,11 @@ void drawLightsPanel(EditorState& state) {
     if (ImGui::Button("Add hemisphere")) {
         addLight(state, LightType::Hemisphere);
     }
+    ImGui::SameLine();
+    if (ImGui::Button("Add environment")) {
+        addLight(state, LightType::Environment);
+    }
+    recordItem("Add environment");
 
     std::vector<Light>& lights = state.scene.lights;
     if (ImGui::BeginTable("lights", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
@@ -137,7 +201,11 @@ void drawLightsPanel(EditorState& state) {
     ImGui::EndDisabled();
     if (state.selectedLight >= 0 && state.selectedLight < int(lights.size())) {
         ImGui::Separator();
-        editLight(lights[size_t(state.selectedLight)]);
+        Light& light = lights[size_t(state.selectedLight)];
+        editLight(light);
+        if (light.type == LightType::Environment) {
+            editEnvironment(state, light);
+        }
     }
 }
 

@@ -94,8 +94,8 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     bool hoveredAny = false;
     for (int i = 0; i < int(state.scene.lights.size()); ++i) {
         Light& light = state.scene.lights[size_t(i)];
-        if (light.type == LightType::Hemisphere) {
-            continue;
+        if (light.type == LightType::Hemisphere || light.type == LightType::Environment) {
+            continue;   // everywhere at once: nothing to grab
         }
         const glm::vec3 anchor = light.type == LightType::Point
                                      ? light.position

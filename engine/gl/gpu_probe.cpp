@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 
 #include "scene/light_packing.h"
+#include "gl/environment_texture.h"
 #include "gl/program.h"
 #include "gl/shading_inputs.h"
 #include "gl/shading_programs.h"
@@ -21,6 +22,7 @@ constexpr size_t kBatch = size_t(kTargetWidth) * 1024;   // probes per draw
 
 struct GpuProbe::State {
     ShadingPrograms programs;
+    EnvironmentTexture environment;
     LightBuffer lights;
     GLuint vertexArray = 0, vertices = 0, framebuffer = 0, target = 0;
 };
@@ -50,13 +52,22 @@ GpuProbe::~GpuProbe() {
 }
 
 std::vector<glm::vec3> GpuProbe::evaluate(const Material& material, const std::vector<Light>& lights,
-                                          const std::vector<ProbeSample>& samples) {
+                                          const std::vector<ProbeSample>& samples,
+                                          const std::shared_ptr<const Environment>& environment) {
     static_assert(sizeof(ProbeSample) == 9 * sizeof(float), "ProbeSample is uploaded as is");
     State& s = *state_;
+    const Light* environmentLight = enabledEnvironment(lights);
+    const std::shared_ptr<const Environment> shown =
+        environmentLight ? environmentShown(environment, environmentLight->source) : nullptr;
     s.lights.upload(packEnabledLights(lights));
     s.lights.bind();
-    const GlProgram& program = s.programs.use(material.model, ShadingPrograms::Use::Probe);
+    const GlProgram& program =
+        s.programs.use(material.model, ShadingPrograms::Use::Probe, ShadingPrograms::Output::Linear, environmentLight);
     setMaterialUniforms(program, material);
+    if (environmentLight) {
+        s.environment.bind(shown, ShadingPrograms::kEnvironmentMapUnit);
+        setEnvironmentUniforms(program, *shown, *environmentLight, ShadingPrograms::kEnvironmentMapUnit);
+    }
 
     std::vector<glm::vec3> radiance;
     radiance.reserve(samples.size());

@@ -12,8 +12,11 @@ class GpuProbe {
 public:
     GpuProbe();
     ~GpuProbe();
+    // With an enabled environment light among `lights`, `environment` is what it shows (an
+    // std::invalid_argument when null).
     std::vector<glm::vec3> evaluate(const Material& material, const std::vector<Light>& lights,
-                                    const std::vector<ProbeSample>& samples);
+                                    const std::vector<ProbeSample>& samples,
+                                    const std::shared_ptr<const Environment>& environment = nullptr);
 
 private:
     struct State;

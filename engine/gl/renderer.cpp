@@ -10,10 +10,12 @@
 
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "common/enum_names.h"
 #include "scene/light_packing.h"
 #include "scene/view.h"
+#include "gl/environment_texture.h"
 #include "gl/frame_plan.h"
 #include "gl/mesh_buffers.h"
 #include "gl/program.h"
@@ -29,6 +31,10 @@ extern const char* const black_frag;
 extern const char* const fullscreen_vert;
 extern const char* const display_glsl;
 extern const char* const display_frag;
+extern const char* const brdf_glsl;
+extern const char* const environment_glsl;
+extern const char* const ibl_glsl;
+extern const char* const background_frag;
 }  // namespace shader_sources
 
 std::string_view renderPathName(RenderPath mode) {
@@ -103,6 +109,25 @@ struct Renderer::State {
         }
         return found->second;
     }
+    // The environment behind the mesh, by whether it writes display values too.
+    std::map<bool, LazyProgram> backgrounds;
+    LazyProgram& background(bool displayOutput) {
+        auto found = backgrounds.find(displayOutput);
+        if (found == backgrounds.end()) {
+            const std::vector<const char*> fragment{shader_sources::brdf_glsl, shader_sources::environment_glsl,
+                                                    shader_sources::ibl_glsl, shader_sources::display_glsl,
+                                                    shader_sources::background_frag};
+            std::vector<std::string> defines;
+            if (displayOutput) {
+                defines.push_back("PATINA_DISPLAY_OUTPUT");
+            }
+            found = backgrounds.try_emplace(displayOutput, std::vector<const char*>{shader_sources::fullscreen_vert},
+                                            fragment, defines)
+                        .first;
+        }
+        return found->second;
+    }
+    EnvironmentTexture environment;
     LightBuffer lights;
     MeshBuffers mesh;
     std::shared_ptr<const Mesh> meshShown;   // what `mesh` holds
@@ -188,7 +213,7 @@ void Renderer::useMesh(State& s, const Scene& scene) {
     }
 }
 
-void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights,
+void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights, bool environment,
                           const Prepare& prepare) {
     if (passes != RenderPath::Multi) {
         shading.use();
@@ -214,6 +239,10 @@ void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading,
         glUniform1i(shading.uniform("uLightIndex"), GLint(i));
         s.mesh.draw();
     }
+    if (environment) {   // the environment's pass, after the lights as in the single pass
+        glUniform1i(shading.uniform("uLightIndex"), -1);
+        s.mesh.draw();
+    }
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
 }
@@ -232,8 +261,16 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     }
     RenderTargets& t = *target.images_;
     useMesh(s, scene);
+    const Light* environmentLight = enabledEnvironment(scene);
+    const std::shared_ptr<const Environment> environmentMap =
+        environmentLight ? environmentShown(scene.resolvedEnvironment, environmentLight->source) : nullptr;
+    const bool environment = environmentLight != nullptr;
+    // A drawn background covers every pixel: nothing is left to fill around the mesh.
+    const bool environmentBackground = environment && scene.display.backgroundFromEnvironment;
+    RenderSettings planned = settings;
+    planned.cropToMesh = settings.cropToMesh && !environmentBackground;
     const int w = settings.width, h = settings.height;
-    const FramePlan plan = planFrame(settings, scene.camera,
+    const FramePlan plan = planFrame(planned, scene.camera,
                                      {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()}, s.maxSamples,
                                      s.flatLightSlots);
     const std::vector<shader::PackedLight> packed = packEnabledLights(scene.lights);
@@ -252,16 +289,24 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
+    ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
+    singlePass.environment = environment;
+    auto specialisation = [&] {
+        ShaderSpecialisation key = settings.lightCode ? settings.lightCode(packed, plan.flatLightCount)
+                                                      : specialiseFor(packed, scene.material, plan.flatLightCount);
+        key.environment = environment;
+        return key;
+    };
     const GlProgram& shading =
-        settings.path == RenderPath::Single ? s.shading.useSingle(model, ShadingPrograms::singlePassFor(packed), output)
-        : settings.path == RenderPath::Multi
-            ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output)
-            : s.shading.useSpecialised(model,
-                                       settings.lightCode ? settings.lightCode(packed, plan.flatLightCount)
-                                                          : specialiseFor(packed, scene.material, plan.flatLightCount),
-                                       output);
+        settings.path == RenderPath::Single  ? s.shading.useSingle(model, singlePass, output)
+        : settings.path == RenderPath::Multi ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment)
+                                             : s.shading.useSpecialised(model, specialisation(), output);
     if (settings.path == RenderPath::Multi) {
         s.depthPrepass.get();
+    }
+    const GlProgram* backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
+    if (environment) {
+        s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit);
     }
 
     // One pair of queries in flight: a draw while the last pair is unread goes untimed.
@@ -288,7 +333,14 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     const GLfloat clearStamp[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
 
+    auto environmentUniforms = [&](const GlProgram& program) {
+        if (environment) {
+            setEnvironmentUniforms(program, *environmentMap, *environmentLight,
+                                   ShadingPrograms::kEnvironmentMapUnit);
+        }
+    };
     auto prepare = [&](const GlProgram& program) {
+        environmentUniforms(program);
         glUniform1f(program.uniform("uSampleStamp"), stamp);
         glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
         glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
@@ -364,11 +416,31 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
         } else {
             glDisable(GL_DEPTH_TEST);
         }
+        if (backgroundPass) {
+            const GlProgram* background = backgroundPass;
+            glDisable(GL_DEPTH_TEST);
+            background->use();
+            environmentUniforms(*background);
+            glUniformMatrix4fv(background->uniform("uInverseViewProjection"), 1, GL_FALSE,
+                               glm::value_ptr(glm::inverse(plan.transform)));
+            glUniform3fv(background->uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
+            glUniform4f(background->uniform("uViewport"), 0.0f, float(-top), float(w), float(h));
+            glUniform1f(background->uniform("uBlur"), scene.display.backgroundBlur);
+            glUniform1f(background->uniform("uSampleStamp"), stamp);
+            glUniform1f(background->uniform("uExposure"), scene.display.exposure);
+            glUniform1i(background->uniform("uTonemap"), exposureTonemap);
+            glBindVertexArray(s.emptyVertexArray);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glBindVertexArray(0);
+            if (plan.depthTest) {
+                glEnable(GL_DEPTH_TEST);
+            }
+        }
         if (plan.culled != HiddenFaces::None) {
             glEnable(GL_CULL_FACE);
             glCullFace(plan.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
         }
-        drawPasses(s, settings.path, shading, packed.size(), prepare);
+        drawPasses(s, settings.path, shading, packed.size(), environment, prepare);
         glDisable(GL_CULL_FACE);
         glDisable(GL_SCISSOR_TEST);
         if (displayPass) {

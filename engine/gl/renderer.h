@@ -122,7 +122,7 @@ private:
     // Uploads the scene's mesh unless it is the one drawn last. Throws std::invalid_argument
     // for a scene whose mesh file was never resolved.
     static void useMesh(State& s, const Scene& scene);
-    static void drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights,
+    static void drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights, bool environment,
                            const Prepare& prepare);
 };
 

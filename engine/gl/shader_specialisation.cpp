@@ -38,6 +38,9 @@ std::vector<std::string> ShaderSpecialisation::defines() const {
     if (noDiffuse) {
         result.push_back("PATINA_NO_DIFFUSE");
     }
+    if (environment) {
+        result.push_back("PATINA_ENVIRONMENT");
+    }
     return result;
 }
 

@@ -24,6 +24,7 @@ struct ShaderSpecialisation {
     std::string flatLightRows;   // PATINA_FLAT_LIGHTS, for mesh.vert: "FLAT_POINT(0) FLAT_DIRECTIONAL(1) ..."
     int flatLightCount = 0;   // lights 0 to flatLightCount - 1 are flat inputs
     bool noDiffuse = false;
+    bool environment = false;   // PATINA_ENVIRONMENT: the scene's environment after the lights
 
     auto operator<=>(const ShaderSpecialisation&) const = default;
     std::vector<std::string> defines() const;

@@ -1,7 +1,10 @@
 #include "gl/shading_inputs.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include <glm/trigonometric.hpp>
 
 #include "scene/light_packing.h"
 
@@ -9,6 +12,9 @@ namespace patina {
 
 namespace shader_sources {
 extern const char* const brdf_glsl;
+extern const char* const environment_glsl;
+extern const char* const ibl_glsl;
+extern const char* const ibl_model_glsl;
 extern const char* const lights_glsl;
 extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
@@ -26,9 +32,10 @@ constexpr size_t kLightBlockSize = sizeof(shader::PackedLight) * shader::MAX_LIG
 }  // namespace
 
 std::vector<const char*> shadingFragmentParts() {
-    return {shader_sources::brdf_glsl,         shader_sources::lights_glsl,       shader_sources::light_block_glsl,
-            shader_sources::energy_texel_glsl, shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,
-            shader_sources::brdf_model_glsl,   shader_sources::display_glsl,      shader_sources::shade_frag};
+    return {shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
+            shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::energy_texel_glsl,
+            shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
+            shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::shade_frag};
 }
 
 LightBuffer::LightBuffer() {
@@ -63,6 +70,16 @@ void LightBuffer::attach(const GlProgram& program) {
     if (index != GL_INVALID_INDEX) {
         glUniformBlockBinding(program.id(), index, kBindingPoint);
     }
+}
+
+void setEnvironmentUniforms(const GlProgram& program, const Environment& environment, const Light& light, int unit) {
+    // The same cos and sin the CPU takes (environment/environment.h's shadeEnvironmentOnCpu).
+    const float radians = glm::radians(light.rotationDegrees);
+    glUniform1i(program.uniform("uEnvironmentMap"), unit);
+    glUniform1f(program.uniform("uEnvironmentMaxLod"), environment.maxLod());
+    glUniform1f(program.uniform("uEnvironmentIntensity"), light.intensity);
+    glUniform2f(program.uniform("uEnvironmentRotation"), std::cos(radians), std::sin(radians));
+    glUniform3fv(program.uniform("uEnvironmentSH"), 9, &environment.sh[0].x);
 }
 
 void setMaterialUniforms(const GlProgram& program, const Material& material) {

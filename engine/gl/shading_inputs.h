@@ -3,6 +3,8 @@
 
 #include <epoxy/gl.h>
 
+#include "environment/environment.h"
+#include "scene/light.h"
 #include "scene/material.h"
 #include "shading/shading.h"
 #include "gl/program.h"
@@ -10,7 +12,8 @@
 namespace patina {
 
 // Embedded GLSL parts of every program that shades: the terms, the lights, the energy table,
-// the model dispatch (its PATINA_* defines select the model), the display transform and shade.frag.
+// the model dispatch (its PATINA_* defines select the model), image-based lighting, the display
+// transform and shade.frag.
 std::vector<const char*> shadingFragmentParts();
 
 // The LightBlock uniform buffer of shaders/stages/shade.frag: MAX_LIGHTS packed lights and a count.
@@ -35,5 +38,8 @@ private:
 
 // uBaseColor, uRoughness, uSpecular, uMetallic of shade.frag (program must be in use).
 void setMaterialUniforms(const GlProgram& program, const Material& material);
+// environment.glsl's uniforms for `light` (an environment light) showing `environment`, its
+// cube map on `unit` (program must be in use).
+void setEnvironmentUniforms(const GlProgram& program, const Environment& environment, const Light& light, int unit);
 
 }  // namespace patina

@@ -6,6 +6,7 @@
 
 #include "shading/brdf_models.h"
 #include "shading/energy_table.h"
+#include "shading/environment_brdf.h"
 #include "scene/light_packing.h"
 #include "gl/shading_inputs.h"
 
@@ -29,8 +30,10 @@ std::vector<const char*> meshVertexParts() {
 }  // namespace
 
 ShadingPrograms::~ShadingPrograms() {
-    for (const auto& [model, texture] : energyTextures_) {
-        glDeleteTextures(1, &texture);
+    for (const auto* textures : {&energyTextures_, &environmentBrdfTextures_}) {
+        for (const auto& [model, texture] : *textures) {
+            glDeleteTextures(1, &texture);
+        }
     }
 }
 
@@ -47,7 +50,7 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     return program;
 }
 
-const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& program) {
+const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& program, bool environment) {
     program.use();
     if (brdfModel(model).multipleScattering()) {
         glActiveTexture(GL_TEXTURE0 + kEnergyUnit);
@@ -55,6 +58,13 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
         glActiveTexture(GL_TEXTURE0);
     }
     glUniform1i(program.uniform("uEnergyTable"), kEnergyUnit);
+    if (environment) {
+        glActiveTexture(GL_TEXTURE0 + kEnvironmentBrdfUnit);
+        glBindTexture(GL_TEXTURE_2D, environmentBrdfTexture(model));
+        glActiveTexture(GL_TEXTURE0);
+        glUniform1i(program.uniform("uEnvironmentBrdf"), kEnvironmentBrdfUnit);
+        glUniform1i(program.uniform("uEnvironmentMap"), kEnvironmentMapUnit);
+    }
     return program;
 }
 
@@ -64,6 +74,7 @@ ShadingPrograms::SinglePass ShadingPrograms::singlePassFor(const std::vector<sha
     pass.points = counts.y > 0;
     pass.directionals = counts.z > 0;
     pass.hemispheres = counts.w > 0;
+    pass.environment = false;   // the renderer sets it: packed lights hold no environment
     pass.karisPoints = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
         return light.type != shader::LIGHT_POINT || hasKarisAttenuation(light);
     });
@@ -75,6 +86,9 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
     if (karisPoints) {
         defines.push_back("PATINA_KARIS_POINTS");
     }
+    if (environment) {
+        defines.push_back("PATINA_ENVIRONMENT");
+    }
     for (const auto& [present, define] : {std::pair{points, "PATINA_NO_POINT_LIGHTS"},
                                           std::pair{directionals, "PATINA_NO_DIRECTIONAL_LIGHTS"},
                                           std::pair{hemispheres, "PATINA_NO_HEMISPHERE_LIGHTS"}}) {
@@ -85,14 +99,21 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
     return defines;
 }
 
-const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output) {
-    std::unique_ptr<GlProgram>& program = programs_[{model, use, output}];
+const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output, bool environment) {
+    std::unique_ptr<GlProgram>& program = programs_[{model, use, output, environment}];
     if (!program) {
-        program = use == Use::Probe
-                      ? build(model, output, {shader_sources::probe_vert}, {"PATINA_SINGLE_PASS", "PATINA_PROBE"})
-                      : build(model, output, meshVertexParts(), {});
+        std::vector<std::string> defines;
+        if (environment) {
+            defines.push_back("PATINA_ENVIRONMENT");
+        }
+        if (use == Use::Probe) {
+            defines.insert(defines.end(), {"PATINA_SINGLE_PASS", "PATINA_PROBE"});
+            program = build(model, output, {shader_sources::probe_vert}, defines);
+        } else {
+            program = build(model, output, meshVertexParts(), defines);
+        }
     }
-    return bind(model, *program);
+    return bind(model, *program, environment);
 }
 
 const GlProgram& ShadingPrograms::useSingle(BrdfModelId model, const SinglePass& pass, Output output) {
@@ -100,7 +121,7 @@ const GlProgram& ShadingPrograms::useSingle(BrdfModelId model, const SinglePass&
     if (!program) {
         program = build(model, output, meshVertexParts(), pass.defines());
     }
-    return bind(model, *program);
+    return bind(model, *program, pass.environment);
 }
 
 const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
@@ -123,7 +144,23 @@ const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const Shader
         }
         specialised_.erase(oldest);   // never `entry`: it was used last
     }
-    return bind(model, program);
+    return bind(model, program, key.environment);
+}
+
+unsigned ShadingPrograms::environmentBrdfTexture(BrdfModelId model) {
+    unsigned& texture = environmentBrdfTextures_[model];
+    if (!texture) {
+        const std::vector<glm::vec2>& table = environmentBrdfTable(model);
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        // 32-bit floats: an 8-bit or sRGB table bands (spec section 2).
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kEnvironmentBrdfSize, kEnvironmentBrdfSize, 0, GL_RG, GL_FLOAT,
+                     table.data());
+        // texelFetch only: ibl_model.glsl interpolates itself.
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    return texture;
 }
 
 unsigned ShadingPrograms::energyTexture(BrdfModelId model) {

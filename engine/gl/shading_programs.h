@@ -22,6 +22,7 @@ public:
     struct SinglePass {
         bool points = true, directionals = true, hemispheres = true;
         bool karisPoints = false;
+        bool environment = false;   // the scene's environment after the lights
         std::vector<std::string> defines() const;
         auto operator<=>(const SinglePass&) const = default;
     };
@@ -38,8 +39,14 @@ public:
     ShadingPrograms(const ShadingPrograms&) = delete;
     ShadingPrograms& operator=(const ShadingPrograms&) = delete;
 
-    // Makes the program current (with its energy table bound) and returns it.
-    const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear);
+    // Makes the program current (with its energy table, and with `environment` its environment
+    // BRDF table, bound) and returns it. Multi with `environment` shades the environment when
+    // uLightIndex < 0.
+    const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear, bool environment = false);
+    // Texture units of the environment's cube map and BRDF table (unit 0 is the display pass's,
+    // 1 the energy table's).
+    static constexpr int kEnvironmentMapUnit = 2;
+    static constexpr int kEnvironmentBrdfUnit = 3;
     const GlProgram& useSingle(BrdfModelId model, const SinglePass& pass, Output output = Output::Linear);
     // The single-pass program specialised to `key`, compiled on first use. The least recently
     // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
@@ -54,17 +61,18 @@ private:
         std::unique_ptr<GlProgram> program;
         unsigned long long lastUse = 0;
     };
-    std::map<std::tuple<BrdfModelId, Use, Output>, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::tuple<BrdfModelId, Use, Output, bool>, std::unique_ptr<GlProgram>> programs_;
     // 12 shapes at most (with no point light, karisPoints is always true): 24 programs a model.
     std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;
     std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
-    std::map<BrdfModelId, unsigned> energyTextures_;
+    std::map<BrdfModelId, unsigned> energyTextures_, environmentBrdfTextures_;
 
     unsigned energyTexture(BrdfModelId model);
+    unsigned environmentBrdfTexture(BrdfModelId model);
     std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, const std::vector<const char*>& vertexParts,
                                      std::vector<std::string> defines);
-    const GlProgram& bind(BrdfModelId model, const GlProgram& program);
+    const GlProgram& bind(BrdfModelId model, const GlProgram& program, bool environment);
 };
 
 }  // namespace patina

@@ -3,14 +3,9 @@
 #include <string>
 #include <vector>
 
-namespace patina {
+#include "common/hdr_image.h"
 
-// Linear RGB, float per channel, rows top to bottom.
-struct HdrImage {
-    int width = 0;
-    int height = 0;
-    std::vector<float> rgb;   // width * height * 3
-};
+namespace patina {
 
 // Display-referred sRGB bytes, RGBA, rows top to bottom.
 struct LdrImage {

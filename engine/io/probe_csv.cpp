@@ -74,4 +74,16 @@ std::string formatRadianceCsv(const std::vector<glm::vec3>& radiance) {
     return out;
 }
 
+std::string formatReferenceCsv(const std::vector<ReferenceRow>& rows) {
+    std::string out = "r,g,b,se_r,se_g,se_b\n";
+    char line[256];
+    for (const ReferenceRow& row : rows) {
+        std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", double(row.value.r), double(row.value.g),
+                      double(row.value.b), double(row.standardError.r), double(row.standardError.g),
+                      double(row.standardError.b));
+        out += line;
+    }
+    return out;
+}
+
 }  // namespace patina

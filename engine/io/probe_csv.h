@@ -14,4 +14,7 @@ std::vector<ProbeSample> parseProbeCsv(const std::string& text, const std::strin
 // `r,g,b` with 9 significant digits, one row per value.
 std::string formatRadianceCsv(const std::vector<glm::vec3>& radiance);
 
+// `r,g,b,se_r,se_g,se_b`: the reference backend's value and standard error per row.
+std::string formatReferenceCsv(const std::vector<ReferenceRow>& rows);
+
 }  // namespace patina

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdlib>
 
+#include "environment/builtin_environments.h"
 #include "shading/brdf_models.h"
 #include "io/file_kinds.h"
 #include "io/file_bytes.h"
@@ -55,8 +56,28 @@ bool nestsDeeperThan(const Json& value, int levels) {
     return false;
 }
 
+// "builtin:NAME" of a known built-in, or a path made absolute against the scene's folder.
+std::string environmentSource(JsonObjectReader& reader, const std::filesystem::path& baseDirectory) {
+    const std::string value = reader.string("source", "builtin:studio");
+    if (value.starts_with("builtin:")) {
+        const std::string_view name = std::string_view(value).substr(8);
+        std::string known;
+        for (std::string_view builtin : builtinEnvironmentNames()) {
+            if (builtin == name) {
+                return value;
+            }
+            known += (known.empty() ? "builtin:" : ", builtin:") + std::string(builtin);
+        }
+        reader.fail("source", "unknown built-in environment " + shortJson(value) + " (known: " + known + ")");
+    }
+    if (value.empty()) {
+        reader.fail("source", "an environment needs a source (\"builtin:studio\" or an .hdr or .exr file)");
+    }
+    return std::filesystem::absolute(baseDirectory / value).lexically_normal().string();
+}
+
 Light lightFromJson(const Json& json, int version, const std::string& pointer, const std::string& source,
-                    std::vector<std::string>& warnings) {
+                    const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, pointer, source);
     Light light;
     const Json& typeValue = reader.required("type");
@@ -64,7 +85,7 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
                                             : std::nullopt;
     if (!type) {
         reader.fail("type", "unknown light type " + shortJson(typeValue) +
-                                " (expected \"point\", \"directional\" or \"hemisphere\")");
+                                " (expected \"point\", \"directional\", \"hemisphere\" or \"environment\")");
     }
     light.type = *type;
     light.name = reader.string("name", std::string(lightTypeName(light.type)));
@@ -92,6 +113,10 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     case LightType::Hemisphere:
         light.sky = reader.vec3("sky", light.sky, kNonNegative);
         light.ground = reader.vec3("ground", light.ground, kNonNegative);
+        break;
+    case LightType::Environment:
+        light.source = environmentSource(reader, baseDirectory);
+        light.rotationDegrees = reader.number("rotationDegrees", light.rotationDegrees, {-3600.0, 3600.0});
         break;
     }
     light.extras = reader.keepUnknown(warnings);
@@ -124,7 +149,16 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
                                    " (expected \"none\", \"aces\", \"reinhard\" or \"pbr-neutral\")");
     }
     display.tonemap = *parsed;
-    display.background = reader.vec3("background", display.background, kNonNegative);
+    // A colour, or "environment": the scene's environment itself, blurred to a roughness.
+    if (const Json* background = reader.child("background"); background && background->is_string()) {
+        if (background->get<std::string>() != "environment") {
+            reader.fail("background", "expected a colour [r, g, b] or \"environment\"");
+        }
+        display.backgroundFromEnvironment = true;
+    } else {
+        display.background = reader.vec3("background", display.background, kNonNegative);
+    }
+    display.backgroundBlur = reader.number("backgroundBlur", display.backgroundBlur, kUnit);
     display.extras = reader.keepUnknown(warnings);
     return display;
 }
@@ -145,6 +179,11 @@ Json lightToJson(const Light& light) {
     case LightType::Hemisphere:
         json["sky"] = toJson(light.sky);
         json["ground"] = toJson(light.ground);
+        break;
+    case LightType::Environment:
+        json.erase("color");
+        json["source"] = light.source;
+        json["rotationDegrees"] = toJson(light.rotationDegrees);
         break;
     }
     return withExtras(json, light.extras);
@@ -233,8 +272,15 @@ Scene sceneFromJson(const Json& json, const std::string& source,
                                       std::to_string(shader::MAX_LIGHTS) + " are supported");
         }
         for (size_t i = 0; i < lights->size(); ++i) {
-            scene.lights.push_back(
-                lightFromJson((*lights)[i], version, "/lights/" + std::to_string(i), source, warnings));
+            const std::string pointer = "/lights/" + std::to_string(i);
+            Light light = lightFromJson((*lights)[i], version, pointer, source, baseDirectory, warnings);
+            if (light.type == LightType::Environment &&
+                std::any_of(scene.lights.begin(), scene.lights.end(),
+                            [](const Light& l) { return l.type == LightType::Environment; })) {
+                throw InputError(source + ": " + pointer +
+                                 ": a second environment light (a scene has at most one environment)");
+            }
+            scene.lights.push_back(std::move(light));
         }
     } else {
         scene.lights.clear();
@@ -288,6 +334,18 @@ void saveSceneFile(const std::filesystem::path& path, const Scene& scene) {
     saveWithBackup(path, sceneToJson(scene));
 }
 
+namespace {
+Json displayToJson(const DisplaySettings& display) {
+    Json json{{"exposure", toJson(display.exposure)},
+              {"tonemap", tonemapName(display.tonemap)},
+              {"background", display.backgroundFromEnvironment ? Json("environment") : toJson(display.background)}};
+    if (display.backgroundFromEnvironment || display.backgroundBlur != 0.0f) {
+        json["backgroundBlur"] = toJson(display.backgroundBlur);
+    }
+    return json;
+}
+}  // namespace
+
 Json sceneToJson(const Scene& scene) {
     Json lights = Json::array();
     for (const Light& light : scene.lights) {
@@ -305,10 +363,7 @@ Json sceneToJson(const Scene& scene) {
                                     {"fovYDegrees", toJson(camera.fovYDegrees)}},
                                    camera.extras)},
              {"lights", lights},
-             {"display", withExtras({{"exposure", toJson(display.exposure)},
-                                     {"tonemap", tonemapName(display.tonemap)},
-                                     {"background", toJson(display.background)}},
-                                    display.extras)}},
+             {"display", withExtras(displayToJson(display), display.extras)}},
         scene.extras);
 }
 

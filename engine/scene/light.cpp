@@ -9,12 +9,14 @@ std::string_view lightTypeName(LightType type) {
     case LightType::Point: return "point";
     case LightType::Directional: return "directional";
     case LightType::Hemisphere: return "hemisphere";
+    case LightType::Environment: return "environment";
     }
     return "point";
 }
 
 std::optional<LightType> lightTypeFromName(std::string_view name) {
-    static const LightType all[] = {LightType::Point, LightType::Directional, LightType::Hemisphere};
+    static const LightType all[] = {LightType::Point, LightType::Directional, LightType::Hemisphere,
+                                    LightType::Environment};
     return enumFromName(name, all, lightTypeName);
 }
 

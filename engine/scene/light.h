@@ -9,7 +9,7 @@
 
 namespace patina {
 
-enum class LightType { Point, Directional, Hemisphere };
+enum class LightType { Point, Directional, Hemisphere, Environment };
 
 std::string_view lightTypeName(LightType type);
 std::optional<LightType> lightTypeFromName(std::string_view name);
@@ -32,6 +32,11 @@ struct Light {
     // hemisphere (colour acts as a tint on both)
     glm::vec3 sky{1.0f};
     glm::vec3 ground{0.0f};
+    // environment (Scene::resolvedEnvironment holds it made ready): "builtin:NAME" or a file's
+    // absolute path; turned about +Y, lighting and background alike. Radiance = image * intensity
+    // (colour is not used).
+    std::string source = "builtin:studio";
+    float rotationDegrees = 0.0f;
     // Keys of the file Patina does not know (another type's too), written back on save.
     Json extras = Json::object();
 

@@ -8,6 +8,7 @@ int shaderLightType(LightType type) {
     case LightType::Point: return shader::LIGHT_POINT;
     case LightType::Directional: return shader::LIGHT_DIRECTIONAL;
     case LightType::Hemisphere: return shader::LIGHT_HEMISPHERE;
+    case LightType::Environment: return -1;   // not a packed light: the renderer's own pass
     }
     return shader::LIGHT_POINT;
 }

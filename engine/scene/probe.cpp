@@ -1,20 +1,76 @@
 #include "scene/probe.h"
 
+#include <algorithm>
+#include <optional>
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+
 #include "scene/light_packing.h"
+#include "environment/reference.h"
 #include "shading/cpu_shading.h"
 
 namespace patina {
 
 std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Light>& lights,
-                                  const std::vector<ProbeSample>& samples) {
+                                  const std::vector<ProbeSample>& samples,
+                                  const std::shared_ptr<const Environment>& environment) {
     const shader::SurfaceMaterial surface = surfaceMaterial(material);
     const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
+    const Light* environmentLight = enabledEnvironment(lights);
+    const std::shared_ptr<const Environment> shown =
+        environmentLight ? environmentShown(environment, environmentLight->source) : nullptr;
     std::vector<glm::vec3> radiance;
     radiance.reserve(samples.size());
     for (const ProbeSample& sample : samples) {
-        radiance.push_back(shadePoint(material.model, surface, packed, sample.position, sample.normal, sample.toViewer));
+        glm::vec3 value = shadePoint(material.model, surface, packed, sample.position, sample.normal, sample.toViewer);
+        if (environmentLight) {
+            // As shade.frag: the unit (or zero) N and V of shadePoint.
+            value += shadeEnvironmentOnCpu(material.model, surface, *shown, environmentLight->intensity,
+                                           environmentLight->rotationDegrees, shader::safeNormalize(sample.normal),
+                                           shader::safeNormalize(sample.toViewer));
+        }
+        radiance.push_back(value);
     }
     return radiance;
+}
+
+std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
+                                         const std::vector<ProbeSample>& samples,
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow) {
+    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
+    const Light* environmentLight = enabledEnvironment(lights);
+    const std::shared_ptr<const Environment> shown =
+        environmentLight ? environmentShown(environment, environmentLight->source) : nullptr;
+    std::optional<EnvironmentDistribution> distribution;
+    ReferenceEnvironment reference;
+    if (environmentLight) {
+        distribution.emplace(shown->image);
+        reference = {shown.get(), &*distribution, environmentLight->intensity, environmentLight->rotationDegrees};
+    }
+    std::vector<ReferenceRow> rows(samples.size());
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t i; (i = next++) < samples.size();) {
+            ReferenceOptions options;
+            options.samples = samplesPerRow;
+            options.seed = 0x9E3779B97F4A7C15ull * (i + 1);
+            const ReferenceEstimate e = referenceRadiance(material.model, surface, reference, packed, samples[i].position,
+                                                          samples[i].normal, samples[i].toViewer, options);
+            rows[i] = {e.value, e.standardError};
+        }
+    };
+    std::vector<std::thread> pool;
+    const unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), 64u));
+    for (unsigned t = 1; t < threads; ++t) {
+        pool.emplace_back(work);
+    }
+    work();
+    for (std::thread& thread : pool) {
+        thread.join();
+    }
+    return rows;
 }
 
 }  // namespace patina

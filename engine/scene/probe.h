@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -15,8 +16,22 @@ struct ProbeSample {
     glm::vec3 toViewer;
 };
 
-// Linear radiance summed over the enabled lights, by the shared shading code compiled as C++.
+// Linear radiance summed over the enabled lights, by the shared shading code compiled as C++:
+// the lights, then an enabled environment light showing `environment` by the split sum
+// (an std::invalid_argument when null).
 std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Light>& lights,
-                                  const std::vector<ProbeSample>& samples);
+                                  const std::vector<ProbeSample>& samples,
+                                  const std::shared_ptr<const Environment>& environment = nullptr);
+
+// The ground truth of the same rows (environment/reference.h): the lights exactly, the
+// environment by Monte Carlo with `samples` iterations a row, each row with its own seed, on
+// every core. value and standard error per row.
+struct ReferenceRow {
+    glm::vec3 value;
+    glm::vec3 standardError;
+};
+std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
+                                         const std::vector<ProbeSample>& samples,
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow);
 
 }  // namespace patina

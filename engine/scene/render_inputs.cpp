@@ -19,6 +19,14 @@ RenderInputs renderInputs(const Scene& scene) {
     inputs.exposure = scene.display.exposure;
     inputs.tonemap = scene.display.tonemap;
     inputs.background = scene.display.background;
+    if (const Light* environment = enabledEnvironment(scene)) {
+        inputs.environment = scene.resolvedEnvironment;
+        inputs.environmentSource = environment->source;
+        inputs.environmentIntensity = environment->intensity;
+        inputs.environmentRotation = environment->rotationDegrees;
+    }
+    inputs.backgroundFromEnvironment = scene.display.backgroundFromEnvironment;
+    inputs.backgroundBlur = scene.display.backgroundBlur;
     return inputs;
 }
 
@@ -26,7 +34,11 @@ bool RenderInputs::operator==(const RenderInputs& other) const {
     return mesh == other.mesh && meshFile == other.meshFile && material == other.material &&
            cameraPosition == other.cameraPosition && cameraTarget == other.cameraTarget &&
            fovYDegrees == other.fovYDegrees && exposure == other.exposure && tonemap == other.tonemap &&
-           background == other.background && lights.size() == other.lights.size() &&
+           background == other.background && environment == other.environment &&
+           environmentSource == other.environmentSource && environmentIntensity == other.environmentIntensity &&
+           environmentRotation == other.environmentRotation &&
+           backgroundFromEnvironment == other.backgroundFromEnvironment && backgroundBlur == other.backgroundBlur &&
+           lights.size() == other.lights.size() &&
            (lights.empty() ||
             std::memcmp(lights.data(), other.lights.data(), lights.size() * sizeof(shader::PackedLight)) == 0);
 }

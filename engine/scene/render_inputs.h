@@ -24,6 +24,13 @@ struct RenderInputs {
     float exposure = 0.0f;
     Tonemap tonemap = Tonemap::None;
     glm::vec3 background{0.0f};
+    // The enabled environment: what it shows (the resolved one, or its source for a built-in
+    // the renderer makes itself), intensity and rotation; the background drawn from it.
+    std::shared_ptr<const Environment> environment;
+    std::string environmentSource;
+    float environmentIntensity = 0.0f, environmentRotation = 0.0f;
+    bool backgroundFromEnvironment = false;
+    float backgroundBlur = 0.0f;
 
     // Light rows compared as their bytes: plain floats and ints, so equal bytes are equal
     // lights (a -0 against a 0 only costs one render more).

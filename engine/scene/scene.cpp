@@ -19,6 +19,15 @@ std::optional<Tonemap> tonemapFromName(std::string_view name) {
     return enumFromName(name, all, tonemapName);
 }
 
+const Light* enabledEnvironment(const std::vector<Light>& lights) {
+    for (const Light& light : lights) {
+        if (light.enabled && light.type == LightType::Environment) {
+            return &light;
+        }
+    }
+    return nullptr;
+}
+
 Scene defaultScene() {
     Scene scene;
     scene.material.name = "terracotta";
@@ -39,14 +48,14 @@ Scene defaultScene() {
     fill.intensity = 2.0f;
     fill.direction = {1.0f, -0.35f, -0.6f};
 
-    Light sky;
-    sky.type = LightType::Hemisphere;
-    sky.name = "sky";
-    sky.intensity = 0.8f;
-    sky.sky = {0.22f, 0.3f, 0.45f};
-    sky.ground = {0.12f, 0.09f, 0.06f};
+    // The studio all around (Karis 2013's image-based lighting): what makes a metal read as metal.
+    Light studio;
+    studio.type = LightType::Environment;
+    studio.name = "studio";
+    studio.intensity = 0.8f;
+    studio.source = "builtin:studio";
 
-    scene.lights = {key, fill, sky};
+    scene.lights = {key, fill, studio};
     return scene;
 }
 

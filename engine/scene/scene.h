@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "environment/environment.h"
 #include "geometry/mesh.h"
 #include "scene/light.h"
 #include "scene/material.h"
@@ -30,6 +31,10 @@ struct DisplaySettings {
     float exposure = 0.0f;                         // stops
     Tonemap tonemap = Tonemap::None;
     glm::vec3 background{0.02f, 0.02f, 0.025f};    // linear
+    // Show the scene's environment behind the mesh instead of `background` (which stays the
+    // colour where the scene has none), read from the prefiltered chain at this roughness.
+    bool backgroundFromEnvironment = false;
+    float backgroundBlur = 0.0f;
     Json extras = Json::object();
 
     bool operator==(const DisplaySettings&) const = default;
@@ -46,6 +51,10 @@ struct Scene {
     // by every copy; null stands for the built-in kind's (and is an error with a meshFile).
     // Compared by identity: two scenes draw the same mesh when they hold the same one.
     std::shared_ptr<const Mesh> resolvedMesh;
+    // The enabled environment light's source made ready (environment/environment.h), resolved
+    // by whoever loads the scene (image/environment_source.h) and shared like resolvedMesh;
+    // null when the scene has no enabled environment (an error for the renderer when it has).
+    std::shared_ptr<const Environment> resolvedEnvironment;
     Material material;
     Camera camera;
     std::vector<Light> lights;
@@ -55,8 +64,12 @@ struct Scene {
     bool operator==(const Scene&) const = default;
 };
 
-// The embedded default: a sphere lit by a warm point light, a cool directional light and a
-// sky/ground hemisphere light.
+// The first enabled environment light (a scene file holds one at most), or null.
+const Light* enabledEnvironment(const std::vector<Light>& lights);
+inline const Light* enabledEnvironment(const Scene& scene) { return enabledEnvironment(scene.lights); }
+
+// The embedded default: a sphere lit by a warm point light, a cool directional light and the
+// built-in studio environment.
 Scene defaultScene();
 
 }  // namespace patina

@@ -16,6 +16,12 @@ inline real energyTexel(int x, int y) {
 
 #include "energy_table.glsl"
 #include "brdf_model.glsl"
+#ifdef PATINA_WITH_IBL
+inline vec2 environmentBrdfTexel(int x, int y) {
+    return environmentBrdfTable(BrdfModelId::PATINA_INSTANCE)[size_t(y) * size_t(kEnvironmentBrdfSize) + size_t(x)];
+}
+#include "ibl_model.glsl"
+#endif
 
 // The half vector and the cosines the specular terms read, clamped as evaluateBrdf clamps them
 // (C++ only: evaluateBrdf guards L = -V itself).

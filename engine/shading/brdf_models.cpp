@@ -1,13 +1,21 @@
 #include "shading/brdf_models.h"
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
 #include "shading/energy_table.h"
+#include "shading/environment_brdf.h"
 #include "shading/shading_f16.h"
 #include "shading/shading_f64.h"
 
 // Every model's permutation in fp32, fp64 and emulated fp16, each in the namespace whose `real`
 // it takes (engine/shading/shading.h, shading_f64.h, shading_f16.h).
+// Image-based lighting (ibl.glsl) is compiled in fp32 only: the GPU's precision.
 namespace patina::shader {
+#define PATINA_WITH_IBL
 #include "shading/brdf_model_instances.h"
+#undef PATINA_WITH_IBL
 }  // namespace patina::shader
 
 namespace patina::shader_f64 {
@@ -109,6 +117,60 @@ BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const MaterialParameters& material,
 #undef PATINA_EVALUATE
     }
     return {};
+}
+
+glm::vec2 integrateEnvironmentBrdf(BrdfModelId id, float NoV, float roughness, unsigned samples) {
+    switch (id) {
+#define PATINA_INTEGRATE(model, name, summary) PATINA_CASE(shader, model, integrateEnvironmentBrdf(NoV, roughness, samples))
+        PATINA_BRDF_MODELS(PATINA_INTEGRATE)
+#undef PATINA_INTEGRATE
+    }
+    return glm::vec2(0.0f);
+}
+
+glm::vec2 environmentBrdf(BrdfModelId id, float NoV, float roughness) {
+    switch (id) {
+#define PATINA_LOOKUP(model, name, summary) PATINA_CASE(shader, model, environmentBrdfLookup(NoV, roughness))
+        PATINA_BRDF_MODELS(PATINA_LOOKUP)
+#undef PATINA_LOOKUP
+    }
+    return glm::vec2(0.0f);
+}
+
+glm::vec3 splitSum(BrdfModelId id, const shader::SurfaceMaterial& material, float NoV, glm::vec3 prefiltered,
+                   glm::vec3 irradiance) {
+    switch (id) {
+#define PATINA_SPLIT_SUM(model, name, summary) PATINA_CASE(shader, model, splitSum(material, NoV, prefiltered, irradiance))
+        PATINA_BRDF_MODELS(PATINA_SPLIT_SUM)
+#undef PATINA_SPLIT_SUM
+    }
+    return glm::vec3(0.0f);
+}
+
+glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod,
+                           const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                           const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant) {
+    const float radians = glm::radians(rotationDegrees);
+    const float c = std::cos(radians), s = std::sin(radians);
+    glm::vec3 sh[9];
+    std::copy(std::begin(coefficients), std::end(coefficients), sh);
+    switch (id) {
+#define PATINA_SHADE(model, name, summary) \
+    PATINA_CASE(shader, model, shadeEnvironment(prefiltered, maxLod, sh, intensity, c, s, material, N, V, dominant))
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return glm::vec3(0.0f);
+}
+
+shader::BrdfValue evaluateBrdfUnderEnvironment(BrdfModelId id, const shader::SurfaceMaterial& material,
+                                               glm::vec3 N, glm::vec3 V, glm::vec3 L) {
+    switch (id) {
+#define PATINA_EVALUATE(model, name, summary) PATINA_CASE(shader, model, evaluateBrdfFor(material, N, V, L, true))
+        PATINA_BRDF_MODELS(PATINA_EVALUATE)
+#undef PATINA_EVALUATE
+    }
+    return shader::model_Epic::evaluateBrdfFor(material, N, V, L, true);
 }
 
 float tabulatedAlbedo(BrdfModelId id, float NoV, float roughness) {

@@ -2,6 +2,7 @@
 // The GLSL in shaders/ compiled as C++: GLM supplies vec3, dot, mix, exp2, ... with GLSL's
 // names and meaning, so these are the very functions the GPU runs.
 #include <cmath>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -13,6 +14,12 @@ using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #include "brdf.glsl"
 #include "lights.glsl"
 #include "display.glsl"
+// The prefilter's source on the CPU (ibl.glsl): any trilinear lookup of (direction, mip).
+using EnvironmentSource = const std::function<vec3(vec3, real)>&;
+inline vec3 sampleEnvironmentSource(EnvironmentSource source, vec3 direction, real lod) {
+    return source(direction, lod);
+}
+#include "ibl.glsl"
 #undef PATINA_INLINE
 }  // namespace patina::shader
 

@@ -43,6 +43,17 @@ PATINA_INLINE real visibility(real NoV, real NoL, SurfaceMaterial material) {
 #endif
 }
 
+// The visibility under an environment. Karis: k = (r + 1)^2 / 8 "is only used for analytic
+// light sources; applied to image-based lighting the results at glancing angles will be much
+// too dark", so a model with that remap takes k = alpha / 2 there; the others keep their own.
+PATINA_INLINE real environmentVisibility(real NoV, real NoL, SurfaceMaterial material) {
+#if PATINA_V == PATINA_V_SCHLICK_KARIS
+    return V_SchlickGGX(NoV, NoL, material.alpha * 0.5f);
+#else
+    return visibility(NoV, NoL, material);
+#endif
+}
+
 PATINA_INLINE vec3 fresnel(vec3 f0, real VoH) {
 #if PATINA_F == PATINA_F_SCHLICK_POW5
     return F_Schlick(f0, VoH);
@@ -78,7 +89,8 @@ PATINA_INLINE vec3 energyCompensation(vec3 f0, real NoV, real roughness) {
 }
 
 // f = d + sp for unit N, V, L on the lit side (NoL > 0); the caller skips NoL <= 0.
-PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+// `underEnvironment` takes environmentVisibility (the ground truth of image-based lighting).
+PATINA_INLINE BrdfValue evaluateBrdfFor(SurfaceMaterial material, vec3 N, vec3 V, vec3 L, bool underEnvironment) {
     vec3 LplusV = L + V;
     real lengthSquared = dot(LplusV, LplusV);
     real NoV = max(dot(N, V), MIN_N_DOT_V);
@@ -91,11 +103,16 @@ PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, v
     real NoH = clamp(dot(N, H), 0.0f, 1.0f);
     real VoH = clamp(dot(V, H), 0.0f, 1.0f);
     real D = distribution(NoH, cross(N, H), material.alpha);
-    real Vis = visibility(NoV, NoL, material);
+    real Vis = underEnvironment ? environmentVisibility(NoV, NoL, material) : visibility(NoV, NoL, material);
     vec3 F = fresnel(material.f0, VoH);
     vec3 specular = (D * Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
     // LoH = VoH: H bisects L and V.
     return BrdfValue(diffuse(material, NoV, NoL, VoH), specular);
+}
+
+// Under analytic lights.
+PATINA_INLINE BrdfValue evaluateBrdf(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
+    return evaluateBrdfFor(material, N, V, L, false);
 }
 
 // Outgoing radiance towards V from a light of radiance `radiance` in unit direction L.

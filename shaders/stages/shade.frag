@@ -9,6 +9,8 @@
 // the shader has no light loop and no code for a type the scene lacks; `light` is FLAT(i), a
 // flat input from mesh.vert, or BLOCK(i), read from the block (engine/gl/shader_specialisation.h
 // builds the list and says why).
+// PATINA_ENVIRONMENT: the scene's environment (environment.glsl) by the split sum, after the
+// lights in single and specialised, in a pass of its own (uLightIndex < 0) in multi.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -51,6 +53,13 @@ PackedLight flatLight(int i) {
 
 #ifndef PATINA_SINGLE_PASS
 uniform int uLightIndex;
+#endif
+
+#ifdef PATINA_ENVIRONMENT
+vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
+    return shadeEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentSH, uEnvironmentIntensity,
+                            uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, false);
+}
 #endif
 
 // Alpha: which strip wrote a sample (RenderTargets::SampleStamp). Only MSAA samples need it;
@@ -124,6 +133,14 @@ void main() {
         } while (++i < end);
     }
 #endif
+#endif
+#if defined(PATINA_SPECIALISED) || defined(PATINA_SINGLE_PASS)
+#ifdef PATINA_ENVIRONMENT
+    radiance += environmentRadiance(material, N, V);
+#endif
+#elif defined(PATINA_ENVIRONMENT)
+    radiance = uLightIndex < 0 ? environmentRadiance(material, N, V)
+                               : shadeLight(uLights[max(uLightIndex, 0)], material, vPosition, N, V);
 #else
     radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
 #endif

@@ -1,0 +1,71 @@
+#include "environment/environment.h"
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+#include "environment/builtin_environments.h"
+#include "environment/equirect.h"
+#include "shading/environment_brdf.h"
+
+namespace patina {
+
+std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::string source,
+                                                      const EnvironmentSettings& settings, const Progress& progress) {
+    auto environment = std::make_shared<Environment>();
+    environment->source = std::move(source);
+    environment->settings = settings;
+    environment->replacedPixels = replaceInvalidPixels(image);
+    const CubeChain cube = cubeMipChain(equirectToCube(image, cubeFaceSizeFor(image.width)));
+    environment->prefiltered = prefilterCube(cube, settings.prefilter, progress);
+    if (environment->prefiltered.empty()) {
+        return nullptr;
+    }
+    const ShCoefficients sh = projectSH(image);
+    environment->sh = settings.windowSH ? windowSH(sh) : sh;
+    environment->image = std::move(image);
+    return environment;
+}
+
+std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source) {
+    if (!source.starts_with("builtin:")) {
+        return nullptr;
+    }
+    static std::mutex mutex;
+    static std::map<std::string, std::shared_ptr<const Environment>> prepared;
+    std::lock_guard lock(mutex);
+    std::shared_ptr<const Environment>& environment = prepared[source];
+    if (!environment) {
+        std::optional<HdrImage> image = builtinEnvironment(std::string_view(source).substr(8));
+        if (!image) {
+            prepared.erase(source);
+            return nullptr;
+        }
+        environment = prepareEnvironment(std::move(*image), source);
+    }
+    return environment;
+}
+
+std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const Environment>& resolved,
+                                                   const std::string& source) {
+    if (resolved && resolved->source == source) {
+        return resolved;
+    }
+    if (std::shared_ptr<const Environment> builtin = preparedBuiltinEnvironment(source)) {
+        return builtin;
+    }
+    throw std::invalid_argument("the environment " + source + " was never loaded (resolveEnvironment)");
+}
+
+glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material, const Environment& environment,
+                                float intensity, float rotationDegrees, glm::vec3 N, glm::vec3 V, bool dominant) {
+    const std::function<glm::vec3(glm::vec3, float)> read = [&](glm::vec3 d, float lod) {
+        return sampleCube(environment.prefiltered, d, lod);
+    };
+    glm::vec3 sh[9];
+    std::copy(environment.sh.begin(), environment.sh.end(), sh);
+    return shadeEnvironment(model, read, environment.maxLod(), sh, intensity, rotationDegrees, material, N, V, dominant);
+}
+
+}  // namespace patina

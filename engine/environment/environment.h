@@ -1,0 +1,57 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "common/hdr_image.h"
+#include "environment/cube_map.h"
+#include "environment/prefilter.h"
+#include "environment/spherical_harmonics.h"
+#include "shading/brdf_model_id.h"
+#include "shading/shading.h"
+
+namespace patina {
+
+struct EnvironmentSettings {
+    PrefilterSettings prefilter;
+    bool windowSH = false;   // windowSH on top of the clamp (spherical_harmonics.h)
+    bool operator==(const EnvironmentSettings&) const = default;
+};
+
+// An environment made ready to light with: the source image at full resolution (the ground
+// truth and the coefficients read it, never the chain), the prefiltered chain and the
+// irradiance coefficients. Immutable once made; scenes share it (Scene::resolvedEnvironment).
+struct Environment {
+    std::string source;      // what it was made from: "builtin:studio", a path
+    HdrImage image;          // equirect, invalid pixels replaced
+    size_t replacedPixels = 0;
+    CubeChain prefiltered;
+    ShCoefficients sh{};
+    EnvironmentSettings settings;
+
+    float maxLod() const { return float(prefiltered.size() - 1); }
+};
+
+// Everything above from an equirect image; null when `progress` stopped it.
+std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::string source,
+                                                      const EnvironmentSettings& settings = {},
+                                                      const Progress& progress = {});
+
+// A built-in environment's source ("builtin:studio") made ready with the default settings,
+// once per process and shared; null for any other source. Scenes that name a built-in need not
+// be resolved by their loader: the renderer and the probes take it from here.
+std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source);
+
+// What a scene's environment light shows: `resolved` when it was made from `source`, else the
+// built-in it names;
+// std::invalid_argument for a file nobody loaded.
+std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const Environment>& resolved,
+                                                   const std::string& source);
+
+// The split sum on the CPU for `model`: the same code as the GPU's (ibl_model.glsl), reading
+// the chain with the seamless trilinear filter of cube_map.h.
+glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material, const Environment& environment,
+                                float intensity, float rotationDegrees, glm::vec3 N, glm::vec3 V, bool dominant = false);
+
+}  // namespace patina

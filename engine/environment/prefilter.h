@@ -1,0 +1,23 @@
+#pragma once
+#include <functional>
+
+#include "environment/cube_map.h"
+
+namespace patina {
+
+struct PrefilterSettings {
+    int levels = 6;          // mips of the prefiltered chain, r = 0 to 1 (fewer for a small source)
+    unsigned samples = 128;  // GGX samples per texel, read with filtered importance sampling
+    bool operator==(const PrefilterSettings&) const = default;
+};
+
+// Told the fraction done now and then, from any thread; false stops the work.
+using Progress = std::function<bool(float)>;
+
+// The prefiltered chain of Karis's split sum: level i holds LD for r = lodToRoughness(i, last)
+// (shaders/shared/ibl.glsl), level 0 the source's mip 0 itself (r = 0 is a mirror), each level
+// half the size of the one before. `source` is the full mip chain FIS reads. On every core;
+// empty when `progress` stopped it.
+CubeChain prefilterCube(const CubeChain& source, const PrefilterSettings& settings, const Progress& progress = {});
+
+}  // namespace patina

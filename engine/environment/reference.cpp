@@ -1,0 +1,172 @@
+#include "environment/reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "environment/equirect.h"
+#include "shading/brdf_models.h"
+#include "shading/cpu_shading.h"
+#include "shading/environment_brdf.h"
+
+namespace patina {
+
+namespace {
+constexpr float kPi = 3.14159265358979f;
+
+float luminance(const float* rgb) {
+    return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+}
+
+// The index i with cdf[i] <= u < cdf[i + 1] and how far into it u lies.
+std::pair<int, float> invert(const float* cdf, int count, float u) {
+    const float* at = std::upper_bound(cdf, cdf + count + 1, u);
+    const int i = std::clamp(int(at - cdf) - 1, 0, count - 1);
+    const float width = cdf[i + 1] - cdf[i];
+    return {i, width > 0.0f ? std::clamp((u - cdf[i]) / width, 0.0f, 1.0f) : 0.5f};
+}
+}  // namespace
+
+EnvironmentDistribution::EnvironmentDistribution(const HdrImage& image)
+    : width_(image.width), height_(image.height), rowCdf_(size_t(height_) + 1, 0.0f),
+      columnCdf_(size_t(height_) * size_t(width_ + 1), 0.0f), pixelPdf_(size_t(width_) * size_t(height_), 0.0f) {
+    // A floor keeps every direction possible (the bilinear image is not zero where a pixel is).
+    double total = 0.0;
+    std::vector<double> weights(pixelPdf_.size());
+    for (int y = 0; y < height_; ++y) {
+        const double sinTheta = std::sin((double(y) + 0.5) / height_ * double(kPi));
+        for (int x = 0; x < width_; ++x) {
+            const size_t i = size_t(y) * size_t(width_) + size_t(x);
+            weights[i] = (double(luminance(&image.rgb[i * 3])) + 1e-4) * sinTheta;
+            total += weights[i];
+        }
+    }
+    double rowSum = 0.0;
+    for (int y = 0; y < height_; ++y) {
+        double columnSum = 0.0;
+        float* columns = &columnCdf_[size_t(y) * size_t(width_ + 1)];
+        for (int x = 0; x < width_; ++x) {
+            columnSum += weights[size_t(y) * size_t(width_) + size_t(x)];
+        }
+        double running = 0.0;
+        for (int x = 0; x < width_; ++x) {
+            const double w = weights[size_t(y) * size_t(width_) + size_t(x)];
+            running += w;
+            columns[x + 1] = float(running / columnSum);
+            // Pixels cover 1 / (width height) of the unit uv square each.
+            pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] = float(w / total * double(width_) * double(height_));
+        }
+        columns[width_] = 1.0f;
+        rowSum += columnSum;
+        rowCdf_[size_t(y) + 1] = float(rowSum / total);
+    }
+    rowCdf_[size_t(height_)] = 1.0f;
+}
+
+EnvironmentDistribution::Sample EnvironmentDistribution::sample(float u1, float u2) const {
+    const auto [y, fy] = invert(rowCdf_.data(), height_, u1);
+    const auto [x, fx] = invert(&columnCdf_[size_t(y) * size_t(width_ + 1)], width_, u2);
+    const glm::vec2 uv((float(x) + fx) / float(width_), (float(y) + fy) / float(height_));
+    const glm::vec3 direction = shader::equirectToDirection(uv);
+    const float sinTheta = std::sin(uv.y * kPi);
+    const float pdf = sinTheta > 0.0f ? pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] / (2.0f * kPi * kPi * sinTheta)
+                                      : 0.0f;
+    return {direction, pdf};
+}
+
+float EnvironmentDistribution::pdf(glm::vec3 direction) const {
+    const glm::vec2 uv = shader::directionToEquirect(direction);
+    const int x = std::clamp(int(uv.x * float(width_)), 0, width_ - 1);
+    const int y = std::clamp(int(uv.y * float(height_)), 0, height_ - 1);
+    const float sinTheta = std::sin(uv.y * kPi);
+    return sinTheta > 0.0f ? pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+}
+
+namespace {
+// A unit vector around N distributed as NoL / pi (Malley's method).
+glm::vec3 sampleCosine(glm::vec2 u, glm::vec3 N) {
+    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+    const glm::vec3 up = std::abs(N.z) < 0.999f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    const glm::vec3 tx = glm::normalize(glm::cross(up, N)), ty = glm::cross(N, tx);
+    return tx * (r * std::cos(phi)) + ty * (r * std::sin(phi)) + N * std::sqrt(std::max(0.0f, 1.0f - u.x));
+}
+
+// pdf of L under GGX half-vector sampling: D(H) NoH / (4 VoH).
+float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha) {
+    const glm::vec3 H = shader::safeNormalize(V + L);
+    const float NoH = std::clamp(glm::dot(N, H), 0.0f, 1.0f), VoH = glm::dot(V, H);
+    if (VoH <= 0.0f) {
+        return 0.0f;
+    }
+    return shader::D_GGX(NoH, glm::cross(N, H), alpha) * NoH / (4.0f * VoH);
+}
+}  // namespace
+
+ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                    const ReferenceEnvironment& environment,
+                                    const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
+                                    glm::vec3 V, const ReferenceOptions& options) {
+    N = shader::safeNormalize(N);
+    V = shader::safeNormalize(V);
+    ReferenceEstimate estimate;
+    estimate.value = shadePoint(model, material, lights, P, N, V);
+    if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
+        return estimate;
+    }
+    const HdrImage& image = environment.environment->image;
+    const float radians = glm::radians(environment.rotationDegrees);
+    const float c = std::cos(radians), s = std::sin(radians);
+    auto radianceFrom = [&](glm::vec3 L) {
+        return environment.intensity * sampleEquirect(image, shader::toEnvironmentFrame(L, c, s));
+    };
+    auto integrand = [&](glm::vec3 L) {
+        const float NoL = glm::dot(N, L);
+        if (NoL <= 0.0f) {
+            return glm::vec3(0.0f);
+        }
+        const shader::BrdfValue f = evaluateBrdfUnderEnvironment(model, material, N, V, L);
+        const glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
+                                (options.specular ? f.specular : glm::vec3(0.0f));
+        return radianceFrom(L) * lobes * std::min(NoL, 1.0f);
+    };
+    // The three strategies' pdfs of one direction (0 where a strategy cannot make it).
+    auto pdfs = [&](glm::vec3 L) {
+        const float NoL = glm::dot(N, L);
+        const float ggx = NoL > 0.0f ? ggxPdf(N, V, L, material.alpha) : 0.0f;
+        const float cosine = std::max(NoL, 0.0f) / kPi;
+        const float env = environment.distribution->pdf(shader::toEnvironmentFrame(L, c, s));
+        return glm::vec3(ggx, cosine, env);
+    };
+    std::mt19937_64 random(options.seed);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    glm::dvec3 sum(0.0), sumSquares(0.0);
+    for (int i = 0; i < options.samples; ++i) {
+        glm::vec3 L[3];
+        const glm::vec3 H = shader::importanceSampleGGX(glm::vec2(uniform(random), uniform(random)), material.alpha, N);
+        L[0] = 2.0f * glm::dot(V, H) * H - V;
+        L[1] = sampleCosine(glm::vec2(uniform(random), uniform(random)), N);
+        const EnvironmentDistribution::Sample e = environment.distribution->sample(uniform(random), uniform(random));
+        L[2] = shader::toEnvironmentFrame(e.direction, c, -s);   // back to the world
+        glm::dvec3 x(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 p = pdfs(L[k]);
+            const float own = p[k];
+            const float squares = p.x * p.x + p.y * p.y + p.z * p.z;
+            if (own > 0.0f && squares > 0.0f) {
+                x += glm::dvec3(integrand(L[k]) * (own / squares));   // (own^2 / squares) / own
+            }
+        }
+        sum += x;
+        sumSquares += x * x;
+    }
+    const double n = double(options.samples);
+    const glm::dvec3 mean = sum / n;
+    const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) / std::max(n - 1.0, 1.0);
+    estimate.value += glm::vec3(mean);
+    estimate.standardError = glm::vec3(glm::sqrt(variance));
+    return estimate;
+}
+
+}  // namespace patina

@@ -1,0 +1,236 @@
+#include "image/environment_source.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <mutex>
+
+#include "environment/builtin_environments.h"
+#include "environment/equirect.h"
+#include "image/environment_files.h"
+#include "io/file_bytes.h"
+#include "io/input_error.h"
+#include "io/regular_file.h"
+
+namespace patina {
+
+namespace {
+// Bumped whenever the prefilter, the coefficients or the built-ins change what they make.
+constexpr uint32_t kCacheVersion = 1;
+constexpr uint64_t kMaxEnvironmentFileBytes = uint64_t(512) << 20;
+
+// FNV-1a, 64 bits: a cache key, not a defence against anyone.
+uint64_t hashBytes(const void* data, size_t size, uint64_t hash = 0xcbf29ce484222325ull) {
+    const auto* bytes = static_cast<const uint8_t*>(data);
+    for (size_t i = 0; i < size; ++i) {
+        hash = (hash ^ bytes[i]) * 0x100000001b3ull;
+    }
+    return hash;
+}
+
+uint64_t settingsHash(const EnvironmentSettings& settings, uint64_t hash) {
+    const int32_t values[] = {int32_t(kCacheVersion), settings.prefilter.levels, int32_t(settings.prefilter.samples),
+                              settings.windowSH ? 1 : 0};
+    return hashBytes(values, sizeof values, hash);
+}
+
+// The cache file: "PATINAENV", version, level count, each level's size and texels, the 27
+// coefficients. Floats as the machine stores them (a cache, not an interchange format).
+std::vector<uint8_t> serialise(const Environment& environment) {
+    size_t total = 9 + 4 + 4 + sizeof environment.sh;
+    for (const CubeLevel& level : environment.prefiltered) {
+        total += 4 + 6 * level.faces[0].size() * sizeof(float);
+    }
+    std::vector<uint8_t> bytes(total);
+    size_t at = 0;
+    auto put = [&](const void* data, size_t size) {
+        std::memcpy(bytes.data() + at, data, size);
+        at += size;
+    };
+    put("PATINAENV", 9);
+    put(&kCacheVersion, 4);
+    const uint32_t levels = uint32_t(environment.prefiltered.size());
+    put(&levels, 4);
+    for (const CubeLevel& level : environment.prefiltered) {
+        const int32_t size = level.size;
+        put(&size, 4);
+        for (const std::vector<float>& face : level.faces) {
+            put(face.data(), face.size() * sizeof(float));
+        }
+    }
+    put(environment.sh.data(), sizeof environment.sh);
+    return bytes;
+}
+
+// False for a file that is not a complete cache entry of this version (then it is remade).
+bool deserialise(const std::vector<uint8_t>& bytes, Environment& environment) {
+    size_t at = 0;
+    auto get = [&](void* data, size_t size) {
+        if (bytes.size() - at < size) {
+            return false;
+        }
+        std::memcpy(data, bytes.data() + at, size);
+        at += size;
+        return true;
+    };
+    char magic[9];
+    uint32_t version = 0, levels = 0;
+    if (!get(magic, 9) || std::memcmp(magic, "PATINAENV", 9) != 0 || !get(&version, 4) || version != kCacheVersion ||
+        !get(&levels, 4) || levels == 0 || levels > 16) {
+        return false;
+    }
+    CubeChain chain;
+    for (uint32_t i = 0; i < levels; ++i) {
+        int32_t size = 0;
+        if (!get(&size, 4) || size < 1 || size > 4096) {
+            return false;
+        }
+        CubeLevel level(size);
+        for (std::vector<float>& face : level.faces) {
+            if (!get(face.data(), face.size() * sizeof(float))) {
+                return false;
+            }
+        }
+        chain.push_back(std::move(level));
+    }
+    if (!get(environment.sh.data(), sizeof environment.sh) || at != bytes.size()) {
+        return false;
+    }
+    environment.prefiltered = std::move(chain);
+    return true;
+}
+
+// A source read but not yet decoded: its key (contents and settings) decides whether it must be.
+struct Source {
+    std::vector<uint8_t> bytes;   // a file's; empty for a built-in
+    uint64_t key = 0;
+};
+
+Source readSource(const std::string& source, const EnvironmentSettings& settings) {
+    if (source.starts_with("builtin:")) {
+        if (!builtinEnvironment(std::string_view(source).substr(8)).has_value()) {
+            throw InputError(source + ": no such built-in environment");
+        }
+        return {{}, settingsHash(settings, hashBytes(source.data(), source.size()))};
+    }
+    RegularFile file(source, 0, source);
+    file.requireAtMost(kMaxEnvironmentFileBytes, "environment images");
+    Source read{file.readAll(), 0};
+    read.key = settingsHash(settings, hashBytes(read.bytes.data(), read.bytes.size()));
+    return read;
+}
+
+HdrImage decodeSource(const std::string& source, const Source& read) {
+    if (source.starts_with("builtin:")) {
+        return *builtinEnvironment(std::string_view(source).substr(8));
+    }
+    return decodeEnvironmentImage(read.bytes, source);
+}
+
+std::shared_ptr<const Environment> fromDiskCache(HdrImage& image, uint64_t key, const std::string& source,
+                                                 const EnvironmentSettings& settings) {
+    const std::filesystem::path folder = environmentCacheFolder();
+    if (folder.empty()) {
+        return nullptr;
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "%016llx.env", static_cast<unsigned long long>(key));
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(folder / name, error)) {
+        return nullptr;
+    }
+    auto environment = std::make_shared<Environment>();
+    try {
+        if (!deserialise(readFileBytes(folder / name), *environment)) {
+            return nullptr;
+        }
+    } catch (const std::exception&) {
+        return nullptr;   // unreadable: made again, and written over
+    }
+    environment->source = source;
+    environment->settings = settings;
+    environment->replacedPixels = replaceInvalidPixels(image);
+    environment->image = std::move(image);
+    return environment;
+}
+
+void toDiskCache(const Environment& environment, uint64_t key) {
+    const std::filesystem::path folder = environmentCacheFolder();
+    if (folder.empty()) {
+        return;
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "%016llx.env", static_cast<unsigned long long>(key));
+    try {
+        std::filesystem::create_directories(folder);
+        writeFileAtomic(folder / name, serialise(environment));
+    } catch (const std::exception&) {
+        // A cache that cannot be written costs the next start the prefilter, nothing else.
+    }
+}
+}  // namespace
+
+std::filesystem::path environmentCacheFolder() {
+    if (const char* dir = std::getenv("PATINA_CACHE_DIR"); dir && *dir) {
+        return dir;
+    }
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+        return std::filesystem::path(xdg) / "patina";
+    }
+    if (const char* home = std::getenv("HOME"); home && *home) {
+        return std::filesystem::path(home) / ".cache" / "patina";
+    }
+    return {};
+}
+
+std::shared_ptr<const Environment> loadEnvironment(const std::string& source, std::vector<std::string>& warnings,
+                                                   const EnvironmentSettings& settings, const Progress& progress) {
+    if (settings == EnvironmentSettings{}) {
+        if (std::shared_ptr<const Environment> builtin = preparedBuiltinEnvironment(source)) {
+            return builtin;   // generated, and quicker to make again than to read from disk
+        }
+    }
+    const Source read = readSource(source, settings);
+    static std::mutex mutex;
+    static std::map<uint64_t, std::weak_ptr<const Environment>> shared;
+    std::shared_ptr<const Environment> environment;
+    {
+        std::lock_guard lock(mutex);
+        environment = shared[read.key].lock();
+    }
+    if (!environment) {
+        const uint64_t key = read.key;
+        HdrImage image = decodeSource(source, read);
+        environment = fromDiskCache(image, key, source, settings);
+        if (!environment) {
+            environment = prepareEnvironment(std::move(image), source, settings, progress);
+            if (!environment) {
+                return nullptr;
+            }
+            toDiskCache(*environment, key);
+        }
+        std::lock_guard lock(mutex);
+        shared[key] = environment;
+    }
+    if (environment->replacedPixels > 0) {
+        warnings.push_back(source + ": " + std::to_string(environment->replacedPixels) +
+                           " pixels were NaN, infinite or negative and were set to 0");
+    }
+    return environment;
+}
+
+void resolveEnvironment(Scene& scene, std::vector<std::string>& warnings) {
+    const Light* light = enabledEnvironment(scene);
+    if (light && scene.resolvedEnvironment && scene.resolvedEnvironment->source == light->source) {
+        return;   // already the one it names
+    }
+    if (light && light->source.starts_with("builtin:")) {
+        // Made when first drawn (environmentShown): a command that never shades, or a scene
+        // whose built-in is replaced before it is drawn, never pays the prefilter.
+        scene.resolvedEnvironment = nullptr;
+        return;
+    }
+    scene.resolvedEnvironment = light ? loadEnvironment(light->source, warnings) : nullptr;
+}
+
+}  // namespace patina

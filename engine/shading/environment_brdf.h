@@ -1,0 +1,41 @@
+#pragma once
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "shading/shading.h"
+
+namespace patina {
+
+enum class BrdfModelId;
+
+// A model's environment BRDF (A, B) of Karis 2013 eq. 8, kEnvironmentBrdfSize^2 values, NoV and
+// r at i / (size - 1), row-major by r, integrated in fp32 by the shared GLSL
+// (shaders/shared/ibl_model.glsl) with kEnvironmentBrdfSamples Hammersley points per texel on
+// first use (thread-safe). Kept as 32-bit floats: 8 bits band, and sRGB would be wrong.
+constexpr int kEnvironmentBrdfSize = 64;
+constexpr unsigned kEnvironmentBrdfSamples = 1024;
+const std::vector<glm::vec2>& environmentBrdfTable(BrdfModelId id);
+
+// The table at any size and sample count, for the accuracy measurements (a LUT's resolution
+// is one of the split sum's error sources).
+std::vector<glm::vec2> integrateEnvironmentBrdfTable(BrdfModelId id, int size, unsigned samples);
+// (A, B) integrated at one point, and the table interpolated as the shaders do it.
+glm::vec2 integrateEnvironmentBrdf(BrdfModelId id, float NoV, float roughness, unsigned samples);
+glm::vec2 environmentBrdf(BrdfModelId id, float NoV, float roughness);
+
+// The split sum of ibl_model.glsl for `id`: specular LD (F0 A + B) plus Lambert c_diff / pi E.
+glm::vec3 splitSum(BrdfModelId id, const shader::SurfaceMaterial& material, float NoV, glm::vec3 prefiltered,
+                   glm::vec3 irradiance);
+
+// shadeEnvironment of ibl_model.glsl for `id` (the CPU side of the GPU's split sum).
+glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod,
+                           const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                           const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant);
+
+// The model's f under an environment (environmentVisibility), for the ground truth.
+shader::BrdfValue evaluateBrdfUnderEnvironment(BrdfModelId id, const shader::SurfaceMaterial& material,
+                                               glm::vec3 N, glm::vec3 V, glm::vec3 L);
+
+}  // namespace patina

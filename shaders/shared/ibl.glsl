@@ -1,0 +1,139 @@
+// Image-based lighting, the parts every BRDF model shares (Karis 2013, "Real Shading in Unreal
+// Engine 4", section "Image-based lighting"): the Hammersley set and GGX sampler that the
+// tables, the prefilter and the ground truth all use, the prefilter itself, the roughness-to-mip
+// mapping, the equirect convention and the 9-coefficient irradiance. Shared GLSL / C++ like
+// brdf.glsl; include after it. The includer defines, before this file:
+//   EnvironmentSource                          the prefilter's source (samplerCube on the GPU)
+//   sampleEnvironmentSource(source, dir, lod)  its trilinear, seamless read at a mip level
+
+// Van der Corput radical inverse in base 2 (Hammersley's second coordinate): the bits reversed.
+PATINA_INLINE real radicalInverse(uint bits) {
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return real(bits) * 2.3283064365386963e-10f;
+}
+
+// Point i of an n-point Hammersley set in [0, 1)^2 (Karis 2013, listing Hammersley), the
+// first coordinate at the middle of its stratum.
+PATINA_INLINE vec2 hammersley(uint i, uint n) {
+    return vec2((real(i) + 0.5f) / real(n), radicalInverse(i));
+}
+
+// A half vector around N distributed as D(H) NoH for GGX (Karis 2013, listing
+// ImportanceSampleGGX; Walter et al. 2007, eqs. 35-36): cos^2 theta = (1 - u) / (1 + (a^2 - 1) u).
+PATINA_INLINE vec3 importanceSampleGGX(vec2 xi, real alpha, vec3 N) {
+    real a2 = alpha * alpha;
+    real phi = 2.0f * PATINA_PI * xi.x;
+    real cosTheta = sqrt((1.0f - xi.y) / (1.0f + (a2 - 1.0f) * xi.y));
+    real sinTheta = sqrt(max(1.0f - cosTheta * cosTheta, 0.0f));
+    // Any tangent frame will do; this one is Karis's.
+    vec3 up = abs(N.z) < 0.999f ? vec3(0.0f, 0.0f, 1.0f) : vec3(1.0f, 0.0f, 0.0f);
+    vec3 tangentX = normalize(cross(up, N));
+    vec3 tangentY = cross(N, tangentX);
+    return tangentX * (sinTheta * cos(phi)) + tangentY * (sinTheta * sin(phi)) + N * cosTheta;
+}
+
+// Equirect convention (docs/FORMATS.md): +Y up, row 0 the zenith, the image's centre along -Z.
+// u = 0.5 + atan2(d.x, -d.z) / (2 pi), v = acos(d.y) / pi.
+PATINA_INLINE vec2 directionToEquirect(vec3 d) {
+    real u = 0.5f + atan(d.x, -d.z) / (2.0f * PATINA_PI);
+    real v = acos(clamp(d.y, -1.0f, 1.0f)) / PATINA_PI;
+    return vec2(u, v);
+}
+
+PATINA_INLINE vec3 equirectToDirection(vec2 uv) {
+    real phi = (uv.x - 0.5f) * 2.0f * PATINA_PI;
+    real theta = uv.y * PATINA_PI;
+    return vec3(sin(theta) * sin(phi), cos(theta), -sin(theta) * cos(phi));
+}
+
+// A world direction in the environment's own frame: `rotationDegrees` turns the environment
+// about +Y, so a world direction looks up the image turned back by it. Background and lighting
+// both go through this one function.
+PATINA_INLINE vec3 toEnvironmentFrame(vec3 d, real cosRotation, real sinRotation) {
+    return vec3(cosRotation * d.x - sinRotation * d.z, d.y, sinRotation * d.x + cosRotation * d.z);
+}
+
+// The prefiltered chain's mip for perceptual roughness r, and its inverse (Filament's mapping,
+// lod = maxLod r (2 - r)): r = 0 is mip 0 alone, r = 1 the last mip, and the rough end, where
+// the lobe changes slowly, gets fewer mips than the glossy end.
+PATINA_INLINE real roughnessToLod(real roughness, real maxLod) {
+    real r = clamp(roughness, 0.0f, 1.0f);
+    return maxLod * r * (2.0f - r);
+}
+
+PATINA_INLINE real lodToRoughness(real lod, real maxLod) {
+    real t = clamp(lod / maxLod, 0.0f, 1.0f);
+    return 1.0f - sqrt(1.0f - t);
+}
+
+// The prefiltered radiance LD(R, r) with N = V = R (Karis 2013, listing PrefilterEnvMap): the
+// environment summed over GGX-sampled L, weighted by NoL. Each sample reads the source at the
+// mip whose texel covers the sample's solid angle (filtered importance sampling, Krivanek and
+// Colbert 2008, GPU Gems 3 ch. 20, eq. 13): lod = 0.5 log2(Omega_s / Omega_p) + 1 with
+// Omega_s = 1 / (n pdf), pdf = D / 4 when N = V, Omega_p = 4 pi / (6 w^2) for faces of w texels.
+// It is what keeps a small bright sun from turning into a few fireflies.
+PATINA_INLINE vec3 prefilterEnvironment(EnvironmentSource source, vec3 R, real roughness, uint samples,
+                                        real sourceFaceSize) {
+    real alpha = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
+    alpha = alpha * alpha;
+    vec3 N = R;
+    vec3 V = R;
+    real texelSolidAngle = 4.0f * PATINA_PI / (6.0f * sourceFaceSize * sourceFaceSize);
+    vec3 sum = vec3(0.0f);
+    real weight = 0.0f;
+    for (uint i = 0u; i < samples; ++i) {
+        vec3 H = importanceSampleGGX(hammersley(i, samples), alpha, N);
+        real VoH = dot(V, H);
+        vec3 L = 2.0f * VoH * H - V;
+        real NoL = dot(N, L);
+        if (NoL > 0.0f) {
+            real NoH = clamp(dot(N, H), 0.0f, 1.0f);
+            real pdf = D_GGX(NoH, cross(N, H), alpha) * 0.25f;
+            real sampleSolidAngle = 1.0f / (real(samples) * pdf);
+            real lod = max(0.5f * log2(sampleSolidAngle / texelSolidAngle) + 1.0f, 0.0f);
+            sum += sampleEnvironmentSource(source, L, lod) * NoL;
+            weight += NoL;
+        }
+    }
+    return weight > 0.0f ? sum / weight : vec3(0.0f);
+}
+
+// Irradiance E(n) from the 9 coefficients L_lm of the radiance (Ramamoorthi and Hanrahan 2001,
+// "An Efficient Representation for Irradiance Environment Maps", eqs. 3, 7 and 8):
+// E(n) = sum over l <= 2 of A_l L_lm Y_lm(n), A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
+// Nine terms cannot represent a small bright source: the series rings, and on the far side of a
+// sun it goes negative. The guard is the clamp at 0 here (and, when chosen, a window the
+// coefficients carry already; environment/spherical_harmonics.h).
+PATINA_INLINE real shBasis(int index, vec3 n) {
+    if (index == 0) return 0.282095f;
+    if (index == 1) return 0.488603f * n.y;
+    if (index == 2) return 0.488603f * n.z;
+    if (index == 3) return 0.488603f * n.x;
+    if (index == 4) return 1.092548f * n.x * n.y;
+    if (index == 5) return 1.092548f * n.y * n.z;
+    if (index == 6) return 0.315392f * (3.0f * n.z * n.z - 1.0f);
+    if (index == 7) return 1.092548f * n.x * n.z;
+    return 0.546274f * (n.x * n.x - n.y * n.y);
+}
+
+PATINA_INLINE real shBandFactor(int index) {
+    if (index == 0) return PATINA_PI;
+    if (index < 4) return 2.0f * PATINA_PI / 3.0f;
+    return PATINA_PI / 4.0f;
+}
+
+PATINA_INLINE vec3 irradianceSHUnclamped(vec3 coefficients[9], vec3 n) {
+    vec3 sum = vec3(0.0f);
+    for (int i = 0; i < 9; ++i) {
+        sum += coefficients[i] * (shBandFactor(i) * shBasis(i, n));
+    }
+    return sum;
+}
+
+PATINA_INLINE vec3 irradianceSH(vec3 coefficients[9], vec3 n) {
+    return max(irradianceSHUnclamped(coefficients, n), vec3(0.0f));
+}

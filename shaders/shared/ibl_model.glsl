@@ -1,0 +1,99 @@
+// Image-based lighting, the parts that depend on the BRDF model: its environment BRDF table
+// and the split sum (Karis 2013, "Image-based lighting", eqs. 6-8). Shared GLSL / C++; include
+// after brdf_model.glsl and ibl.glsl. The includer defines environmentBrdfTexel(x, y), the
+// model's (A, B) at NoV = x / 63, r = y / 63 (a texelFetch on the GPU, the table on the CPU), so
+// both sides interpolate with the same arithmetic, as energy_table.glsl does.
+const int ENVIRONMENT_BRDF_SIZE = 64;
+
+// Fc, the weight of (1 - F0) in the model's Fresnel: F = F0 (1 - Fc) + Fc. The exact dielectric
+// Fresnel is not of this form; its table takes Schlick's (1 - VoH)^5 (docs/LIGHTING.md measures it).
+PATINA_INLINE real fresnelWeight(real VoH) {
+#if PATINA_F == PATINA_F_SCHLICK_SG
+    return exp2((-5.55473f * VoH - 6.98316f) * VoH);
+#else
+    real m = clamp(1.0f - VoH, 0.0f, 1.0f);
+    real m2 = m * m;
+    return m2 * m2 * m;
+#endif
+}
+
+// (A, B) of Karis 2013 eq. 8 (listing IntegrateBRDF): the specular lobe with F split out,
+// V = (sqrt(1 - NoV^2), 0, NoV) about N = +Z, H from the shared GGX sampler;
+// G_Vis = G VoH / (NoH NoV) = Vis 4 NoL VoH / NoH with Vis = G / (4 NoL NoV).
+PATINA_INLINE vec2 integrateEnvironmentBrdf(real NoV, real roughness, uint samples) {
+    SurfaceMaterial material = deriveSurfaceMaterial(vec3(1.0f), roughness, 0.5f, 0.0f);
+    NoV = max(NoV, MIN_N_DOT_V);
+    vec3 N = vec3(0.0f, 0.0f, 1.0f);
+    vec3 V = vec3(sqrt(max(1.0f - NoV * NoV, 0.0f)), 0.0f, NoV);
+    real a = 0.0f;
+    real b = 0.0f;
+    for (uint i = 0u; i < samples; ++i) {
+        vec3 H = importanceSampleGGX(hammersley(i, samples), material.alpha, N);
+        real VoH = clamp(dot(V, H), 0.0f, 1.0f);
+        vec3 L = 2.0f * VoH * H - V;
+        real NoL = L.z;
+        real NoH = H.z;
+        if (NoL > 0.0f && NoH > 0.0f) {
+            real gVis = environmentVisibility(NoV, min(NoL, 1.0f), material) * 4.0f * NoL * VoH / NoH;
+            real fc = fresnelWeight(VoH);
+            a += (1.0f - fc) * gVis;
+            b += fc * gVis;
+        }
+    }
+    return vec2(a, b) / real(samples);
+}
+
+// Bilinear lookup in the model's table.
+PATINA_INLINE vec2 environmentBrdfLookup(real NoV, real roughness) {
+    real x = clamp(NoV, 0.0f, 1.0f) * real(ENVIRONMENT_BRDF_SIZE - 1);
+    real y = clamp(roughness, 0.0f, 1.0f) * real(ENVIRONMENT_BRDF_SIZE - 1);
+    int x0 = min(int(x), ENVIRONMENT_BRDF_SIZE - 2);
+    int y0 = min(int(y), ENVIRONMENT_BRDF_SIZE - 2);
+    real fx = x - real(x0);
+    real fy = y - real(y0);
+    vec2 bottom = mix(environmentBrdfTexel(x0, y0), environmentBrdfTexel(x0 + 1, y0), fx);
+    vec2 top = mix(environmentBrdfTexel(x0, y0 + 1), environmentBrdfTexel(x0 + 1, y0 + 1), fx);
+    return mix(bottom, top, fy);
+}
+
+// Where the split sum reads the prefiltered chain: R = reflect(-V, N), or with `dominant` the
+// "dominant direction" mix(R, N, alpha^2) that Frostbite and Filament use to make up for N = V
+// in the prefilter (Lagarde and de Rousiers 2014, section 4.9.3).
+PATINA_INLINE vec3 environmentReflection(SurfaceMaterial material, vec3 N, vec3 V, bool dominant) {
+    vec3 R = reflect(-V, N);
+    if (dominant) {
+        real a2 = material.alpha * material.alpha;
+        return normalize(mix(R, N, a2));
+    }
+    return R;
+}
+
+// The split sum: LD (F0 A + B) for the specular (Karis 2013, eq. 8), with the model's Turquin
+// compensation taken from the same table (E = A + B), plus the Lambert diffuse c_diff / pi E(N)
+// from the spherical harmonics. Models with Burley's diffuse take Lambert's here.
+PATINA_INLINE vec3 splitSum(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
+    vec2 ab = environmentBrdfLookup(NoV, material.roughness);
+    vec3 specular = prefiltered * (material.f0 * ab.x + vec3(ab.y));
+#if PATINA_MS == PATINA_MS_TURQUIN
+    real albedo = max(ab.x + ab.y, 1e-4f);
+    specular *= vec3(1.0f) + material.f0 * (1.0f / albedo - 1.0f);
+#endif
+#if defined(PATINA_NO_DIFFUSE)
+    return specular;
+#else
+    return specular + Fd_Lambert(material.diffuseColor) * irradiance;
+#endif
+}
+
+// Outgoing radiance towards V from an environment of `intensity` turned by (cosRotation,
+// sinRotation) about +Y: the split sum, LD read from the prefiltered chain at roughnessToLod
+// and E from the coefficients, both in the environment's frame.
+PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, vec3 coefficients[9], real intensity,
+                                    real cosRotation, real sinRotation, SurfaceMaterial material, vec3 N, vec3 V,
+                                    bool dominant) {
+    real NoV = max(dot(N, V), MIN_N_DOT_V);
+    vec3 R = toEnvironmentFrame(environmentReflection(material, N, V, dominant), cosRotation, sinRotation);
+    vec3 ld = sampleEnvironmentSource(prefiltered, R, roughnessToLod(material.roughness, maxLod));
+    vec3 irradiance = irradianceSH(coefficients, toEnvironmentFrame(N, cosRotation, sinRotation));
+    return intensity * splitSum(material, NoV, ld, irradiance);
+}

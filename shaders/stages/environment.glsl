@@ -1,0 +1,16 @@
+// GPU side of image-based lighting (shaders/shared/ibl.glsl, ibl_model.glsl): the prefiltered
+// chain as a cube map (GL_TEXTURE_CUBE_MAP_SEAMLESS on), the model's (A, B) table read texel
+// by texel as energy_texel.glsl reads E, and the light's uniforms. Include before ibl.glsl.
+#define EnvironmentSource samplerCube
+#define sampleEnvironmentSource(source, direction, lod) textureLod(source, direction, lod).rgb
+
+uniform samplerCube uEnvironmentMap;
+uniform float uEnvironmentMaxLod;
+uniform float uEnvironmentIntensity;
+uniform vec2 uEnvironmentRotation;   // cos, sin of rotationDegrees
+uniform vec3 uEnvironmentSH[9];
+uniform sampler2D uEnvironmentBrdf;
+
+vec2 environmentBrdfTexel(int x, int y) {
+    return texelFetch(uEnvironmentBrdf, ivec2(x, y), 0).rg;
+}

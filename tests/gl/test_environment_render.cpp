@@ -1,0 +1,163 @@
+// The environment on the GPU: the split sum in the shader against the same code on the CPU,
+// the three render paths, the background, rotation, and a metal that looks like metal.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "environment/environment.h"
+#include "gl/gpu_probe.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+Light studio(float rotation = 0.0f) {
+    Light light;
+    light.type = LightType::Environment;
+    light.source = "builtin:studio";
+    light.rotationDegrees = rotation;
+    return light;
+}
+
+std::vector<ProbeSample> randomProbes(int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::vector<ProbeSample> samples;
+    for (int i = 0; i < count; ++i) {
+        const glm::vec3 N = test::randomUnitVector(rng);
+        glm::vec3 V = test::randomUnitVector(rng);
+        if (glm::dot(N, V) < 0.05f) {
+            V = glm::normalize(V + N * (0.05f - glm::dot(N, V) + 0.2f));
+        }
+        samples.push_back({glm::vec3(0.0f), N, V});
+    }
+    return samples;
+}
+
+TEST(EnvironmentRender, TheGpuSplitSumAgreesWithTheCpu) {
+    // The same shared code; the GPU's trilinear, seamless cube-map filter is the only difference
+    // allowed (issue 18: 1e-3 relative).
+    test::glContext();
+    GpuProbe probe;
+    double worst = 0.0;
+    for (float roughness : {0.0f, 0.15f, 0.4f, 0.8f, 1.0f}) {
+        for (float metallic : {0.0f, 1.0f}) {
+            Material material;
+            material.baseColor = {0.9f, 0.5f, 0.2f};
+            material.roughness = roughness;
+            material.metallic = metallic;
+            for (float rotation : {0.0f, 33.0f}) {
+                const std::vector<Light> lights{studio(rotation)};
+                const std::vector<ProbeSample> samples = randomProbes(256, 7);
+                const std::vector<glm::vec3> gpu = probe.evaluate(material, lights, samples);
+                const std::vector<glm::vec3> cpu = probeOnCpu(material, lights, samples);
+                std::vector<reference::Vec3> expected;
+                for (const glm::vec3& c : cpu) {
+                    expected.push_back(test::toReference(c));
+                }
+                worst = std::max(worst, test::maxRelativeError(gpu, expected, 1e-2));
+            }
+        }
+    }
+    RecordProperty("max_relative_error", std::to_string(worst));
+    // Measured: 2e-6 (the CPU filter reproduces Mesa's seamless corners); the issue asks 1e-3.
+    EXPECT_LE(worst, 1e-4);
+}
+
+Scene environmentScene(RenderPath) {
+    Scene scene;
+    scene.material.baseColor = {0.95f, 0.64f, 0.54f};
+    scene.material.metallic = 1.0f;
+    scene.material.roughness = 0.3f;
+    Light key;
+    key.position = {1.0f, 2.0f, 2.0f};
+    key.intensity = 4.0f;
+    scene.lights = {key, studio(20.0f)};
+    return scene;
+}
+
+double maxDifference(const HdrImage& a, const HdrImage& b) {
+    double worst = 0.0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        worst = std::max(worst, double(std::abs(a.rgb[i] - b.rgb[i])) / std::max(1.0, double(std::abs(b.rgb[i]))));
+    }
+    return worst;
+}
+
+TEST(EnvironmentRender, TheThreePathsAgree) {
+    test::glContext();
+    Renderer renderer;
+    for (bool background : {false, true}) {
+        Scene scene = environmentScene(RenderPath::Single);
+        scene.display.backgroundFromEnvironment = background;
+        scene.display.backgroundBlur = 0.2f;
+        const HdrImage single = renderer.render(scene, test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;
+        const HdrImage multi = renderer.render(scene, test::renderSettings(96, 96, RenderPath::Multi, 1)).hdr;
+        const HdrImage specialised =
+            renderer.render(scene, test::renderSettings(96, 96, RenderPath::Specialised, 1)).hdr;
+        EXPECT_LE(maxDifference(multi, single), 1e-5) << background;
+        EXPECT_LE(maxDifference(specialised, single), 1e-5) << background;
+        // And with MSAA, whose resolve must count the background as drawn.
+        // (Only on average: MSAA changes the silhouette's pixels.)
+        const HdrImage msaa = renderer.render(scene, test::renderSettings(96, 96, RenderPath::Single, 4)).hdr;
+        double sum = 0.0;
+        for (size_t i = 0; i < msaa.rgb.size(); ++i) {
+            sum += std::abs(msaa.rgb[i] - single.rgb[i]);
+        }
+        EXPECT_LE(sum / double(msaa.rgb.size()), 0.02) << background;
+    }
+}
+
+TEST(EnvironmentRender, AMetalUnderTheStudioIsNotABlackBall) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene;
+    scene.material.baseColor = {1.0f, 0.77f, 0.34f};
+    scene.material.metallic = 1.0f;
+    scene.material.roughness = 0.25f;
+    scene.lights = {studio()};
+    const HdrImage image = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    // The centre of the sphere reflects the studio behind the camera: bright and gold.
+    const float* centre = &image.rgb[(size_t(32) * 64 + 32) * 3];
+    EXPECT_GT(centre[0], 0.1f);
+    EXPECT_GT(centre[0], centre[2]);
+    // Without the environment the same metal under no light is black.
+    scene.lights.clear();
+    const HdrImage dark = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    EXPECT_EQ(dark.rgb[(size_t(32) * 64 + 32) * 3], 0.0f);
+}
+
+TEST(EnvironmentRender, TheBackgroundIsTheEnvironmentAndTurnsWithIt) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene;
+    scene.lights = {studio()};
+    scene.display.backgroundFromEnvironment = true;
+    const HdrImage a = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    // The corner shows the environment, not the clear colour.
+    EXPECT_NE(a.rgb[0], scene.display.background.x);
+    scene.lights[0].rotationDegrees = 360.0f;
+    const HdrImage turnedRound = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    EXPECT_LE(maxDifference(turnedRound, a), 1e-3);
+    scene.lights[0].rotationDegrees = 90.0f;
+    const HdrImage turned = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    EXPECT_GT(maxDifference(turned, a), 0.05);
+    // Without "environment" the background stays the colour.
+    scene.display.backgroundFromEnvironment = false;
+    const HdrImage plain = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    EXPECT_FLOAT_EQ(plain.rgb[0], scene.display.background.x);
+}
+
+TEST(EnvironmentRender, AnUnloadedFileIsAnErrorNotABlackImage) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene;
+    Light file = studio();
+    file.source = "/nowhere/sky.hdr";
+    scene.lights = {file};
+    EXPECT_THROW(renderer.render(scene, test::renderSettings(16, 16, RenderPath::Single, 1)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace patina
