@@ -149,15 +149,10 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
                                    " (expected \"none\", \"aces\", \"reinhard\" or \"pbr-neutral\")");
     }
     display.tonemap = *parsed;
-    // A colour, or "environment": the scene's environment itself, blurred to a roughness.
-    if (const Json* background = reader.child("background"); background && background->is_string()) {
-        if (background->get<std::string>() != "environment") {
-            reader.fail("background", "expected a colour [r, g, b] or \"environment\"");
-        }
-        display.backgroundFromEnvironment = true;
-    } else {
-        display.background = reader.vec3("background", display.background, kNonNegative);
-    }
+    display.background = reader.vec3("background", display.background, kNonNegative);
+    // The scene's environment itself behind the mesh, blurred to a roughness (the colour stays
+    // for a scene without one).
+    display.backgroundFromEnvironment = reader.boolean("backgroundEnvironment", false);
     display.backgroundBlur = reader.number("backgroundBlur", display.backgroundBlur, kUnit);
     display.extras = reader.keepUnknown(warnings);
     return display;
@@ -338,8 +333,9 @@ namespace {
 Json displayToJson(const DisplaySettings& display) {
     Json json{{"exposure", toJson(display.exposure)},
               {"tonemap", tonemapName(display.tonemap)},
-              {"background", display.backgroundFromEnvironment ? Json("environment") : toJson(display.background)}};
+              {"background", toJson(display.background)}};
     if (display.backgroundFromEnvironment || display.backgroundBlur != 0.0f) {
+        json["backgroundEnvironment"] = display.backgroundFromEnvironment;
         json["backgroundBlur"] = toJson(display.backgroundBlur);
     }
     return json;

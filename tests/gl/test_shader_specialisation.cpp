@@ -10,8 +10,23 @@
 namespace patina {
 namespace {
 
+// One analytic light of each type (the embedded default before it took an environment): what
+// specialisation compiles per light.
+Scene threeLightScene() {
+    Scene scene = defaultScene();
+    Light sky;
+    sky.type = LightType::Hemisphere;
+    sky.name = "sky";
+    sky.intensity = 0.8f;
+    sky.sky = {0.22f, 0.3f, 0.45f};
+    sky.ground = {0.12f, 0.09f, 0.06f};
+    std::erase_if(scene.lights, [](const Light& light) { return light.type == LightType::Environment; });
+    scene.lights.push_back(sky);
+    return scene;
+}
+
 TEST(ShaderSpecialisation, DefaultSceneListsItsThreeLightsInOrder) {
-    const Scene scene = defaultScene();
+    const Scene scene = threeLightScene();
     const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
     EXPECT_EQ(key.lights, "SHADE_POINT(BLOCK(0), true, true) SHADE_DIRECTIONAL(BLOCK(1)) SHADE_HEMISPHERE(BLOCK(2))");
     EXPECT_FALSE(key.noDiffuse);
@@ -19,7 +34,7 @@ TEST(ShaderSpecialisation, DefaultSceneListsItsThreeLightsInOrder) {
 
 // The first lights that fit come from mesh.vert as flat inputs, the rest from the block.
 TEST(ShaderSpecialisation, LightsPastTheFlatSlotsComeFromTheBlock) {
-    const Scene scene = defaultScene();
+    const Scene scene = threeLightScene();
     const std::vector<shader::PackedLight> lights = packEnabledLights(scene.lights);
     const ShaderSpecialisation key = specialiseFor(lights, scene.material, 2);
     EXPECT_EQ(key.lights, "SHADE_POINT(FLAT(0), true, true) SHADE_DIRECTIONAL(FLAT(1)) SHADE_HEMISPHERE(BLOCK(2))");
@@ -55,7 +70,7 @@ TEST(ShaderSpecialisation, FlatLightsPayOnlyWherePixelsOutnumberTrianglesDrawn) 
 }
 
 TEST(ShaderSpecialisation, DisabledLightsAndUnwindowedPointsCompileLess) {
-    Scene scene = defaultScene();
+    Scene scene = threeLightScene();
     scene.lights[1].enabled = false;
     scene.lights[0].range = 0.0f;
     const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
@@ -65,17 +80,17 @@ TEST(ShaderSpecialisation, DisabledLightsAndUnwindowedPointsCompileLess) {
 
 // Karis's coefficients compile as constants; any other set is read from the light.
 TEST(ShaderSpecialisation, OnlyKarisCoefficientsCompileAsConstants) {
-    Scene scene = defaultScene();
+    Scene scene = threeLightScene();
     scene.lights[0].attenuation = {1.0f, 0.0f, 0.5f};
     EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material, 0).lights,
               "SHADE_POINT(BLOCK(0), true, false) SHADE_DIRECTIONAL(BLOCK(1)) SHADE_HEMISPHERE(BLOCK(2))");
-    scene.lights.push_back(defaultScene().lights[0]);   // Karis's again, packed after the other point
+    scene.lights.push_back(threeLightScene().lights[0]);   // Karis's again, packed after the other point
     EXPECT_EQ(specialiseFor(packEnabledLights(scene.lights), scene.material, 0).lights,
               "SHADE_POINT(BLOCK(0), true, false) SHADE_POINT(BLOCK(1), true, true) SHADE_DIRECTIONAL(BLOCK(2)) SHADE_HEMISPHERE(BLOCK(3))");
 }
 
 TEST(ShaderSpecialisation, PureMetalDropsDiffuseAndTheHemisphereLight) {
-    Scene scene = defaultScene();
+    Scene scene = threeLightScene();
     scene.material.metallic = 1.0f;
     ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
     EXPECT_TRUE(key.noDiffuse);
@@ -89,7 +104,7 @@ TEST(ShaderSpecialisation, PureMetalDropsDiffuseAndTheHemisphereLight) {
 }
 
 TEST(ShaderSpecialisation, KeysDifferOnlyWhenTheShaderWould) {
-    Scene a = defaultScene();
+    Scene a = threeLightScene();
     Scene b = a;
     b.lights[0].position = {9.0f, 1.0f, 0.0f};   // a uniform: same shader
     b.material.roughness = 0.9f;
@@ -105,7 +120,7 @@ TEST(ShadingPrograms, SinglePassReadsCoefficientsOnlyWhenAPointLightNeedsThem) {
     auto karis = [](const Scene& scene) {
         return ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)).karisPoints;
     };
-    Scene scene = defaultScene();
+    Scene scene = threeLightScene();
     EXPECT_TRUE(karis(scene));
     EXPECT_TRUE(ShadingPrograms::singlePassFor({}).karisPoints);
     scene.lights.push_back(scene.lights[0]);
@@ -121,7 +136,7 @@ TEST(ShadingPrograms, SinglePassReadsCoefficientsOnlyWhenAPointLightNeedsThem) {
 // Single has a loop for each light type the scene draws, and none for the others.
 TEST(ShadingPrograms, SinglePassLoopsOnlyOverTheTypesPresent) {
     using SinglePass = ShadingPrograms::SinglePass;
-    const Scene scene = defaultScene();   // one light of each type
+    const Scene scene = threeLightScene();   // one light of each type
     const SinglePass all = ShadingPrograms::singlePassFor(packEnabledLights(scene.lights));
     EXPECT_TRUE(all.points && all.directionals && all.hemispheres);
     EXPECT_EQ(all.defines(), (std::vector<std::string>{"PATINA_SINGLE_PASS", "PATINA_KARIS_POINTS"}));

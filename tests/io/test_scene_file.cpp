@@ -271,3 +271,36 @@ TEST(JsonWriter, WritesWhatReadsBackTheSame) {
 
 }  // namespace
 }  // namespace patina
+
+namespace patina {
+namespace {
+
+TEST(SceneFile, AnEnvironmentLightRoundTripsAndASecondOneIsAnError) {
+    std::vector<std::string> warnings;
+    const Json json = Json::parse(R"({"format": "patina-scene", "version": 2,
+        "lights": [{"type": "environment", "source": "sky.hdr", "intensity": 2, "rotationDegrees": 45}],
+        "display": {"backgroundEnvironment": true, "backgroundBlur": 0.3}})");
+    const Scene scene = sceneFromJson(json, "s.json", "/scenes", warnings);
+    ASSERT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].type, LightType::Environment);
+    EXPECT_EQ(scene.lights[0].source, "/scenes/sky.hdr");   // relative to the scene file
+    EXPECT_EQ(scene.lights[0].rotationDegrees, 45.0f);
+    EXPECT_TRUE(scene.display.backgroundFromEnvironment);
+    EXPECT_EQ(sceneFromJson(sceneToJson(scene), "again.json", "/elsewhere", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+
+    Json two = json;
+    two["lights"].push_back(two["lights"][0]);
+    EXPECT_THROW(sceneFromJson(two, "s.json", "/scenes", warnings), InputError);
+    Json unknown = json;
+    unknown["lights"][0]["source"] = "builtin:moon";
+    try {
+        sceneFromJson(unknown, "s.json", "/scenes", warnings);
+        FAIL() << "an unknown built-in loaded";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("builtin:studio"), std::string::npos) << error.what();
+    }
+}
+
+}  // namespace
+}  // namespace patina
