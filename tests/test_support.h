@@ -12,6 +12,8 @@
 #include "scene/probe.h"
 #include "reference_shading.h"
 #include "scene/scene.h"
+#include "common/hdr_image.h"
+#include "shading/shading.h"
 
 namespace patina::test {
 
@@ -33,5 +35,22 @@ glm::dvec3 vectorAtCosine(glm::dvec3 axis, double cosine, std::mt19937& rng);
 // |a - b| / |b| per channel where |b| > floor; the largest one.
 double maxRelativeError(const std::vector<glm::vec3>& values,
                         const std::vector<reference::Vec3>& reference, double floor);
+
+// An equirect image of radiance `f(direction)` at its pixel centres (environment tests).
+template <typename F>
+HdrImage equirectOf(int width, int height, F f) {
+    HdrImage image{width, height, std::vector<float>(size_t(width) * size_t(height) * 3)};
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const glm::vec3 d = shader::equirectToDirection(
+                glm::vec2((float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height)));
+            const glm::vec3 value = f(d);
+            for (int c = 0; c < 3; ++c) {
+                image.rgb[(size_t(y) * size_t(width) + size_t(x)) * 3 + size_t(c)] = value[c];
+            }
+        }
+    }
+    return image;
+}
 
 }  // namespace patina::test

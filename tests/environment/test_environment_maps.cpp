@@ -22,22 +22,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// An equirect image of radiance `f(direction)` at its pixel centres.
-template <typename F>
-HdrImage equirectOf(int width, int height, F f) {
-    HdrImage image{width, height, std::vector<float>(size_t(width) * size_t(height) * 3)};
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const glm::vec3 d = shader::equirectToDirection(
-                glm::vec2((float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height)));
-            const glm::vec3 value = f(d);
-            for (int c = 0; c < 3; ++c) {
-                image.rgb[(size_t(y) * size_t(width) + size_t(x)) * 3 + size_t(c)] = value[c];
-            }
-        }
-    }
-    return image;
-}
 
 TEST(CubeMap, EveryFaceMapsBackToItself) {
     std::mt19937 rng(3);
@@ -136,7 +120,7 @@ TEST(PrefilterMips, RoughnessAndLodAreInverses) {
 TEST(SphericalHarmonics, ALinearEnvironmentHasItsExactIrradiance) {
     // Env = a + b d.y is exactly bands 0 and 1: E(n) = pi a + (2 pi / 3) b n.y (spec section 3).
     const float a = 0.7f, b = 0.4f;
-    const HdrImage image = equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); });
+    const HdrImage image = test::equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); });
     const ShCoefficients sh = projectSH(image);
     std::mt19937 rng(9);
     for (int i = 0; i < 50; ++i) {
@@ -148,7 +132,7 @@ TEST(SphericalHarmonics, ALinearEnvironmentHasItsExactIrradiance) {
 
 TEST(SphericalHarmonics, TheClampKeepsASunsFarSideAtZero) {
     // A small bright sun: nine terms ring, and the far side goes negative without the guard.
-    const HdrImage image = equirectOf(256, 128, [](glm::vec3 d) {
+    const HdrImage image = test::equirectOf(256, 128, [](glm::vec3 d) {
         return glm::vec3(glm::dot(d, glm::vec3(0, 1, 0)) > 0.999f ? 5000.0f : 0.0f);
     });
     const ShCoefficients sh = projectSH(image);

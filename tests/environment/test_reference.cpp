@@ -17,21 +17,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-template <typename F>
-HdrImage equirectOf(int width, int height, F f) {
-    HdrImage image{width, height, std::vector<float>(size_t(width) * size_t(height) * 3)};
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const glm::vec3 d = shader::equirectToDirection(
-                glm::vec2((float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(height)));
-            const glm::vec3 value = f(d);
-            for (int c = 0; c < 3; ++c) {
-                image.rgb[(size_t(y) * size_t(width) + size_t(x)) * 3 + size_t(c)] = value[c];
-            }
-        }
-    }
-    return image;
-}
 
 struct Fixture {
     std::shared_ptr<const Environment> environment;
@@ -72,7 +57,7 @@ TEST(Reference, WhiteFurnaceGivesTheModelsDirectionalAlbedo) {
 }
 
 TEST(Reference, AnEnvironmentOfHeightAloneIsInvariantUnderRotation) {
-    const Fixture sky(equirectOf(128, 64, [](glm::vec3 d) {
+    const Fixture sky(test::equirectOf(128, 64, [](glm::vec3 d) {
         return glm::vec3(0.2f + std::max(d.y, 0.0f) * 3.0f, 0.5f, 0.1f + d.y * d.y);
     }));
     Material material;
@@ -95,7 +80,7 @@ TEST(Reference, ALinearEnvironmentHasTheExactDiffuseIrradiance) {
     // Env = a + b d.y: E(n) = pi a + (2 pi / 3) b n.y, so a white Lambert surface returns
     // a + (2 / 3) b n.y (spec section 3).
     const float a = 0.6f, b = 0.35f;
-    const Fixture linear(equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); }));
+    const Fixture linear(test::equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); }));
     Material white;
     white.baseColor = glm::vec3(1.0f);
     white.roughness = 0.7f;
@@ -127,7 +112,7 @@ TEST(Reference, AnalyticLightsAreAddedExactly) {
 }
 
 TEST(EnvironmentDistribution, ThePdfIntegratesToOneAndMatchesTheSamples) {
-    const HdrImage image = equirectOf(64, 32, [](glm::vec3 d) { return glm::vec3(1.0f + 10.0f * std::max(d.x, 0.0f)); });
+    const HdrImage image = test::equirectOf(64, 32, [](glm::vec3 d) { return glm::vec3(1.0f + 10.0f * std::max(d.x, 0.0f)); });
     const EnvironmentDistribution distribution(image);
     // Monte Carlo over uniform directions: the mean of pdf / (1 / 4 pi) is 1.
     std::mt19937 rng(11);
