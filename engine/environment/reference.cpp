@@ -116,8 +116,8 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
         return estimate;
     }
     const HdrImage& image = environment.environment->image;
-    const float radians = glm::radians(environment.rotationDegrees);
-    const float c = std::cos(radians), s = std::sin(radians);
+    const glm::vec2 rotation = environmentRotation(environment.rotationDegrees);
+    const float c = rotation.x, s = rotation.y;
     auto radianceFrom = [&](glm::vec3 L) {
         return environment.intensity * sampleEquirect(image, shader::toEnvironmentFrame(L, c, s));
     };

@@ -1,12 +1,10 @@
 #include "gl/shading_inputs.h"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include <glm/trigonometric.hpp>
-
 #include "scene/light_packing.h"
+#include "shading/environment_brdf.h"
 
 namespace patina {
 
@@ -73,12 +71,11 @@ void LightBuffer::attach(const GlProgram& program) {
 }
 
 void setEnvironmentUniforms(const GlProgram& program, const Environment& environment, const Light& light, int unit) {
-    // The same cos and sin the CPU takes (environment/environment.h's shadeEnvironmentOnCpu).
-    const float radians = glm::radians(light.rotationDegrees);
+    const glm::vec2 rotation = environmentRotation(light.rotationDegrees);   // as the CPU turns it
     glUniform1i(program.uniform("uEnvironmentMap"), unit);
     glUniform1f(program.uniform("uEnvironmentMaxLod"), environment.maxLod());
     glUniform1f(program.uniform("uEnvironmentIntensity"), light.intensity);
-    glUniform2f(program.uniform("uEnvironmentRotation"), std::cos(radians), std::sin(radians));
+    glUniform2f(program.uniform("uEnvironmentRotation"), rotation.x, rotation.y);
     glUniform3fv(program.uniform("uEnvironmentSH"), 9, &environment.sh[0].x);
 }
 

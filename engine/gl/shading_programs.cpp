@@ -74,7 +74,6 @@ ShadingPrograms::SinglePass ShadingPrograms::singlePassFor(const std::vector<sha
     pass.points = counts.y > 0;
     pass.directionals = counts.z > 0;
     pass.hemispheres = counts.w > 0;
-    pass.environment = false;   // the renderer sets it: packed lights hold no environment
     pass.karisPoints = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
         return light.type != shader::LIGHT_POINT || hasKarisAttenuation(light);
     });
@@ -147,18 +146,25 @@ const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const Shader
     return bind(model, program, key.environment);
 }
 
+namespace {
+// A square table of 32-bit floats, read by texelFetch only: the shared GLSL interpolates it
+// itself (energy_table.glsl's tableCoordinate), so the CPU and the GPU use the same arithmetic.
+// Never 8 bits or sRGB: a table of those bands (spec section 2).
+unsigned tableTexture(GLint internalFormat, GLenum format, int size, const void* data) {
+    unsigned texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, size, size, 0, format, GL_FLOAT, data);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return texture;
+}
+}  // namespace
+
 unsigned ShadingPrograms::environmentBrdfTexture(BrdfModelId model) {
     unsigned& texture = environmentBrdfTextures_[model];
     if (!texture) {
-        const std::vector<glm::vec2>& table = environmentBrdfTable(model);
-        glGenTextures(1, &texture);
-        glBindTexture(GL_TEXTURE_2D, texture);
-        // 32-bit floats: an 8-bit or sRGB table bands (spec section 2).
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, kEnvironmentBrdfSize, kEnvironmentBrdfSize, 0, GL_RG, GL_FLOAT,
-                     table.data());
-        // texelFetch only: ibl_model.glsl interpolates itself.
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        texture = tableTexture(GL_RG32F, GL_RG, kEnvironmentBrdfSize, environmentBrdfTable(model).data());
     }
     return texture;
 }
@@ -166,14 +172,7 @@ unsigned ShadingPrograms::environmentBrdfTexture(BrdfModelId model) {
 unsigned ShadingPrograms::energyTexture(BrdfModelId model) {
     unsigned& texture = energyTextures_[model];
     if (!texture) {
-        const std::vector<float>& table = energyTable(model);
-        glGenTextures(1, &texture);
-        glBindTexture(GL_TEXTURE_2D, texture);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kEnergyTableSize, kEnergyTableSize, 0, GL_RED, GL_FLOAT,
-                     table.data());
-        // texelFetch only: shaders/shared/energy_table.glsl interpolates itself.
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        texture = tableTexture(GL_R32F, GL_RED, kEnergyTableSize, energyTable(model).data());
     }
     return texture;
 }

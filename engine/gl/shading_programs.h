@@ -22,7 +22,9 @@ public:
     struct SinglePass {
         bool points = true, directionals = true, hemispheres = true;
         bool karisPoints = false;
-        bool environment = false;   // the scene's environment after the lights
+        // The scene's environment after the lights; the renderer sets it (singlePassFor sees
+        // only packed lights, which hold no environment).
+        bool environment = false;
         std::vector<std::string> defines() const;
         auto operator<=>(const SinglePass&) const = default;
     };

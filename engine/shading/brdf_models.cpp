@@ -137,21 +137,16 @@ glm::vec2 environmentBrdf(BrdfModelId id, float NoV, float roughness) {
     return glm::vec2(0.0f);
 }
 
-glm::vec3 splitSum(BrdfModelId id, const shader::SurfaceMaterial& material, float NoV, glm::vec3 prefiltered,
-                   glm::vec3 irradiance) {
-    switch (id) {
-#define PATINA_SPLIT_SUM(model, name, summary) PATINA_CASE(shader, model, splitSum(material, NoV, prefiltered, irradiance))
-        PATINA_BRDF_MODELS(PATINA_SPLIT_SUM)
-#undef PATINA_SPLIT_SUM
-    }
-    return glm::vec3(0.0f);
+glm::vec2 environmentRotation(float rotationDegrees) {
+    const float radians = glm::radians(rotationDegrees);
+    return {std::cos(radians), std::sin(radians)};
 }
 
 glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod,
                            const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
                            const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant) {
-    const float radians = glm::radians(rotationDegrees);
-    const float c = std::cos(radians), s = std::sin(radians);
+    const glm::vec2 rotation = environmentRotation(rotationDegrees);
+    const float c = rotation.x, s = rotation.y;
     glm::vec3 sh[9];
     std::copy(std::begin(coefficients), std::end(coefficients), sh);
     switch (id) {

@@ -11,14 +11,10 @@ namespace patina {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// Van der Corput radical inverse in base 2: the second coordinate of the Hammersley set.
+// Van der Corput radical inverse in base 2 (the second coordinate of the Hammersley set), in
+// double: the shared bit reversal of ibl.glsl, divided without fp32's rounding.
 double radicalInverse(unsigned bits) {
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return double(bits) * 2.3283064365386963e-10;
+    return double(shader::reverseBits(bits)) * 2.3283064365386963e-10;
 }
 
 std::vector<float> integrateTable(BrdfModelId id) {

@@ -25,9 +25,9 @@ std::vector<glm::vec2> integrateEnvironmentBrdfTable(BrdfModelId id, int size, u
 glm::vec2 integrateEnvironmentBrdf(BrdfModelId id, float NoV, float roughness, unsigned samples);
 glm::vec2 environmentBrdf(BrdfModelId id, float NoV, float roughness);
 
-// The split sum of ibl_model.glsl for `id`: specular LD (F0 A + B) plus Lambert c_diff / pi E.
-glm::vec3 splitSum(BrdfModelId id, const shader::SurfaceMaterial& material, float NoV, glm::vec3 prefiltered,
-                   glm::vec3 irradiance);
+// (cos, sin) of an environment light's rotationDegrees: what shadeEnvironment takes, on the
+// CPU and as the GPU's uniform, computed once here so both turn by the same floats.
+glm::vec2 environmentRotation(float rotationDegrees);
 
 // shadeEnvironment of ibl_model.glsl for `id` (the CPU side of the GPU's split sum).
 glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod,

@@ -6,14 +6,20 @@
 //   EnvironmentSource                          the prefilter's source (samplerCube on the GPU)
 //   sampleEnvironmentSource(source, dir, lod)  its trilinear, seamless read at a mip level
 
-// Van der Corput radical inverse in base 2 (Hammersley's second coordinate): the bits reversed.
-PATINA_INLINE real radicalInverse(uint bits) {
+// The 32 bits of `bits` in reverse order.
+PATINA_INLINE uint reverseBits(uint bits) {
     bits = (bits << 16u) | (bits >> 16u);
     bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
     bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
     bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
     bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return real(bits) * 2.3283064365386963e-10f;
+    return bits;
+}
+
+// Van der Corput radical inverse in base 2 (Hammersley's second coordinate): the bits
+// reversed, as a fraction of 2^32.
+PATINA_INLINE real radicalInverse(uint bits) {
+    return real(reverseBits(bits)) * 2.3283064365386963e-10f;
 }
 
 // Point i of an n-point Hammersley set in [0, 1)^2 (Karis 2013, listing Hammersley), the

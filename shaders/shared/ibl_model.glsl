@@ -1,6 +1,6 @@
 // Image-based lighting, the parts that depend on the BRDF model: its environment BRDF table
 // and the split sum (Karis 2013, "Image-based lighting", eqs. 6-8). Shared GLSL / C++; include
-// after brdf_model.glsl and ibl.glsl. The includer defines environmentBrdfTexel(x, y), the
+// after energy_table.glsl, brdf_model.glsl and ibl.glsl. The includer defines environmentBrdfTexel(x, y), the
 // model's (A, B) at NoV = x / 63, r = y / 63 (a texelFetch on the GPU, the table on the CPU), so
 // both sides interpolate with the same arithmetic, as energy_table.glsl does.
 const int ENVIRONMENT_BRDF_SIZE = 64;
@@ -43,17 +43,12 @@ PATINA_INLINE vec2 integrateEnvironmentBrdf(real NoV, real roughness, uint sampl
     return vec2(a, b) / real(samples);
 }
 
-// Bilinear lookup in the model's table.
+// Bilinear lookup in the model's table, placed as the energy table's (energy_table.glsl).
 PATINA_INLINE vec2 environmentBrdfLookup(real NoV, real roughness) {
-    real x = clamp(NoV, 0.0f, 1.0f) * real(ENVIRONMENT_BRDF_SIZE - 1);
-    real y = clamp(roughness, 0.0f, 1.0f) * real(ENVIRONMENT_BRDF_SIZE - 1);
-    int x0 = min(int(x), ENVIRONMENT_BRDF_SIZE - 2);
-    int y0 = min(int(y), ENVIRONMENT_BRDF_SIZE - 2);
-    real fx = x - real(x0);
-    real fy = y - real(y0);
-    vec2 bottom = mix(environmentBrdfTexel(x0, y0), environmentBrdfTexel(x0 + 1, y0), fx);
-    vec2 top = mix(environmentBrdfTexel(x0, y0 + 1), environmentBrdfTexel(x0 + 1, y0 + 1), fx);
-    return mix(bottom, top, fy);
+    TableCoordinate c = tableCoordinate(NoV, roughness, ENVIRONMENT_BRDF_SIZE);
+    vec2 bottom = mix(environmentBrdfTexel(c.x0, c.y0), environmentBrdfTexel(c.x0 + 1, c.y0), c.fx);
+    vec2 top = mix(environmentBrdfTexel(c.x0, c.y0 + 1), environmentBrdfTexel(c.x0 + 1, c.y0 + 1), c.fx);
+    return mix(bottom, top, c.fy);
 }
 
 // Where the split sum reads the prefiltered chain: R = reflect(-V, N), or with `dominant` the
