@@ -47,6 +47,7 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
+    resolveEnvironmentShown(state);
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();

@@ -244,6 +244,7 @@ void applyScene(EditorState& state, const Scene& scene) {
     state.scene.mesh = scene.mesh;
     state.scene.meshFile = scene.meshFile;
     state.scene.resolvedMesh = scene.resolvedMesh;
+    state.scene.resolvedEnvironment = scene.resolvedEnvironment;
     state.scene.display = scene.display;
     state.scene.extras = scene.extras;
     state.soloLight = -1;
@@ -305,12 +306,34 @@ bool setEnvironmentSource(EditorState& state, const std::string& source) {
             s.scene.resolvedEnvironment = environment;   // kept while disabled, for the checkbox
         });
         state.selectedLight = index;
+        state.environmentFailed.clear();
         state.error = joinWarnings(warnings);
         state.status = "Environment " + environmentName(source);
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();   // the previous environment stays
         return false;
+    }
+}
+
+void resolveEnvironmentShown(EditorState& state) {
+    const int index = environmentIndex(state);
+    if (index < 0) {
+        return;
+    }
+    const std::string& source = state.scene.lights[size_t(index)].source;
+    const std::shared_ptr<const Environment>& resolved = state.scene.resolvedEnvironment;
+    if (source.starts_with("builtin:") || (resolved && resolved->source == source) ||
+        state.environmentFailed == source) {
+        return;
+    }
+    std::vector<std::string> warnings;
+    try {
+        state.scene.resolvedEnvironment = loadEnvironment(source, warnings);
+        state.environmentFailed.clear();
+    } catch (const std::exception& error) {
+        state.error = error.what();
+        state.environmentFailed = source;
     }
 }
 
@@ -391,7 +414,9 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
 }
 
 void requestOpen(EditorState& state, const std::filesystem::path& path) {
-    if (state.dirty()) {
+    // An environment image changes one light, undoably: nothing unsaved is replaced.
+    const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
+    if (state.dirty() && !environment) {
         state.pendingOpen = path;
     } else {
         openFile(state, path);

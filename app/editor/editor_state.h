@@ -74,6 +74,9 @@ struct EditorState {
     std::string error;                       // shown until dismissed
     std::string status;                      // last completed action
     std::optional<std::filesystem::path> pendingOpen;   // waits for "discard changes?"
+    // An environment file that could not be loaded for the light naming it (its error shown
+    // once, not every frame); cleared when a load succeeds.
+    std::string environmentFailed;
     bool pendingQuit = false;
     bool quitConfirmed = false;
     bool showShortcuts = false;
@@ -115,6 +118,10 @@ void addLight(EditorState& state, LightType type);
 // there is none: loaded (and prefiltered) first, so a file that cannot be read leaves the
 // previous environment as it was and says why in state.error. Undoable.
 bool setEnvironmentSource(EditorState& state, const std::string& source);
+// Makes scene.resolvedEnvironment the file the environment light names, whatever changed the
+// light (open, undo, autosave restore): loaded through loadEnvironment's cache when it does
+// not match. Built-ins need nothing (the renderer makes them). Run once a frame, before drawing.
+void resolveEnvironmentShown(EditorState& state);
 // "studio" for builtin:studio, a file's stem.
 std::string environmentName(const std::string& source);
 void duplicateLight(EditorState& state, int index);

@@ -217,6 +217,52 @@ TEST_F(EditorStateTest, OpeningASceneBringsItsLightsAndCamera) {
     EXPECT_EQ(state.scene.material.name, "from scene");
 }
 
+// A tiny flat Radiance file (width < 8 is never run-length encoded) of one grey `level`
+// (RGBE with exponent 129: mantissa / 256 * 2).
+fs::path writeHdr(const fs::path& path, uint8_t level) {
+    std::ofstream out(path, std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
+    for (int i = 0; i < 8; ++i) {
+        out << char(level) << char(level) << char(level) << char(129);
+    }
+    return path;
+}
+
+TEST_F(EditorStateTest, AnOpenedScenesEnvironmentFileIsWhatItShows) {
+    Scene scene = defaultScene();
+    scene.lights[2].source = writeHdr(dir_ / "sky.hdr", 64).string();
+    std::ofstream(dir_ / "lit.json") << prettyJson(sceneToJson(scene));
+    ASSERT_TRUE(openFile(state, dir_ / "lit.json")) << state.error;
+    // Loaded by the open, and kept by it (it used to be dropped: "never loaded" in the viewport).
+    ASSERT_TRUE(state.scene.resolvedEnvironment);
+    EXPECT_EQ(state.scene.resolvedEnvironment->source, scene.lights[2].source);
+}
+
+TEST_F(EditorStateTest, UndoingAnEnvironmentBringsBackTheImageItNamed) {
+    const std::string first = writeHdr(dir_ / "first.hdr", 64).string();
+    const std::string second = writeHdr(dir_ / "second.hdr", 200).string();
+    ASSERT_TRUE(setEnvironmentSource(state, first)) << state.error;
+    ASSERT_TRUE(setEnvironmentSource(state, second)) << state.error;
+    undo(state);
+    resolveEnvironmentShown(state);
+    ASSERT_TRUE(state.scene.resolvedEnvironment);
+    EXPECT_EQ(state.scene.resolvedEnvironment->source, first);
+    // A file that cannot be read is said once and the light is left as it is.
+    std::filesystem::remove(dir_ / "second.hdr");
+    redo(state);
+    resolveEnvironmentShown(state);
+    EXPECT_NE(state.error.find("second.hdr"), std::string::npos) << state.error;
+    EXPECT_EQ(state.environmentFailed, second);
+}
+
+TEST_F(EditorStateTest, OpeningAnEnvironmentImageWhileDirtyDoesNotAsk) {
+    state.scene.material.roughness = 0.12f;
+    requestOpen(state, writeHdr(dir_ / "sky.hdr", 64));
+    EXPECT_FALSE(state.pendingOpen.has_value());
+    ASSERT_TRUE(state.scene.resolvedEnvironment) << state.error;
+    EXPECT_EQ(state.scene.material.roughness, 0.12f);   // nothing else changed
+}
+
 TEST_F(EditorStateTest, AnOpenedScenesUnknownKeysSurviveEditsAndUndo) {
     Scene scene = defaultScene();
     scene.extras["author"] = "me";
