@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(0, 1);
     patina::editor::EditorOptions editor;   // its start time: now, for --stats
     app.add_option("file", editor.files, "Without a subcommand: open the editor on this material or scene (.json), "
-                                         "Patina screenshot (.png) or glTF model (.gltf, .glb)");
+                                         "Patina screenshot (.png), glTF model (.gltf, .glb) or environment image "
+                                         "(.hdr, .exr)");
     app.add_flag("--stats", editor.stats, "Editor: log time to first frame, frame times while dragging and peak "
                                           "memory to stderr");
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
