@@ -90,7 +90,11 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     light.type = *type;
     light.name = reader.string("name", std::string(lightTypeName(light.type)));
     light.enabled = reader.boolean("enabled", true);
-    light.color = reader.vec3("color", light.color, kNonNegative);
+    // An environment's colour is its image's: a "color" key there is another type's key, kept
+    // as unknown (read, it would be lost on save, which writes none).
+    if (light.type != LightType::Environment) {
+        light.color = reader.vec3("color", light.color, kNonNegative);
+    }
     light.intensity = reader.number("intensity", light.intensity, kNonNegative);
     switch (light.type) {
     case LightType::Point:
