@@ -17,7 +17,7 @@ namespace patina {
 
 namespace {
 // Bumped whenever the prefilter, the coefficients or the built-ins change what they make.
-constexpr uint32_t kCacheVersion = 1;
+constexpr uint32_t kCacheVersion = 2;   // 2: the lod mapping starts at the roughness floor
 constexpr uint64_t kMaxEnvironmentFileBytes = uint64_t(512) << 20;
 
 // FNV-1a, 64 bits: a cache key, not a defence against anyone.

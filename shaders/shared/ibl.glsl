@@ -63,17 +63,21 @@ PATINA_INLINE vec3 toEnvironmentFrame(vec3 d, real cosRotation, real sinRotation
     return vec3(cosRotation * d.x - sinRotation * d.z, d.y, sinRotation * d.x + cosRotation * d.z);
 }
 
-// The prefiltered chain's mip for perceptual roughness r, and its inverse (Filament's mapping,
-// lod = maxLod r (2 - r)): r = 0 is mip 0 alone, r = 1 the last mip, and the rough end, where
-// the lobe changes slowly, gets fewer mips than the glossy end.
+// The prefiltered chain's mip for perceptual roughness r, and its inverse: Filament's
+// lod = maxLod t (2 - t) (the rough end, where the lobe changes slowly, gets fewer mips than the
+// glossy end), with t the roughness above the BRDF's floor, t = (r - r_min) / (1 - r_min).
+// Mip 0 is the unfiltered source and the floor's lobe (alpha = 0.045^2, a tenth of a degree) is
+// narrower than its texels, so every r at or below the floor reads mip 0 alone: with t = r the
+// floor would read lod 0.44 and blend a mirror with mip 1 (spec section 5, "r = 0 blending mip
+// 0 and 1"). r = 1 reads the last mip.
 PATINA_INLINE real roughnessToLod(real roughness, real maxLod) {
-    real r = clamp(roughness, 0.0f, 1.0f);
-    return maxLod * r * (2.0f - r);
+    real t = clamp((roughness - MIN_PERCEPTUAL_ROUGHNESS) / (1.0f - MIN_PERCEPTUAL_ROUGHNESS), 0.0f, 1.0f);
+    return maxLod * t * (2.0f - t);
 }
 
 PATINA_INLINE real lodToRoughness(real lod, real maxLod) {
-    real t = clamp(lod / maxLod, 0.0f, 1.0f);
-    return 1.0f - sqrt(1.0f - t);
+    real t = 1.0f - sqrt(1.0f - clamp(lod / maxLod, 0.0f, 1.0f));
+    return MIN_PERCEPTUAL_ROUGHNESS + (1.0f - MIN_PERCEPTUAL_ROUGHNESS) * t;
 }
 
 // The prefiltered radiance LD(R, r) with N = V = R (Karis 2013, listing PrefilterEnvMap): the

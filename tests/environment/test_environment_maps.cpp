@@ -106,15 +106,48 @@ TEST(Equirect, InvalidPixelsAreReplacedAndCounted) {
 
 TEST(PrefilterMips, RoughnessAndLodAreInverses) {
     const float maxLod = 5.0f;
-    EXPECT_EQ(shader::roughnessToLod(0.0f, maxLod), 0.0f);   // r = 0 reads mip 0 alone
+    const float floor = shader::MIN_PERCEPTUAL_ROUGHNESS;
+    EXPECT_EQ(shader::roughnessToLod(0.0f, maxLod), 0.0f);     // r = 0 reads mip 0 alone,
+    EXPECT_EQ(shader::roughnessToLod(floor, maxLod), 0.0f);    // as does the floor it shades with
     EXPECT_EQ(shader::roughnessToLod(1.0f, maxLod), maxLod);
+    EXPECT_GT(shader::roughnessToLod(floor + 0.01f, maxLod), 0.0f);
     for (int i = 0; i <= 100; ++i) {
-        const float r = float(i) / 100.0f;
+        const float r = std::max(float(i) / 100.0f, floor);
         EXPECT_NEAR(shader::lodToRoughness(shader::roughnessToLod(r, maxLod), maxLod), r, 2e-4f);
     }
     for (int lod = 0; lod <= 5; ++lod) {
         EXPECT_NEAR(shader::roughnessToLod(shader::lodToRoughness(float(lod), maxLod), maxLod), float(lod), 1e-5f);
     }
+    EXPECT_FLOAT_EQ(shader::lodToRoughness(0.0f, maxLod), floor);
+}
+
+TEST(SplitSum, ASmoothMetalReadsMipZeroAlone) {
+    // The shading floors r at 0.045; that floor must still read the unfiltered mip, not a blend
+    // with mip 1 (spec section 5). The studio's mips differ, so a blend would show.
+    const auto studio = preparedBuiltinEnvironment("builtin:studio");
+    ASSERT_TRUE(studio);
+    Material mirror;
+    mirror.baseColor = glm::vec3(1.0f);
+    mirror.metallic = 1.0f;
+    bool mipsDiffer = false;
+    for (float r : {0.0f, 0.02f, shader::MIN_PERCEPTUAL_ROUGHNESS}) {
+        mirror.roughness = r;
+        const shader::SurfaceMaterial m = surfaceMaterial(mirror);
+        for (int i = 0; i < 32; ++i) {
+            const float a = 0.7f * float(i), NoV = 0.15f + 0.8f * float(i % 8) / 8.0f;
+            const glm::vec3 N = glm::normalize(glm::vec3(std::cos(a), 0.4f * std::sin(3.0f * a), std::sin(a)));
+            const glm::vec3 T = glm::normalize(glm::cross(N, glm::vec3(0.0f, 1.0f, 0.1f)));
+            const glm::vec3 V = NoV * N + std::sqrt(1.0f - NoV * NoV) * T;
+            const glm::vec3 R = glm::reflect(-V, N);
+            const glm::vec3 mip0 = sampleCubeLevel(studio->prefiltered[0], R);
+            mipsDiffer |= glm::length(mip0 - sampleCubeLevel(studio->prefiltered[1], R)) > 1e-2f * glm::length(mip0);
+            const glm::vec2 ab = environmentBrdf(BrdfModelId::Epic, NoV, m.roughness);
+            const glm::vec3 expected = mip0 * (ab.x + ab.y);
+            const glm::vec3 value = shadeEnvironmentOnCpu(BrdfModelId::Epic, m, *studio, 1.0f, 0.0f, N, V);
+            EXPECT_NEAR(glm::length(value - expected), 0.0f, 1e-5f * glm::length(expected)) << r << " " << i;
+        }
+    }
+    EXPECT_TRUE(mipsDiffer);
 }
 
 TEST(SphericalHarmonics, ALinearEnvironmentHasItsExactIrradiance) {
