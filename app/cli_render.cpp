@@ -1,19 +1,63 @@
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <memory>
+
+#include <unistd.h>
 
 #include "cli.h"
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
+#include "image/display_image.h"
 #include "image/image.h"
 #include "inputs.h"
 #include "gltf/scene_mesh.h"
+#include "scene/reference_render.h"
 
 namespace patina::cli {
+
+namespace {
+// Ctrl+C during a ground-truth render: finish the pass under way and write what is done.
+std::atomic<bool> interrupted{false};
+extern "C" void stopAfterThisPass(int) {
+    interrupted = true;
+}
+
+// The ground truth through pixel centres, pass by pass (scene/reference_render.h), with the
+// progress on stderr; stoppable with Ctrl+C.
+RenderOutput renderReferenceImage(const Scene& scene, int width, int height, int samples) {
+    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, width, height);
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = samples;
+    options.samplesPerPass = std::min(samples, 16);
+    const auto start = std::chrono::steady_clock::now();
+    const bool terminal = isatty(STDERR_FILENO) != 0;
+    interrupted = false;
+    auto* previous = std::signal(SIGINT, stopAfterThisPass);
+    const ReferenceImage image = renderReference(scene, surfaces, options, [&](const ReferenceImage& partial) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        // One line rewritten on a terminal, a line a pass in a log.
+        std::fprintf(stderr, "%sreference: %d of %d samples per pixel, %.1f s%s%s", terminal ? "\r" : "",
+                     partial.samplesPerPixel, samples, seconds, interrupted ? " (stopped: writing what is done)" : "",
+                     terminal ? "" : "\n");
+        return !interrupted;
+    });
+    std::signal(SIGINT, previous);
+    if (terminal) {
+        std::fprintf(stderr, "\n");
+    }
+    return {image.value, displayImage(image.value, scene.display)};
+}
+}  // namespace
 
 Command addRenderCommand(CLI::App& app) {
     struct Options {
         SceneInputs inputs;
         int width = 800, height = 800, samples = 4;
         std::string passes = "single", out, hdr;
+        bool reference = false;
+        int referenceSamples = 256;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
@@ -26,9 +70,25 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--msaa", options->samples, "Samples per pixel (1 = none)")->check(CLI::Range(1, 16));
     command->add_option("--out", options->out, "Output PNG")->required();
     command->add_option("--hdr", options->hdr, "Also write the linear image (PFM), before exposure and tone map");
+    command->add_flag("--reference", options->reference,
+                      "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights "
+                      "exactly), pass by pass; Ctrl+C writes what is done");
+    command->add_option("--reference-samples", options->referenceSamples,
+                        "--reference: estimator iterations per pixel (3 directions each)")
+        ->check(CLI::Range(1, 1 << 20));
     return [options] {
         Scene scene = options->inputs.load();
         resolveMesh(scene);
+        if (options->reference) {
+            const RenderOutput output =
+                renderReferenceImage(scene, options->width, options->height, options->referenceSamples);
+            const std::vector<uint8_t> png = encodePng(output.ldr);
+            if (!options->hdr.empty()) {
+                writeOutput(options->hdr, encodePfm(output.hdr));
+            }
+            writeOutput(options->out, png);
+            return;
+        }
         HeadlessContext context;
         Renderer renderer;
         RenderSettings settings;

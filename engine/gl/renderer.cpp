@@ -61,16 +61,6 @@ void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
     }
 }
 
-int toneMapIndex(Tonemap tonemap) {
-    switch (tonemap) {
-    case Tonemap::Aces: return shader::TONEMAP_ACES;
-    case Tonemap::Reinhard: return shader::TONEMAP_REINHARD;
-    case Tonemap::PbrNeutral: return shader::TONEMAP_PBR_NEUTRAL;
-    case Tonemap::None: break;
-    }
-    return shader::TONEMAP_NONE;
-}
-
 // A program compiled on first use: a render that needs no pre-pass or display pass (no multi
 // path, no MSAA) compiles neither.
 class LazyProgram {
@@ -203,10 +193,7 @@ double Renderer::lastGpuMilliseconds() {
 }
 
 void Renderer::useMesh(State& s, const Scene& scene) {
-    if (!scene.resolvedMesh && !scene.meshFile.empty()) {
-        throw std::invalid_argument("the scene's mesh " + scene.meshFile + " was never loaded (resolveMesh)");
-    }
-    std::shared_ptr<const Mesh> mesh = scene.resolvedMesh ? scene.resolvedMesh : builtinMesh(scene.mesh);
+    std::shared_ptr<const Mesh> mesh = meshShown(scene);
     if (mesh != s.meshShown) {
         s.mesh.upload(*mesh);   // the hidden-faces analysis runs here, once per mesh shown
         s.meshShown = std::move(mesh);
@@ -324,7 +311,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
-    const int exposureTonemap = toneMapIndex(scene.display.tonemap);
+    const int exposureTonemap = tonemapShaderIndex(scene.display.tonemap);
     const glm::vec3 background = scene.display.background;
     const glm::vec3 backgroundShown = shader::displayTransform(background, scene.display.exposure, exposureTonemap);
     const GLfloat clearLinear[4] = {background.r, background.g, background.b, 1.0f};

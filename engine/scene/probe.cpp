@@ -37,7 +37,8 @@ std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Li
 
 std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
                                          const std::vector<ProbeSample>& samples,
-                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow) {
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
+                                         uint64_t pass) {
     const shader::SurfaceMaterial surface = surfaceMaterial(material);
     const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
     const Light* environmentLight = enabledEnvironment(lights);
@@ -55,7 +56,7 @@ std::vector<ReferenceRow> probeReference(const Material& material, const std::ve
         for (size_t i; (i = next++) < samples.size();) {
             ReferenceOptions options;
             options.samples = samplesPerRow;
-            options.seed = 0x9E3779B97F4A7C15ull * (i + 1);
+            options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
             const ReferenceEstimate e = referenceRadiance(material.model, surface, reference, packed, samples[i].position,
                                                           samples[i].normal, samples[i].toViewer, options);
             rows[i] = {e.value, e.standardError};

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -25,13 +26,15 @@ std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Li
 
 // The ground truth of the same rows (environment/reference.h): the lights exactly, the
 // environment by Monte Carlo with `samples` iterations a row, each row with its own seed, on
-// every core. value and standard error per row.
+// every core. value and standard error per row. Estimates with another `pass` draw other
+// random numbers: independent, so a progressive render averages them.
 struct ReferenceRow {
     glm::vec3 value;
     glm::vec3 standardError;
 };
 std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
                                          const std::vector<ProbeSample>& samples,
-                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow);
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
+                                         uint64_t pass = 0);
 
 }  // namespace patina

@@ -1,6 +1,9 @@
 #include "scene/scene.h"
 
+#include <stdexcept>
+
 #include "common/enum_names.h"
+#include "shading/shading.h"
 
 namespace patina {
 
@@ -12,6 +15,16 @@ std::string_view tonemapName(Tonemap tonemap) {
     case Tonemap::PbrNeutral: return "pbr-neutral";
     }
     return "none";
+}
+
+int tonemapShaderIndex(Tonemap tonemap) {
+    switch (tonemap) {
+    case Tonemap::Aces: return shader::TONEMAP_ACES;
+    case Tonemap::Reinhard: return shader::TONEMAP_REINHARD;
+    case Tonemap::PbrNeutral: return shader::TONEMAP_PBR_NEUTRAL;
+    case Tonemap::None: break;
+    }
+    return shader::TONEMAP_NONE;
 }
 
 std::optional<Tonemap> tonemapFromName(std::string_view name) {
@@ -57,6 +70,13 @@ Scene defaultScene() {
 
     scene.lights = {key, fill, studio};
     return scene;
+}
+
+std::shared_ptr<const Mesh> meshShown(const Scene& scene) {
+    if (!scene.resolvedMesh && !scene.meshFile.empty()) {
+        throw std::invalid_argument("the scene's mesh " + scene.meshFile + " was never loaded (resolveMesh)");
+    }
+    return scene.resolvedMesh ? scene.resolvedMesh : builtinMesh(scene.mesh);
 }
 
 }  // namespace patina

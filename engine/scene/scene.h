@@ -26,6 +26,8 @@ struct Camera {
 enum class Tonemap { None, Aces, Reinhard, PbrNeutral };
 std::string_view tonemapName(Tonemap tonemap);
 std::optional<Tonemap> tonemapFromName(std::string_view name);
+// The shaders' TONEMAP_* value (shaders/shared/display.glsl) of a tone map.
+int tonemapShaderIndex(Tonemap tonemap);
 
 struct DisplaySettings {
     float exposure = 0.0f;                         // stops
@@ -63,6 +65,10 @@ struct Scene {
 
     bool operator==(const Scene&) const = default;
 };
+
+// The triangles the scene shows: its resolved mesh, or the built-in kind's. Throws
+// std::invalid_argument for a mesh file nobody resolved (gltf/scene_mesh.h).
+std::shared_ptr<const Mesh> meshShown(const Scene& scene);
 
 // The first enabled environment light (a scene file holds one at most), or null.
 const Light* enabledEnvironment(const std::vector<Light>& lights);

@@ -1,0 +1,74 @@
+#include "scene/reference_render.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "environment/environment.h"
+#include "shading/environment_brdf.h"
+
+namespace patina {
+
+namespace {
+// What the renderer draws behind the mesh at (x, y): background.frag on the CPU.
+glm::vec3 backgroundRadiance(const Scene& scene, const Environment* environment, const Light* light, int width,
+                             int height, int x, int y) {
+    if (!environment || !scene.display.backgroundFromEnvironment) {
+        return scene.display.background;
+    }
+    const glm::vec2 rotation = environmentRotation(light->rotationDegrees);
+    const glm::vec3 d =
+        shader::toEnvironmentFrame(pixelRayDirection(scene.camera, width, height, x, y), rotation.x, rotation.y);
+    return light->intensity *
+           sampleCube(environment->prefiltered, d, shader::roughnessToLod(scene.display.backgroundBlur, environment->maxLod()));
+}
+}  // namespace
+
+ReferenceImage renderReference(const Scene& scene, const PixelSurfaces& surfaces,
+                               const ReferenceRenderOptions& options, const ReferencePassDone& passDone) {
+    const Light* light = enabledEnvironment(scene);
+    const std::shared_ptr<const Environment> environment =
+        light ? environmentShown(scene.resolvedEnvironment, light->source) : nullptr;
+    const size_t pixels = size_t(surfaces.width) * size_t(surfaces.height);
+    ReferenceImage image;
+    image.value = {surfaces.width, surfaces.height, std::vector<float>(pixels * 3, 0.0f)};
+    image.standardError = image.value;
+    for (int y = 0; y < surfaces.height; ++y) {
+        for (int x = 0; x < surfaces.width; ++x) {
+            const size_t pixel = size_t(y) * size_t(surfaces.width) + size_t(x);
+            if (surfaces.sampleOfPixel[pixel] < 0) {
+                const glm::vec3 b = backgroundRadiance(scene, environment.get(), light, surfaces.width, surfaces.height, x, y);
+                std::copy(&b.x, &b.x + 3, &image.value.rgb[pixel * 3]);
+            }
+        }
+    }
+    // Per sample, the running sums of the pass means weighted by their counts, and of the squared
+    // standard errors: independent passes, so the variance of the overall mean adds as
+    // sum n_p^2 se_p^2 / N^2.
+    std::vector<glm::dvec3> sum(surfaces.samples.size(), glm::dvec3(0.0)), variance = sum;
+    const int perPass = std::max(1, options.samplesPerPass);
+    for (uint64_t pass = 0; image.samplesPerPixel < options.samplesPerPixel; ++pass) {
+        const int n = std::min(perPass, options.samplesPerPixel - image.samplesPerPixel);
+        const std::vector<ReferenceRow> rows =
+            probeReference(scene.material, scene.lights, surfaces.samples, environment, n, pass);
+        image.samplesPerPixel += n;
+        const double total = double(image.samplesPerPixel);
+        for (size_t pixel = 0; pixel < pixels; ++pixel) {
+            const int32_t i = surfaces.sampleOfPixel[pixel];
+            if (i < 0) {
+                continue;
+            }
+            sum[size_t(i)] += glm::dvec3(rows[size_t(i)].value) * double(n);
+            const glm::dvec3 se(rows[size_t(i)].standardError);
+            variance[size_t(i)] += se * se * double(n) * double(n);
+            const glm::vec3 mean(sum[size_t(i)] / total), error(glm::sqrt(variance[size_t(i)]) / total);
+            std::copy(&mean.x, &mean.x + 3, &image.value.rgb[pixel * 3]);
+            std::copy(&error.x, &error.x + 3, &image.standardError.rgb[pixel * 3]);
+        }
+        if (passDone && !passDone(image)) {
+            break;
+        }
+    }
+    return image;
+}
+
+}  // namespace patina

@@ -1,0 +1,35 @@
+#pragma once
+#include <functional>
+#include <memory>
+
+#include "common/hdr_image.h"
+#include "scene/pixel_surfaces.h"
+#include "scene/scene.h"
+
+namespace patina {
+
+// The ground truth as a picture: every pixel the mesh covers shaded by the Monte Carlo estimate
+// of environment/reference.h (the environment's full-resolution image by MIS, the analytic lights
+// exactly), through pixel centres (no antialiasing). The background is what the renderer draws
+// there (the colour, or the environment read as background.frag reads it), so an error map
+// against a render is the shading's alone.
+struct ReferenceRenderOptions {
+    int samplesPerPixel = 256;   // estimator iterations (one direction of each strategy each)
+    int samplesPerPass = 16;     // the image is complete, and reported, after each pass
+};
+
+struct ReferenceImage {
+    HdrImage value;
+    HdrImage standardError;   // of each pixel's mean; 0 in the background
+    int samplesPerPixel = 0;  // done so far
+};
+
+// Told the image after each pass; false stops (the image so far is the result).
+using ReferencePassDone = std::function<bool(const ReferenceImage&)>;
+
+// `environment` is what the scene's enabled environment light shows (Scene::resolvedEnvironment
+// or a built-in; environmentShown).
+ReferenceImage renderReference(const Scene& scene, const PixelSurfaces& surfaces,
+                               const ReferenceRenderOptions& options, const ReferencePassDone& passDone = {});
+
+}  // namespace patina
