@@ -68,4 +68,21 @@ glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial
     return shadeEnvironment(model, read, environment.maxLod(), sh, intensity, rotationDegrees, material, N, V, dominant);
 }
 
+glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                     const Environment& environment, const CubeChain& sourceChain, float intensity,
+                                     float rotationDegrees, glm::vec3 N, glm::vec3 V, unsigned count,
+                                     glm::vec2 jitter) {
+    const std::function<glm::vec3(glm::vec3, float)> read = [&](glm::vec3 d, float lod) {
+        return sampleCube(sourceChain, d, lod);
+    };
+    glm::vec3 sh[9];
+    std::copy(environment.sh.begin(), environment.sh.end(), sh);
+    return shadeEnvironmentStochastic(model, read, float(sourceChain.front().size), sh, intensity, rotationDegrees,
+                                      material, N, V, count, jitter);
+}
+
+CubeChain sourceMipChain(const Environment& environment) {
+    return cubeMipChain(equirectToCube(environment.image, environment.prefiltered.front().size));
+}
+
 }  // namespace patina

@@ -54,4 +54,15 @@ std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const 
 glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material, const Environment& environment,
                                 float intensity, float rotationDegrees, glm::vec3 N, glm::vec3 V, bool dominant = false);
 
+// The stochastic mode on the CPU (shadeEnvironmentStochastic of ibl_model.glsl), reading
+// `sourceChain`: the environment's source cube and its box-filtered mips (sourceMipChain).
+glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                     const Environment& environment, const CubeChain& sourceChain, float intensity,
+                                     float rotationDegrees, glm::vec3 N, glm::vec3 V, unsigned count,
+                                     glm::vec2 jitter);
+
+// The source as a cube of the chain's mip-0 size and its box-filtered mips, as
+// glGenerateMipmap makes them on the GPU (what filtered importance sampling reads).
+CubeChain sourceMipChain(const Environment& environment);
+
 }  // namespace patina

@@ -5,16 +5,18 @@
 namespace patina {
 
 EnvironmentTexture::~EnvironmentTexture() {
-    glDeleteTextures(1, &texture_);
+    glDeleteTextures(1, &prefiltered_.texture);
+    glDeleteTextures(1, &source_.texture);
 }
 
-void EnvironmentTexture::bind(const std::shared_ptr<const Environment>& environment, int unit) {
+void EnvironmentTexture::bindCube(Cube& cube, const std::shared_ptr<const Environment>& environment, int unit,
+                                  CubeChain (*chainOf)(const Environment&)) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    if (environment != shown_) {
-        glDeleteTextures(1, &texture_);
-        glGenTextures(1, &texture_);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, texture_);
-        const CubeChain& chain = environment->prefiltered;
+    if (environment != cube.shown) {
+        glDeleteTextures(1, &cube.texture);
+        glGenTextures(1, &cube.texture);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, cube.texture);
+        const CubeChain chain = chainOf(*environment);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         for (size_t level = 0; level < chain.size(); ++level) {
             for (int face = 0; face < 6; ++face) {
@@ -29,13 +31,21 @@ void EnvironmentTexture::bind(const std::shared_ptr<const Environment>& environm
         for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
             glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
         }
-        shown_ = environment;
+        cube.shown = environment;
     } else {
-        glBindTexture(GL_TEXTURE_CUBE_MAP, texture_);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, cube.texture);
     }
     // A cube map filtered face by face shows its seams, more the rougher the level (spec section 5).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     glActiveTexture(GL_TEXTURE0);
+}
+
+void EnvironmentTexture::bind(const std::shared_ptr<const Environment>& environment, int unit) {
+    bindCube(prefiltered_, environment, unit, [](const Environment& e) { return e.prefiltered; });
+}
+
+void EnvironmentTexture::bindSource(const std::shared_ptr<const Environment>& environment, int unit) {
+    bindCube(source_, environment, unit, sourceMipChain);
 }
 
 }  // namespace patina

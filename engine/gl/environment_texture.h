@@ -5,7 +5,7 @@
 
 namespace patina {
 
-// An environment's prefiltered chain as a GL cube map (RGB32F, one mip per level, seamless
+// An environment's prefiltered chain (and, when asked, its source chain) as a GL cube map (RGB32F, one mip per level, seamless
 // filtering on, trilinear), uploaded once per Environment shown. Needs a current context.
 class EnvironmentTexture {
 public:
@@ -16,10 +16,18 @@ public:
 
     // Uploads `environment` unless it is the one uploaded last, then binds it to `unit`.
     void bind(const std::shared_ptr<const Environment>& environment, int unit);
+    // The same for its source and box-filtered mips (sourceMipChain), which the stochastic
+    // mode reads.
+    void bindSource(const std::shared_ptr<const Environment>& environment, int unit);
 
 private:
-    unsigned texture_ = 0;
-    std::shared_ptr<const Environment> shown_;
+    struct Cube {
+        unsigned texture = 0;
+        std::shared_ptr<const Environment> shown;
+    };
+    Cube prefiltered_, source_;
+    static void bindCube(Cube& cube, const std::shared_ptr<const Environment>& environment, int unit,
+                         CubeChain (*chainOf)(const Environment&));
 };
 
 }  // namespace patina

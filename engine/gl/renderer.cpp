@@ -276,6 +276,9 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
+    EnvironmentShading environmentShading = settings.environment;
+    environmentShading.samples = std::clamp(environmentShading.samples, 1, 256);
+    s.shading.setEnvironmentShading(environmentShading);
     ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
     singlePass.environment = environment;
     auto specialisation = [&] {
@@ -294,6 +297,9 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     const GlProgram* backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
     if (environment) {
         s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit);
+        if (environmentShading.method == EnvironmentMethod::Stochastic) {
+            s.environment.bindSource(environmentMap, ShadingPrograms::kEnvironmentSourceUnit);
+        }
     }
 
     // One pair of queries in flight: a draw while the last pair is unread goes untimed.

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "gl/environment_method.h"
 #include "gl/shader_specialisation.h"
 #include "image/image.h"
 #include "geometry/mesh.h"
@@ -74,6 +75,9 @@ struct RenderSettings {
     // number taken as flat inputs, instead of specialiseFor's; for callers that write their
     // own (bench/'s BRDF-only floor). Empty: the scene's.
     std::function<ShaderSpecialisation(const std::vector<shader::PackedLight>&, size_t flatSlots)> lightCode;
+    // How the scene's environment is shaded: the split sum, or a variant docs/LIGHTING.md
+    // measures against it.
+    EnvironmentShading environment;
 };
 
 struct RenderOutput {

@@ -45,6 +45,13 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (output == Output::LinearAndDisplay) {
         defines.push_back("PATINA_DISPLAY_OUTPUT");
     }
+    if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
+        if (environmentShading_.method == EnvironmentMethod::Dominant) {
+            defines.push_back("PATINA_ENVIRONMENT_DOMINANT");
+        } else if (environmentShading_.method == EnvironmentMethod::Stochastic) {
+            defines.push_back("PATINA_ENVIRONMENT_STOCHASTIC " + std::to_string(environmentShading_.samples));
+        }
+    }
     auto program = std::make_unique<GlProgram>(vertexParts, shadingFragmentParts(), defines);
     LightBuffer::attach(*program);
     return program;
@@ -64,8 +71,24 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
         glActiveTexture(GL_TEXTURE0);
         glUniform1i(program.uniform("uEnvironmentBrdf"), kEnvironmentBrdfUnit);
         glUniform1i(program.uniform("uEnvironmentMap"), kEnvironmentMapUnit);
+        glUniform1i(program.uniform("uEnvironmentSource"), kEnvironmentSourceUnit);
     }
     return program;
+}
+
+void ShadingPrograms::setEnvironmentShading(const EnvironmentShading& shading) {
+    if (shading == environmentShading_) {
+        return;
+    }
+    environmentShading_ = shading;
+    auto dropEnvironment = [](auto& programs, auto hasEnvironment) {
+        for (auto it = programs.begin(); it != programs.end();) {
+            it = hasEnvironment(it->first) ? programs.erase(it) : std::next(it);
+        }
+    };
+    dropEnvironment(programs_, [](const auto& key) { return std::get<3>(key); });
+    dropEnvironment(singles_, [](const auto& key) { return std::get<1>(key).environment; });
+    dropEnvironment(specialised_, [](const auto& key) { return std::get<1>(key).environment; });
 }
 
 ShadingPrograms::SinglePass ShadingPrograms::singlePassFor(const std::vector<shader::PackedLight>& lights) {

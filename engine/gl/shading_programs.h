@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "shading/brdf_model_id.h"
+#include "gl/environment_method.h"
 #include "gl/shader_specialisation.h"
 #include "gl/program.h"
 
@@ -49,6 +50,11 @@ public:
     // 1 the energy table's).
     static constexpr int kEnvironmentMapUnit = 2;
     static constexpr int kEnvironmentBrdfUnit = 3;
+    static constexpr int kEnvironmentSourceUnit = 4;   // the stochastic mode's source chain
+    // How programs with an environment shade it from now on; a change drops the programs
+    // compiled for another (the editor changes it rarely, benchmarks once per method).
+    void setEnvironmentShading(const EnvironmentShading& shading);
+    const EnvironmentShading& environmentShading() const { return environmentShading_; }
     const GlProgram& useSingle(BrdfModelId model, const SinglePass& pass, Output output = Output::Linear);
     // The single-pass program specialised to `key`, compiled on first use. The least recently
     // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
@@ -68,6 +74,7 @@ private:
     std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;
     std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
+    EnvironmentShading environmentShading_;
     std::map<BrdfModelId, unsigned> energyTextures_, environmentBrdfTextures_;
 
     unsigned energyTexture(BrdfModelId model);

@@ -158,6 +158,24 @@ glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered
     return glm::vec3(0.0f);
 }
 
+glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,
+                                     const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                                     const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V,
+                                     unsigned count, glm::vec2 jitter) {
+    const glm::vec2 rotation = environmentRotation(rotationDegrees);
+    glm::vec3 sh[9];
+    std::copy(std::begin(coefficients), std::end(coefficients), sh);
+    switch (id) {
+#define PATINA_SHADE(model, name, summary)                                                                  \
+    PATINA_CASE(shader, model,                                                                              \
+                shadeEnvironmentStochastic(source, sourceFaceSize, sh, intensity, rotation.x, rotation.y, material, \
+                                           N, V, count, jitter))
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return glm::vec3(0.0f);
+}
+
 shader::BrdfValue evaluateBrdfUnderEnvironment(BrdfModelId id, const shader::SurfaceMaterial& material,
                                                glm::vec3 N, glm::vec3 V, glm::vec3 L) {
     switch (id) {

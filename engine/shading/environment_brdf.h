@@ -34,6 +34,13 @@ glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered
                            const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
                            const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant);
 
+// shadeEnvironmentStochastic of ibl_model.glsl for `id`: `count` filtered importance samples at
+// the real N and V read from `source`, the box-filtered mip chain of the environment's source.
+glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,
+                                     const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                                     const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V,
+                                     unsigned count, glm::vec2 jitter);
+
 // The model's f under an environment (environmentVisibility), for the ground truth.
 shader::BrdfValue evaluateBrdfUnderEnvironment(BrdfModelId id, const shader::SurfaceMaterial& material,
                                                glm::vec3 N, glm::vec3 V, glm::vec3 L);

@@ -162,3 +162,21 @@ PATINA_INLINE real D_GGX_Standard(real NoH, real alpha) {
     real base = NoH * NoH * (a2 - 1.0f) + 1.0f;
     return a2 / (PATINA_PI * base * base);
 }
+
+// Where (NoV, r) falls in a table of `size` x `size` values at i / (size - 1): the lower
+// texel and the weights of the next, for the tables' own bilinear lookups (this one and
+// ibl_model.glsl's environment BRDF).
+struct TableCoordinate {
+    int x0;
+    int y0;
+    real fx;
+    real fy;
+};
+
+PATINA_INLINE TableCoordinate tableCoordinate(real NoV, real roughness, int size) {
+    real x = clamp(NoV, 0.0f, 1.0f) * real(size - 1);
+    real y = clamp(roughness, 0.0f, 1.0f) * real(size - 1);
+    int x0 = min(int(x), size - 2);
+    int y0 = min(int(y), size - 2);
+    return TableCoordinate(x0, y0, x - real(x0), y - real(y0));
+}

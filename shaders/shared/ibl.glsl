@@ -42,6 +42,21 @@ PATINA_INLINE vec3 importanceSampleGGX(vec2 xi, real alpha, vec3 N) {
     return tangentX * (sinTheta * cos(phi)) + tangentY * (sinTheta * sin(phi)) + N * cosTheta;
 }
 
+// Two numbers in [0, 1) from a pixel's coordinates, for the stochastic mode's per-pixel turn of
+// the Hammersley set: a 32-bit integer hash (Jarzynski and Olano 2020, "Hash Functions for GPU
+// Rendering", pcg) of each coordinate mixed with the other's. The CPU makes the same numbers.
+PATINA_INLINE uint pcgHash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+PATINA_INLINE vec2 pixelJitter(uint x, uint y) {
+    uint a = pcgHash(x + pcgHash(y));
+    uint b = pcgHash(a);
+    return vec2(real(a >> 8u), real(b >> 8u)) * (1.0f / 16777216.0f);
+}
+
 // Equirect convention (docs/FORMATS.md): +Y up, row 0 the zenith, the image's centre along -Z.
 // u = 0.5 + atan2(d.x, -d.z) / (2 pi), v = acos(d.y) / pi.
 PATINA_INLINE vec2 directionToEquirect(vec3 d) {
@@ -78,6 +93,18 @@ PATINA_INLINE real roughnessToLod(real roughness, real maxLod) {
 PATINA_INLINE real lodToRoughness(real lod, real maxLod) {
     real t = 1.0f - sqrt(1.0f - clamp(lod / maxLod, 0.0f, 1.0f));
     return MIN_PERCEPTUAL_ROUGHNESS + (1.0f - MIN_PERCEPTUAL_ROUGHNESS) * t;
+}
+
+// Where the split sum reads the prefiltered chain: R = reflect(-V, N), or with `dominant` the
+// "dominant direction" mix(R, N, alpha^2) that Frostbite and Filament use to make up for N = V
+// in the prefilter (Lagarde and de Rousiers 2014, section 4.9.3).
+PATINA_INLINE vec3 environmentReflection(SurfaceMaterial material, vec3 N, vec3 V, bool dominant) {
+    vec3 R = reflect(-V, N);
+    if (dominant) {
+        real a2 = material.alpha * material.alpha;
+        return normalize(mix(R, N, a2));
+    }
+    return R;
 }
 
 // The prefiltered radiance LD(R, r) with N = V = R (Karis 2013, listing PrefilterEnvMap): the

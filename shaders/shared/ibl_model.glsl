@@ -51,18 +51,6 @@ PATINA_INLINE vec2 environmentBrdfLookup(real NoV, real roughness) {
     return mix(bottom, top, c.fy);
 }
 
-// Where the split sum reads the prefiltered chain: R = reflect(-V, N), or with `dominant` the
-// "dominant direction" mix(R, N, alpha^2) that Frostbite and Filament use to make up for N = V
-// in the prefilter (Lagarde and de Rousiers 2014, section 4.9.3).
-PATINA_INLINE vec3 environmentReflection(SurfaceMaterial material, vec3 N, vec3 V, bool dominant) {
-    vec3 R = reflect(-V, N);
-    if (dominant) {
-        real a2 = material.alpha * material.alpha;
-        return normalize(mix(R, N, a2));
-    }
-    return R;
-}
-
 // The split sum: LD (F0 A + B) for the specular (Karis 2013, eq. 8), with the model's Turquin
 // compensation taken from the same table (E = A + B), plus the Lambert diffuse c_diff / pi E(N)
 // from the spherical harmonics. Models with Burley's diffuse take Lambert's here.
@@ -92,3 +80,49 @@ PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, 
     vec3 irradiance = irradianceSH(coefficients, toEnvironmentFrame(N, cosRotation, sinRotation));
     return intensity * splitSum(material, NoV, ld, irradiance);
 }
+
+// The stochastic alternative to the split sum: the specular integral itself at the real N and
+// V (no N = V, no split of F and G from the light), estimated per pixel by `count` GGX
+// half-vector samples (f NoL / pdf = F G_Vis, G_Vis as in eq. 8), each read from the source's
+// box-filtered mip chain at the filtered-importance-sampling lod of prefilterEnvironment
+// (Krivanek and Colbert 2008, eq. 13; pdf_L = D NoH / (4 VoH)). `jitter` turns the Hammersley
+// set per pixel (Cranley-Patterson rotation), so its error shows as noise, not as a pattern.
+// N and V in the environment's frame; the model's own Fresnel and energy compensation.
+PATINA_INLINE vec3 stochasticSpecular(EnvironmentSource source, real sourceFaceSize, SurfaceMaterial material,
+                                      vec3 N, vec3 V, uint count, vec2 jitter) {
+    real NoV = max(dot(N, V), MIN_N_DOT_V);
+    real texelSolidAngle = 4.0f * PATINA_PI / (6.0f * sourceFaceSize * sourceFaceSize);
+    vec3 sum = vec3(0.0f);
+    for (uint i = 0u; i < count; ++i) {
+        vec2 xi = fract(hammersley(i, count) + jitter);
+        vec3 H = importanceSampleGGX(xi, material.alpha, N);
+        real VoH = dot(V, H);
+        vec3 L = 2.0f * VoH * H - V;
+        real NoL = dot(N, L);
+        real NoH = dot(N, H);
+        if (NoL > 0.0f && VoH > 0.0f && NoH > 0.0f) {
+            real pdf = D_GGX(NoH, cross(N, H), material.alpha) * NoH / (4.0f * VoH);
+            real sampleSolidAngle = 1.0f / (real(count) * pdf);
+            real lod = max(0.5f * log2(sampleSolidAngle / texelSolidAngle) + 1.0f, 0.0f);
+            real gVis = environmentVisibility(NoV, min(NoL, 1.0f), material) * 4.0f * NoL * VoH / NoH;
+            sum += sampleEnvironmentSource(source, L, lod) * fresnel(material.f0, VoH) * gVis;
+        }
+    }
+    return sum / real(count) * energyCompensation(material.f0, NoV, material.roughness);
+}
+
+// The stochastic mode's outgoing radiance: stochasticSpecular plus the same Lambert diffuse
+// from the coefficients as the split sum.
+PATINA_INLINE vec3 shadeEnvironmentStochastic(EnvironmentSource source, real sourceFaceSize, vec3 coefficients[9],
+                                              real intensity, real cosRotation, real sinRotation,
+                                              SurfaceMaterial material, vec3 N, vec3 V, uint count, vec2 jitter) {
+    vec3 n = toEnvironmentFrame(N, cosRotation, sinRotation);
+    vec3 v = toEnvironmentFrame(V, cosRotation, sinRotation);
+    vec3 specular = stochasticSpecular(source, sourceFaceSize, material, n, v, count, jitter);
+#if defined(PATINA_NO_DIFFUSE)
+    return intensity * specular;
+#else
+    return intensity * (specular + Fd_Lambert(material.diffuseColor) * irradianceSH(coefficients, n));
+#endif
+}
+

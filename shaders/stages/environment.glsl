@@ -10,6 +10,10 @@ uniform float uEnvironmentIntensity;
 uniform vec2 uEnvironmentRotation;   // cos, sin of rotationDegrees
 uniform vec3 uEnvironmentSH[9];
 uniform sampler2D uEnvironmentBrdf;
+// The stochastic mode's source: the unfiltered cube and its box-filtered mips, faces of
+// uEnvironmentSourceSize texels.
+uniform samplerCube uEnvironmentSource;
+uniform float uEnvironmentSourceSize;
 
 vec2 environmentBrdfTexel(int x, int y) {
     return texelFetch(uEnvironmentBrdf, ivec2(x, y), 0).rg;

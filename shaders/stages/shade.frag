@@ -56,9 +56,24 @@ uniform int uLightIndex;
 #endif
 
 #ifdef PATINA_ENVIRONMENT
+// PATINA_ENVIRONMENT_DOMINANT: the split sum along the dominant direction;
+// PATINA_ENVIRONMENT_STOCHASTIC N: N filtered importance samples a pixel instead
+// (engine/gl/environment_method.h).
 vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
+#if defined(PATINA_ENVIRONMENT_STOCHASTIC)
+    vec2 jitter = pixelJitter(uint(gl_FragCoord.x), uint(gl_FragCoord.y));
+    return shadeEnvironmentStochastic(uEnvironmentSource, uEnvironmentSourceSize, uEnvironmentSH, uEnvironmentIntensity,
+                                      uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V,
+                                      uint(PATINA_ENVIRONMENT_STOCHASTIC), jitter);
+#else
+#if defined(PATINA_ENVIRONMENT_DOMINANT)
+    const bool dominant = true;
+#else
+    const bool dominant = false;
+#endif
     return shadeEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentSH, uEnvironmentIntensity,
-                            uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, false);
+                            uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, dominant);
+#endif
 }
 #endif
 
