@@ -16,6 +16,7 @@ Command addBenchCommand(CLI::App& app);
 Command addBenchRenderCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addFurnaceCommand(CLI::App& app);
+Command addLightingAccuracyCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 
 }  // namespace patina::cli

@@ -1,10 +1,12 @@
-// The speed/accuracy commands: bench, stability and furnace. Each writes into --out-dir
+// The speed/accuracy commands: bench, stability, furnace and lighting-accuracy. Each writes into --out-dir
 // (default: the current folder).
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "bench/bench.h"
+#include "bench/lighting_accuracy.h"
+#include "image/environment_source.h"
 #include "cli.h"
 #include "accuracy/furnace.h"
 #include "gl/headless_context.h"
@@ -87,6 +89,74 @@ Command addFurnaceCommand(CLI::App& app) {
             writeOutputText((folder / "furnace.csv").string(), furnaceCsv(curves));
             writeChart(folder / "furnace", furnaceChart(curves), false);
         });
+}
+
+namespace {
+// Blender's studio-light HDRIs (Debian's blender-data): one with a sun, one interior.
+constexpr const char* kBlenderWorlds = "/usr/share/blender/datafiles/studiolights/world/";
+
+std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string>& files) {
+    std::vector<std::string> sources = files;
+    if (sources.empty()) {
+        sources = {"builtin:studio"};
+        for (const char* name : {"sunrise.exr", "interior.exr"}) {
+            const std::filesystem::path path = std::filesystem::path(kBlenderWorlds) / name;
+            if (std::filesystem::is_regular_file(path)) {
+                sources.push_back(path.string());
+            } else {
+                std::cerr << "lighting-accuracy: " << path.string()
+                          << " is not installed (apt-get install blender-data); measured without it\n";
+            }
+        }
+    }
+    std::vector<NamedEnvironment> environments;
+    for (const std::string& source : sources) {
+        std::vector<std::string> warnings;
+        const std::string absolute =
+            source.starts_with("builtin:") ? source : std::filesystem::absolute(source).lexically_normal().string();
+        std::shared_ptr<const Environment> environment = loadEnvironment(absolute, warnings);
+        for (const std::string& warning : warnings) {
+            std::cerr << "warning: " << warning << "\n";
+        }
+        const std::string name =
+            source.starts_with("builtin:") ? source.substr(8) : std::filesystem::path(source).stem().string();
+        environments.push_back({name, std::move(environment)});
+    }
+    return environments;
+}
+}  // namespace
+
+Command addLightingAccuracyCommand(CLI::App& app) {
+    struct Options {
+        std::string outDir;
+        bool quick = false;
+        std::vector<std::string> environments;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "lighting-accuracy",
+        "The split sum and its variants against the ground truth under environments, with their frame cost: "
+        "split_sum.csv, sh.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each");
+    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
+    command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
+    command->add_option("--environment", options->environments,
+                        "An .hdr or .exr to measure under (repeatable; default: builtin:studio and Blender's "
+                        "sunrise.exr and interior.exr when installed)");
+    return [options] {
+        const std::filesystem::path folder = outputFolder(options->outDir);
+        const std::vector<NamedEnvironment> environments = lightingEnvironments(options->environments);
+        HeadlessContext context;
+        const LightingAccuracyResult result = runLightingAccuracy(environments, options->quick);
+        writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
+        writeOutputText((folder / "sh.csv").string(), shCsv(result.accuracy.sh));
+        writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
+        writeChart(folder / "lighting_accuracy", lightingAccuracyChart(result), true);
+        for (const NamedEnvironment& environment : environments) {
+            writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
+                        encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));
+        }
+        std::cout << lightingCostCsv(result);
+    };
 }
 
 }  // namespace patina::cli

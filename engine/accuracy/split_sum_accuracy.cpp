@@ -181,7 +181,7 @@ std::vector<std::string> splitSumMethods(bool quick) {
 SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environments,
                                  const SplitSumAccuracyOptions& options) {
     const Grid grid = gridFor(options.quick);
-    const int referenceSamples = options.quick ? std::min(options.referenceSamples, 256) : options.referenceSamples;
+    const int referenceSamples = options.referenceSamples > 0 ? options.referenceSamples : options.quick ? 256 : 4096;
     const std::vector<TableVariant> tables = tableVariants(options.quick);
     constexpr unsigned kExactSamples = 4096;   // GGX samples for the exact LD and (A, B)
     SplitSumAccuracy result;

@@ -19,7 +19,8 @@ struct NamedEnvironment {
 
 struct SplitSumAccuracyOptions {
     bool quick = false;            // a small grid and fewer samples (CI)
-    int referenceSamples = 4096;   // ground-truth iterations per grid point (3 directions each)
+    // Ground-truth iterations per grid point (3 directions each); 0: 4096, or 256 when quick.
+    int referenceSamples = 0;
 };
 
 // One measured value: `method` at one grid point of one environment, as the mean over the

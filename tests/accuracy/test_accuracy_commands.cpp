@@ -17,7 +17,9 @@
 #include "bench/brdf_floor.h"
 #include "bench/render_bench.h"
 #include "scratch_test.h"
+#include "accuracy/split_sum_accuracy.h"
 #include "accuracy/stability.h"
+#include "environment/environment.h"
 #include "test_support.h"
 #include "io/file_bytes.h"
 
@@ -229,6 +231,55 @@ TEST(HalfPrecision, FloorsAndErrorsShowInTheStabilityTable) {
     // Half has 11 significant bits to float's 24: its error is orders of magnitude larger.
     EXPECT_GT(halfError, 100.0 * floatError);
     EXPECT_GT(halfError, 1e-3);
+}
+
+}  // namespace
+}  // namespace patina
+
+namespace patina {
+namespace {
+
+class LightingAccuracy : public test::ScratchTest {};
+
+TEST(SplitSumAccuracy, AUniformEnvironmentIsWhereTheSplitSumIsExact) {
+    // Under radiance 1 everywhere LD is 1 at every mip and every direction: what is left is the
+    // table against the integral, so every error source but the LUT's is ~0 and the split sum's
+    // total is small; under the studio N = V costs far more. The measurement tells them apart.
+    SplitSumAccuracyOptions options;
+    options.quick = true;
+    options.referenceSamples = 8192;   // the truth's own noise well below what is measured
+    const SplitSumAccuracy white =
+        measureSplitSum({{"white", preparedBuiltinEnvironment("builtin:white")}}, options);
+    EXPECT_LT(meanError(white.rows, "split sum"), 0.01);
+    EXPECT_LT(meanError(white.rows, "mip quantisation (chain against exact LD)"), 1e-4);
+    EXPECT_LT(meanError(white.rows, "N = V and the split (exact LD and AB)"), 0.01);
+    const SplitSumAccuracy studio =
+        measureSplitSum({{"studio", preparedBuiltinEnvironment("builtin:studio")}}, options);
+    EXPECT_GT(meanError(studio.rows, "N = V and the split (exact LD and AB)"),
+              10.0 * meanError(white.rows, "N = V and the split (exact LD and AB)"));
+    // The diffuse: a uniform environment is band 0 alone, exact; SH never rings there.
+    for (const ShErrorRow& row : white.sh) {
+        EXPECT_LT(row.meanRelativeError, 0.01) << row.method;
+        EXPECT_EQ(row.negativeFraction, 0.0) << row.method;
+    }
+}
+
+TEST_F(LightingAccuracy, WritesTheTablesTheChartAndTheGrid) {
+    const test::CliRun run =
+        test::runPatina("lighting-accuracy --quick --environment builtin:white --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    for (const char* file : {"split_sum.csv", "sh.csv", "lighting_cost.csv", "lighting_accuracy.svg",
+                             "lighting_accuracy.png", "grid_white.png"}) {
+        EXPECT_TRUE(std::filesystem::is_regular_file(path(file))) << file;
+    }
+    const auto costs = readCsv(path("lighting_cost.csv"));
+    ASSERT_GE(costs.size(), 4u);
+    EXPECT_EQ(costs[0][0], "method");
+    EXPECT_EQ(costs[1][0], "\"split sum\"");
+    EXPECT_GT(std::stod(costs[1][1]), 0.0);   // a frame time
+    EXPECT_LT(std::stod(costs[1][2]), 0.05);  // the error under white (a noisy truth in --quick)
+    const LdrImage grid = decodePng(readFileBytes(path("grid_white.png")));
+    EXPECT_GT(grid.width, 5 * 48 - 1);
 }
 
 }  // namespace
