@@ -9,6 +9,9 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
   libcli11-dev libgtest-dev libbenchmark-dev libopenexr-dev
   xvfb xdotool
+  # The editor's UI font (DejaVu Sans, read at run time) and xdg-open, which shows the
+  # screenshots' folder in the desktop's file manager.
+  fonts-dejavu-core xdg-utils
   # Blender's eight CC0 HDRIs (/usr/share/blender/datafiles/studiolights/world/*.exr), which the
   # environment tests read: real files from a real writer.
   blender-data

@@ -14,6 +14,7 @@
 #include "frame_stats.h"
 #include "panel_guard.h"
 #include "panels.h"
+#include "ui_scale.h"
 #include "widgets.h"
 
 #ifndef PATINA_PRESETS_DIR
@@ -63,12 +64,23 @@ int runEditor(const EditorOptions& options) {
     WindowGeometry geometry;
     const std::filesystem::path settingsFile = configFolder() / "settings.json";
     loadSettings(state, geometry, settingsFile);
-    state.presetFolders = {PATINA_PRESETS_DIR, configFolder() / "presets"};
+    state.userPresetFolder = configFolder() / "presets";
+    state.presetFolders = {PATINA_PRESETS_DIR, state.userPresetFolder};
 
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    // Sized for the monitor it opens on: a laptop's 1366 x 768 holds the default window whole.
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        int x = 0, y = 0, workWidth = 0, workHeight = 0;
+        float scaleX = 1.0f, scaleY = 1.0f;
+        glfwGetMonitorWorkarea(monitor, &x, &y, &workWidth, &workHeight);
+        glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
+        geometry = windowSizeFor(geometry, workWidth, workHeight, scaleX);
+    } else {
+        geometry = windowSizeFor(geometry, 0, 0, 1.0f);
+    }
     GLFWwindow* window = glfwCreateWindow(geometry.width, geometry.height, "Patina", nullptr, nullptr);
     if (!window) {
         std::cerr << "error: cannot create an OpenGL 3.3 window\n";
@@ -86,7 +98,6 @@ int runEditor(const EditorOptions& options) {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;   // panel sizes persist in settings.json instead
-    ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -98,6 +109,7 @@ int runEditor(const EditorOptions& options) {
         const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
         std::string title;
         int framesLeft = kFramesAfterInput;
+        float appliedScale = 0.0f;   // none yet
         std::optional<std::chrono::milliseconds> autosaveDue;
         FrameStats stats(options.stats ? &std::cerr : nullptr, options.start);
         while (!state.quitConfirmed) {
@@ -124,6 +136,20 @@ int runEditor(const EditorOptions& options) {
             input.droppedFiles.clear();
             services.keyPresses.swap(input.keyPresses);
             input.keyPresses.clear();
+            // The UI's scale follows the monitor the window is on and the View menu's setting;
+            // the font atlas is rebuilt between frames when it changes.
+            float contentScale = 1.0f, unused = 1.0f;
+            glfwGetWindowContentScale(window, &contentScale, &unused);
+            if (const float scale = uiScaleFor(contentScale, state.uiScaleSetting); scale != appliedScale) {
+                if (const std::string message = applyUiScale(scale); !message.empty()) {
+                    state.status = message;
+                }
+                if (appliedScale > 0.0f) {   // the first frame's NewFrame makes the texture
+                    ImGui_ImplOpenGL3_DestroyFontsTexture();
+                    ImGui_ImplOpenGL3_CreateFontsTexture();
+                }
+                appliedScale = scale;
+            }
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();

@@ -1,9 +1,12 @@
 #include <algorithm>
+#include <cmath>
 
 #include <imgui.h>
 
 #include "panel_guard.h"
+#include "panel_layout.h"
 #include "panels.h"
+#include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
@@ -12,13 +15,17 @@ namespace {
 constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-// A panel fixed to one side; its free edge can be dragged and the new size is kept in `extent`.
-bool beginPanel(const char* name, ImVec2 position, ImVec2 size, bool horizontal, float* extent) {
-    ImGui::SetNextWindowPos(position, ImGuiCond_Always);
-    ImGui::SetNextWindowSize(size, ImGuiCond_Always);
+// A panel at `rect`. Its free edge can be dragged: a size the user drags to is kept in
+// `wanted` (at UI scale 1); a size the layout imposed (giving way to the viewport) is not.
+bool beginPanel(const char* name, const PanelRect& rect, bool horizontal, float* wanted) {
+    ImGui::SetNextWindowPos(ImVec2(rect.x, rect.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height), ImGuiCond_Always);
     const bool open = ImGui::Begin(name, nullptr, kPanelFlags);
-    const ImVec2 actual = ImGui::GetWindowSize();
-    *extent = horizontal ? actual.x : actual.y;
+    const float given = horizontal ? rect.width : rect.height;
+    const float actual = horizontal ? ImGui::GetWindowSize().x : ImGui::GetWindowSize().y;
+    if (std::abs(actual - given) > 0.5f) {
+        *wanted = actual / uiScale();
+    }
     return open;
 }
 
@@ -28,11 +35,11 @@ void drawError(EditorState& state, ImVec2 at, float width) {
         return;
     }
     ImGui::SetNextWindowPos(at, ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(width, 400));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(width, px(400)));
     ImGui::SetNextWindowBgAlpha(0.92f);
     if (ImGui::Begin("##error", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                              ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
-        ImGui::PushTextWrapPos(width - 16.0f);
+        ImGui::PushTextWrapPos(width - px(16));
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.45f, 1.0f));
         ImGui::TextUnformatted(state.error.c_str());
         ImGui::PopStyleColor();
@@ -40,7 +47,7 @@ void drawError(EditorState& state, ImVec2 at, float width) {
         if (ImGui::SmallButton("Dismiss")) {
             state.error.clear();
         }
-        recordItem("error:dismiss");
+        recordItem("error:dismiss", "Hide this message");
     }
     ImGui::End();
 }
@@ -49,48 +56,57 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 void drawEditorFrame(EditorState& state, EditorServices& services) {
     resolveEnvironmentShown(state);
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
+    // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
+    // keys, within the frames drawn after the key press.
+    drawGuarded(state, "A shortcut", [&] { handleShortcuts(state, services); });
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();
-    const float height = std::max(display.y - top, 100.0f);
     PanelLayout& layout = state.layout;
-    layout.leftWidth = std::clamp(layout.leftWidth, 200.0f, std::max(200.0f, display.x * 0.45f));
-    layout.rightWidth = std::clamp(layout.rightWidth, 220.0f, std::max(220.0f, display.x * 0.45f));
-    layout.lobeHeight = std::clamp(layout.lobeHeight, 120.0f, std::max(120.0f, height * 0.6f));
-    const float centreWidth = std::max(display.x - layout.leftWidth - layout.rightWidth, 100.0f);
+    const PanelPlacement at = placePanels(layout, display.x, std::max(display.y - top, 1.0f), top, uiScale());
 
-    if (beginPanel("Material", ImVec2(0, top), ImVec2(layout.leftWidth, height), true, &layout.leftWidth)) {
+    // Fields in the side panels leave room for the longest label beside them.
+    const float labelRoom = ImGui::CalcTextSize("Background blur").x + ImGui::GetStyle().ItemInnerSpacing.x;
+    if (beginPanel("Material", at.material, true, &layout.leftWidth)) {
+        ImGui::PushItemWidth(-labelRoom);
         drawGuarded(state, "The material panel", [&] {
             drawMaterialPanel(state);
             ImGui::Separator();
             ImGui::TextDisabled("Presets");
             drawPresetsPanel(state, services);
         });
+        ImGui::PopItemWidth();
     }
     ImGui::End();
-    if (beginPanel("Lights", ImVec2(display.x - layout.rightWidth, top), ImVec2(layout.rightWidth, height), true,
-                   &layout.rightWidth)) {
+    if (beginPanel("Lights", at.lights, true, &layout.rightWidth)) {
+        ImGui::PushItemWidth(-labelRoom);
         drawGuarded(state, "The lights panel", [&] { drawLightsPanel(state); });
+        ImGui::PopItemWidth();
     }
     ImGui::End();
-    const float viewportHeight = std::max(height - layout.lobeHeight, 80.0f);
-    ImGui::SetNextWindowPos(ImVec2(layout.leftWidth, top), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(centreWidth, viewportHeight), ImGuiCond_Always);
-    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+    ImGui::SetNextWindowPos(ImVec2(at.viewport.x, at.viewport.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(at.viewport.width, at.viewport.height), ImGuiCond_Always);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(px(4), px(4)));
     if (ImGui::Begin("Viewport", nullptr, kPanelFlags | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar |
                                               ImGuiWindowFlags_NoScrollWithMouse)) {
         drawGuarded(state, "The viewport", [&] { drawViewportPanel(state, services); });
     }
     ImGui::End();
     ImGui::PopStyleVar();
-    if (beginPanel("Lobe", ImVec2(layout.leftWidth, top + viewportHeight), ImVec2(centreWidth, layout.lobeHeight),
-                   false, &layout.lobeHeight)) {
+    if (beginPanel("Lobe", at.lobe, false, &layout.lobeHeight)) {
         drawGuarded(state, "The lobe panel", [&] {
-            if (ImGui::BeginTabBar("bottom")) {
-                if (ImGui::BeginTabItem("Lobe")) {
+            // The accuracy numbers are a research tool: a tab of their own with Advanced on.
+            if (!state.showAdvanced) {
+                drawLobePanel(state);
+            } else if (ImGui::BeginTabBar("bottom")) {
+                const bool lobeTab = ImGui::BeginTabItem("Lobe");
+                recordItem("Lobe tab", "The BRDF in the plane of incidence");
+                if (lobeTab) {
                     drawLobePanel(state);
                     ImGui::EndTabItem();
                 }
-                if (ImGui::BeginTabItem("Accuracy")) {
+                const bool accuracyTab = ImGui::BeginTabItem("Accuracy");
+                recordItem("Accuracy tab", "How far this model is from the reference BRDF, and fp32 from fp64");
+                if (accuracyTab) {
                     drawAccuracyPanel(state, services);
                     ImGui::EndTabItem();
                 }
@@ -100,9 +116,8 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     }
     ImGui::End();
 
-    drawError(state, ImVec2(layout.leftWidth + 8.0f, top + 64.0f), centreWidth - 16.0f);
+    drawError(state, ImVec2(at.viewport.x + px(8), top + px(64)), at.viewport.width - px(16));
     drawGuarded(state, "A dialog", [&] { drawDialogs(state, services); });
-    drawGuarded(state, "A shortcut", [&] { handleShortcuts(state, services); });
     // Whatever the widgets changed becomes one undo step once none of them is active.
     if (!ImGui::IsAnyItemActive()) {
         commitEdits(state);

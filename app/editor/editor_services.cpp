@@ -10,6 +10,7 @@
 #include "io/scene_file.h"
 #include "io/file_bytes.h"
 #include "preview_scene.h"
+#include "save_errors.h"
 
 namespace patina::editor {
 
@@ -144,16 +145,18 @@ LdrImage EditorServices::shownImage(const EditorState& state, int width, int hei
 }
 
 std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& state, int width, int height) {
+    std::filesystem::path path = state.screenshotFolder / "patina-screenshot.png";   // until named
     try {
         const LdrImage image = shownImage(state, width, height);
         std::filesystem::create_directories(state.screenshotFolder);   // a folder set but not made yet
-        const std::filesystem::path path = std::filesystem::absolute(
-            screenshotPath(state.screenshotFolder, state.scene.material.name)).lexically_normal();
+        path = std::filesystem::absolute(screenshotPath(state.screenshotFolder, state.scene.material.name))
+                   .lexically_normal();
         writeFileAtomic(path, encodePngWithText(image, {{kSceneTextKeyword, sceneToJson(state.scene).dump()}}));
         state.status = "Screenshot saved: " + path.string();
+        state.lastScreenshot = path;
         return path;
     } catch (const std::exception& error) {
-        state.error = "Screenshot failed: " + std::string(error.what());
+        state.error = couldNotSave(path, error);
         return std::nullopt;
     }
 }
@@ -170,7 +173,7 @@ std::optional<std::filesystem::path> EditorServices::exportComparison(EditorStat
         state.status = "Exported " + path.string();
         return path;
     } catch (const std::exception& error) {
-        state.error = "Export failed: " + std::string(error.what());
+        state.error = couldNotSave(path, error);
         return std::nullopt;
     }
 }

@@ -1,11 +1,13 @@
 #include "editor_settings.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "image/image.h"
 #include "io/json_writer.h"
 #include "io/scene_file.h"
 #include "io/file_bytes.h"
+#include "save_errors.h"
 
 namespace patina::editor {
 
@@ -15,6 +17,18 @@ std::filesystem::path configFolder() {
     }
     const char* home = std::getenv("HOME");
     return std::filesystem::path(home && *home ? home : ".") / ".config" / "patina";
+}
+
+WindowGeometry windowSizeFor(const WindowGeometry& saved, int workWidth, int workHeight, float contentScale) {
+    const float scale = contentScale > 0.0f ? contentScale : 1.0f;
+    WindowGeometry size = saved;
+    if (size.width <= 0 || size.height <= 0) {
+        size = {int(1280 * scale), int(720 * scale)};
+    }
+    // Room for the window's title bar and borders inside the work area.
+    const int roomWidth = workWidth > 0 ? workWidth - 16 : size.width;
+    const int roomHeight = workHeight > 0 ? workHeight - 48 : size.height;
+    return {std::max(std::min(size.width, roomWidth), 640), std::max(std::min(size.height, roomHeight), 400)};
 }
 
 void loadSettings(EditorState& state, WindowGeometry& window, const std::filesystem::path& file) {
@@ -30,6 +44,9 @@ void loadSettings(EditorState& state, WindowGeometry& window, const std::filesys
         state.layout.leftWidth = reader.number("leftPanelWidth", state.layout.leftWidth, {100, 4000});
         state.layout.rightWidth = reader.number("rightPanelWidth", state.layout.rightWidth, {100, 4000});
         state.layout.lobeHeight = reader.number("lobePanelHeight", state.layout.lobeHeight, {60, 4000});
+        state.uiScaleSetting = reader.number("uiScale", state.uiScaleSetting, {0.5, 3.0});
+        state.showGizmos = reader.boolean("showLightGizmos", state.showGizmos);
+        state.showAdvanced = reader.boolean("showAdvanced", state.showAdvanced);
         state.screenshotFolder = reader.string("screenshotFolder", state.screenshotFolder.string());
         if (const Json* recent = reader.child("recentFiles"); recent && recent->is_array()) {
             state.recentFiles.clear();
@@ -62,6 +79,9 @@ bool saveSettings(EditorState& state, const WindowGeometry& window, const std::f
                     {"leftPanelWidth", state.layout.leftWidth},
                     {"rightPanelWidth", state.layout.rightWidth},
                     {"lobePanelHeight", state.layout.lobeHeight},
+                    {"uiScale", state.uiScaleSetting},
+                    {"showLightGizmos", state.showGizmos},
+                    {"showAdvanced", state.showAdvanced},
                     {"screenshotFolder", state.screenshotFolder.string()},
                     {"recentFiles", recent},
                     // The material as it is now (saved or not), and where it was saved, so a
@@ -74,7 +94,7 @@ bool saveSettings(EditorState& state, const WindowGeometry& window, const std::f
         writeFileAtomic(file, std::vector<uint8_t>(text.begin(), text.end()));
         return true;
     } catch (const std::exception& error) {
-        state.error = "Could not save settings: " + std::string(error.what());
+        state.error = couldNotSave(file, error);
         return false;
     }
 }

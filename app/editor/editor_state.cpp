@@ -10,6 +10,7 @@
 #include "image/png_text.h"
 #include "io/scene_file.h"
 #include "shading/shading.h"
+#include "save_errors.h"
 
 namespace patina::editor {
 
@@ -196,11 +197,15 @@ void toggleSolo(EditorState& state, int index) {
     state.soloLight = state.soloLight == index ? -1 : index;
 }
 
+bool soloedOut(const EditorState& state, int index) {
+    return validIndex(state, state.soloLight) && index != state.soloLight;
+}
+
 Scene renderedScene(const EditorState& state) {
     Scene scene = state.scene;
     if (validIndex(state, state.soloLight)) {
         for (size_t i = 0; i < scene.lights.size(); ++i) {
-            scene.lights[i].enabled = int(i) == state.soloLight;
+            scene.lights[i].enabled = !soloedOut(state, int(i));
         }
     }
     return scene;
@@ -428,7 +433,7 @@ bool saveScene(EditorState& state, const std::filesystem::path& path) {
     try {
         saveSceneFile(path, state.scene);
     } catch (const std::exception& error) {
-        state.error = "Could not save the scene: " + std::string(error.what());
+        state.error = couldNotSave(path, error);
         return false;
     }
     state.scenePath = path;
@@ -445,7 +450,7 @@ bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
     try {
         saveMaterialFile(path, state.scene.material);
     } catch (const std::exception& error) {
-        state.error = "Could not save: " + std::string(error.what());
+        state.error = couldNotSave(path, error);
         return false;
     }
     state.materialPath = path;
@@ -453,6 +458,29 @@ bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
     state.error.clear();
     state.status = "Saved " + path.filename().string();
     rememberRecent(state, path);
+    return true;
+}
+
+bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
+    std::filesystem::path file = path;
+    if (file.extension() != ".json") {
+        file += ".json";
+    }
+    try {
+        std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
+    } catch (const std::exception& error) {
+        state.error = couldNotSave(file, error);
+        return false;
+    }
+    // The preset is known by its file in the browser: the material takes the file's name.
+    const std::string name = file.stem().string();
+    if (state.scene.material.name != name) {
+        applyEdit(state, [&](EditorState& s) { s.scene.material.name = name; });
+    }
+    if (!saveMaterial(state, file)) {
+        return false;
+    }
+    state.status = "Saved preset " + name + " in " + std::filesystem::absolute(file).parent_path().string();
     return true;
 }
 

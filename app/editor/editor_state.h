@@ -51,6 +51,11 @@ struct EditorState {
 
     int selectedLight = 0;
     int soloLight = -1;                      // -1: all enabled lights
+    bool showGizmos = true;                  // light dots and arrows over the viewport
+    // Research controls (BRDF model, render path, timings, derived values, accuracy): shown
+    // under Advanced, closed by default so an artist sees the material's own parameters.
+    bool showAdvanced = false;
+    float uiScaleSetting = 1.0f;             // times the monitor's content scale (ui_scale.h)
     RenderPath renderPath = RenderPath::Single;
 
     std::optional<Material> compareA;        // "Set A"; B is the current material
@@ -64,9 +69,12 @@ struct EditorState {
     PanelLayout layout;
     std::vector<std::filesystem::path> recentFiles;
     std::vector<std::filesystem::path> presetFolders;   // built-in first, then the user's
+    std::filesystem::path userPresetFolder;             // where Save as preset writes
     std::filesystem::path screenshotFolder = ".";
     std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
     int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
+    std::filesystem::path lastScreenshot;               // its folder can be opened from the status
+    std::string folderOpener = "xdg-open";              // what shows a folder (open_folder.h)
 
     Autosave autosave;                       // crash recovery (autosave.h)
     std::optional<Recoverable> recoverable;  // the last session's work, offered at start
@@ -80,7 +88,7 @@ struct EditorState {
     bool pendingQuit = false;
     bool quitConfirmed = false;
     bool showShortcuts = false;
-    enum class PathDialog { None, Open, SaveAs, SaveSceneAs, ExportComparison } pathDialog = PathDialog::None;
+    enum class PathDialog { None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison } pathDialog = PathDialog::None;
     std::string pathDialogText;
 
     // What differs from the files: the material from its own (or the scene's), the rest of the
@@ -128,6 +136,8 @@ void duplicateLight(EditorState& state, int index);
 void deleteLight(EditorState& state, int index);
 void moveLight(EditorState& state, int index, int delta);
 void toggleSolo(EditorState& state, int index);
+// Whether solo leaves this light out of the picture (the list and the gizmos grey it out).
+bool soloedOut(const EditorState& state, int index);
 
 // The scene as rendered: solo applied.
 Scene renderedScene(const EditorState& state);
@@ -151,6 +161,10 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
 // Writes the material (saveMaterialFile: atomically, the old file kept as .bak); on failure
 // sets state.error, stays dirty and leaves the file on disk as it was.
 bool saveMaterial(EditorState& state, const std::filesystem::path& path);
+// Saves the material as a preset at `path` (".json" added when missing), its folder made if
+// need be, the material renamed after the file (one undoable step) so the browser's caption
+// and the file agree. Same failure rules as saveMaterial.
+bool saveAsPreset(EditorState& state, const std::filesystem::path& path);
 // Saves the whole scene, material inline; the scene becomes the document. Same failure rules.
 bool saveScene(EditorState& state, const std::filesystem::path& path);
 void rememberRecent(EditorState& state, const std::filesystem::path& path);

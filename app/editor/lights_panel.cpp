@@ -15,6 +15,10 @@
 namespace patina::editor {
 
 namespace {
+float buttonWidth(const char* label) {
+    return ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
+}
+
 const char* typeIcon(LightType type) {
     switch (type) {
     case LightType::Point: return "(o)";
@@ -32,8 +36,9 @@ void editDirection(Light& light) {
     float azimuth = glm::degrees(std::atan2(toLight.x, toLight.z));
     float elevation = glm::degrees(std::asin(glm::clamp(toLight.y, -1.0f, 1.0f)));
     bool changed = ImGui::SliderFloat("Azimuth", &azimuth, -180.0f, 180.0f, "%.1f deg");
-    recordItem("Azimuth");
+    recordItem("Azimuth", "Where the light comes from around the mesh: 0 is from the front (+z)");
     changed |= ImGui::SliderFloat("Elevation", &elevation, -90.0f, 90.0f, "%.1f deg");
+    recordItem("Elevation", "How high the light stands: 90 is straight overhead");
     if (changed) {
         const float a = glm::radians(azimuth), e = glm::radians(elevation);
         light.direction = -glm::vec3(std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a));
@@ -43,6 +48,7 @@ void editDirection(Light& light) {
             light.direction = {0.0f, -1.0f, 0.0f};   // a zero direction has no light
         }
     }
+    recordItem("Direction", "The direction the light travels in, as a vector (x, y, z)");
 }
 
 // Blender's eight CC0 studio HDRIs (Debian's blender-data), offered when installed.
@@ -79,19 +85,18 @@ void editEnvironment(EditorState& state, Light& light) {
         }
         ImGui::EndCombo();
     }
-    recordItem("Environment source");
-    if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%s\nOpen or drop an .hdr or .exr file to light with it", light.source.c_str());
-    }
+    const std::string sourceTip = light.source + "\nOpen or drop an .hdr or .exr file to light with it";
+    recordItem("Environment source", sourceTip.c_str());
     ImGui::SliderFloat("Rotation", &light.rotationDegrees, -180.0f, 180.0f, "%.1f deg");
-    recordItem("Environment rotation");
+    recordItem("Environment rotation", "Turns the environment about the vertical axis");
     bool background = state.scene.display.backgroundFromEnvironment;
     if (ImGui::Checkbox("Show as background", &background)) {
         state.scene.display.backgroundFromEnvironment = background;
     }
-    recordItem("Environment background");
+    recordItem("Environment background", "Show the environment behind the mesh instead of the background colour");
     ImGui::BeginDisabled(!background);
     ImGui::SliderFloat("Background blur", &state.scene.display.backgroundBlur, 0.0f, 1.0f, "%.2f");
+    recordItem("Background blur", "Blurs the environment shown behind the mesh (not the lighting)");
     ImGui::EndDisabled();
 }
 
@@ -99,29 +104,35 @@ void editLight(Light& light) {
     // Written as typed, as the material's name: the edit commits when the field lets go, by
     // Enter or by a click elsewhere (it used to be lost unless Enter was pressed).
     inputString("Name", &light.name);
-    recordItem("Light name");
+    recordItem("Light name", "The light's name in the list and the scene file");
     ImGui::Checkbox("Enabled", &light.enabled);
+    recordItem("Light enabled", "Whether this light shines");
     if (light.type != LightType::Environment) {   // an environment's colour is its image's
-        colorEditLinear("Colour", &light.color, true);
+        colorEditLinear("Colour", "The light's colour; values above 1 are kept", &light.color, true);
     }
     // Each pixel of drag changes the intensity by 1% of itself: 8 to 100 is about 250 pixels,
     // not 1800 as at a fixed step, and small values stay as easy to set as large ones.
     ImGui::DragFloat("Intensity", &light.intensity, std::max(light.intensity, 0.1f) * 0.01f, 0.0f, 1e6f, "%.3f",
                      ImGuiSliderFlags_AlwaysClamp);
-    recordItem("Intensity");
+    recordItem("Intensity", "How bright the light is; a drag changes it in proportion to itself. Ctrl+click to type");
     switch (light.type) {
     case LightType::Point:
         ImGui::DragFloat3("Position", &light.position.x, 0.01f);
+        recordItem("Position", "Where the light is (x, y, z); or drag its dot in the viewport");
         ImGui::DragFloat("Range", &light.range, 0.05f, 0.0f, 1e4f, light.range > 0 ? "%.3f" : "none",
                          ImGuiSliderFlags_AlwaysClamp);
+        recordItem("Range", "Beyond this distance the light fades to nothing (0: no limit)");
         ImGui::DragFloat("a_c", &light.attenuation.x, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        recordItem("a_c", "Falloff 1 / (a_c + a_l d + a_q d^2): the constant term");
         ImGui::DragFloat("a_l", &light.attenuation.y, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        recordItem("a_l", "Falloff 1 / (a_c + a_l d + a_q d^2): the linear term");
         ImGui::DragFloat("a_q", &light.attenuation.z, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        recordItem("a_q", "Falloff 1 / (a_c + a_l d + a_q d^2): the quadratic term (1: physical)");
         break;
     case LightType::Directional: editDirection(light); break;
     case LightType::Hemisphere:
-        colorEditLinear("Sky", &light.sky, true);
-        colorEditLinear("Ground", &light.ground, true);
+        colorEditLinear("Sky", "The colour from above", &light.sky, true);
+        colorEditLinear("Ground", "The colour from below", &light.ground, true);
         break;
     case LightType::Environment: break;   // editEnvironment, which needs the scene
     }
@@ -132,20 +143,22 @@ void drawLightsPanel(EditorState& state) {
     if (ImGui::Button("Add point")) {
         addLight(state, LightType::Point);
     }
-    recordItem("Add point");
-    ImGui::SameLine();
+    recordItem("Add point", "A light from one point, like a bulb");
+    sameLineIfFits(buttonWidth("Add directional"));
     if (ImGui::Button("Add directional")) {
         addLight(state, LightType::Directional);
     }
-    ImGui::SameLine();
+    recordItem("Add directional", "Parallel light from far away, like the sun");
+    sameLineIfFits(buttonWidth("Add hemisphere"));
     if (ImGui::Button("Add hemisphere")) {
         addLight(state, LightType::Hemisphere);
     }
-    ImGui::SameLine();
+    recordItem("Add hemisphere", "A sky colour above and a ground colour below");
+    sameLineIfFits(buttonWidth("Add environment"));
     if (ImGui::Button("Add environment")) {
         addLight(state, LightType::Environment);
     }
-    recordItem("Add environment");
+    recordItem("Add environment", "Light from a whole surrounding image (HDR)");
 
     std::vector<Light>& lights = state.scene.lights;
     if (ImGui::BeginTable("lights", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
@@ -156,12 +169,19 @@ void drawLightsPanel(EditorState& state) {
             ImGui::PushID(i);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
+            // A light solo leaves out is greyed out, still there to pick.
+            const bool faded = soloedOut(state, i);
+            ImGui::PushStyleVar(ImGuiStyleVar_Alpha, faded ? ImGui::GetStyle().DisabledAlpha : 1.0f);
+            const std::string id = "light:" + std::to_string(i);
             ImGui::Checkbox("##enabled", &lights[size_t(i)].enabled);
+            recordItem(id + " enabled", "Whether this light shines");
             ImGui::TableNextColumn();
             const std::string label = std::string(typeIcon(lights[size_t(i)].type)) + " " + lights[size_t(i)].name;
             if (ImGui::Selectable(label.c_str(), state.selectedLight == i)) {
                 state.selectedLight = i;
             }
+            recordItem(id, faded ? "Left out by solo; click to edit it" : "Click to edit this light");
+            ImGui::PopStyleVar();
             ImGui::TableNextColumn();
             const bool solo = state.soloLight == i;
             if (solo) {
@@ -173,9 +193,7 @@ void drawLightsPanel(EditorState& state) {
             if (solo) {
                 ImGui::PopStyleColor();
             }
-            if (ImGui::IsItemHovered()) {
-                ImGui::SetTooltip("Solo: render only this light");
-            }
+            recordItem(id + " solo", "Solo: render only this light (click again for all)");
             ImGui::PopID();
         }
         ImGui::EndTable();
@@ -186,18 +204,22 @@ void drawLightsPanel(EditorState& state) {
     if (ImGui::Button("Duplicate")) {
         duplicateLight(state, selected);
     }
+    recordItem("Duplicate light", "A copy of the selected light");
     ImGui::SameLine();
     if (ImGui::Button("Delete")) {
         deleteLight(state, selected);
     }
+    recordItem("Delete light", "Delete the selected light (Delete key)");
     ImGui::SameLine();
     if (ImGui::ArrowButton("up", ImGuiDir_Up)) {
         moveLight(state, selected, -1);
     }
+    recordItem("Light up", "Move the selected light up the list");
     ImGui::SameLine();
     if (ImGui::ArrowButton("down", ImGuiDir_Down)) {
         moveLight(state, selected, +1);
     }
+    recordItem("Light down", "Move the selected light down the list");
     ImGui::EndDisabled();
     if (state.selectedLight >= 0 && state.selectedLight < int(lights.size())) {
         ImGui::Separator();

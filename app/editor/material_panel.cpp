@@ -7,18 +7,10 @@
 
 namespace patina::editor {
 
-void drawMaterialPanel(EditorState& state) {
+namespace {
+// The research controls: which BRDF model and render path, and what the shader derives.
+void drawAdvanced(EditorState& state) {
     Material& material = state.scene.material;
-    const Material defaults;
-    const Material& file = state.savedMaterial;   // as opened or last saved
-    inputString("Name", &material.name);
-    ImGui::SetNextItemWidth(widthBesideReset("Base colour"));
-    colorEditLinear("Base colour", &material.baseColor);
-    ImGui::SameLine();
-    resetButton("Base colour", &material.baseColor, file.baseColor, defaults.baseColor);
-    sliderWithReset("Roughness", &material.roughness, 0.0f, 1.0f, file.roughness, defaults.roughness);
-    sliderWithReset("Specular", &material.specular, 0.0f, 1.0f, file.specular, defaults.specular);
-    sliderWithReset("Metallic", &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
     if (ImGui::BeginCombo("Model", std::string(brdfModel(material.model).name).c_str())) {
         for (const BrdfModelInfo& model : brdfModels()) {
             if (ImGui::Selectable(std::string(model.name).c_str(), model.id == material.model)) {
@@ -30,11 +22,24 @@ void drawMaterialPanel(EditorState& state) {
         }
         ImGui::EndCombo();
     }
-    recordItem("Model");
+    recordItem("Model", "The BRDF model the renderer shades with (saved with the material)");
+    int path = int(state.renderPath);
+    ImGui::TextUnformatted("Render path");
+    ImGui::RadioButton("single", &path, int(RenderPath::Single));
+    recordItem("Path single", "One pass shades every light (the default)");
+    sameLineIfFits(ImGui::GetFrameHeight() + ImGui::CalcTextSize("multi").x + ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::RadioButton("multi", &path, int(RenderPath::Multi));
+    recordItem("Path multi", "One additive pass a light, to compare against single");
+    sameLineIfFits(ImGui::GetFrameHeight() + ImGui::CalcTextSize("specialised").x +
+                   ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::RadioButton("specialised", &path, int(RenderPath::Specialised));
+    recordItem("Path specialised", "A shader compiled for this scene's lights");
+    state.renderPath = RenderPath(path);
+    ImGui::PushTextWrapPos(0.0f);   // notes wrap at the panel's edge
+    ImGui::TextDisabled("The viewport shows the render's CPU and GPU time.");
 
     // What the shader derives from the four parameters (shaders/shared/brdf.glsl), guards included.
     const shader::SurfaceMaterial derived = surfaceMaterial(material);
-    ImGui::Separator();
     ImGui::TextDisabled("Derived");
     const float k = (derived.roughness + 1.0f) * (derived.roughness + 1.0f) / 8.0f;
     ImGui::Text("alpha = r^2       %.5f", double(derived.alpha));
@@ -42,8 +47,38 @@ void drawMaterialPanel(EditorState& state) {
     if (derived.roughness != material.roughness) {
         ImGui::TextDisabled("roughness floored at %.3f (D is 0/0 at r = 0)", double(derived.roughness));
     }
-    linearSwatch("c_diff", derived.diffuseColor);
-    linearSwatch("F0    ", derived.f0);
+    ImGui::PopTextWrapPos();
+    linearSwatch("c_diff", "The diffuse colour the shader uses: base colour times (1 - metallic)",
+                 derived.diffuseColor);
+    linearSwatch("F0", "The reflectance head-on: 0.16 specular^2 for a dielectric, the base colour for a metal",
+                 derived.f0);
+}
+}  // namespace
+
+void drawMaterialPanel(EditorState& state) {
+    Material& material = state.scene.material;
+    const Material defaults;
+    const Material& file = state.savedMaterial;   // as opened or last saved
+    inputString("Name", &material.name);
+    recordItem("Material name", "The material's name, saved in its file and shown in captions");
+    ImGui::SetNextItemWidth(widthBesideReset("Base colour"));
+    colorEditLinear("Base colour", "The colour of diffuse light, or of the reflection for a metal (click the swatch to pick)",
+                    &material.baseColor);
+    ImGui::SameLine();
+    resetButton("Base colour", &material.baseColor, file.baseColor, defaults.baseColor);
+    sliderWithReset("Roughness", "0: a mirror-sharp highlight; 1: a broad, dull one. Ctrl+click to type",
+                    &material.roughness, 0.0f, 1.0f, file.roughness, defaults.roughness);
+    sliderWithReset("Specular", "How strongly a non-metal reflects head-on (0.5 is 4%, most materials)",
+                    &material.specular, 0.0f, 1.0f, file.specular, defaults.specular);
+    sliderWithReset("Metallic", "0: a dielectric (plastic, stone); 1: a metal, whose reflection takes the base colour",
+                    &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
+
+    ImGui::SetNextItemOpen(state.showAdvanced);
+    state.showAdvanced = ImGui::CollapsingHeader("Advanced");
+    recordItem("Advanced", "The BRDF model, render path, timings, derived values and the Accuracy tab");
+    if (state.showAdvanced) {
+        drawAdvanced(state);
+    }
 }
 
 }  // namespace patina::editor

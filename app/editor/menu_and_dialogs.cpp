@@ -1,20 +1,19 @@
 #include <algorithm>
+#include <cmath>
 #include <system_error>
 
 #include <imgui.h>
 
+#include "file_dialog.h"
 #include "keys.h"
+#include "open_folder.h"
 #include "panels.h"
+#include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
 
 namespace {
-void startPathDialog(EditorState& state, EditorState::PathDialog kind, std::filesystem::path initial) {
-    state.pathDialog = kind;
-    state.pathDialogText = initial.string();
-}
-
 void saveAs(EditorState& state) {
     startPathDialog(state, EditorState::PathDialog::SaveAs,
                     state.materialPath.empty() ? std::filesystem::path(state.scene.material.name + ".json")
@@ -52,42 +51,30 @@ void screenshot(EditorState& state, EditorServices& services) {
     services.screenshot(state, std::max(width, 1), std::max(height, 1));
 }
 
-// Entries of the folder the typed path points into, for picking with the mouse.
-void drawFolderListing(EditorState& state) {
-    std::filesystem::path typed(state.pathDialogText);
-    std::filesystem::path folder = std::filesystem::is_directory(typed) ? typed : typed.parent_path();
-    if (folder.empty()) {
-        folder = ".";
+void openScreenshotFolder(EditorState& state) {
+    if (const std::string failed = showFolder(state.screenshotFolder, state.folderOpener); !failed.empty()) {
+        state.error = failed;
     }
-    std::vector<std::filesystem::directory_entry> entries;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-        const std::string extension = entry.path().extension().string();
-        if (entry.is_directory(error) || extension == ".json" || extension == ".png") {
-            entries.push_back(entry);
-        }
-    }
-    std::sort(entries.begin(), entries.end());
-    ImGui::BeginChild("listing", ImVec2(520, 220), true);
-    if (ImGui::Selectable("..")) {
-        state.pathDialogText = (std::filesystem::absolute(folder, error).parent_path() / "").string();
-    }
-    for (const auto& entry : entries) {
-        const bool directory = entry.is_directory(error);
-        const std::string label = entry.path().filename().string() + (directory ? "/" : "");
-        if (ImGui::Selectable(label.c_str())) {
-            state.pathDialogText = (entry.path() / (directory ? "" : "")).string();
-        }
-    }
-    ImGui::EndChild();
 }
+
+// The user's presets folder, the material's name as the file's.
+void saveAsPresetDialog(EditorState& state) {
+    std::string name = state.scene.material.name.empty() ? "material" : state.scene.material.name;
+    std::replace(name.begin(), name.end(), '/', '_');
+    startPathDialog(state, EditorState::PathDialog::SavePreset, state.userPresetFolder / (name + ".json"));
+}
+
 }  // namespace
 
 void drawMenuBar(EditorState& state, EditorServices& services) {
     if (!ImGui::BeginMainMenuBar()) {
         return;
     }
-    if (ImGui::BeginMenu("File")) {
+    const bool fileMenu = ImGui::BeginMenu("File");
+    if (!fileMenu) {
+        recordItem("menu:File");   // while open, the last item is the menu's window
+    }
+    if (fileMenu) {
         if (ImGui::MenuItem("Open...", "Ctrl+O")) {
             startPathDialog(state, EditorState::PathDialog::Open, state.materialPath.parent_path() / "");
         }
@@ -112,10 +99,18 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         if (ImGui::MenuItem("Save scene as...")) {
             saveSceneAs(state);
         }
+        if (ImGui::MenuItem("Save as preset...", nullptr, false, !state.userPresetFolder.empty())) {
+            saveAsPresetDialog(state);
+        }
+        recordItem("Save as preset", "Save the material into your presets folder; it shows in the preset browser");
         ImGui::Separator();
         if (ImGui::MenuItem("Screenshot", "F12")) {
             screenshot(state, services);
         }
+        if (ImGui::MenuItem("Open screenshot folder")) {
+            openScreenshotFolder(state);
+        }
+        recordItem("Open screenshot folder", "Show the folder screenshots go to in the file manager");
         if (ImGui::MenuItem("Export comparison...", nullptr, false, state.compareA.has_value())) {
             startPathDialog(state, EditorState::PathDialog::ExportComparison, "comparison.png");
         }
@@ -142,19 +137,40 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         if (ImGui::MenuItem("Frame mesh", "F")) {
             frameMesh(state);
         }
-        recordItem("Frame mesh");
-        ImGui::SetNextItemWidth(90);
+        recordItem("Frame mesh", "Aim the camera at the whole mesh");
+        ImGui::MenuItem("Light gizmos", nullptr, &state.showGizmos);
+        recordItem("Light gizmos", "Show the lights' dots and arrows over the viewport");
+        ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
+        recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
+        // Steps, not a slider: the menu would grow under the mouse while it is dragged.
+        const bool sizes = ImGui::BeginMenu("UI size");
+        if (!sizes) {   // while open, the last item is the menu's window
+            recordItem("UI size", "Text and controls larger or smaller, on top of the screen's own scale");
+        }
+        if (sizes) {
+            for (int percent : {75, 100, 125, 150, 175, 200, 250, 300}) {
+                const std::string label = std::to_string(percent) + "%";
+                if (ImGui::MenuItem(label.c_str(), nullptr, std::lround(state.uiScaleSetting * 100.0f) == percent)) {
+                    state.uiScaleSetting = float(percent) / 100.0f;
+                }
+                recordItem("UI size " + label);
+            }
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
+        ImGui::SetNextItemWidth(px(90));
         ImGui::InputInt("Screenshot width (0: viewport)", &state.screenshotWidth);
-        recordItem("Screenshot width");
-        ImGui::SetNextItemWidth(90);
+        recordItem("Screenshot width", "Screenshots this many pixels wide; 0: as wide as the viewport");
+        ImGui::SetNextItemWidth(px(90));
         ImGui::InputInt("Screenshot height (0: viewport)", &state.screenshotHeight);
-        recordItem("Screenshot height");
+        recordItem("Screenshot height", "Screenshots this many pixels high; 0: as high as the viewport");
         state.screenshotWidth = std::clamp(state.screenshotWidth, 0, 8192);
         state.screenshotHeight = std::clamp(state.screenshotHeight, 0, 8192);
         std::string folder = state.screenshotFolder.string();
         if (inputString("Screenshot folder", &folder)) {
             state.screenshotFolder = folder;
         }
+        recordItem("Screenshot folder", "Where F12 writes screenshots (made when missing)");
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
@@ -163,10 +179,18 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         }
         ImGui::EndMenu();
     }
-    // The last completed action, on one line where it moves nothing.
+    // The last completed action, on one line where it moves nothing; after a screenshot, a
+    // button to its folder.
     const std::string status = state.status.substr(0, state.status.find('\n'));
-    ImGui::SameLine(0.0f, 24.0f);
+    ImGui::SameLine(0.0f, px(24));
     ImGui::TextDisabled("%s", status.c_str());
+    if (!state.lastScreenshot.empty() && status.find(state.lastScreenshot.string()) != std::string::npos) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Open folder")) {
+            openScreenshotFolder(state);
+        }
+        recordItem("Open folder", "Show the screenshot's folder in the file manager");
+    }
     ImGui::EndMainMenuBar();
 }
 
@@ -208,43 +232,7 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
 }
 
 void drawDialogs(EditorState& state, EditorServices& services) {
-    // Path dialog: Open, Save as, Export comparison.
-    if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("Path")) {
-        ImGui::OpenPopup("Path");
-    }
-    if (ImGui::BeginPopupModal("Path", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const EditorState::PathDialog kind = state.pathDialog;
-        const char* verb = kind == EditorState::PathDialog::Open ? "Open"
-                           : kind == EditorState::PathDialog::SaveAs || kind == EditorState::PathDialog::SaveSceneAs
-                               ? "Save"
-                               : "Export";
-        ImGui::Text("%s: a material (.json), scene (.json) or Patina screenshot (.png)", verb);
-        ImGui::SetNextItemWidth(520);
-        const bool entered = inputString("##path", &state.pathDialogText, ImGuiInputTextFlags_EnterReturnsTrue);
-        drawFolderListing(state);
-        const bool confirmed = ImGui::Button(verb);
-        recordItem("path:confirm");
-        if (confirmed || entered) {
-            const std::filesystem::path path = state.pathDialogText;
-            if (state.pathDialog == EditorState::PathDialog::Open) {
-                requestOpen(state, path);
-            } else if (state.pathDialog == EditorState::PathDialog::SaveAs) {
-                saveMaterial(state, path);
-            } else if (state.pathDialog == EditorState::PathDialog::SaveSceneAs) {
-                saveScene(state, path);
-            } else {
-                services.exportComparison(state, path);
-            }
-            state.pathDialog = EditorState::PathDialog::None;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
-            state.pathDialog = EditorState::PathDialog::None;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
-    }
+    drawPathDialog(state, services);
 
     // The last session's work, offered before anything else.
     if (state.recoverable && !ImGui::IsPopupOpen("Restore unsaved work?")) {
@@ -326,19 +314,30 @@ void drawDialogs(EditorState& state, EditorServices& services) {
     }
 
     if (state.showShortcuts) {
-        ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Appearing);
-        if (ImGui::Begin("Shortcuts", &state.showShortcuts)) {
+        // Centred and sized to its rows, never larger than the window.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(display.x - px(20), display.y - px(20)));
+        if (ImGui::Begin("Shortcuts", &state.showShortcuts, ImGuiWindowFlags_AlwaysAutoResize)) {
             const char* rows[][2] = {
-                {"Ctrl+O", "open a material, scene or screenshot"},
+                {"Ctrl+O", "open a material, scene, screenshot, glTF or environment"},
                 {"Ctrl+S", "save (the scene, if one is open; else the material)"},
-                {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"}, {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
-                {"F12", "screenshot of the viewport"}, {"Delete", "delete the selected light"}, {"F", "frame the mesh (viewport)"},
+                {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"},
+                {"Ctrl+Shift+Z, Ctrl+Y", "redo"}, {"F12", "screenshot of the viewport"},
+                {"Delete", "delete the selected light"}, {"F", "frame the mesh (viewport)"},
                 {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"},
-                {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"}, {"F1", "this list"},
-                {"Ctrl+Q", "quit"}};
-            for (const auto& row : rows) {
-                ImGui::Text("%-24s %s", row[0], row[1]);
+                {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"},
+                {"Right-click Reset", "back to the default"}, {"F1", "this list"}, {"Ctrl+Q", "quit"}};
+            if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) {
+                for (const auto& row : rows) {
+                    ImGui::TableNextColumn();
+                    ImGui::TextUnformatted(row[0]);
+                    ImGui::TableNextColumn();
+                    ImGui::TextDisabled("%s", row[1]);
+                }
+                ImGui::EndTable();
             }
+            recordItem("shortcuts");
         }
         ImGui::End();
     }

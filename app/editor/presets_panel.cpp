@@ -4,6 +4,7 @@
 
 #include "panels.h"
 #include "io/scene_file.h"
+#include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
@@ -24,7 +25,7 @@ std::string fitted(const std::string& text, float width) {
 
 // Each preset as its thumbnail in the fixed preview scene, captioned with its material's name.
 void drawPresetsPanel(EditorState& state, EditorServices& services) {
-    constexpr float kThumb = 64.0f;
+    const float kThumb = px(64.0f);
     const float cell = kThumb + ImGui::GetStyle().ItemSpacing.x;
     const int columns = std::max(1, int(ImGui::GetContentRegionAvail().x / cell));
     for (const std::filesystem::path& folder : state.presetFolders) {
@@ -47,10 +48,8 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
             } else {
                 clicked = ImGui::Button("?", ImVec2(kThumb, kThumb));   // unreadable file
             }
-            recordItem("preset:" + file.stem().string());
-            if (ImGui::IsItemHovered()) {
-                ImGui::SetTooltip("%s\n%s", name.c_str(), file.filename().string().c_str());
-            }
+            const std::string tooltip = name + "\n" + file.filename().string() + (preset ? "" : "\n(cannot be read)");
+            recordItem("preset:" + file.stem().string(), tooltip.c_str());
             ImGui::TextUnformatted(fitted(name, kThumb).c_str());
             recordItem("caption:" + file.stem().string());
             ImGui::EndGroup();

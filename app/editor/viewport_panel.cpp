@@ -8,20 +8,26 @@
 #include "scene/camera_control.h"
 #include "panels.h"
 #include "keys.h"
+#include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
 
 namespace {
-constexpr float kGizmoRadius = 7.0f;
+// A light's dot, at the UI's scale.
+float gizmoRadius() {
+    return px(7.0f);
+}
 
+// The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
+// being cut off at its edge.
 void drawToolbar(EditorState& state) {
     DisplaySettings& display = state.scene.display;
     // sphere, torus, or the glTF file opened or dropped on the window.
     const std::string current = state.scene.meshFile.empty()
                                     ? std::string(meshKindName(state.scene.mesh))
                                     : std::filesystem::path(state.scene.meshFile).filename().string();
-    ImGui::SetNextItemWidth(110);
+    ImGui::SetNextItemWidth(px(110));
     if (ImGui::BeginCombo("Mesh", current.c_str())) {
         for (MeshKind kind : {MeshKind::Sphere, MeshKind::Torus}) {
             if (ImGui::Selectable(std::string(meshKindName(kind)).c_str(),
@@ -34,48 +40,47 @@ void drawToolbar(EditorState& state) {
         ImGui::TextDisabled("or open / drop a .gltf or .glb");
         ImGui::EndCombo();
     }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(110);
+    recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
+    sameLineIfFits(labelledWidth(px(110), "Exposure"));
+    ImGui::SetNextItemWidth(px(110));
     ImGui::SliderFloat("Exposure", &display.exposure, -8.0f, 8.0f, "%.2f EV");
-    ImGui::SameLine();
+    recordItem("Exposure", "Brightness of the picture in stops (EV): +1 doubles it. Ctrl+click to type");
+    sameLineIfFits(labelledWidth(px(100), "Tone map"));
     int tonemap = int(display.tonemap);
-    ImGui::SetNextItemWidth(90);
+    ImGui::SetNextItemWidth(px(100));
     ImGui::Combo("Tone map", &tonemap, "none\0aces\0reinhard\0pbr neutral\0");
+    recordItem("Tone map", "How light above white is brought into the screen's range; PBR Neutral keeps colours true");
     display.tonemap = Tonemap(tonemap);
-    ImGui::SameLine();
-    colorEditLinear("Background", &display.background, false, ImGuiColorEditFlags_NoInputs);
-    ImGui::SameLine();
-    int passes = int(state.renderPath);
-    ImGui::RadioButton("single", &passes, int(RenderPath::Single));
-    ImGui::SameLine();
-    ImGui::RadioButton("multi", &passes, int(RenderPath::Multi));
-    ImGui::SameLine();
-    ImGui::RadioButton("specialised", &passes, int(RenderPath::Specialised));
-    state.renderPath = RenderPath(passes);
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Background"));
+    colorEditLinear("Background", "The colour behind the mesh", &display.background, false,
+                    ImGuiColorEditFlags_NoInputs);
 
+    const ImGuiStyle& style = ImGui::GetStyle();
+    auto radioWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };
     if (ImGui::Button("Set A")) {
         state.compareA = state.scene.material;
         if (state.compareView == CompareView::Single) {
             state.compareView = CompareView::Split;
         }
     }
-    recordItem("Set A");
-    ImGui::SameLine();
+    recordItem("Set A", "Keep the current material as A, to compare with what you edit next (B)");
+    sameLineIfFits(radioWidth("Single"));
     ImGui::BeginDisabled(!state.compareA);
     int view = int(state.compareView);
     ImGui::RadioButton("Single", &view, int(CompareView::Single));
-    recordItem("Single");
-    ImGui::SameLine();
+    recordItem("Single", "Show B, the material being edited, alone");
+    sameLineIfFits(radioWidth("Split"));
     ImGui::RadioButton("Split", &view, int(CompareView::Split));
-    recordItem("Split");
-    ImGui::SameLine();
+    recordItem("Split", "A left of a divider you can drag, B right of it");
+    sameLineIfFits(radioWidth("Side by side"));
     ImGui::RadioButton("Side by side", &view, int(CompareView::SideBySide));
-    recordItem("Side by side");
+    recordItem("Side by side", "A and B next to each other, each half as wide");
     state.compareView = state.compareA ? CompareView(view) : CompareView::Single;
-    ImGui::SameLine();
+    sameLineIfFits(ImGui::CalcTextSize("Clear A").x + style.FramePadding.x * 2);
     if (ImGui::Button("Clear A")) {
         state.compareA.reset();
     }
+    recordItem("Clear A", "Forget A and show B alone");
     ImGui::EndDisabled();
 }
 
@@ -105,16 +110,19 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
             continue;
         }
         const ImVec2 at(origin.x + screen->x, origin.y + screen->y);
-        const bool hovered = glm::distance(*screen, local) <= kGizmoRadius + 3.0f;
+        const bool hovered = glm::distance(*screen, local) <= gizmoRadius() + 3.0f;
         hoveredAny |= hovered;
-        const ImU32 color = i == state.selectedLight ? IM_COL32(255, 210, 80, 255) : IM_COL32(230, 230, 230, 200);
+        // The selected light in yellow; one that solo leaves out of the picture greyed out.
+        const ImU32 color = i == state.selectedLight ? IM_COL32(255, 210, 80, 255)
+                            : soloedOut(state, i)    ? IM_COL32(110, 110, 110, 160)
+                                                     : IM_COL32(230, 230, 230, 200);
         if (light.type == LightType::Point) {
-            draw->AddCircleFilled(at, kGizmoRadius, light.enabled ? color : IM_COL32(90, 90, 90, 200));
-            draw->AddCircle(at, kGizmoRadius + 2.0f, IM_COL32(0, 0, 0, 200));
+            draw->AddCircleFilled(at, gizmoRadius(), light.enabled ? color : IM_COL32(90, 90, 90, 200));
+            draw->AddCircle(at, gizmoRadius() + 2.0f, IM_COL32(0, 0, 0, 200));
         } else if (const auto centre = projectToViewport(camera, viewSize, camera.target)) {
             const ImVec2 tip(origin.x + centre->x, origin.y + centre->y);
             draw->AddLine(at, tip, color, 2.0f);
-            draw->AddCircleFilled(at, kGizmoRadius * 0.7f, color);
+            draw->AddCircleFilled(at, gizmoRadius() * 0.7f, color);
             draw->AddTriangleFilled(tip, ImVec2(tip.x - 4, tip.y - 4), ImVec2(tip.x + 4, tip.y - 4), color);
         }
         if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
@@ -231,7 +239,8 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
             ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
         }
     }
-    const bool gizmo = state.compareView != CompareView::SideBySide && drawLightGizmos(state, origin, size, viewportPressed);
+    const bool gizmo = state.showGizmos && state.compareView != CompareView::SideBySide &&
+                       drawLightGizmos(state, origin, size, viewportPressed);
     if (viewportActive && !gizmo && !onDivider) {
         handleCameraInput(state, size);
     } else if (hovered && ImGui::GetIO().MouseWheel != 0.0f) {
@@ -242,7 +251,10 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
         frameMesh(state);
     }
 
-    // Overlay: cost of the last render and what was drawn.
+    // Overlay (Advanced): cost of the last render and what was drawn.
+    if (!state.showAdvanced) {
+        return;
+    }
     int enabled = 0;
     for (const Light& light : b.lights) {
         enabled += light.enabled;
@@ -251,10 +263,11 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     std::snprintf(overlay, sizeof overlay, "CPU %.1f ms  GPU %.1f ms  lights %d  %s pass",
                   services.lastRenderMilliseconds(), services.lastGpuMilliseconds(), enabled,
                   std::string(renderPathName(state.renderPath)).c_str());
-    draw->AddRectFilled(ImVec2(origin.x + 4, origin.y + size.y - 22),
-                        ImVec2(origin.x + 12 + ImGui::CalcTextSize(overlay).x, origin.y + size.y - 4),
+    const float line = ImGui::GetTextLineHeight();
+    draw->AddRectFilled(ImVec2(origin.x + px(4), origin.y + size.y - line - px(8)),
+                        ImVec2(origin.x + px(12) + ImGui::CalcTextSize(overlay).x, origin.y + size.y - px(4)),
                         IM_COL32(0, 0, 0, 150));
-    draw->AddText(ImVec2(origin.x + 8, origin.y + size.y - 20), IM_COL32(220, 220, 220, 255), overlay);
+    draw->AddText(ImVec2(origin.x + px(8), origin.y + size.y - line - px(6)), IM_COL32(220, 220, 220, 255), overlay);
 }
 
 }  // namespace patina::editor

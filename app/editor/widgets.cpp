@@ -6,6 +6,8 @@
 #include <map>
 #include <vector>
 
+#include <imgui_internal.h>
+
 #include "shading/shading.h"
 
 namespace patina::editor {
@@ -19,9 +21,9 @@ glm::vec3 toLinear(glm::vec3 srgb) {
     return {shader::srgbDecode(srgb.r), shader::srgbDecode(srgb.g), shader::srgbDecode(srgb.b)};
 }
 
-std::map<std::string, std::pair<ImVec2, ImVec2>>& itemRects() {
-    static std::map<std::string, std::pair<ImVec2, ImVec2>> rects;
-    return rects;
+std::map<std::string, RecordedItem>& recorded() {
+    static std::map<std::string, RecordedItem> items;
+    return items;
 }
 }  // namespace
 
@@ -32,13 +34,13 @@ float widthBesideReset(const char* label) {
            style.ItemInnerSpacing.x;
 }
 
-bool sliderWithReset(const char* label, float* value, float minimum, float maximum, float fileValue,
-                     float defaultValue, const char* format) {
+bool sliderWithReset(const char* label, const char* tooltip, float* value, float minimum, float maximum,
+                     float fileValue, float defaultValue, const char* format) {
     ImGui::PushID(label);
     ImGui::SetNextItemWidth(widthBesideReset(label));
     bool changed = ImGui::SliderFloat(label, value, minimum, maximum, format,
                                       ImGuiSliderFlags_AlwaysClamp);
-    recordItem(label);
+    recordItem(label, tooltip);
     ImGui::SameLine();
     changed |= resetButton(label, value, fileValue, defaultValue);
     ImGui::PopID();
@@ -57,7 +59,7 @@ bool onlyQuantised(glm::vec3 before, glm::vec3 after) {
     return true;
 }
 
-bool colorEditLinear(const char* label, glm::vec3* linear, bool hdr, ImGuiColorEditFlags flags) {
+bool colorEditLinear(const char* label, const char* tooltip, glm::vec3* linear, bool hdr, ImGuiColorEditFlags flags) {
     // sRGB cannot show components above 1: the picker shows the colour over its peak, and the
     // peak multiplies back in (light colours may be HDR; material colours stay in [0, 1]).
     const float peak = hdr ? std::max({linear->r, linear->g, linear->b, 1.0f}) : 1.0f;
@@ -67,16 +69,17 @@ bool colorEditLinear(const char* label, glm::vec3* linear, bool hdr, ImGuiColorE
     // 0.7991) without any edit: that is no change, and must not dirty the file or make a step.
     const bool changed = ImGui::ColorEdit3(label, color, ImGuiColorEditFlags_Float | flags) &&
                          !onlyQuantised(srgb, glm::vec3(color[0], color[1], color[2]));
-    recordItem(label);
+    recordItem(label, tooltip);
     if (changed) {
         *linear = glm::clamp(toLinear(glm::vec3(color[0], color[1], color[2])), 0.0f, 1.0f) * peak;
     }
     return changed;
 }
 
-void linearSwatch(const char* label, glm::vec3 linear) {
+void linearSwatch(const char* label, const char* tooltip, glm::vec3 linear) {
     const glm::vec3 srgb = toSrgb(glm::clamp(linear, 0.0f, 1.0f));
     ImGui::ColorButton(label, ImVec4(srgb.r, srgb.g, srgb.b, 1.0f), ImGuiColorEditFlags_NoTooltip);
+    recordItem(label, tooltip);
     ImGui::SameLine();
     ImGui::Text("%s  %.4f %.4f %.4f", label, double(linear.r), double(linear.g), double(linear.b));
 }
@@ -91,27 +94,75 @@ bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags
     return false;
 }
 
-void recordItem(const std::string& name) {
-    itemRects()[name] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+void recordItem(const std::string& name, const char* tooltip) {
+    const ImGuiContext& context = *ImGui::GetCurrentContext();
+    const ImGuiWindow& window = *context.CurrentWindow;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    RecordedItem& item = recorded()[name];
+    item.min = ImGui::GetItemRectMin();
+    item.max = ImGui::GetItemRectMax();
+    // What the item was drawn clipped to: its window's inside, its table column, its menu bar.
+    const ImVec2 clipMin = window.DrawList->GetClipRectMin(), clipMax = window.DrawList->GetClipRectMax();
+    item.visibleMin = ImVec2(std::max(clipMin.x, 0.0f), std::max(clipMin.y, 0.0f));
+    item.visibleMax = ImVec2(std::min(clipMax.x, display.x), std::min(clipMax.y, display.y));
+    item.scrolls = window.ScrollbarY;
+    item.dimmed = (context.CurrentItemFlags & ImGuiItemFlags_Disabled) != 0 || context.Style.Alpha < 1.0f;
+    item.tooltip = tooltip ? tooltip : "";
+    item.frame = ImGui::GetFrameCount();
+    if (tooltip && !ImGui::IsItemActive() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::SetTooltip("%s", tooltip);
+    }
 }
 
 bool itemRect(const std::string& name, ImVec2* min, ImVec2* max) {
-    const auto it = itemRects().find(name);
-    if (it == itemRects().end()) {
+    const auto it = recorded().find(name);
+    if (it == recorded().end()) {
         return false;
     }
-    *min = it->second.first;
-    *max = it->second.second;
+    *min = it->second.min;
+    *max = it->second.max;
     return true;
+}
+
+void forgetRecordedItems() {
+    recorded().clear();
+}
+
+std::map<std::string, RecordedItem> itemsOfLastFrame() {
+    std::map<std::string, RecordedItem> items;
+    for (const auto& [name, item] : recorded()) {
+        if (item.frame == ImGui::GetFrameCount()) {
+            items.emplace(name, item);
+        }
+    }
+    return items;
+}
+
+bool clipped(const RecordedItem& item) {
+    constexpr float slack = 0.5f;   // rounding of the rectangles
+    const bool horizontally = item.min.x < item.visibleMin.x - slack || item.max.x > item.visibleMax.x + slack;
+    const bool vertically = item.min.y < item.visibleMin.y - slack || item.max.y > item.visibleMax.y + slack;
+    return horizontally || (vertically && !item.scrolls);
+}
+
+void sameLineIfFits(float width) {
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < width) {
+        ImGui::NewLine();
+    }
+}
+
+float labelledWidth(float fieldWidth, const char* label) {
+    return fieldWidth + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
 }
 
 std::string layoutJson() {
     std::string json = "{";
-    for (const auto& [name, rect] : itemRects()) {
+    for (const auto& [name, item] : recorded()) {
         char entry[256];
         std::snprintf(entry, sizeof entry, "%s\"%s\": [%.1f, %.1f, %.1f, %.1f]", json.size() > 1 ? ", " : "",
-                      name.c_str(), double(rect.first.x), double(rect.first.y), double(rect.second.x),
-                      double(rect.second.y));
+                      name.c_str(), double(item.min.x), double(item.min.y), double(item.max.x),
+                      double(item.max.y));
         json += entry;
     }
     return json + "}\n";

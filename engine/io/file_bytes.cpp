@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -14,20 +15,27 @@
 namespace patina {
 
 namespace {
-std::string systemError(const std::string& what, const std::filesystem::path& path) {
-    return what + " '" + path.string() + "': " + std::strerror(errno);
+// The error with its errno kept (std::system_error), so a caller can say what went wrong in
+// its own words; what() reads "<what> '<path>': <strerror>" as before.
+std::system_error systemError(const std::string& what, const std::filesystem::path& path) {
+    const int code = errno;
+    std::string message = what;   // appended, not what + ...: GCC 12 warns falsely (-Wrestrict)
+    message += " '";
+    message += path.string();
+    message += "'";
+    return std::system_error(code, std::generic_category(), message);
 }
 }  // namespace
 
 std::vector<uint8_t> readFileBytes(const std::filesystem::path& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        throw std::runtime_error(systemError("cannot open", path));
+        throw systemError("cannot open", path);
     }
     std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
                                std::istreambuf_iterator<char>());
     if (file.bad()) {
-        throw std::runtime_error(systemError("cannot read", path));
+        throw systemError("cannot read", path);
     }
     return bytes;
 }
@@ -38,7 +46,7 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
     std::string pattern = (directory / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
     const int fd = mkstemp(pattern.data());
     if (fd < 0) {
-        throw std::runtime_error(systemError("cannot create a temporary file beside", path));
+        throw systemError("cannot create a temporary file beside", path);
     }
     size_t written = 0;
     while (written < bytes.size()) {
@@ -47,10 +55,10 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
             continue;
         }
         if (n <= 0) {
-            const std::string message = systemError("cannot write", path);
+            const std::system_error failure = systemError("cannot write", path);
             ::close(fd);
             ::unlink(pattern.c_str());
-            throw std::runtime_error(message);
+            throw failure;
         }
         written += size_t(n);
     }
@@ -61,14 +69,14 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
     const bool synced = ::fsync(fd) == 0;
     const bool closed = ::close(fd) == 0;
     if (!synced || !closed) {
-        const std::string message = systemError("cannot flush", path);
+        const std::system_error failure = systemError("cannot flush", path);
         ::unlink(pattern.c_str());
-        throw std::runtime_error(message);
+        throw failure;
     }
     if (std::rename(pattern.c_str(), path.c_str()) != 0) {
-        const std::string message = systemError("cannot replace", path);
+        const std::system_error failure = systemError("cannot replace", path);
         ::unlink(pattern.c_str());
-        throw std::runtime_error(message);
+        throw failure;
     }
     // The rename is durable once the folder is flushed too. Best effort: the new file is
     // complete and in place already, and some file systems refuse fsync on a folder.

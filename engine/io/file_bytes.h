@@ -7,10 +7,11 @@
 
 namespace patina {
 
-std::vector<uint8_t> readFileBytes(const std::filesystem::path& path);   // throws std::runtime_error
+// Both throw std::system_error (a std::runtime_error) naming the path, with the errno as its code.
+std::vector<uint8_t> readFileBytes(const std::filesystem::path& path);
 
 // Writes all or nothing: a temporary file beside the target, flushed, then renamed over it.
-// Throws std::runtime_error naming the path on any failure and leaves the target untouched.
+// On any failure, throws and leaves the target untouched.
 void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_t>& bytes);
 
 }  // namespace patina

@@ -49,8 +49,10 @@ Scene defaultScene() {
     key.type = LightType::Point;
     key.name = "warm key";
     key.color = {1.0f, 0.78f, 0.55f};
-    key.intensity = 16.0f;
-    key.position = {2.2f, 2.0f, 2.4f};
+    // Up and to the right, between the camera and the sphere: inside the view, so its gizmo can
+    // be seen and grabbed, and as bright on the sphere as the old key from outside the view.
+    key.intensity = 5.0f;
+    key.position = {0.6f, 0.8f, 1.6f};
     key.range = 12.0f;
     key.attenuation = {1.0f, 0.0f, 1.0f};
 

@@ -1,12 +1,21 @@
 // The editor's state without a window: undo/redo, the dirty flag, light list operations,
 // opening files and their errors, and persisted settings.
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <system_error>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "editor_settings.h"
 #include "editor_state.h"
+#include "file_dialog.h"
+#include "lobe_plot.h"
+#include "open_folder.h"
+#include "panel_layout.h"
+#include "save_errors.h"
+#include "ui_scale.h"
 #include "widgets.h"
 #include "gltf/export.h"
 #include "io/json_writer.h"
@@ -111,7 +120,9 @@ TEST_F(EditorStateTest, FailedSaveKeepsTheChangesAndSaysWhy) {
     state.scene.material.roughness = 0.66f;
     EXPECT_FALSE(saveMaterial(state, dir_ / "no" / "such" / "folder.json"));
     EXPECT_TRUE(state.dirty());
-    EXPECT_NE(state.error.find("Could not save"), std::string::npos);
+    // In words: the file, and what is wrong with its folder (not "cannot create a temporary file").
+    EXPECT_EQ(state.error, "Could not save folder.json: the folder " + (dir_ / "no" / "such").string() +
+                               " does not exist");
 }
 
 TEST_F(EditorStateTest, SavingWritesBackUnknownKeysAndKeepsTheOldFileAsBak) {
@@ -351,7 +362,7 @@ TEST_F(EditorStateTest, LightEditsAreUnsavedAndASavedSceneKeepsThem) {
 TEST_F(EditorStateTest, AFailedSceneSaveKeepsTheDocumentAsItWas) {
     addLight(state, LightType::Point);
     EXPECT_FALSE(saveScene(state, dir_ / "missing-folder" / "scene.json"));
-    EXPECT_NE(state.error.find("Could not save the scene"), std::string::npos) << state.error;
+    EXPECT_NE(state.error.find("Could not save scene.json: the folder"), std::string::npos) << state.error;
     EXPECT_TRUE(state.dirty());
     EXPECT_TRUE(state.scenePath.empty());
 }
@@ -417,6 +428,203 @@ TEST(ColourEdit, A8BitRoundingIsNoChangeButAnEditIs) {
     EXPECT_FALSE(onlyQuantised(before, glm::vec3(rounded.r + 1.0f / 255.0f, rounded.g, rounded.b)))
         << "one step of 8 bits is";
     EXPECT_FALSE(onlyQuantised(before, glm::vec3(0.81f, 0.25f, 0.123456f)));
+}
+
+// Save as preset writes into the user's presets folder, made when missing, and the material
+// takes the file's name, so the browser's caption and the file agree.
+TEST_F(EditorStateTest, SaveAsPresetMakesTheFolderAndNamesTheMaterialAfterTheFile) {
+    state.userPresetFolder = dir_ / "config" / "patina" / "presets";
+    state.presetFolders = {state.userPresetFolder};
+    state.scene.material.roughness = 0.31f;
+    ASSERT_TRUE(saveAsPreset(state, state.userPresetFolder / "brushed steel")) << state.error;
+    const fs::path file = state.userPresetFolder / "brushed steel.json";
+    ASSERT_TRUE(fs::exists(file));
+    EXPECT_EQ(state.scene.material.name, "brushed steel");
+    std::vector<std::string> warnings;
+    EXPECT_EQ(loadMaterialFile(file, warnings), state.scene.material);
+    EXPECT_EQ(materialFilesIn(state.userPresetFolder), std::vector<fs::path>{file});
+    EXPECT_FALSE(state.dirty());
+    EXPECT_NE(state.status.find("brushed steel"), std::string::npos) << state.status;
+    undo(state);   // the rename is a step of its own
+    EXPECT_EQ(state.scene.material.name, "terracotta");
+
+    // A folder that cannot be made: said in words, nothing lost.
+    std::ofstream(dir_ / "a-file") << "x";
+    EXPECT_FALSE(saveAsPreset(state, dir_ / "a-file" / "presets" / "gold.json"));
+    EXPECT_NE(state.error.find("Could not save gold.json: "), std::string::npos) << state.error;
+    EXPECT_NE(state.error.find("not a folder"), std::string::npos) << state.error;
+}
+
+// What a failed save says for each reason the system gives.
+TEST(SaveErrors, SayWhatIsWrongInWords) {
+    auto said = [](int code) {
+        return couldNotSave("/x/gold.json", std::system_error(code, std::generic_category(), "cannot create"));
+    };
+    EXPECT_EQ(said(EACCES), "Could not save gold.json: the folder /x is read-only");
+    EXPECT_EQ(said(EROFS), "Could not save gold.json: the folder /x is read-only");
+    EXPECT_EQ(said(ENOENT), "Could not save gold.json: the folder /x does not exist");
+    EXPECT_EQ(said(ENOSPC), "Could not save gold.json: the disk is full");
+    EXPECT_EQ(said(EISDIR), "Could not save gold.json: /x/gold.json is a folder");
+    // Anything else as the system put it.
+    EXPECT_EQ(couldNotSave("/x/gold.json", std::runtime_error("odd")), "Could not save gold.json: odd");
+}
+
+// The editor's own settings persist with the rest: UI size, gizmos, Advanced.
+TEST_F(EditorStateTest, ViewSettingsPersist) {
+    state.uiScaleSetting = 1.5f;
+    state.showGizmos = false;
+    state.showAdvanced = true;
+    ASSERT_TRUE(saveSettings(state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
+    EditorState next;
+    WindowGeometry window;
+    loadSettings(next, window, dir_ / "settings.json");
+    EXPECT_EQ(next.uiScaleSetting, 1.5f);
+    EXPECT_FALSE(next.showGizmos);
+    EXPECT_TRUE(next.showAdvanced);
+    EXPECT_FALSE(EditorState().showAdvanced) << "research controls start closed";
+}
+
+// Solo greys out the other lights: soloedOut says which, and the rendered scene agrees.
+TEST_F(EditorStateTest, SoloLeavesTheOtherLightsOut) {
+    ASSERT_GE(state.scene.lights.size(), 3u);
+    EXPECT_FALSE(soloedOut(state, 0));
+    toggleSolo(state, 1);
+    const Scene rendered = renderedScene(state);
+    for (int i = 0; i < int(state.scene.lights.size()); ++i) {
+        EXPECT_EQ(soloedOut(state, i), i != 1) << i;
+        EXPECT_EQ(rendered.lights[size_t(i)].enabled, i == 1) << i;
+    }
+    toggleSolo(state, 1);
+    EXPECT_FALSE(soloedOut(state, 0));
+}
+
+// The lobe plot's scale fits every curve: A's too (a sharp A used to run off a rough B's plot),
+// and each kind of curve has a legend entry.
+TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
+    Material sharp = state.scene.material;
+    sharp.roughness = 0.08f;
+    sharp.metallic = 1.0f;
+    state.compareA = sharp;
+    state.scene.material.roughness = 0.9f;
+    state.lobe.thetaInDegrees = 30.0f;
+    const LobePlot plot = lobePlot(state);
+    float aPeak = 0.0f, bPeak = 0.0f;
+    std::vector<std::string> legend;
+    for (const LobeCurve& curve : plot.curves) {
+        ASSERT_EQ(curve.values.size(), size_t(kLobeSamples));
+        const float peak = *std::max_element(curve.values.begin(), curve.values.end());
+        (curve.legend == "A total" ? aPeak : bPeak) = std::max(curve.legend == "A total" ? aPeak : bPeak, peak);
+        EXPECT_LE(peak, plot.maxValue);
+        if (!curve.legend.empty()) {
+            legend.push_back(curve.legend);
+        }
+    }
+    EXPECT_GT(aPeak, 2.0f * bPeak) << "the case: A's peak far above B's";
+    EXPECT_EQ(plot.maxValue, aPeak);
+    EXPECT_EQ(lobeRadius(aPeak, plot.maxValue, false), 1.0f);
+    EXPECT_NE(std::find(legend.begin(), legend.end(), "A total"), legend.end());
+    EXPECT_NE(std::find(legend.begin(), legend.end(), "reference model"), legend.end());
+    EXPECT_GE(legend.size(), 4u);
+    // Log scale: three decades below the top reach the centre.
+    EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-3f, plot.maxValue, true), 0.0f, 1e-5f);
+    EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-1f, plot.maxValue, true), 2.0f / 3.0f, 1e-5f);
+}
+
+// The path dialog lists what its action takes (glTF and environments for Open), folders first,
+// filtered by what is typed; Enter on a folder enters it.
+TEST_F(EditorStateTest, ThePathDialogListsTheActionsFilesAndFollowsTheTyping) {
+    for (const char* name : {"gold.json", "Golden.png", "model.gltf", "model.glb", "sky.hdr", "sky.exr", "notes.txt"}) {
+        std::ofstream(dir_ / name) << "x";
+    }
+    fs::create_directories(dir_ / "golden-folder");
+    auto names = [](const std::vector<ListedEntry>& entries) {
+        std::vector<std::string> listed;
+        for (const ListedEntry& entry : entries) {
+            listed.push_back(entry.path.filename().string() + (entry.folder ? "/" : ""));
+        }
+        return listed;
+    };
+    const std::string folder = dir_.string() + "/";
+    EXPECT_EQ(names(listForDialog(folder, EditorState::PathDialog::Open)),
+              (std::vector<std::string>{"golden-folder/", "Golden.png", "gold.json", "model.glb", "model.gltf",
+                                        "sky.exr", "sky.hdr"}));
+    EXPECT_EQ(names(listForDialog(folder + "GOL", EditorState::PathDialog::Open)),
+              (std::vector<std::string>{"golden-folder/", "Golden.png", "gold.json"}));
+    EXPECT_EQ(names(listForDialog(folder + "gol", EditorState::PathDialog::SaveAs)),
+              (std::vector<std::string>{"golden-folder/", "gold.json"}));
+    EXPECT_EQ(names(listForDialog(folder, EditorState::PathDialog::ExportComparison)),
+              (std::vector<std::string>{"golden-folder/", "Golden.png"}));
+    EXPECT_NE(std::string(pathDialogKind(EditorState::PathDialog::Open).title),
+              pathDialogKind(EditorState::PathDialog::SaveAs).title);
+
+    std::string typed = (dir_ / "golden-folder").string();
+    EXPECT_TRUE(enterFolder(&typed));
+    EXPECT_EQ(typed, (dir_ / "golden-folder").string() + "/");
+    std::string file = (dir_ / "gold.json").string();
+    EXPECT_FALSE(enterFolder(&file));
+    EXPECT_EQ(file, (dir_ / "gold.json").string());
+}
+
+// Opening a folder runs the opener on it; one that is missing or fails says so, with the path.
+TEST_F(EditorStateTest, ShowingAFolderRunsTheOpenerAndSaysWhenItFails) {
+    const fs::path script = dir_ / "opener.sh";
+    std::ofstream(script) << "#!/bin/sh\necho \"$1\" > '" << (dir_ / "opened.txt").string() << "'\n";
+    fs::permissions(script, fs::perms::owner_all);
+    fs::create_directories(dir_ / "shots");
+    EXPECT_EQ(showFolder(dir_ / "shots", script.string()), "");
+    std::ifstream opened(dir_ / "opened.txt");
+    std::string line;
+    std::getline(opened, line);
+    EXPECT_EQ(line, (dir_ / "shots").string());
+
+    const std::string missing = showFolder(dir_ / "shots", "patina-no-such-opener");
+    EXPECT_NE(missing.find("is not installed"), std::string::npos) << missing;
+    EXPECT_NE(missing.find((dir_ / "shots").string()), std::string::npos) << missing;
+    const std::string failing = showFolder(dir_ / "shots", "false");
+    EXPECT_NE(failing.find("failed"), std::string::npos) << failing;
+}
+
+// The window fits the screen it opens on: 1280 x 720 by default, less on a small laptop,
+// scaled on a high-density screen, a remembered size kept inside the screen.
+TEST(WindowSize, FitsTheMonitor) {
+    const WindowGeometry fresh = windowSizeFor({}, 1920, 1050, 1.0f);
+    EXPECT_EQ(fresh.width, 1280);
+    EXPECT_EQ(fresh.height, 720);
+    const WindowGeometry laptop = windowSizeFor({}, 1366, 740, 1.0f);
+    EXPECT_LE(laptop.width, 1366);
+    EXPECT_LE(laptop.height + 40, 740) << "room for the title bar";
+    const WindowGeometry uhd = windowSizeFor({}, 3840, 2100, 2.0f);
+    EXPECT_EQ(uhd.width, 2560);
+    const WindowGeometry remembered = windowSizeFor({1400, 860}, 1366, 740, 1.0f);
+    EXPECT_LE(remembered.width, 1366);
+    EXPECT_LE(remembered.height, 740);
+    EXPECT_EQ(windowSizeFor({1000, 700}, 1920, 1050, 1.0f).width, 1000);
+}
+
+// The panels give way to the viewport: at 800 x 560 it used to be 130 pixels wide.
+TEST(PanelLayout, TheViewportKeepsItsMinimumSize) {
+    const PanelLayout wanted;   // the default sizes
+    for (auto [width, height] : {std::pair{800.0f, 560.0f}, {1280.0f, 720.0f}, {1920.0f, 1080.0f}}) {
+        const PanelPlacement at = placePanels(wanted, width, height - 20.0f, 20.0f, 1.0f);
+        // All of its minimum where the window has the room, else what the side panels' leave.
+        EXPECT_GE(at.viewport.width, std::min(kMinViewportWidth, width - 2.0f * kMinSidePanelWidth)) << width;
+        EXPECT_GE(at.viewport.width, 300.0f) << width;
+        EXPECT_GE(at.viewport.height, kMinViewportHeight) << width;
+        EXPECT_GE(at.material.width, kMinSidePanelWidth) << width;
+        EXPECT_FLOAT_EQ(at.material.width + at.viewport.width + at.lights.width, width);
+        EXPECT_FLOAT_EQ(at.viewport.height + at.lobe.height, height - 20.0f);
+        EXPECT_FLOAT_EQ(at.lights.x, width - at.lights.width);
+    }
+    // With room to spare, the sizes asked for; at scale 2, twice them.
+    EXPECT_FLOAT_EQ(placePanels(wanted, 1920, 1060, 20, 1.0f).material.width, wanted.leftWidth);
+    EXPECT_FLOAT_EQ(placePanels(wanted, 3840, 2120, 40, 2.0f).material.width, 2.0f * wanted.leftWidth);
+}
+
+TEST(UiScale, IsTheMonitorsTimesTheSetting) {
+    EXPECT_FLOAT_EQ(uiScaleFor(1.0f, 1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(uiScaleFor(2.0f, 1.25f), 2.5f);
+    EXPECT_FLOAT_EQ(uiScaleFor(0.0f, 1.5f), 1.5f) << "no content scale reported";
+    EXPECT_FLOAT_EQ(uiScaleFor(2.0f, 100.0f), 4.0f) << "kept drawable";
 }
 
 }  // namespace

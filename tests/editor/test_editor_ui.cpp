@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "image/compositing.h"
 #include "scene/camera_control.h"
@@ -18,6 +19,7 @@
 #include "scratch_test.h"
 #include "io/scene_file.h"
 #include "test_support.h"
+#include "ui_scale.h"
 #include "widgets.h"
 #include "io/file_bytes.h"
 
@@ -30,12 +32,12 @@ protected:
         ScratchTest::SetUp();
         test::glContext();
         ImGui::CreateContext();
+        forgetRecordedItems();   // the last test's context's
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.DisplaySize = ImVec2(1280, 800);
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);   // builds the font atlas
+        // The window's font and style (DejaVu Sans), so the layout is the one users see.
+        EXPECT_EQ(applyUiScale(1.0f), "");
         services_ = std::make_unique<EditorServices>();
         state_.screenshotFolder = dir_;
         frames(3);   // lay out every panel
@@ -92,6 +94,25 @@ protected:
         frames(1);
         services_->keyPresses.clear();
         frames(1);
+    }
+
+    // The scene's lights replaced by one point light in front of the sphere, in view.
+    Light onlyALamp() {
+        Light lamp;
+        lamp.name = "lamp";
+        lamp.position = {0.4f, 0.5f, 1.2f};
+        state_.scene.lights = {lamp};
+        state_.committed = state_.snapshot();
+        return lamp;
+    }
+
+    // Where a point of the scene is in the viewport, on screen.
+    ImVec2 onScreen(glm::vec3 point) {
+        ImVec2 min, max;
+        EXPECT_TRUE(itemRect("viewport", &min, &max));
+        const auto at = projectToViewport(state_.scene.camera, glm::vec2(max.x - min.x, max.y - min.y), point);
+        EXPECT_TRUE(at.has_value());
+        return at ? ImVec2(min.x + at->x, min.y + at->y) : min;
     }
 
     EditorState state_;
@@ -559,24 +580,219 @@ TEST_F(EditorUi, TheSceneHoldsTheMeshItDraws) {
 // and the gizmo asked whether the window was hovered, which it then is not), and the drag is
 // one undo step.
 TEST_F(EditorUi, DraggingAPointLightsGizmoMovesTheLightNotTheCamera) {
-    Light lamp;
-    lamp.name = "lamp";
-    lamp.position = {0.4f, 0.5f, 1.2f};   // in front of the sphere, in view
-    state_.scene.lights = {lamp};
-    state_.committed = state_.snapshot();
+    const Light lamp = onlyALamp();
     frames(2);
-    ImVec2 min, max;
-    ASSERT_TRUE(itemRect("viewport", &min, &max));
     const Camera camera = state_.scene.camera;
-    const auto at = projectToViewport(camera, glm::vec2(max.x - min.x, max.y - min.y), lamp.position);
-    ASSERT_TRUE(at.has_value());
-    const ImVec2 from(min.x + at->x, min.y + at->y);
+    const ImVec2 from = onScreen(lamp.position);
     drag(from, ImVec2(from.x + 60.0f, from.y + 30.0f));
     EXPECT_EQ(state_.scene.camera, camera) << "the camera orbited";
     EXPECT_GT(glm::distance(state_.scene.lights[0].position, lamp.position), 0.1f) << "the light did not move";
     EXPECT_EQ(state_.selectedLight, 0);
     press(kKeyZ, true);
     EXPECT_EQ(state_.scene.lights[0].position, lamp.position);
+}
+
+
+// The recorded items of the last frame that are cut by their window's edge or the display's.
+std::vector<std::string> clippedItems() {
+    std::vector<std::string> names;
+    for (const auto& [name, item] : itemsOfLastFrame()) {
+        if (clipped(item)) {
+            char where[160];
+            std::snprintf(where, sizeof where, " [%.0f %.0f %.0f %.0f] in [%.0f %.0f %.0f %.0f]", double(item.min.x),
+                          double(item.min.y), double(item.max.x), double(item.max.y), double(item.visibleMin.x),
+                          double(item.visibleMin.y), double(item.visibleMax.x), double(item.visibleMax.y));
+            names.push_back(name + where);
+        }
+    }
+    return names;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) {
+        text += line + "\n";
+    }
+    return text;
+}
+
+// At a laptop's and a desktop's size, and at 4K with the UI at 200%, no recorded widget is cut
+// off (at 1400 x 860 the colour's Reset showed as "Re" and the pass choice was clipped): with
+// Advanced open or closed, whichever light is selected, and with the shortcuts window open.
+TEST_F(EditorUi, NoWidgetIsClippedAtCommonScreenSizes) {
+    struct Screen {
+        float width, height, scale;
+    };
+    for (const Screen screen : {Screen{1280, 720, 1.0f}, Screen{1920, 1080, 1.0f}, Screen{3840, 2160, 2.0f}}) {
+        ASSERT_EQ(applyUiScale(screen.scale), "");
+        ImGui::GetIO().DisplaySize = ImVec2(screen.width, screen.height);
+        for (bool advanced : {false, true}) {
+            state_.showAdvanced = advanced;
+            state_.showShortcuts = advanced;
+            for (int light = 0; light < int(state_.scene.lights.size()); ++light) {
+                state_.selectedLight = light;
+                frames(3);
+                ASSERT_FALSE(itemsOfLastFrame().empty());
+                EXPECT_EQ(clippedItems(), std::vector<std::string>{})
+                    << screen.width << " x " << screen.height << " at " << screen.scale << ", advanced " << advanced
+                    << ", light " << light << ":\n" << joined(clippedItems());
+            }
+        }
+        EXPECT_TRUE(itemsOfLastFrame().contains("Path specialised"));
+        EXPECT_TRUE(itemsOfLastFrame().contains("shortcuts"));
+        EXPECT_TRUE(state_.error.empty()) << state_.error;
+    }
+    ASSERT_EQ(applyUiScale(1.0f), "");
+}
+
+// Every control in the panels and the toolbar is named in the layout dump with a tooltip; the
+// pictures (the viewport, the lobe plot, the preset captions) need none.
+TEST_F(EditorUi, EveryControlIsNamedAndHasATooltip) {
+    state_.showAdvanced = true;
+    state_.compareA = state_.scene.material;
+    for (int light = 0; light < int(state_.scene.lights.size()); ++light) {
+        state_.selectedLight = light;
+        frames(2);
+        for (const auto& [name, item] : itemsOfLastFrame()) {
+            const bool picture = name == "viewport" || name == "lobe" || name.starts_with("caption:") ||
+                                 name.starts_with("menu:");
+            EXPECT_TRUE(picture || !item.tooltip.empty()) << name << " has no tooltip";
+        }
+    }
+    // Sweep the mouse over the panels: wherever ImGui finds a control under it, a named item
+    // is there too.
+    ImGuiIO& io = ImGui::GetIO();
+    ImGuiContext& context = *ImGui::GetCurrentContext();
+    std::vector<std::string> unnamed;
+    for (const char* panel : {"Material", "Lights", "Viewport", "Lobe"}) {
+        const ImGuiWindow* window = ImGui::FindWindowByName(panel);
+        ASSERT_NE(window, nullptr) << panel;
+        // Inside its edges and scrollbar, which can be dragged, and away from its resize corner.
+        const ImRect inner(window->InnerRect.Min.x + 6, window->InnerRect.Min.y + 6, window->InnerRect.Max.x - 6,
+                           window->InnerRect.Max.y - 6);
+        const float corner = ImGui::GetFontSize() * 2.0f;
+        for (float y = inner.Min.y; y < inner.Max.y; y += 9.0f) {
+            for (float x = inner.Min.x; x < inner.Max.x; x += 14.0f) {
+                if (x > inner.Max.x - corner && y > inner.Max.y - corner) {
+                    continue;
+                }
+                io.MousePos = ImVec2(x, y);
+                frames(1);
+                if (context.HoveredId == 0) {
+                    continue;
+                }
+                bool named = false;
+                for (const auto& [name, item] : itemsOfLastFrame()) {
+                    named |= x >= item.min.x && x <= item.max.x && y >= item.min.y && y <= item.max.y;
+                }
+                if (!named) {
+                    unnamed.push_back(std::string(panel) + " at " + std::to_string(int(x)) + ", " +
+                                      std::to_string(int(y)));
+                }
+            }
+        }
+    }
+    EXPECT_EQ(unnamed, std::vector<std::string>{}) << joined(unnamed);
+}
+
+// The research controls start closed: no BRDF model, path or Accuracy tab until Advanced is
+// opened, and then they are all there.
+TEST_F(EditorUi, ResearchControlsAreBehindAdvanced) {
+    for (const char* name : {"Model", "Path single", "Accuracy tab"}) {
+        EXPECT_FALSE(itemsOfLastFrame().contains(name)) << name;
+    }
+    click(centreOf("Advanced"));
+    EXPECT_TRUE(state_.showAdvanced);
+    for (const char* name : {"Model", "Path single", "Path multi", "Accuracy tab"}) {
+        EXPECT_TRUE(itemsOfLastFrame().contains(name)) << name;
+    }
+}
+
+// With the gizmos hidden (View menu), a drag where a light's dot was orbits the camera.
+TEST_F(EditorUi, HiddenGizmosCannotBeGrabbed) {
+    const Light lamp = onlyALamp();
+    click(centreOf("menu:View"));
+    click(centreOf("Light gizmos"));
+    ASSERT_FALSE(state_.showGizmos);
+    const Camera camera = state_.scene.camera;
+    const ImVec2 from = onScreen(lamp.position);
+    drag(from, ImVec2(from.x + 60.0f, from.y + 30.0f));
+    EXPECT_EQ(state_.scene.lights[0].position, lamp.position);
+    EXPECT_NE(state_.scene.camera, camera) << "the drag orbits";
+}
+
+// Solo greys out the other lights in the list; they can still be picked.
+TEST_F(EditorUi, SoloGreysOutTheOtherLights) {
+    ASSERT_GE(state_.scene.lights.size(), 3u);
+    EXPECT_FALSE(itemsOfLastFrame().at("light:0").dimmed);
+    click(centreOf("light:1 solo"));
+    ASSERT_EQ(state_.soloLight, 1);
+    const auto items = itemsOfLastFrame();
+    EXPECT_TRUE(items.at("light:0").dimmed);
+    EXPECT_FALSE(items.at("light:1").dimmed);
+    EXPECT_TRUE(items.at("light:2").dimmed);
+    click(centreOf("light:2"));
+    EXPECT_EQ(state_.selectedLight, 2);
+}
+
+// File > Save as preset writes into the user's presets folder (made for it), the material
+// takes the file's name, and the preset browser shows it in the next frame.
+TEST_F(EditorUi, SaveAsPresetShowsInTheBrowserAtOnce) {
+    state_.userPresetFolder = dir_ / "config" / "presets";
+    state_.presetFolders = {state_.userPresetFolder};
+    click(centreOf("menu:File"));
+    click(centreOf("Save as preset"));
+    ASSERT_EQ(state_.pathDialog, EditorState::PathDialog::SavePreset);
+    EXPECT_EQ(state_.pathDialogText, (state_.userPresetFolder / "terracotta.json").string());
+    // Typed over, as a user does: the path field has the keys; Ctrl+A, then the new path.
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyMap[ImGuiKey_A] = 'A';
+    io.KeyCtrl = io.KeysDown[int('A')] = true;
+    frames(1);
+    io.KeyCtrl = io.KeysDown[int('A')] = false;
+    for (char c : (state_.userPresetFolder / "warm clay.json").string()) {
+        io.AddInputCharacter(static_cast<unsigned>(c));
+    }
+    frames(2);
+    EXPECT_EQ(state_.pathDialogText, (state_.userPresetFolder / "warm clay.json").string()) << "written as typed";
+    click(centreOf("path:confirm"));
+    ASSERT_TRUE(std::filesystem::exists(state_.userPresetFolder / "warm clay.json")) << state_.error;
+    EXPECT_EQ(state_.scene.material.name, "warm clay");
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:warm clay"));
+    EXPECT_TRUE(itemsOfLastFrame().contains("caption:warm clay"));
+}
+
+// The UI font is DejaVu Sans at a readable size, scaled with the UI; without the file the
+// built-in font is used and the editor says why.
+TEST_F(EditorUi, TheFontIsDejaVuSansAndAMissingOneFallsBack) {
+    ASSERT_EQ(applyUiScale(2.0f), "");
+    ImFont* font = ImGui::GetIO().Fonts->Fonts[0];
+    EXPECT_NE(std::string(font->GetDebugName()).find("DejaVuSans"), std::string::npos) << font->GetDebugName();
+    EXPECT_EQ(font->FontSize, 2.0f * kUiFontPixels);
+    EXPECT_EQ(uiScale(), 2.0f);
+    const std::string message = applyUiScale(1.0f, dir_ / "missing.ttf");
+    EXPECT_NE(message.find("fonts-dejavu-core"), std::string::npos) << message;
+    EXPECT_NE(std::string(ImGui::GetIO().Fonts->Fonts[0]->GetDebugName()).find("ProggyClean"), std::string::npos);
+    frames(2);   // the built-in font still draws the editor
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+}
+
+// After a screenshot, the status line offers its folder, opened with the desktop's opener.
+TEST_F(EditorUi, AScreenshotsFolderOpensFromTheStatusLine) {
+    const std::filesystem::path script = path("opener.sh");
+    std::ofstream(script) << "#!/bin/sh\necho \"$1\" > '" << path("opened.txt").string() << "'\n";
+    std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+    state_.folderOpener = script.string();
+    state_.screenshotFolder = dir_ / "shots";
+    press(kKeyF12);
+    click(centreOf("Open folder"));
+    std::ifstream opened(path("opened.txt"));
+    std::string line;
+    std::getline(opened, line);
+    EXPECT_EQ(line, (dir_ / "shots").string());
+    state_.folderOpener = "patina-no-such-opener";
+    click(centreOf("Open folder"));
+    EXPECT_NE(state_.error.find("xdg-utils"), std::string::npos) << state_.error;
 }
 
 }  // namespace

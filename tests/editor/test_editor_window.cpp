@@ -103,6 +103,9 @@ long cpuTicks(pid_t pid) {
 
 class EditorWindow : public ::testing::Test {
 protected:
+    // The X screen's size and depth.
+    virtual std::string screen() const { return "1280x800x24"; }
+
     void SetUp() override {
         ASSERT_EQ(std::system("command -v Xvfb >/dev/null && command -v xdotool >/dev/null"), 0)
             << "Xvfb and xdotool are needed: bash scripts/setup.sh installs them";
@@ -114,7 +117,7 @@ protected:
         ASSERT_EQ(pipe(pipeFds), 0);
         xvfb_ = std::make_unique<Child>(
             std::vector<std::string>{"Xvfb", "-displayfd", std::to_string(pipeFds[1]), "-screen", "0",
-                                     "1280x800x24", "-nolisten", "tcp"},
+                                     screen(), "-nolisten", "tcp"},
             std::vector<std::string>{}, dir_, pipeFds[1]);
         close(pipeFds[1]);
         char number[16] = {};
@@ -358,6 +361,30 @@ TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {
     RecordProperty("idle_cpu_fraction", std::to_string(fraction));
     EXPECT_LT(fraction, 0.02);
     EXPECT_TRUE(editor_->running());
+}
+
+// A 1366 x 768 laptop: the editor's first window fits its screen whole (it used to open at
+// 1400 x 860), and the viewport keeps a usable size in it.
+class EditorOnALaptop : public EditorWindow {
+protected:
+    std::string screen() const override { return "1366x768x24"; }
+};
+
+TEST_F(EditorOnALaptop, TheFirstWindowFitsTheScreen) {
+    const std::string geometry = xdotool("getwindowgeometry " + window_);
+    const size_t at = geometry.find("Geometry: ");
+    ASSERT_NE(at, std::string::npos) << geometry;
+    int width = 0, height = 0;
+    ASSERT_EQ(std::sscanf(geometry.c_str() + at, "Geometry: %dx%d", &width, &height), 2) << geometry;
+    EXPECT_LE(width, 1366);
+    EXPECT_LE(height, 768);
+    EXPECT_GE(width, 1024) << "and not needlessly small";
+    const std::vector<float> view = rect("viewport");
+    ASSERT_EQ(view.size(), 4u);
+    EXPECT_GE(view[2] - view[0], 400.0f);
+    EXPECT_GE(view[3] - view[1], 200.0f);
+    EXPECT_LE(view[2], float(width));
+    EXPECT_LE(view[3], float(height));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "io/json_writer.h"
 #include "io/scene_file.h"
+#include "scene/camera_control.h"
 
 namespace patina {
 namespace {
@@ -245,6 +246,27 @@ TEST(ShippedFiles, ExampleSceneIsTheEmbeddedDefault) {
         loadSceneFile(std::filesystem::path(PATINA_SOURCE_DIR) / "examples/default_scene.json", warnings);
     EXPECT_EQ(scene, defaultScene());
     EXPECT_TRUE(warnings.empty());
+}
+
+// The default scene's point light is in the picture, so its gizmo can be grabbed.
+TEST(ShippedFiles, TheDefaultKeyLightIsInView) {
+    const Scene scene = defaultScene();
+    int points = 0;
+    for (const Light& light : scene.lights) {
+        if (light.type != LightType::Point) {
+            continue;
+        }
+        ++points;
+        for (glm::vec2 size : {glm::vec2(640, 480), glm::vec2(480, 480), glm::vec2(1200, 700)}) {
+            const auto at = projectToViewport(scene.camera, size, light.position);
+            ASSERT_TRUE(at.has_value()) << light.name << " is behind the camera";
+            EXPECT_GT(at->x, 0.05f * size.x) << light.name << " at " << size.x << " x " << size.y;
+            EXPECT_LT(at->x, 0.95f * size.x) << light.name << " at " << size.x << " x " << size.y;
+            EXPECT_GT(at->y, 0.05f * size.y) << light.name << " at " << size.x << " x " << size.y;
+            EXPECT_LT(at->y, 0.95f * size.y) << light.name << " at " << size.x << " x " << size.y;
+        }
+    }
+    EXPECT_GT(points, 0);
 }
 
 TEST(ShippedFiles, EveryPresetLoadsCleanly) {

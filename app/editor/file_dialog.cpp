@@ -1,0 +1,181 @@
+#include "file_dialog.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <system_error>
+
+#include <imgui.h>
+
+#include "ui_scale.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+namespace {
+std::string lowered(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+}
+
+// The folder part and the name part of what is typed: "a/b/go" is ("a/b", "go"), "a/b/" is
+// ("a/b", ""), "go" is (".", "go").
+std::pair<std::filesystem::path, std::string> splitTyped(const std::string& typed) {
+    const size_t slash = typed.rfind('/');
+    if (slash == std::string::npos) {
+        return {".", typed};
+    }
+    return {slash == 0 ? std::filesystem::path("/") : std::filesystem::path(typed.substr(0, slash)),
+            typed.substr(slash + 1)};
+}
+
+// Runs the action the dialog was opened for on `path`.
+void confirm(EditorState& state, EditorServices& services, const std::filesystem::path& path) {
+    switch (state.pathDialog) {
+    case EditorState::PathDialog::Open: requestOpen(state, path); break;
+    case EditorState::PathDialog::SaveAs: saveMaterial(state, path); break;
+    case EditorState::PathDialog::SaveSceneAs: saveScene(state, path); break;
+    case EditorState::PathDialog::SavePreset: saveAsPreset(state, path); break;
+    case EditorState::PathDialog::ExportComparison: services.exportComparison(state, path); break;
+    case EditorState::PathDialog::None: break;
+    }
+}
+}  // namespace
+
+const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
+    static const PathDialogKind open{
+        "Open", "Open a material or scene (.json), a Patina screenshot (.png), a glTF model (.gltf, .glb) "
+                "or an environment image (.hdr, .exr):",
+        "Open", {".json", ".png", ".gltf", ".glb", ".hdr", ".exr"}};
+    static const PathDialogKind saveMaterial{"Save material as", "Save the material (.json) as:", "Save", {".json"}};
+    static const PathDialogKind saveScene{
+        "Save scene as", "Save the scene (lights, camera, display, the material inline) as .json:", "Save", {".json"}};
+    static const PathDialogKind savePreset{
+        "Save as preset", "Save the material in your presets; the file's name becomes the material's name:", "Save",
+        {".json"}};
+    static const PathDialogKind exportComparison{
+        "Export comparison", "Export A and B side by side, captioned, as a PNG:", "Export", {".png"}};
+    switch (dialog) {
+    case EditorState::PathDialog::SaveAs: return saveMaterial;
+    case EditorState::PathDialog::SaveSceneAs: return saveScene;
+    case EditorState::PathDialog::SavePreset: return savePreset;
+    case EditorState::PathDialog::ExportComparison: return exportComparison;
+    case EditorState::PathDialog::Open:
+    case EditorState::PathDialog::None: break;
+    }
+    return open;
+}
+
+std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog) {
+    const auto [folder, name] = splitTyped(typed);
+    const std::string wanted = lowered(name);
+    const std::vector<std::string>& extensions = pathDialogKind(dialog).extensions;
+    std::vector<ListedEntry> entries;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        const bool isFolder = entry.is_directory(error);
+        const std::string extension = lowered(entry.path().extension().string());
+        const bool listed = isFolder || std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
+        if (listed && lowered(entry.path().filename().string()).find(wanted) != std::string::npos) {
+            entries.push_back({entry.path(), isFolder});
+        }
+    }
+    std::sort(entries.begin(), entries.end(), [](const ListedEntry& a, const ListedEntry& b) {
+        return a.folder != b.folder ? a.folder : a.path.filename() < b.path.filename();
+    });
+    return entries;
+}
+
+bool enterFolder(std::string* typed) {
+    std::error_code error;
+    if (typed->empty() || !std::filesystem::is_directory(*typed, error)) {
+        return false;
+    }
+    if (typed->back() != '/') {
+        *typed += '/';
+    }
+    return true;
+}
+
+void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial) {
+    state.pathDialog = kind;
+    state.pathDialogText = initial.string();
+}
+
+void drawPathDialog(EditorState& state, EditorServices& services) {
+    const PathDialogKind& kind = pathDialogKind(state.pathDialog);
+    // One popup whatever the action ("###path"), titled by it.
+    const std::string title = std::string(kind.title) + "###path";
+    if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
+        ImGui::OpenPopup(title.c_str());
+    }
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float width = std::min(px(560), display.x - px(40));
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal(title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        return;
+    }
+    ImGui::PushTextWrapPos(width);
+    ImGui::TextUnformatted(kind.prompt);
+    ImGui::PopTextWrapPos();
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::IsWindowAppearing()) {
+        ImGui::SetKeyboardFocusHere();
+    }
+    // Written as typed, so the list follows; Enter lets go of the field (single-line fields do).
+    // After Enter on a folder the field takes the keys again, its cursor after the new '/'.
+    static bool cursorToEnd = false;
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, "%s", state.pathDialogText.c_str());
+    const auto moveCursor = [](ImGuiInputTextCallbackData* data) {
+        bool& toEnd = *static_cast<bool*>(data->UserData);
+        if (toEnd) {
+            data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
+            toEnd = false;
+        }
+        return 0;
+    };
+    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor, &cursorToEnd)) {
+        state.pathDialogText = buffer;
+    }
+    bool entered = ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                                                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+    recordItem("path:text", "The file's path; Enter on a folder opens it, the list below follows what you type");
+    if (entered && enterFolder(&state.pathDialogText)) {
+        entered = false;   // into the folder, the dialog stays
+        ImGui::SetKeyboardFocusHere(-1);
+        cursorToEnd = true;
+    }
+    // The folder's entries: a click on a folder enters it, on a file takes its path.
+    ImGui::BeginChild("listing", ImVec2(width, std::min(px(240), display.y * 0.4f)), true);
+    std::error_code error;
+    const std::filesystem::path folder = splitTyped(state.pathDialogText).first;
+    if (ImGui::Selectable("../")) {
+        state.pathDialogText = (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
+    }
+    recordItem("path:up", "The folder above");
+    for (const ListedEntry& entry : listForDialog(state.pathDialogText, state.pathDialog)) {
+        const std::string name = entry.path.filename().string() + (entry.folder ? "/" : "");
+        if (ImGui::Selectable(name.c_str())) {
+            state.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
+        }
+        recordItem("path:entry " + name, entry.folder ? "Open this folder" : "Choose this file");
+    }
+    ImGui::EndChild();
+    const bool confirmed = ImGui::Button(kind.verb);
+    recordItem("path:confirm", kind.prompt);
+    if (confirmed || entered) {
+        confirm(state, services, state.pathDialogText);
+        state.pathDialog = EditorState::PathDialog::None;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+        state.pathDialog = EditorState::PathDialog::None;
+        ImGui::CloseCurrentPopup();
+    }
+    recordItem("path:cancel", "Close without doing anything (Escape)");
+    ImGui::EndPopup();
+}
+
+}  // namespace patina::editor

@@ -1,0 +1,38 @@
+#pragma once
+// The path dialog of Open, Save material as, Save scene as, Save as preset and Export
+// comparison: a title and prompt per action, a path field, and the folder it points into
+// listed below it, filtered to the action's file types and to what is typed.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "editor_services.h"
+#include "editor_state.h"
+
+namespace patina::editor {
+
+struct PathDialogKind {
+    const char* title;                     // the dialog's title
+    const char* prompt;                    // what it asks for
+    const char* verb;                      // its button
+    std::vector<std::string> extensions;   // the files it lists
+};
+const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog);
+
+struct ListedEntry {
+    std::filesystem::path path;
+    bool folder = false;
+};
+// The folder `typed` points into (the text up to its last '/'), folders first then files of
+// `dialog`'s types, each whose name contains what is typed after that '/' (any case).
+std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog);
+
+// Enter in the path field: a folder is entered (the text becomes "folder/", and true is
+// returned); anything else is to be confirmed (false).
+bool enterFolder(std::string* typed);
+
+void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial);
+// The dialog itself, while state.pathDialog is not None.
+void drawPathDialog(EditorState& state, EditorServices& services);
+
+}  // namespace patina::editor

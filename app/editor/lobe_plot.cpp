@@ -1,0 +1,78 @@
+#include "lobe_plot.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "shading/lobe.h"
+
+namespace patina::editor {
+
+namespace {
+constexpr uint32_t rgba(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
+    return r | (g << 8) | (b << 16) | (a << 24);   // IM_COL32's layout
+}
+
+// Rec. 709 luminance of linear RGB.
+float luminance(glm::vec3 c) {
+    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
+}  // namespace
+
+LobePlot lobePlot(const EditorState& state) {
+    const LobeSettings& lobe = state.lobe;
+    const float cosine = lobe.multiplyByCosine ? std::cos(glm::radians(lobe.thetaInDegrees)) : 1.0f;
+    LobePlot plot;
+    auto add = [&](const std::vector<LobeSample>& samples, auto pick, uint32_t color, float thickness,
+                   std::string legend) {
+        LobeCurve curve{{}, color, thickness, std::move(legend)};
+        for (const LobeSample& sample : samples) {
+            curve.values.push_back(pick(sample) * cosine);
+        }
+        plot.curves.push_back(std::move(curve));
+    };
+    auto total = [](const LobeSample& s) { return luminance(s.total()); };
+    if (state.compareA) {
+        add(evaluateLobe(*state.compareA, lobe.thetaInDegrees, kLobeSamples), total, rgba(160, 160, 160, 160), 3.0f,
+            "A total");
+    }
+    // The same material under the reference model, for what the current model gets wrong.
+    if (state.scene.material.model != BrdfModelId::Reference) {
+        Material reference = state.scene.material;
+        reference.model = BrdfModelId::Reference;
+        add(evaluateLobe(reference, lobe.thetaInDegrees, kLobeSamples), total, rgba(0, 220, 220, 200), 1.0f,
+            "reference model");
+    }
+    const std::vector<LobeSample> samples = evaluateLobe(state.scene.material, lobe.thetaInDegrees, kLobeSamples);
+    if (lobe.luminance) {
+        add(samples, [](const LobeSample& s) { return luminance(s.diffuse); }, rgba(110, 170, 255, 255), 1.0f,
+            "B diffuse");
+        add(samples, [](const LobeSample& s) { return luminance(s.specular); }, rgba(255, 150, 90, 255), 1.0f,
+            "B specular");
+        add(samples, total, rgba(255, 255, 255, 255), 2.0f, "B total");
+    } else {
+        const uint32_t channel[3] = {rgba(255, 80, 80, 255), rgba(80, 255, 80, 255), rgba(90, 140, 255, 255)};
+        for (int c = 0; c < 3; ++c) {
+            add(samples, [c](const LobeSample& s) { return s.total()[c]; }, channel[c], 2.0f,
+                c == 0 ? "B total, R G B (thick)" : "");
+            add(samples, [c](const LobeSample& s) { return s.specular[c]; }, channel[c] & 0x80FFFFFFu, 1.0f,
+                c == 0 ? "B specular (thin)" : "");
+        }
+    }
+    plot.maxValue = 1e-6f;
+    for (const LobeCurve& curve : plot.curves) {
+        for (float value : curve.values) {
+            plot.maxValue = std::max(plot.maxValue, value);
+        }
+    }
+    return plot;
+}
+
+float lobeRadius(float value, float maxValue, bool logScale) {
+    const float linear = value / maxValue;
+    const float fraction = logScale ? (std::log10(std::max(linear, 1e-12f)) + 3.0f) / 3.0f : linear;
+    return std::clamp(fraction, 0.0f, 1.0f);
+}
+
+}  // namespace patina::editor

@@ -1,0 +1,32 @@
+#pragma once
+// The curves of the lobe panel's polar plot, as numbers: which curves, their legend, and the
+// scale that fits all of them (B, A and the reference), so no curve runs off the plot.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "editor_state.h"
+
+namespace patina::editor {
+
+struct LobeCurve {
+    std::vector<float> values;   // one per theta_out from -90 to 90 degrees, cosine applied
+    uint32_t color;              // ImGui's packed RGBA (IM_COL32)
+    float thickness;
+    std::string legend;          // its legend entry; empty: covered by an earlier entry
+};
+
+struct LobePlot {
+    std::vector<LobeCurve> curves;   // drawn in order: the last on top
+    float maxValue = 0.0f;           // the largest value of any curve: the plot's outer ring
+};
+
+constexpr int kLobeSamples = 181;
+
+LobePlot lobePlot(const EditorState& state);
+
+// A value's distance from the centre as a fraction of the plot's radius: linear, or in log
+// scale 3 decades below the maximum to the maximum.
+float lobeRadius(float value, float maxValue, bool logScale);
+
+}  // namespace patina::editor

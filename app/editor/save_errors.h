@@ -1,0 +1,12 @@
+#pragma once
+// A failed save in words an artist reads: "Could not save gold.json: the folder /x is
+// read-only", not the system call that failed.
+#include <exception>
+#include <filesystem>
+#include <string>
+
+namespace patina::editor {
+
+std::string couldNotSave(const std::filesystem::path& file, const std::exception& error);
+
+}  // namespace patina::editor
