@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include <fstream>
+
 #include <algorithm>
 
 namespace patina::test {
@@ -98,6 +100,15 @@ double maxRelativeError(const std::vector<glm::vec3>& values,
         }
     }
     return worst;
+}
+
+std::filesystem::path writeFlatHdr(const std::filesystem::path& path, int width, int height, uint8_t level) {
+    std::ofstream out(path, std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << height << " +X " << width << "\n";
+    for (int i = 0; i < width * height; ++i) {
+        out << char(level) << char(level) << char(level) << char(129);
+    }
+    return path;
 }
 
 }  // namespace patina::test

@@ -2,6 +2,8 @@
 // Helpers shared by the tests: the one headless GL context, conversions to the double
 // reference, and seeded random directions.
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <random>
 #include <vector>
 
@@ -52,5 +54,9 @@ HdrImage equirectOf(int width, int height, F f) {
     }
     return image;
 }
+
+// A flat (not run-length encoded) Radiance file of width x height pixels of one grey `level`
+// (RGBE with exponent 129: level / 256 * 2).
+std::filesystem::path writeFlatHdr(const std::filesystem::path& path, int width, int height, uint8_t level);
 
 }  // namespace patina::test

@@ -115,7 +115,9 @@ int runEditor(const EditorOptions& options) {
         while (!state.quitConfirmed) {
             if (framesLeft <= 0) {
                 // Asleep until input, or until a change waiting to be autosaved is due.
-                if (autosaveDue) {
+                if (state.environmentLoad) {
+                    glfwWaitEventsTimeout(0.1);   // the load's progress, and its end, are shown
+                } else if (autosaveDue) {
                     glfwWaitEventsTimeout(std::chrono::duration<double>(*autosaveDue).count() + 0.01);
                 } else {
                     glfwWaitEvents();

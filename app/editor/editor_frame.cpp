@@ -54,6 +54,7 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
+    finishEnvironmentLoad(state);
     resolveEnvironmentShown(state);
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
@@ -79,7 +80,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     ImGui::End();
     if (beginPanel("Lights", at.lights, true, &layout.rightWidth)) {
         ImGui::PushItemWidth(-labelRoom);
-        drawGuarded(state, "The lights panel", [&] { drawLightsPanel(state); });
+        drawGuarded(state, "The lights panel", [&] { drawLightsPanel(state, services); });
         ImGui::PopItemWidth();
     }
     ImGui::End();

@@ -6,6 +6,7 @@
 #include <ctime>
 
 #include "image/compositing.h"
+#include "image/display_image.h"
 #include "image/png_text.h"
 #include "io/scene_file.h"
 #include "io/file_bytes.h"
@@ -111,6 +112,16 @@ const Texture* EditorServices::benchChart(const std::filesystem::path& png) {
         benchChart_.modified = modified;
     }
     return benchChart_.texture.get();
+}
+
+const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const Environment>& environment) {
+    if (!environment) {
+        return nullptr;
+    }
+    if (environmentThumbnail_.first != environment) {
+        environmentThumbnail_ = {environment, std::make_unique<Texture>(equirectPreview(environment->image, 256, 128))};
+    }
+    return environmentThumbnail_.second.get();
 }
 
 LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {

@@ -54,6 +54,9 @@ public:
     };
     const Preset* preset(const std::filesystem::path& material);
 
+    // A panorama of the environment's image (equirectPreview), made once per environment.
+    const Texture* environmentThumbnail(const std::shared_ptr<const Environment>& environment);
+
     // accuracyOf(material), recomputed only when the material changes.
     const AccuracyNumbers& accuracy(const Material& material);
     // The bench chart PNG as a texture, reloaded when the file changes; null when there is none.
@@ -95,6 +98,7 @@ private:
     std::map<std::filesystem::path, PresetEntry> presets_;
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
     Thumbnail benchChart_;
+    std::pair<std::shared_ptr<const Environment>, std::unique_ptr<Texture>> environmentThumbnail_;
 
     // A and B, each halfWidth x height, side by side with their captions.
     LdrImage comparisonImage(const EditorState& state, int halfWidth, int height);

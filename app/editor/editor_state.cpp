@@ -296,27 +296,59 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
 }
 }  // namespace
 
+namespace {
+// The loaded environment becomes the scene's (one undo step), adding a light if there is none.
+void applyEnvironment(EditorState& state, const std::string& source, std::shared_ptr<const Environment> environment,
+                      const std::vector<std::string>& warnings) {
+    if (environmentIndex(state) < 0) {
+        addLight(state, LightType::Environment);
+    }
+    const int index = environmentIndex(state);
+    applyEdit(state, [&](EditorState& s) {
+        Light& light = s.scene.lights[size_t(index)];
+        light.source = source;
+        light.name = environmentName(source);
+        s.scene.resolvedEnvironment = std::move(environment);   // kept while disabled, for the checkbox
+    });
+    state.selectedLight = index;
+    state.environmentFailed.clear();
+    state.error = joinWarnings(warnings);
+    state.status = "Environment " + environmentName(source);
+}
+}  // namespace
+
 bool setEnvironmentSource(EditorState& state, const std::string& source) {
+    state.environmentLoad.reset();   // a newer choice replaces one under way (cancelled)
+    if (!source.starts_with("builtin:")) {
+        state.environmentLoad = std::make_shared<EnvironmentLoad>(source);
+        state.status = "Preparing the environment " + environmentName(source) + "...";
+        return true;
+    }
     std::vector<std::string> warnings;
     try {
-        const std::shared_ptr<const Environment> environment = loadEnvironment(source, warnings);
-        if (environmentIndex(state) < 0) {
-            addLight(state, LightType::Environment);
-        }
-        const int index = environmentIndex(state);
-        applyEdit(state, [&](EditorState& s) {
-            Light& light = s.scene.lights[size_t(index)];
-            light.source = source;
-            light.name = environmentName(source);
-            s.scene.resolvedEnvironment = environment;   // kept while disabled, for the checkbox
-        });
-        state.selectedLight = index;
-        state.environmentFailed.clear();
-        state.error = joinWarnings(warnings);
-        state.status = "Environment " + environmentName(source);
+        applyEnvironment(state, source, loadEnvironment(source, warnings), warnings);
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();   // the previous environment stays
+        return false;
+    }
+}
+
+bool finishEnvironmentLoad(EditorState& state, bool wait) {
+    if (!state.environmentLoad || (!wait && !state.environmentLoad->ready())) {
+        return false;
+    }
+    const std::shared_ptr<EnvironmentLoad> load = std::move(state.environmentLoad);
+    try {
+        EnvironmentLoad::Result result = load->take();
+        if (!result.environment) {
+            return false;   // cancelled
+        }
+        applyEnvironment(state, load->source(), std::move(result.environment), result.warnings);
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();   // the previous environment stays
+        state.status.clear();
         return false;
     }
 }
@@ -340,6 +372,11 @@ void resolveEnvironmentShown(EditorState& state) {
         state.error = error.what();
         state.environmentFailed = source;
     }
+}
+
+Light* editedEnvironment(EditorState& state) {
+    const int index = environmentIndex(state);
+    return index < 0 ? nullptr : &state.scene.lights[size_t(index)];
 }
 
 std::string environmentName(const std::string& source) {

@@ -8,6 +8,7 @@
 #include "gl/renderer.h"
 #include "geometry/mesh.h"
 #include "scene/scene.h"
+#include "environment_load.h"
 #include "autosave.h"
 #include "undo_history.h"
 
@@ -85,6 +86,9 @@ struct EditorState {
     // An environment file that could not be loaded for the light naming it (its error shown
     // once, not every frame); cleared when a load succeeds.
     std::string environmentFailed;
+    // An environment file being made ready on a worker (setEnvironmentSource), applied by
+    // finishEnvironmentLoad when done; the viewport shows its progress.
+    std::shared_ptr<EnvironmentLoad> environmentLoad;
     bool pendingQuit = false;
     bool quitConfirmed = false;
     bool showShortcuts = false;
@@ -124,12 +128,19 @@ void redo(EditorState& state);
 void addLight(EditorState& state, LightType type);
 // Makes `source` ("builtin:NAME", an .hdr or .exr path) the scene's environment, adding one if
 // there is none: loaded (and prefiltered) first, so a file that cannot be read leaves the
-// previous environment as it was and says why in state.error. Undoable.
+// previous environment as it was and says why in state.error. Undoable. A built-in is applied
+// at once; a file is made ready on a worker (state.environmentLoad, replacing one under way)
+// and applied by finishEnvironmentLoad. False when it failed at once.
 bool setEnvironmentSource(EditorState& state, const std::string& source);
+// Applies the environment load once it is done (with `wait`, waits for it): run once a frame.
+// True when one was applied.
+bool finishEnvironmentLoad(EditorState& state, bool wait = false);
 // Makes scene.resolvedEnvironment the file the environment light names, whatever changed the
 // light (open, undo, autosave restore): loaded through loadEnvironment's cache when it does
 // not match. Built-ins need nothing (the renderer makes them). Run once a frame, before drawing.
 void resolveEnvironmentShown(EditorState& state);
+// The scene's environment light, or null.
+Light* editedEnvironment(EditorState& state);
 // "studio" for builtin:studio, a file's stem.
 std::string environmentName(const std::string& source);
 void duplicateLight(EditorState& state, int index);

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "environment/builtin_environments.h"
+#include "editor_services.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -70,7 +71,7 @@ std::vector<std::filesystem::path> blenderEnvironments() {
 
 // The environment's own editor: where it comes from, how bright, how turned, and whether it is
 // the background too. A source is loaded before it replaces the current one.
-void editEnvironment(EditorState& state, Light& light) {
+void editEnvironment(EditorState& state, EditorServices& services, Light& light) {
     if (ImGui::BeginCombo("Source", environmentName(light.source).c_str())) {
         for (std::string_view builtin : builtinEnvironmentNames()) {
             const std::string source = "builtin:" + std::string(builtin);
@@ -87,6 +88,28 @@ void editEnvironment(EditorState& state, Light& light) {
     }
     const std::string sourceTip = light.source + "\nOpen or drop an .hdr or .exr file to light with it";
     recordItem("Environment source", sourceTip.c_str());
+    if (const std::shared_ptr<EnvironmentLoad>& load = state.environmentLoad) {
+        // A file being prepared: the one shown stays until it is done, or for good if cancelled.
+        const std::string overlay = "Preparing " + environmentName(load->source());
+        ImGui::ProgressBar(load->progress(), ImVec2(-1.0f, 0.0f), overlay.c_str());
+        recordItem("Environment progress", "Decoding and prefiltering the image; the picture changes when it is done");
+        if (ImGui::Button("Cancel")) {
+            state.environmentLoad.reset();
+            state.status = "Environment left as it was";
+        }
+        recordItem("Environment cancel", "Stop preparing the new environment and keep the current one");
+    }
+    const std::shared_ptr<const Environment> shown =
+        light.source == (state.scene.resolvedEnvironment ? state.scene.resolvedEnvironment->source : std::string())
+            ? state.scene.resolvedEnvironment
+            : preparedBuiltinEnvironment(light.source);
+    if (const Texture* panorama = services.environmentThumbnail(shown)) {
+        const float width = ImGui::GetContentRegionAvail().x;
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(panorama->id())), ImVec2(width, width * 0.5f));
+        recordItem("Environment panorama",
+                   "The environment's image, the centre straight ahead of the default camera's view: behind the "
+                   "sphere. Drag in the viewport with the right button to turn it");
+    }
     ImGui::SliderFloat("Rotation", &light.rotationDegrees, -180.0f, 180.0f, "%.1f deg");
     recordItem("Environment rotation", "Turns the environment about the vertical axis");
     bool background = state.scene.display.backgroundFromEnvironment;
@@ -139,7 +162,7 @@ void editLight(Light& light) {
 }
 }  // namespace
 
-void drawLightsPanel(EditorState& state) {
+void drawLightsPanel(EditorState& state, EditorServices& services) {
     if (ImGui::Button("Add point")) {
         addLight(state, LightType::Point);
     }
@@ -226,7 +249,7 @@ void drawLightsPanel(EditorState& state) {
         Light& light = lights[size_t(state.selectedLight)];
         editLight(light);
         if (light.type == LightType::Environment) {
-            editEnvironment(state, light);
+            editEnvironment(state, services, light);
         }
     }
 }

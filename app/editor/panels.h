@@ -6,7 +6,7 @@
 namespace patina::editor {
 
 void drawMaterialPanel(EditorState& state);
-void drawLightsPanel(EditorState& state);
+void drawLightsPanel(EditorState& state, EditorServices& services);
 void drawViewportPanel(EditorState& state, EditorServices& services);
 void drawLobePanel(EditorState& state);
 void drawAccuracyPanel(EditorState& state, EditorServices& services);

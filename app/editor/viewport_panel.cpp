@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <glm/glm.hpp>
@@ -168,6 +169,14 @@ void handleCameraInput(EditorState& state, ImVec2 size) {
     if (io.MouseWheel != 0.0f) {
         dollyCamera(camera, std::pow(0.9f, io.MouseWheel));
     }
+    // A right drag turns the environment (lighting and background together), as Marmoset's
+    // sky drag: half a degree a pixel, one undo step a drag.
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+        if (Light* environment = editedEnvironment(state)) {
+            environment->rotationDegrees =
+                std::remainder(environment->rotationDegrees + io.MouseDelta.x * 0.5f, 360.0f);
+        }
+    }
 }
 
 void image(unsigned texture, ImVec2 size, float u0 = 0.0f, float u1 = 1.0f) {
@@ -211,7 +220,8 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     recordItem("viewport");
     ImGui::SetCursorScreenPos(origin);
     ImGui::InvisibleButton("viewport-input", size,
-                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
+                               ImGuiButtonFlags_MouseButtonRight);
     const bool viewportActive = ImGui::IsItemActive();
     const bool viewportPressed = ImGui::IsItemActivated();
     const bool hovered = ImGui::IsItemHovered();
@@ -249,6 +259,15 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (hovered && pressed(services.keyPresses, kKeyF) &&
         !ImGui::GetIO().WantTextInput) {
         frameMesh(state);
+    }
+
+    // An environment file being prepared: the picture keeps the one it had until then.
+    if (const std::shared_ptr<EnvironmentLoad>& load = state.environmentLoad) {
+        char text[160];
+        std::snprintf(text, sizeof text, "Preparing the environment %s: %.0f%%", environmentName(load->source()).c_str(),
+                      100.0f * load->progress());
+        draw->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetTextLineHeight() - 8),
+                      IM_COL32(255, 230, 150, 255), text);
     }
 
     // Overlay (Advanced): cost of the last render and what was drawn.

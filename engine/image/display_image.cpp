@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "environment/equirect.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -18,6 +19,28 @@ LdrImage displayImage(const HdrImage& linear, const DisplaySettings& display) {
         }
     }
     return image;
+}
+
+LdrImage equirectPreview(const HdrImage& equirect, int width, int height) {
+    HdrImage small{width, height, std::vector<float>(size_t(width) * size_t(height) * 3, 0.0f)};
+    constexpr int kReads = 3;   // per side of a pixel
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            glm::vec3 sum(0.0f);
+            for (int j = 0; j < kReads; ++j) {
+                for (int i = 0; i < kReads; ++i) {
+                    const glm::vec2 uv((float(x) + (float(i) + 0.5f) / kReads) / float(width),
+                                       (float(y) + (float(j) + 0.5f) / kReads) / float(height));
+                    sum += sampleEquirect(equirect, shader::equirectToDirection(uv));
+                }
+            }
+            const glm::vec3 mean = sum / float(kReads * kReads);
+            std::copy(&mean.x, &mean.x + 3, &small.rgb[(size_t(y) * size_t(width) + size_t(x)) * 3]);
+        }
+    }
+    DisplaySettings display;
+    display.tonemap = Tonemap::PbrNeutral;
+    return displayImage(small, display);
 }
 
 }  // namespace patina

@@ -10,4 +10,9 @@ namespace patina {
 // stores them. For images made without the GPU (the ground-truth render).
 LdrImage displayImage(const HdrImage& linear, const DisplaySettings& display);
 
+// An equirect environment image shrunk to width x height for a thumbnail: each pixel the mean of
+// a few bilinear reads across it, through the PBR Neutral tone map (an HDRI's sun would clip
+// everything else to white without one).
+LdrImage equirectPreview(const HdrImage& equirect, int width, int height);
+
 }  // namespace patina

@@ -20,6 +20,7 @@
 #include "gltf/export.h"
 #include "io/json_writer.h"
 #include "scratch_test.h"
+#include "test_support.h"
 #include "io/scene_file.h"
 
 namespace patina::editor {
@@ -228,15 +229,8 @@ TEST_F(EditorStateTest, OpeningASceneBringsItsLightsAndCamera) {
     EXPECT_EQ(state.scene.material.name, "from scene");
 }
 
-// A tiny flat Radiance file (width < 8 is never run-length encoded) of one grey `level`
-// (RGBE with exponent 129: mantissa / 256 * 2).
 fs::path writeHdr(const fs::path& path, uint8_t level) {
-    std::ofstream out(path, std::ios::binary);
-    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n";
-    for (int i = 0; i < 8; ++i) {
-        out << char(level) << char(level) << char(level) << char(129);
-    }
-    return path;
+    return test::writeFlatHdr(path, 4, 2, level);
 }
 
 TEST_F(EditorStateTest, AnOpenedScenesEnvironmentFileIsWhatItShows) {
@@ -253,7 +247,9 @@ TEST_F(EditorStateTest, UndoingAnEnvironmentBringsBackTheImageItNamed) {
     const std::string first = writeHdr(dir_ / "first.hdr", 64).string();
     const std::string second = writeHdr(dir_ / "second.hdr", 200).string();
     ASSERT_TRUE(setEnvironmentSource(state, first)) << state.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     ASSERT_TRUE(setEnvironmentSource(state, second)) << state.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     undo(state);
     resolveEnvironmentShown(state);
     ASSERT_TRUE(state.scene.resolvedEnvironment);
@@ -270,6 +266,7 @@ TEST_F(EditorStateTest, OpeningAnEnvironmentImageWhileDirtyDoesNotAsk) {
     state.scene.material.roughness = 0.12f;
     requestOpen(state, writeHdr(dir_ / "sky.hdr", 64));
     EXPECT_FALSE(state.pendingOpen.has_value());
+    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     ASSERT_TRUE(state.scene.resolvedEnvironment) << state.error;
     EXPECT_EQ(state.scene.material.roughness, 0.12f);   // nothing else changed
 }
@@ -625,6 +622,38 @@ TEST(UiScale, IsTheMonitorsTimesTheSetting) {
     EXPECT_FLOAT_EQ(uiScaleFor(2.0f, 1.25f), 2.5f);
     EXPECT_FLOAT_EQ(uiScaleFor(0.0f, 1.5f), 1.5f) << "no content scale reported";
     EXPECT_FLOAT_EQ(uiScaleFor(2.0f, 100.0f), 4.0f) << "kept drawable";
+}
+
+TEST_F(EditorStateTest, AnEnvironmentFileIsPreparedOffTheUiThreadAndThenApplied) {
+    const std::shared_ptr<const Environment> before = state.scene.resolvedEnvironment;
+    const std::vector<Light> lights = state.scene.lights;
+    const std::string sky = writeHdr(dir_ / "sky.hdr", 90).string();
+    ASSERT_TRUE(setEnvironmentSource(state, sky));
+    // Nothing changes until it is ready: the picture keeps the environment it had.
+    ASSERT_TRUE(state.environmentLoad);
+    EXPECT_EQ(state.scene.lights, lights);
+    EXPECT_EQ(state.scene.resolvedEnvironment, before);
+    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
+    EXPECT_FALSE(state.environmentLoad);
+    ASSERT_TRUE(state.scene.resolvedEnvironment);
+    EXPECT_EQ(state.scene.resolvedEnvironment->source, sky);
+    EXPECT_EQ(editedEnvironment(state)->source, sky);
+    undo(state);   // one step back to the studio
+    EXPECT_EQ(state.scene.lights, lights);
+}
+
+TEST_F(EditorStateTest, ABadEnvironmentFileSaysWhyWhenItFailsAndChangesNothing) {
+    const std::vector<Light> lights = state.scene.lights;
+    std::ofstream(dir_ / "broken.hdr") << "#?RADIANCE\nnot an image";
+    ASSERT_TRUE(setEnvironmentSource(state, (dir_ / "broken.hdr").string()));
+    EXPECT_FALSE(finishEnvironmentLoad(state, true));
+    EXPECT_NE(state.error.find("broken.hdr"), std::string::npos) << state.error;
+    EXPECT_EQ(state.scene.lights, lights);
+    // A newer choice replaces one under way; a cancelled one is never applied.
+    ASSERT_TRUE(setEnvironmentSource(state, writeHdr(dir_ / "a.hdr", 10).string()));
+    state.environmentLoad.reset();
+    EXPECT_FALSE(finishEnvironmentLoad(state, true));
+    EXPECT_EQ(state.scene.lights, lights);
 }
 
 }  // namespace

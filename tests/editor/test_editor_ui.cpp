@@ -74,18 +74,20 @@ protected:
         frames(2);
     }
 
-    void drag(ImVec2 from, ImVec2 to, int steps = 8) {
+    void drag(ImVec2 from, ImVec2 to, int steps = 8) { drag(from, to, steps, 0); }
+
+    void drag(ImVec2 from, ImVec2 to, int steps, int button) {
         ImGuiIO& io = ImGui::GetIO();
         io.MousePos = from;
         frames(1);
-        io.MouseDown[0] = true;
+        io.MouseDown[button] = true;
         frames(1);
         for (int i = 1; i <= steps; ++i) {
             io.MousePos = ImVec2(from.x + (to.x - from.x) * float(i) / float(steps),
                                  from.y + (to.y - from.y) * float(i) / float(steps));
             frames(1);
         }
-        io.MouseDown[0] = false;
+        io.MouseDown[button] = false;
         frames(2);
     }
 
@@ -575,6 +577,50 @@ TEST_F(EditorUi, TheSceneHoldsTheMeshItDraws) {
     EXPECT_EQ(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
 
+
+// A right drag in the viewport turns the environment, lighting and background together, as one
+// undo step, and leaves the camera where it was.
+TEST_F(EditorUi, ARightDragTurnsTheEnvironment) {
+    Light* environment = editedEnvironment(state_);
+    ASSERT_NE(environment, nullptr);
+    const float before = environment->rotationDegrees;
+    const Camera camera = state_.scene.camera;
+    const ImVec2 at = centreOf("viewport");
+    drag(ImVec2(at.x - 40.0f, at.y), ImVec2(at.x + 40.0f, at.y), 8, 1);
+    EXPECT_NEAR(editedEnvironment(state_)->rotationDegrees, before + 40.0f, 5.0f);
+    EXPECT_EQ(state_.scene.camera, camera);
+    press(kKeyZ, true);
+    EXPECT_EQ(editedEnvironment(state_)->rotationDegrees, before);
+}
+
+// Choosing an environment file prepares it on a worker: the panel shows the progress and a
+// Cancel while the picture keeps the old one, and the panorama of the new one once it is done.
+TEST_F(EditorUi, AnEnvironmentFileShowsItsProgressThenItsPanorama) {
+    state_.selectedLight = int(std::find_if(state_.scene.lights.begin(), state_.scene.lights.end(),
+                                            [](const Light& l) { return l.type == LightType::Environment; }) -
+                               state_.scene.lights.begin());
+    frames(2);
+    ImVec2 min, max;
+    EXPECT_TRUE(itemRect("Environment panorama", &min, &max)) << "the studio's panorama";
+    // A file too large to finish within a frame or two (1024 x 512) to see the progress, with
+    // a cache of its own so that it is prepared, not read back from an earlier run.
+    setenv("PATINA_CACHE_DIR", dir_.c_str(), 1);
+    test::writeFlatHdr(path("big.hdr"), 1024, 512, 100);
+    ASSERT_TRUE(setEnvironmentSource(state_, path("big.hdr").string()));
+    frames(1);
+    ASSERT_TRUE(state_.environmentLoad);
+    {
+        EXPECT_EQ(itemsOfLastFrame().count("Environment progress"), 1u);
+        EXPECT_NE(state_.scene.resolvedEnvironment ? state_.scene.resolvedEnvironment->source : "", path("big.hdr").string());
+    }
+    ASSERT_TRUE(finishEnvironmentLoad(state_, true)) << state_.error;
+    unsetenv("PATINA_CACHE_DIR");
+    frames(2);
+    ASSERT_TRUE(state_.scene.resolvedEnvironment);
+    EXPECT_EQ(state_.scene.resolvedEnvironment->source, path("big.hdr").string());
+    EXPECT_EQ(itemsOfLastFrame().count("Environment progress"), 0u);
+    EXPECT_EQ(itemsOfLastFrame().count("Environment panorama"), 1u);
+}
 
 // A point light's dot is dragged, not the camera orbited (the viewport's button held the click
 // and the gizmo asked whether the window was hovered, which it then is not), and the drag is
