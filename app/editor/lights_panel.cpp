@@ -21,6 +21,8 @@ const char* typeIcon(LightType type) {
     case LightType::Directional: return "-->";
     case LightType::Hemisphere: return "(^)";
     case LightType::Environment: return "(*)";
+    case LightType::Sphere: return "(O)";
+    case LightType::Tube: return "(=)";
     }
     return "?";
 }
@@ -95,6 +97,39 @@ void editEnvironment(EditorState& state, Light& light) {
     ImGui::EndDisabled();
 }
 
+// The point light's falloff, which sphere and tube lights share.
+void editFalloff(Light& light) {
+    ImGui::DragFloat("Range", &light.range, 0.05f, 0.0f, 1e4f, light.range > 0 ? "%.3f" : "none",
+                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("a_c", &light.attenuation.x, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("a_l", &light.attenuation.y, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("a_q", &light.attenuation.z, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+}
+
+// A sphere's or a tube's size (Karis 2013, "Area lights"): 0 makes a sphere the point light.
+void editSourceRadius(Light& light) {
+    ImGui::SliderFloat("Source radius", &light.sourceRadius, 0.0f, 2.0f, "%.3f",
+                       ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+    recordItem("Source radius");
+}
+
+// A tube by its ends, and by its length about its middle along its own axis (along x when its
+// ends meet).
+void editTube(Light& light) {
+    ImGui::DragFloat3("Start", &light.start.x, 0.01f);
+    ImGui::DragFloat3("End", &light.end.x, 0.01f);
+    const glm::vec3 middle = 0.5f * (light.start + light.end);
+    const glm::vec3 axis = light.end - light.start;
+    float length = glm::length(axis);
+    if (ImGui::SliderFloat("Length", &length, 0.0f, 10.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) {
+        const glm::vec3 direction = glm::dot(axis, axis) > 0.0f ? glm::normalize(axis) : glm::vec3(1.0f, 0.0f, 0.0f);
+        light.start = middle - 0.5f * length * direction;
+        light.end = middle + 0.5f * length * direction;
+    }
+    recordItem("Length");
+    editSourceRadius(light);
+}
+
 void editLight(Light& light) {
     // Written as typed, as the material's name: the edit commits when the field lets go, by
     // Enter or by a click elsewhere (it used to be lost unless Enter was pressed).
@@ -112,11 +147,16 @@ void editLight(Light& light) {
     switch (light.type) {
     case LightType::Point:
         ImGui::DragFloat3("Position", &light.position.x, 0.01f);
-        ImGui::DragFloat("Range", &light.range, 0.05f, 0.0f, 1e4f, light.range > 0 ? "%.3f" : "none",
-                         ImGuiSliderFlags_AlwaysClamp);
-        ImGui::DragFloat("a_c", &light.attenuation.x, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        ImGui::DragFloat("a_l", &light.attenuation.y, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        ImGui::DragFloat("a_q", &light.attenuation.z, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        editFalloff(light);
+        break;
+    case LightType::Sphere:
+        ImGui::DragFloat3("Position", &light.position.x, 0.01f);
+        editSourceRadius(light);
+        editFalloff(light);
+        break;
+    case LightType::Tube:
+        editTube(light);
+        editFalloff(light);
         break;
     case LightType::Directional: editDirection(light); break;
     case LightType::Hemisphere:
@@ -134,6 +174,15 @@ void drawLightsPanel(EditorState& state) {
     }
     recordItem("Add point");
     ImGui::SameLine();
+    if (ImGui::Button("Add sphere")) {
+        addLight(state, LightType::Sphere);
+    }
+    recordItem("Add sphere");
+    ImGui::SameLine();
+    if (ImGui::Button("Add tube")) {
+        addLight(state, LightType::Tube);
+    }
+    recordItem("Add tube");
     if (ImGui::Button("Add directional")) {
         addLight(state, LightType::Directional);
     }
