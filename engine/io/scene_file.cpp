@@ -111,14 +111,13 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     // Area lights came with version 2, where the window is "range"; a size must be finite and
     // not negative (the reader names the key otherwise).
     case LightType::Sphere:
-        light.position = reader.vec3("position", light.position);
-        light.sourceRadius = reader.number("sourceRadius", light.sourceRadius, kNonNegative);
-        light.range = reader.number("range", light.range, kNonNegative);
-        light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
-        break;
     case LightType::Tube:
-        light.start = reader.vec3("start", light.start);
-        light.end = reader.vec3("end", light.end);
+        if (light.type == LightType::Sphere) {
+            light.position = reader.vec3("position", light.position);
+        } else {
+            light.start = reader.vec3("start", light.start);
+            light.end = reader.vec3("end", light.end);
+        }
         light.sourceRadius = reader.number("sourceRadius", light.sourceRadius, kNonNegative);
         light.range = reader.number("range", light.range, kNonNegative);
         light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
@@ -190,14 +189,13 @@ Json lightToJson(const Light& light) {
         json["attenuation"] = toJson(light.attenuation);
         break;
     case LightType::Sphere:
-        json["position"] = toJson(light.position);
-        json["sourceRadius"] = toJson(light.sourceRadius);
-        json["range"] = toJson(light.range);
-        json["attenuation"] = toJson(light.attenuation);
-        break;
     case LightType::Tube:
-        json["start"] = toJson(light.start);
-        json["end"] = toJson(light.end);
+        if (light.type == LightType::Sphere) {
+            json["position"] = toJson(light.position);
+        } else {
+            json["start"] = toJson(light.start);
+            json["end"] = toJson(light.end);
+        }
         json["sourceRadius"] = toJson(light.sourceRadius);
         json["range"] = toJson(light.range);
         json["attenuation"] = toJson(light.attenuation);

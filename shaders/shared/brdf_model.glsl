@@ -133,6 +133,12 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 // light has range 0 (true is right for every light: 1/range = 0 gives window 1). `karis`
 // true takes KARIS_ATTENUATION for the light's coefficients instead of reading them: only for
 // a light that has exactly those (hasKarisAttenuation, light_packing.h).
+// The falloff of a point, sphere or tube light at distance t, with shadePointLight's switches.
+// 1/range = 0 turns the window off: with `windowed` a constant, the compiler folds it away.
+PATINA_INLINE real lightFalloff(PackedLight light, real t, bool windowed, bool karis) {
+    return pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f, karis ? KARIS_ATTENUATION : light.attenuation);
+}
+
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
                                    vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
@@ -140,9 +146,7 @@ PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis,
     // Clamped so the light on the shaded point still gives finite numbers; selected away below.
     real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     real t = distanceSquared * inverseDistance;
-    // 0 turns the window off: with `windowed` a constant, the compiler folds it away.
-    real attenuation = pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f,
-                                              karis ? KARIS_ATTENUATION : light.attenuation);
+    real attenuation = lightFalloff(light, t, windowed, karis);
     vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
     // A light on the shaded point has no direction: no light.
     return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? value : vec3(0.0f);
@@ -186,9 +190,7 @@ PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool k
     // Clamped so the centre on the shaded point still gives finite numbers; selected away below.
     real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     real t = distanceSquared * inverseDistance;
-    real attenuation = pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f,
-                                              karis ? KARIS_ATTENUATION : light.attenuation);
-    vec3 radiance = light.radiance * attenuation;
+    vec3 radiance = light.radiance * lightFalloff(light, t, windowed, karis);
     vec3 toCentreUnit = toCentre * inverseDistance;
     real NoL = dot(N, toCentreUnit);
     real s = light.sourceRadius;
@@ -219,9 +221,7 @@ PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool kar
     vec3 L1 = light.tubeEnd - P;
     vec3 Ld = L1 - L0;
     real lineDistanceSquared = max(lineIrradianceDistanceSquared(L0, L1), 0.0f);
-    real attenuation = pointLightAttenuation(sqrt(lineDistanceSquared), windowed ? light.inverseRange : 0.0f,
-                                              karis ? KARIS_ATTENUATION : light.attenuation);
-    vec3 radiance = light.radiance * attenuation;
+    vec3 radiance = light.radiance * lightFalloff(light, sqrt(lineDistanceSquared), windowed, karis);
     vec3 toCentre = L0 + Ld * real(0.5f);
     real centreDistance = sqrt(dot(toCentre, toCentre));
     vec3 towardsCentre = toCentre * inversesqrt(max(dot(toCentre, toCentre), MIN_LIGHT_DISTANCE_SQUARED));

@@ -11,18 +11,9 @@
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/energy_table.h"
+#include "epic_instance.h"
 #include "test_support.h"
 
-// The per-type light functions with their compile-time switches (as tests/shading/test_lights.cpp).
-namespace patina::shader {
-#define PATINA_INLINE inline
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#define PATINA_INSTANCE Epic
-#include "shading/brdf_model_instance.h"
-#pragma GCC diagnostic pop
-#undef PATINA_INLINE
-}  // namespace patina::shader
 
 namespace patina {
 namespace {
