@@ -97,7 +97,8 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
     }
     for (const char* series : {"lights multi point", "lights single point", "lights specialised point",
                                "lights single directional", "lights single point-other-coefficients",
-                               "lights specialised point-other-coefficients"}) {
+                               "lights specialised point-other-coefficients", "lights single sphere",
+                               "lights specialised sphere", "lights single tube", "lights specialised tube"}) {
         EXPECT_EQ(perSeries[series], 4) << series;   // --quick: 1, 3, 8 and 16 lights
     }
     // The floor also at the flat-light slots, where they fall between (14 on llvmpipe).
@@ -117,7 +118,9 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
     for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
                                "single's cost per added point light /",
                                "single's cost per added point light with other coefficients",
-                               "specialised's cost per added point light with other coefficients", "separate renders",
+                               "specialised's cost per added point light with other coefficients",
+                               "single's cost per added sphere light / per added point light",
+                               "specialised's cost per added tube light / per added point light", "separate renders",
                                "peak RSS"}) {
         EXPECT_NE(targets.find(target), std::string::npos) << target;
     }
@@ -141,6 +144,9 @@ TEST(RenderBench, ScenesHaveTheAskedLightCountAndTheFloorOnlyDirections) {
     const Scene others = renderBenchScene(8, AddedLights::PointsOtherCoefficients);
     EXPECT_EQ(others.lights.back().type, LightType::Point);
     EXPECT_FALSE(hasKarisAttenuation(packLight(others.lights.back())));
+    // Area lights with a size, so they pack as themselves, not as points.
+    EXPECT_EQ(packLight(renderBenchScene(8, AddedLights::Spheres).lights.back()).type, shader::LIGHT_SPHERE);
+    EXPECT_EQ(packLight(renderBenchScene(8, AddedLights::Tubes).lights.back()).type, shader::LIGHT_TUBE);
     EXPECT_EQ(points.lights[1].type, defaultScene().lights[1].type);   // the default scene's first
 }
 
@@ -169,8 +175,8 @@ TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     add(BenchPath::Single, AddedLights::PointsOtherCoefficients, 16, 40.0 + 8 * 4.4);
     add(BenchPath::Specialised, AddedLights::PointsOtherCoefficients, 8, 32.0);
     add(BenchPath::Specialised, AddedLights::PointsOtherCoefficients, 16, 32.0 + 8 * 3.6);
-    const std::vector<TargetCheck> targets = renderBenchTargets(result);
-    ASSERT_EQ(targets.size(), 7u);
+    std::vector<TargetCheck> targets = renderBenchTargets(result);
+    ASSERT_EQ(targets.size(), 7u);   // no area lights measured: no area-light targets
     EXPECT_DOUBLE_EQ(targets[0].value, 0.3);
     EXPECT_TRUE(targets[0].met);
     EXPECT_DOUBLE_EQ(targets[1].value, 0.8);
@@ -183,6 +189,13 @@ TEST(RenderBench, TargetsAreRatiosOfTheMedians) {
     EXPECT_NEAR(targets[5].value, 1.4, 1e-12);
     EXPECT_NEAR(targets[6].value, 1.8, 1e-12);   // specialised, other coefficients: 3.6 / 2
     EXPECT_NE(targets[6].name.find("specialised's cost per added point light with other"), std::string::npos);
+    // With spheres measured on single: their cost per added light over the point light's.
+    add(BenchPath::Single, AddedLights::Spheres, 8, 35.0);
+    add(BenchPath::Single, AddedLights::Spheres, 16, 35.0 + 8 * 7.5);
+    targets = renderBenchTargets(result);
+    ASSERT_EQ(targets.size(), 8u);
+    EXPECT_NEAR(targets[7].value, 2.5, 1e-12);   // 7.5 / 3
+    EXPECT_TRUE(targets[7].met);
 }
 
 TEST_F(AccuracyCommands, BenchWritesOneRowPerModelAndTheChart) {
