@@ -1,5 +1,9 @@
 #pragma once
+#include <filesystem>
+
 #include <CLI/CLI.hpp>
+
+#include "accuracy/chart.h"
 
 namespace patina::cli {
 
@@ -18,5 +22,13 @@ Command addStabilityCommand(CLI::App& app);
 Command addFurnaceCommand(CLI::App& app);
 Command addLightingAccuracyCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
+Command addAreaAccuracyCommand(CLI::App& app);
+
+// The measurement commands (cli_accuracy.cpp) share their options, --out-dir (an existing
+// folder, default: the current one) and --quick, and their charts' files.
+using Measurement = std::function<void(const std::filesystem::path& folder, bool quick)>;
+Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure);
+// STEM.png, and with `svg` STEM.svg.
+void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg);
 
 }  // namespace patina::cli

@@ -1,5 +1,5 @@
-// The speed/accuracy commands: bench, stability, furnace and lighting-accuracy. Each writes into --out-dir
-// (default: the current folder).
+// The speed/accuracy commands: bench, stability, furnace and lighting-accuracy, and what they
+// share with the other measurements (cli.h). Each writes into --out-dir (default: the current folder).
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -17,8 +17,6 @@
 
 namespace patina::cli {
 
-namespace {
-
 void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg) {
     if (svg) {
         writeOutputText(stem.string() + ".svg", chartToSvg(chart));
@@ -33,11 +31,6 @@ std::filesystem::path outputFolder(const std::string& folder) {
     }
     return path;
 }
-}  // namespace
-
-namespace {
-// The three commands share their options: --out-dir and --quick.
-using Measurement = std::function<void(const std::filesystem::path& folder, bool quick)>;
 
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure) {
     struct Options {
@@ -50,7 +43,6 @@ Command addMeasurementCommand(CLI::App& app, const char* name, const char* descr
     command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
     return [options, measure] { measure(outputFolder(options->outDir), options->quick); };
 }
-}  // namespace
 
 Command addBenchCommand(CLI::App& app) {
     return addMeasurementCommand(

@@ -23,7 +23,7 @@ Command addProbeCommand(CLI::App& app) {
     command->add_option("--out", options->out, "Output CSV: r,g,b")->required();
     command->add_option("--backend", options->backend,
                         "gpu: the real shader; cpu: the same code as C++; reference: the ground truth by Monte "
-                        "Carlo (environment; the lights exactly), with standard errors")
+                        "Carlo (environment, sphere and tube lights; the other lights exactly), with standard errors")
         ->check(CLI::IsMember({"cpu", "gpu", "reference"}));
     command->add_option("--samples", options->samples, "reference: iterations per row (3 directions each)")
         ->check(CLI::Range(1, 1 << 24));

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
                      patina::cli::addSheetCommand, patina::cli::addBenchCommand,
                      patina::cli::addBenchRenderCommand,
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
-                     patina::cli::addLightingAccuracyCommand,
+                     patina::cli::addLightingAccuracyCommand, patina::cli::addAreaAccuracyCommand,
                      patina::cli::addExportCommand}) {
         patina::cli::Command run = add(app);
         commands.emplace_back(app.get_subcommands({}).back(), std::move(run));

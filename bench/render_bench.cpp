@@ -115,7 +115,9 @@ constexpr std::pair<BenchPath, AddedLights> kLightSeries[] = {
     {BenchPath::Multi, AddedLights::Points},       {BenchPath::Single, AddedLights::Points},
     {BenchPath::Specialised, AddedLights::Points}, {BenchPath::BrdfFloor, AddedLights::Points},
     {BenchPath::Single, AddedLights::Directionals}, {BenchPath::Single, AddedLights::PointsOtherCoefficients},
-    {BenchPath::Specialised, AddedLights::PointsOtherCoefficients}};
+    {BenchPath::Specialised, AddedLights::PointsOtherCoefficients}, {BenchPath::Single, AddedLights::Spheres},
+    {BenchPath::Specialised, AddedLights::Spheres},   {BenchPath::Single, AddedLights::Tubes},
+    {BenchPath::Specialised, AddedLights::Tubes}};
 
 // Every path with point lights added; single again with directional lights added (whose
 // light arithmetic is the BRDF alone, so single's excess over the floor is its loop's cost);
@@ -272,6 +274,8 @@ std::string_view addedLightsName(AddedLights added) {
     case AddedLights::Points: return "point";
     case AddedLights::PointsOtherCoefficients: return "point-other-coefficients";
     case AddedLights::Directionals: return "directional";
+    case AddedLights::Spheres: return "sphere";
+    case AddedLights::Tubes: return "tube";
     }
     return "point";
 }
@@ -297,6 +301,16 @@ Scene renderBenchScene(int lights, AddedLights added) {
                                                                          : glm::vec3(1.0f, 0.0f, 1.0f);
         // The ring adds about one key light in all.
         light.intensity = (point ? 24.0f : 2.0f) / float(extra);
+        if (added == AddedLights::Spheres) {
+            light.type = LightType::Sphere;
+            light.sourceRadius = 0.3f;
+        } else if (added == AddedLights::Tubes) {
+            light.type = LightType::Tube;
+            const glm::vec3 across(-std::sin(angle), std::cos(angle), 0.0f);
+            light.start = light.position - 0.4f * across;
+            light.end = light.position + 0.4f * across;
+            light.sourceRadius = 0.05f;
+        }
         scene.lights.push_back(light);
     }
     return scene;
@@ -367,6 +381,16 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
         perLight(BenchPath::Specialised, AddedLights::Points) / floor, 1.3);
     add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,
         perLight(BenchPath::Specialised, AddedLights::PointsOtherCoefficients) / floor, 1.3);
+    // Area lights against point lights, path by path (issue 19: "a small multiple").
+    for (BenchPath path : {BenchPath::Single, BenchPath::Specialised}) {
+        for (AddedLights added : {AddedLights::Spheres, AddedLights::Tubes}) {
+            if (findLights(result, path, added, most)) {
+                add(std::string(benchPathName(path)) + "'s cost per added " + std::string(addedLightsName(added)) +
+                        " light / per added point light (8 to " + std::to_string(most) + " lights)",
+                    perLight(path, added) / perLight(path, AddedLights::Points), 4.0);
+            }
+        }
+    }
     return targets;
 }
 
@@ -412,7 +436,10 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
         std::string label = path == BenchPath::BrdfFloor ? "BRDF floor" : std::string(benchPathName(path));
         if (added != AddedLights::Points) {
             label = (path == BenchPath::Specialised ? "spec." : label) +
-                    (added == AddedLights::Directionals ? ", directionals" : ", other coeffs");
+                    (added == AddedLights::Directionals ? ", directionals"
+                     : added == AddedLights::Spheres    ? ", spheres"
+                     : added == AddedLights::Tubes      ? ", tubes"
+                                                        : ", other coeffs");
         }
         ChartSeries series{label, {}, chartColour(colour++), true, true, path == BenchPath::BrdfFloor, {}};
         for (const LightCountRow& row : result.lightRows) {

@@ -32,8 +32,10 @@ enum class AddedLights {
     Points,                  // windowed points with Karis's coefficients (1, 0, 1), the default
     PointsOtherCoefficients,  // the same with other coefficients, which a shader must read
     Directionals,
+    Spheres,                 // sphere lights (Karis 2013's representative point), source radius 0.3
+    Tubes,                   // tube lights of length 0.8 across the ring, source radius 0.05
 };
-// "point", "point-other-coefficients", "directional" (the CSV's `added` column).
+// "point", "point-other-coefficients", "directional", "sphere", "tube" (the CSV's `added` column).
 std::string_view addedLightsName(AddedLights added);
 
 // What a light-count row measured: one of the renderer's paths, or the BRDF-only floor
@@ -87,7 +89,8 @@ struct TargetCheck {
     double value = 0.0, bound = 0.0;
     bool met = false;       // value <= bound
 };
-// Issue 6's targets as ratios of this run's frame times.
+// Issue 6's targets as ratios of this run's frame times; where the run measured area lights,
+// their cost per added light against a point light's (issue 19: a small multiple of it).
 std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result);
 
 std::string renderBenchCsv(const RenderBenchResult& result);

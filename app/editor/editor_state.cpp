@@ -131,10 +131,19 @@ void addLight(EditorState& state, LightType type) {
     Light light;
     light.type = type;
     light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
-    if (type == LightType::Point) {
+    if (type == LightType::Point || type == LightType::Sphere) {
         light.position = {1.5f, 1.5f, 1.5f};
         light.range = 10.0f;
         light.intensity = 8.0f;
+        if (type == LightType::Sphere) {   // a point light keeps every other type's default
+            light.sourceRadius = 0.25f;
+        }
+    } else if (type == LightType::Tube) {
+        light.start = {-1.0f, 1.8f, 1.2f};
+        light.end = {1.0f, 1.8f, 1.2f};
+        light.range = 10.0f;
+        light.intensity = 8.0f;
+        light.sourceRadius = 0.05f;
     } else if (type == LightType::Directional) {
         light.direction = {-0.5f, -0.7f, -0.5f};
         light.intensity = 2.0f;

@@ -15,6 +15,9 @@
 namespace patina::editor {
 
 enum class CompareView { Single, Split, SideBySide };
+// What a viewport drag holds of a light: a point's or a sphere's position (a tube's middle,
+// moving both ends), or one end of a tube.
+enum class LightHandle { Position, TubeStart, TubeEnd };
 
 struct LobeSettings {
     float thetaInDegrees = 45.0f;
@@ -64,6 +67,7 @@ struct EditorState {
     float splitPosition = 0.5f;              // split wipe divider, fraction of the width
     // The viewport's drags in progress: the light whose gizmo is held (-1: none), the divider.
     int draggedLight = -1;
+    LightHandle draggedHandle = LightHandle::Position;   // which part of it
     bool draggingDivider = false;
 
     LobeSettings lobe;

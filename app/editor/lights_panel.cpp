@@ -26,6 +26,8 @@ const char* typeIcon(LightType type) {
     case LightType::Directional: return "-->";
     case LightType::Hemisphere: return "(^)";
     case LightType::Environment: return "(*)";
+    case LightType::Sphere: return "(O)";
+    case LightType::Tube: return "(=)";
     }
     return "?";
 }
@@ -123,6 +125,50 @@ void editEnvironment(EditorState& state, EditorServices& services, Light& light)
     ImGui::EndDisabled();
 }
 
+// The point light's falloff, which sphere and tube lights share.
+void editFalloff(Light& light) {
+    ImGui::DragFloat("Range", &light.range, 0.05f, 0.0f, 1e4f, light.range > 0 ? "%.3f" : "none",
+                     ImGuiSliderFlags_AlwaysClamp);
+    recordItem("Range", "Beyond this distance the light fades to nothing (0: no limit)");
+    ImGui::DragFloat("a_c", &light.attenuation.x, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    recordItem("a_c", "Falloff 1 / (a_c + a_l d + a_q d^2): the constant term");
+    ImGui::DragFloat("a_l", &light.attenuation.y, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    recordItem("a_l", "Falloff 1 / (a_c + a_l d + a_q d^2): the linear term");
+    ImGui::DragFloat("a_q", &light.attenuation.z, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    recordItem("a_q", "Falloff 1 / (a_c + a_l d + a_q d^2): the quadratic term (1: physical)");
+}
+
+void editPosition(Light& light) {
+    ImGui::DragFloat3("Position", &light.position.x, 0.01f);
+    recordItem("Position", "Where the light is (x, y, z); or drag it in the viewport");
+}
+
+// A sphere's or a tube's size (Karis 2013, "Area lights"): 0 makes a sphere the point light.
+void editSourceRadius(Light& light) {
+    ImGui::SliderFloat("Source radius", &light.sourceRadius, 0.0f, 2.0f, "%.3f",
+                       ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+    recordItem("Source radius", "The light's size: a larger source gives a broader, softer highlight (0: a point)");
+}
+
+// A tube by its ends, and by its length about its middle along its own axis (along x when its
+// ends meet).
+void editTube(Light& light) {
+    ImGui::DragFloat3("Start", &light.start.x, 0.01f);
+    recordItem("Start", "One end of the tube (x, y, z); or drag it in the viewport");
+    ImGui::DragFloat3("End", &light.end.x, 0.01f);
+    recordItem("End", "The other end of the tube (x, y, z); or drag it in the viewport");
+    const glm::vec3 middle = 0.5f * (light.start + light.end);
+    const glm::vec3 axis = light.end - light.start;
+    float length = glm::length(axis);
+    if (ImGui::SliderFloat("Length", &length, 0.0f, 10.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) {
+        const glm::vec3 direction = glm::dot(axis, axis) > 0.0f ? glm::normalize(axis) : glm::vec3(1.0f, 0.0f, 0.0f);
+        light.start = middle - 0.5f * length * direction;
+        light.end = middle + 0.5f * length * direction;
+    }
+    recordItem("Length", "The tube's length about its middle (0: a sphere)");
+    editSourceRadius(light);
+}
+
 void editLight(Light& light) {
     // Written as typed, as the material's name: the edit commits when the field lets go, by
     // Enter or by a click elsewhere (it used to be lost unless Enter was pressed).
@@ -140,17 +186,17 @@ void editLight(Light& light) {
     recordItem("Intensity", "How bright the light is; a drag changes it in proportion to itself. Ctrl+click to type");
     switch (light.type) {
     case LightType::Point:
-        ImGui::DragFloat3("Position", &light.position.x, 0.01f);
-        recordItem("Position", "Where the light is (x, y, z); or drag its dot in the viewport");
-        ImGui::DragFloat("Range", &light.range, 0.05f, 0.0f, 1e4f, light.range > 0 ? "%.3f" : "none",
-                         ImGuiSliderFlags_AlwaysClamp);
-        recordItem("Range", "Beyond this distance the light fades to nothing (0: no limit)");
-        ImGui::DragFloat("a_c", &light.attenuation.x, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        recordItem("a_c", "Falloff 1 / (a_c + a_l d + a_q d^2): the constant term");
-        ImGui::DragFloat("a_l", &light.attenuation.y, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        recordItem("a_l", "Falloff 1 / (a_c + a_l d + a_q d^2): the linear term");
-        ImGui::DragFloat("a_q", &light.attenuation.z, 0.01f, 0.0f, 1e4f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-        recordItem("a_q", "Falloff 1 / (a_c + a_l d + a_q d^2): the quadratic term (1: physical)");
+        editPosition(light);
+        editFalloff(light);
+        break;
+    case LightType::Sphere:
+        editPosition(light);
+        editSourceRadius(light);
+        editFalloff(light);
+        break;
+    case LightType::Tube:
+        editTube(light);
+        editFalloff(light);
         break;
     case LightType::Directional: editDirection(light); break;
     case LightType::Hemisphere:
@@ -167,6 +213,16 @@ void drawLightsPanel(EditorState& state, EditorServices& services) {
         addLight(state, LightType::Point);
     }
     recordItem("Add point", "A light from one point, like a bulb");
+    sameLineIfFits(buttonWidth("Add sphere"));
+    if (ImGui::Button("Add sphere")) {
+        addLight(state, LightType::Sphere);
+    }
+    recordItem("Add sphere", "A round light with a size, like a globe lamp: broad, soft highlights");
+    sameLineIfFits(buttonWidth("Add tube"));
+    if (ImGui::Button("Add tube")) {
+        addLight(state, LightType::Tube);
+    }
+    recordItem("Add tube", "A long light with a size, like a fluorescent tube");
     sameLineIfFits(buttonWidth("Add directional"));
     if (ImGui::Button("Add directional")) {
         addLight(state, LightType::Directional);

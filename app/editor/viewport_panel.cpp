@@ -2,6 +2,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
@@ -85,10 +87,65 @@ void drawToolbar(EditorState& state) {
     ImGui::EndDisabled();
 }
 
-// Point lights as a marker, directional lights as an arrow from the centre of the view;
-// both can be dragged. `pressed`: the viewport's button was clicked this frame (it holds the
-// mouse from then on, so ImGui reports the window as not hovered). Drawn clipped to the image.
-// Returns true while a gizmo is being dragged.
+// The pixels on screen of a length `radius` across the view at `centre` (perspective: its
+// distance counts), for drawing a light at its size.
+float screenRadius(const Camera& camera, glm::vec2 viewSize, glm::vec3 centre, float radius) {
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    glm::vec3 side = glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f));
+    side = glm::dot(side, side) > 1e-8f ? glm::normalize(side) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const auto a = projectToViewport(camera, viewSize, centre);
+    const auto b = projectToViewport(camera, viewSize, centre + radius * side);
+    return a && b ? glm::distance(*a, *b) : 0.0f;
+}
+
+// A tube as a capsule outline: its two radii's sides and a half circle round each end.
+void drawCapsule(ImDrawList* draw, ImVec2 start, ImVec2 end, float startRadius, float endRadius, ImU32 color) {
+    const glm::vec2 a(start.x, start.y), b(end.x, end.y);
+    if (glm::distance(a, b) < 1.0f) {
+        draw->AddCircle(start, std::max(startRadius, endRadius), color, 0, 1.5f);
+        return;
+    }
+    const glm::vec2 along = glm::normalize(b - a), across(-along.y, along.x);
+    auto at = [](glm::vec2 v) { return ImVec2(v.x, v.y); };
+    draw->AddLine(at(a + startRadius * across), at(b + endRadius * across), color, 1.5f);
+    draw->AddLine(at(a - startRadius * across), at(b - endRadius * across), color, 1.5f);
+    const float angle = std::atan2(across.y, across.x);
+    draw->PathArcTo(end, endRadius, angle - 3.14159265f, angle);
+    draw->PathStroke(color, 0, 1.5f);
+    draw->PathArcTo(start, startRadius, angle, angle + 3.14159265f);
+    draw->PathStroke(color, 0, 1.5f);
+}
+
+// Where a light can be grabbed: a point's or a sphere's position, a tube's middle and ends, a
+// directional light's arrow tail.
+struct Grip {
+    LightHandle handle;
+    glm::vec3 at;
+    float radius;   // of its marker, pixels
+};
+
+std::vector<Grip> gripsOf(const Light& light, const Camera& camera) {
+    switch (light.type) {
+    case LightType::Point:
+    case LightType::Sphere: return {{LightHandle::Position, light.position, gizmoRadius()}};
+    case LightType::Tube:
+        return {{LightHandle::TubeStart, light.start, gizmoRadius() * 0.7f},
+                {LightHandle::TubeEnd, light.end, gizmoRadius() * 0.7f},
+                {LightHandle::Position, 0.5f * (light.start + light.end), gizmoRadius()}};
+    case LightType::Directional:
+        return {{LightHandle::Position, camera.target - 1.6f * glm::normalize(light.direction), gizmoRadius() * 0.7f}};
+    case LightType::Hemisphere:
+    case LightType::Environment: break;   // everywhere at once: nothing to grab
+    }
+    return {};
+}
+
+// Point lights as a marker, sphere lights as their outline at their size, tube lights as a
+// capsule outline with a marker at each end and one in the middle, directional lights as an
+// arrow from the centre of the view; all can be dragged (a tube's ends each on their own).
+// `pressed`: the viewport's button was clicked this frame (it holds the mouse from then on, so
+// ImGui reports the window as not hovered). Drawn clipped to the image. Returns true while a
+// gizmo is being dragged.
 bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool pressed) {
     int& dragged = state.draggedLight;
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -97,46 +154,71 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     const Camera& camera = state.scene.camera;
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const glm::vec2 local(mouse.x - origin.x, mouse.y - origin.y);
+    auto onScreen = [&](glm::vec3 point) -> std::optional<ImVec2> {
+        const auto screen = projectToViewport(camera, viewSize, point);
+        return screen ? std::optional<ImVec2>(ImVec2(origin.x + screen->x, origin.y + screen->y)) : std::nullopt;
+    };
     bool hoveredAny = false;
     for (int i = 0; i < int(state.scene.lights.size()); ++i) {
         Light& light = state.scene.lights[size_t(i)];
-        if (light.type == LightType::Hemisphere || light.type == LightType::Environment) {
-            continue;   // everywhere at once: nothing to grab
-        }
-        const glm::vec3 anchor = light.type == LightType::Point
-                                     ? light.position
-                                     : camera.target - 1.6f * glm::normalize(light.direction);
-        const auto screen = projectToViewport(camera, viewSize, anchor);
-        if (!screen) {
-            continue;
-        }
-        const ImVec2 at(origin.x + screen->x, origin.y + screen->y);
-        const bool hovered = glm::distance(*screen, local) <= gizmoRadius() + 3.0f;
-        hoveredAny |= hovered;
         // The selected light in yellow; one that solo leaves out of the picture greyed out.
         const ImU32 color = i == state.selectedLight ? IM_COL32(255, 210, 80, 255)
                             : soloedOut(state, i)    ? IM_COL32(110, 110, 110, 160)
                                                      : IM_COL32(230, 230, 230, 200);
-        if (light.type == LightType::Point) {
-            draw->AddCircleFilled(at, gizmoRadius(), light.enabled ? color : IM_COL32(90, 90, 90, 200));
-            draw->AddCircle(at, gizmoRadius() + 2.0f, IM_COL32(0, 0, 0, 200));
-        } else if (const auto centre = projectToViewport(camera, viewSize, camera.target)) {
-            const ImVec2 tip(origin.x + centre->x, origin.y + centre->y);
-            draw->AddLine(at, tip, color, 2.0f);
-            draw->AddCircleFilled(at, gizmoRadius() * 0.7f, color);
-            draw->AddTriangleFilled(tip, ImVec2(tip.x - 4, tip.y - 4), ImVec2(tip.x + 4, tip.y - 4), color);
+        const ImU32 fill = light.enabled ? color : IM_COL32(90, 90, 90, 200);
+        // The light at its size.
+        if (light.type == LightType::Sphere) {
+            if (const auto at = onScreen(light.position)) {
+                draw->AddCircle(*at, screenRadius(camera, viewSize, light.position, light.sourceRadius), color, 0, 1.5f);
+            }
+        } else if (light.type == LightType::Tube) {
+            const auto a = onScreen(light.start), b = onScreen(light.end);
+            if (a && b) {
+                drawCapsule(draw, *a, *b, screenRadius(camera, viewSize, light.start, light.sourceRadius),
+                            screenRadius(camera, viewSize, light.end, light.sourceRadius), color);
+            }
+        } else if (light.type == LightType::Directional) {
+            const auto tail = onScreen(camera.target - 1.6f * glm::normalize(light.direction));
+            if (const auto tip = onScreen(camera.target); tail && tip) {
+                draw->AddLine(*tail, *tip, color, 2.0f);
+                draw->AddTriangleFilled(*tip, ImVec2(tip->x - 4, tip->y - 4), ImVec2(tip->x + 4, tip->y - 4), color);
+            }
         }
-        if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-            dragged = i;
-            state.selectedLight = i;
+        for (const Grip& grip : gripsOf(light, camera)) {
+            const auto at = onScreen(grip.at);
+            if (!at) {
+                continue;
+            }
+            const bool hovered = glm::distance(glm::vec2(at->x - origin.x, at->y - origin.y), local) <= grip.radius + 3.0f;
+            hoveredAny |= hovered;
+            draw->AddCircleFilled(*at, grip.radius, light.type == LightType::Directional ? color : fill);
+            if (light.type != LightType::Directional) {
+                draw->AddCircle(*at, grip.radius + 2.0f, IM_COL32(0, 0, 0, 200));
+            }
+            if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+                dragged = i;
+                state.draggedHandle = grip.handle;
+                state.selectedLight = i;
+            }
         }
     }
     draw->PopClipRect();
     if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         Light& light = state.scene.lights[size_t(dragged)];
-        if (light.type == LightType::Point) {
+        if (light.type == LightType::Point || light.type == LightType::Sphere) {
             light.position = unprojectAtDepthOf(camera, viewSize, local, light.position);
-        } else {
+        } else if (light.type == LightType::Tube) {
+            if (state.draggedHandle == LightHandle::TubeStart) {
+                light.start = unprojectAtDepthOf(camera, viewSize, local, light.start);
+            } else if (state.draggedHandle == LightHandle::TubeEnd) {
+                light.end = unprojectAtDepthOf(camera, viewSize, local, light.end);
+            } else {   // the middle: both ends move together
+                const glm::vec3 middle = 0.5f * (light.start + light.end);
+                const glm::vec3 moved = unprojectAtDepthOf(camera, viewSize, local, middle) - middle;
+                light.start += moved;
+                light.end += moved;
+            }
+        } else if (light.type == LightType::Directional) {
             // The arrow's tail follows the mouse on a sphere around the target.
             const glm::vec3 onPlane = unprojectAtDepthOf(camera, viewSize, local, camera.target);
             glm::vec3 fromTarget = onPlane - camera.target;

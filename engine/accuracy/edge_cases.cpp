@@ -33,6 +33,22 @@ Light hemisphere() {
     return light;
 }
 
+Light sphereAt(glm::vec3 centre, float radius, float range) {
+    Light light = pointAt(centre, range, {1, 0, 1});
+    light.type = LightType::Sphere;
+    light.sourceRadius = radius;
+    return light;
+}
+
+Light tubeFrom(glm::vec3 start, glm::vec3 end, float radius) {
+    Light light = pointAt(start, 5, {0, 0, 1});
+    light.type = LightType::Tube;
+    light.start = start;
+    light.end = end;
+    light.sourceRadius = radius;
+    return light;
+}
+
 Material roughMaterial(float roughness, float metallic = 0.0f) {
     Material material;
     material.roughness = roughness;
@@ -97,6 +113,36 @@ std::vector<EdgeCase> edgeCases() {
     cases.push_back({"range 0 and zero attenuation", roughMaterial(0.3f),
                      {pointAt({0, 0, 1e-3f}, 0, {0, 0, 0})},
                      {{glm::vec3(0.0f), up, up}}});
+    return cases;
+}
+
+std::vector<EdgeCase> areaLightEdgeCases() {
+    const glm::vec3 up(0.0f, 0.0f, 1.0f);
+    std::vector<EdgeCase> cases;
+    const glm::vec3 grazingView = glm::normalize(glm::vec3(1.0f, 0.0f, 1e-4f));
+    const std::pair<const char*, Light> areaLights[] = {
+        {"sphere radius above the range", sphereAt({0, 0, 1}, 20, 12)},
+        {"sphere radius 0", sphereAt({0, 0, 1}, 0, 5)},
+        {"inside a sphere", sphereAt({0, 0, 0.1f}, 0.5f, 5)},
+        {"sphere centre on the point", sphereAt({0, 0, 0}, 0.5f, 5)},
+        {"sphere through the surface", sphereAt({0.3f, 0, -0.2f}, 0.5f, 5)},
+        {"sphere behind the surface", sphereAt({0, 0, -2}, 0.5f, 5)},
+        {"tube of length 0", tubeFrom({0, 0, 1}, {0, 0, 1}, 0.3f)},
+        {"tube ends 1e-6 apart", tubeFrom({0, 0, 1}, {1e-6f, 0, 1}, 0.3f)},
+        {"tube of radius 0", tubeFrom({-1, 0, 1}, {1, 0, 1}, 0)},
+        {"tube through the point", tubeFrom({-1, 0, 0}, {1, 0, 0}, 0.1f)},
+        {"tube through the surface", tubeFrom({-1, 0, -1}, {1, 0, 1}, 0.2f)},
+        {"tube end on the point", tubeFrom({0, 0, 0}, {0, 0, 1}, 0.1f)},
+        {"tube behind the surface", tubeFrom({-1, 0, -1}, {1, 0, -1}, 0.2f)},
+    };
+    for (const auto& [name, light] : areaLights) {
+        for (float roughness : {0.0f, 0.5f}) {
+            cases.push_back({std::string(name) + ", roughness " + std::to_string(roughness), roughMaterial(roughness),
+                             {light},
+                             {{glm::vec3(0.0f), up, up}, {glm::vec3(0.0f), up, grazingView},
+                              {glm::vec3(0.0f), glm::vec3(0.0f), up}}});
+        }
+    }
     return cases;
 }
 

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <random>
 
 #include <glm/geometric.hpp>
 
+#include "environment/area_reference.h"
 #include "environment/equirect.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
@@ -93,7 +95,8 @@ glm::vec3 sampleCosine(glm::vec2 u, glm::vec3 N) {
     return tx * (r * std::cos(phi)) + ty * (r * std::sin(phi)) + N * std::sqrt(std::max(0.0f, 1.0f - u.x));
 }
 
-// pdf of L under GGX half-vector sampling: D(H) NoH / (4 VoH).
+}  // namespace
+
 float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha) {
     const glm::vec3 H = shader::safeNormalize(V + L);
     const float NoH = std::clamp(glm::dot(N, H), 0.0f, 1.0f), VoH = glm::dot(V, H);
@@ -102,7 +105,6 @@ float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha) {
     }
     return shader::D_GGX(NoH, glm::cross(N, H), alpha) * NoH / (4.0f * VoH);
 }
-}  // namespace
 
 ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
                                     const ReferenceEnvironment& environment,
@@ -110,8 +112,12 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
                                     glm::vec3 V, const ReferenceOptions& options) {
     N = shader::safeNormalize(N);
     V = shader::safeNormalize(V);
-    ReferenceEstimate estimate;
-    estimate.value = shadePoint(model, material, lights, P, N, V);
+    // Sphere and tube lights by their own Monte Carlo (area_reference.h), the others exactly.
+    ReferenceEstimate estimate = areaLightReference(model, material, lights, P, N, V, options);
+    std::vector<shader::PackedLight> exact;
+    std::copy_if(lights.begin(), lights.end(), std::back_inserter(exact),
+                 [](const shader::PackedLight& light) { return !isAreaLight(light); });
+    estimate.value += shadePoint(model, material, exact, P, N, V);
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
     }
@@ -165,7 +171,8 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     const glm::dvec3 mean = sum / n;
     const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) / std::max(n - 1.0, 1.0);
     estimate.value += glm::vec3(mean);
-    estimate.standardError = glm::vec3(glm::sqrt(variance));
+    // Independent estimates: their variances add.
+    estimate.standardError = glm::vec3(glm::sqrt(variance + glm::dvec3(estimate.standardError * estimate.standardError)));
     return estimate;
 }
 

@@ -52,10 +52,15 @@ struct ReferenceEstimate {
     glm::vec3 standardError{0.0f};
 };
 
+// The pdf of direction L under GGX half-vector sampling (importanceSampleGGX, ibl.glsl):
+// D(H) NoH / (4 VoH); 0 where VoH <= 0.
+float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha);
+
 // Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (spec section 3), by Monte
 // Carlo with multiple importance sampling (Veach 1997, power heuristic) of GGX half-vector,
 // cosine and environment sampling; the model's f under an environment (environmentVisibility).
-// The analytic lights are added exactly (no error). Deterministic for a seed.
+// The analytic lights are added exactly (no error) but sphere and tube lights, which are
+// estimated too (area_reference.h). Deterministic for a seed.
 ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
                                     const ReferenceEnvironment& environment,
                                     const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,

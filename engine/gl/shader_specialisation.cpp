@@ -54,10 +54,18 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
         const shader::PackedLight& light = lights[i];
         std::string call;
         LightSource source;
-        if (light.type == shader::LIGHT_POINT) {
-            source = sourceOf(i, flatSlots, "FLAT_POINT");
-            call = "SHADE_POINT(" + source.fragment + (light.inverseRange > 0.0f ? ", true, " : ", false, ") +
+        // Point, sphere and tube lights share the window and coefficient switches.
+        const auto falloff = [&](const char* shade, const char* flatWrite) {
+            source = sourceOf(i, flatSlots, flatWrite);
+            call = std::string(shade) + "(" + source.fragment + (light.inverseRange > 0.0f ? ", true, " : ", false, ") +
                    (hasKarisAttenuation(light) ? "true)" : "false)");
+        };
+        if (light.type == shader::LIGHT_POINT) {
+            falloff("SHADE_POINT", "FLAT_POINT");
+        } else if (light.type == shader::LIGHT_SPHERE) {
+            falloff("SHADE_SPHERE", "FLAT_SPHERE");
+        } else if (light.type == shader::LIGHT_TUBE) {
+            falloff("SHADE_TUBE", "FLAT_TUBE");
         } else if (light.type == shader::LIGHT_DIRECTIONAL) {
             source = sourceOf(i, flatSlots, "FLAT_DIRECTIONAL");
             call = "SHADE_DIRECTIONAL(" + source.fragment + ")";

@@ -1,7 +1,7 @@
 #pragma once
 // What a shader specialised to one scene compiles (shaders/stages/shade.frag, PATINA_SPECIALISED):
 // exactly the scene's enabled lights, in order, each with only its type's code; no attenuation
-// window for a point light of range <= 0, and constant coefficients for one with
+// window for a point, sphere or tube light of range <= 0, and constant coefficients for one with
 // KARIS_ATTENUATION; no diffuse term (and no hemisphere light, which is
 // diffuse only) for a material whose c_diff is exactly 0. Values the artist drags (positions,
 // colours, material parameters) stay uniforms, so only a change of this key recompiles.

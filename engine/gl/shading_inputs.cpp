@@ -24,9 +24,11 @@ extern const char* const shade_frag;
 }  // namespace shader_sources
 
 namespace {
-// std140 of `PackedLight uLights[MAX_LIGHTS]; ivec4 uLightCount;`: vec4 members pack tightly.
-static_assert(sizeof(shader::PackedLight) == 6 * 16, "PackedLight must match std140");
-constexpr size_t kLightBlockSize = sizeof(shader::PackedLight) * shader::MAX_LIGHTS + 16;
+// std140 of `PackedLight uLights[MAX_LIGHTS]; ivec4 uLightCount; ivec4 uAreaLightCount;`: vec4
+// members pack tightly.
+static_assert(sizeof(shader::PackedLight) == 7 * 16, "PackedLight must match std140");
+constexpr size_t kLightArraySize = sizeof(shader::PackedLight) * shader::MAX_LIGHTS;
+constexpr size_t kLightBlockSize = kLightArraySize + 2 * 16;
 }  // namespace
 
 std::vector<const char*> shadingFragmentParts() {
@@ -52,11 +54,13 @@ void LightBuffer::upload(const std::vector<shader::PackedLight>& lights) {
                                  std::to_string(shader::MAX_LIGHTS));
     }
     const glm::ivec4 counts = packedLightCounts(lights);
-    const GLint count[4] = {counts.x, counts.y, counts.z, counts.w};
+    const glm::ivec4 areaCounts = packedAreaLightCounts(lights);
+    const GLint count[8] = {counts.x,     counts.y,     counts.z,     counts.w,
+                            areaCounts.x, areaCounts.y, areaCounts.z, areaCounts.w};
     glBindBuffer(GL_UNIFORM_BUFFER, buffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, GLsizeiptr(lights.size() * sizeof(shader::PackedLight)),
                     lights.data());
-    glBufferSubData(GL_UNIFORM_BUFFER, GLintptr(kLightBlockSize - 16), sizeof count, count);
+    glBufferSubData(GL_UNIFORM_BUFFER, GLintptr(kLightArraySize), sizeof count, count);
 }
 
 void LightBuffer::bind() const {

@@ -13,6 +13,7 @@
 namespace patina {
 
 namespace shader_sources {
+extern const char* const brdf_glsl;
 extern const char* const mesh_vert;
 extern const char* const probe_vert;
 extern const char* const lights_glsl;
@@ -23,9 +24,11 @@ namespace {
 // Texture unit of uEnergyTable; unit 0 stays free for the display pass.
 constexpr int kEnergyUnit = 1;
 
-// mesh.vert reads the light block for a specialised shader's flat lights.
+// mesh.vert reads the light block for a specialised shader's flat lights (lights.glsl comes after
+// brdf.glsl, whose constants it uses).
 std::vector<const char*> meshVertexParts() {
-    return {shader_sources::lights_glsl, shader_sources::light_block_glsl, shader_sources::mesh_vert};
+    return {shader_sources::brdf_glsl, shader_sources::lights_glsl, shader_sources::light_block_glsl,
+            shader_sources::mesh_vert};
 }
 }  // namespace
 
@@ -93,12 +96,16 @@ void ShadingPrograms::setEnvironmentShading(const EnvironmentShading& shading) {
 
 ShadingPrograms::SinglePass ShadingPrograms::singlePassFor(const std::vector<shader::PackedLight>& lights) {
     const glm::ivec4 counts = packedLightCounts(lights);   // all, points, directionals, hemispheres
+    const glm::ivec4 areaCounts = packedAreaLightCounts(lights);   // spheres, tubes
     SinglePass pass;
     pass.points = counts.y > 0;
     pass.directionals = counts.z > 0;
     pass.hemispheres = counts.w > 0;
+    pass.spheres = areaCounts.x > 0;
+    pass.tubes = areaCounts.y > 0;
     pass.karisPoints = std::all_of(lights.begin(), lights.end(), [](const shader::PackedLight& light) {
-        return light.type != shader::LIGHT_POINT || hasKarisAttenuation(light);
+        return light.type == shader::LIGHT_DIRECTIONAL || light.type == shader::LIGHT_HEMISPHERE ||
+               hasKarisAttenuation(light);
     });
     return pass;
 }
@@ -113,7 +120,9 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
     }
     for (const auto& [present, define] : {std::pair{points, "PATINA_NO_POINT_LIGHTS"},
                                           std::pair{directionals, "PATINA_NO_DIRECTIONAL_LIGHTS"},
-                                          std::pair{hemispheres, "PATINA_NO_HEMISPHERE_LIGHTS"}}) {
+                                          std::pair{hemispheres, "PATINA_NO_HEMISPHERE_LIGHTS"},
+                                          std::pair{spheres, "PATINA_NO_SPHERE_LIGHTS"},
+                                          std::pair{tubes, "PATINA_NO_TUBE_LIGHTS"}}) {
         if (!present) {
             defines.push_back(define);
         }

@@ -19,9 +19,10 @@ class ShadingPrograms {
 public:
     // What single is compiled for: a loop only for each light type present (on llvmpipe an
     // empty type's loop still runs its body once with every lane off), and the point lights'
-    // coefficients as a constant when all of them have KARIS_ATTENUATION.
+    // coefficients as a constant when all of them (and every sphere's and tube's) have
+    // KARIS_ATTENUATION.
     struct SinglePass {
-        bool points = true, directionals = true, hemispheres = true;
+        bool points = true, directionals = true, hemispheres = true, spheres = true, tubes = true;
         bool karisPoints = false;
         // The scene's environment after the lights; the renderer sets it (singlePassFor sees
         // only packed lights, which hold no environment).
@@ -70,7 +71,8 @@ private:
         unsigned long long lastUse = 0;
     };
     std::map<std::tuple<BrdfModelId, Use, Output, bool>, std::unique_ptr<GlProgram>> programs_;
-    // 12 shapes at most (with no point light, karisPoints is always true): 24 programs a model.
+    // 48 shapes at most (with no point, sphere or tube light, karisPoints is always true), each
+    // with and without the environment.
     std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;
     std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
     unsigned long long useCount_ = 0;

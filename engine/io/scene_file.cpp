@@ -85,7 +85,7 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
                                             : std::nullopt;
     if (!type) {
         reader.fail("type", "unknown light type " + shortJson(typeValue) +
-                                " (expected \"point\", \"directional\", \"hemisphere\" or \"environment\")");
+                                " (expected \"point\", \"sphere\", \"tube\", \"directional\", \"hemisphere\" or \"environment\")");
     }
     light.type = *type;
     light.name = reader.string("name", std::string(lightTypeName(light.type)));
@@ -106,6 +106,20 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
             warnings.push_back(source + ": " + reader.pointerOf("range") +
                                ": 'range' is not a key of scene version 1 (there the window is 'radius'); ignored");
         }
+        light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
+        break;
+    // Area lights came with version 2, where the window is "range"; a size must be finite and
+    // not negative (the reader names the key otherwise).
+    case LightType::Sphere:
+    case LightType::Tube:
+        if (light.type == LightType::Sphere) {
+            light.position = reader.vec3("position", light.position);
+        } else {
+            light.start = reader.vec3("start", light.start);
+            light.end = reader.vec3("end", light.end);
+        }
+        light.sourceRadius = reader.number("sourceRadius", light.sourceRadius, kNonNegative);
+        light.range = reader.number("range", light.range, kNonNegative);
         light.attenuation = reader.vec3("attenuation", light.attenuation, kNonNegative);
         break;
     case LightType::Directional:
@@ -171,6 +185,18 @@ Json lightToJson(const Light& light) {
     switch (light.type) {
     case LightType::Point:
         json["position"] = toJson(light.position);
+        json["range"] = toJson(light.range);
+        json["attenuation"] = toJson(light.attenuation);
+        break;
+    case LightType::Sphere:
+    case LightType::Tube:
+        if (light.type == LightType::Sphere) {
+            json["position"] = toJson(light.position);
+        } else {
+            json["start"] = toJson(light.start);
+            json["end"] = toJson(light.end);
+        }
+        json["sourceRadius"] = toJson(light.sourceRadius);
         json["range"] = toJson(light.range);
         json["attenuation"] = toJson(light.attenuation);
         break;

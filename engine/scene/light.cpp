@@ -10,13 +10,15 @@ std::string_view lightTypeName(LightType type) {
     case LightType::Directional: return "directional";
     case LightType::Hemisphere: return "hemisphere";
     case LightType::Environment: return "environment";
+    case LightType::Sphere: return "sphere";
+    case LightType::Tube: return "tube";
     }
     return "point";
 }
 
 std::optional<LightType> lightTypeFromName(std::string_view name) {
-    static const LightType all[] = {LightType::Point, LightType::Directional, LightType::Hemisphere,
-                                    LightType::Environment};
+    static const LightType all[] = {LightType::Point,       LightType::Directional, LightType::Hemisphere,
+                                    LightType::Environment, LightType::Sphere,      LightType::Tube};
     return enumFromName(name, all, lightTypeName);
 }
 

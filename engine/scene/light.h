@@ -9,7 +9,7 @@
 
 namespace patina {
 
-enum class LightType { Point, Directional, Hemisphere, Environment };
+enum class LightType { Point, Directional, Hemisphere, Environment, Sphere, Tube };
 
 std::string_view lightTypeName(LightType type);
 std::optional<LightType> lightTypeFromName(std::string_view name);
@@ -22,11 +22,18 @@ struct Light {
     bool enabled = true;
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
-    // point
+    // point; sphere: its centre
     glm::vec3 position{0.0f, 2.0f, 2.0f};
-    // The attenuation window: the light reaches this far (Karis 2013 eq. 9); <= 0: no window.
+    // point, sphere, tube: the attenuation window: the light reaches this far (Karis 2013 eq. 9);
+    // <= 0: no window.
     float range = 0.0f;
     glm::vec3 attenuation{1.0f, 0.0f, 1.0f};   // a_c, a_l, a_q
+    // sphere, tube: the radius of the sphere, or of the capsule around the tube's segment
+    // (Karis 2013, "Area lights"); 0 makes a sphere the point light at its centre.
+    float sourceRadius = 0.1f;
+    // tube: the segment's ends (equal ends: the sphere light of the same radius)
+    glm::vec3 start{-0.5f, 2.0f, 2.0f};
+    glm::vec3 end{0.5f, 2.0f, 2.0f};
     // directional: where the light travels
     glm::vec3 direction{0.0f, -1.0f, 0.0f};
     // hemisphere (colour acts as a tint on both)

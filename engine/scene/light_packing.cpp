@@ -3,12 +3,21 @@
 namespace patina {
 
 namespace {
-int shaderLightType(LightType type) {
-    switch (type) {
+// A sphere of source radius 0 is the point light at its centre, and a tube whose ends meet the
+// sphere there (Karis's formulas reduce to them, to rounding): packed as those, they render bit
+// for bit as those, and cost what those cost.
+int shaderLightType(const Light& light) {
+    switch (light.type) {
     case LightType::Point: return shader::LIGHT_POINT;
     case LightType::Directional: return shader::LIGHT_DIRECTIONAL;
     case LightType::Hemisphere: return shader::LIGHT_HEMISPHERE;
     case LightType::Environment: return -1;   // not a packed light: the renderer's own pass
+    case LightType::Sphere: return light.sourceRadius > 0.0f ? shader::LIGHT_SPHERE : shader::LIGHT_POINT;
+    case LightType::Tube:
+        if (light.start != light.end) {
+            return shader::LIGHT_TUBE;
+        }
+        return light.sourceRadius > 0.0f ? shader::LIGHT_SPHERE : shader::LIGHT_POINT;
     }
     return shader::LIGHT_POINT;
 }
@@ -18,8 +27,11 @@ shader::PackedLight packLight(const Light& light) {
     const glm::vec3 radiance = light.color * light.intensity;
     shader::PackedLight packed{};
     packed.radiance = radiance;
-    packed.type = shaderLightType(light.type);
-    packed.position = light.position;
+    packed.type = shaderLightType(light);
+    // A tube starts at its start (the sphere or point it packs as, when its ends meet).
+    packed.position = light.type == LightType::Tube ? light.start : light.position;
+    packed.sourceRadius = packed.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
+    packed.tubeEnd = light.end;
     packed.inverseRange = light.range > 0.0f ? 1.0f / light.range : 0.0f;
     // Spec: L = -normalize(direction). A zero direction (rejected by the loaders) gives no light
     // rather than NaN.
@@ -31,14 +43,18 @@ shader::PackedLight packLight(const Light& light) {
 }
 
 bool hasKarisAttenuation(const shader::PackedLight& light) {
-    return light.type == shader::LIGHT_POINT && light.attenuation == shader::KARIS_ATTENUATION;
+    return (light.type == shader::LIGHT_POINT || light.type == shader::LIGHT_SPHERE ||
+            light.type == shader::LIGHT_TUBE) &&
+           light.attenuation == shader::KARIS_ATTENUATION;
 }
 
 std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights) {
     std::vector<shader::PackedLight> packed;
-    for (int type : {shader::LIGHT_POINT, shader::LIGHT_DIRECTIONAL, shader::LIGHT_HEMISPHERE}) {
+    // Area lights last, so a scene without them sums in the order it always did.
+    for (int type : {shader::LIGHT_POINT, shader::LIGHT_DIRECTIONAL, shader::LIGHT_HEMISPHERE, shader::LIGHT_SPHERE,
+                     shader::LIGHT_TUBE}) {
         for (const Light& light : lights) {
-            if (light.enabled && shaderLightType(light.type) == type) {
+            if (light.enabled && shaderLightType(light) == type) {
                 packed.push_back(packLight(light));
             }
         }
@@ -46,12 +62,23 @@ std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lig
     return packed;
 }
 
-glm::ivec4 packedLightCounts(const std::vector<shader::PackedLight>& packed) {
-    glm::ivec4 counts(int(packed.size()), 0, 0, 0);
+namespace {
+int countOf(const std::vector<shader::PackedLight>& packed, int type) {
+    int count = 0;
     for (const shader::PackedLight& light : packed) {
-        counts[1 + light.type] += 1;
+        count += light.type == type ? 1 : 0;
     }
-    return counts;
+    return count;
+}
+}  // namespace
+
+glm::ivec4 packedLightCounts(const std::vector<shader::PackedLight>& packed) {
+    return {int(packed.size()), countOf(packed, shader::LIGHT_POINT), countOf(packed, shader::LIGHT_DIRECTIONAL),
+            countOf(packed, shader::LIGHT_HEMISPHERE)};
+}
+
+glm::ivec4 packedAreaLightCounts(const std::vector<shader::PackedLight>& packed) {
+    return {countOf(packed, shader::LIGHT_SPHERE), countOf(packed, shader::LIGHT_TUBE), 0, 0};
 }
 
 }  // namespace patina

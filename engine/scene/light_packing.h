@@ -7,15 +7,18 @@
 namespace patina {
 
 // The enabled lights of a scene in the layout shaders/shared/lights.glsl reads (std140-compatible:
-// six vec4s per light): points, then directionals, then hemispheres, each in scene order.
+// seven vec4s per light): points, then directionals, hemispheres, spheres and tubes, each in
+// scene order.
 // Grouped so the single pass loops over each type with no type branch per light (a branch
 // that software rasterisers pay for in every lane), and every path sums in this one order.
 std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights);
 // uLightCount of shade.frag: (all, points, directionals, hemispheres) of a packed list.
 glm::ivec4 packedLightCounts(const std::vector<shader::PackedLight>& packed);
+// uAreaLightCount of shade.frag: (spheres, tubes, 0, 0).
+glm::ivec4 packedAreaLightCounts(const std::vector<shader::PackedLight>& packed);
 
 shader::PackedLight packLight(const Light& light);
-// A packed point light whose coefficients are exactly KARIS_ATTENUATION.
+// A packed point, sphere or tube light whose coefficients are exactly KARIS_ATTENUATION.
 bool hasKarisAttenuation(const shader::PackedLight& light);
 
 }  // namespace patina

@@ -23,6 +23,13 @@ inline vec2 environmentBrdfTexel(int x, int y) {
 #include "ibl_model.glsl"
 #endif
 
+// A sphere or tube light by a chosen variant (C++ only: the area-light measurements compare them).
+inline vec3 shadeAreaLightWith(PackedLight light, AreaLightMethod method, SurfaceMaterial material, vec3 P, vec3 N,
+                               vec3 V) {
+    return light.type == LIGHT_TUBE ? shadeTubeLightWith(light, true, false, method, material, P, N, V)
+                                    : shadeSphereLightWith(light, true, false, method, material, P, N, V);
+}
+
 // The half vector and the cosines the specular terms read, clamped as evaluateBrdf clamps them
 // (C++ only: evaluateBrdf guards L = -V itself).
 struct LobeAngles {

@@ -103,6 +103,16 @@ glm::vec3 shadeLight(BrdfModelId id, const shader::PackedLight& light, const sha
     return shader::model_Epic::shadeLight(light, material, P, N, V);
 }
 
+glm::vec3 shadeAreaLight(BrdfModelId id, const shader::PackedLight& light, shader::AreaLightMethod method,
+                         const shader::SurfaceMaterial& material, glm::vec3 P, glm::vec3 N, glm::vec3 V) {
+    switch (id) {
+#define PATINA_SHADE(model, name, summary) PATINA_CASE(shader, model, shadeAreaLightWith(light, method, material, P, N, V))
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return shader::model_Epic::shadeAreaLightWith(light, method, material, P, N, V);
+}
+
 BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V,
                              glm::dvec3 L) {
     const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(

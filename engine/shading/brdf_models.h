@@ -51,6 +51,9 @@ shader::SpecularTerms specularTerms(BrdfModelId id, const shader::SurfaceMateria
                                     glm::vec3 V, glm::vec3 L);
 glm::vec3 shadeLight(BrdfModelId id, const shader::PackedLight& light, const shader::SurfaceMaterial& material,
                      glm::vec3 P, glm::vec3 N, glm::vec3 V);
+// A packed sphere or tube light by the variant `method` (shadeLight takes the renderer's).
+glm::vec3 shadeAreaLight(BrdfModelId id, const shader::PackedLight& light, shader::AreaLightMethod method,
+                         const shader::SurfaceMaterial& material, glm::vec3 P, glm::vec3 N, glm::vec3 V);
 
 // The same in double precision (engine/shading/shading_f64.h): the guarded code without fp32 rounding.
 struct BrdfValueF64 {

@@ -89,6 +89,8 @@ inline Half sqrt(Half x) { return Half(std::sqrt(x.value)); }
 inline Half inversesqrt(Half x) { return Half(1.0f / std::sqrt(x.value)); }
 inline Half exp2(Half x) { return Half(std::exp2(x.value)); }
 inline Half log2(Half x) { return Half(std::log2(x.value)); }
+inline Half acos(Half x) { return Half(std::acos(x.value)); }
+inline Half atan(Half x) { return Half(std::atan(x.value)); }
 inline Half dot(HalfVec3 a, HalfVec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline HalfVec3 cross(HalfVec3 a, HalfVec3 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};

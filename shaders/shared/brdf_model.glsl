@@ -133,6 +133,12 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
 // light has range 0 (true is right for every light: 1/range = 0 gives window 1). `karis`
 // true takes KARIS_ATTENUATION for the light's coefficients instead of reading them: only for
 // a light that has exactly those (hasKarisAttenuation, light_packing.h).
+// The falloff of a point, sphere or tube light at distance t, with shadePointLight's switches.
+// 1/range = 0 turns the window off: with `windowed` a constant, the compiler folds it away.
+PATINA_INLINE real lightFalloff(PackedLight light, real t, bool windowed, bool karis) {
+    return pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f, karis ? KARIS_ATTENUATION : light.attenuation);
+}
+
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
                                    vec3 P, vec3 N, vec3 V) {
     vec3 toLight = light.position - P;
@@ -140,9 +146,7 @@ PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis,
     // Clamped so the light on the shaded point still gives finite numbers; selected away below.
     real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     real t = distanceSquared * inverseDistance;
-    // 0 turns the window off: with `windowed` a constant, the compiler folds it away.
-    real attenuation = pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f,
-                                              karis ? KARIS_ATTENUATION : light.attenuation);
+    real attenuation = lightFalloff(light, t, windowed, karis);
     vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
     // A light on the shaded point has no direction: no light.
     return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? value : vec3(0.0f);
@@ -159,6 +163,93 @@ PATINA_INLINE vec3 shadeHemisphereLight(PackedLight light, SurfaceMaterial mater
     return hemisphereRadiance(light, N) * diffuse(material, NoV, 1.0f, clamp(dot(N, H), 0.0f, 1.0f));
 }
 
+// The specular lobe alone towards V from radiance arriving along unit L, with the cosine;
+// nothing from behind the surface (a select, as shadeFromDirection's).
+PATINA_INLINE vec3 specularFromDirection(vec3 radiance, vec3 L, SurfaceMaterial material, vec3 N, vec3 V) {
+    real NoL = dot(N, L);
+    vec3 value = radiance * min(NoL, 1.0f) * evaluateBrdf(material, N, V, L).specular;
+    return NoL > 0.0f ? value : vec3(0.0f);
+}
+
+// The diffuse lobe alone for light of `radiance` whose cosine-weighted arrival is `illuminance`
+// (NoL for a point; an area light's own), the lobe evaluated towards unit L (Burley reads it).
+PATINA_INLINE vec3 diffuseFromDirection(vec3 radiance, real illuminance, vec3 L, SurfaceMaterial material, vec3 N,
+                                        vec3 V) {
+    return radiance * illuminance * evaluateBrdf(material, N, V, L).diffuse;
+}
+
+// A sphere light (Karis 2013, "Area lights"): the point light's falloff at the centre's distance
+// d; specular from the representative point of eq. 11 with the normalisation (alpha / alpha')^2
+// of eq. 14; diffuse from the centre as a point light (exact while the sphere is above the
+// horizon), or with `method.exactSphereDiffuse` Frostbite's horizon-clipped illuminance.
+// `windowed` and `karis` as for shadePointLight. Source radius 0 gives the point light.
+PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
+                                        SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    vec3 toCentre = light.position - P;
+    real distanceSquared = dot(toCentre, toCentre);
+    // Clamped so the centre on the shaded point still gives finite numbers; selected away below.
+    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
+    real t = distanceSquared * inverseDistance;
+    vec3 radiance = light.radiance * lightFalloff(light, t, windowed, karis);
+    vec3 toCentreUnit = toCentre * inverseDistance;
+    real NoL = dot(N, toCentreUnit);
+    real s = light.sourceRadius;
+    real illuminance = method.exactSphereDiffuse
+                           ? sphereIlluminance_Frostbite(NoL, s * s * inverseDistance * inverseDistance)
+                           : clamp(NoL, 0.0f, 1.0f);
+    vec3 diffuse = diffuseFromDirection(radiance, illuminance, toCentreUnit, material, N, V);
+
+    vec3 R = 2.0f * dot(N, V) * N - V;   // reflect(-V, N)
+    vec3 closest = sphereRepresentativePoint(toCentre, R, s);
+    vec3 towardsClosest = closest * inversesqrt(max(dot(closest, closest), MIN_LIGHT_DISTANCE_SQUARED));
+    real normalization = sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, t, method.widening));
+    vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
+    // The centre on the shaded point has no direction: no light, as for a point light.
+    return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? diffuse + specular : vec3(0.0f);
+}
+
+// A tube light (Karis 2013, "Tube lights"): the capsule of radius s around the segment from
+// `position` to `tubeEnd`, of total intensity. Falloff and diffuse from the line irradiance of
+// the two ends (lineIrradianceDistanceSquared, lineIrradianceCosine); specular from the point of
+// the segment closest to the reflected ray (eqs. 15-17), then the sphere's representative point
+// around it, normalised by the line's alpha / alpha' (eq. 16) with the segment's length and the
+// sphere's (alpha / alpha')^2 (eq. 14), both at the distance of the tube's centre. Length 0 gives
+// the sphere light.
+PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
+                                      SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    vec3 L0 = light.position - P;
+    vec3 L1 = light.tubeEnd - P;
+    vec3 Ld = L1 - L0;
+    real lineDistanceSquared = max(lineIrradianceDistanceSquared(L0, L1), 0.0f);
+    vec3 radiance = light.radiance * lightFalloff(light, sqrt(lineDistanceSquared), windowed, karis);
+    vec3 toCentre = L0 + Ld * real(0.5f);
+    real centreDistance = sqrt(dot(toCentre, toCentre));
+    vec3 towardsCentre = toCentre * inversesqrt(max(dot(toCentre, toCentre), MIN_LIGHT_DISTANCE_SQUARED));
+    vec3 diffuse = diffuseFromDirection(radiance, lineIrradianceCosine(N, L0, L1), towardsCentre, material, N, V);
+
+    vec3 R = 2.0f * dot(N, V) * N - V;   // reflect(-V, N)
+    real s = light.sourceRadius;
+    vec3 closest = sphereRepresentativePoint(tubeClosestPoint(L0, Ld, R), R, s);
+    vec3 towardsClosest = closest * inversesqrt(max(dot(closest, closest), MIN_LIGHT_DISTANCE_SQUARED));
+    real segmentLength = sqrt(dot(Ld, Ld));
+    real normalization =
+        lineNormalization(material.alpha, widenedAlpha(material.alpha, segmentLength, centreDistance, method.widening)) *
+        sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, centreDistance, method.widening));
+    vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
+    return diffuse + specular;
+}
+
+// The renderer's variant (defaultAreaLightMethod, lights.glsl).
+PATINA_INLINE vec3 shadeSphereLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material, vec3 P,
+                                    vec3 N, vec3 V) {
+    return shadeSphereLightWith(light, windowed, karis, defaultAreaLightMethod(), material, P, N, V);
+}
+
+PATINA_INLINE vec3 shadeTubeLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material, vec3 P,
+                                  vec3 N, vec3 V) {
+    return shadeTubeLightWith(light, windowed, karis, defaultAreaLightMethod(), material, P, N, V);
+}
+
 // Outgoing radiance towards V from one light at point P with unit normal N (zero allowed).
 PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
     if (light.type == LIGHT_HEMISPHERE) {
@@ -166,6 +257,12 @@ PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 
     }
     if (light.type == LIGHT_POINT) {
         return shadePointLight(light, true, false, material, P, N, V);
+    }
+    if (light.type == LIGHT_SPHERE) {
+        return shadeSphereLight(light, true, false, material, P, N, V);
+    }
+    if (light.type == LIGHT_TUBE) {
+        return shadeTubeLight(light, true, false, material, P, N, V);
     }
     return shadeDirectionalLight(light, material, N, V);
 }

@@ -11,16 +11,20 @@ out vec3 vNormal;
 // A specialised shader's first lights, handed on unchanged as flat inputs: on llvmpipe a vertex
 // shader loads a uniform scalar once per 8 vertices, a fragment shader gathers it lane by lane
 // per 8 pixels, and a flat input costs the fragment shader one load per block of pixels
-// (docs/PERFORMANCE.md). PATINA_FLAT_LIGHTS lists FLAT_POINT(i), FLAT_DIRECTIONAL(i) and
-// FLAT_HEMISPHERE(i), each light's two rows (shade.frag's flatLight unpacks them).
+// (docs/PERFORMANCE.md). PATINA_FLAT_LIGHTS lists FLAT_POINT(i), FLAT_DIRECTIONAL(i),
+// FLAT_HEMISPHERE(i), FLAT_SPHERE(i) and FLAT_TUBE(i), each light's two rows (shade.frag's
+// flatLight unpacks them; a tube's end, a third row, stays in the block).
 flat out vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
-void writeFlatLight(int i, vec3 first, float firstW, vec3 second) {
+void writeFlatLight(int i, vec3 first, float firstW, vec3 second, float secondW) {
     vFlatLight[2 * i] = vec4(first, firstW);
-    vFlatLight[2 * i + 1] = vec4(second, 0.0f);
+    vFlatLight[2 * i + 1] = vec4(second, secondW);
 }
-#define FLAT_POINT(i) writeFlatLight(i, uLights[i].radiance, uLights[i].inverseRange, uLights[i].position);
-#define FLAT_DIRECTIONAL(i) writeFlatLight(i, uLights[i].radiance, 0.0f, uLights[i].directionToLight);
-#define FLAT_HEMISPHERE(i) writeFlatLight(i, uLights[i].sky, 0.0f, uLights[i].ground);
+#define FLAT_POINT(i) writeFlatLight(i, uLights[i].radiance, uLights[i].inverseRange, uLights[i].position, 0.0f);
+#define FLAT_DIRECTIONAL(i) writeFlatLight(i, uLights[i].radiance, 0.0f, uLights[i].directionToLight, 0.0f);
+#define FLAT_HEMISPHERE(i) writeFlatLight(i, uLights[i].sky, 0.0f, uLights[i].ground, 0.0f);
+#define FLAT_SPHERE(i) \
+    writeFlatLight(i, uLights[i].radiance, uLights[i].inverseRange, uLights[i].position, uLights[i].sourceRadius);
+#define FLAT_TUBE(i) FLAT_SPHERE(i)
 #endif
 
 // The multi-pass path draws the mesh once per light with depth test EQUAL: every pass must

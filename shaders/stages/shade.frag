@@ -2,10 +2,12 @@
 // PATINA_SINGLE_PASS: every light of the block in one pass; otherwise only uLightIndex, and the
 // renderer adds the passes with blending (the seed's multi-pass design). PATINA_KARIS_POINTS:
 // every point light has KARIS_ATTENUATION, so single need not read the coefficients.
-// PATINA_NO_POINT_LIGHTS, PATINA_NO_DIRECTIONAL_LIGHTS, PATINA_NO_HEMISPHERE_LIGHTS: single
-// leaves out the loop of a type the scene lacks (ShadingPrograms::singlePassFor).
+// PATINA_NO_POINT_LIGHTS, PATINA_NO_DIRECTIONAL_LIGHTS, PATINA_NO_HEMISPHERE_LIGHTS,
+// PATINA_NO_SPHERE_LIGHTS, PATINA_NO_TUBE_LIGHTS: single leaves out the loop of a type the scene
+// lacks (ShadingPrograms::singlePassFor); KARIS_POINTS holds for sphere and tube lights too.
 // PATINA_SPECIALISED: PATINA_LIGHTS lists the scene's enabled lights in order as
-// SHADE_POINT(light, windowed, karis), SHADE_DIRECTIONAL(light) and SHADE_HEMISPHERE(light), so
+// SHADE_POINT(light, windowed, karis), SHADE_DIRECTIONAL(light), SHADE_HEMISPHERE(light),
+// SHADE_SPHERE(light, windowed, karis) and SHADE_TUBE(light, windowed, karis), so
 // the shader has no light loop and no code for a type the scene lacks; `light` is FLAT(i), a
 // flat input from mesh.vert, or BLOCK(i), read from the block (engine/gl/shader_specialisation.h
 // builds the list and says why).
@@ -33,18 +35,21 @@ flat in vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
 PackedLight flatLight(int i) {
     PackedLight light;
     light.type = -1;   // not read: each SHADE_* macro names its type
-    light.unused0 = 0.0f;
     light.unused1 = 0.0f;
     light.unused2 = 0.0f;
     light.unused3 = 0.0f;
+    light.unused4 = 0.0f;
     light.radiance = vFlatLight[2 * i].xyz;
     light.sky = vFlatLight[2 * i].xyz;
     light.inverseRange = vFlatLight[2 * i].w;
     light.position = vFlatLight[2 * i + 1].xyz;
     light.directionToLight = vFlatLight[2 * i + 1].xyz;
     light.ground = vFlatLight[2 * i + 1].xyz;
-    // Read only for a point light with other coefficients than Karis's (not a constant).
+    light.sourceRadius = vFlatLight[2 * i + 1].w;
+    // Read only for a point, sphere or tube light with other coefficients than Karis's (not a
+    // constant), and for a tube's end.
     light.attenuation = uLights[i].attenuation;
+    light.tubeEnd = uLights[i].tubeEnd;
     return light;
 }
 #define FLAT(i) flatLight(i)
@@ -106,6 +111,8 @@ void main() {
 #define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V);
 #define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V);
 #define SHADE_HEMISPHERE(light) radiance += shadeHemisphereLight(light, material, N, V);
+#define SHADE_SPHERE(light, windowed, karis) radiance += shadeSphereLight(light, windowed, karis, material, vPosition, N, V);
+#define SHADE_TUBE(light, windowed, karis) radiance += shadeTubeLight(light, windowed, karis, material, vPosition, N, V);
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/scene/light_packing.h): a loop per type, no type branch.
@@ -145,6 +152,26 @@ void main() {
         int i = first;
         do {
             radiance += shadeHemisphereLight(uLights[i], material, N, V);
+        } while (++i < end);
+    }
+#endif
+    first = end;
+    end += uAreaLightCount.x;
+#ifndef PATINA_NO_SPHERE_LIGHTS
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+        } while (++i < end);
+    }
+#endif
+    first = end;
+    end += uAreaLightCount.y;
+#ifndef PATINA_NO_TUBE_LIGHTS
+    if (first < end) {
+        int i = first;
+        do {
+            radiance += shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V);
         } while (++i < end);
     }
 #endif

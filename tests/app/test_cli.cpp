@@ -78,6 +78,15 @@ TEST_F(Cli, BadSceneExitsThreeNamingTheProblemAndWritesNothing) {
     EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
+TEST_F(Cli, ANegativeLightSizeExitsThreeNamingTheKey) {
+    write("size.json", R"({"format": "patina-scene", "version": 2, "lights": [{"type": "sphere", "sourceRadius": -0.5}]})");
+    const test::CliRun r = run("render --scene " + path("size.json").string() + " --out " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("size.json: /lights/0/sourceRadius: value -0.5 is outside"), std::string::npos)
+        << r.stderrText;
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
 TEST_F(Cli, BadInputsExitThree) {
     write("syntax.json", "{\n\"format\": \"patina-material\",\n\"version\": 1,,\n}");
     write("range.json", R"({"format": "patina-material", "version": 1, "metallic": 2})");

@@ -841,5 +841,89 @@ TEST_F(EditorUi, AScreenshotsFolderOpensFromTheStatusLine) {
     EXPECT_NE(state_.error.find("xdg-utils"), std::string::npos) << state_.error;
 }
 
+TEST_F(EditorUi, AddSphereAndAddTubeAddLightsThatShowAndUndo) {
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    const size_t count = state_.scene.lights.size();
+    click(centreOf("Add sphere"));
+    ASSERT_EQ(state_.scene.lights.size(), count + 1);
+    EXPECT_EQ(state_.scene.lights.back().type, LightType::Sphere);
+    EXPECT_GT(state_.scene.lights.back().sourceRadius, 0.0f);
+    click(centreOf("Add tube"));
+    ASSERT_EQ(state_.scene.lights.size(), count + 2);
+    const Light& tube = state_.scene.lights.back();
+    EXPECT_EQ(tube.type, LightType::Tube);
+    EXPECT_NE(tube.start, tube.end);
+    frames(2);
+    EXPECT_GT(differingPixels(before, services_->viewportPixels(EditorServices::Shown::Edited)), 100);
+    press(kKeyZ, true);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights.size(), count);
+}
+
+// The size sliders: a sphere's source radius, a tube's length about its middle; each drag one
+// undo step.
+TEST_F(EditorUi, SourceRadiusAndLengthSlidersResizeTheLightAndUndo) {
+    Light sphere;
+    sphere.type = LightType::Sphere;
+    sphere.sourceRadius = 0.1f;
+    Light tube;
+    tube.type = LightType::Tube;
+    tube.start = {-0.5f, 1.0f, 1.0f};
+    tube.end = {0.5f, 1.0f, 1.0f};
+    state_.scene.lights = {sphere, tube};
+    state_.selectedLight = 0;
+    state_.committed = state_.snapshot();
+    frames(2);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Source radius", &min, &max));
+    drag(ImVec2(min.x + 0.3f * (max.x - min.x), (min.y + max.y) * 0.5f), ImVec2(max.x - 2.0f, (min.y + max.y) * 0.5f));
+    EXPECT_GT(state_.scene.lights[0].sourceRadius, 1.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights[0].sourceRadius, 0.1f);
+
+    state_.selectedLight = 1;
+    frames(2);
+    ASSERT_TRUE(itemRect("Length", &min, &max));
+    drag(ImVec2(min.x + 0.1f * (max.x - min.x), (min.y + max.y) * 0.5f), ImVec2(min.x + 0.5f * (max.x - min.x), (min.y + max.y) * 0.5f));
+    const Light& resized = state_.scene.lights[1];
+    EXPECT_GT(glm::distance(resized.start, resized.end), 2.0f);
+    EXPECT_LT(glm::distance(0.5f * (resized.start + resized.end), glm::vec3(0.0f, 1.0f, 1.0f)), 1e-5f) << "the middle stays";
+    EXPECT_LT(glm::length(glm::cross(resized.end - resized.start, glm::vec3(1, 0, 0))), 1e-5f) << "the axis stays";
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights[1].end, tube.end);
+}
+
+// A tube's end is dragged on its own, its middle moves both ends; each drag one undo step.
+TEST_F(EditorUi, DraggingATubesGizmosMovesItsEndsOrTheWholeTube) {
+    Light tube;
+    tube.type = LightType::Tube;
+    tube.start = {-0.6f, 0.5f, 1.2f};
+    tube.end = {0.6f, 0.5f, 1.2f};
+    state_.scene.lights = {tube};
+    state_.committed = state_.snapshot();
+    frames(2);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const Camera camera = state_.scene.camera;
+    const glm::vec2 view(max.x - min.x, max.y - min.y);
+    const auto end = projectToViewport(camera, view, tube.end);
+    ASSERT_TRUE(end.has_value());
+    drag(ImVec2(min.x + end->x, min.y + end->y), ImVec2(min.x + end->x + 40.0f, min.y + end->y - 30.0f));
+    EXPECT_EQ(state_.scene.camera, camera) << "the camera orbited";
+    EXPECT_EQ(state_.scene.lights[0].start, tube.start);
+    EXPECT_GT(glm::distance(state_.scene.lights[0].end, tube.end), 0.1f);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights[0].end, tube.end);
+
+    const auto middle = projectToViewport(camera, view, 0.5f * (tube.start + tube.end));
+    ASSERT_TRUE(middle.has_value());
+    drag(ImVec2(min.x + middle->x, min.y + middle->y), ImVec2(min.x + middle->x, min.y + middle->y + 40.0f));
+    const Light& moved = state_.scene.lights[0];
+    EXPECT_GT(glm::distance(moved.start, tube.start), 0.1f);
+    EXPECT_LT(glm::distance(moved.end - moved.start, tube.end - tube.start), 1e-4f) << "moved whole";
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.lights[0].start, tube.start);
+}
+
 }  // namespace
 }  // namespace patina::editor

@@ -74,6 +74,30 @@ Scene toneMappedScene(float exposure, Tonemap tonemap) {
     return scene;
 }
 
+// Sphere and tube lights around the mesh, with the window and Karis's coefficients and without.
+Scene areaLightScene(int perType) {
+    Scene scene = defaultScene();
+    scene.lights.clear();
+    for (int i = 0; i < perType; ++i) {
+        const float angle = 6.2831853f * float(i) / float(perType);
+        Light sphere;
+        sphere.type = LightType::Sphere;
+        sphere.position = {2.0f * std::cos(angle), 1.2f, 2.0f * std::sin(angle) + 1.0f};
+        sphere.sourceRadius = 0.1f + 0.2f * float(i % 3);
+        sphere.range = i % 2 ? 6.0f : 0.0f;
+        sphere.intensity = 3.0f;
+        Light tube;
+        tube.type = LightType::Tube;
+        tube.start = {2.0f * std::cos(angle), 0.3f, 2.0f * std::sin(angle) + 1.0f};
+        tube.end = tube.start + glm::vec3(0.0f, 1.0f, 0.4f);
+        tube.sourceRadius = 0.05f;
+        tube.attenuation = i % 2 ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(1.0f, 0.0f, 1.0f);
+        tube.intensity = 2.0f;
+        scene.lights.insert(scene.lights.end(), {sphere, tube});
+    }
+    return scene;
+}
+
 Scene onlyLightsOfType(LightType type, int count) {
     Scene scene = manyLightScene(count);
     std::erase_if(scene.lights, [type](const Light& light) { return light.type != type; });
@@ -113,6 +137,17 @@ TEST(Renderer, AllThreePassModesAgree) {
     std::vector<Case> cases = {{"default", defaultScene()},  {"no lights", noLights},
                                {"30 lights on a torus", torus}, {"a point light of range 0", unwindowed},
                                {"pure metal", metal}, {"points with other coefficients", mixedAttenuation}};
+    // Area lights: alone, many (flat and block), and among the other types.
+    Scene areaAmongOthers = manyLightScene(2);
+    for (const Light& light : areaLightScene(2).lights) {
+        areaAmongOthers.lights.push_back(light);
+    }
+    Scene onlySpheres = areaLightScene(3);
+    std::erase_if(onlySpheres.lights, [](const Light& light) { return light.type != LightType::Sphere; });
+    cases.push_back({"1 sphere and 1 tube", areaLightScene(1)});
+    cases.push_back({"8 spheres and 8 tubes", areaLightScene(8)});
+    cases.push_back({"spheres and tubes among the others", areaAmongOthers});
+    cases.push_back({"only spheres", onlySpheres});
     for (LightType type : {LightType::Point, LightType::Directional, LightType::Hemisphere}) {
         for (int count : {1, 12}) {
             cases.push_back({std::to_string(count) + " " + std::string(lightTypeName(type)),

@@ -25,6 +25,32 @@ Scene threeLightScene() {
     return scene;
 }
 
+// The three analytic lights and a sphere and a tube light (after them, as packed).
+Scene fiveLightScene() {
+    Scene scene = threeLightScene();
+    Light sphere;
+    sphere.type = LightType::Sphere;
+    sphere.range = 0.0f;
+    Light tube;
+    tube.type = LightType::Tube;
+    tube.attenuation = {0.0f, 0.0f, 1.0f};
+    tube.range = 5.0f;
+    scene.lights.insert(scene.lights.begin(), {tube, sphere});
+    return scene;
+}
+
+// Sphere and tube lights take the point light's switches: window, Karis's coefficients.
+TEST(ShaderSpecialisation, AreaLightsComeAfterTheOthersWithTheirSwitches) {
+    const Scene scene = fiveLightScene();
+    const std::vector<shader::PackedLight> lights = packEnabledLights(scene.lights);
+    EXPECT_EQ(specialiseFor(lights, scene.material, 0).lights,
+              "SHADE_POINT(BLOCK(0), true, true) SHADE_DIRECTIONAL(BLOCK(1)) SHADE_HEMISPHERE(BLOCK(2)) "
+              "SHADE_SPHERE(BLOCK(3), false, true) SHADE_TUBE(BLOCK(4), true, false)");
+    const ShaderSpecialisation flat = specialiseFor(lights, scene.material, 8);
+    EXPECT_EQ(flat.flatLightRows, "FLAT_POINT(0) FLAT_DIRECTIONAL(1) FLAT_HEMISPHERE(2) FLAT_SPHERE(3) FLAT_TUBE(4)");
+    EXPECT_EQ(flat.flatLightCount, 5);
+}
+
 TEST(ShaderSpecialisation, DefaultSceneListsItsThreeLightsInOrder) {
     const Scene scene = threeLightScene();
     const ShaderSpecialisation key = specialiseFor(packEnabledLights(scene.lights), scene.material, 0);
@@ -136,27 +162,37 @@ TEST(ShadingPrograms, SinglePassReadsCoefficientsOnlyWhenAPointLightNeedsThem) {
 // Single has a loop for each light type the scene draws, and none for the others.
 TEST(ShadingPrograms, SinglePassLoopsOnlyOverTheTypesPresent) {
     using SinglePass = ShadingPrograms::SinglePass;
-    const Scene scene = threeLightScene();   // one light of each type
+    Scene scene = fiveLightScene();   // one light of each type
+    for (Light& light : scene.lights) {
+        light.attenuation = shader::KARIS_ATTENUATION;
+    }
     const SinglePass all = ShadingPrograms::singlePassFor(packEnabledLights(scene.lights));
-    EXPECT_TRUE(all.points && all.directionals && all.hemispheres);
+    EXPECT_TRUE(all.points && all.directionals && all.hemispheres && all.spheres && all.tubes);
     EXPECT_EQ(all.defines(), (std::vector<std::string>{"PATINA_SINGLE_PASS", "PATINA_KARIS_POINTS"}));
     for (size_t off = 0; off < scene.lights.size(); ++off) {
-        Scene two = scene;
-        two.lights[off].enabled = false;
-        const SinglePass pass = ShadingPrograms::singlePassFor(packEnabledLights(two.lights));
+        Scene four = scene;
+        four.lights[off].enabled = false;
+        const SinglePass pass = ShadingPrograms::singlePassFor(packEnabledLights(four.lights));
         const LightType type = scene.lights[off].type;
         EXPECT_EQ(pass.points, type != LightType::Point) << off;
         EXPECT_EQ(pass.directionals, type != LightType::Directional) << off;
         EXPECT_EQ(pass.hemispheres, type != LightType::Hemisphere) << off;
+        EXPECT_EQ(pass.spheres, type != LightType::Sphere) << off;
+        EXPECT_EQ(pass.tubes, type != LightType::Tube) << off;
         const char* left = type == LightType::Point         ? "PATINA_NO_POINT_LIGHTS"
                            : type == LightType::Directional ? "PATINA_NO_DIRECTIONAL_LIGHTS"
-                                                            : "PATINA_NO_HEMISPHERE_LIGHTS";
+                           : type == LightType::Hemisphere  ? "PATINA_NO_HEMISPHERE_LIGHTS"
+                           : type == LightType::Sphere      ? "PATINA_NO_SPHERE_LIGHTS"
+                                                            : "PATINA_NO_TUBE_LIGHTS";
         EXPECT_EQ(pass.defines().back(), left) << off;
         EXPECT_EQ(pass.defines().size(), 3u) << off;
     }
     const SinglePass none = ShadingPrograms::singlePassFor({});
-    EXPECT_FALSE(none.points || none.directionals || none.hemispheres);
-    EXPECT_EQ(none.defines().size(), 5u);
+    EXPECT_FALSE(none.points || none.directionals || none.hemispheres || none.spheres || none.tubes);
+    EXPECT_EQ(none.defines().size(), 7u);
+    // A sphere's or a tube's own coefficients make single read them all.
+    scene.lights[0].attenuation = {0.0f, 0.0f, 1.0f};
+    EXPECT_FALSE(ShadingPrograms::singlePassFor(packEnabledLights(scene.lights)).karisPoints);
 }
 
 TEST(ShaderSpecialisation, CacheKeepsAtMostItsCapacity) {

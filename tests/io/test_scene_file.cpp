@@ -129,6 +129,56 @@ TEST(SceneFile, WrongValuesNameTheirJsonPointer) {
                   .find("non-zero direction"), std::string::npos);
 }
 
+// Sphere and tube lights: every key read and written back; a size that is negative or beyond
+// float is an error naming its key.
+TEST(SceneFile, SphereAndTubeLightsRoundTripAndRefuseBadSizes) {
+    const std::string head = R"({"format": "patina-scene", "version": 2, )";
+    std::vector<std::string> warnings;
+    const Scene scene = sceneFromJson(
+        parseJsonText(head + R"("lights": [
+            {"type": "sphere", "name": "bulb", "position": [1, 2, 3], "sourceRadius": 0.25, "range": 9,
+             "attenuation": [0, 0, 1], "intensity": 4, "color": [1, 0.5, 0.25]},
+            {"type": "tube", "start": [-1, 2, 0], "end": [1, 2, 0], "sourceRadius": 0.05}]})",
+                      "area.json"),
+        "area.json", ".", warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings[0];
+    ASSERT_EQ(scene.lights.size(), 2u);
+    const Light& sphere = scene.lights[0];
+    EXPECT_EQ(sphere.type, LightType::Sphere);
+    EXPECT_EQ(sphere.name, "bulb");
+    EXPECT_EQ(sphere.position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(sphere.sourceRadius, 0.25f);
+    EXPECT_EQ(sphere.range, 9.0f);
+    EXPECT_EQ(sphere.attenuation, glm::vec3(0, 0, 1));
+    const Light& tube = scene.lights[1];
+    EXPECT_EQ(tube.type, LightType::Tube);
+    EXPECT_EQ(tube.name, "tube");
+    EXPECT_EQ(tube.start, glm::vec3(-1, 2, 0));
+    EXPECT_EQ(tube.end, glm::vec3(1, 2, 0));
+    EXPECT_EQ(tube.sourceRadius, 0.05f);
+    const Json saved = sceneToJson(scene);
+    EXPECT_EQ(saved["lights"][0]["sourceRadius"], 0.25);
+    EXPECT_EQ(saved["lights"][1]["end"], Json::array({1, 2, 0}));
+    EXPECT_FALSE(saved["lights"][1].contains("position"));
+    EXPECT_EQ(sceneFromJson(saved, "again.json", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "sphere", "sourceRadius": -1}]})")
+                  .find("test.json: /lights/0/sourceRadius: value -1 is outside [0, "), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "tube", "sourceRadius": 1e300}]})")
+                  .find("/lights/0/sourceRadius: number 1e+300 is not finite in float"), std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "tube", "end": [0, 1e39, 0]}]})").find("/lights/0/end/1"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"("lights": [{"type": "sphere", "range": -2}]})").find("/lights/0/range"),
+              std::string::npos);
+    // A point light stays a point light, and its size key is another type's: unknown, kept.
+    const Scene point = sceneFromJson(
+        parseJsonText(head + R"("lights": [{"type": "point", "sourceRadius": 0.5}]})", "p.json"), "p.json", ".",
+        warnings);
+    EXPECT_EQ(point.lights[0].type, LightType::Point);
+    EXPECT_EQ(warnings.size(), 1u);
+}
+
 TEST(SceneFile, RefusesOtherFormatsAndNewerVersions) {
     EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1})").find("/format"),
               std::string::npos);

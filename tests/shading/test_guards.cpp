@@ -29,6 +29,12 @@ TEST(Guards, EdgeSweepOnCpuIsFiniteAndNonNegative) {
     }
 }
 
+TEST(Guards, AreaLightEdgesOnCpuAreFiniteAndNonNegative) {
+    for (const EdgeCase& edge : areaLightEdgeCases()) {
+        expectFiniteNonNegative(probeOnCpu(edge.material, edge.lights, edge.samples), edge.name);
+    }
+}
+
 TEST(Guards, EveryTermStaysFiniteAtItsFailurePoint) {
     // r = 0 at NoH = 1: alpha floor keeps D finite (unguarded: 0/0).
     const shader::SurfaceMaterial smooth = shader::deriveSurfaceMaterial(glm::vec3(0.5f), 0.0f, 0.5f, 0.0f);

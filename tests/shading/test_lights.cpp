@@ -7,19 +7,9 @@
 #include "scene/light_packing.h"
 #include "scene/probe.h"
 #include "shading/energy_table.h"
+#include "epic_instance.h"
 #include "test_support.h"
 
-// The per-type light functions with their compile-time switches, which the model dispatch of
-// shading/brdf_models.h does not expose: the default model's permutation compiled here as well.
-namespace patina::shader {
-#define PATINA_INLINE inline
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#define PATINA_INSTANCE Epic
-#include "shading/brdf_model_instance.h"
-#pragma GCC diagnostic pop
-#undef PATINA_INLINE
-}  // namespace patina::shader
 
 namespace patina {
 namespace {
