@@ -70,7 +70,16 @@ Scene defaultScene() {
     studio.intensity = 0.8f;
     studio.source = "builtin:studio";
 
-    scene.lights = {key, fill, studio};
+    // A faint sky above and warm ground below (Karis's hemisphere light, diffuse only): every
+    // light type of the model in one scene, each switchable.
+    Light sky;
+    sky.type = LightType::Hemisphere;
+    sky.name = "sky";
+    sky.intensity = 0.3f;
+    sky.sky = {0.22f, 0.3f, 0.45f};
+    sky.ground = {0.12f, 0.09f, 0.06f};
+
+    scene.lights = {key, fill, studio, sky};
     return scene;
 }
 

@@ -74,8 +74,8 @@ std::shared_ptr<const Mesh> meshShown(const Scene& scene);
 const Light* enabledEnvironment(const std::vector<Light>& lights);
 inline const Light* enabledEnvironment(const Scene& scene) { return enabledEnvironment(scene.lights); }
 
-// The embedded default: a sphere lit by a warm point light, a cool directional light and the
-// built-in studio environment.
+// The embedded default: a sphere lit by a warm point light, a cool directional light, the
+// built-in studio environment and a faint sky/ground hemisphere light.
 Scene defaultScene();
 
 }  // namespace patina

@@ -424,7 +424,7 @@ TEST(Renderer, EachLightOfTheDefaultSceneShowsOnTheSphere) {
     test::glContext();
     Renderer renderer;
     const Scene scene = defaultScene();
-    ASSERT_EQ(scene.lights.size(), 3u);
+    ASSERT_EQ(scene.lights.size(), 4u);   // point, directional, environment, hemisphere
     const RenderOutput all = renderScene(renderer, scene, RenderPath::Single);
     const int center = (80 * 160 + 80) * 3;
     EXPECT_GT(all.hdr.rgb[center], 0.0f);
