@@ -30,5 +30,7 @@ using Measurement = std::function<void(const std::filesystem::path& folder, bool
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure);
 // STEM.png, and with `svg` STEM.svg.
 void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg);
+// area-accuracy's outputs into `folder` (lighting-accuracy writes them beside its own).
+void writeAreaAccuracy(const std::filesystem::path& folder, bool quick);
 
 }  // namespace patina::cli

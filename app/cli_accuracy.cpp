@@ -128,7 +128,8 @@ Command addLightingAccuracyCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "lighting-accuracy",
         "The split sum and its variants against the ground truth under environments, with their frame cost: "
-        "split_sum.csv, sh.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each");
+        "split_sum.csv, sh.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
+        "and sphere and tube lights as area-accuracy measures them");
     command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
     command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
     command->add_option("--environment", options->environments,
@@ -148,6 +149,7 @@ Command addLightingAccuracyCommand(CLI::App& app) {
                         encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));
         }
         std::cout << lightingCostCsv(result);
+        writeAreaAccuracy(folder, options->quick);
     };
 }
 

@@ -318,7 +318,7 @@ TEST_F(LightingAccuracy, WritesTheTablesTheChartAndTheGrid) {
         test::runPatina("lighting-accuracy --quick --environment builtin:white --out-dir " + dir_.string(), dir_);
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     for (const char* file : {"split_sum.csv", "sh.csv", "lighting_cost.csv", "lighting_accuracy.svg",
-                             "lighting_accuracy.png", "grid_white.png"}) {
+                             "lighting_accuracy.png", "grid_white.png", "area_accuracy.csv", "area_spheres.png"}) {
         EXPECT_TRUE(std::filesystem::is_regular_file(path(file))) << file;
     }
     const auto costs = readCsv(path("lighting_cost.csv"));
