@@ -164,7 +164,7 @@ void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& optio
 // `mesh`: the default scene's.
 void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOptions& options,
                   const RenderSettings& settings, RenderBenchResult& result) {
-    Scene scene = defaultScene();
+    Scene scene = analyticDefaultScene();
     const std::vector<std::pair<int, int>> sizes =
         options.quick ? std::vector<std::pair<int, int>>{{256, 256}, {512, 512}}
                       : std::vector<std::pair<int, int>>{{512, 512}, {1280, 720}, {1920, 1080}, {2560, 1440}, {3840, 2160}};
@@ -209,7 +209,7 @@ void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOp
 // (RenderSettings::cullHiddenFaces), interleaved: what culling saves.
 void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                     RenderBenchResult& result) {
-    const Scene scene = defaultScene();
+    const Scene scene = analyticDefaultScene();
     const std::tuple<const char*, RenderPath, bool> kinds[] = {{"single", RenderPath::Single, true},
                                                              {"single-every-face", RenderPath::Single, false},
                                                              {"multi", RenderPath::Multi, true},
@@ -280,8 +280,14 @@ std::string_view addedLightsName(AddedLights added) {
     return "point";
 }
 
-Scene renderBenchScene(int lights, AddedLights added) {
+Scene analyticDefaultScene() {
     Scene scene = defaultScene();
+    std::erase_if(scene.lights, [](const Light& light) { return light.type == LightType::Environment; });
+    return scene;
+}
+
+Scene renderBenchScene(int lights, AddedLights added) {
+    Scene scene = analyticDefaultScene();
     if (lights <= int(scene.lights.size())) {
         scene.lights.resize(size_t(std::max(lights, 0)));
         return scene;
@@ -316,6 +322,44 @@ Scene renderBenchScene(int lights, AddedLights added) {
     return scene;
 }
 
+// The studio environment against one directional light on the default sphere, alone in the
+// scene, interleaved: the split sum (and its measured variants) as a share of a frame.
+void measureEnvironment(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                        RenderBenchResult& result) {
+    Scene directional = analyticDefaultScene();
+    directional.lights.resize(2);
+    directional.lights.erase(directional.lights.begin());   // the cool fill alone
+    Scene environment = defaultScene();
+    std::erase_if(environment.lights, [](const Light& light) { return light.type != LightType::Environment; });
+    struct Kind {
+        const char* name;
+        const Scene* scene;
+        RenderPath path;
+        EnvironmentShading shading;
+    };
+    const Kind kinds[] = {{"single-directional", &directional, RenderPath::Single, {}},
+                          {"specialised-directional", &directional, RenderPath::Specialised, {}},
+                          {"single-environment", &environment, RenderPath::Single, {}},
+                          {"specialised-environment", &environment, RenderPath::Specialised, {}},
+                          {"single-environment-dominant", &environment, RenderPath::Single,
+                           {EnvironmentMethod::Dominant, 1}},
+                          {"single-environment-stochastic-16", &environment, RenderPath::Single,
+                           {EnvironmentMethod::Stochastic, 16}}};
+    std::vector<Samples> samples(std::size(kinds));
+    interleaved(options.runs, [&](bool keep) {
+        for (size_t k = 0; k < std::size(kinds); ++k) {
+            RenderSettings s = settings;
+            s.path = kinds[k].path;
+            s.environment = kinds[k].shading;
+            timeFrame(renderer, *kinds[k].scene, s, keep ? &samples[k] : nullptr);
+        }
+    });
+    for (size_t k = 0; k < std::size(kinds); ++k) {
+        result.scaleRows.push_back(
+            {"environment", settings.width, settings.height, result.triangles, samples[k].medians(), kinds[k].name, 1});
+    }
+}
+
 RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     RenderBenchResult result;
     result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -330,6 +374,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     result.triangles = triangleCount(mesh);
     measureLightCounts(renderer, options, settings, result);
     measureCulling(renderer, options, settings, result);
+    measureEnvironment(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
     measureGltfLoad(options, result);
     return result;
@@ -405,8 +450,8 @@ std::string renderBenchCsv(const RenderBenchResult& result) {
         csv += line;
     }
     for (const ScaleRow& row : result.scaleRows) {
-        std::snprintf(line, sizeof line, "%s,%s,,3,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n", row.axis.c_str(),
-                      row.path.c_str(), row.width, row.height, row.triangles, row.time.gpu, row.time.cpu,
+        std::snprintf(line, sizeof line, "%s,%s,,%d,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n", row.axis.c_str(),
+                      row.path.c_str(), row.lights, row.width, row.height, row.triangles, row.time.gpu, row.time.cpu,
                       row.time.frame, row.time.readBack);
         csv += line;
     }

@@ -54,14 +54,16 @@ struct LightCountRow {
 };
 
 struct ScaleRow {
-    std::string axis;     // "resolution", "triangles", "flat-lights" or "culling"
+    std::string axis;     // "resolution", "triangles", "flat-lights", "culling" or "environment"
     int width = 0, height = 0;
     size_t triangles = 0;
     FrameTiming time;     // the default scene's three lights
     // "single"; on the flat-lights axis "specialised-flat" or "specialised-block" (specialised
     // with its lights as flat inputs or from the block: what flatLightsPay weighs); on the
-    // culling axis "single", "multi" and the same drawing every face ("single-every-face").
+    // culling axis "single", "multi" and the same drawing every face ("single-every-face"); on
+    // the environment axis the studio alone or one directional light alone, by path and method.
     std::string path = "single";
+    int lights = 3;       // the environment axis: 1
 };
 
 struct RenderBenchResult {
@@ -79,7 +81,10 @@ struct RenderBenchResult {
     size_t flatLightSlots = 0;   // lights specialised takes as flat inputs (Renderer::flatLightSlots)
 };
 
-// The default scene with `lights` lights: its first `lights` for up to 3, then the ring.
+// The default scene's analytic lights (point, directional, hemisphere: its environment is
+// measured on its own, the "environment" axis).
+Scene analyticDefaultScene();
+// That scene with `lights` lights: its first `lights` for up to 3, then the ring.
 Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
 
 RenderBenchResult runRenderBench(const RenderBenchOptions& options);

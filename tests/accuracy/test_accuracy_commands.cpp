@@ -113,7 +113,10 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
     EXPECT_EQ(perSeries["flat-lights specialised-flat "], 2);
     EXPECT_EQ(perSeries["flat-lights specialised-block "], 2);
     for (const char* series : {"culling single ", "culling single-every-face ", "culling multi ",
-                               "culling multi-every-face "}) {
+                               "culling multi-every-face ", "environment single-directional ",
+                               "environment specialised-directional ", "environment single-environment ",
+                               "environment specialised-environment ", "environment single-environment-dominant ",
+                               "environment single-environment-stochastic-16 "}) {
         EXPECT_EQ(perSeries[series], 1) << series;
     }
     const std::string targets = read("render_targets.csv");
