@@ -146,6 +146,9 @@ Command addBenchRenderCommand(CLI::App& app) {
         std::cout << "  glTF: " << result.gltfTriangles << " triangles (" << result.gltfBytes / 1e6
                   << " MB GLB) imported in " << result.gltfLoadSeconds << " s; its hidden faces found in "
                   << result.hiddenFacesSeconds << " s (" << (result.gltfClosed ? "closed" : "not closed") << ")\n";
+        std::cout << "  environment " << result.prefilterSource << " (cube faces of " << result.prefilterFaceSize
+                  << "): ready in " << result.prefilterColdSeconds << " s with an empty cache, "
+                  << result.prefilterWarmSeconds << " s from the disk cache\n";
     };
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -12,7 +13,12 @@
 
 #include <epoxy/gl.h>
 
+#include "environment/builtin_environments.h"
+#include "environment/equirect.h"
 #include "gltf/export.h"
+#include "image/environment_files.h"
+#include "image/environment_source.h"
+#include "io/file_bytes.h"
 #include "gltf/import.h"
 #include "geometry/hidden_faces.h"
 #include "geometry/mesh.h"
@@ -360,6 +366,51 @@ void measureEnvironment(BenchRenderer& renderer, const RenderBenchOptions& optio
     }
 }
 
+// Making a 1024 x 512 HDRI ready to light with (decode, prefilter, coefficients, the disk
+// cache written), then again from the disk cache alone, each in a cache folder of its own
+// (PATINA_CACHE_DIR): Blender's studio.exr when installed, else an image of the built-in
+// studio at that size as a Radiance file.
+void measurePrefilter(const RenderBenchOptions& options, RenderBenchResult& result) {
+    const TemporaryFolder folder("patina-bench-prefilter");
+    std::filesystem::path source = "/usr/share/blender/datafiles/studiolights/world/studio.exr";
+    if (!std::filesystem::is_regular_file(source)) {
+        source = folder.path() / "studio.hdr";
+        const HdrImage studio = *builtinEnvironment("studio");
+        HdrImage large{1024, 512, std::vector<float>(size_t(1024) * 512 * 3)};
+        for (int y = 0; y < large.height; ++y) {
+            for (int x = 0; x < large.width; ++x) {
+                const glm::vec3 d = shader::equirectToDirection(
+                    glm::vec2((float(x) + 0.5f) / float(large.width), (float(y) + 0.5f) / float(large.height)));
+                const glm::vec3 v = sampleEquirect(studio, d);
+                std::copy(&v.x, &v.x + 3, &large.rgb[(size_t(y) * size_t(large.width) + size_t(x)) * 3]);
+            }
+        }
+        writeFileAtomic(source, encodeRadianceHdr(large));
+    }
+    result.prefilterSource = source.string();
+    const char* previous = std::getenv("PATINA_CACHE_DIR");
+    const std::string kept = previous ? previous : "";
+    std::vector<double> cold, warm;
+    for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
+        const std::filesystem::path cache = folder.path() / ("cache" + std::to_string(run));
+        setenv("PATINA_CACHE_DIR", cache.c_str(), 1);
+        std::vector<std::string> warnings;
+        for (std::vector<double>* times : {&cold, &warm}) {
+            const Clock::time_point start = Clock::now();
+            const std::shared_ptr<const Environment> environment = loadEnvironment(source.string(), warnings);
+            times->push_back(std::chrono::duration<double>(Clock::now() - start).count());
+            result.prefilterFaceSize = environment->prefiltered.front().size;
+        }   // released: the second load reads the disk cache
+    }
+    if (previous) {
+        setenv("PATINA_CACHE_DIR", kept.c_str(), 1);
+    } else {
+        unsetenv("PATINA_CACHE_DIR");
+    }
+    result.prefilterColdSeconds = median(cold);
+    result.prefilterWarmSeconds = median(warm);
+}
+
 RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     RenderBenchResult result;
     result.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -377,6 +428,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     measureEnvironment(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
     measureGltfLoad(options, result);
+    measurePrefilter(options, result);
     return result;
 }
 

@@ -77,6 +77,11 @@ struct RenderBenchResult {
     // it is closed.
     double hiddenFacesSeconds = 0.0;
     bool gltfClosed = false;
+    // A 1024 x 512 HDRI made ready to light with: decoded and prefiltered with an empty disk
+    // cache (cold), then decoded and read from that cache (warm); medians.
+    std::string prefilterSource;
+    int prefilterFaceSize = 0;
+    double prefilterColdSeconds = 0.0, prefilterWarmSeconds = 0.0;
     std::string renderer;   // GL_RENDERER
     size_t flatLightSlots = 0;   // lights specialised takes as flat inputs (Renderer::flatLightSlots)
 };

@@ -10,6 +10,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "io/file_bytes.h"
 #include "editor_settings.h"
 #include "frame_stats.h"
 #include "panel_guard.h"
@@ -181,7 +182,13 @@ int runEditor(const EditorOptions& options) {
                 title = wanted;
             }
             if (layoutDump) {
-                std::ofstream(layoutDump) << layoutJson();
+                // Through a temporary file and a rename: a reader never sees half a dump.
+                const std::string json = layoutJson();
+                try {
+                    writeFileAtomic(layoutDump, std::vector<uint8_t>(json.begin(), json.end()));
+                } catch (const std::exception&) {
+                    // Automation's aid only: a dump that cannot be written is no reason to stop.
+                }
             }
             autosaveDue = updateAutosave(state, AutosaveClock::now());
         }

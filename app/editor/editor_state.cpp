@@ -369,8 +369,7 @@ void resolveEnvironmentShown(EditorState& state) {
     }
     const std::string& source = state.scene.lights[size_t(index)].source;
     const std::shared_ptr<const Environment>& resolved = state.scene.resolvedEnvironment;
-    if (source.starts_with("builtin:") || (resolved && resolved->source == source) ||
-        state.environmentFailed == source) {
+    if ((resolved && resolved->source == source) || state.environmentFailed == source) {
         return;
     }
     std::vector<std::string> warnings;

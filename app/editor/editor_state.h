@@ -141,7 +141,7 @@ bool setEnvironmentSource(EditorState& state, const std::string& source);
 bool finishEnvironmentLoad(EditorState& state, bool wait = false);
 // Makes scene.resolvedEnvironment the file the environment light names, whatever changed the
 // light (open, undo, autosave restore): loaded through loadEnvironment's cache when it does
-// not match. Built-ins need nothing (the renderer makes them). Run once a frame, before drawing.
+// not match (a built-in too: read back from the disk cache). Run once a frame, before drawing.
 void resolveEnvironmentShown(EditorState& state);
 // The scene's environment light, or null.
 Light* editedEnvironment(EditorState& state);

@@ -28,13 +28,28 @@ std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::strin
     return environment;
 }
 
-std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source) {
+namespace {
+std::mutex builtinMutex;
+std::map<std::string, std::shared_ptr<const Environment>> builtins;   // made with the default settings
+}  // namespace
+
+void adoptBuiltinEnvironment(const std::shared_ptr<const Environment>& environment) {
+    if (environment && environment->source.starts_with("builtin:") && environment->settings == EnvironmentSettings{}) {
+        std::lock_guard lock(builtinMutex);
+        builtins.try_emplace(environment->source, environment);
+    }
+}
+
+std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source, bool make) {
     if (!source.starts_with("builtin:")) {
         return nullptr;
     }
-    static std::mutex mutex;
-    static std::map<std::string, std::shared_ptr<const Environment>> prepared;
-    std::lock_guard lock(mutex);
+    std::lock_guard lock(builtinMutex);
+    if (!make) {
+        const auto found = builtins.find(source);
+        return found == builtins.end() ? nullptr : found->second;
+    }
+    std::map<std::string, std::shared_ptr<const Environment>>& prepared = builtins;
     std::shared_ptr<const Environment>& environment = prepared[source];
     if (!environment) {
         std::optional<HdrImage> image = builtinEnvironment(std::string_view(source).substr(8));

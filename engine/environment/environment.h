@@ -40,8 +40,11 @@ std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::strin
 
 // A built-in environment's source ("builtin:studio") made ready with the default settings,
 // once per process and shared; null for any other source. Scenes that name a built-in need not
-// be resolved by their loader: the renderer and the probes take it from here.
-std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source);
+// be resolved by their loader: the renderer and the probes take it from here. Without `make`,
+// only one made already (else null); loadEnvironment (image/environment_source.h) makes them
+// through its disk cache and hands them here with adoptBuiltinEnvironment.
+std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source, bool make = true);
+void adoptBuiltinEnvironment(const std::shared_ptr<const Environment>& environment);
 
 // What a scene's environment light shows: `resolved` when it was made from `source`, else the
 // built-in it names;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <memory>
@@ -675,6 +676,34 @@ HdrImage readEnvironmentImage(const std::filesystem::path& path) {
     const RegularFile file(path, 0, path.string());
     file.requireAtMost(kMaxEnvironmentFileBytes, "environment images");
     return decodeEnvironmentImage(file.readAll(), path.string());
+}
+
+std::vector<uint8_t> encodeRadianceHdr(const HdrImage& image) {
+    const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(image.height) + " +X " +
+                               std::to_string(image.width) + "\n";
+    std::vector<uint8_t> bytes(header.begin(), header.end());
+    bytes.reserve(bytes.size() + size_t(image.width) * size_t(image.height) * 4);
+    for (size_t pixel = 0; pixel * 3 < image.rgb.size(); ++pixel) {
+        float rgb[3];
+        for (int c = 0; c < 3; ++c) {
+            const float v = image.rgb[pixel * 3 + size_t(c)];
+            rgb[c] = std::isfinite(v) && v > 0.0f ? v : 0.0f;
+        }
+        const float largest = std::max({rgb[0], rgb[1], rgb[2]});
+        if (largest < 1e-32f) {
+            bytes.insert(bytes.end(), {0, 0, 0, 0});
+            continue;
+        }
+        // largest = m 2^e with m in [0.5, 1): each channel as a fraction of 2^e in 256ths.
+        int exponent = 0;
+        const float mantissa = std::frexp(largest, &exponent);
+        const float scale = mantissa * 256.0f / largest;
+        for (float v : rgb) {
+            bytes.push_back(uint8_t(std::min(v * scale, 255.0f)));
+        }
+        bytes.push_back(uint8_t(std::clamp(exponent + 128, 0, 255)));
+    }
+    return bytes;
 }
 
 }  // namespace patina

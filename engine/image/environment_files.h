@@ -22,4 +22,8 @@ HdrImage decodeEnvironmentImage(const std::vector<uint8_t>& bytes, const std::st
 // A regular file of at most 512 MiB, decoded by decodeEnvironmentImage; messages name `path`.
 HdrImage readEnvironmentImage(const std::filesystem::path& path);
 
+// A Radiance file of the image: RGBE (Ward 1991, "Real Pixels"), flat scanlines (no run-length
+// encoding), rows top first; negative and non-finite values written as 0.
+std::vector<uint8_t> encodeRadianceHdr(const HdrImage& image);
+
 }  // namespace patina

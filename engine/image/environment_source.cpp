@@ -188,11 +188,14 @@ std::filesystem::path environmentCacheFolder() {
 
 std::shared_ptr<const Environment> loadEnvironment(const std::string& source, std::vector<std::string>& warnings,
                                                    const EnvironmentSettings& settings, const Progress& progress) {
-    if (settings == EnvironmentSettings{}) {
-        if (std::shared_ptr<const Environment> builtin = preparedBuiltinEnvironment(source)) {
-            return builtin;   // generated, and quicker to make again than to read from disk
+    // A built-in already made in this process (environmentShown makes them when first drawn).
+    if (settings == EnvironmentSettings{} && source.starts_with("builtin:")) {
+        if (std::shared_ptr<const Environment> builtin = preparedBuiltinEnvironment(source, false)) {
+            return builtin;
         }
     }
+    // Built-ins go through the disk cache too: generating the studio takes milliseconds, its
+    // prefilter a third of a second, reading it back a few milliseconds.
     const Source read = readSource(source, settings);
     static std::mutex mutex;
     static std::map<uint64_t, std::weak_ptr<const Environment>> shared;
@@ -215,6 +218,7 @@ std::shared_ptr<const Environment> loadEnvironment(const std::string& source, st
         std::lock_guard lock(mutex);
         shared[key] = environment;
     }
+    adoptBuiltinEnvironment(environment);   // what environmentShown gives for its name from now on
     if (environment->replacedPixels > 0) {
         warnings.push_back(source + ": " + std::to_string(environment->replacedPixels) +
                            " pixels were NaN, infinite or negative and were set to 0");
@@ -226,12 +230,6 @@ void resolveEnvironment(Scene& scene, std::vector<std::string>& warnings) {
     const Light* light = enabledEnvironment(scene);
     if (light && scene.resolvedEnvironment && scene.resolvedEnvironment->source == light->source) {
         return;   // already the one it names
-    }
-    if (light && light->source.starts_with("builtin:")) {
-        // Made when first drawn (environmentShown): a command that never shades, or a scene
-        // whose built-in is replaced before it is drawn, never pays the prefilter.
-        scene.resolvedEnvironment = nullptr;
-        return;
     }
     scene.resolvedEnvironment = light ? loadEnvironment(light->source, warnings) : nullptr;
 }

@@ -19,8 +19,8 @@ std::shared_ptr<const Environment> loadEnvironment(const std::string& source, st
                                                    const EnvironmentSettings& settings = {},
                                                    const Progress& progress = {});
 
-// Sets scene.resolvedEnvironment from its enabled environment light's file (null without one,
-// and for a built-in, which environmentShown makes when it is first drawn).
+// Sets scene.resolvedEnvironment from its enabled environment light's source, a built-in too
+// (through the disk cache), or null without one.
 // Throws as loadEnvironment, leaving the scene as it was.
 void resolveEnvironment(Scene& scene, std::vector<std::string>& warnings);
 

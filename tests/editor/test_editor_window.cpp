@@ -379,8 +379,8 @@ TEST_F(EditorOnALaptop, TheFirstWindowFitsTheScreen) {
     EXPECT_LE(width, 1366);
     EXPECT_LE(height, 768);
     EXPECT_GE(width, 1024) << "and not needlessly small";
+    ASSERT_TRUE(waitFor([&] { return rect("viewport").size() == 4; }, 10s));
     const std::vector<float> view = rect("viewport");
-    ASSERT_EQ(view.size(), 4u);
     EXPECT_GE(view[2] - view[0], 400.0f);
     EXPECT_GE(view[3] - view[1], 200.0f);
     EXPECT_LE(view[2], float(width));

@@ -203,6 +203,15 @@ TEST(EnvironmentFiles, FlatHdrRoundTrips) {
     expectRgbeClose(decodeEnvironmentImage(flatHdr(12, 4, wide), "wide.hdr"), 12, 4, wide);
 }
 
+TEST(EnvironmentFiles, WrittenHdrReadsBack) {
+    std::vector<float> rgb = testPixels(9, 4, 300.0f);
+    rgb[3] = -1.0f, rgb[4] = NAN, rgb[5] = INFINITY;   // written as 0
+    const HdrImage image = decodeRadianceHdr(encodeRadianceHdr({9, 4, rgb}), "written.hdr");
+    rgb[3] = rgb[4] = rgb[5] = 0.0f;
+    expectRgbeClose(image, 9, 4, rgb);
+    EXPECT_EQ(image.rgb[4], 0.0f);
+}
+
 TEST(EnvironmentFiles, HdrKeepsBrightAndBlackPixels) {
     std::vector<float> rgb = testPixels(8, 2);
     rgb[0] = 1e6f, rgb[1] = 2e5f, rgb[2] = 5e4f;   // a sun
