@@ -210,6 +210,8 @@ def render(options):
     first = time.perf_counter() - start
     report("first_image_written_epoch", f"{time.time():.6f}")
     report("first_render_s", f"{first:.4f}")
+    import gpu   # only now: before Eevee has made its GL context, asking crashes Blender 3.4
+    report("gl_renderer", gpu.platform.renderer_get())
 
     scene.render.filepath = options.scratch or options.out + ".rerender.png"
     roughness = bsdf.inputs["Roughness"]
