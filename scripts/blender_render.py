@@ -52,6 +52,7 @@ def parse_arguments():
     parser.add_argument("--scratch", help="the re-renders' PNG (default: beside --out)")
     parser.add_argument("--size", type=int, default=512)
     parser.add_argument("--reruns", type=int, default=5)
+    parser.add_argument("--samples", type=int, help="Eevee's render samples (default: Blender's, 64)")
     parser.add_argument("--world-rotation", type=float, default=-90.0,
                         help="degrees about +Z applied to the world lookup (default: Patina's orientation)")
     parser.add_argument("--probe", action="store_true", help="check the orientation and exit")
@@ -199,6 +200,8 @@ def render(options):
     set_world(scene, image, options.world_rotation)
 
     eevee = scene.eevee
+    if options.samples:
+        eevee.taa_render_samples = options.samples
     report("eevee_settings", f"taa_render_samples={eevee.taa_render_samples} "
            f"soft_shadows={eevee.use_soft_shadows} ssr={eevee.use_ssr} gtao={eevee.use_gtao} "
            f"bloom={eevee.use_bloom} gi_cubemap_resolution={eevee.gi_cubemap_resolution} "

@@ -8,8 +8,9 @@
 #     from its start to the first image written;
 #   - Patina: a cold `patina render` (empty environment cache: the HDRI is decoded and
 #     prefiltered in that run), the median of 5 warm ones, both as whole-process wall times, and
-#     the editor's median frame time while the Roughness slider is dragged (`patina --stats`,
-#     driven by xdotool as scripts/measure_editor.sh does);
+#     the editor's median frame time while the Roughness slider is dragged (`patina SCENE
+#     --stats`, driven by xdotool as scripts/measure_editor.sh does, with window and panel sizes
+#     that make its viewport 512x512 too);
 #   - the two ratios issue 18 sets goals for: Eevee re-render / Patina drag frame (50x) and
 #     Eevee first render / Patina cold render (5x).
 # It writes both images side by side, captioned, to docs/performance/blender_eevee_vs_patina.png.
@@ -92,7 +93,7 @@ for tool in Xvfb xdotool python3; do
 done
 
 # --- A display of our own --------------------------------------------------------------------
-Xvfb -displayfd 4 -screen 0 1280x800x24 -nolisten tcp 4>"$work/display" 2>"$work/xvfb.log" &
+Xvfb -displayfd 4 -screen 0 1280x1024x24 -nolisten tcp 4>"$work/display" 2>"$work/xvfb.log" &
 xvfb_pid=$!
 for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
 if [ ! -s "$work/display" ]; then
@@ -172,7 +173,11 @@ patina_cold_env=$(patina_render "$work/patina_cold_env.png")
 export PATINA_CACHE_DIR="$work/patina-cache"   # the editor reads the warm one
 
 say "dragging the Roughness slider in the editor (patina SCENE --stats)"
-mkdir -p "$work/config"
+# A window and panel sizes (the editor's remembered settings) that leave the viewport 512x512,
+# the size of the renders; the table says the size it had.
+mkdir -p "$work/config/patina"
+echo '{"windowWidth": 1280, "windowHeight": 900, "leftPanelWidth": 404, "rightPanelWidth": 340, "lobePanelHeight": 263}' \
+  >"$work/config/patina/settings.json"
 XDG_CONFIG_HOME="$work/config" PATINA_UI_LAYOUT="$work/layout.json" "$patina" "$scene" --stats 2>"$work/stats.log" &
 editor_pid=$!
 for _ in $(seq 600); do
@@ -182,7 +187,8 @@ for _ in $(seq 600); do
 done
 grep -q '"Roughness"' "$work/layout.json" 2>/dev/null || die "the editor showed no Roughness slider within 60 s"
 sleep 2   # the scene's environment comes from the warm cache; let its first frames settle
-window=$(xdotool search --sync --name Patina | head -1)
+window=$(timeout 30 xdotool search --sync --name Patina | head -1) || true
+[ -n "$window" ] || die "xdotool found no window named Patina"
 rect() { grep -o "\"$1\": \[[^]]*\]" "$work/layout.json" | head -1 | sed 's/.*\[//; s/\]//; s/,//g'; }
 read -r x0 y0 x1 y1 < <(rect Roughness)
 y=$(( (${y0%.*} + ${y1%.*}) / 2 )) left=${x0%.*} right=${x1%.*}
@@ -198,6 +204,7 @@ viewport="$(awk -v a="$vx0" -v b="$vx1" 'BEGIN { printf "%d", b - a + 0.5 }')x$(
 kill "$editor_pid" 2>/dev/null || true
 wait "$editor_pid" 2>/dev/null || true
 editor_pid=''
+[ "$viewport" = "${size}x${size}" ] || say "warning: the editor's viewport was $viewport, not ${size}x${size}"
 drag_line=$(grep 'stats: drag:' "$work/stats.log" | tail -1)
 [ -n "$drag_line" ] || { cat "$work/stats.log" >&2; die "the editor logged no drag (did the slider move?)"; }
 drag_ms=$(sed -E 's/.*median ([0-9.]+) ms.*/\1/' <<<"$drag_line")
