@@ -33,6 +33,7 @@ import statistics
 import sys
 import time
 
+import bmesh
 import bpy
 from mathutils import Vector
 
@@ -178,7 +179,6 @@ def render(options):
     mesh_data = bpy.data.meshes.new("sphere")
     sphere = bpy.data.objects.new("sphere", mesh_data)
     scene.collection.objects.link(sphere)
-    import bmesh
     mesh = bmesh.new()
     bmesh.ops.create_uvsphere(mesh, u_segments=128, v_segments=64, radius=1.0)
     mesh.to_mesh(mesh_data)

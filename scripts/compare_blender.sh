@@ -100,7 +100,8 @@ if [ ! -s "$work/display" ]; then
   cat "$work/xvfb.log" >&2
   die "Xvfb gave no display within 10 s"
 fi
-export DISPLAY=":$(head -1 "$work/display")"
+DISPLAY=":$(head -1 "$work/display")"
+export DISPLAY
 export MESA_SHADER_CACHE_DIR="$work/mesa-cache"
 mkdir -p "$MESA_SHADER_CACHE_DIR"
 
