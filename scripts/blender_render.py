@@ -1,0 +1,245 @@
+"""Blender's half of scripts/compare_blender.sh: Patina's default view of a sphere, rendered by Eevee.
+
+Run inside Blender (it needs Eevee's GL context, so a display: compare_blender.sh starts an Xvfb):
+
+    blender -b --factory-startup --python scripts/blender_render.py -- \
+        --hdri studio.exr --material presets/gold.json --out eevee.png [--reruns 5]
+    blender -b --factory-startup --python scripts/blender_render.py -- --hdri studio.exr --probe
+
+The scene is Patina's default view converted to Blender's axes: Patina is +Y up, Blender +Z up,
+and a Patina point (x, y, z) is the Blender point (x, -z, y). So the camera at Patina's
+(0, 0.6, 3.4) stands at (0, -3.4, 0.6), looking at the origin with a vertical field of view of
+45 degrees; the UV sphere of radius 1 has Patina's tessellation (64 rings, 128 segments), smooth
+shaded. The world is the HDRI at strength 1, turned by --world-rotation degrees about +Z (see
+--probe), and the film uses the Standard view transform, as Patina's "none" tone map.
+
+Render mode times, in this one process, the first render (bpy.ops.render.render with
+write_still, so Eevee's shader compilation and the world's probe are in it) and then re-renders
+after a roughness change (every one to another value, so each is a change; the median is what
+compare_blender.sh reports). The first image is rendered at the preset's roughness and is the
+one compared; the re-renders go to a scratch file.
+
+Probe mode checks the orientation instead of assuming it: the world becomes an image whose
+pixels hold their own (u, v), a 2-degree camera looks along a few of Patina's directions, and the
+(u, v) Eevee shows there must be the one Patina's equirect convention (docs/FORMATS.md) gives for
+that direction. It exits with status 1 when they differ.
+
+Results are printed as lines "PATINA_COMPARE key value" for the shell script to read.
+"""
+import argparse
+import json
+import math
+import statistics
+import sys
+import time
+
+import bmesh
+import bpy
+from mathutils import Vector
+
+TAG = "PATINA_COMPARE"
+
+
+def report(key, value):
+    print(f"{TAG} {key} {value}", flush=True)
+
+
+def parse_arguments():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    parser = argparse.ArgumentParser(prog="blender_render.py")
+    parser.add_argument("--hdri", required=True, help="the equirect environment (.exr or .hdr)")
+    parser.add_argument("--material", help="a Patina material preset (JSON)")
+    parser.add_argument("--out", help="the first render's PNG")
+    parser.add_argument("--scratch", help="the re-renders' PNG (default: beside --out)")
+    parser.add_argument("--size", type=int, default=512)
+    parser.add_argument("--reruns", type=int, default=5)
+    parser.add_argument("--samples", type=int, help="Eevee's render samples (default: Blender's, 64)")
+    parser.add_argument("--world-rotation", type=float, default=-90.0,
+                        help="degrees about +Z applied to the world lookup (default: Patina's orientation)")
+    parser.add_argument("--probe", action="store_true", help="check the orientation and exit")
+    options = parser.parse_args(argv)
+    if not options.probe and not (options.material and options.out):
+        parser.error("--material and --out are needed unless --probe")
+    return options
+
+
+def patina_to_blender(x, y, z):
+    return Vector((x, -z, y))
+
+
+def empty_scene(size):
+    scene = bpy.context.scene
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    scene.render.engine = "BLENDER_EEVEE"
+    scene.render.resolution_x = size
+    scene.render.resolution_y = size
+    scene.render.resolution_percentage = 100
+    scene.render.film_transparent = False
+    scene.display_settings.display_device = "sRGB"
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    scene.render.image_settings.file_format = "PNG"
+    scene.render.image_settings.color_mode = "RGB"
+    scene.render.image_settings.color_depth = "8"
+    return scene
+
+
+def add_camera(scene, position, target, fov_y_degrees):
+    camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+    camera.location = position
+    # The camera looks down its -Z with +Y up; Blender's up is +Z, Patina's +Y.
+    camera.rotation_euler = (target - position).to_track_quat("-Z", "Y").to_euler()
+    camera.data.sensor_fit = "VERTICAL"
+    camera.data.angle_y = math.radians(fov_y_degrees)
+    camera.data.clip_start = 0.05
+    camera.data.clip_end = 100.0
+    return camera
+
+
+def set_world(scene, image, rotation_degrees, interpolation="Linear"):
+    """Generated coordinates (the world direction) -> Mapping (turn about +Z) -> Environment Texture."""
+    world = bpy.data.worlds.new("patina world")
+    scene.world = world
+    world.use_nodes = True
+    nodes = world.node_tree.nodes
+    links = world.node_tree.links
+    nodes.clear()
+    coordinates = nodes.new("ShaderNodeTexCoord")
+    mapping = nodes.new("ShaderNodeMapping")
+    mapping.vector_type = "POINT"
+    mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(rotation_degrees))
+    environment = nodes.new("ShaderNodeTexEnvironment")
+    environment.image = image
+    environment.projection = "EQUIRECTANGULAR"
+    environment.interpolation = interpolation
+    background = nodes.new("ShaderNodeBackground")
+    background.inputs["Strength"].default_value = 1.0
+    output = nodes.new("ShaderNodeOutputWorld")
+    links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
+    links.new(mapping.outputs["Vector"], environment.inputs["Vector"])
+    links.new(environment.outputs["Color"], background.inputs["Color"])
+    links.new(background.outputs["Background"], output.inputs["Surface"])
+
+
+def patina_uv(direction):
+    """Patina's equirect lookup (docs/FORMATS.md, "Environment images"): v from the top row."""
+    x, y, z = direction
+    length = math.sqrt(x * x + y * y + z * z)
+    x, y, z = x / length, y / length, z / length
+    return 0.5 + math.atan2(x, -z) / (2.0 * math.pi), math.acos(max(-1.0, min(1.0, y))) / math.pi
+
+
+def probe(options):
+    scene = empty_scene(8)
+    width, height = 512, 256
+    image = bpy.data.images.new("uv probe", width, height, float_buffer=True)
+    pixels = []
+    for row in range(height):   # Blender's rows run bottom-up
+        for column in range(width):
+            pixels += [(column + 0.5) / width, (row + 0.5) / height, 0.0, 1.0]
+    image.pixels = pixels
+    set_world(scene, image, options.world_rotation, interpolation="Closest")
+    camera = add_camera(scene, Vector((0.0, 0.0, 0.0)), Vector((0.0, 1.0, 0.0)), 2.0)
+    scene.render.image_settings.file_format = "OPEN_EXR"   # linear: the values themselves
+    scene.render.image_settings.color_mode = "RGB"
+    scene.render.image_settings.color_depth = "32"
+    path = bpy.app.tempdir + "probe.exr"
+    worst = 0.0
+    # Directions in Patina's axes, away from the image's seam (Patina's +Z) and poles.
+    for name, direction in [("-Z (behind the sphere)", (0, 0, -1)), ("+X", (1, 0, 0)), ("-X", (-1, 0, 0)),
+                            ("(1, 1, -1)", (1, 1, -1)), ("(-1, -0.5, 0.3)", (-1, -0.5, 0.3))]:
+        target = patina_to_blender(*direction)
+        camera.rotation_euler = target.to_track_quat("-Z", "Z" if abs(target.z) < 0.9 else "Y").to_euler()
+        bpy.ops.render.render()
+        bpy.data.images["Render Result"].save_render(path)
+        result = bpy.data.images.load(path, check_existing=False)
+        values = result.pixels[:]
+        centre = ((4 * 8) + 4) * 4
+        u, v = values[centre], 1.0 - values[centre + 1]
+        bpy.data.images.remove(result)
+        want_u, want_v = patina_uv(direction)
+        error = max(abs((u - want_u + 0.5) % 1.0 - 0.5), abs(v - want_v))
+        worst = max(worst, error)
+        print(f"probe: Patina direction {name}: Eevee shows (u, v) = ({u:.3f}, {v:.3f}), "
+              f"Patina ({want_u:.3f}, {want_v:.3f})", flush=True)
+    report("probe_worst_error", f"{worst:.4f}")
+    return 0 if worst < 0.01 else 1
+
+
+def render(options):
+    with open(options.material, encoding="utf-8") as file:
+        preset = json.load(file)
+    scene = empty_scene(options.size)
+    # Patina's tessellation: 64 rings, 128 segments, smooth shaded.
+    mesh_data = bpy.data.meshes.new("sphere")
+    sphere = bpy.data.objects.new("sphere", mesh_data)
+    scene.collection.objects.link(sphere)
+    mesh = bmesh.new()
+    bmesh.ops.create_uvsphere(mesh, u_segments=128, v_segments=64, radius=1.0)
+    mesh.to_mesh(mesh_data)
+    mesh.free()
+    mesh_data.polygons.foreach_set("use_smooth", [True] * len(mesh_data.polygons))
+    mesh_data.update()
+
+    material = bpy.data.materials.new(preset.get("name", "material"))
+    material.use_nodes = True
+    bsdf = next(node for node in material.node_tree.nodes if node.type == "BSDF_PRINCIPLED")
+    bsdf.inputs["Base Color"].default_value = (*preset["baseColor"], 1.0)   # linear, as Patina's
+    bsdf.inputs["Roughness"].default_value = preset["roughness"]
+    bsdf.inputs["Specular"].default_value = preset["specular"]
+    bsdf.inputs["Metallic"].default_value = preset["metallic"]
+    mesh_data.materials.append(material)
+
+    add_camera(scene, patina_to_blender(0.0, 0.6, 3.4), Vector((0.0, 0.0, 0.0)), 45.0)
+    image = bpy.data.images.load(options.hdri, check_existing=False)
+    set_world(scene, image, options.world_rotation)
+
+    eevee = scene.eevee
+    if options.samples:
+        eevee.taa_render_samples = options.samples
+    report("eevee_settings", f"taa_render_samples={eevee.taa_render_samples} "
+           f"soft_shadows={eevee.use_soft_shadows} ssr={eevee.use_ssr} gtao={eevee.use_gtao} "
+           f"bloom={eevee.use_bloom} gi_cubemap_resolution={eevee.gi_cubemap_resolution} "
+           f"gi_filter_quality={eevee.gi_filter_quality:g} view_transform={scene.view_settings.view_transform}")
+
+    scene.render.filepath = options.out
+    start = time.perf_counter()
+    bpy.ops.render.render(write_still=True)
+    first = time.perf_counter() - start
+    report("first_image_written_epoch", f"{time.time():.6f}")
+    report("first_render_s", f"{first:.4f}")
+    import gpu   # only now: before Eevee has made its GL context, asking crashes Blender 3.4
+    report("gl_renderer", gpu.platform.renderer_get())
+
+    scene.render.filepath = options.scratch or options.out + ".rerender.png"
+    roughness = bsdf.inputs["Roughness"]
+    times = []
+    for index in range(options.reruns):
+        roughness.default_value = [0.5, 0.35, 0.6, 0.3, 0.45][index % 5]
+        start = time.perf_counter()
+        bpy.ops.render.render(write_still=True)
+        times.append(time.perf_counter() - start)
+    report("rerender_s", " ".join(f"{t:.4f}" for t in times))
+    report("rerender_median_s", f"{statistics.median(times):.4f}")
+    return 0
+
+
+def main():
+    options = parse_arguments()
+    try:
+        status = probe(options) if options.probe else render(options)
+    except Exception as error:   # Blender keeps running after a script's exception: exit non-zero
+        import traceback
+        traceback.print_exc()
+        print(f"blender_render.py: {error}", file=sys.stderr, flush=True)
+        status = 1
+    sys.stdout.flush()
+    sys.exit(status)   # Blender 3.4 in -b mode exits with this status
+
+
+main()
