@@ -34,14 +34,26 @@ std::pair<int, float> invert(const float* cdf, int count, float u) {
 EnvironmentDistribution::EnvironmentDistribution(const HdrImage& image)
     : width_(image.width), height_(image.height), rowCdf_(size_t(height_) + 1, 0.0f),
       columnCdf_(size_t(height_) * size_t(width_ + 1), 0.0f), pixelPdf_(size_t(width_) * size_t(height_), 0.0f) {
-    // A floor keeps every direction possible (the bilinear image is not zero where a pixel is).
+    // The estimate reads the image bilinearly, so a pixel's radiance reaches half a pixel into
+    // its neighbours: each pixel is weighted by the brightest of itself and the 8 around it, or a
+    // dark pixel beside a sun would be drawn rarely and weigh hugely when it is (fireflies; a
+    // 20000-sample estimate under a sun had a standard error of 25% with the pixel's own
+    // luminance). A floor keeps every direction possible.
     double total = 0.0;
     std::vector<double> weights(pixelPdf_.size());
     for (int y = 0; y < height_; ++y) {
         const double sinTheta = std::sin((double(y) + 0.5) / height_ * double(kPi));
         for (int x = 0; x < width_; ++x) {
+            float brightest = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy) {
+                const int row = std::clamp(y + dy, 0, height_ - 1);
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int column = (x + dx + width_) % width_;   // wraps in longitude
+                    brightest = std::max(brightest, luminance(&image.rgb[(size_t(row) * size_t(width_) + size_t(column)) * 3]));
+                }
+            }
             const size_t i = size_t(y) * size_t(width_) + size_t(x);
-            weights[i] = (double(luminance(&image.rgb[i * 3])) + 1e-4) * sinTheta;
+            weights[i] = (double(brightest) + 1e-4) * sinTheta;
             total += weights[i];
         }
     }

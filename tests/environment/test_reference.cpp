@@ -32,6 +32,48 @@ glm::vec3 viewAt(float NoV) {
     return {std::sqrt(1.0f - NoV * NoV), 0.0f, NoV};
 }
 
+TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
+    // A dim sky and a sun of one pixel holding most of the energy, as real HDRIs have. The
+    // estimate must agree with a sum over every pixel (radiance x f x NoL x the pixel's solid
+    // angle) and its standard error must be small: the distribution has to follow the bilinear
+    // image around the sun, not the sun's pixel alone (then this error was 25%).
+    const int width = 128, height = 64;
+    HdrImage image = test::equirectOf(width, height, [](glm::vec3 d) { return glm::vec3(0.2f + 0.1f * d.y); });
+    const int sunX = 40, sunY = 20;
+    for (int c = 0; c < 3; ++c) {
+        image.rgb[(size_t(sunY) * width + sunX) * 3 + size_t(c)] = 5000.0f;
+    }
+    const Fixture fixture(image);
+    for (const float roughness : {0.5f, 1.0f}) {
+        const shader::SurfaceMaterial metal = shader::deriveSurfaceMaterial(glm::vec3(0.9f), roughness, 0.5f, 1.0f);
+        const glm::vec3 sun = shader::equirectToDirection(
+            glm::vec2((float(sunX) + 0.5f) / width, (float(sunY) + 0.5f) / height));
+        const glm::vec3 N = glm::normalize(sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
+        double sum = 0.0;
+        for (int y = 0; y < height; ++y) {
+            const double dOmega = (std::cos(double(y) / height * kPi) - std::cos(double(y + 1) / height * kPi)) *
+                                  2.0 * kPi / width;
+            for (int x = 0; x < width; ++x) {
+                const glm::vec3 L = shader::equirectToDirection(
+                    glm::vec2((float(x) + 0.5f) / width, (float(y) + 0.5f) / height));
+                const float NoL = glm::dot(N, L);
+                if (NoL > 0.0f) {
+                    const shader::BrdfValue f = evaluateBrdfUnderEnvironment(BrdfModelId::Epic, metal, N, V, L);
+                    sum += double(image.rgb[(size_t(y) * width + size_t(x)) * 3] * (f.diffuse.x + f.specular.x) * NoL) *
+                           dOmega;
+                }
+            }
+        }
+        ReferenceOptions options;
+        options.samples = 20000;
+        const ReferenceEstimate estimate =
+            referenceRadiance(BrdfModelId::Epic, metal, fixture.reference(), {}, glm::vec3(0.0f), N, V, options);
+        EXPECT_LT(estimate.standardError.x, 0.02 * sum) << roughness;
+        // The estimate integrates the bilinear image, the sum the pixels: a few per cent apart.
+        EXPECT_NEAR(estimate.value.x, sum, 0.03 * sum + 4.0 * estimate.standardError.x) << roughness;
+    }
+}
+
 TEST(Reference, WhiteFurnaceGivesTheModelsDirectionalAlbedo) {
     const Fixture white(*builtinEnvironment("white"));
     Material metal;
