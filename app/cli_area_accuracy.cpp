@@ -1,5 +1,5 @@
 // `patina area-accuracy`: sphere and tube lights by each published shortcut against the exact
-// integral (engine/accuracy/area_light_accuracy.h); docs/AREA_LIGHTS.md shows its outputs.
+// integral (engine/accuracy/area_light_accuracy.h); docs/LIGHTING.md ("Area lights") shows its outputs.
 #include <iostream>
 
 #include "accuracy/area_light_accuracy.h"

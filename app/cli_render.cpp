@@ -58,6 +58,8 @@ Command addRenderCommand(CLI::App& app) {
         std::string passes = "single", out, hdr;
         bool reference = false;
         int referenceSamples = 256;
+        std::string environmentMethod = "split-sum";
+        int environmentSamples = 16;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
@@ -70,6 +72,13 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--msaa", options->samples, "Samples per pixel (1 = none)")->check(CLI::Range(1, 16));
     command->add_option("--out", options->out, "Output PNG")->required();
     command->add_option("--hdr", options->hdr, "Also write the linear image (PFM), before exposure and tone map");
+    command->add_option("--environment-method", options->environmentMethod,
+                        "How an environment lights the mesh: split-sum (Karis 2013, the default), dominant (the split "
+                        "sum along the dominant direction) or stochastic (filtered importance samples; docs/LIGHTING.md)")
+        ->check(CLI::IsMember({"split-sum", "dominant", "stochastic"}));
+    command->add_option("--environment-samples", options->environmentSamples,
+                        "--environment-method stochastic: samples per pixel")
+        ->check(CLI::Range(1, 256));
     command->add_flag("--reference", options->reference,
                       "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights "
                       "exactly), pass by pass; Ctrl+C writes what is done");
@@ -96,6 +105,7 @@ Command addRenderCommand(CLI::App& app) {
         settings.height = options->height;
         settings.path = *renderPathFromName(options->passes);
         settings.samples = options->samples;
+        settings.environment = {*environmentMethodFromName(options->environmentMethod), options->environmentSamples};
         // A one-off render keeps its peak memory down: strips of at most 16 MiB of
         // multisampled colour, and the linear image read back only when asked for.
         settings.maxTargetBytes = size_t(16) << 20;

@@ -55,6 +55,7 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
     finishEnvironmentLoad(state);
+    services.environmentShading = state.environmentShading;
     resolveEnvironmentShown(state);
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the

@@ -40,13 +40,14 @@ EditorServices::EditorServices() : renderer_(std::make_unique<Renderer>()) {}
 unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, RenderPath passes,
                                          Shown shown, int samples) {
     ViewImage& image = view(shown);
-    ViewKey key{renderInputs(scene), width, height, passes, samples};
+    ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading};
     if (image.drawn != key) {
         RenderSettings settings;
         settings.width = width;
         settings.height = height;
         settings.path = passes;
         settings.samples = samples;
+        settings.environment = environmentShading;
         settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
         image.drawn.reset();   // until the draw succeeds
@@ -64,6 +65,7 @@ RenderOutput EditorServices::renderImage(const Scene& scene, int width, int heig
     settings.width = width;
     settings.height = height;
     settings.path = passes;
+    settings.environment = environmentShading;
     settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
     return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
 }

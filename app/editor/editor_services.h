@@ -37,6 +37,7 @@ public:
     double lastRenderMilliseconds() const { return lastRenderMilliseconds_; }
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
     int viewportWidth = 0, viewportHeight = 0;   // set by the viewport panel
+    EnvironmentShading environmentShading;        // EditorState's, set once a frame
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
 
     // What the viewport shows for `shown`, read back (for tests and automation).
@@ -78,6 +79,7 @@ private:
         int width = 0, height = 0;
         RenderPath path = RenderPath::Single;
         int samples = 4;
+        EnvironmentShading environment;
         bool operator==(const ViewKey&) const = default;
     };
     struct ViewImage {

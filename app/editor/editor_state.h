@@ -70,6 +70,8 @@ struct EditorState {
     LightHandle draggedHandle = LightHandle::Position;   // which part of it
     bool draggingDivider = false;
 
+    // How the environment is shaded in the viewport and screenshots (Advanced; not saved).
+    EnvironmentShading environmentShading;
     LobeSettings lobe;
     PanelLayout layout;
     std::vector<std::filesystem::path> recentFiles;

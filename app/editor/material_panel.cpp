@@ -35,6 +35,25 @@ void drawAdvanced(EditorState& state) {
     ImGui::RadioButton("specialised", &path, int(RenderPath::Specialised));
     recordItem("Path specialised", "A shader compiled for this scene's lights");
     state.renderPath = RenderPath(path);
+    // The environment's shading: the split sum as published, or a variant docs/LIGHTING.md
+    // measures against the ground truth.
+    EnvironmentShading& environment = state.environmentShading;
+    if (ImGui::BeginCombo("Environment", std::string(environmentMethodName(environment.method)).c_str())) {
+        for (EnvironmentMethod method :
+             {EnvironmentMethod::SplitSum, EnvironmentMethod::Dominant, EnvironmentMethod::Stochastic}) {
+            if (ImGui::Selectable(std::string(environmentMethodName(method)).c_str(), method == environment.method)) {
+                environment.method = method;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Environment method",
+               "How the environment lights the mesh: Karis's split sum (the default), the split sum along the "
+               "dominant direction (half the error, same cost), or N filtered importance samples a pixel (noisy)");
+    if (environment.method == EnvironmentMethod::Stochastic) {
+        ImGui::SliderInt("Samples", &environment.samples, 1, 256, "%d", ImGuiSliderFlags_Logarithmic);
+        recordItem("Environment samples", "Samples a pixel of the stochastic mode: more is slower and less noisy");
+    }
     ImGui::PushTextWrapPos(0.0f);   // notes wrap at the panel's edge
     ImGui::TextDisabled("The viewport shows the render's CPU and GPU time.");
 

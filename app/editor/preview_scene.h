@@ -5,11 +5,10 @@
 
 namespace patina::editor {
 
-// A sphere under a soft sky and a soft box in front of it, above: 16 white directional lights
-// on three rows, on a mid-grey background, PBR Neutral tone mapped. Without an environment a
-// metal shows nothing but its highlights, so one or two lights leave every metal a black ball
-// with dots; sixteen make a lit patch in the metal's own colour, spread as wide as it is rough,
-// so gold, copper, silver and chromium tell apart. (Environments will replace the box.)
+// A sphere under the built-in studio environment and one key light, on a mid-grey background,
+// PBR Neutral tone mapped: a metal reflects the studio in its own colour, blurred as much as it
+// is rough, so gold, copper, silver and chromium tell apart (under analytic lights alone a
+// metal was a black ball with dots).
 Scene previewScene(const Material& material);
 
 }  // namespace patina::editor

@@ -57,6 +57,24 @@ TEST_F(Cli, TheReferenceRenderConvergesToTheRender) {
     EXPECT_NEAR(sumReference / sumSplit, 1.0, 0.05);
 }
 
+TEST_F(Cli, TheEnvironmentMethodChangesThePictureAndIsChecked) {
+    const std::string size = " --width 48 --height 48 --msaa 1 --hdr ";
+    ASSERT_EQ(run("render" + size + path("s.pfm").string() + " --out " + path("s.png").string()).exitCode, 0);
+    ASSERT_EQ(run("render --environment-method dominant" + size + path("d.pfm").string() + " --out " +
+                  path("d.png").string()).exitCode, 0);
+    ASSERT_EQ(run("render --environment-method stochastic --environment-samples 4" + size + path("t.pfm").string() +
+                  " --out " + path("t.png").string()).exitCode, 0);
+    const HdrImage split = decodePfm(readFileBytes(path("s.pfm")));
+    for (const char* other : {"d.pfm", "t.pfm"}) {
+        const HdrImage image = decodePfm(readFileBytes(path(other)));
+        ASSERT_EQ(image.rgb.size(), split.rgb.size());
+        EXPECT_NE(image.rgb, split.rgb) << other;
+    }
+    EXPECT_EQ(run("render --environment-method nearest --out " + path("x.png").string()).exitCode, 2);
+    EXPECT_EQ(run("render --environment-samples 0 --out " + path("x.png").string()).exitCode, 2);
+    EXPECT_FALSE(std::filesystem::exists(path("x.png")));
+}
+
 TEST_F(Cli, MultiPassGivesTheSamePicture) {
     ASSERT_EQ(run("render --width 64 --height 64 --passes multi --out " + path("m.png").string()).exitCode, 0);
     ASSERT_EQ(run("render --width 64 --height 64 --passes single --out " + path("s.png").string()).exitCode, 0);

@@ -15,6 +15,7 @@
 #include "gltf/export.h"
 #include "keys.h"
 #include "panels.h"
+#include "preview_scene.h"
 #include "image/png_text.h"
 #include "scratch_test.h"
 #include "io/scene_file.h"
@@ -507,6 +508,10 @@ TEST_F(EditorUi, PresetsShowTheirNamesInAFixedPreviewScene) {
     const glm::dvec3 s = meanColour(texturePixels(*silver->texture));
     EXPECT_GT(g.r + g.g + g.b, 3 * 0.18 * 255 * 0.5) << "lit, not black";
     EXPECT_GT(g.r / g.b, 1.15 * (s.r / s.b)) << "gold is yellower than silver";
+    // Under the studio environment: a metal reflects it all over, not a few highlights.
+    const Scene preview = previewScene(loadMaterialFile(path("silver.json"), warnings));
+    EXPECT_TRUE(enabledEnvironment(preview));
+    EXPECT_GT(s.r + s.g + s.b, 3 * 0.18 * 255 * 0.6) << "silver reads as a lit metal";
     // The caption sits under its thumbnail.
     ImVec2 buttonMin, buttonMax, captionMin, captionMax;
     ASSERT_TRUE(itemRect("preset:gold", &buttonMin, &buttonMax));
