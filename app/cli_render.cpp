@@ -3,6 +3,7 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include <unistd.h>
 
@@ -86,6 +87,12 @@ Command addRenderCommand(CLI::App& app) {
                         "--reference: estimator iterations per pixel (3 directions each)")
         ->check(CLI::Range(1, 1 << 20));
     return [options] {
+        // The context first when the GPU renders: an environment the scene names is then
+        // prefiltered on it too.
+        std::optional<HeadlessContext> context;
+        if (!options->reference) {
+            context.emplace();
+        }
         Scene scene = options->inputs.load();
         resolveMesh(scene);
         if (options->reference) {
@@ -98,7 +105,6 @@ Command addRenderCommand(CLI::App& app) {
             writeOutput(options->out, png);
             return;
         }
-        HeadlessContext context;
         Renderer renderer;
         RenderSettings settings;
         settings.width = options->width;

@@ -10,6 +10,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "gl/gpu_prefilter.h"
 #include "io/file_bytes.h"
 #include "editor_settings.h"
 #include "frame_stats.h"
@@ -89,6 +90,9 @@ int runEditor(const EditorOptions& options) {
         return 1;
     }
     glfwMakeContextCurrent(window);
+    // Environments made ready on this (the UI) thread, as a scene opens, prefilter on the GPU;
+    // files chosen in the light list are prepared on a worker, on the CPU, while this draws.
+    setThreadPrefilter(prefilterCubeOnGpu);
     glfwSwapInterval(1);
     WindowInput input;
     glfwSetWindowUserPointer(window, &input);

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "shading/shading.h"
+
 namespace patina {
 
 CubeLevel::CubeLevel(int faceSize) : size(faceSize) {
@@ -26,14 +28,7 @@ void CubeLevel::setTexel(int face, int s, int t, glm::vec3 value) {
 }
 
 glm::vec3 cubeFaceDirection(int face, float sc, float tc) {
-    switch (face) {
-    case 0: return {1.0f, -tc, -sc};
-    case 1: return {-1.0f, -tc, sc};
-    case 2: return {sc, 1.0f, tc};
-    case 3: return {sc, -1.0f, -tc};
-    case 4: return {sc, -tc, 1.0f};
-    default: return {-sc, -tc, -1.0f};
-    }
+    return shader::cubeFaceDirection(face, sc, tc);
 }
 
 CubeCoordinate cubeCoordinate(glm::vec3 d) {

@@ -18,7 +18,7 @@ std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::strin
     environment->settings = settings;
     environment->replacedPixels = replaceInvalidPixels(image);
     const CubeChain cube = cubeMipChain(equirectToCube(image, cubeFaceSizeFor(image.width)));
-    environment->prefiltered = prefilterCube(cube, settings.prefilter, progress);
+    environment->prefiltered = threadPrefilter()(cube, settings.prefilter, progress);
     if (environment->prefiltered.empty()) {
         return nullptr;
     }

@@ -9,12 +9,29 @@
 
 namespace patina {
 
-CubeChain prefilterCube(const CubeChain& source, const PrefilterSettings& settings, const Progress& progress) {
-    const int base = source.front().size;
+namespace {
+thread_local PrefilterFunction prefilterOfThisThread = nullptr;
+}  // namespace
+
+void setThreadPrefilter(PrefilterFunction function) {
+    prefilterOfThisThread = function;
+}
+
+PrefilterFunction threadPrefilter() {
+    return prefilterOfThisThread ? prefilterOfThisThread : prefilterCube;
+}
+
+int prefilterLevelCount(int faceSize, const PrefilterSettings& settings) {
     int levels = 1;
-    while (levels < settings.levels && (base >> levels) >= 1) {
+    while (levels < settings.levels && (faceSize >> levels) >= 1) {
         ++levels;
     }
+    return levels;
+}
+
+CubeChain prefilterCube(const CubeChain& source, const PrefilterSettings& settings, const Progress& progress) {
+    const int base = source.front().size;
+    const int levels = prefilterLevelCount(base, settings);
     const float maxLod = float(levels - 1);
     CubeChain chain;
     chain.push_back(source.front());

@@ -5,6 +5,10 @@
 
 namespace patina {
 
+// `chain` as a new GL cube map (RGB32F, trilinear, seamless), bound to the current texture unit;
+// the caller owns (and deletes) the texture.
+unsigned uploadCubeChain(const CubeChain& chain);
+
 // An environment's prefiltered chain (and, when asked, its source chain) as a GL cube map (RGB32F, one mip per level, seamless
 // filtering on, trilinear), uploaded once per Environment shown. Needs a current context.
 class EnvironmentTexture {

@@ -57,6 +57,18 @@ PATINA_INLINE vec2 pixelJitter(uint x, uint y) {
     return vec2(real(a >> 8u), real(b >> 8u)) * (1.0f / 16777216.0f);
 }
 
+// The direction through face coordinates (sc, tc) in [-1, 1] of cube face `face` (0 to 5: +X,
+// -X, +Y, -Y, +Z, -Z), not normalised: OpenGL 4.5 core, table 8.19, inverted. The CPU's cube maps
+// and the GPU's prefilter pass place texels by it.
+PATINA_INLINE vec3 cubeFaceDirection(int face, real sc, real tc) {
+    if (face == 0) return vec3(1.0f, -tc, -sc);
+    if (face == 1) return vec3(-1.0f, -tc, sc);
+    if (face == 2) return vec3(sc, 1.0f, tc);
+    if (face == 3) return vec3(sc, -1.0f, -tc);
+    if (face == 4) return vec3(sc, -tc, 1.0f);
+    return vec3(-sc, -tc, -1.0f);
+}
+
 // Equirect convention (docs/FORMATS.md): +Y up, row 0 the zenith, the image's centre along -Z.
 // u = 0.5 + atan2(d.x, -d.z) / (2 pi), v = acos(d.y) / pi.
 PATINA_INLINE vec2 directionToEquirect(vec3 d) {
