@@ -191,14 +191,8 @@ sleep 2   # the scene's environment comes from the warm cache; let its first fra
 window=$(timeout 30 xdotool search --sync --name Patina | head -1) || true
 [ -n "$window" ] || die "xdotool found no window named Patina"
 rect() { grep -o "\"$1\": \[[^]]*\]" "$work/layout.json" | head -1 | sed 's/.*\[//; s/\]//; s/,//g'; }
-read -r x0 y0 x1 y1 < <(rect Roughness)
-y=$(( (${y0%.*} + ${y1%.*}) / 2 )) left=${x0%.*} right=${x1%.*}
-xdotool mousemove --window "$window" $(( left + 5 )) "$y" mousedown 1
-for step in $(seq 0 30); do
-  xdotool mousemove --window "$window" $(( left + 5 + (right - left - 10) * (step % 10) / 10 )) "$y"
-  sleep 0.1
-done
-xdotool mouseup 1
+source "$root/scripts/drag_slider.sh"
+drag_roughness "$window" "$work/layout.json"
 sleep 2   # the drag's line is logged at the first frame after it
 read -r vx0 vy0 vx1 vy1 < <(rect viewport)
 viewport="$(awk -v a="$vx0" -v b="$vx1" 'BEGIN { printf "%d", b - a + 0.5 }')x$(awk -v a="$vy0" -v b="$vy1" 'BEGIN { printf "%d", b - a + 0.5 }')"

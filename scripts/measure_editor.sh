@@ -17,15 +17,8 @@ XDG_CONFIG_HOME="$work/config" PATINA_UI_LAYOUT="$work/layout.json" "$patina" --
 editor=$!
 for _ in $(seq 600); do grep -q '"Roughness"' "$work/layout.json" 2>/dev/null && break; sleep 0.1; done
 window=$(xdotool search --sync --name Patina | head -1)
-read -r x0 y0 x1 y1 < <(grep -o '"Roughness": \[[^]]*\]' "$work/layout.json" | tr -d '"Roughness:[],' )
-y=$(( (${y0%.*} + ${y1%.*}) / 2 ))
-left=${x0%.*} right=${x1%.*}
-xdotool mousemove --window "$window" $(( left + 5 )) "$y" mousedown 1
-for step in $(seq 0 30); do
-  xdotool mousemove --window "$window" $(( left + 5 + (right - left - 10) * (step % 10) / 10 )) "$y"
-  sleep 0.1
-done
-xdotool mouseup 1
+source scripts/drag_slider.sh
+drag_roughness "$window" "$work/layout.json"
 sleep 3   # idle: let the full-quality frame and the thumbnails settle
 echo "idle resident memory: $(awk '/VmRSS/ {print int($2 / 1024) " MB"}' "/proc/$editor/status")"
 sleep 0.5

@@ -1,15 +1,14 @@
 #include "accuracy/split_sum_accuracy.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <sstream>
-#include <thread>
 
 #include <glm/geometric.hpp>
 
+#include "common/parallel_for.h"
 #include "environment/reference.h"
 #include "shading/brdf_models.h"
 #include "shading/environment_brdf.h"
@@ -121,25 +120,6 @@ Grid gridFor(bool quick) {
     }
     return {spreadNormals(8),         {0.1f, 0.3f, 0.6f, 0.9f}, {0.05f, 0.15f, 0.3f, 0.5f, 0.75f, 1.0f},
             {0.04f, 0.5f, 1.0f},      {4, 8, 16, 32, 64},        8};
-}
-
-// Runs body(i) for i in [0, count) on every core.
-void parallelFor(size_t count, const std::function<void(size_t)>& body) {
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-        for (size_t i; (i = next++) < count;) {
-            body(i);
-        }
-    };
-    std::vector<std::thread> pool;
-    const unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), 64u));
-    for (unsigned t = 1; t < threads; ++t) {
-        pool.emplace_back(work);
-    }
-    work();
-    for (std::thread& thread : pool) {
-        thread.join();
-    }
 }
 
 // Everything measured at one (normal, NoV, r): the truth and the prefiltered radiance each

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <thread>
 #include <vector>
 
+#include "common/parallel_for.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -54,33 +54,25 @@ CubeChain prefilterCube(const CubeChain& source, const PrefilterSettings& settin
     const std::function<glm::vec3(glm::vec3, float)> read = [&](glm::vec3 d, float lod) {
         return sampleCube(source, d, lod);
     };
-    std::atomic<size_t> next{0}, done{0};
+    std::atomic<size_t> done{0};
     std::atomic<bool> stopped{false};
-    auto work = [&] {
-        for (size_t job; !stopped && (job = next++) < rows.size();) {
-            const Row& row = rows[job];
-            CubeLevel& level = chain[size_t(row.level)];
-            const float roughness = shader::lodToRoughness(float(row.level), maxLod);
-            for (int s = 0; s < level.size; ++s) {
-                const glm::vec3 R = cubeTexelDirection(row.face, s, row.t, level.size);
-                level.setTexel(row.face, s, row.t,
-                               shader::prefilterEnvironment(read, R, roughness, settings.samples, float(base)));
-            }
-            const size_t finished = ++done;
-            if (progress && finished % 64 == 0 && !progress(float(finished) / float(rows.size()))) {
-                stopped = true;
-            }
+    parallelFor(rows.size(), [&](size_t job) {
+        if (stopped) {
+            return;   // the rest are skipped
         }
-    };
-    const unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), 16u));
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < threads; ++i) {
-        pool.emplace_back(work);
-    }
-    work();
-    for (std::thread& thread : pool) {
-        thread.join();
-    }
+        const Row& row = rows[job];
+        CubeLevel& level = chain[size_t(row.level)];
+        const float roughness = shader::lodToRoughness(float(row.level), maxLod);
+        for (int s = 0; s < level.size; ++s) {
+            const glm::vec3 R = cubeTexelDirection(row.face, s, row.t, level.size);
+            level.setTexel(row.face, s, row.t,
+                           shader::prefilterEnvironment(read, R, roughness, settings.samples, float(base)));
+        }
+        const size_t finished = ++done;
+        if (progress && finished % 64 == 0 && !progress(float(finished) / float(rows.size()))) {
+            stopped = true;
+        }
+    });
     if (stopped) {
         return {};
     }

@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <optional>
-#include <atomic>
 #include <stdexcept>
-#include <thread>
 
+#include "common/parallel_for.h"
 #include "scene/light_packing.h"
 #include "environment/reference.h"
 #include "shading/cpu_shading.h"
@@ -51,26 +50,14 @@ std::vector<ReferenceRow> probeReference(const Material& material, const std::ve
         reference = {shown.get(), &*distribution, environmentLight->intensity, environmentLight->rotationDegrees};
     }
     std::vector<ReferenceRow> rows(samples.size());
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-        for (size_t i; (i = next++) < samples.size();) {
-            ReferenceOptions options;
-            options.samples = samplesPerRow;
-            options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
-            const ReferenceEstimate e = referenceRadiance(material.model, surface, reference, packed, samples[i].position,
-                                                          samples[i].normal, samples[i].toViewer, options);
-            rows[i] = {e.value, e.standardError};
-        }
-    };
-    std::vector<std::thread> pool;
-    const unsigned threads = std::max(1u, std::min(std::thread::hardware_concurrency(), 64u));
-    for (unsigned t = 1; t < threads; ++t) {
-        pool.emplace_back(work);
-    }
-    work();
-    for (std::thread& thread : pool) {
-        thread.join();
-    }
+    parallelFor(samples.size(), [&](size_t i) {
+        ReferenceOptions options;
+        options.samples = samplesPerRow;
+        options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
+        const ReferenceEstimate e = referenceRadiance(material.model, surface, reference, packed, samples[i].position,
+                                                      samples[i].normal, samples[i].toViewer, options);
+        rows[i] = {e.value, e.standardError};
+    });
     return rows;
 }
 

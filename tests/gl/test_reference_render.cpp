@@ -59,21 +59,33 @@ Scene analyticScene(bool environmentBackground) {
     return scene;
 }
 
+// The scene rendered by the GPU without MSAA, and its ground truth at one iteration a pixel.
+struct RenderAndReference {
+    HdrImage render;
+    PixelSurfaces surfaces;
+    ReferenceImage reference;
+};
+RenderAndReference renderAndReference(const Scene& scene) {
+    test::glContext();
+    Renderer renderer;
+    RenderAndReference both;
+    both.render = renderer.render(scene, test::renderSettings(kSize, kSize, RenderPath::Single, 1)).hdr;
+    both.surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = 1;
+    both.reference = renderReference(scene, both.surfaces, options);
+    return both;
+}
+
 TEST(ReferenceRender, AnalyticLightsAreExactAndMatchTheRender) {
     // No environment light: the reference adds each light exactly, so it equals the GPU's render
     // pixel for pixel wherever both see the mesh, and the background is the renderer's colour.
-    test::glContext();
     const Scene scene = analyticScene(false);
-    Renderer renderer;
-    const RenderOutput render = renderer.render(scene, test::renderSettings(kSize, kSize, RenderPath::Single, 1));
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
-    ReferenceRenderOptions options;
-    options.samplesPerPixel = 1;
-    const ReferenceImage reference = renderReference(scene, surfaces, options);
+    const auto [render, surfaces, reference] = renderAndReference(scene);
     int compared = 0;
     for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
         for (int c = 0; c < 3; ++c) {
-            const float r = reference.value.rgb[pixel * 3 + size_t(c)], g = render.hdr.rgb[pixel * 3 + size_t(c)];
+            const float r = reference.value.rgb[pixel * 3 + size_t(c)], g = render.rgb[pixel * 3 + size_t(c)];
             EXPECT_EQ(reference.standardError.rgb[pixel * 3 + size_t(c)], 0.0f);
             if (surfaces.sampleOfPixel[pixel] < 0) {
                 EXPECT_EQ(r, scene.display.background[c]);
@@ -87,14 +99,7 @@ TEST(ReferenceRender, AnalyticLightsAreExactAndMatchTheRender) {
 }
 
 TEST(ReferenceRender, TheEnvironmentBackgroundIsTheRenderers) {
-    test::glContext();
-    const Scene scene = analyticScene(true);
-    Renderer renderer;
-    const RenderOutput render = renderer.render(scene, test::renderSettings(kSize, kSize, RenderPath::Single, 1));
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
-    ReferenceRenderOptions options;
-    options.samplesPerPixel = 1;
-    const ReferenceImage reference = renderReference(scene, surfaces, options);
+    const auto [render, surfaces, reference] = renderAndReference(analyticScene(true));
     double largest = 0.0;
     int background = 0;
     for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
@@ -103,7 +108,7 @@ TEST(ReferenceRender, TheEnvironmentBackgroundIsTheRenderers) {
         }
         ++background;
         for (int c = 0; c < 3; ++c) {
-            const float r = reference.value.rgb[pixel * 3 + size_t(c)], g = render.hdr.rgb[pixel * 3 + size_t(c)];
+            const float r = reference.value.rgb[pixel * 3 + size_t(c)], g = render.rgb[pixel * 3 + size_t(c)];
             largest = std::max(largest, double(std::abs(r - g)) / std::max(double(g), 1e-3));
         }
     }
