@@ -163,21 +163,12 @@ PATINA_INLINE vec3 shadeHemisphereLight(PackedLight light, SurfaceMaterial mater
     return hemisphereRadiance(light, N) * diffuse(material, NoV, 1.0f, clamp(dot(N, H), 0.0f, 1.0f));
 }
 
-// The specular lobe evaluated towards unit L (an area light's representative point) for light
-// of `radiance` whose cosine-weighted arrival is `illuminance`: the light's own cosine, as UE4
-// shades its sphere and tube lights, not the representative point's. Where that point crosses
-// the horizon before the light does (a rough lobe, a long tube) its own cosine would cut the
-// highlight off along a hard curve. A point below the horizon is read at the horizon instead
-// (L lifted along N to N.L = 0): continuous, and the lobe is then never asked for a half
-// vector below the surface, where D (whose microfacets face outwards: chi+(N.H)) is 0/0. A
-// select keeps what cannot be lifted out of the sum: no light arriving, a zero normal (allowed:
-// shadeLight's N), a view from below the surface.
-PATINA_INLINE vec3 specularWithIlluminance(vec3 radiance, real illuminance, vec3 L, SurfaceMaterial material, vec3 N,
-                                           vec3 V) {
+// The specular lobe alone towards V from radiance arriving along unit L, with the cosine;
+// nothing from behind the surface (a select, as shadeFromDirection's).
+PATINA_INLINE vec3 specularFromDirection(vec3 radiance, vec3 L, SurfaceMaterial material, vec3 N, vec3 V) {
     real NoL = dot(N, L);
-    vec3 lifted = NoL < 0.0f ? safeNormalize(L - N * NoL) : L;
-    vec3 value = radiance * illuminance * evaluateBrdf(material, N, V, lifted).specular;
-    return illuminance > 0.0f && dot(N, lifted + V) > 0.0f ? value : vec3(0.0f);
+    vec3 value = radiance * min(NoL, 1.0f) * evaluateBrdf(material, N, V, L).specular;
+    return NoL > 0.0f ? value : vec3(0.0f);
 }
 
 // The diffuse lobe alone for light of `radiance` whose cosine-weighted arrival is `illuminance`
@@ -188,8 +179,8 @@ PATINA_INLINE vec3 diffuseFromDirection(vec3 radiance, real illuminance, vec3 L,
 }
 
 // A sphere light (Karis 2013, "Area lights"): the point light's falloff at the centre's distance
-// d; specular towards the representative point of eq. 11 with the normalisation (alpha / alpha')^2
-// of eq. 14, weighted by the diffuse's cosine term; diffuse from the centre as a point light (exact while the sphere is above the
+// d; specular from the representative point of eq. 11 with the normalisation (alpha / alpha')^2
+// of eq. 14; diffuse from the centre as a point light (exact while the sphere is above the
 // horizon), or with `method.exactSphereDiffuse` Frostbite's horizon-clipped illuminance.
 // `windowed` and `karis` as for shadePointLight. Source radius 0 gives the point light.
 PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
@@ -212,16 +203,15 @@ PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool k
     vec3 closest = sphereRepresentativePoint(toCentre, R, s);
     vec3 towardsClosest = closest * inversesqrt(max(dot(closest, closest), MIN_LIGHT_DISTANCE_SQUARED));
     real normalization = sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, t, method.widening));
-    vec3 specular = specularWithIlluminance(radiance * normalization, illuminance, towardsClosest, material, N, V);
+    vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
     // The centre on the shaded point has no direction: no light, as for a point light.
     return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? diffuse + specular : vec3(0.0f);
 }
 
 // A tube light (Karis 2013, "Tube lights"): the capsule of radius s around the segment from
 // `position` to `tubeEnd`, of total intensity. Falloff and diffuse from the line irradiance of
-// the two ends (lineIrradianceDistanceSquared, lineIrradianceCosine, which also weighs the
-// specular); specular towards the point of the segment closest to the reflected ray (eqs.
-// 15-17), then the sphere's representative point
+// the two ends (lineIrradianceDistanceSquared, lineIrradianceCosine); specular from the point of
+// the segment closest to the reflected ray (eqs. 15-17), then the sphere's representative point
 // around it, normalised by the line's alpha / alpha' (eq. 16) with the segment's length and the
 // sphere's (alpha / alpha')^2 (eq. 14), both at the distance of the tube's centre. Length 0 gives
 // the sphere light.
@@ -235,8 +225,7 @@ PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool kar
     vec3 toCentre = L0 + Ld * real(0.5f);
     real centreDistance = sqrt(dot(toCentre, toCentre));
     vec3 towardsCentre = toCentre * inversesqrt(max(dot(toCentre, toCentre), MIN_LIGHT_DISTANCE_SQUARED));
-    real illuminance = lineIrradianceCosine(N, L0, L1);
-    vec3 diffuse = diffuseFromDirection(radiance, illuminance, towardsCentre, material, N, V);
+    vec3 diffuse = diffuseFromDirection(radiance, lineIrradianceCosine(N, L0, L1), towardsCentre, material, N, V);
 
     vec3 R = 2.0f * dot(N, V) * N - V;   // reflect(-V, N)
     real s = light.sourceRadius;
@@ -246,7 +235,7 @@ PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool kar
     real normalization =
         lineNormalization(material.alpha, widenedAlpha(material.alpha, segmentLength, centreDistance, method.widening)) *
         sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, centreDistance, method.widening));
-    vec3 specular = specularWithIlluminance(radiance * normalization, illuminance, towardsClosest, material, N, V);
+    vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
     return diffuse + specular;
 }
 
