@@ -26,7 +26,11 @@ void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg)
 
 std::filesystem::path outputFolder(const std::string& folder) {
     const std::filesystem::path path = folder.empty() ? "." : folder;
-    if (!std::filesystem::is_directory(path)) {
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {
+        throw InputError(path.string() + ": no such folder (make it first: mkdir -p " + path.string() + ")");
+    }
+    if (!std::filesystem::is_directory(path, error)) {
         throw InputError(path.string() + ": not a folder");
     }
     return path;

@@ -132,9 +132,11 @@ void addLight(EditorState& state, LightType type) {
     light.type = type;
     light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
     if (type == LightType::Point || type == LightType::Sphere) {
-        light.position = {1.5f, 1.5f, 1.5f};
+        // Up and to the left, between the camera and the sphere: in the default view, so there
+        // is a dot to drag at once (it used to start outside the picture).
+        light.position = {-0.8f, 0.8f, 1.2f};
         light.range = 10.0f;
-        light.intensity = 8.0f;
+        light.intensity = 5.0f;
         if (type == LightType::Sphere) {   // a point light keeps every other type's default
             light.sourceRadius = 0.25f;
         }
@@ -315,14 +317,18 @@ void applyEnvironment(EditorState& state, const std::string& source, std::shared
     const int index = environmentIndex(state);
     applyEdit(state, [&](EditorState& s) {
         Light& light = s.scene.lights[size_t(index)];
+        // The light is named after its image until the artist names it.
+        if (light.name == environmentName(light.source) || light.name == lightTypeName(LightType::Environment)) {
+            light.name = environmentName(source);
+        }
         light.source = source;
-        light.name = environmentName(source);
         s.scene.resolvedEnvironment = std::move(environment);   // kept while disabled, for the checkbox
     });
     state.selectedLight = index;
     state.environmentFailed.clear();
-    state.error = joinWarnings(warnings);
-    state.status = "Environment " + environmentName(source);
+    // Replaced pixels (real HDRIs hold a few slightly negative ones) are worth a note, not an
+    // error box over the toolbar.
+    state.status = "Environment " + environmentName(source) + (warnings.empty() ? "" : ": " + joinWarnings(warnings));
 }
 }  // namespace
 
@@ -463,13 +469,49 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
     return errors.empty();
 }
 
+namespace {
+// Whether opening `path` replaces the whole scene (a scene file or a screenshot) rather than
+// the material alone; a file that cannot be read counts as a scene (its open fails anyway).
+bool replacesTheScene(const std::filesystem::path& path) {
+    if (path.extension() == ".png") {
+        return true;
+    }
+    if (path.extension() != ".json") {
+        return false;   // a mesh or an environment image: one part, undoably
+    }
+    try {
+        const Json json = readJsonFile(path);
+        return !json.is_object() || json.value("format", Json()) == "patina-scene";
+    } catch (const std::exception&) {
+        return true;
+    }
+}
+}  // namespace
+
 void requestOpen(EditorState& state, const std::filesystem::path& path) {
-    // An environment image changes one light, undoably: nothing unsaved is replaced.
+    // An environment image or a mesh changes one part, undoably, and a material file the
+    // material alone: only what it replaces can be lost, so only that asks first.
     const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
-    if (state.dirty() && !environment) {
+    const bool unsaved = replacesTheScene(path) ? state.dirty() : state.materialChanged();
+    if (unsaved && !environment && gltfExtension(path).empty()) {
         state.pendingOpen = path;
     } else {
         openFile(state, path);
+    }
+}
+
+bool applyPreset(EditorState& state, const std::filesystem::path& path) {
+    std::vector<std::string> warnings;
+    try {
+        const Material preset = loadMaterialFile(path, warnings);
+        applyEdit(state, [&](EditorState& s) { s.scene.material = preset; });
+        state.error.clear();
+        state.status = "Preset " + preset.name + " (Ctrl+Z to go back)" +
+                       (warnings.empty() ? "" : "\n" + joinWarnings(warnings));
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();   // the material stays as it was
+        return false;
     }
 }
 

@@ -234,10 +234,15 @@ void drawLightsPanel(EditorState& state, EditorServices& services) {
     }
     recordItem("Add hemisphere", "A sky colour above and a ground colour below");
     sameLineIfFits(buttonWidth("Add environment"));
+    const bool hasEnvironment = editedEnvironment(state) != nullptr;
+    ImGui::BeginDisabled(hasEnvironment);   // a scene has one at most
     if (ImGui::Button("Add environment")) {
         addLight(state, LightType::Environment);
     }
-    recordItem("Add environment", "Light from a whole surrounding image (HDR)");
+    ImGui::EndDisabled();
+    recordItem("Add environment", hasEnvironment ? "Light from a whole surrounding image (HDR). The scene has one "
+                                                   "already: change its source in the list"
+                                                 : "Light from a whole surrounding image (HDR)");
 
     std::vector<Light>& lights = state.scene.lights;
     if (ImGui::BeginTable("lights", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {

@@ -51,8 +51,12 @@ void drawAdvanced(EditorState& state) {
                "How the environment lights the mesh: Karis's split sum (the default), the split sum along the "
                "dominant direction (half the error, same cost), or N filtered importance samples a pixel (noisy)");
     if (environment.method == EnvironmentMethod::Stochastic) {
-        ImGui::SliderInt("Samples", &environment.samples, 1, 256, "%d", ImGuiSliderFlags_Logarithmic);
-        recordItem("Environment samples", "Samples a pixel of the stochastic mode: more is slower and less noisy");
+        // 64 at most here: each sample is a filtered cube-map read a pixel, and at 256 a frame
+        // took over a second on a software rasteriser (patina render takes up to 256).
+        ImGui::SliderInt("Samples", &environment.samples, 1, 64, "%d", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+        recordItem("Environment samples",
+                   "Samples a pixel of the stochastic mode: more is less noisy and slower (each one is a texture "
+                   "read per pixel)");
     }
     ImGui::PushTextWrapPos(0.0f);   // notes wrap at the panel's edge
     ImGui::TextDisabled("The viewport shows the render's CPU and GPU time.");

@@ -325,7 +325,7 @@ void drawDialogs(EditorState& state, EditorServices& services) {
                 {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"},
                 {"Ctrl+Shift+Z, Ctrl+Y", "redo"}, {"F12", "screenshot of the viewport"},
                 {"Delete", "delete the selected light"}, {"F", "frame the mesh (viewport)"},
-                {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"},
+                {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"}, {"Right drag", "turn the environment (lighting and background)"},
                 {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"},
                 {"Right-click Reset", "back to the default"}, {"F1", "this list"}, {"Ctrl+Q", "quit"}};
             if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) {

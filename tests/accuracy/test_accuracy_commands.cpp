@@ -78,7 +78,9 @@ TEST_F(AccuracyCommands, AreaAccuracyMeasuresEveryMethodAgainstTheGroundTruth) {
         EXPECT_TRUE(std::filesystem::exists(path(file))) << file;
     }
     EXPECT_GT(decodePng(readFileBytes(path("area_spheres.png"))).width, 0);
-    EXPECT_EQ(test::runPatina("area-accuracy --quick --out-dir " + path("missing").string(), dir_).exitCode, 3);
+    const test::CliRun missing = test::runPatina("area-accuracy --quick --out-dir " + path("missing").string(), dir_);
+    EXPECT_EQ(missing.exitCode, 3);
+    EXPECT_NE(missing.stderrText.find("no such folder"), std::string::npos) << missing.stderrText;
 }
 
 // Every path at every light count, both scale axes, every target with a finite value, the
