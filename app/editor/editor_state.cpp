@@ -400,6 +400,15 @@ std::string environmentName(const std::string& source) {
     return std::filesystem::path(source).stem().string();
 }
 
+bool isPreset(const EditorState& state, const std::filesystem::path& path) {
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::weakly_canonical(path, error).parent_path();
+    return std::any_of(state.presetFolders.begin(), state.presetFolders.end(), [&](const std::filesystem::path& f) {
+        std::error_code e;
+        return std::filesystem::weakly_canonical(f, e) == folder;
+    });
+}
+
 bool openFile(EditorState& state, const std::filesystem::path& path) {
     std::error_code kind;
     if (std::filesystem::is_directory(path, kind)) {
@@ -444,7 +453,9 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
             state.savedScene = state.scene;
         } else {
             applyEdit(state, [&](EditorState& s) { s.scene.material = *material; });
-            state.materialPath = path;
+            // A preset is a template: the material takes its values, but Save never writes
+            // into the preset (Save as preset does, when asked to).
+            state.materialPath = isPreset(state, path) ? std::filesystem::path() : path;
         }
         state.savedMaterial = state.scene.material;
         state.error.clear();
@@ -500,20 +511,6 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
     }
 }
 
-bool applyPreset(EditorState& state, const std::filesystem::path& path) {
-    std::vector<std::string> warnings;
-    try {
-        const Material preset = loadMaterialFile(path, warnings);
-        applyEdit(state, [&](EditorState& s) { s.scene.material = preset; });
-        state.error.clear();
-        state.status = "Preset " + preset.name + " (Ctrl+Z to go back)" +
-                       (warnings.empty() ? "" : "\n" + joinWarnings(warnings));
-        return true;
-    } catch (const std::exception& error) {
-        state.error = error.what();   // the material stays as it was
-        return false;
-    }
-}
 
 bool saveScene(EditorState& state, const std::filesystem::path& path) {
     commitEdits(state);

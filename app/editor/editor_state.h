@@ -173,9 +173,9 @@ bool openFile(EditorState& state, const std::filesystem::path& path);
 // Asks first (state.pendingOpen) when what the file replaces is unsaved: the whole document for
 // a scene or a screenshot, the material for a material file; else opens.
 void requestOpen(EditorState& state, const std::filesystem::path& path);
-// A preset's material becomes the edited one, one undo step, without asking: nothing is lost,
-// and the preset stays a template (Save writes the document, never the preset's file).
-bool applyPreset(EditorState& state, const std::filesystem::path& path);
+// Whether `path` is a file of one of the preset folders: opened, it is a template (Save writes
+// the document, never the preset's file).
+bool isPreset(const EditorState& state, const std::filesystem::path& path);
 // Opens each in turn (the command line's files): every file's error is kept, one a line, in
 // state.error, so a later file does not hide an earlier one's. False when any failed.
 bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths);

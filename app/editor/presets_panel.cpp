@@ -54,7 +54,7 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
             recordItem("caption:" + file.stem().string());
             ImGui::EndGroup();
             if (clicked) {
-                applyPreset(state, file);
+                requestOpen(state, file);
             }
             ImGui::PopID();
             if (++column < columns) {

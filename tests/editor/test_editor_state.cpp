@@ -657,28 +657,33 @@ TEST_F(EditorStateTest, ABadEnvironmentFileSaysWhyWhenItFailsAndChangesNothing) 
     EXPECT_EQ(state.scene.lights, lights);
 }
 
-TEST_F(EditorStateTest, APresetIsATemplateAppliedWithoutAskingAndNeverSavedOver) {
+TEST_F(EditorStateTest, APresetIsATemplateNeverSavedOverAndOnlyUnsavedMaterialAsks) {
     // A tester moved the camera, clicked "copper" and was asked to save the scene; then Ctrl+S
-    // wrote into the preset's own file. A preset changes the material, undoably, nothing else.
+    // wrote into the preset's own file. A preset changes the material, undoably, nothing else,
+    // and asks first only when the material itself is unsaved.
     const fs::path preset = writeMaterial("copper", 0.3f);
+    state.presetFolders = {dir_};
     const std::vector<uint8_t> presetBytes = readFileBytes(preset);
     state.scene.camera.position.x += 0.5f;   // the document is dirty, the material is not
-    ASSERT_TRUE(applyPreset(state, preset)) << state.error;
-    EXPECT_FALSE(state.pendingOpen.has_value());
-    EXPECT_EQ(state.scene.material.name, "copper");
-    EXPECT_TRUE(state.materialPath.empty()) << "the preset became the document";
-    state.scene.material.roughness = 0.9f;
-    commitEdits(state);
-    EXPECT_EQ(readFileBytes(preset), presetBytes);
-    undo(state);
-    undo(state);
-    EXPECT_NE(state.scene.material.name, "copper");
-    // Opening a material file asks only when the material itself is unsaved.
     requestOpen(state, preset);
     EXPECT_FALSE(state.pendingOpen.has_value()) << "only the camera was unsaved";
-    state.scene.material.roughness = 0.77f;
+    EXPECT_EQ(state.scene.material.name, "copper");
+    EXPECT_TRUE(state.materialPath.empty()) << "the preset became the document";
+    EXPECT_FALSE(state.materialChanged());
+    state.scene.material.roughness = 0.9f;
+    commitEdits(state);
+    EXPECT_TRUE(state.materialChanged());
+    EXPECT_EQ(readFileBytes(preset), presetBytes);
     requestOpen(state, preset);
-    EXPECT_TRUE(state.pendingOpen.has_value());
+    EXPECT_TRUE(state.pendingOpen.has_value()) << "the material was unsaved";
+    // A material file elsewhere is a document as before.
+    state.pendingOpen.reset();
+    state.scene.material = state.savedMaterial;
+    const fs::path mine = dir_ / "mine";
+    fs::create_directories(mine);
+    fs::copy_file(preset, mine / "copper.json");
+    ASSERT_TRUE(openFile(state, mine / "copper.json")) << state.error;
+    EXPECT_EQ(state.materialPath, mine / "copper.json");
 }
 
 TEST_F(EditorStateTest, AnEnvironmentKeepsTheNameItWasGivenAndNotesReplacedPixelsQuietly) {
