@@ -83,7 +83,7 @@ PATINA_INLINE vec3 safeNormalize(vec3 v) {
 
 // The widening of Karis 2013 eq. 10, alpha' = saturate(alpha + size / (w d)), is printed
 // ambiguously: w = 2 in UE4's code and two independent transcriptions, w = 3 in other ports.
-// Both are kept; docs/AREA_LIGHTS.md measures them against the ground truth.
+// Both are kept; docs/LIGHTING.md ("Area lights") measures them against the ground truth.
 const real WIDENING_UE4 = 2.0f;     // size / (2 d)
 const real WIDENING_THIRD = 3.0f;   // size / (3 d)
 
@@ -95,7 +95,7 @@ struct AreaLightMethod {
 };
 
 // The renderer's choice (PATINA_AREA_WIDENING and PATINA_EXACT_SPHERE_DIFFUSE select another at
-// compile time), measured in docs/AREA_LIGHTS.md: UE4's w = 2. Over spheres at 30 degrees its
+// compile time), measured in docs/LIGHTING.md ("Area lights"): UE4's w = 2. Over spheres at 30 degrees its
 // mean error is 0.17 against 0.43 for w = 3, which brightens smooth highlights 1.75-2.6x (w = 3
 // wins only from r = 0.5 up, by 0.03-0.06). Diffuse: the centre's, exact above the horizon and
 // cheapest; Frostbite's costs the same above it and cuts the error across it from up to 0.28
