@@ -96,10 +96,10 @@ struct AreaLightMethod {
 
 // The renderer's choice (PATINA_AREA_WIDENING and PATINA_EXACT_SPHERE_DIFFUSE select another at
 // compile time), measured in docs/LIGHTING.md ("Area lights"): UE4's w = 2. Over spheres at 30
-// degrees its mean error is 0.17 against 0.43 for w = 3, which brightens smooth highlights 1.75-2.6x (w = 3
-// wins only from r = 0.5 up, by 0.03-0.06). Diffuse: the centre's, exact above the horizon and
-// cheapest; Frostbite's costs the same above it and cuts the error across it from up to 0.28
-// to 0.003 of I / d^2.
+// degrees its mean error is 0.17 against 0.43 for w = 3, which brightens smooth highlights
+// 1.75-2.6x (w = 3 wins only from r = 0.5 up, by 0.03-0.06). Diffuse: the centre's, exact above
+// the horizon and cheapest; Frostbite's costs the same above it and cuts the error across it from
+// up to 0.28 to 0.003 of I / d^2.
 #ifndef PATINA_AREA_WIDENING
 #define PATINA_AREA_WIDENING WIDENING_UE4
 #endif
