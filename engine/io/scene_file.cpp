@@ -167,10 +167,15 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
                                    " (expected \"none\", \"aces\", \"reinhard\" or \"pbr-neutral\")");
     }
     display.tonemap = *parsed;
-    display.background = reader.vec3("background", display.background, kNonNegative);
     // The scene's environment itself behind the mesh, blurred to a roughness (the colour stays
-    // for a scene without one).
-    display.backgroundFromEnvironment = reader.boolean("backgroundEnvironment", false);
+    // for a scene without one). "background": "environment" says the same (issue 18's
+    // spelling); it is written back as the boolean beside the default colour.
+    const Json* background = reader.child("background");
+    const bool environmentNamed = background && background->is_string() && *background == "environment";
+    if (!environmentNamed) {
+        display.background = reader.vec3("background", display.background, kNonNegative);
+    }
+    display.backgroundFromEnvironment = reader.boolean("backgroundEnvironment", environmentNamed);
     display.backgroundBlur = reader.number("backgroundBlur", display.backgroundBlur, kUnit);
     display.extras = reader.keepUnknown(warnings);
     return display;

@@ -361,6 +361,18 @@ TEST(SceneFile, AnEnvironmentLightRoundTripsAndASecondOneIsAnError) {
     EXPECT_EQ(sceneFromJson(sceneToJson(scene), "again.json", "/elsewhere", warnings), scene);
     EXPECT_TRUE(warnings.empty());
 
+    // "background": "environment" is the issue's spelling of the same; a scene holding both
+    // keys says what it means by the boolean.
+    Json named = json;
+    named["display"] = Json::parse(R"({"background": "environment", "backgroundBlur": 0.3})");
+    const Scene namedScene = sceneFromJson(named, "s.json", "/scenes", warnings);
+    EXPECT_TRUE(namedScene.display.backgroundFromEnvironment);
+    EXPECT_EQ(namedScene.display.background, DisplaySettings{}.background);
+    EXPECT_EQ(sceneFromJson(sceneToJson(namedScene), "again.json", "/scenes", warnings), namedScene);
+    named["display"]["background"] = "sky";
+    EXPECT_THROW(sceneFromJson(named, "s.json", "/scenes", warnings), InputError);
+    EXPECT_TRUE(warnings.empty());
+
     // Found by fuzz_scene: a colour on an environment was read, then not written.
     Json coloured = json;
     coloured["lights"][0]["color"] = Json::array({0.5, 0.5, 0.5});
