@@ -114,7 +114,7 @@ Command addRenderCommand(CLI::App& app) {
         settings.environment = {*environmentMethodFromName(options->environmentMethod), options->environmentSamples};
         // A one-off render keeps its peak memory down: strips of at most 16 MiB of
         // multisampled colour, and the linear image read back only when asked for.
-        settings.maxTargetBytes = size_t(16) << 20;
+        settings.maxTargetBytes = kOneOffTargetBytes;
         settings.readHdr = !options->hdr.empty();
         const RenderOutput output = renderer.render(scene, settings);
         // Encode both before writing either, so a failure leaves no output behind.

@@ -52,6 +52,20 @@ std::optional<RenderPath> renderPathFromName(std::string_view name) {
 }
 
 namespace {
+// Binds again, however the scope is left, the framebuffer that was bound when it began. A draw
+// that threw halfway (a target the GL could not make) used to leave its own bound, and the
+// editor's UI then drew into it: the window stopped repainting until another draw went through.
+class FramebufferKept {
+public:
+    FramebufferKept() { glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound_); }
+    ~FramebufferKept() { glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound_)); }
+    FramebufferKept(const FramebufferKept&) = delete;
+    FramebufferKept& operator=(const FramebufferKept&) = delete;
+
+private:
+    GLint bound_ = 0;
+};
+
 template <typename T>
 void flipRows(std::vector<T>& values, size_t rowLength, int rows) {
     for (int y = 0; y < rows / 2; ++y) {
@@ -246,6 +260,7 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
                                     std::to_string(settings.height) + " is outside 1.." +
                                     std::to_string(s.maxSize));
     }
+    const FramebufferKept kept;
     RenderTargets& t = *target.images_;
     useMesh(s, scene);
     const Light* environmentLight = enabledEnvironment(scene);
@@ -442,7 +457,6 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     }
     glViewport(0, 0, w, h);
     glDisable(GL_DEPTH_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timed) {
         glQueryCounter(s.timerQueries[1], GL_TIMESTAMP);
         s.timerPending = true;
@@ -464,6 +478,7 @@ RenderOutput Renderer::readBack(const RenderTarget& target, bool hdr) const {
     if (!t.drawn) {
         return output;   // never drawn, or the last draw failed
     }
+    const FramebufferKept kept;
     const int w = t.display.width, h = t.display.height;
     // Straight into the outputs (no staging copies: a render's peak memory counts), then the
     // rows flipped in place, since GL's go bottom to top.
@@ -482,7 +497,6 @@ RenderOutput Renderer::readBack(const RenderTarget& target, bool hdr) const {
     glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, output.ldr.rgba.data());
     flipRows(output.ldr.rgba, size_t(w) * 4, h);
     detach(t.readFramebuffer);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return output;
 }
 

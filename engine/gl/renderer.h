@@ -45,6 +45,11 @@ std::string_view renderPathName(RenderPath mode);
 // single, multi or specialised.
 std::optional<RenderPath> renderPathFromName(std::string_view name);
 
+// The multisampled colour a one-off render (a file written, a screenshot) may take before it is
+// drawn in strips (RenderSettings::maxTargetBytes): its peak memory stays low at any size the
+// GL allows. Without it an 8192 x 8192 screenshot asked llvmpipe for 4 GiB at once and failed.
+inline constexpr size_t kOneOffTargetBytes = size_t(16) << 20;
+
 struct RenderSettings {
     int width = 800;
     int height = 800;

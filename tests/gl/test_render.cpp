@@ -339,6 +339,34 @@ TEST(Renderer, AnErrorLeftByOtherCodeIsNotTheDrawsError) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// A draw that fails after binding its own target (here a specialised shader that does not
+// compile) leaves bound the framebuffer it found: the editor's UI draws into the window's after a
+// failed screenshot, instead of into the renderer's until the next good draw.
+TEST(Renderer, AFailedDrawLeavesTheFramebufferItFound) {
+    test::glContext();
+    Renderer renderer;
+    GLuint mine = 0;
+    glGenFramebuffers(1, &mine);
+    glBindFramebuffer(GL_FRAMEBUFFER, mine);
+    RenderSettings broken = test::renderSettings(16, 16, RenderPath::Specialised, 1);
+    broken.lightCode = [](const std::vector<shader::PackedLight>&, size_t) {
+        ShaderSpecialisation code;
+        code.lights = "this is not GLSL(";
+        return code;
+    };
+    EXPECT_THROW(renderer.render(defaultScene(), broken), std::exception);
+    GLint bound = -1;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
+    EXPECT_EQ(GLuint(bound), mine);
+    renderer.render(defaultScene(), test::renderSettings(16, 16, RenderPath::Single, 1));
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
+    EXPECT_EQ(GLuint(bound), mine) << "and a draw that succeeds likewise";
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &mine);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+}
+
 TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
     test::glContext();
     Renderer renderer;
