@@ -1,13 +1,20 @@
 #include "autosave.h"
 
+#include <algorithm>
+#include <chrono>
 #include <ctime>
 #include <system_error>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "editor_state.h"
 #include "gltf/scene_mesh.h"
 #include "io/file_bytes.h"
 #include "io/json_reader.h"
 #include "io/scene_file.h"
+#include "save_errors.h"
 
 namespace patina::editor {
 
@@ -50,46 +57,141 @@ void write(EditorState& state, const std::string& text) {
 }
 }  // namespace
 
+std::shared_ptr<FileLock> FileLock::tryLock(const std::filesystem::path& path) {
+    const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        throw std::runtime_error(couldNotSave(path, std::system_error(errno, std::generic_category())));
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        ::close(fd);
+        return nullptr;
+    }
+    return std::shared_ptr<FileLock>(new FileLock(path, fd));
+}
+
+FileLock::~FileLock() {
+    ::close(fd_);   // lets the lock go
+}
+
 std::string autosaveText(const EditorState& state) {
     return autosaveJson(state).dump();
 }
 
-void startAutosave(EditorState& state, const std::filesystem::path& file) {
-    state.autosave = Autosave{};
-    state.autosave.file = file;
-    state.autosave.written = autosaveText(state);
-    std::error_code missing;
-    if (!std::filesystem::exists(file, missing)) {
-        return;
-    }
-    try {
-        const Json json = readJsonFile(file);
-        JsonObjectReader reader(json, "", file.string());
-        reader.checkFormatAndVersion(kFormat, kVersion);
-        Recoverable found;
-        found.savedAt = reader.string("savedAt", "");
-        found.materialPath = reader.string("materialPath", "");
-        found.scenePath = reader.string("scenePath", "");
-        const Json& scene = reader.required("scene");
-        std::vector<std::string> warnings;
-        found.scene = sceneFromJson(scene, file.string() + " (scene)", file.parent_path(), warnings);
-        if (!found.scene.meshFile.empty()) {
-            try {
-                resolveMesh(found.scene);
-            } catch (const std::exception&) {
-                found.scene.meshFile.clear();   // the mesh file went away: the rest is still the work
-            }
+namespace {
+std::filesystem::path lockFileOf(const std::filesystem::path& file) {
+    return std::filesystem::path(file).replace_extension(".lock");
+}
+
+// Removes an autosave whose lock this editor holds, lock file and all.
+void removeLocked(const std::filesystem::path& file, std::shared_ptr<FileLock>& lock) {
+    std::error_code ignored;
+    std::filesystem::remove(file, ignored);
+    std::filesystem::remove(lockFileOf(file), ignored);
+    lock.reset();
+}
+
+Recoverable readRecoverable(const std::filesystem::path& file) {
+    const Json json = readJsonFile(file);
+    JsonObjectReader reader(json, "", file.string());
+    reader.checkFormatAndVersion(kFormat, kVersion);
+    Recoverable found;
+    found.file = file;
+    found.savedAt = reader.string("savedAt", "");
+    found.materialPath = reader.string("materialPath", "");
+    found.scenePath = reader.string("scenePath", "");
+    const Json& scene = reader.required("scene");
+    std::vector<std::string> warnings;
+    found.scene = sceneFromJson(scene, file.string() + " (scene)", file.parent_path(), warnings);
+    if (!found.scene.meshFile.empty()) {
+        try {
+            resolveMesh(found.scene);
+        } catch (const std::exception&) {
+            found.scene.meshFile.clear();   // the mesh file went away: the rest is still the work
         }
-        state.recoverable = std::move(found);
-    } catch (const std::exception& error) {
-        state.error = "The last session's autosave could not be read; it is kept as " + file.string() +
-                      ": " + error.what();
     }
+    return found;
+}
+
+// The files in `folder` whose editor is gone, each under its lock, oldest first; errors go to
+// state.error and the file stays where it is.
+std::vector<Recoverable> findLeftBehind(EditorState& state, const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        if (entry.path().extension() == ".json" && entry.path() != state.autosave.file) {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    std::vector<Recoverable> found;
+    for (const std::filesystem::path& file : files) {
+        try {
+            std::shared_ptr<FileLock> lock = FileLock::tryLock(lockFileOf(file));
+            if (!lock) {
+                continue;   // its editor is running: its work is its own
+            }
+            Recoverable recoverable = readRecoverable(file);
+            recoverable.lock = std::move(lock);
+            found.push_back(std::move(recoverable));
+        } catch (const std::exception& error) {
+            state.error += (state.error.empty() ? "" : "\n") +
+                           ("An autosave left by an earlier session could not be read; it is kept as " +
+                            file.string() + ": " + error.what());
+        }
+    }
+    return found;
+}
+
+void offerNext(EditorState& state) {
+    std::vector<Recoverable>& waiting = state.autosave.waiting;
+    state.recoverable.reset();
+    if (!waiting.empty()) {
+        state.recoverable = std::move(waiting.front());
+        waiting.erase(waiting.begin());
+    }
+}
+
+// "editor-PID-MILLISECONDS.json": a name no other editor, running or gone, has used.
+std::filesystem::path ownFile(const std::filesystem::path& folder) {
+    const auto now = std::chrono::system_clock::now().time_since_epoch();
+    const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(now).count();
+    std::filesystem::path file = folder / ("editor-" + std::to_string(::getpid()) + "-" + std::to_string(ms) + ".json");
+    for (int n = 2; std::filesystem::exists(file) || std::filesystem::exists(lockFileOf(file)); ++n) {
+        file = folder / ("editor-" + std::to_string(::getpid()) + "-" + std::to_string(ms) + "-" + std::to_string(n) + ".json");
+    }
+    return file;
+}
+}  // namespace
+
+void startAutosave(EditorState& state, const std::filesystem::path& folder) {
+    state.autosave = Autosave{};
+    state.recoverable.reset();
+    try {
+        std::filesystem::create_directories(folder);
+        state.autosave.file = ownFile(folder);
+        state.autosave.lock = FileLock::tryLock(lockFileOf(state.autosave.file));
+        if (!state.autosave.lock) {
+            throw std::runtime_error(state.autosave.file.string() + " is locked by another editor");
+        }
+        // The one file that editors before per-editor files shared: offered like any other.
+        std::error_code ignored;
+        const std::filesystem::path shared = folder.parent_path() / "autosave.json";
+        if (std::filesystem::exists(shared, ignored) && !std::filesystem::exists(folder / "editor-shared.json", ignored)) {
+            std::filesystem::rename(shared, folder / "editor-shared.json", ignored);
+        }
+    } catch (const std::exception& error) {
+        state.autosave.file.clear();
+        state.error += (state.error.empty() ? "" : "\n") +
+                       ("Autosave is off (your work is not being kept for crash recovery): " + std::string(error.what()));
+    }
+    state.autosave.written = autosaveText(state);
+    state.autosave.waiting = findLeftBehind(state, folder);
+    offerNext(state);
 }
 
 std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, AutosaveClock::time_point now) {
     Autosave& autosave = state.autosave;
-    if (autosave.file.empty() || state.recoverable) {
+    if (autosave.file.empty()) {
         return std::nullopt;
     }
     std::string text = autosaveText(state);
@@ -110,46 +212,57 @@ std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, Auto
     return std::nullopt;
 }
 
-void restoreRecoverable(EditorState& state) {
-    if (!state.recoverable) {
-        return;
-    }
-    const Recoverable found = std::move(*state.recoverable);
-    state.recoverable.reset();
-    applyScene(state, found.scene);
-    commitEdits(state);   // one undo step back to what was there before
-    state.materialPath = found.materialPath;
-    state.scenePath = found.scenePath;
-    // As for the material below: the scene file on disk, if there is one, is what is saved.
+namespace {
+// What is on disk of the restored work's files, against which it is unsaved; a new document's
+// scene where it had none.
+void compareWithItsFiles(EditorState& state, const Recoverable& found) {
+    std::vector<std::string> warnings;
+    state.savedScene = startingScene();
     if (!found.scenePath.empty()) {
         try {
-            std::vector<std::string> warnings;
             state.savedScene = loadSceneFile(found.scenePath, warnings);
         } catch (const std::exception&) {
         }
     }
-    // The file on disk decides whether the restored material is saved; without one, it is
-    // compared with what the editor started with, as always.
+    state.savedMaterial = state.savedScene.material;
     if (!found.materialPath.empty()) {
         try {
-            std::vector<std::string> warnings;
             state.savedMaterial = loadMaterialFile(found.materialPath, warnings);
         } catch (const std::exception&) {
         }
     }
+}
+}  // namespace
+
+void restoreRecoverable(EditorState& state) {
+    if (!state.recoverable) {
+        return;
+    }
+    Recoverable found = std::move(*state.recoverable);
+    startDocument(state, found.scene, found.scenePath, found.materialPath);
+    compareWithItsFiles(state, found);
     state.status = "Restored the work autosaved " + found.savedAt;
+    // Kept in this editor's own file before the old one goes, so a crash now loses nothing.
+    if (!state.autosave.file.empty()) {
+        write(state, autosaveText(state));
+        state.autosave.pending.clear();
+    }
+    if (!state.autosave.failed) {
+        removeLocked(found.file, found.lock);
+    }
+    offerNext(state);
 }
 
 void discardRecoverable(EditorState& state) {
-    state.recoverable.reset();
-    removeAutosave(state);
-    state.autosave.written = autosaveText(state);
+    if (state.recoverable) {
+        removeLocked(state.recoverable->file, state.recoverable->lock);
+    }
+    offerNext(state);
 }
 
 void removeAutosave(EditorState& state) {
     if (!state.autosave.file.empty()) {
-        std::error_code ignored;
-        std::filesystem::remove(state.autosave.file, ignored);
+        removeLocked(state.autosave.file, state.autosave.lock);
     }
 }
 

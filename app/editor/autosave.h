@@ -1,11 +1,16 @@
 #pragma once
 // Crash recovery: the working scene (material, lights, camera, display, mesh) written
 // atomically a few seconds after it last changed, and offered back at the next start when the
-// editor did not close normally. A clean quit removes the file.
+// editor that wrote it did not close normally. Each running editor writes its own file in the
+// autosave folder and holds a lock beside it while it runs: a file whose lock is free was left
+// by an editor that is gone, and only such a file is offered, or ever deleted, by another. A
+// clean quit removes its own file.
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -17,39 +22,62 @@ using AutosaveClock = std::chrono::steady_clock;
 // How long the scene must hold still before it is written: a slider drag writes once, after.
 inline constexpr std::chrono::milliseconds kAutosaveDelay{2000};
 
-struct Autosave {
-    std::filesystem::path file;   // empty: no autosave (tests, or no config folder)
-    std::string written;          // the text the file holds, or the state's at start
-    std::string pending;          // a change not yet written
-    AutosaveClock::time_point changedAt{};
-    bool failed = false;          // the last write failed (said once in EditorState::error)
+// An exclusive flock(2) on a file, held until the last copy goes; the kernel lets it go when
+// the process ends in any way, SIGKILL included.
+class FileLock {
+public:
+    // The lock on `path` (created when missing), or null when another process holds it.
+    // Throws std::runtime_error when the file cannot be opened.
+    static std::shared_ptr<FileLock> tryLock(const std::filesystem::path& path);
+    ~FileLock();
+    FileLock(const FileLock&) = delete;
+    FileLock& operator=(const FileLock&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    FileLock(std::filesystem::path path, int fd) : path_(std::move(path)), fd_(fd) {}
+    std::filesystem::path path_;
+    int fd_;
 };
 
-// What the last session left, offered until restored or discarded.
+// What an editor that is gone left, offered until restored or discarded.
 struct Recoverable {
     Scene scene;                          // its mesh resolved when it has a file
     std::filesystem::path materialPath;   // where its material was saved, if anywhere
     std::filesystem::path scenePath;      // the scene file it was, if any
     std::string savedAt;                  // local time, for the prompt
+    std::filesystem::path file;           // the autosave it was read from
+    std::shared_ptr<FileLock> lock;       // held while offered: no other editor offers it too
+};
+
+struct Autosave {
+    std::filesystem::path file;   // this editor's own; empty: no autosave (no config folder)
+    std::shared_ptr<FileLock> lock;
+    std::string written;          // the text the file holds, or the state's at start
+    std::string pending;          // a change not yet written
+    AutosaveClock::time_point changedAt{};
+    bool failed = false;          // the last write failed (said once in EditorState::error)
+    std::vector<Recoverable> waiting;   // found at start, offered after EditorState::recoverable
 };
 
 // The autosave document: {"format": "patina-autosave", "version": 1, "savedAt", "materialPath",
 // "scenePath", "scene": a scene file's object}.
 std::string autosaveText(const EditorState& state);
 
-// At start, before any edit: remembers the state as it is (nothing to write yet) and, when the
-// file holds another session's work, offers it (EditorState::recoverable). A file that cannot be
-// read is reported in EditorState::error and left for the user.
-void startAutosave(EditorState& state, const std::filesystem::path& file);
+// At start, before any edit: takes a file of its own in `folder` (made when missing) under its
+// lock, remembers the state as it is (nothing to write yet) and offers each file there whose
+// editor is gone (EditorState::recoverable, one at a time). A file that cannot be read is
+// reported in EditorState::error and left for the user; a file of a running editor is left alone.
+void startAutosave(EditorState& state, const std::filesystem::path& folder);
 // Once a frame: notes a change and writes it when it has held still kAutosaveDelay. Returns how
-// long until that write, or nothing when none waits (for the event loop's timeout). Writes
-// nothing while a recoverable session is offered: the file still holds it.
+// long until that write, or nothing when none waits (for the event loop's timeout).
 std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, AutosaveClock::time_point now);
-// The offered session becomes the edited one (one undo step back to what was there), or is
-// dropped; either way the file then follows this session.
+// The offered work becomes the edited document (its own paths and history), kept at once in
+// this editor's file; its old file is then deleted. Discard deletes that file. Either way the
+// next file found is offered.
 void restoreRecoverable(EditorState& state);
 void discardRecoverable(EditorState& state);
-// A clean quit: nothing is left to recover.
+// A clean quit: this editor's file and lock are removed; nothing is left to recover.
 void removeAutosave(EditorState& state);
 
 }  // namespace patina::editor

@@ -1,5 +1,6 @@
 #include "editor_app.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -54,6 +55,11 @@ void onDrop(GLFWwindow* window, int count, const char** paths) {
 // After input, ImGui needs a couple of frames to settle (hover, popups): draw this many more,
 // then sleep in glfwWaitEvents until the next event.
 constexpr int kFramesAfterInput = 3;
+
+std::optional<std::chrono::milliseconds> earliest(std::optional<std::chrono::milliseconds> a,
+                                                  std::optional<std::chrono::milliseconds> b) {
+    return a && b ? std::min(*a, *b) : a ? a : b;
+}
 }  // namespace
 
 int runEditor(const EditorOptions& options) {
@@ -110,20 +116,23 @@ int runEditor(const EditorOptions& options) {
     {
         EditorServices services;
         openFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
-        startAutosave(state, configFolder() / "autosave.json");
+        startAutosave(state, configFolder() / "autosave");
         const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
         std::string title;
         int framesLeft = kFramesAfterInput;
         float appliedScale = 0.0f;   // none yet
-        std::optional<std::chrono::milliseconds> autosaveDue;
+        std::optional<std::chrono::milliseconds> autosaveDue, settingsDue;
+        SettingsWriter settingsWriter(state, geometry, settingsFile);
+        std::string shownMessages = state.status + '\n' + state.error;
         FrameStats stats(options.stats ? &std::cerr : nullptr, options.start);
         while (!state.quitConfirmed) {
             if (framesLeft <= 0) {
-                // Asleep until input, or until a change waiting to be autosaved is due.
+                // Asleep until input, or until a change waiting to be written is due.
+                const std::optional<std::chrono::milliseconds> due = earliest(autosaveDue, settingsDue);
                 if (state.environmentLoad) {
                     glfwWaitEventsTimeout(0.1);   // the load's progress, and its end, are shown
-                } else if (autosaveDue) {
-                    glfwWaitEventsTimeout(std::chrono::duration<double>(*autosaveDue).count() + 0.01);
+                } else if (due) {
+                    glfwWaitEventsTimeout(std::chrono::duration<double>(*due).count() + 0.01);
                 } else {
                     glfwWaitEvents();
                 }
@@ -137,10 +146,11 @@ int runEditor(const EditorOptions& options) {
                 glfwSetWindowShouldClose(window, GLFW_FALSE);
                 state.pendingQuit = true;
             }
-            for (const std::filesystem::path& path : input.droppedFiles) {
-                requestOpen(state, path);
+            // A file dropped while a prompt is up waits for it: nothing edits the document behind one.
+            while (!input.droppedFiles.empty() && !promptOpen(state)) {
+                requestOpen(state, input.droppedFiles.front());
+                input.droppedFiles.erase(input.droppedFiles.begin());
             }
-            input.droppedFiles.clear();
             services.keyPresses.swap(input.keyPresses);
             input.keyPresses.clear();
             // The UI's scale follows the monitor the window is on and the View menu's setting;
@@ -195,10 +205,17 @@ int runEditor(const EditorOptions& options) {
                 }
             }
             autosaveDue = updateAutosave(state, AutosaveClock::now());
+            glfwGetWindowSize(window, &geometry.width, &geometry.height);
+            settingsDue = settingsWriter.update(state, geometry, SettingsWriter::Clock::now());
+            // A message set during this frame (a failed screenshot, an autosave error) is drawn
+            // now, not when the next input happens to wake the loop.
+            if (std::string messages = state.status + '\n' + state.error; messages != shownMessages) {
+                shownMessages = std::move(messages);
+                framesLeft = std::max(framesLeft, kFramesAfterInput);
+            }
         }
         removeAutosave(state);   // a clean quit: nothing to recover
         stats.finish();
-        glfwGetWindowSize(window, &geometry.width, &geometry.height);
         if (!saveSettings(state, geometry, settingsFile)) {
             std::cerr << "warning: " << state.error << "\n";
         }

@@ -12,6 +12,7 @@
 #include "io/file_bytes.h"
 #include "preview_scene.h"
 #include "save_errors.h"
+#include "screenshot_comparison.h"
 
 namespace patina::editor {
 
@@ -67,6 +68,7 @@ RenderOutput EditorServices::renderImage(const Scene& scene, int width, int heig
     settings.path = passes;
     settings.environment = environmentShading;
     settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
+    settings.maxTargetBytes = kOneOffTargetBytes;   // any size `patina render` takes
     return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
 }
 
@@ -164,7 +166,11 @@ std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& sta
         std::filesystem::create_directories(state.screenshotFolder);   // a folder set but not made yet
         path = std::filesystem::absolute(screenshotPath(state.screenshotFolder, state.scene.material.name))
                    .lexically_normal();
-        writeFileAtomic(path, encodePngWithText(image, {{kSceneTextKeyword, sceneToJson(state.scene).dump()}}));
+        std::vector<std::pair<std::string, std::string>> text{{kSceneTextKeyword, sceneToJson(state.scene).dump()}};
+        if (const std::string comparison = comparisonText(state); !comparison.empty()) {
+            text.emplace_back(kComparisonTextKeyword, comparison);   // reopens as the comparison shown
+        }
+        writeFileAtomic(path, encodePngWithText(image, text));
         state.status = "Screenshot saved: " + path.string();
         state.lastScreenshot = path;
         return path;

@@ -69,34 +69,81 @@ void loadSettings(EditorState& state, WindowGeometry& window, const std::filesys
     }
 }
 
-bool saveSettings(EditorState& state, const WindowGeometry& window, const std::filesystem::path& file) {
+namespace {
+// The preferences (what a change of writes the file at once) and, with `session`, the material
+// a new session resumes with.
+Json settingsJson(const EditorState& state, const WindowGeometry& window, bool session) {
     Json recent = Json::array();
     for (const std::filesystem::path& path : state.recentFiles) {
         recent.push_back(path.string());
     }
-    const Json json{{"windowWidth", window.width},
-                    {"windowHeight", window.height},
-                    {"leftPanelWidth", state.layout.leftWidth},
-                    {"rightPanelWidth", state.layout.rightWidth},
-                    {"lobePanelHeight", state.layout.lobeHeight},
-                    {"uiScale", state.uiScaleSetting},
-                    {"showLightGizmos", state.showGizmos},
-                    {"showAdvanced", state.showAdvanced},
-                    {"screenshotFolder", state.screenshotFolder.string()},
-                    {"recentFiles", recent},
-                    // The material as it is now (saved or not), and where it was saved, so a
-                    // new session resumes; "dirty" is not restored: the file on disk decides.
-                    {"lastMaterial", materialToJson(state.scene.material)},
-                    {"lastMaterialPath", state.materialPath.string()}};
+    Json json{{"windowWidth", window.width},
+              {"windowHeight", window.height},
+              {"leftPanelWidth", state.layout.leftWidth},
+              {"rightPanelWidth", state.layout.rightWidth},
+              {"lobePanelHeight", state.layout.lobeHeight},
+              {"uiScale", state.uiScaleSetting},
+              {"showLightGizmos", state.showGizmos},
+              {"showAdvanced", state.showAdvanced},
+              {"screenshotFolder", state.screenshotFolder.string()},
+              {"recentFiles", recent}};
+    if (session) {
+        // The material as it is now (saved or not), and where it was saved, so a new session
+        // resumes; "dirty" is not restored: the file on disk decides.
+        json["lastMaterial"] = materialToJson(state.scene.material);
+        json["lastMaterialPath"] = state.materialPath.string();
+    }
+    return json;
+}
+
+// Atomically: a crash while writing leaves the old file.
+
+void writeSettings(const EditorState& state, const WindowGeometry& window, const std::filesystem::path& file) {
+    std::filesystem::create_directories(file.parent_path());
+    const std::string text = prettyJson(settingsJson(state, window, true));
+    writeFileAtomic(file, std::vector<uint8_t>(text.begin(), text.end()));
+}
+}  // namespace
+
+bool saveSettings(EditorState& state, const WindowGeometry& window, const std::filesystem::path& file) {
     try {
-        std::filesystem::create_directories(file.parent_path());
-        const std::string text = prettyJson(json);
-        writeFileAtomic(file, std::vector<uint8_t>(text.begin(), text.end()));
+        writeSettings(state, window, file);
         return true;
     } catch (const std::exception& error) {
         state.error = couldNotSave(file, error);
         return false;
     }
+}
+
+SettingsWriter::SettingsWriter(const EditorState& state, const WindowGeometry& window, std::filesystem::path file)
+    : file_(std::move(file)), written_(settingsJson(state, window, false).dump()) {}
+
+std::optional<std::chrono::milliseconds> SettingsWriter::update(EditorState& state, const WindowGeometry& window,
+                                                                Clock::time_point now) {
+    std::string text = settingsJson(state, window, false).dump();
+    if (text == written_) {
+        pending_.clear();
+        return std::nullopt;
+    }
+    if (text != pending_) {
+        pending_ = std::move(text);
+        changedAt_ = now;
+    }
+    if (now < changedAt_ + kSettingsDelay) {
+        return std::chrono::ceil<std::chrono::milliseconds>(changedAt_ + kSettingsDelay - now);
+    }
+    try {
+        writeSettings(state, window, file_);
+        failed_ = false;
+    } catch (const std::exception& error) {
+        if (!failed_) {   // said once: a folder that cannot be written is not news at each change
+            state.error = couldNotSave(file_, error);
+        }
+        failed_ = true;
+    }
+    written_ = std::move(pending_);
+    pending_.clear();
+    return std::nullopt;
 }
 
 }  // namespace patina::editor

@@ -1,5 +1,8 @@
 #pragma once
+#include <chrono>
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "editor_state.h"
 
@@ -23,7 +26,30 @@ std::filesystem::path configFolder();
 // Missing or unreadable settings leave the defaults (a bad file is reported in state.error,
 // never fatal).
 void loadSettings(EditorState& state, WindowGeometry& window, const std::filesystem::path& file);
-// Returns false (and sets state.error) when the file cannot be written.
+// Returns false (and sets state.error) when the file cannot be written. Atomic.
 bool saveSettings(EditorState& state, const WindowGeometry& window, const std::filesystem::path& file);
+
+// How long a preference must hold still before it is written: a window resize writes once.
+inline constexpr std::chrono::milliseconds kSettingsDelay{500};
+
+// Writes the settings whenever a preference changes (window size, panels, recent files, ...),
+// not only at a clean quit, so a crash keeps them. The material a session resumes with goes
+// along but is no reason to write: crash recovery (autosave.h) keeps the work.
+class SettingsWriter {
+public:
+    using Clock = std::chrono::steady_clock;
+    // `state` and `window` as loaded: nothing to write yet.
+    SettingsWriter(const EditorState& state, const WindowGeometry& window, std::filesystem::path file);
+    // Once a frame; how long until a waiting write, or nothing (for the event loop's timeout).
+    // A failed write is said once in state.error.
+    std::optional<std::chrono::milliseconds> update(EditorState& state, const WindowGeometry& window,
+                                                    Clock::time_point now);
+
+private:
+    std::filesystem::path file_;
+    std::string written_, pending_;
+    Clock::time_point changedAt_{};
+    bool failed_ = false;
+};
 
 }  // namespace patina::editor

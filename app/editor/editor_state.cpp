@@ -11,6 +11,7 @@
 #include "io/scene_file.h"
 #include "shading/shading.h"
 #include "save_errors.h"
+#include "screenshot_comparison.h"
 
 namespace patina::editor {
 
@@ -81,6 +82,7 @@ namespace {
 void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.material = snapshot.material;
     state.scene.lights = snapshot.lights;
+    state.scene.display = snapshot.display;
     state.committed = snapshot;
     const int count = int(state.scene.lights.size());
     state.selectedLight = std::clamp(state.selectedLight, count ? 0 : -1, count - 1);
@@ -249,24 +251,6 @@ void frameMesh(EditorState& state) {
     frameCamera(state.scene.camera, bounds.center, std::max(bounds.radius, 1e-3f));
 }
 
-void applyScene(EditorState& state, const Scene& scene) {
-    applyEdit(state, [&](EditorState& s) {
-        s.scene.material = scene.material;
-        s.scene.lights = scene.lights;
-    });
-    // Camera, mesh, display and the file's unknown keys are views, not edits: they follow the
-    // file.
-    state.scene.camera = scene.camera;
-    state.scene.mesh = scene.mesh;
-    state.scene.meshFile = scene.meshFile;
-    state.scene.resolvedMesh = scene.resolvedMesh;
-    state.scene.resolvedEnvironment = scene.resolvedEnvironment;
-    state.scene.display = scene.display;
-    state.scene.extras = scene.extras;
-    state.soloLight = -1;
-    state.selectedLight = state.scene.lights.empty() ? -1 : 0;
-}
-
 namespace {
 // "; 2 more materials and 3 textures not used (Patina reads the first material's factors)".
 std::string unusedParts(const GltfImport& imported) {
@@ -409,59 +393,134 @@ bool isPreset(const EditorState& state, const std::filesystem::path& path) {
     });
 }
 
-bool openFile(EditorState& state, const std::filesystem::path& path) {
+Scene startingScene() {
+    // The default scene under a tone map that keeps highlights (a file's own choice replaces it).
+    Scene editing = defaultScene();
+    editing.display.tonemap = Tonemap::PbrNeutral;
+    return editing;
+}
+
+void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
+                   const std::filesystem::path& materialPath) {
+    state.scene = scene;
+    state.scenePath = scenePath;
+    state.materialPath = materialPath;
+    state.savedScene = scene;
+    state.savedMaterial = scene.material;
+    state.history = UndoHistory();   // the last document's steps would restore its content under this path
+    state.committed = state.snapshot();
+    state.selectedLight = scene.lights.empty() ? -1 : 0;
+    state.soloLight = -1;
+    state.draggedLight = -1;
+    // An environment still being prepared was chosen for the last document.
+    state.environmentLoad.reset();
+    state.environmentFailed.clear();
+}
+
+void newDocument(EditorState& state) {
+    startDocument(state, startingScene(), {}, {});
+    state.error.clear();
+    state.status = "New scene";
+}
+
+void requestNew(EditorState& state) {
+    if (state.dirty()) {
+        state.pendingNew = true;
+    } else {
+        newDocument(state);
+    }
+}
+
+bool promptOpen(const EditorState& state) {
+    return state.recoverable.has_value() || state.pendingOpen.has_value() || state.pendingNew ||
+           state.pendingQuit || state.pathDialog != EditorState::PathDialog::None;
+}
+
+namespace {
+// A scene, material or screenshot file, read and checked before anything changes.
+struct DocumentFile {
+    std::optional<Scene> scene;          // a scene file or a screenshot: mesh and environment resolved
+    std::optional<Material> material;    // a material file
+    std::optional<ScreenshotComparison> comparison;   // a screenshot's A and view
+    std::vector<std::string> warnings;
+};
+
+DocumentFile readDocumentFile(const std::filesystem::path& path) {
     std::error_code kind;
     if (std::filesystem::is_directory(path, kind)) {
-        state.error = path.string() + " is a folder: open a material, scene, screenshot (.png) or glTF (.gltf, .glb) file";
-        return false;
+        throw InputError(path.string() +
+                         " is a folder: open a material, scene, screenshot (.png) or glTF (.gltf, .glb) file");
     }
+    DocumentFile file;
+    if (path.extension() == ".png") {
+        file.scene = sceneFromPng(path, file.warnings);
+        if (!file.scene) {
+            throw InputError(path.string() + ": this PNG holds no Patina scene");
+        }
+        file.comparison = comparisonFromPng(path);
+    } else {
+        const Json json = readJsonFile(path);
+        if (json.is_object() && json.value("format", Json()) == "patina-scene") {
+            file.scene = sceneFromJson(json, path.string(), path.parent_path(), file.warnings);
+        } else {
+            file.material = materialFromJson(json, "", path.string(), true, file.warnings);
+        }
+    }
+    // A scene's glTF and environment are read now, so a missing or bad one fails the open
+    // instead of every later frame.
+    if (file.scene) {
+        resolveMesh(*file.scene);
+        resolveEnvironment(*file.scene, file.warnings);
+    }
+    return file;
+}
+
+// Whether opening `path` starts a new document (a scene, a screenshot, a material file) rather
+// than editing the open one (a preset, a mesh, an environment image).
+bool startsADocument(const EditorState& state, const std::filesystem::path& path) {
+    const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
+    return !environment && gltfExtension(path).empty() && !isPreset(state, path);
+}
+
+void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
+    if (file.scene) {
+        // A scene file is the document; a screenshot's scene is not a file to save into.
+        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {});
+        // A screenshot reopens as what it shows: a comparison with its A, view and split, or
+        // a single view.
+        if (path.extension() == ".png") {
+            state.compareView = CompareView::Single;
+        }
+        if (file.comparison) {
+            state.compareA = file.comparison->a;
+            state.compareView = file.comparison->view;
+            state.splitPosition = file.comparison->split;
+        }
+    } else if (isPreset(state, path)) {
+        // A preset is a template: an undoable edit of the material; Save never writes into it
+        // (Save as preset does, when asked to).
+        applyEdit(state, [&](EditorState& s) { s.scene.material = *file.material; });
+    } else {
+        Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
+        scene.material = *file.material;
+        startDocument(state, scene, {}, path);
+    }
+    state.error.clear();
+    state.status = "Opened " + path.filename().string() +
+                   (file.warnings.empty() ? "" : "\n" + joinWarnings(file.warnings));
+    rememberRecent(state, path);
+}
+}  // namespace
+
+bool openFile(EditorState& state, const std::filesystem::path& path) {
     if (!gltfExtension(path).empty()) {
         return openMesh(state, path);
     }
     if (path.extension() == ".hdr" || path.extension() == ".exr") {
         return setEnvironmentSource(state, std::filesystem::absolute(path).lexically_normal().string());
     }
-    std::vector<std::string> warnings;
     try {
-        std::optional<Scene> scene;
-        std::optional<Material> material;
-        if (path.extension() == ".png") {
-            scene = sceneFromPng(path, warnings);
-            if (!scene) {
-                throw InputError(path.string() + ": this PNG holds no Patina scene");
-            }
-        } else {
-            const Json json = readJsonFile(path);
-            const bool isScene = json.is_object() && json.value("format", Json()) == "patina-scene";
-            if (isScene) {
-                scene = sceneFromJson(json, path.string(), path.parent_path(), warnings);
-            } else {
-                material = materialFromJson(json, "", path.string(), true, warnings);
-            }
-        }
-        // A scene's glTF is read now, before anything changes, so a missing or bad one fails
-        // the open instead of every later frame.
-        if (scene) {
-            resolveMesh(*scene);
-            resolveEnvironment(*scene, warnings);
-        }
-        if (scene) {
-            applyScene(state, *scene);
-            state.materialPath.clear();
-            // A scene file is the document; a screenshot's scene is not a file to save into.
-            state.scenePath = path.extension() == ".png" ? std::filesystem::path() : path;
-            state.savedScene = state.scene;
-        } else {
-            applyEdit(state, [&](EditorState& s) { s.scene.material = *material; });
-            // A preset is a template: the material takes its values, but Save never writes
-            // into the preset (Save as preset does, when asked to).
-            state.materialPath = isPreset(state, path) ? std::filesystem::path() : path;
-        }
-        state.savedMaterial = state.scene.material;
-        state.error.clear();
-        state.status = "Opened " + path.filename().string() +
-                       (warnings.empty() ? "" : "\n" + joinWarnings(warnings));
-        rememberRecent(state, path);
+        applyDocumentFile(state, path, readDocumentFile(path));
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();
@@ -472,7 +531,9 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
 bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths) {
     std::string errors;
     for (const std::filesystem::path& path : paths) {
-        if (!openFile(state, path)) {
+        // An environment image is prepared on a worker; here it is waited for, so that its error
+        // joins the others instead of replacing them when it arrives.
+        if (!openFile(state, path) || (state.environmentLoad && !finishEnvironmentLoad(state, true))) {
             errors += (errors.empty() ? "" : "\n") + state.error;
         }
     }
@@ -480,37 +541,25 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
     return errors.empty();
 }
 
-namespace {
-// Whether opening `path` replaces the whole scene (a scene file or a screenshot) rather than
-// the material alone; a file that cannot be read counts as a scene (its open fails anyway).
-bool replacesTheScene(const std::filesystem::path& path) {
-    if (path.extension() == ".png") {
-        return true;
-    }
-    if (path.extension() != ".json") {
-        return false;   // a mesh or an environment image: one part, undoably
-    }
-    try {
-        const Json json = readJsonFile(path);
-        return !json.is_object() || json.value("format", Json()) == "patina-scene";
-    } catch (const std::exception&) {
-        return true;
-    }
-}
-}  // namespace
-
 void requestOpen(EditorState& state, const std::filesystem::path& path) {
-    // An environment image or a mesh changes one part, undoably, and a material file the
-    // material alone: only what it replaces can be lost, so only that asks first.
-    const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
-    const bool unsaved = replacesTheScene(path) ? state.dirty() : state.materialChanged();
-    if (unsaved && !environment && gltfExtension(path).empty()) {
+    if (!startsADocument(state, path)) {
+        openFile(state, path);   // undoable: nothing can be lost
+        return;
+    }
+    // The file is checked before anything is asked: a missing or broken one says so at once.
+    DocumentFile file;
+    try {
+        file = readDocumentFile(path);
+    } catch (const std::exception& error) {
+        state.error = error.what();
+        return;
+    }
+    if (state.dirty()) {
         state.pendingOpen = path;
     } else {
-        openFile(state, path);
+        applyDocumentFile(state, path, std::move(file));
     }
 }
-
 
 bool saveScene(EditorState& state, const std::filesystem::path& path) {
     commitEdits(state);

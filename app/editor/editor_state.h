@@ -34,15 +34,14 @@ struct PanelLayout {
     float lobeHeight = 260.0f;
 };
 
+// The scene the editor starts with, and File > New makes.
+Scene startingScene();
+
 // Everything the editor shows is a function of this state; panels read it, draw widgets and
 // write it back. No ImGui or GL types here, so it is tested without a window.
 struct EditorState {
     // The default scene under a tone map that keeps highlights (a file's own choice replaces it).
-    Scene scene = [] {
-        Scene editing = defaultScene();
-        editing.display.tonemap = Tonemap::PbrNeutral;
-        return editing;
-    }();
+    Scene scene = startingScene();
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
     // The scene as a document: where it was opened from or saved to (empty: none), and the
@@ -89,6 +88,7 @@ struct EditorState {
     std::string error;                       // shown until dismissed
     std::string status;                      // last completed action
     std::optional<std::filesystem::path> pendingOpen;   // waits for "discard changes?"
+    bool pendingNew = false;                            // File > New, waiting likewise
     // An environment file that could not be loaded for the light naming it (its error shown
     // once, not every frame); cleared when a load succeeds.
     std::string environmentFailed;
@@ -106,7 +106,7 @@ struct EditorState {
     bool materialChanged() const { return scene.material != savedMaterial; }
     bool sceneChanged() const;
     bool dirty() const { return materialChanged() || sceneChanged(); }
-    EditSnapshot snapshot() const { return {scene.material, scene.lights}; }
+    EditSnapshot snapshot() const { return {scene.material, scene.lights, scene.display}; }
 };
 
 // The window title: the document's file name (the scene's, else the material's, else the
@@ -162,17 +162,31 @@ Scene renderedScene(const EditorState& state);
 void frameMesh(EditorState& state);
 Scene withMaterial(const EditorState& state, const Material& material);
 
-// --- Files -------------------------------------------------------------------------------
-// Makes `scene` (its mesh resolved) the one edited: material and lights as one undoable edit,
-// camera, mesh and display as views.
-void applyScene(EditorState& state, const Scene& scene);
-// Opens a material, scene or Patina screenshot (PNG with an embedded scene), undoably, or a
-// .gltf/.glb mesh (shown instead of the sphere, the camera framed on it). A file that fails to
-// load sets state.error and changes nothing else.
+// --- The document ------------------------------------------------------------------------
+// Opening a scene, a material file or a screenshot starts a new document, as in every editor:
+// its own path, its own undo history, and its content as what is saved, which Reset and the
+// unsaved mark compare with. Applying a preset, a mesh or an environment is an undoable edit of
+// the document that is open.
+//
+// Makes `scene` (its mesh and environment resolved) the document, saved at `scenePath` (a scene
+// file) or `materialPath` (a material file), or neither.
+void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
+                   const std::filesystem::path& materialPath);
+// File > New: the default scene as a document with no file.
+void newDocument(EditorState& state);
+// Asks first (state.pendingNew) when anything is unsaved; else starts it.
+void requestNew(EditorState& state);
+// Opens a material, scene or Patina screenshot (PNG with an embedded scene, its comparison A
+// too) as a new document, a preset as an undoable edit of the material, or a .gltf/.glb mesh
+// (shown instead of the sphere, the camera framed on it) or an environment image. A file that
+// fails to load sets state.error and changes nothing else.
 bool openFile(EditorState& state, const std::filesystem::path& path);
-// Asks first (state.pendingOpen) when what the file replaces is unsaved: the whole document for
-// a scene or a screenshot, the material for a material file; else opens.
+// Reads the file first: one that cannot be opened says why and asks nothing. Then, when it
+// starts a new document and the one open is unsaved, asks first (state.pendingOpen); else opens.
 void requestOpen(EditorState& state, const std::filesystem::path& path);
+// Whether a prompt is up (restore, unsaved changes, a path): nothing edits the document behind
+// it, neither a shortcut nor a dropped file.
+bool promptOpen(const EditorState& state);
 // Whether `path` is a file of one of the preset folders: opened, it is a template (Save writes
 // the document, never the preset's file).
 bool isPreset(const EditorState& state, const std::filesystem::path& path);

@@ -4,6 +4,7 @@
 // Key codes are GLFW's (letters are their ASCII capitals). Headless tests press the same.
 namespace patina::editor {
 constexpr int kKeyF = 'F';
+constexpr int kKeyN = 'N';
 constexpr int kKeyO = 'O';
 constexpr int kKeyQ = 'Q';
 constexpr int kKeyS = 'S';

@@ -14,6 +14,8 @@
 namespace patina::editor {
 
 namespace {
+constexpr int kLargestScreenshot = 16384;
+
 void saveAs(EditorState& state) {
     startPathDialog(state, EditorState::PathDialog::SaveAs,
                     state.materialPath.empty() ? std::filesystem::path(state.scene.material.name + ".json")
@@ -75,6 +77,10 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         recordItem("menu:File");   // while open, the last item is the menu's window
     }
     if (fileMenu) {
+        if (ImGui::MenuItem("New", "Ctrl+N")) {
+            requestNew(state);
+        }
+        recordItem("New", "A new scene: the default sphere, lights and material, saved nowhere yet");
         if (ImGui::MenuItem("Open...", "Ctrl+O")) {
             startPathDialog(state, EditorState::PathDialog::Open, state.materialPath.parent_path() / "");
         }
@@ -164,8 +170,9 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         ImGui::SetNextItemWidth(px(90));
         ImGui::InputInt("Screenshot height (0: viewport)", &state.screenshotHeight);
         recordItem("Screenshot height", "Screenshots this many pixels high; 0: as high as the viewport");
-        state.screenshotWidth = std::clamp(state.screenshotWidth, 0, 8192);
-        state.screenshotHeight = std::clamp(state.screenshotHeight, 0, 8192);
+        // What `patina render` takes: the renderer says at once when the GL cannot.
+        state.screenshotWidth = std::clamp(state.screenshotWidth, 0, kLargestScreenshot);
+        state.screenshotHeight = std::clamp(state.screenshotHeight, 0, kLargestScreenshot);
         std::string folder = state.screenshotFolder.string();
         if (inputString("Screenshot folder", &folder)) {
             state.screenshotFolder = folder;
@@ -199,6 +206,17 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
         return;   // typing a name or a path: keys are text
     }
     const KeyPresses& keys = services.keyPresses;
+    if (promptOpen(state)) {
+        // Nothing edits the document behind a prompt: Ctrl+Z or Ctrl+O there once undid or
+        // replaced what the prompt was asking about. F1 still shows the shortcuts.
+        if (pressed(keys, kKeyF1)) {
+            state.showShortcuts = !state.showShortcuts;
+        }
+        return;
+    }
+    if (pressed(keys, kKeyN, true)) {
+        requestNew(state);
+    }
     if (pressed(keys, kKeyZ, true)) {
         undo(state);
     }
@@ -263,14 +281,17 @@ void drawDialogs(EditorState& state, EditorServices& services) {
 
     // Unsaved changes are never dropped without asking. While a Save as started from the
     // prompt is open, the open or quit waits for it, and goes on once nothing is unsaved.
-    const bool asking = state.pendingOpen.has_value() || state.pendingQuit;
+    const bool asking = state.pendingOpen.has_value() || state.pendingNew || state.pendingQuit;
     auto proceed = [&] {
         if (state.pendingOpen) {
             openFile(state, *state.pendingOpen);
+        } else if (state.pendingNew) {
+            newDocument(state);
         } else {
             state.quitConfirmed = true;
         }
         state.pendingOpen.reset();
+        state.pendingNew = false;
         state.pendingQuit = false;
     };
     if (asking && state.pathDialog == EditorState::PathDialog::None && !ImGui::IsPopupOpen("Unsaved changes")) {
@@ -307,6 +328,7 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         ImGui::SameLine();
         if (ImGui::Button("Cancel")) {
             state.pendingOpen.reset();
+            state.pendingNew = false;
             state.pendingQuit = false;
             ImGui::CloseCurrentPopup();
         }
@@ -320,7 +342,7 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(display.x - px(20), display.y - px(20)));
         if (ImGui::Begin("Shortcuts", &state.showShortcuts, ImGuiWindowFlags_AlwaysAutoResize)) {
             const char* rows[][2] = {
-                {"Ctrl+O", "open a material, scene, screenshot, glTF or environment"},
+                {"Ctrl+N", "new scene"}, {"Ctrl+O", "open a material, scene, screenshot, glTF or environment"},
                 {"Ctrl+S", "save (the scene, if one is open; else the material)"},
                 {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"},
                 {"Ctrl+Shift+Z, Ctrl+Y", "redo"}, {"F12", "screenshot of the viewport"},

@@ -7,11 +7,13 @@
 
 namespace patina::editor {
 
-// What undo restores: the material and the light list (camera and view settings are not
-// edits an artist wants to step back through).
+// What undo restores: the material, the light list and the display settings (exposure, tone
+// map, background), each a choice an artist makes and may want back. The camera is a view, not
+// an edit to step back through.
 struct EditSnapshot {
     Material material;
     std::vector<Light> lights;
+    DisplaySettings display;
 
     bool operator==(const EditSnapshot&) const = default;
 };

@@ -28,6 +28,7 @@ namespace patina::editor {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace std::chrono_literals;
 
 class EditorStateTest : public test::ScratchTest {
 protected:
@@ -184,15 +185,102 @@ TEST_F(EditorStateTest, SoloRendersOneLightWithoutEditingTheScene) {
     EXPECT_EQ(state.soloLight, -1);
 }
 
-TEST_F(EditorStateTest, OpeningAMaterialIsUndoable) {
-    const Material before = state.scene.material;
-    ASSERT_TRUE(openFile(state, writeMaterial("shiny", 0.1f)));
-    EXPECT_EQ(state.scene.material.name, "shiny");
-    EXPECT_EQ(state.materialPath.filename(), "shiny.json");
+// The route: gold saved as b.json, a.json opened, Ctrl+Z. Undo used to bring gold back
+// under a.json's name, and the next Ctrl+S wrote gold into a.json. Opening starts a document of
+// its own: its path, its history.
+TEST_F(EditorStateTest, OpeningAFileStartsANewDocumentThatUndoCannotLeave) {
+    const fs::path a = writeMaterial("a", 0.8f);
+    state.scene.material.name = "gold";
+    state.scene.material.baseColor = {1.0f, 0.71f, 0.29f};
+    state.scene.material.metallic = 1.0f;
+    commitEdits(state);
+    ASSERT_TRUE(saveMaterial(state, dir_ / "b.json"));
+    const std::vector<uint8_t> gold = readFileBytes(dir_ / "b.json");
+
+    ASSERT_TRUE(openFile(state, a)) << state.error;
+    EXPECT_EQ(state.materialPath, a);
     EXPECT_FALSE(state.dirty());
-    EXPECT_EQ(state.recentFiles.front().filename(), "shiny.json");
+    EXPECT_FALSE(state.history.canUndo()) << "a new document has no steps yet";
     undo(state);
-    EXPECT_EQ(state.scene.material, before);
+    EXPECT_EQ(state.scene.material.name, "a") << "undo does not cross into the last document";
+    EXPECT_EQ(windowTitle(state), "a.json - Patina");
+
+    state.scene.material.roughness = 0.5f;   // the nudge, then Ctrl+S
+    commitEdits(state);
+    ASSERT_TRUE(saveMaterial(state, state.materialPath));
+    std::vector<std::string> warnings;
+    const Material saved = loadMaterialFile(a, warnings);
+    EXPECT_EQ(saved.name, "a");
+    EXPECT_EQ(saved.metallic, 0.0f) << "a.json holds a's material, not gold";
+    EXPECT_EQ(saved.roughness, 0.5f);
+    EXPECT_EQ(readFileBytes(dir_ / "b.json"), gold);
+    undo(state);
+    EXPECT_EQ(state.scene.material.roughness, 0.8f) << "the new document's own steps undo";
+}
+
+// Presets are edits of the document: undoable, and Reset still reads the document's own saved
+// state. Loading copper then brick and undoing used to leave brick's values as "the file's".
+TEST_F(EditorStateTest, PresetsAreUndoableEditsAndResetReadsTheDocument) {
+    state.presetFolders = {dir_};
+    const Material document = state.savedMaterial;
+    requestOpen(state, writeMaterial("copper", 0.3f));
+    requestOpen(state, writeMaterial("brick", 0.9f));
+    EXPECT_FALSE(state.pendingOpen.has_value()) << "a preset after a tweak asks nothing: it is undoable";
+    EXPECT_EQ(state.scene.material.name, "brick");
+    undo(state);
+    EXPECT_EQ(state.scene.material.name, "copper");
+    EXPECT_EQ(state.savedMaterial, document) << "what Reset goes back to is the document's";
+    EXPECT_TRUE(state.materialChanged());
+    EXPECT_TRUE(state.materialPath.empty()) << "a preset is never the file Save writes";
+    undo(state);
+    EXPECT_EQ(state.scene.material, document);
+    EXPECT_FALSE(state.dirty());
+}
+
+TEST_F(EditorStateTest, AMissingOrBrokenFileSaysSoBeforeAskingAnything) {
+    state.scene.material.roughness = 0.12f;   // unsaved
+    requestOpen(state, dir_ / "missing.json");
+    EXPECT_FALSE(state.pendingOpen.has_value()) << "nothing to discard work for";
+    EXPECT_NE(state.error.find("missing.json"), std::string::npos) << state.error;
+    std::ofstream(dir_ / "broken.json") << "{ nope";
+    requestOpen(state, dir_ / "broken.json");
+    EXPECT_FALSE(state.pendingOpen.has_value());
+    EXPECT_NE(state.error.find("broken.json"), std::string::npos) << state.error;
+    EXPECT_EQ(state.scene.material.roughness, 0.12f);
+}
+
+TEST_F(EditorStateTest, DisplaySettingsAreUndoneInTurn) {
+    state.scene.lights[0].enabled = false;   // a light toggle, then exposure +8
+    commitEdits(state);
+    state.scene.display.exposure = 8.0f;
+    commitEdits(state);
+    state.scene.display.backgroundFromEnvironment = true;
+    state.scene.display.tonemap = Tonemap::Aces;
+    commitEdits(state);
+    undo(state);
+    EXPECT_FALSE(state.scene.display.backgroundFromEnvironment);
+    EXPECT_EQ(state.scene.display.tonemap, Tonemap::PbrNeutral);
+    EXPECT_EQ(state.scene.display.exposure, 8.0f);
+    undo(state);
+    EXPECT_EQ(state.scene.display.exposure, 0.0f) << "Ctrl+Z undoes the exposure, not the light";
+    EXPECT_FALSE(state.scene.lights[0].enabled);
+    redo(state);
+    EXPECT_EQ(state.scene.display.exposure, 8.0f);
+}
+
+TEST_F(EditorStateTest, NewStartsTheDefaultSceneAndAsksWhenUnsaved) {
+    ASSERT_TRUE(openFile(state, writeMaterial("mine", 0.2f)));
+    requestNew(state);
+    EXPECT_FALSE(state.pendingNew);
+    EXPECT_EQ(state.scene, startingScene());
+    EXPECT_TRUE(state.materialPath.empty());
+    EXPECT_FALSE(state.dirty());
+    EXPECT_FALSE(state.history.canUndo());
+    state.scene.material.roughness = 0.05f;
+    requestNew(state);
+    EXPECT_TRUE(state.pendingNew) << "unsaved work is never dropped without asking";
+    EXPECT_TRUE(promptOpen(state));
+    EXPECT_EQ(state.scene.material.roughness, 0.05f);
 }
 
 TEST_F(EditorStateTest, ABadFileChangesNothingAndSaysWhy) {
@@ -314,6 +402,51 @@ TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
     EXPECT_EQ(broken.scene.material, defaultScene().material);
 }
 
+// settings.json used to be written only at a clean quit: after a crash the window size and
+// the recent files were gone. A change is written once it holds still, atomically.
+TEST_F(EditorStateTest, SettingsAreWrittenWhenAPreferenceChanges) {
+    const fs::path file = dir_ / "config" / "settings.json";
+    WindowGeometry window{1280, 720};
+    SettingsWriter writer(state, window, file);
+    const auto t0 = SettingsWriter::Clock::now();
+    EXPECT_FALSE(writer.update(state, window, t0).has_value()) << "nothing changed";
+    EXPECT_FALSE(fs::exists(file));
+    state.scene.material.roughness = 0.3f;
+    EXPECT_FALSE(writer.update(state, window, t0).has_value()) << "an edit is the autosave's, not a setting";
+
+    window = {1500, 900};   // a resize, frame by frame
+    ASSERT_TRUE(writer.update(state, window, t0).has_value());
+    window = {1600, 1000};
+    EXPECT_TRUE(writer.update(state, window, t0 + 100ms).has_value());
+    EXPECT_FALSE(fs::exists(file)) << "not while it is still changing";
+    EXPECT_FALSE(writer.update(state, window, t0 + 100ms + kSettingsDelay).has_value());
+    ASSERT_TRUE(fs::exists(file));
+    EditorState next;
+    WindowGeometry loaded;
+    loadSettings(next, loaded, file);
+    EXPECT_EQ(loaded.width, 1600);
+
+    rememberRecent(state, dir_ / "opened.json");
+    writer.update(state, window, t0 + 1s);
+    writer.update(state, window, t0 + 1s + kSettingsDelay);
+    loadSettings(next, loaded, file);
+    ASSERT_EQ(next.recentFiles.size(), 1u);
+    EXPECT_EQ(next.recentFiles[0].filename(), "opened.json");
+
+    // A folder that cannot be written is said once, not at every change.
+    fs::remove_all(dir_ / "config");
+    std::ofstream(dir_ / "config") << "a file where the folder would be";
+    state.showGizmos = !state.showGizmos;
+    writer.update(state, window, t0 + 2s);
+    writer.update(state, window, t0 + 2s + kSettingsDelay);
+    EXPECT_NE(state.error.find("settings.json"), std::string::npos) << state.error;
+    state.error.clear();
+    state.showAdvanced = !state.showAdvanced;
+    writer.update(state, window, t0 + 3s);
+    writer.update(state, window, t0 + 3s + kSettingsDelay);
+    EXPECT_TRUE(state.error.empty()) << state.error;
+}
+
 TEST(EditorConfig, FollowsXdgConfigHome) {
     setenv("XDG_CONFIG_HOME", "/tmp/patina-xdg", 1);
     EXPECT_EQ(configFolder(), fs::path("/tmp/patina-xdg/patina"));
@@ -383,6 +516,16 @@ TEST_F(EditorStateTest, EveryFilesErrorIsShownAndAFolderIsCalledAFolder) {
     EXPECT_EQ(state.scene.material.roughness, 0.25f) << "the good file opened";
     EXPECT_TRUE(openFiles(state, {good}));
     EXPECT_TRUE(state.error.empty());
+    // An environment image is prepared on a worker: its error used to arrive a frame later and
+    // replace the others. A broken model and image besides.
+    std::ofstream(dir_ / "broken.hdr") << "#?RADIANCE\nnot an image";
+    std::ofstream(dir_ / "broken.glb") << "glTF but not";
+    EXPECT_FALSE(openFiles(state, {dir_ / "missing.json", dir_ / "broken.hdr", dir_ / "broken.glb", dir_ / "gone.exr"}));
+    for (const char* name : {"missing.json", "broken.hdr", "broken.glb", "gone.exr"}) {
+        EXPECT_NE(state.error.find(name), std::string::npos) << name << " in: " << state.error;
+    }
+    EXPECT_FALSE(finishEnvironmentLoad(state, true));
+    EXPECT_NE(state.error.find("missing.json"), std::string::npos) << "nothing arrives later to replace them";
 }
 
 }  // namespace
@@ -657,31 +800,32 @@ TEST_F(EditorStateTest, ABadEnvironmentFileSaysWhyWhenItFailsAndChangesNothing) 
     EXPECT_EQ(state.scene.lights, lights);
 }
 
-TEST_F(EditorStateTest, APresetIsATemplateNeverSavedOverAndOnlyUnsavedMaterialAsks) {
+TEST_F(EditorStateTest, APresetIsATemplateNeverSavedOverAndAsksNothing) {
     // A tester moved the camera, clicked "copper" and was asked to save the scene; then Ctrl+S
     // wrote into the preset's own file. A preset changes the material, undoably, nothing else,
-    // and asks first only when the material itself is unsaved.
+    // and asks nothing: undo brings back what it replaced.
     const fs::path preset = writeMaterial("copper", 0.3f);
     state.presetFolders = {dir_};
     const std::vector<uint8_t> presetBytes = readFileBytes(preset);
-    state.scene.camera.position.x += 0.5f;   // the document is dirty, the material is not
+    state.scene.camera.position.x += 0.5f;
     requestOpen(state, preset);
-    EXPECT_FALSE(state.pendingOpen.has_value()) << "only the camera was unsaved";
+    EXPECT_FALSE(state.pendingOpen.has_value());
     EXPECT_EQ(state.scene.material.name, "copper");
     EXPECT_TRUE(state.materialPath.empty()) << "the preset became the document";
-    EXPECT_FALSE(state.materialChanged());
     state.scene.material.roughness = 0.9f;
     commitEdits(state);
-    EXPECT_TRUE(state.materialChanged());
-    EXPECT_EQ(readFileBytes(preset), presetBytes);
     requestOpen(state, preset);
-    EXPECT_TRUE(state.pendingOpen.has_value()) << "the material was unsaved";
-    // A material file elsewhere is a document as before.
-    state.pendingOpen.reset();
-    state.scene.material = state.savedMaterial;
+    EXPECT_FALSE(state.pendingOpen.has_value()) << "the tweak is one undo away";
+    EXPECT_EQ(state.scene.material.roughness, 0.3f);
+    undo(state);
+    EXPECT_EQ(state.scene.material.roughness, 0.9f);
+    EXPECT_EQ(readFileBytes(preset), presetBytes);
+    // A material file elsewhere is a document of its own.
     const fs::path mine = dir_ / "mine";
     fs::create_directories(mine);
     fs::copy_file(preset, mine / "copper.json");
+    requestOpen(state, mine / "copper.json");
+    ASSERT_TRUE(state.pendingOpen.has_value()) << "it replaces unsaved work";
     ASSERT_TRUE(openFile(state, mine / "copper.json")) << state.error;
     EXPECT_EQ(state.materialPath, mine / "copper.json");
 }

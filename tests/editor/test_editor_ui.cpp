@@ -205,21 +205,29 @@ TEST_F(EditorUi, LoadingABadPresetShowsTheErrorAndKeepsTheMaterial) {
     EXPECT_NE(state_.error.find("newer"), std::string::npos) << state_.error;
 }
 
-TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAsking) {
+// Opening a file over unsaved work asks first, and while it asks nothing edits the document
+// behind the prompt: Ctrl+Z used to undo, and Ctrl+O to open a dialog, under "Unsaved changes".
+TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAskingAndNothingEditsBehindThePrompt) {
     Material other;
     other.name = "other";
     std::ofstream(dir_ / "other.json") << materialToJson(other).dump();
-    state_.presetFolders = {dir_};
     state_.scene.material.metallic = 0.7f;   // dirty
     frames(2);
-    click(centreOf("preset:other"));
-    EXPECT_TRUE(state_.pendingOpen.has_value());
-    EXPECT_EQ(state_.scene.material.metallic, 0.7f);
+    requestOpen(state_, dir_ / "other.json");
     frames(2);
+    EXPECT_TRUE(state_.pendingOpen.has_value());
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Discard changes", &min, &max)) << "the prompt is shown";
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.material.metallic, 0.7f) << "Ctrl+Z behind the prompt";
+    press(kKeyO, true);
+    EXPECT_EQ(state_.pathDialog, EditorState::PathDialog::None) << "Ctrl+O behind the prompt";
+    press(kKeyN, true);
+    EXPECT_FALSE(state_.pendingNew) << "Ctrl+N behind the prompt";
     click(centreOf("Discard changes"));
     EXPECT_EQ(state_.scene.material.name, "other");
+    EXPECT_FALSE(promptOpen(state_));
 }
-
 
 TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
     const LdrImage epic = services_->viewportPixels(EditorServices::Shown::Edited);
@@ -375,6 +383,38 @@ TEST_F(EditorScreenshots, ComparisonsAreScreenshotAsShown) {
     EXPECT_GT(pixel(split, quarter, middle).r, pixel(split, quarter, middle).b);
     EXPECT_GT(pixel(split, split.width - quarter, middle).b, pixel(split, split.width - quarter, middle).r);
     EXPECT_EQ(pixel(split, split.width / 2, middle), glm::ivec3(255)) << "the divider";
+}
+
+// A screenshot of a comparison reopens as that comparison: A, B, the view and the split (it
+// used to reopen as B alone).
+TEST_F(EditorScreenshots, AComparisonsScreenshotReopensAsTheComparison) {
+    click(centreOf("Set A"));
+    const Material a = state_.scene.material;
+    state_.scene.material.baseColor = {0.1f, 0.3f, 0.9f};
+    state_.scene.material.name = "blue";
+    state_.screenshotWidth = 200;
+    state_.screenshotHeight = 150;
+    for (const CompareView view : {CompareView::Split, CompareView::SideBySide}) {
+        state_.compareView = view;
+        state_.splitPosition = 0.25f;
+        press(kKeyF12);
+        ASSERT_TRUE(state_.error.empty()) << state_.error;
+        EditorState reopened;
+        ASSERT_TRUE(openFile(reopened, pngsIn(dir_).back())) << reopened.error;
+        ASSERT_TRUE(reopened.compareA.has_value());
+        EXPECT_EQ(*reopened.compareA, a);
+        EXPECT_EQ(reopened.scene.material, state_.scene.material);
+        EXPECT_EQ(reopened.compareView, view);
+        EXPECT_EQ(reopened.splitPosition, 0.25f);
+    }
+    // A single view's screenshot reopens as a single view, whatever was compared before.
+    state_.compareView = CompareView::Single;
+    press(kKeyF12);
+    EditorState reopened;
+    reopened.compareA = a;
+    reopened.compareView = CompareView::Split;
+    ASSERT_TRUE(openFile(reopened, pngsIn(dir_).back())) << reopened.error;
+    EXPECT_EQ(reopened.compareView, CompareView::Single);
 }
 
 // An error thrown while a panel draws (here a viewport wider than the GL can render) is shown

@@ -1,0 +1,27 @@
+#pragma once
+// A screenshot of a comparison carries, beside its scene (image/png_text.h), what it compares:
+// material A, the view and the split, so that it reopens as the comparison it shows.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "editor_state.h"
+
+namespace patina::editor {
+
+inline constexpr const char* kComparisonTextKeyword = "patina-comparison";
+
+struct ScreenshotComparison {
+    Material a;
+    CompareView view = CompareView::Split;
+    float split = 0.5f;
+};
+
+// {"format": "patina-comparison", "version": 1, "view": "split" | "side-by-side", "split",
+// "a": a material file's object}; empty when the editor shows no comparison.
+std::string comparisonText(const EditorState& state);
+// What a screenshot's comparison text holds; nothing for a screenshot without one. Throws
+// InputError naming the file when the text is there but wrong.
+std::optional<ScreenshotComparison> comparisonFromPng(const std::filesystem::path& png);
+
+}  // namespace patina::editor
