@@ -142,6 +142,25 @@ std::vector<Recoverable> findLeftBehind(EditorState& state, const std::filesyste
     return found;
 }
 
+// Lock files of editors that ended before they wrote anything (a crash at start): removed, so
+// the folder does not fill up with them.
+void removeStrayLocks(const std::filesystem::path& folder) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        const std::filesystem::path json = std::filesystem::path(entry.path()).replace_extension(".json");
+        if (entry.path().extension() != ".lock" || std::filesystem::exists(json, error)) {
+            continue;
+        }
+        try {
+            if (std::shared_ptr<FileLock> lock = FileLock::tryLock(entry.path())) {
+                removeLocked(json, lock);
+            }
+        } catch (const std::exception&) {
+            // not ours to tidy
+        }
+    }
+}
+
 void offerNext(EditorState& state) {
     std::vector<Recoverable>& waiting = state.autosave.waiting;
     state.recoverable.reset();
@@ -185,6 +204,7 @@ void startAutosave(EditorState& state, const std::filesystem::path& folder) {
                        ("Autosave is off (your work is not being kept for crash recovery): " + std::string(error.what()));
     }
     state.autosave.written = autosaveText(state);
+    removeStrayLocks(folder);
     state.autosave.waiting = findLeftBehind(state, folder);
     offerNext(state);
 }

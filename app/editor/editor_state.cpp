@@ -506,7 +506,9 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
         startDocument(state, scene, {}, path);
     }
     state.error.clear();
-    state.status = "Opened " + path.filename().string() +
+    const bool preset = !file.scene && isPreset(state, path);
+    state.status = (preset ? "Preset " + file.material->name + " applied (Ctrl+Z undoes it)"
+                           : "Opened " + path.filename().string()) +
                    (file.warnings.empty() ? "" : "\n" + joinWarnings(file.warnings));
     rememberRecent(state, path);
 }

@@ -303,7 +303,11 @@ void drawDialogs(EditorState& state, EditorServices& services) {
     }
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         const std::string parts = unsavedParts(state);
-        ImGui::Text("%s%s not saved.", parts.empty() ? "Nothing is" : "", parts.c_str());
+        if (parts.empty()) {
+            ImGui::TextUnformatted("Nothing is unsaved.");
+        } else {
+            ImGui::Text("Unsaved changes to %s.", parts.c_str());
+        }
         ImGui::TextDisabled(state.sceneChanged() ? "Save writes the scene, its material inline."
                                                  : "Save writes the material.");
         if (ImGui::Button("Save")) {

@@ -137,6 +137,20 @@ TEST_F(AutosaveTest, ACleanQuitOrADiscardLeavesNothingToRecover) {
     EXPECT_FALSE(next.recoverable.has_value());
 }
 
+TEST_F(AutosaveTest, LocksOfEditorsThatWroteNothingAreTidiedButARunningOnesStays) {
+    auto running = std::make_unique<EditorState>();
+    startAutosave(*running, folder());
+    {
+        EditorState crashedAtStart;
+        startAutosave(crashedAtStart, folder());
+    }   // gone without a file of its own
+    EXPECT_EQ(filesIn(".lock").size(), 2u);
+    EditorState next;
+    startAutosave(next, folder());
+    EXPECT_EQ(filesIn(".lock").size(), 2u) << "the running editor's and this one's";
+    EXPECT_TRUE(fs::exists(fs::path(running->autosave.file).replace_extension(".lock")));
+}
+
 TEST_F(AutosaveTest, TheFileEarlierVersionsSharedIsOfferedOnce) {
     EditorState old;
     old.scene.material.roughness = 0.44f;

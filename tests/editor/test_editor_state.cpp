@@ -227,6 +227,7 @@ TEST_F(EditorStateTest, PresetsAreUndoableEditsAndResetReadsTheDocument) {
     requestOpen(state, writeMaterial("brick", 0.9f));
     EXPECT_FALSE(state.pendingOpen.has_value()) << "a preset after a tweak asks nothing: it is undoable";
     EXPECT_EQ(state.scene.material.name, "brick");
+    EXPECT_NE(state.status.find("Ctrl+Z"), std::string::npos) << "the status says how to take it back: " << state.status;
     undo(state);
     EXPECT_EQ(state.scene.material.name, "copper");
     EXPECT_EQ(state.savedMaterial, document) << "what Reset goes back to is the document's";
