@@ -13,7 +13,9 @@ namespace patina {
 
 RegularFile::RegularFile(const std::filesystem::path& path, int flags, std::string name)
     : name_(std::move(name)) {
-    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | flags);
+    // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer that never
+    // comes; for a regular file (all that is read past the check below) it changes nothing.
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | flags);
     if (fd_ < 0) {
         throw InputError(name_ + ": cannot open: " + std::strerror(errno));
     }
