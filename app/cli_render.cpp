@@ -48,7 +48,7 @@ RenderOutput renderReferenceImage(const Scene& scene, int width, int height, int
     if (terminal) {
         std::fprintf(stderr, "\n");
     }
-    return {image.value, displayImage(image.value, scene.display)};
+    return {image.value, displayImage(image.value, scene.display, image.backdrop)};
 }
 }  // namespace
 

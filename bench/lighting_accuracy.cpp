@@ -198,7 +198,7 @@ LdrImage roughnessMetallicGrid(const NamedEnvironment& environment, int cellSize
             options.samplesPerPixel = samples;
             const ReferenceImage reference = renderReference(scene, surfaces, options);
             split.push_back(render.ldr);
-            truth.push_back(displayImage(reference.value, scene.display));
+            truth.push_back(displayImage(reference.value, scene.display, reference.backdrop));
             LdrImage map{cellSize, cellSize, std::vector<uint8_t>(size_t(cellSize) * size_t(cellSize) * 4, 255)};
             for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
                 const float t = luminance(&reference.value.rgb[pixel * 3]);

@@ -237,7 +237,7 @@ namespace {
 // scene where it had none.
 void compareWithItsFiles(EditorState& state, const Recoverable& found) {
     std::vector<std::string> warnings;
-    state.savedScene = startingScene();
+    state.savedScene = defaultScene();
     if (!found.scenePath.empty()) {
         try {
             state.savedScene = loadSceneFile(found.scenePath, warnings);

@@ -393,13 +393,6 @@ bool isPreset(const EditorState& state, const std::filesystem::path& path) {
     });
 }
 
-Scene startingScene() {
-    // The default scene under a tone map that keeps highlights (a file's own choice replaces it).
-    Scene editing = defaultScene();
-    editing.display.tonemap = Tonemap::PbrNeutral;
-    return editing;
-}
-
 void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
                    const std::filesystem::path& materialPath) {
     state.scene = scene;
@@ -418,7 +411,7 @@ void startDocument(EditorState& state, const Scene& scene, const std::filesystem
 }
 
 void newDocument(EditorState& state) {
-    startDocument(state, startingScene(), {}, {});
+    startDocument(state, defaultScene(), {}, {});
     state.error.clear();
     state.status = "New scene";
 }

@@ -34,14 +34,11 @@ struct PanelLayout {
     float lobeHeight = 260.0f;
 };
 
-// The scene the editor starts with, and File > New makes.
-Scene startingScene();
-
 // Everything the editor shows is a function of this state; panels read it, draw widgets and
 // write it back. No ImGui or GL types here, so it is tested without a window.
 struct EditorState {
     // The default scene under a tone map that keeps highlights (a file's own choice replaces it).
-    Scene scene = startingScene();
+    Scene scene = defaultScene();
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
     // The scene as a document: where it was opened from or saved to (empty: none), and the

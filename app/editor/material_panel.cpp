@@ -84,7 +84,7 @@ void drawMaterialPanel(EditorState& state) {
     const Material& file = state.savedMaterial;   // as opened or last saved
     inputString("Name", &material.name);
     recordItem("Material name", "The material's name, saved in its file and shown in captions");
-    ImGui::SetNextItemWidth(widthBesideReset("Base colour"));
+    ImGui::SetNextItemWidth(widthBesideReset("Base colour sRGB"));   // colorEditLinear's label
     colorEditLinear("Base colour", "The colour of diffuse light, or of the reflection for a metal (click the swatch to pick)",
                     &material.baseColor);
     ImGui::SameLine();

@@ -13,10 +13,6 @@
 namespace patina::editor {
 
 namespace {
-glm::vec3 toSrgb(glm::vec3 linear) {
-    return {shader::srgbEncode(linear.r), shader::srgbEncode(linear.g), shader::srgbEncode(linear.b)};
-}
-
 glm::vec3 toLinear(glm::vec3 srgb) {
     return {shader::srgbDecode(srgb.r), shader::srgbDecode(srgb.g), shader::srgbDecode(srgb.b)};
 }
@@ -63,13 +59,17 @@ bool colorEditLinear(const char* label, const char* tooltip, glm::vec3* linear, 
     // sRGB cannot show components above 1: the picker shows the colour over its peak, and the
     // peak multiplies back in (light colours may be HDR; material colours stay in [0, 1]).
     const float peak = hdr ? std::max({linear->r, linear->g, linear->b, 1.0f}) : 1.0f;
-    const glm::vec3 srgb = toSrgb(glm::clamp(*linear / peak, 0.0f, 1.0f));
+    const glm::vec3 srgb = shader::srgbColor(glm::clamp(*linear / peak, 0.0f, 1.0f));
     float color[3] = {srgb.r, srgb.g, srgb.b};
     // Clicking into the picker's hex field writes the colour back rounded to 8 bits (0.8000 to
     // 0.7991) without any edit: that is no change, and must not dirty the file or make a step.
-    const bool changed = ImGui::ColorEdit3(label, color, ImGuiColorEditFlags_Float | flags) &&
+    // The numbers are sRGB, as captions and screenshots show them: said beside them (the ID
+    // stays the bare label), and in the tooltip with what files hold.
+    const bool numbers = (flags & ImGuiColorEditFlags_NoInputs) == 0;
+    const std::string shown = numbers ? std::string(label) + " sRGB###" + label : std::string(label);
+    const bool changed = ImGui::ColorEdit3(shown.c_str(), color, ImGuiColorEditFlags_Float | flags) &&
                          !onlyQuantised(srgb, glm::vec3(color[0], color[1], color[2]));
-    recordItem(label, tooltip);
+    recordItem(label, (std::string(tooltip) + " (shown in sRGB; files store linear values)").c_str());
     if (changed) {
         *linear = glm::clamp(toLinear(glm::vec3(color[0], color[1], color[2])), 0.0f, 1.0f) * peak;
     }
@@ -77,11 +77,12 @@ bool colorEditLinear(const char* label, const char* tooltip, glm::vec3* linear, 
 }
 
 void linearSwatch(const char* label, const char* tooltip, glm::vec3 linear) {
-    const glm::vec3 srgb = toSrgb(glm::clamp(linear, 0.0f, 1.0f));
+    const glm::vec3 srgb = shader::srgbColor(glm::clamp(linear, 0.0f, 1.0f));
     ImGui::ColorButton(label, ImVec4(srgb.r, srgb.g, srgb.b, 1.0f), ImGuiColorEditFlags_NoTooltip);
     recordItem(label, tooltip);
     ImGui::SameLine();
-    ImGui::Text("%s  %.4f %.4f %.4f", label, double(linear.r), double(linear.g), double(linear.b));
+    // Linear, as the shader computes it (base colour fields and captions show sRGB): named.
+    ImGui::Text("%s  linear %.4f %.4f %.4f", label, double(linear.r), double(linear.g), double(linear.b));
 }
 
 bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags) {

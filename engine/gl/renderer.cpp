@@ -334,8 +334,9 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     glDisable(GL_SCISSOR_TEST);
     const int exposureTonemap = tonemapShaderIndex(scene.display.tonemap);
     const glm::vec3 background = scene.display.background;
-    const glm::vec3 backgroundShown = shader::displayTransform(background, scene.display.exposure, exposureTonemap);
-    const GLfloat clearLinear[4] = {background.r, background.g, background.b, 1.0f};
+    const glm::vec3 backgroundShown = shader::srgbColor(background);
+    // Alpha 0: nothing drawn here, so the display pass shows the backdrop (display.frag).
+    const GLfloat clearLinear[4] = {background.r, background.g, background.b, 0.0f};
     const GLfloat clearDisplay[4] = {backgroundShown.r, backgroundShown.g, backgroundShown.b, 1.0f};
     const GLfloat clearDepth = 1.0f;
     const GLfloat clearStamp[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -372,11 +373,11 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
             glUniform1i(displayPass->uniform("uSamples"), 0);
             glUniform1i(displayPass->uniform("uStripTop"), top);
             glUniform1f(displayPass->uniform("uSampleStamp"), stamp);
-            glUniform3fv(displayPass->uniform("uBackground"), 1, glm::value_ptr(background));
         } else {
             glBindTexture(GL_TEXTURE_2D, t.linear.name);
             glUniform1i(displayPass->uniform("uHdr"), 0);
         }
+        glUniform3fv(displayPass->uniform("uBackground"), 1, glm::value_ptr(background));
         glUniform1f(displayPass->uniform("uExposure"), scene.display.exposure);
         glUniform1i(displayPass->uniform("uTonemap"), exposureTonemap);
         glBindVertexArray(s.emptyVertexArray);

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "shading/shading.h"
+
 namespace patina {
 
 namespace {
@@ -177,9 +179,11 @@ Rgb8 heatColour(int difference) {
 
 std::string materialCaption(const Material& material, int panelWidth) {
     char numbers[96];
-    std::snprintf(numbers, sizeof numbers, "  r %.2f s %.2f m %.2f  base %.2f %.2f %.2f",
+    // The base colour as the editor's field shows it: sRGB, and named so (files hold linear).
+    const glm::vec3 base = shader::srgbColor(material.baseColor);
+    std::snprintf(numbers, sizeof numbers, "  r %.2f s %.2f m %.2f  base sRGB %.2f %.2f %.2f",
                   double(material.roughness), double(material.specular), double(material.metallic),
-                  double(material.baseColor.r), double(material.baseColor.g), double(material.baseColor.b));
+                  double(base.r), double(base.g), double(base.b));
     const int scale = captionScale(panelWidth);
     const int room = panelWidth - 2 * kCaptionPadding * scale - textWidth(numbers, scale);
     return fitText(material.name, std::max(room, textWidth("...", scale)), scale) + numbers;

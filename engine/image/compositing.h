@@ -60,7 +60,7 @@ private:
     LdrImage sheet_;
     size_t added_ = 0;
 };
-// "name  r 0.30 s 0.50 m 1.00  base 1.00 0.78 0.34": the name cut with "..." so that the
+// "name  r 0.30 s 0.50 m 1.00  base sRGB 1.00 0.86 0.60": the name cut with "..." so that the
 // numbers always fit the caption of a panel this wide.
 std::string materialCaption(const Material& material, int panelWidth);
 

@@ -32,12 +32,14 @@ ReferenceImage renderReference(const Scene& scene, const PixelSurfaces& surfaces
     ReferenceImage image;
     image.value = {surfaces.width, surfaces.height, std::vector<float>(pixels * 3, 0.0f)};
     image.standardError = image.value;
+    image.backdrop.assign(pixels, 0);
     for (int y = 0; y < surfaces.height; ++y) {
         for (int x = 0; x < surfaces.width; ++x) {
             const size_t pixel = size_t(y) * size_t(surfaces.width) + size_t(x);
             if (surfaces.sampleOfPixel[pixel] < 0) {
                 const glm::vec3 b = backgroundRadiance(scene, environment.get(), light, surfaces.width, surfaces.height, x, y);
                 std::copy(&b.x, &b.x + 3, &image.value.rgb[pixel * 3]);
+                image.backdrop[pixel] = !environment || !scene.display.backgroundFromEnvironment;
             }
         }
     }

@@ -1,6 +1,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "common/hdr_image.h"
 #include "scene/pixel_surfaces.h"
@@ -22,6 +23,9 @@ struct ReferenceImage {
     HdrImage value;
     HdrImage standardError;   // of each pixel's mean; 0 in the background
     int samplesPerPixel = 0;  // done so far
+    // 1 where the flat background shows (no surface, no environment behind the mesh): the
+    // pixels the renderer shows as the background's swatch (displayImage's `backdrop`).
+    std::vector<uint8_t> backdrop;
 };
 
 // Told the image after each pass; false stops (the image so far is the result).

@@ -80,6 +80,9 @@ Scene defaultScene() {
     sky.ground = {0.12f, 0.09f, 0.06f};
 
     scene.lights = {key, fill, studio, sky};
+    // A tone map that keeps the highlights of metals and the key light (PBR Neutral leaves
+    // colours below 0.8 as they are): one look wherever the default scene is shown.
+    scene.display.tonemap = Tonemap::PbrNeutral;
     return scene;
 }
 

@@ -75,7 +75,9 @@ const Light* enabledEnvironment(const std::vector<Light>& lights);
 inline const Light* enabledEnvironment(const Scene& scene) { return enabledEnvironment(scene.lights); }
 
 // The embedded default: a sphere lit by a warm point light, a cool directional light, the
-// built-in studio environment and a faint sky/ground hemisphere light.
+// built-in studio environment and a faint sky/ground hemisphere light, under PBR Neutral. The
+// editor starts with it (and File > New makes it), `patina render` renders it, and
+// examples/default_scene.json is it as a file.
 Scene defaultScene();
 
 }  // namespace patina

@@ -55,6 +55,15 @@ PATINA_INLINE real srgbDecode(real encoded) {
     return exp2(2.4f * log2((encoded + 0.055f) / 1.055f));
 }
 
+// A colour in [0, 1] (clamped), sRGB-encoded: what a colour field or swatch shows. The flat
+// background is shown so, as a colour picked on screen rather than radiance in the scene:
+// neither exposure nor the tone map applies to it. (The environment shown as background is
+// radiance and goes through displayTransform like the mesh.)
+PATINA_INLINE vec3 srgbColor(vec3 linear) {
+    vec3 c = clamp(linear, vec3(0.0f), vec3(1.0f));
+    return vec3(srgbEncode(c.x), srgbEncode(c.y), srgbEncode(c.z));
+}
+
 // Exposure in stops (x 2^exposure), then the tone map, then sRGB. Negative or NaN radiance
 // (never produced by the shading guards, but possible from a bad HDR input) displays as 0.
 PATINA_INLINE vec3 displayTransform(vec3 linear, real exposureStops, int tonemap) {

@@ -4,16 +4,20 @@
 // first (location 0 the linear mean, location 1 its display value, as shade.frag's outputs).
 // PATINA_SAMPLE_COUNT: the samples the GL made; a constant, the loop unrolls (llvmpipe runs a
 // loop of a uniform count with per-lane masks: 4-8% of a 512x512 frame).
+// The flat background is shown as its swatch (srgbColor), not tone-mapped: a pixel
+// partly covered shows the drawn samples' display value over it, by their share of the pixel.
 #ifdef PATINA_MULTISAMPLED
 uniform sampler2DMS uSamples;
 uniform int uStripTop;   // the strip's first row in the image
 // The samples are not cleared: one whose alpha is not this strip's stamp was not drawn in this
 // strip and is background (RenderTargets::SampleStamp).
 uniform float uSampleStamp;
-uniform vec3 uBackground;
 #else
+// Alpha 0 where nothing was drawn (the renderer clears it so), 1 where the mesh or the
+// environment background was.
 uniform sampler2D uHdr;
 #endif
+uniform vec3 uBackground;
 uniform float uExposure;
 uniform int uTonemap;
 
@@ -23,15 +27,28 @@ layout(location = 1) out vec4 displayColor;
 void main() {
 #ifdef PATINA_MULTISAMPLED
     ivec2 texel = ivec2(gl_FragCoord.xy) - ivec2(0, uStripTop);
-    vec3 sum = vec3(0.0f);
+    vec3 sum = vec3(0.0f);     // every sample, the background's included: the linear mean
+    vec3 drawn = vec3(0.0f);   // the drawn samples only: what is tone-mapped
+    int count = 0;
     for (int i = 0; i < PATINA_SAMPLE_COUNT; ++i) {
         vec4 value = texelFetch(uSamples, texel, i);
-        sum += value.a == uSampleStamp ? value.rgb : uBackground;
+        if (value.a == uSampleStamp) {
+            sum += value.rgb;
+            drawn += value.rgb;
+            count += 1;
+        } else {
+            sum += uBackground;
+        }
     }
     vec3 linear = sum / float(PATINA_SAMPLE_COUNT);
+    float coverage = float(count) / float(PATINA_SAMPLE_COUNT);
+    vec3 drawnMean = count > 0 ? drawn / float(count) : vec3(0.0f);
 #else
-    vec3 linear = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb;
+    vec4 value = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0);
+    vec3 linear = value.rgb;
+    float coverage = value.a > 0.5f ? 1.0f : 0.0f;
+    vec3 drawnMean = value.rgb;
 #endif
     linearColor = vec4(linear, 1.0f);
-    displayColor = vec4(displayTransform(linear, uExposure, uTonemap), 1.0f);
+    displayColor = vec4(mix(srgbColor(uBackground), displayTransform(drawnMean, uExposure, uTonemap), coverage), 1.0f);
 }

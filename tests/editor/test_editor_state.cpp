@@ -5,6 +5,7 @@
 #include <cmath>
 #include <system_error>
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -269,11 +270,21 @@ TEST_F(EditorStateTest, DisplaySettingsAreUndoneInTurn) {
     EXPECT_EQ(state.scene.display.exposure, 8.0f);
 }
 
+// `patina` with no file, File > New, `patina render` and examples/default_scene.json are one
+// scene: saving what the editor starts with writes the shipped file, byte for byte.
+TEST_F(EditorStateTest, TheEditorStartsWithTheShippedDefaultScene) {
+    EXPECT_EQ(state.scene, defaultScene());
+    ASSERT_TRUE(saveScene(state, path("new.json")));
+    std::ifstream shipped(fs::path(PATINA_PRESETS_DIR) / "../examples/default_scene.json", std::ios::binary);
+    ASSERT_TRUE(shipped);
+    EXPECT_EQ(read("new.json"), std::string(std::istreambuf_iterator<char>(shipped), {}));
+}
+
 TEST_F(EditorStateTest, NewStartsTheDefaultSceneAndAsksWhenUnsaved) {
     ASSERT_TRUE(openFile(state, writeMaterial("mine", 0.2f)));
     requestNew(state);
     EXPECT_FALSE(state.pendingNew);
-    EXPECT_EQ(state.scene, startingScene());
+    EXPECT_EQ(state.scene, defaultScene());
     EXPECT_TRUE(state.materialPath.empty());
     EXPECT_FALSE(state.dirty());
     EXPECT_FALSE(state.history.canUndo());

@@ -160,13 +160,21 @@ TEST(DisplayImage, IsTheRenderersDisplayTransform) {
     scene.display.tonemap = Tonemap::PbrNeutral;
     Renderer renderer;
     const RenderOutput render = renderer.render(scene, test::renderSettings(kSize, kSize, RenderPath::Single, 1));
-    const LdrImage shown = displayImage(render.hdr, scene.display);
+    // The ground truth's backdrop: where the renderer shows the flat background as its swatch.
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = 1;
+    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
+    const ReferenceImage reference = renderReference(scene, surfaces, options);
+    ASSERT_GT(std::count(reference.backdrop.begin(), reference.backdrop.end(), 1), kSize);
+    const LdrImage shown = displayImage(render.hdr, scene.display, reference.backdrop);
     ASSERT_EQ(shown.rgba.size(), render.ldr.rgba.size());
     int off = 0;
     for (size_t i = 0; i < shown.rgba.size(); ++i) {
         off += std::abs(int(shown.rgba[i]) - int(render.ldr.rgba[i])) > 1;
     }
     EXPECT_EQ(off, 0);
+    // Without the backdrop the background is tone-mapped, which the renderer does not do.
+    EXPECT_NE(displayImage(render.hdr, scene.display).rgba, render.ldr.rgba);
 }
 
 }  // namespace

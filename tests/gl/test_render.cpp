@@ -415,7 +415,12 @@ TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
     Renderer renderer;
     for (const auto& [tonemap, index] : {std::pair{Tonemap::Aces, shader::TONEMAP_ACES},
                                          std::pair{Tonemap::PbrNeutral, shader::TONEMAP_PBR_NEUTRAL}}) {
-        const Scene scene = toneMappedScene(0.4f, tonemap);
+        // The environment behind the mesh: every pixel is radiance through the display
+        // transform (the flat background shows as its swatch: TheFlatBackgroundShowsAsItsSwatch).
+        Scene scene = toneMappedScene(0.4f, tonemap);
+        scene.lights.push_back(defaultScene().lights[2]);
+        ASSERT_EQ(scene.lights.back().type, LightType::Environment);
+        scene.display.backgroundFromEnvironment = true;
         for (int samples : {1, 4}) {
             for (RenderPath passes : {RenderPath::Multi, RenderPath::Single}) {
                 RenderSettings settings = test::renderSettings(64, 64, passes, samples);
@@ -492,20 +497,55 @@ TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {
     test::glContext();
     Renderer renderer;
     Scene scene = defaultScene();
-    scene.display.background = {0.5f, 0.5f, 0.5f};
-    auto corner = [&](float exposure, Tonemap tonemap) {
+    const size_t centre = 16 * 32 + 16;
+    auto render = [&](float exposure, Tonemap tonemap) {
         scene.display.exposure = exposure;
         scene.display.tonemap = tonemap;
-        return int(renderScene(renderer, scene, RenderPath::Single, 32).ldr.rgba[0]);
+        return renderScene(renderer, scene, RenderPath::Single, 32, 1);
     };
-    // sRGB(0.5) = 0.7354 -> 188; one stop up clips to 255; Reinhard: 0.5 / 1.5 -> sRGB 0.6136 -> 156.
-    EXPECT_NEAR(corner(0.0f, Tonemap::None), 188, 1);
-    EXPECT_EQ(corner(1.0f, Tonemap::None), 255);
-    EXPECT_NEAR(corner(0.0f, Tonemap::Reinhard), 156, 1);
-    EXPECT_LT(corner(1.0f, Tonemap::Aces), 255);
-    // The HDR image is before exposure: unchanged by it.
-    scene.display.exposure = 3.0f;
-    EXPECT_FLOAT_EQ(renderScene(renderer, scene, RenderPath::Single, 32).hdr.rgb[0], 0.5f);
+    const float before = render(0.0f, Tonemap::None).hdr.rgb[centre * 3];
+    for (const auto& [exposure, tonemap] : {std::pair{0.0f, Tonemap::None}, std::pair{1.0f, Tonemap::None},
+                                            std::pair{0.0f, Tonemap::Reinhard}, std::pair{1.0f, Tonemap::Aces},
+                                            std::pair{-1.0f, Tonemap::PbrNeutral}}) {
+        const RenderOutput image = render(exposure, tonemap);
+        const glm::vec3 linear(image.hdr.rgb[centre * 3], image.hdr.rgb[centre * 3 + 1], image.hdr.rgb[centre * 3 + 2]);
+        const glm::vec3 shown = shader::displayTransform(linear, exposure, tonemapShaderIndex(tonemap));
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(image.ldr.rgba[centre * 4 + size_t(c)], std::lround(shown[c] * 255.0f), 1)
+                << exposure << " EV, " << tonemapName(tonemap);
+        }
+        // The HDR image is before exposure: unchanged by it.
+        EXPECT_FLOAT_EQ(linear.r, before);
+    }
+    EXPECT_LT(render(-3.0f, Tonemap::None).ldr.rgba[centre * 4 + 1], render(-2.0f, Tonemap::None).ldr.rgba[centre * 4 + 1]);
+}
+
+// The flat background is a colour picked on screen: every path shows it as the editor's swatch
+// (its sRGB encoding), whatever the exposure and tone map, while the HDR image holds it
+// linear. (It went through the tone map: the default's #27272C swatch showed as #080815.)
+TEST(Renderer, TheFlatBackgroundShowsAsItsSwatch) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = defaultScene();
+    const glm::vec3 swatch = shader::srgbColor(scene.display.background) * 255.0f;
+    EXPECT_EQ(std::lround(swatch.r), 0x27);
+    EXPECT_EQ(std::lround(swatch.b), 0x2C);
+    for (const auto& [exposure, tonemap] : {std::pair{0.0f, Tonemap::PbrNeutral}, std::pair{3.0f, Tonemap::Aces},
+                                            std::pair{-2.0f, Tonemap::None}}) {
+        scene.display.exposure = exposure;
+        scene.display.tonemap = tonemap;
+        for (RenderPath passes : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+            for (int samples : {1, 4}) {
+                const RenderOutput image = renderScene(renderer, scene, passes, 48, samples);
+                const std::string what = std::string(renderPathName(passes)) + ", " + std::to_string(samples) +
+                                         " samples, " + std::string(tonemapName(tonemap));
+                for (int c = 0; c < 3; ++c) {
+                    EXPECT_EQ(image.ldr.rgba[size_t(c)], std::lround(swatch[c])) << what;
+                    EXPECT_FLOAT_EQ(image.hdr.rgb[size_t(c)], scene.display.background[c]) << what;
+                }
+            }
+        }
+    }
 }
 
 // The GL may give more samples than asked (llvmpipe, like GPUs, makes 2 and 3 into 4): the

@@ -106,6 +106,17 @@ TEST(Caption, CutsLongTextWithAnEllipsis) {
     EXPECT_EQ(fitText(name, -5, 1), "");
 }
 
+// One convention for colours: a caption shows the base colour in sRGB, as the editor's field
+// does (gold's linear 1.0 0.7099 0.3148 shows as 1.000 0.860 0.597 there), and says so.
+TEST(Compositing, ACaptionShowsTheBaseColourInSrgbAndNamesIt) {
+    Material gold;
+    gold.name = "gold";
+    gold.baseColor = {1.0f, 0.7099f, 0.3148f};
+    gold.roughness = 0.3f;
+    gold.metallic = 1.0f;
+    EXPECT_EQ(materialCaption(gold, 1000), "gold  r 0.30 s 0.50 m 1.00  base sRGB 1.00 0.86 0.60");
+}
+
 TEST(Compositing, LaysOutCellsWithCaptionStrips) {
     const SheetLayout layout = sheetLayout(50, 40, 3, 2);
     EXPECT_EQ(layout.columns, 2);

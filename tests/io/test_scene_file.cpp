@@ -1,5 +1,8 @@
 // docs/FORMATS.md: material and scene JSON, and the messages for bad files.
 #include <fstream>
+#include <iterator>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -260,7 +263,7 @@ TEST(SceneFile, ExtrasNeverOverrideKnownKeys) {
     EXPECT_EQ(json["author"], "me");
     EXPECT_EQ(json["camera"]["fovYDegrees"], 45);
     EXPECT_FLOAT_EQ(json["lights"][0]["intensity"].get<float>(), scene.lights[0].intensity);
-    EXPECT_EQ(json["display"]["tonemap"], "none");
+    EXPECT_EQ(json["display"]["tonemap"], "pbr-neutral");
 }
 
 TEST(SceneFile, MaterialPathIsRelativeToTheSceneFile) {
@@ -296,6 +299,22 @@ TEST(ShippedFiles, ExampleSceneIsTheEmbeddedDefault) {
         loadSceneFile(std::filesystem::path(PATINA_SOURCE_DIR) / "examples/default_scene.json", warnings);
     EXPECT_EQ(scene, defaultScene());
     EXPECT_TRUE(warnings.empty());
+}
+
+// One scene, one look: the file shipped as the default is what saving the default writes, byte
+// for byte, tone map included (the editor once showed PBR Neutral where the file said none).
+TEST(ShippedFiles, ExampleSceneIsWhatSavingTheDefaultWrites) {
+    const std::filesystem::path saved =
+        std::filesystem::temp_directory_path() / ("patina_default_" + std::to_string(::getpid()) + ".json");
+    saveSceneFile(saved, defaultScene());
+    auto bytes = [](const std::filesystem::path& path) {
+        std::ifstream file(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(file), {});
+    };
+    const std::string shipped = bytes(std::filesystem::path(PATINA_SOURCE_DIR) / "examples/default_scene.json");
+    EXPECT_EQ(bytes(saved), shipped);
+    EXPECT_NE(shipped.find(R"("tonemap": "pbr-neutral")"), std::string::npos);
+    std::filesystem::remove(saved);
 }
 
 // The default scene's point light is in the picture, so its gizmo can be grabbed.
