@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include "common/luminance.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "lobe_plot.h"
@@ -15,11 +16,6 @@
 namespace patina::editor {
 
 namespace {
-// Rec. 709 luminance of linear RGB.
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
-
 // theta_in from the first enabled directional light, seen from the camera: the angle between
 // L and the normal that faces the viewer.
 std::optional<float> followedThetaIn(const EditorState& state) {

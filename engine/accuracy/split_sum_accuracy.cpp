@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/luminance.h"
 #include "common/parallel_for.h"
 #include "environment/reference.h"
 #include "shading/brdf_models.h"
@@ -18,10 +19,6 @@ namespace patina {
 
 namespace {
 constexpr float kPi = 3.14159265358979f;
-
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
 
 // `count` unit vectors spread evenly over the sphere (a Fibonacci lattice): surfaces facing up,
 // down and sideways, so a sun, a floor and the horizon all count.

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/luminance.h"
 #include "environment/area_reference.h"
 #include "environment/equirect.h"
 #include "shading/brdf_models.h"
@@ -17,10 +18,6 @@ namespace patina {
 
 namespace {
 constexpr float kPi = 3.14159265358979f;
-
-float luminance(const float* rgb) {
-    return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
-}
 
 // The index i with cdf[i] <= u < cdf[i + 1] and how far into it u lies.
 std::pair<int, float> invert(const float* cdf, int count, float u) {
