@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
@@ -42,7 +43,7 @@ void drawPolar(const LobePlot& plot, const LobeSettings& lobe, ImVec2 size) {
     draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     for (float ring : {0.25f, 0.5f, 0.75f, 1.0f}) {
-        draw->PathArcTo(centre, radius * ring, -3.14159265f, 0.0f, 48);
+        draw->PathArcTo(centre, radius * ring, -std::numbers::pi_v<float>, 0.0f, 48);
         draw->PathStroke(IM_COL32(70, 70, 80, 255), 0, 1.0f);
     }
     draw->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), IM_COL32(120, 120, 130, 255));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <numbers>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -17,7 +18,6 @@
 namespace patina {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
 
 // The index i with cdf[i] <= u < cdf[i + 1] and how far into it u lies.
 std::pair<int, float> invert(const float* cdf, int count, float u) {
@@ -39,7 +39,7 @@ EnvironmentDistribution::EnvironmentDistribution(const HdrImage& image)
     double total = 0.0;
     std::vector<double> weights(pixelPdf_.size());
     for (int y = 0; y < height_; ++y) {
-        const double sinTheta = std::sin((double(y) + 0.5) / height_ * double(kPi));
+        const double sinTheta = std::sin((double(y) + 0.5) / height_ * double(std::numbers::pi_v<float>));
         for (int x = 0; x < width_; ++x) {
             float brightest = 0.0f;
             for (int dy = -1; dy <= 1; ++dy) {
@@ -81,8 +81,9 @@ EnvironmentDistribution::Sample EnvironmentDistribution::sample(float u1, float 
     const auto [x, fx] = invert(&columnCdf_[size_t(y) * size_t(width_ + 1)], width_, u2);
     const glm::vec2 uv((float(x) + fx) / float(width_), (float(y) + fy) / float(height_));
     const glm::vec3 direction = shader::equirectToDirection(uv);
-    const float sinTheta = std::sin(uv.y * kPi);
-    const float pdf = sinTheta > 0.0f ? pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] / (2.0f * kPi * kPi * sinTheta)
+    const float sinTheta = std::sin(uv.y * std::numbers::pi_v<float>);
+    const float pdf = sinTheta > 0.0f ? pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] /
+                                            (2.0f * std::numbers::pi_v<float> * std::numbers::pi_v<float> * sinTheta)
                                       : 0.0f;
     return {direction, pdf};
 }
@@ -91,14 +92,16 @@ float EnvironmentDistribution::pdf(glm::vec3 direction) const {
     const glm::vec2 uv = shader::directionToEquirect(direction);
     const int x = std::clamp(int(uv.x * float(width_)), 0, width_ - 1);
     const int y = std::clamp(int(uv.y * float(height_)), 0, height_ - 1);
-    const float sinTheta = std::sin(uv.y * kPi);
-    return sinTheta > 0.0f ? pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+    const float sinTheta = std::sin(uv.y * std::numbers::pi_v<float>);
+    return sinTheta > 0.0f ? pixelPdf_[size_t(y) * size_t(width_) + size_t(x)] /
+                                 (2.0f * std::numbers::pi_v<float> * std::numbers::pi_v<float> * sinTheta)
+                           : 0.0f;
 }
 
 namespace {
 // A unit vector around N distributed as NoL / pi (Malley's method).
 glm::vec3 sampleCosine(glm::vec2 u, glm::vec3 N) {
-    const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+    const float r = std::sqrt(u.x), phi = 2.0f * std::numbers::pi_v<float> * u.y;
     const glm::vec3 up = std::abs(N.z) < 0.999f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
     const glm::vec3 tx = glm::normalize(glm::cross(up, N)), ty = glm::cross(N, tx);
     return tx * (r * std::cos(phi)) + ty * (r * std::sin(phi)) + N * std::sqrt(std::max(0.0f, 1.0f - u.x));
@@ -150,7 +153,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     auto pdfs = [&](glm::vec3 L) {
         const float NoL = glm::dot(N, L);
         const float ggx = NoL > 0.0f ? ggxPdf(N, V, L, material.alpha) : 0.0f;
-        const float cosine = std::max(NoL, 0.0f) / kPi;
+        const float cosine = std::max(NoL, 0.0f) / std::numbers::pi_v<float>;
         const float env = environment.distribution->pdf(shader::toEnvironmentFrame(L, c, s));
         return glm::vec3(ggx, cosine, env);
     };

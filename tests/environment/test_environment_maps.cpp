@@ -2,6 +2,7 @@
 // convention, the roughness-to-mip mapping, the irradiance coefficients, the (A, B) table and
 // the CPU split sum under a white environment.
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -20,7 +21,6 @@
 namespace patina {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 
 TEST(CubeMap, EveryFaceMapsBackToItself) {
@@ -158,7 +158,7 @@ TEST(SphericalHarmonics, ALinearEnvironmentHasItsExactIrradiance) {
     std::mt19937 rng(9);
     for (int i = 0; i < 50; ++i) {
         const glm::vec3 n = test::randomUnitVector(rng);
-        const float exact = kPi * a + 2.0f * kPi / 3.0f * b * n.y;
+        const float exact = std::numbers::pi_v<float> * a + 2.0f * std::numbers::pi_v<float> / 3.0f * b * n.y;
         EXPECT_NEAR(irradianceUnclamped(sh, n).x, exact, 1e-3f * exact);
     }
 }

@@ -2,6 +2,7 @@
 // environment that depends only on height under rotation, and a linear environment's
 // irradiance. Each within a few standard errors and inside the tolerance the spec names.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,6 @@
 namespace patina {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 
 struct Fixture {
@@ -51,8 +51,9 @@ TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
         const glm::vec3 N = glm::normalize(sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
         double sum = 0.0;
         for (int y = 0; y < height; ++y) {
-            const double dOmega = (std::cos(double(y) / height * kPi) - std::cos(double(y + 1) / height * kPi)) *
-                                  2.0 * kPi / width;
+            const double dOmega = (std::cos(double(y) / height * std::numbers::pi_v<float>) -
+                                   std::cos(double(y + 1) / height * std::numbers::pi_v<float>)) *
+                                  2.0 * std::numbers::pi_v<float> / width;
             for (int x = 0; x < width; ++x) {
                 const glm::vec3 L = shader::equirectToDirection(
                     glm::vec2((float(x) + 0.5f) / width, (float(y) + 0.5f) / height));
@@ -161,7 +162,7 @@ TEST(EnvironmentDistribution, ThePdfIntegratesToOneAndMatchesTheSamples) {
     double sum = 0.0;
     const int n = 200000;
     for (int i = 0; i < n; ++i) {
-        sum += distribution.pdf(test::randomUnitVector(rng)) * 4.0 * kPi;
+        sum += distribution.pdf(test::randomUnitVector(rng)) * 4.0 * std::numbers::pi_v<float>;
     }
     EXPECT_NEAR(sum / n, 1.0, 0.01);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);

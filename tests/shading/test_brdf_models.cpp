@@ -2,6 +2,7 @@
 // closed-form values, every model on the GPU against the same model on the CPU, reciprocity,
 // and the white furnace.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -48,9 +49,9 @@ TEST(VariantTerms, SmithVisibilitiesAtAlphaOne) {
 TEST(VariantTerms, BurleyDiffuse) {
     const glm::vec3 white(1.0f);
     // NoV = NoL = 1: both factors are 1, Lambert exactly.
-    EXPECT_NEAR(shader::Fd_Burley(white, 0.7f, 1.0f, 1.0f, 1.0f).x, 1.0 / 3.14159265, 1e-7);
+    EXPECT_NEAR(shader::Fd_Burley(white, 0.7f, 1.0f, 1.0f, 1.0f).x, 1.0 / std::numbers::pi, 1e-7);
     // r = 1, LoH = 1: FD90 = 2.5; NoL = NoV = 0: (1 + 1.5)^2 / pi.
-    EXPECT_NEAR(shader::Fd_Burley(white, 1.0f, 0.0f, 0.0f, 1.0f).x, 6.25 / 3.14159265, 1e-6);
+    EXPECT_NEAR(shader::Fd_Burley(white, 1.0f, 0.0f, 0.0f, 1.0f).x, 6.25 / std::numbers::pi, 1e-6);
 }
 
 TEST(VariantTerms, StandardAndLagrangeFormsOfDAgreeAwayFromThePeak) {
