@@ -13,8 +13,8 @@
 #include "gl/renderer.h"
 #include "image/compositing.h"
 #include "image/display_image.h"
-#include "scene/pixel_surfaces.h"
-#include "scene/reference_render.h"
+#include "reference/pixel_surfaces.h"
+#include "reference/reference_render.h"
 
 namespace patina {
 

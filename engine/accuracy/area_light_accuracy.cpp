@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "image/caption.h"
+#include "reference/probe_reference.h"
 #include "scene/light_packing.h"
 #include "scene/probe.h"
 #include "shading/brdf_models.h"

@@ -11,7 +11,7 @@
 
 #include "common/luminance.h"
 #include "common/parallel_for.h"
-#include "environment/reference.h"
+#include "reference/radiance.h"
 #include "shading/brdf_models.h"
 #include "shading/environment_brdf.h"
 #include "shading/half.h"

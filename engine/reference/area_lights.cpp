@@ -1,4 +1,4 @@
-#include "environment/area_reference.h"
+#include "reference/area_lights.h"
 
 #include <algorithm>
 #include <cmath>

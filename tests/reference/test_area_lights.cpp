@@ -1,4 +1,4 @@
-// The ground truth of sphere and tube lights (environment/area_reference.h) converges to what is
+// The ground truth of sphere and tube lights (reference/area_lights.h) converges to what is
 // known exactly: the point light far away, a sphere's illuminance I cos / d^2 above the horizon
 // and Frostbite's closed form across it, the whole hemisphere inside the sphere, a thin line's
 // irradiance, and a mirror-like lobe inside a large sphere. Each within a few standard errors.
@@ -7,7 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "environment/area_reference.h"
+#include "reference/area_lights.h"
+#include "reference/probe_reference.h"
 #include "scene/light_packing.h"
 #include "scene/probe.h"
 #include "shading/cpu_shading.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "environment/builtin_environments.h"
-#include "environment/reference.h"
+#include "reference/radiance.h"
 #include "scene/light_packing.h"
 #include "shading/cpu_shading.h"
 #include "shading/environment_brdf.h"

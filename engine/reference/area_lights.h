@@ -14,7 +14,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "environment/reference.h"
+#include "reference/radiance.h"
 
 namespace patina {
 
