@@ -1,6 +1,6 @@
 #pragma once
-// A plainly written double-precision reference of ../shared/spec/shading.md section 1, with no
-// guards: each formula exactly as the spec states it. It shares no code with shaders/, so the
+// A plainly written double-precision reference of docs/SHADING.md S1, with no
+// guards: each formula exactly as S1 states it. It shares no code with shaders/, so the
 // shared GLSL/C++ is checked against an independent transcription.
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 namespace patina {
 
 namespace {
-// NoV, NoL >= 0.01: the well-defined region of spec section 2.
+// NoV, NoL >= 0.01: the well-defined region of docs/SHADING.md S2.
 const double kMaxTheta = std::acos(0.01);
 
 // Latin hypercube: each of `count` strata of [0, 1) used once per dimension, jittered.

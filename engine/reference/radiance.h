@@ -36,7 +36,7 @@ struct ReferenceEstimate {
 // D(H) NoH / (4 VoH); 0 where VoH <= 0.
 float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha);
 
-// Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (spec section 3), by Monte
+// Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (docs/LIGHTING.md L3), by Monte
 // Carlo with multiple importance sampling (Veach 1997, power heuristic) of GGX half-vector,
 // cosine and environment sampling; the model's f under an environment (environmentVisibility).
 // The analytic lights are added exactly (no error) but sphere and tube lights, which are

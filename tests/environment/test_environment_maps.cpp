@@ -123,7 +123,7 @@ TEST(PrefilterMips, RoughnessAndLodAreInverses) {
 
 TEST(SplitSum, ASmoothMetalReadsMipZeroAlone) {
     // The shading floors r at 0.045; that floor must still read the unfiltered mip, not a blend
-    // with mip 1 (spec section 5). The studio's mips differ, so a blend would show.
+    // with mip 1 (docs/LIGHTING.md L5). The studio's mips differ, so a blend would show.
     const auto studio = preparedBuiltinEnvironment("builtin:studio");
     ASSERT_TRUE(studio);
     Material mirror;
@@ -151,7 +151,7 @@ TEST(SplitSum, ASmoothMetalReadsMipZeroAlone) {
 }
 
 TEST(SphericalHarmonics, ALinearEnvironmentHasItsExactIrradiance) {
-    // Env = a + b d.y is exactly bands 0 and 1: E(n) = pi a + (2 pi / 3) b n.y (spec section 3).
+    // Env = a + b d.y is exactly bands 0 and 1: E(n) = pi a + (2 pi / 3) b n.y (docs/LIGHTING.md L3).
     const float a = 0.7f, b = 0.4f;
     const HdrImage image = test::equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); });
     const ShCoefficients sh = projectSH(image);

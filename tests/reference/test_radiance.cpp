@@ -1,6 +1,6 @@
-// The ground truth converges to what is known exactly (spec section 3): the white furnace, an
+// The ground truth converges to what is known exactly (docs/LIGHTING.md L3): the white furnace, an
 // environment that depends only on height under rotation, and a linear environment's
-// irradiance. Each within a few standard errors and inside the tolerance the spec names.
+// irradiance. Each within a few standard errors and inside the tolerance docs/LIGHTING.md L3 names.
 #include <cmath>
 #include <numbers>
 
@@ -121,7 +121,7 @@ TEST(Reference, AnEnvironmentOfHeightAloneIsInvariantUnderRotation) {
 
 TEST(Reference, ALinearEnvironmentHasTheExactDiffuseIrradiance) {
     // Env = a + b d.y: E(n) = pi a + (2 pi / 3) b n.y, so a white Lambert surface returns
-    // a + (2 / 3) b n.y (spec section 3).
+    // a + (2 / 3) b n.y (docs/LIGHTING.md L3).
     const float a = 0.6f, b = 0.35f;
     const Fixture linear(test::equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); }));
     Material white;

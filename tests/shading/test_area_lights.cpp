@@ -264,7 +264,7 @@ TEST(SphereLight, DiffuseAboveTheHorizonIsThePointLightsWhateverTheRadius) {
     }
 }
 
-// The guards (spec section 2's habit, for area lights): every edge finite and non-negative, on
+// The guards (the habit of docs/SHADING.md S2, for area lights): every edge finite and non-negative, on
 // the shared code directly, where the packing would otherwise turn a degenerate light into a
 // point or a sphere.
 TEST(AreaLights, DegenerateLightsAndPointsStayFiniteAndNonNegative) {

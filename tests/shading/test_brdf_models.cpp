@@ -1,4 +1,4 @@
-// The BRDF variants of spec section 3 and the named models built from them: each term against
+// The BRDF variants of docs/SHADING.md S3 and the named models built from them: each term against
 // closed-form values, every model on the GPU against the same model on the CPU, reciprocity,
 // and the white furnace.
 #include <cmath>
@@ -155,7 +155,7 @@ TEST(BrdfModels, EveryModelOnTheGpuMatchesTheCpu) {
 }
 
 TEST(WhiteFurnace, HeightCorrelatedSmithAlbedoMatchesKnownValues) {
-    // Spec section 3: E(mu = 1) = 0.916 at r = 0.5, 0.627 at r = 0.75, 1 - ln 2 at r = 1.
+    // docs/SHADING.md S3: E(mu = 1) = 0.916 at r = 0.5, 0.627 at r = 0.75, 1 - ln 2 at r = 1.
     EXPECT_NEAR(directionalAlbedo(BrdfModelId::SmithCorrelated, 1.0, 1.0), 1.0 - std::log(2.0), 1e-3);
     EXPECT_NEAR(directionalAlbedo(BrdfModelId::SmithCorrelated, 1.0, 0.75), 0.627, 2e-3);
     EXPECT_NEAR(directionalAlbedo(BrdfModelId::SmithCorrelated, 1.0, 0.5), 0.916, 2e-3);

@@ -1,5 +1,5 @@
 // Each BRDF term of shaders/shared/brdf.glsl (compiled as C++) against values computed by hand from
-// ../shared/spec/shading.md section 1, and the whole BRDF against the double reference.
+// docs/SHADING.md S1, and the whole BRDF against the double reference.
 #include <numbers>
 
 #include <gtest/gtest.h>
