@@ -4,8 +4,9 @@
 #include "gl/gpu_probe.h"
 #include "gl/headless_context.h"
 #include "inputs.h"
+#include "accuracy/probe_csv.h"
+#include "reference/probe_reference.h"
 #include "scene/probe.h"
-#include "io/probe_csv.h"
 
 namespace patina::cli {
 

@@ -14,7 +14,7 @@
 #include "image/image.h"
 #include "inputs.h"
 #include "gltf/scene_mesh.h"
-#include "scene/reference_render.h"
+#include "reference/reference_render.h"
 
 namespace patina::cli {
 
@@ -25,7 +25,7 @@ extern "C" void stopAfterThisPass(int) {
     interrupted = true;
 }
 
-// The ground truth through pixel centres, pass by pass (scene/reference_render.h), with the
+// The ground truth through pixel centres, pass by pass (reference/reference_render.h), with the
 // progress on stderr; stoppable with Ctrl+C.
 RenderOutput renderReferenceImage(const Scene& scene, int width, int height, int samples) {
     const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, width, height);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include <epoxy/gl.h>
 
@@ -28,7 +29,7 @@ Scene workloadScene(BrdfModelId model, int lights) {
     scene.camera.fovYDegrees = 90.0f;
     scene.lights.clear();
     for (int i = 0; i < lights; ++i) {
-        const float angle = 6.2831853f * float(i) / float(lights);
+        const float angle = 2.0f * std::numbers::pi_v<float> * float(i) / float(lights);
         Light light;
         light.type = LightType::Directional;
         light.direction = {0.4f * std::cos(angle), 0.4f * std::sin(angle), -1.0f};

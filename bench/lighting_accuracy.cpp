@@ -9,11 +9,12 @@
 #include <sstream>
 
 #include "bench/timing.h"
+#include "common/luminance.h"
 #include "gl/renderer.h"
 #include "image/compositing.h"
 #include "image/display_image.h"
-#include "scene/pixel_surfaces.h"
-#include "scene/reference_render.h"
+#include "reference/pixel_surfaces.h"
+#include "reference/reference_render.h"
 
 namespace patina {
 
@@ -63,10 +64,6 @@ LdrImage tile(const std::vector<LdrImage>& cells, int columns) {
         }
     }
     return image;
-}
-
-float luminance(const float* rgb) {
-    return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
 }
 }  // namespace
 

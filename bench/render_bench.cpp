@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <tuple>
 
 #include <epoxy/gl.h>
@@ -300,7 +301,7 @@ Scene renderBenchScene(int lights, AddedLights added) {
     }
     const int extra = lights - int(scene.lights.size());
     for (int i = 0; i < extra; ++i) {
-        const float angle = 6.2831853f * (float(i) + 0.5f) / float(extra);
+        const float angle = 2.0f * std::numbers::pi_v<float> * (float(i) + 0.5f) / float(extra);
         Light light;
         const bool point = added != AddedLights::Directionals;
         light.type = point ? LightType::Point : LightType::Directional;

@@ -1,9 +1,10 @@
 #pragma once
-// A plainly written double-precision reference of ../shared/spec/shading.md section 1, with no
-// guards: each formula exactly as the spec states it. It shares no code with shaders/, so the
+// A plainly written double-precision reference of docs/SHADING.md S1, with no
+// guards: each formula exactly as S1 states it. It shares no code with shaders/, so the
 // shared GLSL/C++ is checked against an independent transcription.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace patina::reference {
@@ -19,7 +20,6 @@ inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline double length(Vec3 a) { return std::sqrt(dot(a, a)); }
 inline Vec3 normalize(Vec3 a) { return (1.0 / length(a)) * a; }
 
-constexpr double kPi = 3.14159265358979323846;
 
 struct Material {
     Vec3 baseColor;
@@ -47,7 +47,7 @@ inline Vec3 specularColor(const Material& m) {
 inline double D(double NoH, double r) {
     const double alpha = r * r, a2 = alpha * alpha;
     const double base = NoH * NoH * (a2 - 1.0) + 1.0;
-    return a2 / (kPi * base * base);
+    return a2 / (std::numbers::pi * base * base);
 }
 
 inline double G(double NoL, double NoV, double r) {
@@ -73,7 +73,7 @@ inline Brdf brdf(const Material& m, Vec3 N, Vec3 V, Vec3 L) {
     L = normalize(L);
     const Vec3 H = normalize(L + V);
     const double NoL = dot(N, L), NoV = dot(N, V), NoH = dot(N, H), VoH = dot(V, H);
-    const Vec3 d = (1.0 / kPi) * diffuseColor(m);
+    const Vec3 d = (1.0 / std::numbers::pi) * diffuseColor(m);
     const Vec3 sp = (D(NoH, m.roughness) * G(NoL, NoV, m.roughness) / (4.0 * NoL * NoV)) *
                     F(specularColor(m), VoH);
     return {d, sp};
@@ -86,7 +86,7 @@ inline Vec3 shade(const Material& m, const Light& light, Vec3 P, Vec3 N, Vec3 V)
     if (light.type == Light::Hemisphere) {
         const double w = std::clamp(N.y, 0.0, 1.0);
         const Vec3 sky = (1.0 - w) * light.ground + w * light.sky;
-        return (sky * cLight) * ((1.0 / kPi) * diffuseColor(m));
+        return (sky * cLight) * ((1.0 / std::numbers::pi) * diffuseColor(m));
     }
     Vec3 L;
     double attenuation = 1.0;

@@ -141,6 +141,25 @@ TEST(Layers, NoEngineFileIncludesALayerItDoesNotDependOn) {
     }
 }
 
+// The folders say what ships and what measures (docs/ARCHITECTURE.md, "The rooms"): no layer of
+// the product reaches the ground truth or the measurements, so neither is on the path from a
+// file to an image.
+TEST(Layers, NoProductLayerReachesTheMeasurements) {
+    const Layers layers = readLayers(PATINA_LAYERS_FILE);
+    const std::set<std::string> measurement{"reference", "accuracy"};
+    for (const std::string& name : measurement) {
+        EXPECT_TRUE(layers.count(name)) << name << " is not declared as a layer";
+    }
+    for (const auto& [layer, declared] : layers) {
+        if (measurement.count(layer)) {
+            continue;
+        }
+        for (const std::string& reached : reachable(layers, layer)) {
+            EXPECT_FALSE(measurement.count(reached)) << layer << " reaches " << reached;
+        }
+    }
+}
+
 // The editor's library takes nothing from the benchmarks.
 TEST(Layers, TheEditorIncludesNoBenchmarkCode) {
     const fs::path editor = fs::path(PATINA_SOURCE_DIR) / "app" / "editor";

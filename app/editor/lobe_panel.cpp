@@ -1,10 +1,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include "common/luminance.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "lobe_plot.h"
@@ -15,11 +17,6 @@
 namespace patina::editor {
 
 namespace {
-// Rec. 709 luminance of linear RGB.
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
-
 // theta_in from the first enabled directional light, seen from the camera: the angle between
 // L and the normal that faces the viewer.
 std::optional<float> followedThetaIn(const EditorState& state) {
@@ -46,7 +43,7 @@ void drawPolar(const LobePlot& plot, const LobeSettings& lobe, ImVec2 size) {
     draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     for (float ring : {0.25f, 0.5f, 0.75f, 1.0f}) {
-        draw->PathArcTo(centre, radius * ring, -3.14159265f, 0.0f, 48);
+        draw->PathArcTo(centre, radius * ring, -std::numbers::pi_v<float>, 0.0f, 48);
         draw->PathStroke(IM_COL32(70, 70, 80, 255), 0, 1.0f);
     }
     draw->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), IM_COL32(120, 120, 130, 255));

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "common/luminance.h"
 #include "shading/lobe.h"
 
 namespace patina::editor {
@@ -12,11 +13,6 @@ namespace patina::editor {
 namespace {
 constexpr uint32_t rgba(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
     return r | (g << 8) | (b << 16) | (a << 24);   // IM_COL32's layout
-}
-
-// Rec. 709 luminance of linear RGB.
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
+#include "shading/shading.h"
 #include "panels.h"
 #include "widgets.h"
 
@@ -64,9 +65,8 @@ void drawAdvanced(EditorState& state) {
     // What the shader derives from the four parameters (shaders/shared/brdf.glsl), guards included.
     const shader::SurfaceMaterial derived = surfaceMaterial(material);
     ImGui::TextDisabled("Derived");
-    const float k = (derived.roughness + 1.0f) * (derived.roughness + 1.0f) / 8.0f;
     ImGui::Text("alpha = r^2       %.5f", double(derived.alpha));
-    ImGui::Text("k = (r+1)^2 / 8   %.5f", double(k));
+    ImGui::Text("k = (r+1)^2 / 8   %.5f", double(shader::k_Karis(derived.roughness)));
     if (derived.roughness != material.roughness) {
         ImGui::TextDisabled("roughness floored at %.3f (D is 0/0 at r = 0)", double(derived.roughness));
     }

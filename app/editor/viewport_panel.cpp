@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -110,9 +111,9 @@ void drawCapsule(ImDrawList* draw, ImVec2 start, ImVec2 end, float startRadius, 
     draw->AddLine(at(a + startRadius * across), at(b + endRadius * across), color, 1.5f);
     draw->AddLine(at(a - startRadius * across), at(b - endRadius * across), color, 1.5f);
     const float angle = std::atan2(across.y, across.x);
-    draw->PathArcTo(end, endRadius, angle - 3.14159265f, angle);
+    draw->PathArcTo(end, endRadius, angle - std::numbers::pi_v<float>, angle);
     draw->PathStroke(color, 0, 1.5f);
-    draw->PathArcTo(start, startRadius, angle, angle + 3.14159265f);
+    draw->PathArcTo(start, startRadius, angle, angle + std::numbers::pi_v<float>);
     draw->PathStroke(color, 0, 1.5f);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <random>
 
@@ -10,8 +11,7 @@
 namespace patina {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-// NoV, NoL >= 0.01: the well-defined region of spec section 2.
+// NoV, NoL >= 0.01: the well-defined region of docs/SHADING.md S2.
 const double kMaxTheta = std::acos(0.01);
 
 // Latin hypercube: each of `count` strata of [0, 1) used once per dimension, jittered.
@@ -50,7 +50,7 @@ AccuracySet stratifiedAccuracySet(int roughnessStrata, int metallicStrata, int s
                 for (int i = 0; i < perMaterial; ++i) {
                     // N at theta_l from L; V at theta_v from N, phi from the plane of N and L.
                     const double tl = thetaL[size_t(i)] * kMaxTheta, tv = thetaV[size_t(i)] * kMaxTheta;
-                    const double p = phi[size_t(i)] * 2.0 * kPi;
+                    const double p = phi[size_t(i)] * 2.0 * std::numbers::pi;
                     const glm::dvec3 N(std::sin(tl), 0.0, std::cos(tl));
                     const glm::dvec3 t = tl > 1e-9 ? glm::normalize(L - std::cos(tl) * N) : glm::dvec3(1, 0, 0);
                     const glm::dvec3 b = glm::cross(N, t);

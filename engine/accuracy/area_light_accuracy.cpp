@@ -4,11 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 
 #include <glm/glm.hpp>
 
 #include "image/caption.h"
+#include "reference/probe_reference.h"
 #include "scene/light_packing.h"
 #include "scene/probe.h"
 #include "shading/brdf_models.h"
@@ -17,7 +19,6 @@
 namespace patina {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 struct Method {
     const char* name;
@@ -120,7 +121,7 @@ void addDiffuseRows(std::vector<AreaAccuracyRow>& rows, bool tube, double size, 
     const ProbeSample sample{glm::vec3(0.0f), {0, 0, 1}, {0, 0, 1}};
     const ReferenceRow truth = probeReference(material, {light}, {sample}, nullptr, samples)[0];
     // E / pi over the illuminance straight above, I / d^2 = 1.
-    const double scale = 1.0 / kPi;
+    const double scale = 1.0 / std::numbers::pi;
     for (const Method& method : kDiffuseMethods) {
         if (tube && method.method.exactSphereDiffuse) {
             continue;   // Frostbite's closed form is a sphere's
@@ -197,7 +198,7 @@ AreaAccuracyResult runAreaAccuracy(bool quick) {
             quick ? std::vector<double>{0.3} : std::vector<double>{0.1, 0.3, 0.5, 0.7, 0.9};
         for (double size : diffuseSizes) {
             // From straight above to the light's last sliver above the horizon.
-            const double last = kPi / 2.0 + std::asin(size);
+            const double last = std::numbers::pi / 2.0 + std::asin(size);
             const int steps = quick ? 4 : 16;
             for (int i = 0; i <= steps; ++i) {
                 addDiffuseRows(result.rows, tube, size, last * i / (steps + 1), result.referenceSamples * 4);

@@ -1,6 +1,6 @@
 #pragma once
 // `patina area-accuracy`: what each area-light shortcut costs against the exact integral
-// (environment/area_reference.h). Karis 2013's representative point for the specular lobe with
+// (reference/area_lights.h). Karis 2013's representative point for the specular lobe with
 // both readings of eq. 10's widening (s / (2 d) and s / (3 d)); for the diffuse lobe Karis's
 // point at the centre (the line irradiance for a tube) and Frostbite 2014's horizon-clipped
 // sphere illuminance; over roughness, the light's angular size s / d, and elevations where the

@@ -1,5 +1,5 @@
 #pragma once
-// The inputs where the spec's formulas fail (../shared/spec/shading.md section 2), as probe
+// The inputs where the formulas fail (docs/SHADING.md S2), as probe
 // rows and scenes, for the CPU and GPU edge sweeps.
 #include <string>
 #include <vector>

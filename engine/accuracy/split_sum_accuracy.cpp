@@ -4,12 +4,14 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 #include <glm/geometric.hpp>
 
+#include "common/luminance.h"
 #include "common/parallel_for.h"
-#include "environment/reference.h"
+#include "reference/radiance.h"
 #include "shading/brdf_models.h"
 #include "shading/environment_brdf.h"
 #include "shading/half.h"
@@ -17,17 +19,12 @@
 namespace patina {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
-
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
 
 // `count` unit vectors spread evenly over the sphere (a Fibonacci lattice): surfaces facing up,
 // down and sideways, so a sun, a floor and the horizon all count.
 std::vector<glm::vec3> spreadNormals(int count) {
     std::vector<glm::vec3> normals;
-    const float golden = kPi * (3.0f - std::sqrt(5.0f));
+    const float golden = std::numbers::pi_v<float> * (3.0f - std::sqrt(5.0f));
     for (int i = 0; i < count; ++i) {
         const float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(count);
         const float radius = std::sqrt(std::max(0.0f, 1.0f - y * y));
@@ -315,7 +312,8 @@ SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environmen
                 const glm::vec3 unclamped = irradianceUnclamped(*method.coefficients, normals[i]);
                 negative += luminance(unclamped) < 0.0f;
                 const glm::vec3 e = method.clamp ? glm::max(unclamped, glm::vec3(0.0f)) : unclamped;
-                const double error = std::abs(double(luminance(e)) / double(kPi) - truth[i]) / std::max(truth[i], 1e-6);
+                const double error = std::abs(double(luminance(e)) / double(std::numbers::pi_v<float>) - truth[i]) /
+                                     std::max(truth[i], 1e-6);
                 row.meanRelativeError += error / double(normals.size());
                 row.maxRelativeError = std::max(row.maxRelativeError, error);
             }

@@ -1,6 +1,6 @@
 #pragma once
-// What each approximation of image-based lighting costs in accuracy (issue 18, spec sections 2,
-// 3 and 5): Karis's split sum against the Monte Carlo ground truth of the same BRDF under the
+// What each approximation of image-based lighting costs in accuracy (issue 18; docs/LIGHTING.md
+// L2, L3 and L5): Karis's split sum against the Monte Carlo ground truth of the same BRDF under the
 // same environment, over a grid of (NoV, r, F0), with its error split by source, the dominant
 // direction variant and the stochastic mode. Nobody publishes these numbers; docs/LIGHTING.md
 // shows them.

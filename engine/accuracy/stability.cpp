@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 
 #include "accuracy/accuracy.h"
 #include "image/compositing.h"
@@ -27,9 +28,8 @@ const char* precisionName(Precision precision) {
 }
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kFp16Max = 65504.0;
-const double kAzimuths[] = {kPi, kPi / 2};   // pi: V in the mirror plane (the specular peak)
+const double kAzimuths[] = {std::numbers::pi, std::numbers::pi / 2};   // pi: V in the mirror plane (the specular peak)
 const float kMetallic[] = {0.0f, 1.0f};
 
 // The configuration in the frame of a light along +z (so the GPU probe's one directional light

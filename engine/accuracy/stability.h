@@ -1,6 +1,6 @@
 #pragma once
-// `patina stability`: where each model fails. A grid of roughness x NoV x NoL (spec section 2's
-// failure points included) evaluated in fp64, fp32 and emulated fp16 on the CPU and fp32 on the
+// `patina stability`: where each model fails. A grid of roughness x NoV x NoL (the failure points
+// of docs/SHADING.md S2 included) evaluated in fp64, fp32 and emulated fp16 on the CPU and fp32 on the
 // GPU, plus the special cases of edge_cases.h. Needs a current GL context.
 #include <string>
 #include <vector>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -13,7 +14,6 @@
 namespace patina {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
 
 // Indices of a (rows + 1) x (columns + 1) vertex grid, two triangles per cell, wound so that
 // the outward normal faces the viewer (counter-clockwise).
@@ -36,7 +36,7 @@ std::vector<uint32_t> gridIndices(int rows, int columns) {
 // is not 0.
 glm::vec2 turn(int k, int n) {
     n = std::max(n, 1);
-    const float angle = 2.0f * kPi * float(k % n) / float(n);
+    const float angle = 2.0f * std::numbers::pi_v<float> * float(k % n) / float(n);
     return {std::sin(angle), std::cos(angle)};
 }
 }  // namespace
@@ -44,7 +44,7 @@ glm::vec2 turn(int k, int n) {
 Mesh makeUvSphere(int rings, int segments) {
     Mesh mesh;
     for (int ring = 0; ring <= rings; ++ring) {
-        const float theta = kPi * float(ring) / float(rings);   // from +y down
+        const float theta = std::numbers::pi_v<float> * float(ring) / float(rings);   // from +y down
         // sin(float(pi)) is not 0: the south pole's copies would differ.
         const float sinTheta = ring == rings ? 0.0f : std::sin(theta);
         const float cosTheta = ring == rings ? -1.0f : std::cos(theta);

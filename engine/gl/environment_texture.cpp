@@ -27,7 +27,7 @@ unsigned uploadCubeChain(const CubeChain& chain) {
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) {
         glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
     }
-    // A cube map filtered face by face shows its seams, more the rougher the level (spec section 5).
+    // A cube map filtered face by face shows its seams, more the rougher the level (docs/LIGHTING.md L5).
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     return texture;
 }

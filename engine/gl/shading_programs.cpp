@@ -181,7 +181,7 @@ const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const Shader
 namespace {
 // A square table of 32-bit floats, read by texelFetch only: the shared GLSL interpolates it
 // itself (energy_table.glsl's tableCoordinate), so the CPU and the GPU use the same arithmetic.
-// Never 8 bits or sRGB: a table of those bands (spec section 2).
+// Never 8 bits or sRGB: a table of those bands (docs/LIGHTING.md L2).
 unsigned tableTexture(GLint internalFormat, GLenum format, int size, const void* data) {
     unsigned texture = 0;
     glGenTextures(1, &texture);

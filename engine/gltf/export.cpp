@@ -9,7 +9,6 @@
 #include "gltf/glb.h"
 #include "gltf/import.h"
 #include "gltf/material.h"
-#include "image/image.h"
 #include "io/input_error.h"
 #include "io/file_bytes.h"
 

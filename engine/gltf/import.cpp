@@ -1,9 +1,9 @@
 #include "gltf/import.h"
 
-#include <algorithm>
 #include <cctype>
 #include <new>
 
+#include "common/one_line.h"
 #include "gltf/files.h"
 #include "gltf/geometry.h"
 #include "gltf/glb.h"
@@ -14,15 +14,6 @@
 namespace patina {
 
 namespace {
-
-// tinygltf collects messages line by line; one line reads better after "FILE: ".
-std::string oneLine(std::string text) {
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) {
-        text.pop_back();
-    }
-    std::replace(text.begin(), text.end(), '\n', ';');
-    return text.empty() ? "cannot be loaded" : text;
-}
 
 // Extensions a file may require: Patina reads these, or ignores only textures they change.
 bool canRequire(const std::string& extension) {
@@ -70,7 +61,9 @@ tinygltf::Model loadModel(const std::filesystem::path& path, const std::string& 
     }
     // tinygltf also reports some errors (an array of the wrong length) without failing.
     if (!loaded || !error.empty()) {
-        throw InputError(source + ": " + oneLine(error));
+        // tinygltf collects messages line by line: one line, its lines apart by ';'.
+        const std::string message = oneLine(error, ';');
+        throw InputError(source + ": " + (message.empty() ? "cannot be loaded" : message));
     }
     for (const std::string& extension : model.extensionsRequired) {
         if (!canRequire(extension)) {

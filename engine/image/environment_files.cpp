@@ -20,6 +20,7 @@
 #include <ImfRgbaFile.h>
 #include <stb_image.h>
 
+#include "common/one_line.h"
 #include "environment/equirect.h"
 #include "io/input_error.h"
 #include "io/regular_file.h"
@@ -614,12 +615,6 @@ HdrImage readLuminanceChroma(Imf::IStream& stream, const ExrLayout& layout) {
     return image;
 }
 
-// OpenEXR's messages may span lines; a message here is one.
-std::string oneLine(std::string text) {
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    return text;
-}
-
 }  // namespace
 
 HdrImage decodeRadianceHdr(const std::vector<uint8_t>& bytes, const std::string& name) {
@@ -656,7 +651,7 @@ HdrImage decodeOpenExr(const std::vector<uint8_t>& bytes, const std::string& nam
     } catch (const std::bad_alloc&) {
         throw InputError(name + ": out of memory while decoding");
     } catch (const std::exception& error) {   // Iex::BaseExc and the standard library's
-        throw InputError(name + ": cannot be decoded: " + oneLine(error.what()));
+        throw InputError(name + ": cannot be decoded: " + oneLine(error.what(), ' '));
     }
 }
 

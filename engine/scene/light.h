@@ -15,7 +15,7 @@ std::string_view lightTypeName(LightType type);
 std::optional<LightType> lightTypeFromName(std::string_view name);
 
 // One light of any type; fields a type does not use keep their defaults and are ignored.
-// c_light = color * intensity (spec section 1).
+// c_light = color * intensity (docs/SHADING.md S1).
 struct Light {
     LightType type = LightType::Point;
     std::string name = "light";

@@ -33,7 +33,7 @@ shader::PackedLight packLight(const Light& light) {
     packed.sourceRadius = packed.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
     packed.tubeEnd = light.end;
     packed.inverseRange = light.range > 0.0f ? 1.0f / light.range : 0.0f;
-    // Spec: L = -normalize(direction). A zero direction (rejected by the loaders) gives no light
+    // L = -normalize(direction) (docs/SHADING.md S1). A zero direction (rejected by the loaders) gives no light
     // rather than NaN.
     packed.directionToLight = -shader::safeNormalize(light.direction);
     packed.attenuation = light.attenuation;

@@ -1,12 +1,9 @@
 #include "scene/probe.h"
 
 #include <algorithm>
-#include <optional>
 #include <stdexcept>
 
-#include "common/parallel_for.h"
 #include "scene/light_packing.h"
-#include "environment/reference.h"
 #include "shading/cpu_shading.h"
 
 namespace patina {
@@ -32,33 +29,6 @@ std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Li
         radiance.push_back(value);
     }
     return radiance;
-}
-
-std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
-                                         const std::vector<ProbeSample>& samples,
-                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
-                                         uint64_t pass) {
-    const shader::SurfaceMaterial surface = surfaceMaterial(material);
-    const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
-    const Light* environmentLight = enabledEnvironment(lights);
-    const std::shared_ptr<const Environment> shown =
-        environmentLight ? environmentShown(environment, environmentLight->source) : nullptr;
-    std::optional<EnvironmentDistribution> distribution;
-    ReferenceEnvironment reference;
-    if (environmentLight) {
-        distribution.emplace(shown->image);
-        reference = {shown.get(), &*distribution, environmentLight->intensity, environmentLight->rotationDegrees};
-    }
-    std::vector<ReferenceRow> rows(samples.size());
-    parallelFor(samples.size(), [&](size_t i) {
-        ReferenceOptions options;
-        options.samples = samplesPerRow;
-        options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
-        const ReferenceEstimate e = referenceRadiance(material.model, surface, reference, packed, samples[i].position,
-                                                      samples[i].normal, samples[i].toViewer, options);
-        rows[i] = {e.value, e.standardError};
-    });
-    return rows;
 }
 
 }  // namespace patina

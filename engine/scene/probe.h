@@ -1,5 +1,4 @@
 #pragma once
-#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -23,18 +22,5 @@ struct ProbeSample {
 std::vector<glm::vec3> probeOnCpu(const Material& material, const std::vector<Light>& lights,
                                   const std::vector<ProbeSample>& samples,
                                   const std::shared_ptr<const Environment>& environment = nullptr);
-
-// The ground truth of the same rows (environment/reference.h): the lights exactly, the
-// environment by Monte Carlo with `samples` iterations a row, each row with its own seed, on
-// every core. value and standard error per row. Estimates with another `pass` draw other
-// random numbers: independent, so a progressive render averages them.
-struct ReferenceRow {
-    glm::vec3 value;
-    glm::vec3 standardError;
-};
-std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
-                                         const std::vector<ProbeSample>& samples,
-                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
-                                         uint64_t pass = 0);
 
 }  // namespace patina

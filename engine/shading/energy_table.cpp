@@ -3,13 +3,13 @@
 #include <array>
 #include <cmath>
 #include <mutex>
+#include <numbers>
 
 #include "shading/brdf_models.h"
 
 namespace patina {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // Van der Corput radical inverse in base 2 (the second coordinate of the Hammersley set), in
 // double: the shared bit reversal of ibl.glsl, divided without fp32's rounding.
@@ -50,7 +50,7 @@ double directionalAlbedo(BrdfModelId id, double NoV, double roughness, int sampl
         // GGX distribution of H: cos^2 theta_h = (1 - u) / (1 + (a^2 - 1) u).
         const double cosH = std::sqrt((1.0 - u1) / (1.0 + (a2 - 1.0) * u1));
         const double sinH = std::sqrt(std::max(0.0, 1.0 - cosH * cosH));
-        const double phi = 2.0 * kPi * u2;
+        const double phi = 2.0 * std::numbers::pi * u2;
         const glm::dvec3 H(sinH * std::cos(phi), sinH * std::sin(phi), cosH);
         const double VoH = glm::dot(V, H);
         const glm::dvec3 L = 2.0 * VoH * H - V;
@@ -60,7 +60,7 @@ double directionalAlbedo(BrdfModelId id, double NoV, double roughness, int sampl
         }
         // pdf(L) = D(H) NoH / (4 VoH).
         const double base = cosH * cosH * (a2 - 1.0) + 1.0;
-        const double pdf = a2 / (kPi * base * base) * cosH / (4.0 * VoH);
+        const double pdf = a2 / (std::numbers::pi * base * base) * cosH / (4.0 * VoH);
         sum += specularLobeF64(id, roughness, N, V, L) * NoL / pdf;
     }
     return sum / double(samples);

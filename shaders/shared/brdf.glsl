@@ -19,7 +19,7 @@ const real MAX_HALF = 65504.0f;
 const real MIN_PERCEPTUAL_ROUGHNESS = 0.045f;
 #endif
 // sp divides by NoV; a normal that faces away from the camera (smooth normals at the
-// silhouette) would make it 0 or negative. 1e-4 is the usual floor (spec section 2).
+// silhouette) would make it 0 or negative. 1e-4 is the usual floor (docs/SHADING.md S2).
 const real MIN_N_DOT_V = 1e-4f;
 
 struct SurfaceMaterial {
@@ -64,7 +64,7 @@ PATINA_INLINE real D_GGX(real NoH, vec3 NxH, real alpha) {
     real a = NoH * alpha;
     real k = alpha / (oneMinusNoHSquared + a * a);
 #ifdef PATINA_HALF_PRECISION
-    // k itself can pass 65504 below the floor's peak; cap as spec section 2 does.
+    // k itself can pass 65504 below the floor's peak; cap as docs/SHADING.md S2 does.
     return min(min(k, 256.0f) * min(k, 256.0f) * (1.0f / PATINA_PI), MAX_HALF);
 #else
     return k * k * (1.0f / PATINA_PI);

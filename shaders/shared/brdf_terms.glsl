@@ -2,7 +2,7 @@
 // PATINA_MS), by name. Shared GLSL / C++ preprocessor constants: brdf_model.glsl tests them and
 // engine/shading/brdf_model_list.h builds the models from them.
 // D: the distribution.
-#define PATINA_D_GGX 0                 // GGX in Lagrange's form, guarded (Karis 2013 eq. 2)
+#define PATINA_D_GGX 0                 // GGX in Lagrange's form, guarded (Karis 2013 eq. 3)
 #define PATINA_D_GGX_STANDARD 1        // GGX in its standard form (fp32 cancellation near NoH = 1)
 // V: the visibility (geometry over 4 NoL NoV).
 #define PATINA_V_SCHLICK_KARIS 0       // Schlick-GGX, k = (r+1)^2/8 (Karis 2013 eq. 4)

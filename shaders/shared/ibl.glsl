@@ -95,7 +95,7 @@ PATINA_INLINE vec3 toEnvironmentFrame(vec3 d, real cosRotation, real sinRotation
 // glossy end), with t the roughness above the BRDF's floor, t = (r - r_min) / (1 - r_min).
 // Mip 0 is the unfiltered source and the floor's lobe (alpha = 0.045^2, a tenth of a degree) is
 // narrower than its texels, so every r at or below the floor reads mip 0 alone: with t = r the
-// floor would read lod 0.44 and blend a mirror with mip 1 (spec section 5, "r = 0 blending mip
+// floor would read lod 0.44 and blend a mirror with mip 1 (docs/LIGHTING.md L5, "r = 0 blending mip
 // 0 and 1"). r = 1 reads the last mip.
 PATINA_INLINE real roughnessToLod(real roughness, real maxLod) {
     real t = clamp((roughness - MIN_PERCEPTUAL_ROUGHNESS) / (1.0f - MIN_PERCEPTUAL_ROUGHNESS), 0.0f, 1.0f);

@@ -46,7 +46,7 @@ struct PackedLight {
 // (docs/PERFORMANCE.md).
 const vec3 KARIS_ATTENUATION = vec3(1.0f, 0.0f, 1.0f);
 
-// Windowed distance attenuation (spec section 1, after Karis 2013 eq. 9, with the general
+// Windowed distance attenuation (docs/SHADING.md S1, after Karis 2013 eq. 9, with the general
 // a_c + a_l t + a_q t^2 denominator): clamp(1 - (t/range)^4, 0, 1)^2 / (a_c + a_l t + a_q t^2).
 // Takes 1/range, packed on the CPU: no division, and no branch for "no window", which
 // inverseRange = 0 gives exactly (t * 0 = 0, window 1), so a loop over lights of both kinds

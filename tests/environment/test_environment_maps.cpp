@@ -2,6 +2,7 @@
 // convention, the roughness-to-mip mapping, the irradiance coefficients, the (A, B) table and
 // the CPU split sum under a white environment.
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -20,7 +21,6 @@
 namespace patina {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 
 TEST(CubeMap, EveryFaceMapsBackToItself) {
@@ -123,7 +123,7 @@ TEST(PrefilterMips, RoughnessAndLodAreInverses) {
 
 TEST(SplitSum, ASmoothMetalReadsMipZeroAlone) {
     // The shading floors r at 0.045; that floor must still read the unfiltered mip, not a blend
-    // with mip 1 (spec section 5). The studio's mips differ, so a blend would show.
+    // with mip 1 (docs/LIGHTING.md L5). The studio's mips differ, so a blend would show.
     const auto studio = preparedBuiltinEnvironment("builtin:studio");
     ASSERT_TRUE(studio);
     Material mirror;
@@ -151,14 +151,14 @@ TEST(SplitSum, ASmoothMetalReadsMipZeroAlone) {
 }
 
 TEST(SphericalHarmonics, ALinearEnvironmentHasItsExactIrradiance) {
-    // Env = a + b d.y is exactly bands 0 and 1: E(n) = pi a + (2 pi / 3) b n.y (spec section 3).
+    // Env = a + b d.y is exactly bands 0 and 1: E(n) = pi a + (2 pi / 3) b n.y (docs/LIGHTING.md L3).
     const float a = 0.7f, b = 0.4f;
     const HdrImage image = test::equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); });
     const ShCoefficients sh = projectSH(image);
     std::mt19937 rng(9);
     for (int i = 0; i < 50; ++i) {
         const glm::vec3 n = test::randomUnitVector(rng);
-        const float exact = kPi * a + 2.0f * kPi / 3.0f * b * n.y;
+        const float exact = std::numbers::pi_v<float> * a + 2.0f * std::numbers::pi_v<float> / 3.0f * b * n.y;
         EXPECT_NEAR(irradianceUnclamped(sh, n).x, exact, 1e-3f * exact);
     }
 }

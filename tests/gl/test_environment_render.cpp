@@ -8,7 +8,7 @@
 
 #include "environment/environment.h"
 #include "gl/gpu_probe.h"
-#include "scene/pixel_surfaces.h"
+#include "reference/pixel_surfaces.h"
 #include "shading/cpu_shading.h"
 #include "test_support.h"
 

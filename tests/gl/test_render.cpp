@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,7 @@ Scene manyLightScene(int perType) {
     Scene scene = defaultScene();
     scene.lights.clear();
     for (int i = 0; i < perType; ++i) {
-        const float angle = 6.2831853f * float(i) / float(perType);
+        const float angle = 2.0f * std::numbers::pi_v<float> * float(i) / float(perType);
         Light point;
         point.type = LightType::Point;
         point.position = {2.5f * std::cos(angle), 1.0f, 2.5f * std::sin(angle) + 1.0f};
@@ -79,7 +80,7 @@ Scene areaLightScene(int perType) {
     Scene scene = defaultScene();
     scene.lights.clear();
     for (int i = 0; i < perType; ++i) {
-        const float angle = 6.2831853f * float(i) / float(perType);
+        const float angle = 2.0f * std::numbers::pi_v<float> * float(i) / float(perType);
         Light sphere;
         sphere.type = LightType::Sphere;
         sphere.position = {2.0f * std::cos(angle), 1.2f, 2.0f * std::sin(angle) + 1.0f};

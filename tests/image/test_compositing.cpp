@@ -1,6 +1,7 @@
 // Captions (engine/image/caption.h) and the images compare and sheet write (engine/image/compositing.h).
 #include <gtest/gtest.h>
 
+#include "common/luminance.h"
 #include "image/caption.h"
 #include "image/compositing.h"
 
@@ -243,11 +244,14 @@ TEST(Compositing, HeatRampRisesInLuma) {
     EXPECT_TRUE(heatColour(0) == kBlack);
     EXPECT_TRUE(heatColour(-5) == kBlack);
     EXPECT_TRUE(heatColour(300) == heatColour(255));
-    auto luma = [](Rgb8 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    auto luma = [](Rgb8 c) {
+        const float rgb[] = {float(c.r), float(c.g), float(c.b)};
+        return luminance(rgb);
+    };
     for (int d = 1; d <= 255; ++d) {
         EXPECT_GT(luma(heatColour(d)), luma(heatColour(d - 1))) << d;
     }
-    EXPECT_GT(luma(heatColour(255)), 240.0);
+    EXPECT_GT(luma(heatColour(255)), 240.0f);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // lights"), compiled as C++: their limits are the lights they generalise, their terms are what
 // the papers say, and their guards keep every edge finite and non-negative.
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -18,7 +19,6 @@
 namespace patina {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 Light sphereLight(glm::vec3 centre, float radius) {
     Light light;
@@ -259,12 +259,12 @@ TEST(SphereLight, DiffuseAboveTheHorizonIsThePointLightsWhateverTheRadius) {
             const glm::vec3 diffuse = shader::model_Epic::shadeSphereLightWith(
                 packed, true, false, shader::AreaLightMethod(shader::WIDENING_UE4, exact), surface, glm::vec3(0.0f), N, V);
             // Specular 0 leaves F0 = 0: only the Fresnel tail, far below the diffuse.
-            EXPECT_NEAR(diffuse.r, light.intensity * 0.8f / kPi, 2e-3f * light.intensity) << radius;
+            EXPECT_NEAR(diffuse.r, light.intensity * 0.8f / std::numbers::pi_v<float>, 2e-3f * light.intensity) << radius;
         }
     }
 }
 
-// The guards (spec section 2's habit, for area lights): every edge finite and non-negative, on
+// The guards (the habit of docs/SHADING.md S2, for area lights): every edge finite and non-negative, on
 // the shared code directly, where the packing would otherwise turn a degenerate light into a
 // point or a sphere.
 TEST(AreaLights, DegenerateLightsAndPointsStayFiniteAndNonNegative) {

@@ -1,7 +1,8 @@
-// The BRDF variants of spec section 3 and the named models built from them: each term against
+// The BRDF variants of docs/SHADING.md S3 and the named models built from them: each term against
 // closed-form values, every model on the GPU against the same model on the CPU, reciprocity,
 // and the white furnace.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -48,9 +49,9 @@ TEST(VariantTerms, SmithVisibilitiesAtAlphaOne) {
 TEST(VariantTerms, BurleyDiffuse) {
     const glm::vec3 white(1.0f);
     // NoV = NoL = 1: both factors are 1, Lambert exactly.
-    EXPECT_NEAR(shader::Fd_Burley(white, 0.7f, 1.0f, 1.0f, 1.0f).x, 1.0 / 3.14159265, 1e-7);
+    EXPECT_NEAR(shader::Fd_Burley(white, 0.7f, 1.0f, 1.0f, 1.0f).x, 1.0 / std::numbers::pi, 1e-7);
     // r = 1, LoH = 1: FD90 = 2.5; NoL = NoV = 0: (1 + 1.5)^2 / pi.
-    EXPECT_NEAR(shader::Fd_Burley(white, 1.0f, 0.0f, 0.0f, 1.0f).x, 6.25 / 3.14159265, 1e-6);
+    EXPECT_NEAR(shader::Fd_Burley(white, 1.0f, 0.0f, 0.0f, 1.0f).x, 6.25 / std::numbers::pi, 1e-6);
 }
 
 TEST(VariantTerms, StandardAndLagrangeFormsOfDAgreeAwayFromThePeak) {
@@ -154,7 +155,7 @@ TEST(BrdfModels, EveryModelOnTheGpuMatchesTheCpu) {
 }
 
 TEST(WhiteFurnace, HeightCorrelatedSmithAlbedoMatchesKnownValues) {
-    // Spec section 3: E(mu = 1) = 0.916 at r = 0.5, 0.627 at r = 0.75, 1 - ln 2 at r = 1.
+    // docs/SHADING.md S3: E(mu = 1) = 0.916 at r = 0.5, 0.627 at r = 0.75, 1 - ln 2 at r = 1.
     EXPECT_NEAR(directionalAlbedo(BrdfModelId::SmithCorrelated, 1.0, 1.0), 1.0 - std::log(2.0), 1e-3);
     EXPECT_NEAR(directionalAlbedo(BrdfModelId::SmithCorrelated, 1.0, 0.75), 0.627, 2e-3);
     EXPECT_NEAR(directionalAlbedo(BrdfModelId::SmithCorrelated, 1.0, 0.5), 0.916, 2e-3);

@@ -1,5 +1,7 @@
 // Each BRDF term of shaders/shared/brdf.glsl (compiled as C++) against values computed by hand from
-// ../shared/spec/shading.md section 1, and the whole BRDF against the double reference.
+// docs/SHADING.md S1, and the whole BRDF against the double reference.
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "shading/brdf_models.h"
@@ -38,7 +40,7 @@ TEST(MaterialModel, AlphaIsRoughnessSquared) {
 }
 
 TEST(LambertTerm, IsColourOverPi) {
-    EXPECT_NEAR(shader::Fd_Lambert(glm::vec3(1.0f)).x, 0.318309886, 1e-7);
+    EXPECT_NEAR(shader::Fd_Lambert(glm::vec3(1.0f)).x, std::numbers::inv_pi, 1e-7);
 }
 
 TEST(GgxDistribution, PeakIsOneOverPiAlphaSquared) {
@@ -55,7 +57,7 @@ TEST(GgxDistribution, RoughnessOneIsUniform) {
     // alpha = 1: D = 1 / pi whatever NoH.
     for (float theta : {0.0f, 0.3f, 0.9f, 1.5f}) {
         const float c = std::cos(theta), s = std::sin(theta);
-        EXPECT_NEAR(shader::D_GGX(c, glm::vec3(s, 0.0f, 0.0f), 1.0f), 0.318309886, 1e-6);
+        EXPECT_NEAR(shader::D_GGX(c, glm::vec3(s, 0.0f, 0.0f), 1.0f), std::numbers::inv_pi, 1e-6);
     }
 }
 

@@ -1,4 +1,4 @@
-// The guards of shaders/shared/brdf.glsl and lights.glsl (spec section 2): output is finite and
+// The guards of shaders/shared/brdf.glsl and lights.glsl (docs/SHADING.md S2): output is finite and
 // non-negative everywhere, and where the formulas are well defined the guards change nothing.
 #include <cmath>
 
@@ -109,7 +109,7 @@ TEST(Guards, ChangeNothingWhereTheFormulaIsWellDefined) {
 
 TEST(Guards, LagrangeFormKeepsTheSharpestFp32PeakNearDouble) {
     // fp32 at r = 0.05 near the mirror direction, NoV and NoL >= 0.1. D's standard form loses
-    // 1 - NoH^2 to cancellation there (2% at alpha = 0.0025, spec section 2); the |N x H|^2
+    // 1 - NoH^2 to cancellation there (2% at alpha = 0.0025, docs/SHADING.md S2); the |N x H|^2
     // form leaves only the rounding of L and V themselves: 3e-7 rad of H times dlnD/dtheta of
     // up to 1 / alpha = 400 gives a few 1e-4 (measured 4.5e-4).
     std::mt19937 rng(5);

@@ -1,5 +1,6 @@
 // The three light types of shaders/shared/lights.glsl, compiled as C++.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -66,13 +67,13 @@ TEST(HemisphereLight, DownFacingPointsSeeOnlyTheGround) {
     m.baseColor = {1.0f, 1.0f, 1.0f};
     const glm::vec3 down(0.0f, -1.0f, 0.0f);
     const glm::vec3 value = shadeOne(m, light, glm::vec3(0.0f), down, down);
-    const glm::vec3 expected = light.ground * light.intensity / 3.14159265f;
+    const glm::vec3 expected = light.ground * light.intensity / std::numbers::pi_v<float>;
     EXPECT_NEAR(value.r, expected.r, 1e-6f);
     EXPECT_NEAR(value.g, expected.g, 1e-6f);
     EXPECT_NEAR(value.b, expected.b, 1e-6f);
     // Facing straight up: only the sky. Sideways: half way is still all ground (clamp at 0).
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
-    EXPECT_NEAR(shadeOne(m, light, glm::vec3(0.0f), up, up).b, light.sky.b * 2.0f / 3.14159265f, 1e-6f);
+    EXPECT_NEAR(shadeOne(m, light, glm::vec3(0.0f), up, up).b, light.sky.b * 2.0f / std::numbers::pi_v<float>, 1e-6f);
     const glm::vec3 side(1.0f, 0.0f, 0.0f);
     EXPECT_NEAR(shadeOne(m, light, glm::vec3(0.0f), side, side).r, expected.r, 1e-6f);
 }

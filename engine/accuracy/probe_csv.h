@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "reference/probe_reference.h"
 #include "scene/probe.h"
 
 namespace patina {

@@ -4,13 +4,13 @@
 #include <vector>
 
 #include "common/hdr_image.h"
-#include "scene/pixel_surfaces.h"
+#include "reference/pixel_surfaces.h"
 #include "scene/scene.h"
 
 namespace patina {
 
 // The ground truth as a picture: every pixel the mesh covers shaded by the Monte Carlo estimate
-// of environment/reference.h (the environment's full-resolution image by MIS, the analytic lights
+// of reference/radiance.h (the environment's full-resolution image by MIS, the analytic lights
 // exactly), through pixel centres (no antialiasing). The background is what the renderer draws
 // there (the colour, or the environment read as background.frag reads it), so an error map
 // against a render is the shading's alone.

@@ -1,4 +1,4 @@
-#include "io/probe_csv.h"
+#include "accuracy/probe_csv.h"
 
 #include <cerrno>
 #include <cmath>

@@ -1,8 +1,9 @@
-#include "environment/area_reference.h"
+#include "reference/area_lights.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -12,7 +13,6 @@
 namespace patina {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // A tube of radius 0 is a line, with no area to sample: the estimate takes it as this thin.
 constexpr double kMinTubeRadius = 1e-5;
@@ -23,7 +23,7 @@ struct Capsule {
     glm::dvec3 a, b;
     double radius;
     double length() const { return glm::length(b - a); }
-    double area() const { return 4.0 * kPi * radius * radius + 2.0 * kPi * radius * length(); }
+    double area() const { return 4.0 * std::numbers::pi * radius * radius + 2.0 * std::numbers::pi * radius * length(); }
 };
 
 Capsule capsuleOf(const shader::PackedLight& light) {
@@ -143,8 +143,8 @@ struct SurfacePoint {
 
 SurfacePoint sampleCapsule(const Capsule& c, glm::dvec3 u) {
     const double length = c.length();
-    const double phi = 2.0 * kPi * u.z;
-    if (u.x * c.area() < 2.0 * kPi * c.radius * length) {   // the cylinder
+    const double phi = 2.0 * std::numbers::pi * u.z;
+    if (u.x * c.area() < 2.0 * std::numbers::pi * c.radius * length) {   // the cylinder
         const glm::dvec3 axis = (c.b - c.a) / length;
         glm::dvec3 e1, e2;
         frameAround(axis, e1, e2);
@@ -183,7 +183,7 @@ glm::dvec3 areaLightRadiance(const shader::PackedLight& light, glm::vec3 P) {
                                                      : glm::length(L0);
     const double falloff = double(shader::pointLightAttenuation(t, light.inverseRange, light.attenuation)) * double(t) * double(t);
     const Capsule c = capsuleOf(light);
-    return glm::dvec3(light.radiance) * falloff / (kPi * c.radius * (c.radius + 0.5 * c.length()));
+    return glm::dvec3(light.radiance) * falloff / (std::numbers::pi * c.radius * (c.radius + 0.5 * c.length()));
 }
 
 ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMaterial& material,
@@ -224,7 +224,7 @@ ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMat
             p.axis = toCentre / d;
             // 1 - cos theta_max without cancelling: sin^2 / (1 + cos).
             p.oneMinusCosMax = sinSquared / (1.0 + std::sqrt(1.0 - sinSquared));
-            p.conePdf = 1.0 / (2.0 * kPi * p.oneMinusCosMax);
+            p.conePdf = 1.0 / (2.0 * std::numbers::pi * p.oneMinusCosMax);
         }
         prepared.push_back(p);
     }
@@ -261,7 +261,7 @@ ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMat
             if (light.cone) {
                 const double oneMinusCos = uniform(random) * light.oneMinusCosMax;
                 const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
-                const double phi = 2.0 * kPi * uniform(random);
+                const double phi = 2.0 * std::numbers::pi * uniform(random);
                 glm::dvec3 e1, e2;
                 frameAround(light.axis, e1, e2);
                 const glm::dvec3 L = glm::normalize(sinTheta * (std::cos(phi) * e1 + std::sin(phi) * e2) +

@@ -1,12 +1,14 @@
-// The ground truth of sphere and tube lights (environment/area_reference.h) converges to what is
+// The ground truth of sphere and tube lights (reference/area_lights.h) converges to what is
 // known exactly: the point light far away, a sphere's illuminance I cos / d^2 above the horizon
 // and Frostbite's closed form across it, the whole hemisphere inside the sphere, a thin line's
 // irradiance, and a mirror-like lobe inside a large sphere. Each within a few standard errors.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
-#include "environment/area_reference.h"
+#include "reference/area_lights.h"
+#include "reference/probe_reference.h"
 #include "scene/light_packing.h"
 #include "scene/probe.h"
 #include "shading/cpu_shading.h"
@@ -16,7 +18,6 @@
 namespace patina {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A physical light: inverse square, no window, so the radiance is exactly I / (pi s^2).
 Light physicalSphere(glm::vec3 centre, float radius, float intensity) {
@@ -87,7 +88,7 @@ TEST(AreaReference, DiffuseIlluminanceAboveTheHorizonIsIntensityTimesCosineOverD
             const Light light = physicalSphere(d * glm::vec3(std::sin(theta), 0.0f, std::cos(theta)), sinSigma * d, 7.0f);
             const ReferenceEstimate e = diffuseOnly(light, glm::vec3(0.0f), N, 20000);
             const double expected = light.intensity * std::cos(theta) / (d * d);
-            EXPECT_NEAR(kPi * e.value.r, expected, kPi * 4.0 * e.standardError.r + 1e-3 * expected)
+            EXPECT_NEAR(std::numbers::pi * e.value.r, expected, std::numbers::pi * 4.0 * e.standardError.r + 1e-3 * expected)
                 << "sin sigma " << sinSigma << ", theta " << thetaDegrees;
         }
     }
@@ -104,7 +105,8 @@ TEST(AreaReference, DiffuseMatchesFrostbitesClosedFormAcrossTheHorizon) {
             const ReferenceEstimate e = diffuseOnly(light, glm::vec3(0.0f), N, 20000);
             const double closedForm =
                 light.intensity / (d * d) * shader::sphereIlluminance_Frostbite(std::cos(theta), sinSigma * sinSigma);
-            EXPECT_NEAR(kPi * e.value.r, closedForm, kPi * 4.0 * e.standardError.r + 2e-3 * light.intensity / (d * d))
+            EXPECT_NEAR(std::numbers::pi * e.value.r, closedForm,
+                        std::numbers::pi * 4.0 * e.standardError.r + 2e-3 * light.intensity / (d * d))
                 << "sin sigma " << sinSigma << ", theta " << glm::degrees(theta);
         }
     }
@@ -114,7 +116,7 @@ TEST(AreaReference, InsideTheSphereTheWholeHemisphereIsLit) {
     // E = pi Le = I / s^2, by area sampling of the sphere.
     const Light light = physicalSphere({0.1f, -0.2f, 0.3f}, 1.0f, 2.0f);
     const ReferenceEstimate e = diffuseOnly(light, glm::vec3(0.0f), glm::normalize(glm::vec3(0.3f, 0.1f, 1.0f)), 20000);
-    EXPECT_NEAR(kPi * e.value.r, 2.0, kPi * 4.0 * e.standardError.r + 2e-3);
+    EXPECT_NEAR(std::numbers::pi * e.value.r, 2.0, std::numbers::pi * 4.0 * e.standardError.r + 2e-3);
 }
 
 TEST(AreaReference, ThinTubeGivesTheLineIrradiance) {
@@ -127,9 +129,9 @@ TEST(AreaReference, ThinTubeGivesTheLineIrradiance) {
     tube.start = {-1.0f, 0.0f, 1.0f};
     tube.end = {1.0f, 0.0f, 1.0f};
     const ReferenceEstimate e = diffuseOnly(tube, glm::vec3(0.0f), {0, 0, 1}, 40000);
-    const double radiance = intensity / (kPi * s * (s + 1.0));
-    const double expected = 2.0 * s * radiance * (0.5 + kPi / 4.0);
-    EXPECT_NEAR(kPi * e.value.r, expected, kPi * 4.0 * e.standardError.r + 5e-3 * expected);
+    const double radiance = intensity / (std::numbers::pi * s * (s + 1.0));
+    const double expected = 2.0 * s * radiance * (0.5 + std::numbers::pi / 4.0);
+    EXPECT_NEAR(std::numbers::pi * e.value.r, expected, std::numbers::pi * 4.0 * e.standardError.r + 5e-3 * expected);
     // Its radiance is the header's convention.
     EXPECT_NEAR(areaLightRadiance(packLight(tube), glm::vec3(0.0f)).r, radiance, 1e-5 * radiance);
 }
@@ -151,7 +153,7 @@ TEST(AreaReference, SmoothLobeInsideALargeSphereReflectsItsRadianceTimesTheAlbed
         options.samples = 20000;
         const ReferenceEstimate e =
             areaLightReference(BrdfModelId::Epic, surfaceMaterial(metal), {packLight(light)}, glm::vec3(0.0f), N, V, options);
-        const double expected = light.intensity / (kPi * 0.36) * directionalAlbedo(BrdfModelId::Epic, NoV, 0.05, 16384);
+        const double expected = light.intensity / (std::numbers::pi * 0.36) * directionalAlbedo(BrdfModelId::Epic, NoV, 0.05, 16384);
         EXPECT_NEAR(e.value.r, expected, 4.0 * e.standardError.r + 5e-3 * expected) << "NoV " << NoV;
     }
 }

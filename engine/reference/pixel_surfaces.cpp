@@ -1,4 +1,4 @@
-#include "scene/pixel_surfaces.h"
+#include "reference/pixel_surfaces.h"
 
 #include <algorithm>
 #include <cmath>

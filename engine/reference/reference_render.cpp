@@ -1,9 +1,10 @@
-#include "scene/reference_render.h"
+#include "reference/reference_render.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "environment/environment.h"
+#include "reference/probe_reference.h"
 #include "shading/environment_brdf.h"
 
 namespace patina {

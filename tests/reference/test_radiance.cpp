@@ -1,12 +1,13 @@
-// The ground truth converges to what is known exactly (spec section 3): the white furnace, an
+// The ground truth converges to what is known exactly (docs/LIGHTING.md L3): the white furnace, an
 // environment that depends only on height under rotation, and a linear environment's
-// irradiance. Each within a few standard errors and inside the tolerance the spec names.
+// irradiance. Each within a few standard errors and inside the tolerance docs/LIGHTING.md L3 names.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "environment/builtin_environments.h"
-#include "environment/reference.h"
+#include "reference/radiance.h"
 #include "scene/light_packing.h"
 #include "shading/cpu_shading.h"
 #include "shading/environment_brdf.h"
@@ -15,7 +16,6 @@
 namespace patina {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 
 struct Fixture {
@@ -51,8 +51,9 @@ TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
         const glm::vec3 N = glm::normalize(sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
         double sum = 0.0;
         for (int y = 0; y < height; ++y) {
-            const double dOmega = (std::cos(double(y) / height * kPi) - std::cos(double(y + 1) / height * kPi)) *
-                                  2.0 * kPi / width;
+            const double dOmega = (std::cos(double(y) / height * std::numbers::pi_v<float>) -
+                                   std::cos(double(y + 1) / height * std::numbers::pi_v<float>)) *
+                                  2.0 * std::numbers::pi_v<float> / width;
             for (int x = 0; x < width; ++x) {
                 const glm::vec3 L = shader::equirectToDirection(
                     glm::vec2((float(x) + 0.5f) / width, (float(y) + 0.5f) / height));
@@ -120,7 +121,7 @@ TEST(Reference, AnEnvironmentOfHeightAloneIsInvariantUnderRotation) {
 
 TEST(Reference, ALinearEnvironmentHasTheExactDiffuseIrradiance) {
     // Env = a + b d.y: E(n) = pi a + (2 pi / 3) b n.y, so a white Lambert surface returns
-    // a + (2 / 3) b n.y (spec section 3).
+    // a + (2 / 3) b n.y (docs/LIGHTING.md L3).
     const float a = 0.6f, b = 0.35f;
     const Fixture linear(test::equirectOf(256, 128, [&](glm::vec3 d) { return glm::vec3(a + b * d.y); }));
     Material white;
@@ -161,7 +162,7 @@ TEST(EnvironmentDistribution, ThePdfIntegratesToOneAndMatchesTheSamples) {
     double sum = 0.0;
     const int n = 200000;
     for (int i = 0; i < n; ++i) {
-        sum += distribution.pdf(test::randomUnitVector(rng)) * 4.0 * kPi;
+        sum += distribution.pdf(test::randomUnitVector(rng)) * 4.0 * std::numbers::pi_v<float>;
     }
     EXPECT_NEAR(sum / n, 1.0, 0.01);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "image/display_image.h"
-#include "scene/pixel_surfaces.h"
-#include "scene/reference_render.h"
+#include "reference/pixel_surfaces.h"
+#include "reference/reference_render.h"
 #include "test_support.h"
 
 namespace patina {

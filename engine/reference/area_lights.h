@@ -1,5 +1,5 @@
 #pragma once
-// The ground truth of sphere and tube lights (../shared/spec/lighting.md section 4): the
+// The ground truth of sphere and tube lights (docs/LIGHTING.md L4): the
 // integral of Le f(L, V) NoL over the directions that reach the light, by Monte Carlo, against
 // which Karis's representative point (shaders/shared/brdf_model.glsl) is measured.
 //
@@ -14,7 +14,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "environment/reference.h"
+#include "reference/radiance.h"
 
 namespace patina {
 

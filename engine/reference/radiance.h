@@ -5,31 +5,11 @@
 #include <glm/vec3.hpp>
 
 #include "environment/environment.h"
+#include "reference/environment_distribution.h"
 #include "shading/brdf_model_id.h"
 #include "shading/shading.h"
 
 namespace patina {
-
-// Importance sampling of an equirect image: a piecewise-constant 2D distribution over its
-// pixels weighted by luminance * sin(theta) (pbrt-v4's ImageInfiniteLight), so directions come
-// where the light is. Directions are in the image's own frame.
-class EnvironmentDistribution {
-public:
-    explicit EnvironmentDistribution(const HdrImage& image);
-    struct Sample {
-        glm::vec3 direction;
-        float pdf;   // per unit solid angle
-    };
-    Sample sample(float u1, float u2) const;
-    // pdf_omega = pdf_uv / (2 pi^2 sin theta).
-    float pdf(glm::vec3 direction) const;
-
-private:
-    int width_ = 0, height_ = 0;
-    std::vector<float> rowCdf_;      // height + 1
-    std::vector<float> columnCdf_;   // height * (width + 1)
-    std::vector<float> pixelPdf_;    // per unit uv area
-};
 
 // The environment of a reference estimate: the source image at full resolution, never the
 // prefiltered chain, turned and scaled as the light says.
@@ -56,11 +36,11 @@ struct ReferenceEstimate {
 // D(H) NoH / (4 VoH); 0 where VoH <= 0.
 float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha);
 
-// Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (spec section 3), by Monte
+// Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (docs/LIGHTING.md L3), by Monte
 // Carlo with multiple importance sampling (Veach 1997, power heuristic) of GGX half-vector,
 // cosine and environment sampling; the model's f under an environment (environmentVisibility).
 // The analytic lights are added exactly (no error) but sphere and tube lights, which are
-// estimated too (area_reference.h). Deterministic for a seed.
+// estimated too (area_lights.h). Deterministic for a seed.
 ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
                                     const ReferenceEnvironment& environment,
                                     const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,

@@ -1,0 +1,25 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/probe.h"
+
+namespace patina {
+
+// The ground truth of probeOnCpu's rows (scene/probe.h), by referenceRadiance (radiance.h): the
+// lights exactly, the environment by Monte Carlo with `samples` iterations a row, each row with
+// its own seed, on every core. value and standard error per row. Estimates with another `pass` draw other
+// random numbers: independent, so a progressive render averages them.
+struct ReferenceRow {
+    glm::vec3 value;
+    glm::vec3 standardError;
+};
+std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
+                                         const std::vector<ProbeSample>& samples,
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
+                                         uint64_t pass = 0);
+
+}  // namespace patina
