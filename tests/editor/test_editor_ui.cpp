@@ -970,5 +970,32 @@ TEST_F(EditorUi, DraggingATubesGizmosMovesItsEndsOrTheWholeTube) {
     EXPECT_EQ(state_.scene.lights[0].start, tube.start);
 }
 
+// Issue 23: a window shrunk to 300 x 200 for a moment used to keep the panels at the sizes it
+// squeezed them to (the lobe 44 pixels high, saved so). The sizes the user dragged to come
+// back when there is room; only a drag of a panel's edge changes them.
+TEST_F(EditorUi, PanelsGrowBackAfterTheWindowShrinksAndOnlyADragResizesThem) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.BackendFlags |= ImGuiBackendFlags_HasMouseCursors;   // as GLFW's backend: edges resize
+    io.ConfigWindowsResizeFromEdges = true;   // ImGui turned it off without that flag
+    const PanelLayout wanted = state_.layout;
+    io.DisplaySize = ImVec2(300, 200);
+    frames(3);
+    io.DisplaySize = ImVec2(1280, 800);
+    frames(3);
+    EXPECT_EQ(state_.layout.leftWidth, wanted.leftWidth);
+    EXPECT_EQ(state_.layout.rightWidth, wanted.rightWidth);
+    EXPECT_EQ(state_.layout.lobeHeight, wanted.lobeHeight);
+    const ImGuiWindow* lobe = ImGui::FindWindowByName("Lobe");
+    ASSERT_NE(lobe, nullptr);
+    EXPECT_FLOAT_EQ(lobe->Size.y, wanted.lobeHeight);
+
+    // The material panel's right edge, dragged 60 pixels right: the new width is kept.
+    const ImGuiWindow* material = ImGui::FindWindowByName("Material");
+    ASSERT_NE(material, nullptr);
+    const float edge = material->Pos.x + material->Size.x;
+    drag(ImVec2(edge - 1.0f, 400.0f), ImVec2(edge + 59.0f, 400.0f));
+    EXPECT_NEAR(state_.layout.leftWidth, wanted.leftWidth + 60.0f, 2.0f);
+}
+
 }  // namespace
 }  // namespace patina::editor
