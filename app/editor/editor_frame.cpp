@@ -68,6 +68,30 @@ void drawError(EditorState& state, ImVec2 at, float width) {
     }
     ImGui::End();
 }
+
+// The lobe; with Advanced on, the accuracy numbers beside it, a research tool, in a tab of their own.
+void drawBottomPanel(EditorState& state, EditorServices& services) {
+    if (!state.showAdvanced) {
+        drawLobePanel(state);
+        return;
+    }
+    if (!ImGui::BeginTabBar("bottom")) {
+        return;
+    }
+    const bool lobeTab = ImGui::BeginTabItem("Lobe");
+    recordItem("Lobe tab", "The BRDF in the plane of incidence");
+    if (lobeTab) {
+        drawLobePanel(state);
+        ImGui::EndTabItem();
+    }
+    const bool accuracyTab = ImGui::BeginTabItem("Accuracy");
+    recordItem("Accuracy tab", "How far this model is from the reference BRDF, and fp32 from fp64");
+    if (accuracyTab) {
+        drawAccuracyPanel(state, services);
+        ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+}
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
@@ -111,29 +135,12 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     }
     ImGui::End();
     ImGui::PopStyleVar();
-    if (beginPanel("Lobe", at.lobe, false, &layout.lobeHeight)) {
-        drawGuarded(state, "The lobe panel", [&] {
-            // The accuracy numbers are a research tool: a tab of their own with Advanced on.
-            if (!state.showAdvanced) {
-                drawLobePanel(state);
-            } else if (ImGui::BeginTabBar("bottom")) {
-                const bool lobeTab = ImGui::BeginTabItem("Lobe");
-                recordItem("Lobe tab", "The BRDF in the plane of incidence");
-                if (lobeTab) {
-                    drawLobePanel(state);
-                    ImGui::EndTabItem();
-                }
-                const bool accuracyTab = ImGui::BeginTabItem("Accuracy");
-                recordItem("Accuracy tab", "How far this model is from the reference BRDF, and fp32 from fp64");
-                if (accuracyTab) {
-                    drawAccuracyPanel(state, services);
-                    ImGui::EndTabItem();
-                }
-                ImGui::EndTabBar();
-            }
-        });
+    if (layout.showLobe) {   // hidden (View menu): the viewport takes the whole column
+        if (beginPanel("Lobe", at.lobe, false, &layout.lobeHeight)) {
+            drawGuarded(state, "The lobe panel", [&] { drawBottomPanel(state, services); });
+        }
+        ImGui::End();
     }
-    ImGui::End();
 
     drawError(state, ImVec2(at.viewport.x + px(8), top + px(64)), at.viewport.width - px(16));
     drawGuarded(state, "A dialog", [&] { drawDialogs(state, services); });

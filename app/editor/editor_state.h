@@ -27,11 +27,13 @@ struct LobeSettings {
     bool multiplyByCosine = false;
 };
 
-// Sizes the user can drag, persisted between sessions.
+// Sizes the user can drag, and whether the lobe panel shows (View menu), persisted between
+// sessions.
 struct PanelLayout {
     float leftWidth = 330.0f;
     float rightWidth = 340.0f;
     float lobeHeight = 260.0f;
+    bool showLobe = true;
 };
 
 // The scene the editor starts with, and File > New makes.

@@ -146,6 +146,8 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         recordItem("Frame mesh", "Aim the camera at the whole mesh");
         ImGui::MenuItem("Light gizmos", nullptr, &state.showGizmos);
         recordItem("Light gizmos", "Show the lights' dots and arrows over the viewport");
+        ImGui::MenuItem("Lobe panel", nullptr, &state.layout.showLobe);
+        recordItem("Lobe panel", "Show the BRDF lobe under the viewport; hidden, the viewport takes its room");
         ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
         recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
         // Steps, not a slider: the menu would grow under the mouse while it is dragged.

@@ -616,6 +616,7 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     state.uiScaleSetting = 1.5f;
     state.showGizmos = false;
     state.showAdvanced = true;
+    state.layout.showLobe = false;
     ASSERT_TRUE(saveSettings(state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
     EditorState next;
     WindowGeometry window;
@@ -623,6 +624,7 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     EXPECT_EQ(next.uiScaleSetting, 1.5f);
     EXPECT_FALSE(next.showGizmos);
     EXPECT_TRUE(next.showAdvanced);
+    EXPECT_FALSE(next.layout.showLobe);
     EXPECT_FALSE(EditorState().showAdvanced) << "research controls start closed";
 }
 
@@ -648,6 +650,7 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     sharp.metallic = 1.0f;
     state.compareA = sharp;
     state.scene.material.roughness = 0.9f;
+    state.scene.material.model = BrdfModelId::Filament;   // another model: the reference drawn too
     state.lobe.thetaInDegrees = 30.0f;
     const LobePlot plot = lobePlot(state);
     float aPeak = 0.0f, bPeak = 0.0f;
@@ -670,6 +673,29 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     // Log scale: three decades below the top reach the centre.
     EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-3f, plot.maxValue, true), 0.0f, 1e-5f);
     EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-1f, plot.maxValue, true), 2.0f / 3.0f, 1e-5f);
+}
+
+// Issue 23: the legend said "B total" with no A, and the reference model's curve was drawn
+// under the default model too, though the docs said only when another model is chosen.
+TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
+    auto legend = [&] {
+        std::vector<std::string> entries;
+        for (const LobeCurve& curve : lobePlot(state).curves) {
+            if (!curve.legend.empty()) {
+                entries.push_back(curve.legend);
+            }
+        }
+        return entries;
+    };
+    EXPECT_EQ(legend(), (std::vector<std::string>{"total, R G B (thick)", "specular (thin)"}));
+    state.lobe.luminance = true;
+    EXPECT_EQ(legend(), (std::vector<std::string>{"diffuse", "specular", "total"}));
+    state.compareA = state.scene.material;
+    EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "B diffuse", "B specular", "B total"}));
+    state.scene.material.model = BrdfModelId::Hammon;
+    EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "reference model", "B diffuse", "B specular", "B total"}));
+    state.scene.material.model = BrdfModelId::Reference;   // the reference itself: nothing to compare
+    EXPECT_EQ(lobePlot(state).curves.size(), 4u);
 }
 
 // The path dialog lists what its action takes (glTF and environments for Open), folders first,
@@ -760,6 +786,12 @@ TEST(PanelLayout, TheViewportKeepsItsMinimumSize) {
     // With room to spare, the sizes asked for; at scale 2, twice them.
     EXPECT_FLOAT_EQ(placePanels(wanted, 1920, 1060, 20, 1.0f).material.width, wanted.leftWidth);
     EXPECT_FLOAT_EQ(placePanels(wanted, 3840, 2120, 40, 2.0f).material.width, 2.0f * wanted.leftWidth);
+    // The lobe hidden (View menu): the viewport takes the whole column.
+    PanelLayout noLobe;
+    noLobe.showLobe = false;
+    const PanelPlacement at = placePanels(noLobe, 1280, 700, 20, 1.0f);
+    EXPECT_FLOAT_EQ(at.viewport.height, 700.0f);
+    EXPECT_FLOAT_EQ(at.lobe.height, 0.0f);
 }
 
 TEST(UiScale, IsTheMonitorsTimesTheSetting) {

@@ -997,5 +997,26 @@ TEST_F(EditorUi, PanelsGrowBackAfterTheWindowShrinksAndOnlyADragResizesThem) {
     EXPECT_NEAR(state_.layout.leftWidth, wanted.leftWidth + 60.0f, 2.0f);
 }
 
+// Issue 23: the lobe took a third of the centre column at 1280 x 720 and could not be hidden.
+// View > Lobe panel hides it and the viewport takes the room.
+TEST_F(EditorUi, TheLobePanelCanBeHiddenFromTheViewMenu) {
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const float height = max.y - min.y;
+    EXPECT_TRUE(itemsOfLastFrame().contains("lobe"));
+    click(centreOf("menu:View"));
+    click(centreOf("Lobe panel"));
+    EXPECT_FALSE(state_.layout.showLobe);
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().contains("lobe"));
+    EXPECT_EQ(ImGui::FindWindowByName("Lobe")->Active, false);
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    EXPECT_GT(max.y - min.y, height + 200.0f);
+    click(centreOf("menu:View"));
+    click(centreOf("Lobe panel"));
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("lobe"));
+}
+
 }  // namespace
 }  // namespace patina::editor
