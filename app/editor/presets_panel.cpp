@@ -9,20 +9,6 @@
 
 namespace patina::editor {
 
-namespace {
-// `text` cut with "..." to fit `width` pixels.
-std::string fitted(const std::string& text, float width) {
-    if (ImGui::CalcTextSize(text.c_str()).x <= width) {
-        return text;
-    }
-    std::string cut = text;
-    while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) {
-        cut.pop_back();
-    }
-    return cut + "...";
-}
-}  // namespace
-
 // Each preset as its thumbnail in the fixed preview scene, captioned with its material's name.
 void drawPresetsPanel(EditorState& state, EditorServices& services) {
     const float kThumb = px(64.0f);
@@ -50,7 +36,7 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
             }
             const std::string tooltip = name + "\n" + file.filename().string() + (preset ? "" : "\n(cannot be read)");
             recordItem("preset:" + file.stem().string(), tooltip.c_str());
-            ImGui::TextUnformatted(fitted(name, kThumb).c_str());
+            ImGui::TextUnformatted(fittedText(name, kThumb).c_str());
             recordItem("caption:" + file.stem().string());
             ImGui::EndGroup();
             if (clicked) {

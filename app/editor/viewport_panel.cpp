@@ -11,6 +11,7 @@
 #include "scene/camera_control.h"
 #include "panels.h"
 #include "keys.h"
+#include "screenshot_comparison.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
@@ -261,6 +262,40 @@ void handleCameraInput(EditorState& state, ImVec2 size) {
     }
 }
 
+// A side's label ("A: gold") at the top of its part of the view, `room` pixels wide: left
+// aligned at `x`, or with `rightAligned` ending there; on a dark box so it reads over any
+// picture. The tooltip has it whole when it is cut.
+void sideLabel(char side, const Material& material, float x, float y, float room, bool rightAligned) {
+    const std::string whole = comparisonLabel(side, material);
+    const std::string shown = fittedText(whole, std::max(room, ImGui::CalcTextSize("A...").x));
+    const ImVec2 size = ImGui::CalcTextSize(shown.c_str());
+    const ImVec2 at(rightAligned ? x - size.x : x, y);
+    const float pad = px(3);
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x - pad, at.y - pad),
+                                              ImVec2(at.x + size.x + pad, at.y + size.y + pad),
+                                              IM_COL32(0, 0, 0, 150), pad);
+    ImGui::SetCursorScreenPos(at);
+    ImGui::TextUnformatted(shown.c_str());
+    const std::string tooltip =
+        whole + (side == 'A' ? " (kept with Set A)" : " (the material you edit)");
+    recordItem(std::string("label ") + side, tooltip.c_str());
+}
+
+// Which material each part of the view shows, named.
+void drawSideLabels(const EditorState& state, ImVec2 origin, ImVec2 size) {
+    const float margin = px(8);
+    const float a = state.compareView == CompareView::Split ? size.x * std::clamp(state.splitPosition, 0.0f, 1.0f)
+                                                            : std::floor(size.x / 2.0f);
+    sideLabel('A', *state.compareA, origin.x + margin, origin.y + margin, a - 2.0f * margin, false);
+    if (state.compareView == CompareView::Split) {
+        sideLabel('B', state.scene.material, origin.x + size.x - margin, origin.y + margin,
+                  size.x - a - 2.0f * margin, true);
+    } else {
+        sideLabel('B', state.scene.material, origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
+                  false);
+    }
+}
+
 void image(unsigned texture, ImVec2 size, float u0 = 0.0f, float u1 = 1.0f) {
     // Renderer textures have GL's bottom-up rows: flip v.
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(u0, 1.0f),
@@ -299,11 +334,11 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
             image(a, ImVec2(size.x * split, size.y), 0.0f, split);
         }
     }
-    recordItem("viewport");
     ImGui::SetCursorScreenPos(origin);
     ImGui::InvisibleButton("viewport-input", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
                                ImGuiButtonFlags_MouseButtonRight);
+    recordItem("viewport");   // the whole picture, whichever parts of it A and B show
     const bool viewportActive = ImGui::IsItemActive();
     const bool viewportPressed = ImGui::IsItemActivated();
     const bool hovered = ImGui::IsItemHovered();
@@ -313,8 +348,6 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (state.compareA && state.compareView == CompareView::Split) {
         const float x = origin.x + size.x * state.splitPosition;
         draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + size.y), IM_COL32(255, 255, 255, 220), 2.0f);
-        draw->AddText(ImVec2(origin.x + 8, origin.y + 24), IM_COL32(255, 255, 255, 255), "A");
-        draw->AddText(ImVec2(origin.x + size.x - 16, origin.y + 24), IM_COL32(255, 255, 255, 255), "B");
         bool& draggingDivider = state.draggingDivider;
         onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
         if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
@@ -341,6 +374,10 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (hovered && pressed(services.keyPresses, kKeyF) &&
         !ImGui::GetIO().WantTextInput) {
         frameMesh(state);
+    }
+
+    if (state.compareA && state.compareView != CompareView::Single) {
+        drawSideLabels(state, origin, size);
     }
 
     // An environment file being prepared: the picture keeps the one it had until then.

@@ -145,6 +145,17 @@ bool clipped(const RecordedItem& item) {
     return horizontally || (vertically && !item.scrolls);
 }
 
+std::string fittedText(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) {
+        return text;
+    }
+    std::string cut = text;
+    while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) {
+        cut.pop_back();
+    }
+    return cut + "...";
+}
+
 void sameLineIfFits(float width) {
     ImGui::SameLine();
     if (ImGui::GetContentRegionAvail().x < width) {

@@ -47,6 +47,8 @@ std::map<std::string, RecordedItem> itemsOfLastFrame();
 void forgetRecordedItems();
 // Whether an item is cut by the edge of its window or of the display.
 bool clipped(const RecordedItem& item);
+// `text` cut with "..." to fit `width` pixels in the current font.
+std::string fittedText(const std::string& text, float width);
 // Puts the next item on this line when `width` pixels still fit, else on a new line.
 void sameLineIfFits(float width);
 // The width of an item with a `fieldWidth` field and a label beside it.

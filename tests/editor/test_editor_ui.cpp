@@ -1018,5 +1018,46 @@ TEST_F(EditorUi, TheLobePanelCanBeHiddenFromTheViewMenu) {
     EXPECT_TRUE(itemsOfLastFrame().contains("lobe"));
 }
 
+// Issue 23: Split was labelled only "A" and "B", Side by side not at all. Both name the
+// materials, in the viewport and in a Split screenshot (Side by side's is captioned).
+TEST_F(EditorUi, BothComparisonViewsNameTheirMaterials) {
+    state_.scene.material.name = "terracotta";
+    click(centreOf("Set A"));
+    state_.scene.material.name = "blue glaze";
+    for (const char* view : {"Split", "Side by side"}) {
+        click(centreOf(view));
+        frames(1);
+        const auto items = itemsOfLastFrame();
+        ASSERT_TRUE(items.contains("label A")) << view;
+        ASSERT_TRUE(items.contains("label B")) << view;
+        EXPECT_NE(items.at("label A").tooltip.find("A: terracotta"), std::string::npos) << view;
+        EXPECT_NE(items.at("label B").tooltip.find("B: blue glaze"), std::string::npos) << view;
+        ImVec2 min, max;
+        ASSERT_TRUE(itemRect("viewport", &min, &max));
+        EXPECT_LT(items.at("label A").max.x, items.at("label B").min.x) << view << ": A left of B";
+        EXPECT_GE(items.at("label A").min.x, min.x) << view;
+        EXPECT_LE(items.at("label B").max.x, max.x) << view;
+    }
+    click(centreOf("Single"));
+    frames(1);
+    EXPECT_FALSE(itemsOfLastFrame().contains("label A"));
+
+    // A Split screenshot's labels are as wide as the names, not a letter each.
+    state_.compareView = CompareView::Split;
+    const LdrImage split = services_->shownImage(state_, 600, 400);
+    const int scale = captionScale(600);
+    int rightmost = 0;
+    for (int y = 24; y < 24 + kGlyphHeight * scale; ++y) {
+        for (int x = 0; x < 300; ++x) {
+            const size_t at = (size_t(y) * 600 + size_t(x)) * 4;
+            if (split.rgba[at] == kCaptionColour.r && split.rgba[at + 1] == kCaptionColour.g &&
+                split.rgba[at + 2] == kCaptionColour.b) {
+                rightmost = std::max(rightmost, x);
+            }
+        }
+    }
+    EXPECT_GE(rightmost, 8 + textWidth("A: terracott", scale)) << "A's label names it";
+}
+
 }  // namespace
 }  // namespace patina::editor
