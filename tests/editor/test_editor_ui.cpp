@@ -1059,5 +1059,16 @@ TEST_F(EditorUi, BothComparisonViewsNameTheirMaterials) {
     EXPECT_GE(rightmost, 8 + textWidth("A: terracott", scale)) << "A's label names it";
 }
 
+// Issue 23: the exposure slider was 110 pixels for 16 stops, so 60 pixels moved 8 EV. A drag
+// moves it in fine steps (0.02 EV a pixel), one undo step a drag.
+TEST_F(EditorUi, ExposureDragsInFineSteps) {
+    const ImVec2 from = centreOf("Exposure");
+    drag(from, ImVec2(from.x + 60.0f, from.y));
+    EXPECT_GT(state_.scene.display.exposure, 0.5f);
+    EXPECT_LT(state_.scene.display.exposure, 2.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.display.exposure, 0.0f);
+}
+
 }  // namespace
 }  // namespace patina::editor
