@@ -1070,5 +1070,15 @@ TEST_F(EditorUi, ExposureDragsInFineSteps) {
     EXPECT_EQ(state_.scene.display.exposure, 0.0f);
 }
 
+// Issue 23: Escape did not close the F1 help; it does, as any help window.
+TEST_F(EditorUi, EscapeClosesTheShortcuts) {
+    press(kKeyF1);
+    ASSERT_TRUE(state_.showShortcuts);
+    EXPECT_TRUE(itemsOfLastFrame().contains("shortcuts"));
+    press(kKeyEscape);
+    EXPECT_FALSE(state_.showShortcuts);
+    EXPECT_FALSE(itemsOfLastFrame().contains("shortcuts"));
+}
+
 }  // namespace
 }  // namespace patina::editor
