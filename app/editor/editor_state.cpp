@@ -92,17 +92,28 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
 }
 }  // namespace
 
+// The status says what a step undid or redid, and an error from before it is old news.
 void undo(EditorState& state) {
     commitEdits(state);
-    if (auto previous = state.history.undo(state.snapshot())) {
+    const EditSnapshot current = state.snapshot();
+    if (auto previous = state.history.undo(current)) {
+        state.status = "Undid " + describeChange(*previous, current);
+        state.error.clear();
         restore(state, *previous);
+    } else {
+        state.status = "Nothing to undo";
     }
 }
 
 void redo(EditorState& state) {
     commitEdits(state);
-    if (auto next = state.history.redo(state.snapshot())) {
+    const EditSnapshot current = state.snapshot();
+    if (auto next = state.history.redo(current)) {
+        state.status = "Redid " + describeChange(current, *next);
+        state.error.clear();
         restore(state, *next);
+    } else {
+        state.status = "Nothing to redo";
     }
 }
 
@@ -310,6 +321,7 @@ void applyEnvironment(EditorState& state, const std::string& source, std::shared
     });
     state.selectedLight = index;
     state.environmentFailed.clear();
+    state.error.clear();   // a load that worked: an older error is no longer news
     // Replaced pixels (real HDRIs hold a few slightly negative ones) are worth a note, not an
     // error box over the toolbar.
     state.status = "Environment " + environmentName(source) + (warnings.empty() ? "" : ": " + joinWarnings(warnings));

@@ -238,6 +238,42 @@ TEST_F(EditorStateTest, PresetsAreUndoableEditsAndResetReadsTheDocument) {
     EXPECT_FALSE(state.dirty());
 }
 
+// Issue 23: after Ctrl+Z the status still said "Preset brick applied", and an error from
+// before stayed up over a load that worked. Undo and redo say what they took back, and clear
+// the old error; so does a load that works.
+TEST_F(EditorStateTest, UndoRedoAndALoadSayWhatTheyDidAndClearAnOldError) {
+    state.presetFolders = {dir_};
+    requestOpen(state, writeMaterial("brick", 0.9f));
+    requestOpen(state, dir_ / "missing.json");
+    ASSERT_FALSE(state.error.empty());
+    undo(state);
+    EXPECT_EQ(state.status, "Undid the material brick");
+    EXPECT_TRUE(state.error.empty()) << state.error;
+    redo(state);
+    EXPECT_EQ(state.status, "Redid the material brick");
+    state.scene.material.roughness = 0.2f;
+    commitEdits(state);
+    undo(state);
+    EXPECT_EQ(state.status, "Undid roughness");
+    undo(state);
+    undo(state);
+    EXPECT_EQ(state.status, "Nothing to undo");
+    addLight(state, LightType::Point);
+    state.scene.display.exposure = 1.0f;
+    undo(state);
+    EXPECT_EQ(state.status, "Undid exposure");
+    undo(state);
+    EXPECT_EQ(state.status, "Undid adding a light");
+
+    requestOpen(state, dir_ / "missing.json");
+    ASSERT_FALSE(state.error.empty());
+    ASSERT_TRUE(setEnvironmentSource(state, "builtin:white"));
+    EXPECT_TRUE(state.error.empty()) << "the environment loaded: " << state.error;
+    requestOpen(state, dir_ / "missing.json");
+    ASSERT_TRUE(openFile(state, dir_ / "brick.json"));
+    EXPECT_TRUE(state.error.empty()) << state.error;
+}
+
 TEST_F(EditorStateTest, AMissingOrBrokenFileSaysSoBeforeAskingAnything) {
     state.scene.material.roughness = 0.12f;   // unsaved
     requestOpen(state, dir_ / "missing.json");
