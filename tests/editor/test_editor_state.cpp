@@ -735,7 +735,8 @@ TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
 }
 
 // The path dialog lists what its action takes (glTF and environments for Open), folders first,
-// filtered by what is typed; Enter on a folder enters it.
+// filtered by what is typed to open, not while a save's name is typed; Enter on a folder enters
+// it.
 TEST_F(EditorStateTest, ThePathDialogListsTheActionsFilesAndFollowsTheTyping) {
     for (const char* name : {"gold.json", "Golden.png", "model.gltf", "model.glb", "sky.hdr", "sky.exr", "notes.txt"}) {
         std::ofstream(dir_ / name) << "x";
@@ -760,6 +761,13 @@ TEST_F(EditorStateTest, ThePathDialogListsTheActionsFilesAndFollowsTheTyping) {
               (std::vector<std::string>{"golden-folder/", "Golden.png"}));
     EXPECT_NE(std::string(pathDialogKind(EditorState::PathDialog::Open).title),
               pathDialogKind(EditorState::PathDialog::SaveAs).title);
+
+    // Issue 23: a save's new name used to filter the folder's listing away as it was typed.
+    EXPECT_EQ(names(listForDialog(folder + "brand new.json", EditorState::PathDialog::SaveAs)),
+              (std::vector<std::string>{"golden-folder/", "gold.json"}));
+    EXPECT_EQ(names(listForDialog(folder + "shot", EditorState::PathDialog::ExportComparison)),
+              (std::vector<std::string>{"golden-folder/", "Golden.png"}));
+    EXPECT_EQ(names(listForDialog(folder + "brand new", EditorState::PathDialog::Open)), std::vector<std::string>{});
 
     std::string typed = (dir_ / "golden-folder").string();
     EXPECT_TRUE(enterFolder(&typed));
