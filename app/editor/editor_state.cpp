@@ -70,7 +70,25 @@ std::string unsavedParts(const EditorState& state) {
     return text;
 }
 
+namespace {
+bool sameValues(const Material& a, const Material& b) {
+    return a.baseColor == b.baseColor && a.roughness == b.roughness && a.specular == b.specular &&
+           a.metallic == b.metallic;
+}
+
+// A material's notes describe it as saved (where a preset's numbers come from): once a value is
+// edited by hand they are untrue, and go in the same step; values back at the file's bring its
+// notes back. An edit that sets notes too (a preset, a file) keeps its own.
+void dropStaleNotes(Material& material, const Material& committed, const Material& saved) {
+    if (sameValues(material, committed) || material.notes != committed.notes) {
+        return;
+    }
+    material.notes = sameValues(material, saved) ? saved.notes : "";
+}
+}  // namespace
+
 void commitEdits(EditorState& state) {
+    dropStaleNotes(state.scene.material, state.committed.material, state.savedMaterial);
     EditSnapshot current = state.snapshot();
     if (current != state.committed) {
         state.history.record(std::move(state.committed));

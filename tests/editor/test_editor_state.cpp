@@ -63,6 +63,40 @@ TEST_F(EditorStateTest, UndoAndRedoStepThroughEdits) {
     EXPECT_FALSE(state.history.canRedo());
 }
 
+// Issue 23: a preset's notes (where its numbers come from) stayed on a material whose values
+// had been edited, and were saved with it. They go with the edit, in the same undo step.
+TEST_F(EditorStateTest, NotesGoWhenTheValuesAreEdited) {
+    Material measured;
+    measured.name = "measured gold";
+    measured.metallic = 1.0f;
+    measured.notes = "F0 from Gulbrandsen 2014";
+    const fs::path file = dir_ / "measured.json";
+    std::ofstream(file) << prettyJson(materialToJson(measured));
+    state.presetFolders = {dir_};
+    requestOpen(state, file);
+    ASSERT_EQ(state.scene.material.notes, measured.notes) << "a preset brings its notes";
+    state.scene.material.roughness = 0.1f;
+    commitEdits(state);
+    EXPECT_EQ(state.scene.material.notes, "");
+    undo(state);
+    EXPECT_EQ(state.scene.material, measured) << "one step: the value and the notes";
+    redo(state);
+    EXPECT_EQ(state.scene.material.notes, "");
+
+    // A document's notes come back with its values (Reset).
+    startDocument(state, state.scene, {}, {});
+    state.scene.material = measured;
+    state.savedMaterial = measured;
+    state.committed = state.snapshot();
+    state.scene.material.metallic = 0.5f;
+    commitEdits(state);
+    EXPECT_EQ(state.scene.material.notes, "");
+    state.scene.material.metallic = 1.0f;
+    commitEdits(state);
+    EXPECT_EQ(state.scene.material.notes, measured.notes);
+    EXPECT_FALSE(state.materialChanged());
+}
+
 TEST_F(EditorStateTest, AContinuousDragIsOneStep) {
     const float original = state.scene.material.roughness;
     for (float r = 0.1f; r < 0.9f; r += 0.05f) {
