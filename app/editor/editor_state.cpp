@@ -147,6 +147,13 @@ int environmentIndex(const EditorState& state) {
 }
 
 constexpr const char* kOneEnvironment = "A scene has one environment at most: change the one in the light list.";
+
+// A point of the view: `depth` of the way from the camera to what it looks at, `right` and
+// `up` fractions of the view's half height there (inside any view at least as wide as high).
+glm::vec3 pointInView(const Camera& camera, float right, float up, float depth) {
+    const glm::vec3 at = camera.position + depth * (camera.target - camera.position);
+    return unprojectAtDepthOf(camera, glm::vec2(2.0f), glm::vec2(1.0f + right, 1.0f - up), at);
+}
 }  // namespace
 
 void addLight(EditorState& state, LightType type) {
@@ -162,18 +169,19 @@ void addLight(EditorState& state, LightType type) {
     Light light;
     light.type = type;
     light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
+    // Point, sphere and tube lights start up and to the left between the camera and what it
+    // looks at, wherever the camera is, so there is a handle to drag at once (a tube used to
+    // start above the picture).
     if (type == LightType::Point || type == LightType::Sphere) {
-        // Up and to the left, between the camera and the sphere: in the default view, so there
-        // is a dot to drag at once (it used to start outside the picture).
-        light.position = {-0.8f, 0.8f, 1.2f};
+        light.position = pointInView(state.scene.camera, -0.45f, 0.45f, 0.65f);
         light.range = 10.0f;
         light.intensity = 5.0f;
         if (type == LightType::Sphere) {   // a point light keeps every other type's default
             light.sourceRadius = 0.25f;
         }
     } else if (type == LightType::Tube) {
-        light.start = {-1.0f, 1.8f, 1.2f};
-        light.end = {1.0f, 1.8f, 1.2f};
+        light.start = pointInView(state.scene.camera, -0.75f, 0.5f, 0.65f);
+        light.end = pointInView(state.scene.camera, 0.05f, 0.5f, 0.65f);
         light.range = 10.0f;
         light.intensity = 8.0f;
         light.sourceRadius = 0.05f;

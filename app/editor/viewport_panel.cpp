@@ -120,6 +120,22 @@ void drawCapsule(ImDrawList* draw, ImVec2 start, ImVec2 end, float startRadius, 
     draw->PathStroke(color, 0, 1.5f);
 }
 
+// How far from the view's centre a directional light's arrow reaches: 1.6 units, less where the
+// view shows less (zoomed in, a narrow viewport), so that its tail, the handle, stays on screen
+// whichever way the light points (it used to leave the picture, out of reach).
+float arrowReach(const Camera& camera, glm::vec2 viewSize) {
+    const glm::vec2 centre = 0.5f * viewSize;
+    const float halfHeight =
+        glm::distance(unprojectAtDepthOf(camera, viewSize, {centre.x, 0.0f}, camera.target), camera.target);
+    const float halfWidth =
+        glm::distance(unprojectAtDepthOf(camera, viewSize, {0.0f, centre.y}, camera.target), camera.target);
+    return std::min(1.6f, 0.75f * std::min(halfHeight, halfWidth));
+}
+
+glm::vec3 arrowTail(const Light& light, const Camera& camera, glm::vec2 viewSize) {
+    return camera.target - arrowReach(camera, viewSize) * glm::normalize(light.direction);
+}
+
 // Where a light can be grabbed: a point's or a sphere's position, a tube's middle and ends, a
 // directional light's arrow tail.
 struct Grip {
@@ -128,7 +144,7 @@ struct Grip {
     float radius;   // of its marker, pixels
 };
 
-std::vector<Grip> gripsOf(const Light& light, const Camera& camera) {
+std::vector<Grip> gripsOf(const Light& light, const Camera& camera, glm::vec2 viewSize) {
     switch (light.type) {
     case LightType::Point:
     case LightType::Sphere: return {{LightHandle::Position, light.position, gizmoRadius()}};
@@ -137,11 +153,24 @@ std::vector<Grip> gripsOf(const Light& light, const Camera& camera) {
                 {LightHandle::TubeEnd, light.end, gizmoRadius() * 0.7f},
                 {LightHandle::Position, 0.5f * (light.start + light.end), gizmoRadius()}};
     case LightType::Directional:
-        return {{LightHandle::Position, camera.target - 1.6f * glm::normalize(light.direction), gizmoRadius() * 0.7f}};
+        return {{LightHandle::Position, arrowTail(light, camera, viewSize), gizmoRadius() * 0.7f}};
     case LightType::Hemisphere:
     case LightType::Environment: break;   // everywhere at once: nothing to grab
     }
     return {};
+}
+
+// Names a light's handle for automation ("gizmo:2", "gizmo:2 start"), while it is whole on
+// the picture.
+void recordGrip(int index, const Light& light, const Grip& grip, ImVec2 at, ImVec2 origin, ImVec2 size) {
+    const float r = grip.radius;
+    if (at.x - r < origin.x || at.y - r < origin.y || at.x + r > origin.x + size.x || at.y + r > origin.y + size.y) {
+        return;
+    }
+    const char* part = grip.handle == LightHandle::TubeStart ? " start" : grip.handle == LightHandle::TubeEnd ? " end" : "";
+    const std::string tooltip = light.name + ": drag to move it";
+    recordArea("gizmo:" + std::to_string(index) + part, ImVec2(at.x - r, at.y - r), ImVec2(at.x + r, at.y + r),
+               tooltip.c_str());
 }
 
 // Point lights as a marker, sphere lights as their outline at their size, tube lights as a
@@ -157,7 +186,7 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     const glm::vec2 viewSize(size.x, size.y);
     const Camera& camera = state.scene.camera;
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const glm::vec2 local(mouse.x - origin.x, mouse.y - origin.y);
+    const glm::vec2 mouseAt(mouse.x - origin.x, mouse.y - origin.y);
     auto onScreen = [&](glm::vec3 point) -> std::optional<ImVec2> {
         const auto screen = projectToViewport(camera, viewSize, point);
         return screen ? std::optional<ImVec2>(ImVec2(origin.x + screen->x, origin.y + screen->y)) : std::nullopt;
@@ -182,18 +211,19 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
                             screenRadius(camera, viewSize, light.end, light.sourceRadius), color);
             }
         } else if (light.type == LightType::Directional) {
-            const auto tail = onScreen(camera.target - 1.6f * glm::normalize(light.direction));
+            const auto tail = onScreen(arrowTail(light, camera, viewSize));
             if (const auto tip = onScreen(camera.target); tail && tip) {
                 draw->AddLine(*tail, *tip, color, 2.0f);
                 draw->AddTriangleFilled(*tip, ImVec2(tip->x - 4, tip->y - 4), ImVec2(tip->x + 4, tip->y - 4), color);
             }
         }
-        for (const Grip& grip : gripsOf(light, camera)) {
+        for (const Grip& grip : gripsOf(light, camera, viewSize)) {
             const auto at = onScreen(grip.at);
             if (!at) {
                 continue;
             }
-            const bool hovered = glm::distance(glm::vec2(at->x - origin.x, at->y - origin.y), local) <= grip.radius + 3.0f;
+            recordGrip(i, light, grip, *at, origin, size);
+            const bool hovered = glm::distance(glm::vec2(at->x - origin.x, at->y - origin.y), mouseAt) <= grip.radius + 3.0f;
             hoveredAny |= hovered;
             draw->AddCircleFilled(*at, grip.radius, light.type == LightType::Directional ? color : fill);
             if (light.type != LightType::Directional) {
@@ -209,6 +239,10 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     draw->PopClipRect();
     if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         Light& light = state.scene.lights[size_t(dragged)];
+        // The mouse is followed only inside the picture: a handle dragged past its edge stays
+        // on it, where it can be grabbed again.
+        const glm::vec2 margin(gizmoRadius() + 2.0f);
+        const glm::vec2 local = glm::clamp(mouseAt, margin, glm::max(viewSize - margin, margin));
         if (light.type == LightType::Point || light.type == LightType::Sphere) {
             light.position = unprojectAtDepthOf(camera, viewSize, local, light.position);
         } else if (light.type == LightType::Tube) {
@@ -226,7 +260,7 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
             // The arrow's tail follows the mouse on a sphere around the target.
             const glm::vec3 onPlane = unprojectAtDepthOf(camera, viewSize, local, camera.target);
             glm::vec3 fromTarget = onPlane - camera.target;
-            const float reach = 1.6f, planar = glm::length(fromTarget);
+            const float reach = arrowReach(camera, viewSize), planar = glm::length(fromTarget);
             const glm::vec3 toCamera = glm::normalize(camera.position - camera.target);
             fromTarget += toCamera * std::sqrt(std::max(reach * reach - planar * planar, 0.0f));
             if (glm::dot(fromTarget, fromTarget) > 1e-6f) {

@@ -94,13 +94,14 @@ bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags
     return false;
 }
 
-void recordItem(const std::string& name, const char* tooltip) {
+namespace {
+void remember(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip) {
     const ImGuiContext& context = *ImGui::GetCurrentContext();
     const ImGuiWindow& window = *context.CurrentWindow;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     RecordedItem& item = recorded()[name];
-    item.min = ImGui::GetItemRectMin();
-    item.max = ImGui::GetItemRectMax();
+    item.min = min;
+    item.max = max;
     // What the item was drawn clipped to: its window's inside, its table column, its menu bar.
     const ImVec2 clipMin = window.DrawList->GetClipRectMin(), clipMax = window.DrawList->GetClipRectMax();
     item.visibleMin = ImVec2(std::max(clipMin.x, 0.0f), std::max(clipMin.y, 0.0f));
@@ -109,7 +110,19 @@ void recordItem(const std::string& name, const char* tooltip) {
     item.dimmed = (context.CurrentItemFlags & ImGuiItemFlags_Disabled) != 0 || context.Style.Alpha < 1.0f;
     item.tooltip = tooltip ? tooltip : "";
     item.frame = ImGui::GetFrameCount();
+}
+}  // namespace
+
+void recordItem(const std::string& name, const char* tooltip) {
+    remember(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), tooltip);
     if (tooltip && !ImGui::IsItemActive() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::SetTooltip("%s", tooltip);
+    }
+}
+
+void recordArea(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip) {
+    remember(name, min, max, tooltip);
+    if (tooltip && ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(min, max) && !ImGui::IsAnyMouseDown()) {
         ImGui::SetTooltip("%s", tooltip);
     }
 }

@@ -30,6 +30,9 @@ bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags
 // automation (PATINA_UI_LAYOUT, see editor_app.cpp), and `tooltip`, when given, is shown while
 // the mouse rests on it (not while it is being dragged).
 void recordItem(const std::string& name, const char* tooltip = nullptr);
+// The same for what ImGui knows no item of (a light's handle over the viewport): `min` to `max`
+// on screen, the tooltip shown while the mouse rests there with no button down.
+void recordArea(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip = nullptr);
 bool itemRect(const std::string& name, ImVec2* min, ImVec2* max);
 
 // What recordItem remembers of an item.

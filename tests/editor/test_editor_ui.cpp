@@ -1080,5 +1080,45 @@ TEST_F(EditorUi, EscapeClosesTheShortcuts) {
     EXPECT_FALSE(itemsOfLastFrame().contains("shortcuts"));
 }
 
+// Issue 23: a new tube light appeared above the view, and a directional light's handle could
+// be dragged out of the viewport, out of reach. New lights start in view, wherever the camera
+// looks from, and a handle dragged past the picture's edge stays on it.
+TEST_F(EditorUi, NewLightsStartInViewAndHandlesStayOnThePicture) {
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    auto inView = [&](const std::string& name) {
+        const auto items = itemsOfLastFrame();
+        const auto it = items.find(name);
+        return it != items.end() && it->second.min.x >= min.x && it->second.min.y >= min.y &&
+               it->second.max.x <= max.x && it->second.max.y <= max.y;
+    };
+    click(centreOf("Add tube"));
+    const std::string tube = "gizmo:" + std::to_string(state_.scene.lights.size() - 1);
+    EXPECT_TRUE(inView(tube)) << "the tube's middle";
+    EXPECT_TRUE(inView(tube + " start"));
+    EXPECT_TRUE(inView(tube + " end"));
+
+    // The camera orbited far round: a new point light is in view all the same.
+    orbitCamera(state_.scene.camera, 2.5f, 0.6f);
+    click(centreOf("Add point"));
+    EXPECT_TRUE(inView("gizmo:" + std::to_string(state_.scene.lights.size() - 1)));
+
+    click(centreOf("Add directional"));
+    const std::string arrow = "gizmo:" + std::to_string(state_.scene.lights.size() - 1);
+    ASSERT_TRUE(inView(arrow));
+    for (const ImVec2 away : {ImVec2(min.x - 400.0f, min.y - 300.0f), ImVec2(max.x + 300.0f, (min.y + max.y) / 2)}) {
+        const Camera camera = state_.scene.camera;
+        const glm::vec3 direction = state_.scene.lights.back().direction;
+        drag(centreOf(arrow), away);
+        EXPECT_EQ(state_.scene.camera, camera) << "the handle was held, not the view";
+        EXPECT_NE(state_.scene.lights.back().direction, direction);
+        EXPECT_TRUE(inView(arrow)) << "the handle is still on the picture";
+    }
+    // A point light's dot, dragged below the picture, stays on it too.
+    const std::string dot = "gizmo:" + std::to_string(state_.scene.lights.size() - 2);
+    drag(centreOf(dot), ImVec2(centreOf(dot).x, max.y + 200.0f));
+    EXPECT_TRUE(inView(dot));
+}
+
 }  // namespace
 }  // namespace patina::editor
