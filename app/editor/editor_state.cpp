@@ -471,7 +471,8 @@ void requestNew(EditorState& state) {
 
 bool promptOpen(const EditorState& state) {
     return state.recoverable.has_value() || state.pendingOpen.has_value() || state.pendingNew ||
-           state.pendingQuit || state.pathDialog != EditorState::PathDialog::None;
+           state.pendingQuit || state.pathDialog != EditorState::PathDialog::None ||
+           !state.presets.renaming.empty() || !state.presets.deleting.empty();
 }
 
 namespace {

@@ -100,6 +100,13 @@ struct EditorState {
     bool pendingQuit = false;
     bool quitConfirmed = false;
     bool showShortcuts = false;
+    // The preset browser: its search box, and the preset a Rename or Delete prompt is about.
+    struct PresetBrowser {
+        std::string filter;
+        std::filesystem::path renaming, deleting;   // empty: no such prompt
+        std::string newName;                        // typed in the Rename prompt
+        std::string problem;                        // why the last try failed, said in its prompt
+    } presets;
     enum class PathDialog { None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison } pathDialog = PathDialog::None;
     std::string pathDialogText;
 

@@ -42,6 +42,10 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
 }
 }  // namespace
 
+bool containsAnyCase(const std::string& text, const std::string& part) {
+    return lowered(text).find(lowered(part)) != std::string::npos;
+}
+
 const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
     static const PathDialogKind open{
         "Open", "Open a material or scene (.json), a Patina screenshot (.png), a glTF model (.gltf, .glb) "
@@ -69,7 +73,7 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
 std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog) {
     const auto [folder, name] = splitTyped(typed);
     const PathDialogKind& kind = pathDialogKind(dialog);
-    const std::string wanted = kind.filterByName ? lowered(name) : "";
+    const std::string wanted = kind.filterByName ? name : "";
     const std::vector<std::string>& extensions = kind.extensions;
     std::vector<ListedEntry> entries;
     std::error_code error;
@@ -77,7 +81,7 @@ std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::Pa
         const bool isFolder = entry.is_directory(error);
         const std::string extension = lowered(entry.path().extension().string());
         const bool listed = isFolder || std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
-        if (listed && lowered(entry.path().filename().string()).find(wanted) != std::string::npos) {
+        if (listed && containsAnyCase(entry.path().filename().string(), wanted)) {
             entries.push_back({entry.path(), isFolder});
         }
     }

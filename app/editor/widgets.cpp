@@ -84,10 +84,10 @@ void linearSwatch(const char* label, const char* tooltip, glm::vec3 linear) {
     ImGui::Text("%s  %.4f %.4f %.4f", label, double(linear.r), double(linear.g), double(linear.b));
 }
 
-bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags) {
+bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags, const char* hint) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, "%s", text->c_str());
-    if (ImGui::InputText(label, buffer, sizeof buffer, flags)) {
+    if (ImGui::InputTextWithHint(label, hint ? hint : "", buffer, sizeof buffer, flags)) {
         *text = buffer;
         return true;
     }

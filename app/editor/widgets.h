@@ -23,8 +23,9 @@ bool colorEditLinear(const char* label, const char* tooltip, glm::vec3* linear, 
                      ImGuiColorEditFlags flags = 0);
 // A swatch of a linear colour, shown in sRGB, with its numbers; named `label` for automation.
 void linearSwatch(const char* label, const char* tooltip, glm::vec3 linear);
-// InputText over a std::string (libimgui-dev ships no imgui_stdlib implementation).
-bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags = 0);
+// InputText over a std::string (libimgui-dev ships no imgui_stdlib implementation); `hint`
+// shows greyed in it while it is empty.
+bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags = 0, const char* hint = nullptr);
 
 // Names the last item: its screen rectangle is remembered under `name` for tests and
 // automation (PATINA_UI_LAYOUT, see editor_app.cpp), and `tooltip`, when given, is shown while

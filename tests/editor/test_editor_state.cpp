@@ -14,6 +14,7 @@
 #include "lobe_plot.h"
 #include "open_folder.h"
 #include "panel_layout.h"
+#include "preset_files.h"
 #include "save_errors.h"
 #include "ui_scale.h"
 #include "widgets.h"
@@ -962,6 +963,86 @@ TEST_F(EditorStateTest, AnEnvironmentKeepsTheNameItWasGivenAndNotesReplacedPixel
     ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     EXPECT_NE(state.status.find("were NaN, infinite or negative"), std::string::npos) << state.status;
     EXPECT_TRUE(state.error.empty()) << state.error;
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// Issue 23: presets could not be renamed, deleted or searched. A rename renames the file and
+// the material in it; a name taken, a bad name or a folder that cannot be written is said in
+// words and changes nothing; a deletion keeps the file as .bak; the search matches any case.
+TEST_F(EditorStateTest, PresetsAreRenamedDeletedAndSearched) {
+    EXPECT_TRUE(presetMatches("", "anything", "x.json"));
+    EXPECT_TRUE(presetMatches("GOL", "warm gold", "a.json"));
+    EXPECT_TRUE(presetMatches("clay", "terracotta", dir_ / "clay-2.json")) << "the file's name counts too";
+    EXPECT_FALSE(presetMatches("steel", "warm gold", "a.json"));
+
+    const fs::path copper = writeMaterial("copper", 0.3f);
+    writeMaterial("brick", 0.9f);
+    std::vector<std::string> warnings;
+    const fs::path renamed = renamePreset(copper, "old copper");
+    EXPECT_EQ(renamed, dir_ / "old copper.json");
+    EXPECT_FALSE(fs::exists(copper));
+    EXPECT_EQ(loadMaterialFile(renamed, warnings).name, "old copper") << "the caption follows";
+    EXPECT_EQ(loadMaterialFile(renamed, warnings).roughness, 0.3f);
+    auto refused = [&](const std::string& name) {
+        try {
+            renamePreset(renamed, name);
+        } catch (const std::exception& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(refused("brick").find("already there"), std::string::npos) << refused("brick");
+    EXPECT_NE(refused("a/b").find("cannot be a file's name"), std::string::npos);
+    EXPECT_NE(refused("").find("cannot be a file's name"), std::string::npos);
+    EXPECT_NE(refused(std::string(300, 'x')).find("the name is too long"), std::string::npos)
+        << refused(std::string(300, 'x'));
+    EXPECT_TRUE(fs::exists(renamed)) << "a refused rename changes nothing";
+    EXPECT_EQ(loadMaterialFile(dir_ / "brick.json", warnings).name, "brick");
+
+    deletePreset(renamed);
+    EXPECT_FALSE(fs::exists(renamed));
+    EXPECT_TRUE(fs::exists(dir_ / "old copper.json.bak"));
+    try {
+        deletePreset(renamed);
+        ADD_FAILURE() << "a preset already gone";
+    } catch (const std::exception& error) {
+        EXPECT_NE(std::string(error.what()).find("Could not delete old copper.json"), std::string::npos)
+            << error.what();
+    }
+}
+
+// The prompts' actions on the editor: a failure stays in the prompt, saying why; a preset saved
+// as the document's file takes the document along when renamed, and leaves it without a file
+// when deleted.
+TEST_F(EditorStateTest, RenamingTheDocumentsPresetTakesTheDocumentAlong) {
+    state.presetFolders = {dir_};
+    state.userPresetFolder = dir_;
+    ASSERT_TRUE(saveAsPreset(state, dir_ / "clay.json"));
+    writeMaterial("brick", 0.9f);
+    state.presets.renaming = dir_ / "clay.json";
+    state.presets.newName = "brick";
+    confirmPresetRename(state);
+    EXPECT_NE(state.presets.problem.find("already there"), std::string::npos);
+    EXPECT_EQ(state.presets.renaming, dir_ / "clay.json") << "the prompt stays";
+    state.presets.newName = " warm clay ";
+    confirmPresetRename(state);
+    EXPECT_TRUE(state.presets.renaming.empty());
+    EXPECT_TRUE(state.presets.problem.empty());
+    EXPECT_EQ(state.materialPath, dir_ / "warm clay.json");
+    EXPECT_EQ(state.scene.material.name, "warm clay");
+    EXPECT_FALSE(state.dirty()) << "the document is its file, renamed";
+    EXPECT_EQ(state.status, "Renamed the preset clay to warm clay");
+
+    state.presets.deleting = dir_ / "warm clay.json";
+    confirmPresetDelete(state);
+    EXPECT_TRUE(state.presets.deleting.empty());
+    EXPECT_TRUE(state.materialPath.empty()) << "its file is gone";
+    EXPECT_NE(state.status.find("warm clay.json.bak"), std::string::npos) << state.status;
 }
 
 }  // namespace

@@ -1120,5 +1120,74 @@ TEST_F(EditorUi, NewLightsStartInViewAndHandlesStayOnThePicture) {
     EXPECT_TRUE(inView(dot));
 }
 
+// Issue 23: presets could not be searched, renamed or deleted. The search box narrows the
+// browser; a right-click on one of the user's presets renames it (a taken name is said in the
+// prompt, which stays) or deletes it after asking.
+TEST_F(EditorUi, PresetsAreSearchedRenamedAndDeletedFromTheBrowser) {
+    state_.userPresetFolder = dir_ / "presets";
+    state_.presetFolders = {state_.userPresetFolder};
+    std::filesystem::create_directories(state_.userPresetFolder);
+    for (const char* name : {"copper", "brick", "gold"}) {
+        Material material;
+        material.name = name;
+        saveMaterialFile(state_.userPresetFolder / (std::string(name) + ".json"), material);
+    }
+    frames(2);
+    ImGuiIO& io = ImGui::GetIO();
+    auto type = [&](const std::string& text) {
+        for (char c : text) {
+            io.AddInputCharacter(static_cast<unsigned>(c));
+        }
+        frames(2);
+    };
+    click(centreOf("preset search"));
+    type("OP");
+    EXPECT_EQ(state_.presets.filter, "OP");
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:copper"));
+    EXPECT_FALSE(itemsOfLastFrame().contains("preset:brick"));
+    click(centreOf("viewport"));   // the field lets go of the keys, and then it is emptied
+    state_.presets.filter.clear();
+    frames(2);
+    ASSERT_TRUE(itemsOfLastFrame().contains("preset:brick"));
+
+    auto rightClick = [&](const std::string& item) {
+        io.MousePos = centreOf(item);
+        frames(1);
+        io.MouseDown[1] = true;
+        frames(1);
+        io.MouseDown[1] = false;
+        frames(2);
+    };
+    rightClick("preset:copper");
+    click(centreOf("preset:rename"));
+    ASSERT_EQ(state_.presets.renaming, state_.userPresetFolder / "copper.json");
+    io.KeyMap[ImGuiKey_A] = 'A';
+    io.KeyCtrl = io.KeysDown[int('A')] = true;   // the field has the keys: Ctrl+A, then the name
+    frames(1);
+    io.KeyCtrl = io.KeysDown[int('A')] = false;
+    type("brick");
+    click(centreOf("preset prompt:confirm"));
+    EXPECT_NE(state_.presets.problem.find("already there"), std::string::npos) << state_.presets.problem;
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:new name")) << "the prompt stays, saying why";
+    state_.presets.newName = "old penny";
+    click(centreOf("preset prompt:confirm"));
+    EXPECT_TRUE(state_.presets.renaming.empty()) << state_.presets.problem;
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:old penny"));
+    EXPECT_FALSE(std::filesystem::exists(state_.userPresetFolder / "copper.json"));
+
+    rightClick("preset:brick");
+    click(centreOf("preset:delete"));
+    click(centreOf("preset prompt:cancel"));
+    EXPECT_TRUE(std::filesystem::exists(state_.userPresetFolder / "brick.json")) << "Cancel deletes nothing";
+    rightClick("preset:brick");
+    click(centreOf("preset:delete"));
+    click(centreOf("preset prompt:confirm"));
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().contains("preset:brick"));
+    EXPECT_TRUE(std::filesystem::exists(state_.userPresetFolder / "brick.json.bak"));
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+}
+
 }  // namespace
 }  // namespace patina::editor
