@@ -167,7 +167,9 @@ void recordGrip(int index, const Light& light, const Grip& grip, ImVec2 at, ImVe
     if (at.x - r < origin.x || at.y - r < origin.y || at.x + r > origin.x + size.x || at.y + r > origin.y + size.y) {
         return;
     }
-    const char* part = grip.handle == LightHandle::TubeStart ? " start" : grip.handle == LightHandle::TubeEnd ? " end" : "";
+    const char* part = grip.handle == LightHandle::TubeStart ? " start"
+                       : grip.handle == LightHandle::TubeEnd ? " end"
+                                                             : "";
     const std::string tooltip = light.name + ": drag to move it";
     recordArea("gizmo:" + std::to_string(index) + part, ImVec2(at.x - r, at.y - r), ImVec2(at.x + r, at.y + r),
                tooltip.c_str());
@@ -223,7 +225,8 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
                 continue;
             }
             recordGrip(i, light, grip, *at, origin, size);
-            const bool hovered = glm::distance(glm::vec2(at->x - origin.x, at->y - origin.y), mouseAt) <= grip.radius + 3.0f;
+            const glm::vec2 gripAt(at->x - origin.x, at->y - origin.y);
+            const bool hovered = glm::distance(gripAt, mouseAt) <= grip.radius + 3.0f;
             hoveredAny |= hovered;
             draw->AddCircleFilled(*at, grip.radius, light.type == LightType::Directional ? color : fill);
             if (light.type != LightType::Directional) {
