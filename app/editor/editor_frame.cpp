@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "panel_guard.h"
 #include "panel_layout.h"
@@ -15,15 +16,31 @@ namespace {
 constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
+// Whether the mouse holds one of the current window's edges or corners: the only way a user
+// sizes a panel.
+bool resizedByHand() {
+    ImGuiWindow* window = ImGui::GetCurrentWindow();
+    const ImGuiID active = ImGui::GetActiveID();
+    for (int n = 0; n < 4; ++n) {
+        if (active != 0 && (active == ImGui::GetWindowResizeCornerID(window, n) ||
+                            active == ImGui::GetWindowResizeBorderID(window, ImGuiDir(n)))) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // A panel at `rect`. Its free edge can be dragged: a size the user drags to is kept in
-// `wanted` (at UI scale 1); a size the layout imposed (giving way to the viewport) is not.
+// `wanted` (at UI scale 1). Any other difference (a small window squeezing the panel, ImGui's
+// own rounding or minimum) is this frame's only: it once overwrote the preference, and a
+// window shrunk for a moment left the lobe 44 pixels high for good.
 bool beginPanel(const char* name, const PanelRect& rect, bool horizontal, float* wanted) {
     ImGui::SetNextWindowPos(ImVec2(rect.x, rect.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height), ImGuiCond_Always);
     const bool open = ImGui::Begin(name, nullptr, kPanelFlags);
     const float given = horizontal ? rect.width : rect.height;
     const float actual = horizontal ? ImGui::GetWindowSize().x : ImGui::GetWindowSize().y;
-    if (std::abs(actual - given) > 0.5f) {
+    if (std::abs(actual - given) > 0.5f && resizedByHand()) {
         *wanted = actual / uiScale();
     }
     return open;
@@ -50,6 +67,30 @@ void drawError(EditorState& state, ImVec2 at, float width) {
         recordItem("error:dismiss", "Hide this message");
     }
     ImGui::End();
+}
+
+// The lobe; with Advanced on, the accuracy numbers beside it, a research tool, in a tab of their own.
+void drawBottomPanel(EditorState& state, EditorServices& services) {
+    if (!state.showAdvanced) {
+        drawLobePanel(state);
+        return;
+    }
+    if (!ImGui::BeginTabBar("bottom")) {
+        return;
+    }
+    const bool lobeTab = ImGui::BeginTabItem("Lobe");
+    recordItem("Lobe tab", "The BRDF in the plane of incidence");
+    if (lobeTab) {
+        drawLobePanel(state);
+        ImGui::EndTabItem();
+    }
+    const bool accuracyTab = ImGui::BeginTabItem("Accuracy");
+    recordItem("Accuracy tab", "How far this model is from the reference BRDF, and fp32 from fp64");
+    if (accuracyTab) {
+        drawAccuracyPanel(state, services);
+        ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
 }
 }  // namespace
 
@@ -94,29 +135,12 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     }
     ImGui::End();
     ImGui::PopStyleVar();
-    if (beginPanel("Lobe", at.lobe, false, &layout.lobeHeight)) {
-        drawGuarded(state, "The lobe panel", [&] {
-            // The accuracy numbers are a research tool: a tab of their own with Advanced on.
-            if (!state.showAdvanced) {
-                drawLobePanel(state);
-            } else if (ImGui::BeginTabBar("bottom")) {
-                const bool lobeTab = ImGui::BeginTabItem("Lobe");
-                recordItem("Lobe tab", "The BRDF in the plane of incidence");
-                if (lobeTab) {
-                    drawLobePanel(state);
-                    ImGui::EndTabItem();
-                }
-                const bool accuracyTab = ImGui::BeginTabItem("Accuracy");
-                recordItem("Accuracy tab", "How far this model is from the reference BRDF, and fp32 from fp64");
-                if (accuracyTab) {
-                    drawAccuracyPanel(state, services);
-                    ImGui::EndTabItem();
-                }
-                ImGui::EndTabBar();
-            }
-        });
+    if (layout.showLobe) {   // hidden (View menu): the viewport takes the whole column
+        if (beginPanel("Lobe", at.lobe, false, &layout.lobeHeight)) {
+            drawGuarded(state, "The lobe panel", [&] { drawBottomPanel(state, services); });
+        }
+        ImGui::End();
     }
-    ImGui::End();
 
     drawError(state, ImVec2(at.viewport.x + px(8), top + px(64)), at.viewport.width - px(16));
     drawGuarded(state, "A dialog", [&] { drawDialogs(state, services); });

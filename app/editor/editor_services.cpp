@@ -131,8 +131,12 @@ const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const 
 LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {
     const LdrImage a = renderImage(withMaterial(state, *state.compareA), halfWidth, height, state.renderPath).ldr;
     const LdrImage b = renderImage(renderedScene(state), halfWidth, height, state.renderPath).ldr;
-    return sideBySide(a, b, materialCaption(*state.compareA, halfWidth),
-                      materialCaption(state.scene.material, halfWidth));
+    // Captioned "A: name  r ..." and "B: ...", as the viewport labels them.
+    auto caption = [&](char side, Material material) {
+        material.name = comparisonLabel(side, material);
+        return materialCaption(material, halfWidth);
+    };
+    return sideBySide(a, b, caption('A', *state.compareA), caption('B', state.scene.material));
 }
 
 LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
@@ -153,9 +157,14 @@ LdrImage EditorServices::shownImage(const EditorState& state, int width, int hei
             std::fill_n(shown.rgba.begin() + std::ptrdiff_t(row + size_t(x) * 4), 3, uint8_t(255));
         }
     }
+    // Each side's label cut to fit its own part (its letter at least).
     const int scale = captionScale(width);
-    drawText(shown, 8, 24, "A", scale, kCaptionColour);
-    drawText(shown, width - 8 - textWidth("B", scale), 24, "B", scale, kCaptionColour);
+    const int least = textWidth("A...", scale);
+    const std::string labelA = fitText(comparisonLabel('A', *state.compareA), std::max(split - 16, least), scale);
+    const std::string labelB =
+        fitText(comparisonLabel('B', state.scene.material), std::max(width - split - 16, least), scale);
+    drawText(shown, 8, 24, labelA, scale, kCaptionColour);
+    drawText(shown, width - 8 - textWidth(labelB, scale), 24, labelB, scale, kCaptionColour);
     return shown;
 }
 

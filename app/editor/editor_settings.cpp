@@ -44,6 +44,7 @@ void loadSettings(EditorState& state, WindowGeometry& window, const std::filesys
         state.layout.leftWidth = reader.number("leftPanelWidth", state.layout.leftWidth, {100, 4000});
         state.layout.rightWidth = reader.number("rightPanelWidth", state.layout.rightWidth, {100, 4000});
         state.layout.lobeHeight = reader.number("lobePanelHeight", state.layout.lobeHeight, {60, 4000});
+        state.layout.showLobe = reader.boolean("showLobe", state.layout.showLobe);
         state.uiScaleSetting = reader.number("uiScale", state.uiScaleSetting, {0.5, 3.0});
         state.showGizmos = reader.boolean("showLightGizmos", state.showGizmos);
         state.showAdvanced = reader.boolean("showAdvanced", state.showAdvanced);
@@ -82,6 +83,7 @@ Json settingsJson(const EditorState& state, const WindowGeometry& window, bool s
               {"leftPanelWidth", state.layout.leftWidth},
               {"rightPanelWidth", state.layout.rightWidth},
               {"lobePanelHeight", state.layout.lobeHeight},
+              {"showLobe", state.layout.showLobe},
               {"uiScale", state.uiScaleSetting},
               {"showLightGizmos", state.showGizmos},
               {"showAdvanced", state.showAdvanced},

@@ -9,8 +9,8 @@
 namespace patina::editor {
 
 // What persists between sessions, in $XDG_CONFIG_HOME/patina/settings.json
-// (~/.config/patina/ without XDG_CONFIG_HOME): window size, panel sizes, UI scale, gizmos and
-// Advanced shown or not, recent files, screenshot folder and the last session's material.
+// (~/.config/patina/ without XDG_CONFIG_HOME): window size, panel sizes, UI scale, gizmos, the
+// lobe and Advanced shown or not, recent files, screenshot folder and the last session's material.
 struct WindowGeometry {
     int width = 0;    // 0: not saved yet, windowSizeFor chooses
     int height = 0;

@@ -70,7 +70,25 @@ std::string unsavedParts(const EditorState& state) {
     return text;
 }
 
+namespace {
+bool sameValues(const Material& a, const Material& b) {
+    return a.baseColor == b.baseColor && a.roughness == b.roughness && a.specular == b.specular &&
+           a.metallic == b.metallic;
+}
+
+// A material's notes describe it as saved (where a preset's numbers come from): once a value is
+// edited by hand they are untrue, and go in the same step; values back at the file's bring its
+// notes back. An edit that sets notes too (a preset, a file) keeps its own.
+void dropStaleNotes(Material& material, const Material& committed, const Material& saved) {
+    if (sameValues(material, committed) || material.notes != committed.notes) {
+        return;
+    }
+    material.notes = sameValues(material, saved) ? saved.notes : "";
+}
+}  // namespace
+
 void commitEdits(EditorState& state) {
+    dropStaleNotes(state.scene.material, state.committed.material, state.savedMaterial);
     EditSnapshot current = state.snapshot();
     if (current != state.committed) {
         state.history.record(std::move(state.committed));
@@ -92,17 +110,28 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
 }
 }  // namespace
 
+// The status says what a step undid or redid, and an error from before it is old news.
 void undo(EditorState& state) {
     commitEdits(state);
-    if (auto previous = state.history.undo(state.snapshot())) {
+    const EditSnapshot current = state.snapshot();
+    if (auto previous = state.history.undo(current)) {
+        state.status = "Undid " + describeChange(*previous, current);
+        state.error.clear();
         restore(state, *previous);
+    } else {
+        state.status = "Nothing to undo";
     }
 }
 
 void redo(EditorState& state) {
     commitEdits(state);
-    if (auto next = state.history.redo(state.snapshot())) {
+    const EditSnapshot current = state.snapshot();
+    if (auto next = state.history.redo(current)) {
+        state.status = "Redid " + describeChange(current, *next);
+        state.error.clear();
         restore(state, *next);
+    } else {
+        state.status = "Nothing to redo";
     }
 }
 
@@ -118,6 +147,13 @@ int environmentIndex(const EditorState& state) {
 }
 
 constexpr const char* kOneEnvironment = "A scene has one environment at most: change the one in the light list.";
+
+// A point of the view: `depth` of the way from the camera to what it looks at, `right` and
+// `up` fractions of the view's half height there (inside any view at least as wide as high).
+glm::vec3 pointInView(const Camera& camera, float right, float up, float depth) {
+    const glm::vec3 at = camera.position + depth * (camera.target - camera.position);
+    return unprojectAtDepthOf(camera, glm::vec2(2.0f), glm::vec2(1.0f + right, 1.0f - up), at);
+}
 }  // namespace
 
 void addLight(EditorState& state, LightType type) {
@@ -133,18 +169,19 @@ void addLight(EditorState& state, LightType type) {
     Light light;
     light.type = type;
     light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
+    // Point, sphere and tube lights start up and to the left between the camera and what it
+    // looks at, wherever the camera is, so there is a handle to drag at once (a tube used to
+    // start above the picture).
     if (type == LightType::Point || type == LightType::Sphere) {
-        // Up and to the left, between the camera and the sphere: in the default view, so there
-        // is a dot to drag at once (it used to start outside the picture).
-        light.position = {-0.8f, 0.8f, 1.2f};
+        light.position = pointInView(state.scene.camera, -0.45f, 0.45f, 0.65f);
         light.range = 10.0f;
         light.intensity = 5.0f;
         if (type == LightType::Sphere) {   // a point light keeps every other type's default
             light.sourceRadius = 0.25f;
         }
     } else if (type == LightType::Tube) {
-        light.start = {-1.0f, 1.8f, 1.2f};
-        light.end = {1.0f, 1.8f, 1.2f};
+        light.start = pointInView(state.scene.camera, -0.75f, 0.5f, 0.65f);
+        light.end = pointInView(state.scene.camera, 0.05f, 0.5f, 0.65f);
         light.range = 10.0f;
         light.intensity = 8.0f;
         light.sourceRadius = 0.05f;
@@ -310,6 +347,7 @@ void applyEnvironment(EditorState& state, const std::string& source, std::shared
     });
     state.selectedLight = index;
     state.environmentFailed.clear();
+    state.error.clear();   // a load that worked: an older error is no longer news
     // Replaced pixels (real HDRIs hold a few slightly negative ones) are worth a note, not an
     // error box over the toolbar.
     state.status = "Environment " + environmentName(source) + (warnings.empty() ? "" : ": " + joinWarnings(warnings));
@@ -426,7 +464,8 @@ void requestNew(EditorState& state) {
 
 bool promptOpen(const EditorState& state) {
     return state.recoverable.has_value() || state.pendingOpen.has_value() || state.pendingNew ||
-           state.pendingQuit || state.pathDialog != EditorState::PathDialog::None;
+           state.pendingQuit || state.pathDialog != EditorState::PathDialog::None ||
+           !state.presets.renaming.empty() || !state.presets.deleting.empty();
 }
 
 namespace {

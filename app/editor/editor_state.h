@@ -27,11 +27,13 @@ struct LobeSettings {
     bool multiplyByCosine = false;
 };
 
-// Sizes the user can drag, persisted between sessions.
+// Sizes the user can drag, and whether the lobe panel shows (View menu), persisted between
+// sessions.
 struct PanelLayout {
     float leftWidth = 330.0f;
     float rightWidth = 340.0f;
     float lobeHeight = 260.0f;
+    bool showLobe = true;
 };
 
 // Everything the editor shows is a function of this state; panels read it, draw widgets and
@@ -95,6 +97,13 @@ struct EditorState {
     bool pendingQuit = false;
     bool quitConfirmed = false;
     bool showShortcuts = false;
+    // The preset browser: its search box, and the preset a Rename or Delete prompt is about.
+    struct PresetBrowser {
+        std::string filter;
+        std::filesystem::path renaming, deleting;   // empty: no such prompt
+        std::string newName;                        // typed in the Rename prompt
+        std::string problem;                        // why the last try failed, said in its prompt
+    } presets;
     enum class PathDialog { None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison } pathDialog = PathDialog::None;
     std::string pathDialogText;
 

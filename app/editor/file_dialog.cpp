@@ -42,11 +42,15 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
 }
 }  // namespace
 
+bool containsAnyCase(const std::string& text, const std::string& part) {
+    return lowered(text).find(lowered(part)) != std::string::npos;
+}
+
 const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
     static const PathDialogKind open{
         "Open", "Open a material or scene (.json), a Patina screenshot (.png), a glTF model (.gltf, .glb) "
                 "or an environment image (.hdr, .exr):",
-        "Open", {".json", ".png", ".gltf", ".glb", ".hdr", ".exr"}};
+        "Open", {".json", ".png", ".gltf", ".glb", ".hdr", ".exr"}, true};
     static const PathDialogKind saveMaterial{"Save material as", "Save the material (.json) as:", "Save", {".json"}};
     static const PathDialogKind saveScene{
         "Save scene as", "Save the scene (lights, camera, display, the material inline) as .json:", "Save", {".json"}};
@@ -68,15 +72,16 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
 
 std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog) {
     const auto [folder, name] = splitTyped(typed);
-    const std::string wanted = lowered(name);
-    const std::vector<std::string>& extensions = pathDialogKind(dialog).extensions;
+    const PathDialogKind& kind = pathDialogKind(dialog);
+    const std::string wanted = kind.filterByName ? name : "";
+    const std::vector<std::string>& extensions = kind.extensions;
     std::vector<ListedEntry> entries;
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
         const bool isFolder = entry.is_directory(error);
         const std::string extension = lowered(entry.path().extension().string());
         const bool listed = isFolder || std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
-        if (listed && lowered(entry.path().filename().string()).find(wanted) != std::string::npos) {
+        if (listed && containsAnyCase(entry.path().filename().string(), wanted)) {
             entries.push_back({entry.path(), isFolder});
         }
     }

@@ -1,7 +1,7 @@
 #pragma once
 // The path dialog of Open, Save material as, Save scene as, Save as preset and Export
 // comparison: a title and prompt per action, a path field, and the folder it points into
-// listed below it, filtered to the action's file types and to what is typed.
+// listed below it, filtered to the action's file types (and, to open, to what is typed).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,15 +16,22 @@ struct PathDialogKind {
     const char* prompt;                    // what it asks for
     const char* verb;                      // its button
     std::vector<std::string> extensions;   // the files it lists
+    // Whether the name typed filters the list: to find a file to open, yes; a save's new name
+    // matches nothing, and the folder it goes into stays listed.
+    bool filterByName = false;
 };
 const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog);
+
+// Whether `text` contains `part`, in any case: how the dialog's list and the preset browser's
+// search box match what is typed.
+bool containsAnyCase(const std::string& text, const std::string& part);
 
 struct ListedEntry {
     std::filesystem::path path;
     bool folder = false;
 };
 // The folder `typed` points into (the text up to its last '/'), folders first then files of
-// `dialog`'s types, each whose name contains what is typed after that '/' (any case).
+// `dialog`'s types; for Open, each whose name contains what is typed after that '/' (any case).
 std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog);
 
 // Enter in the path field: a folder is entered (the text becomes "folder/", and true is

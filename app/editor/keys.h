@@ -10,6 +10,7 @@ constexpr int kKeyQ = 'Q';
 constexpr int kKeyS = 'S';
 constexpr int kKeyY = 'Y';
 constexpr int kKeyZ = 'Z';
+constexpr int kKeyEscape = 256;   // GLFW_KEY_ESCAPE
 constexpr int kKeyDelete = 261;   // GLFW_KEY_DELETE
 constexpr int kKeyF1 = 290;    // GLFW_KEY_F1
 constexpr int kKeyF12 = 301;   // GLFW_KEY_F12

@@ -33,27 +33,30 @@ LobePlot lobePlot(const EditorState& state) {
         add(evaluateLobe(*state.compareA, lobe.thetaInDegrees, kLobeSamples), total, rgba(160, 160, 160, 160), 3.0f,
             "A total");
     }
-    // The same material under the reference model, for what the current model gets wrong.
-    if (state.scene.material.model != BrdfModelId::Reference) {
+    // The same material under the reference model, for what a model chosen instead of the
+    // default gets wrong; under the default it is a research question the Accuracy tab answers.
+    const BrdfModelId model = state.scene.material.model;
+    if (model != MaterialParameters{}.model && model != BrdfModelId::Reference) {
         Material reference = state.scene.material;
         reference.model = BrdfModelId::Reference;
         add(evaluateLobe(reference, lobe.thetaInDegrees, kLobeSamples), total, rgba(0, 220, 220, 200), 1.0f,
             "reference model");
     }
     const std::vector<LobeSample> samples = evaluateLobe(state.scene.material, lobe.thetaInDegrees, kLobeSamples);
+    const std::string b = state.compareA ? "B " : "";   // "B" says which only beside an A
     if (lobe.luminance) {
         add(samples, [](const LobeSample& s) { return luminance(s.diffuse); }, rgba(110, 170, 255, 255), 1.0f,
-            "B diffuse");
+            b + "diffuse");
         add(samples, [](const LobeSample& s) { return luminance(s.specular); }, rgba(255, 150, 90, 255), 1.0f,
-            "B specular");
-        add(samples, total, rgba(255, 255, 255, 255), 2.0f, "B total");
+            b + "specular");
+        add(samples, total, rgba(255, 255, 255, 255), 2.0f, b + "total");
     } else {
         const uint32_t channel[3] = {rgba(255, 80, 80, 255), rgba(80, 255, 80, 255), rgba(90, 140, 255, 255)};
         for (int c = 0; c < 3; ++c) {
             add(samples, [c](const LobeSample& s) { return s.total()[c]; }, channel[c], 2.0f,
-                c == 0 ? "B total, R G B (thick)" : "");
+                c == 0 ? b + "total, R G B (thick)" : "");
             add(samples, [c](const LobeSample& s) { return s.specular[c]; }, channel[c] & 0x80FFFFFFu, 1.0f,
-                c == 0 ? "B specular (thin)" : "");
+                c == 0 ? b + "specular (thin)" : "");
         }
     }
     plot.maxValue = 1e-6f;

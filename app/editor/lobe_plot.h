@@ -1,6 +1,7 @@
 #pragma once
-// The curves of the lobe panel's polar plot, as numbers: which curves, their legend, and the
-// scale that fits all of them (B, A and the reference), so no curve runs off the plot.
+// The curves of the lobe panel's polar plot, as numbers: which curves, their legend (naming
+// only what is drawn), and the scale that fits all of them (B, A when set, and the reference
+// model's when another model than the default is chosen), so no curve runs off the plot.
 #include <cstdint>
 #include <string>
 #include <vector>

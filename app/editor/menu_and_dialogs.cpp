@@ -146,6 +146,8 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
         recordItem("Frame mesh", "Aim the camera at the whole mesh");
         ImGui::MenuItem("Light gizmos", nullptr, &state.showGizmos);
         recordItem("Light gizmos", "Show the lights' dots and arrows over the viewport");
+        ImGui::MenuItem("Lobe panel", nullptr, &state.layout.showLobe);
+        recordItem("Lobe panel", "Show the BRDF lobe under the viewport; hidden, the viewport takes its room");
         ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
         recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
         // Steps, not a slider: the menu would grow under the mouse while it is dragged.
@@ -206,12 +208,15 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
         return;   // typing a name or a path: keys are text
     }
     const KeyPresses& keys = services.keyPresses;
+    // F1 shows the shortcuts and Escape closes them, as any help window, behind a prompt too.
+    if (pressed(keys, kKeyF1)) {
+        state.showShortcuts = !state.showShortcuts;
+    } else if (pressed(keys, kKeyEscape)) {
+        state.showShortcuts = false;
+    }
     if (promptOpen(state)) {
         // Nothing edits the document behind a prompt: Ctrl+Z or Ctrl+O there once undid or
-        // replaced what the prompt was asking about. F1 still shows the shortcuts.
-        if (pressed(keys, kKeyF1)) {
-            state.showShortcuts = !state.showShortcuts;
-        }
+        // replaced what the prompt was asking about.
         return;
     }
     if (pressed(keys, kKeyN, true)) {
@@ -243,9 +248,6 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
     }
     if (pressed(keys, kKeyDelete)) {
         deleteLight(state, state.selectedLight);   // one undo step, as the Delete button
-    }
-    if (pressed(keys, kKeyF1)) {
-        state.showShortcuts = !state.showShortcuts;
     }
 }
 
@@ -353,7 +355,8 @@ void drawDialogs(EditorState& state, EditorServices& services) {
                 {"Delete", "delete the selected light"}, {"F", "frame the mesh (viewport)"},
                 {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"}, {"Right drag", "turn the environment (lighting and background)"},
                 {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"},
-                {"Right-click Reset", "back to the default"}, {"F1", "this list"}, {"Ctrl+Q", "quit"}};
+                {"Right-click Reset", "back to the default"}, {"F1", "this list (Escape closes it)"},
+                {"Ctrl+Q", "quit"}};
             if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) {
                 for (const auto& row : rows) {
                     ImGui::TableNextColumn();

@@ -20,6 +20,15 @@ void giveWay(float& a, float& b, float room, float minimum) {
     a = minimum + (a - minimum) * spare / over;
     b = minimum + (b - minimum) * spare / over;
 }
+
+// The lobe's height in a centre column `height` high: as wanted, down to its minimum while the
+// viewport keeps its own; a window too short for both: the viewport first, the lobe with what
+// is left.
+float lobeHeight(float wanted, float height, float scale) {
+    float lobe = std::max(wanted, kMinLobeHeight * scale);
+    lobe = std::min(lobe, std::max(height - kMinViewportHeight * scale, kMinLobeHeight * scale));
+    return std::min(lobe, std::max(height - kMinViewportHeight * scale, height * 0.25f));
+}
 }  // namespace
 
 PanelPlacement placePanels(const PanelLayout& wanted, float width, float height, float top, float scale) {
@@ -27,10 +36,7 @@ PanelPlacement placePanels(const PanelLayout& wanted, float width, float height,
     giveWay(left, right, width - kMinViewportWidth * scale, kMinSidePanelWidth * scale);
     const float centre = std::max(width - left - right, 1.0f);
 
-    float lobe = std::max(wanted.lobeHeight * scale, kMinLobeHeight * scale);
-    lobe = std::min(lobe, std::max(height - kMinViewportHeight * scale, kMinLobeHeight * scale));
-    // A window too short for both: the viewport first, the lobe with what is left.
-    lobe = std::min(lobe, std::max(height - kMinViewportHeight * scale, height * 0.25f));
+    const float lobe = wanted.showLobe ? lobeHeight(wanted.lobeHeight * scale, height, scale) : 0.0f;
     const float viewport = std::max(height - lobe, 1.0f);
 
     PanelPlacement placement;

@@ -19,7 +19,8 @@ constexpr float kMinViewportWidth = 400.0f, kMinViewportHeight = 260.0f;
 constexpr float kMinSidePanelWidth = 210.0f, kMinLobeHeight = 110.0f;
 
 // The panels in a `width` x `height` area starting at `top` (under the menu bar), each side
-// panel as wide as `wanted` asks (sizes at scale 1) unless the viewport needs the room.
+// panel as wide as `wanted` asks (sizes at scale 1) unless the viewport needs the room. A
+// hidden lobe leaves the centre column to the viewport (the lobe's rectangle is 0 high).
 PanelPlacement placePanels(const PanelLayout& wanted, float width, float height, float top, float scale);
 
 }  // namespace patina::editor

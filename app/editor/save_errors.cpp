@@ -5,7 +5,7 @@
 
 namespace patina::editor {
 
-std::string couldNotSave(const std::filesystem::path& file, const std::exception& error) {
+std::string couldNot(const std::string& action, const std::filesystem::path& file, const std::exception& error) {
     std::error_code ignored;
     const std::filesystem::path absolute = std::filesystem::absolute(file, ignored).lexically_normal();
     const std::string folder = absolute.parent_path().string();
@@ -26,7 +26,11 @@ std::string couldNotSave(const std::filesystem::path& file, const std::exception
         default: break;
         }
     }
-    return "Could not save " + file.filename().string() + ": " + why;
+    return "Could not " + action + " " + file.filename().string() + ": " + why;
+}
+
+std::string couldNotSave(const std::filesystem::path& file, const std::exception& error) {
+    return couldNot("save", file, error);
 }
 
 }  // namespace patina::editor

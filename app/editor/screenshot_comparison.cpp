@@ -16,6 +16,10 @@ const char* viewName(CompareView view) {
 }
 }  // namespace
 
+std::string comparisonLabel(char side, const Material& material) {
+    return std::string(1, side) + (material.name.empty() ? "" : ": " + material.name);
+}
+
 std::string comparisonText(const EditorState& state) {
     if (!state.compareA || state.compareView == CompareView::Single) {
         return "";

@@ -17,6 +17,11 @@ struct ScreenshotComparison {
     float split = 0.5f;
 };
 
+// "A: gold", "B: copper": what a comparison calls each side, in the viewport and in a split
+// screenshot, so a picture of two says which is which (a side by side one's captions add the
+// parameters).
+std::string comparisonLabel(char side, const Material& material);
+
 // {"format": "patina-comparison", "version": 1, "view": "split" | "side-by-side", "split",
 // "a": a material file's object}; empty when the editor shows no comparison.
 std::string comparisonText(const EditorState& state);

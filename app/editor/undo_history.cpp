@@ -2,6 +2,86 @@
 
 namespace patina::editor {
 
+namespace {
+// "a", "a and b"; `whole` for more: a preset or a file changes many fields at once.
+std::string fieldsOr(const std::vector<std::string>& fields, const std::string& whole) {
+    if (fields.size() == 1) {
+        return fields[0];
+    }
+    return fields.size() == 2 ? fields[0] + " and " + fields[1] : whole;
+}
+
+std::string materialChange(const Material& a, const Material& b) {
+    // Another name and other values: another material (a preset, a model's) took its place.
+    if (a.name != b.name && static_cast<const MaterialParameters&>(a) != b) {
+        return "the material " + b.name;
+    }
+    std::vector<std::string> fields;
+    const std::pair<bool, const char*> checks[] = {
+        {a.name != b.name, "the material's name"}, {a.baseColor != b.baseColor, "base colour"},
+        {a.roughness != b.roughness, "roughness"},  {a.specular != b.specular, "specular"},
+        {a.metallic != b.metallic, "metallic"},     {a.model != b.model, "the BRDF model"},
+        {a.notes != b.notes, "the notes"},          {a.extras != b.extras, "the material"}};
+    for (const auto& [changed, name] : checks) {
+        if (changed) {
+            fields.push_back(name);
+        }
+    }
+    return fieldsOr(fields, "the material");
+}
+
+std::string lightsChange(const std::vector<Light>& a, const std::vector<Light>& b) {
+    if (b.size() == a.size() + 1) {
+        return "adding a light";
+    }
+    if (a.size() == b.size() + 1) {
+        return "deleting a light";
+    }
+    std::vector<std::string> fields;
+    for (size_t i = 0; i < a.size() && a.size() == b.size(); ++i) {
+        if (a[i] != b[i]) {
+            fields.push_back("the light " + b[i].name);
+        }
+    }
+    return fields.size() == 1 ? fields[0] : "the lights";
+}
+
+std::string displayChange(const DisplaySettings& a, const DisplaySettings& b) {
+    std::vector<std::string> fields;
+    const std::pair<bool, const char*> checks[] = {
+        {a.exposure != b.exposure, "exposure"},
+        {a.tonemap != b.tonemap, "the tone map"},
+        {a.background != b.background, "the background colour"},
+        {a.backgroundFromEnvironment != b.backgroundFromEnvironment, "the environment as background"},
+        {a.backgroundBlur != b.backgroundBlur, "the background blur"},
+        {a.extras != b.extras, "the display settings"}};
+    for (const auto& [changed, name] : checks) {
+        if (changed) {
+            fields.push_back(name);
+        }
+    }
+    return fieldsOr(fields, "the display settings");
+}
+}  // namespace
+
+std::string describeChange(const EditSnapshot& before, const EditSnapshot& after) {
+    std::vector<std::string> parts;
+    if (before.material != after.material) {
+        parts.push_back(materialChange(before.material, after.material));
+    }
+    if (before.lights != after.lights) {
+        parts.push_back(lightsChange(before.lights, after.lights));
+    }
+    if (before.display != after.display) {
+        parts.push_back(displayChange(before.display, after.display));
+    }
+    std::string text;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return text;
+}
+
 void UndoHistory::record(EditSnapshot before) {
     undo_.push_back(std::move(before));
     if (undo_.size() > limit_) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <deque>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "scene/scene.h"
@@ -17,6 +18,11 @@ struct EditSnapshot {
 
     bool operator==(const EditSnapshot&) const = default;
 };
+
+// What an edit from `before` to `after` changed, in words for the status line ("Undid
+// roughness", "Redid adding a light"): the fields when one or two changed, else the part
+// ("the material", "the lights", "the display settings").
+std::string describeChange(const EditSnapshot& before, const EditSnapshot& after);
 
 // Linear undo/redo over snapshots. record() takes the state from before an edit; a new edit
 // clears the redo side. The oldest steps fall off past `limit`.

@@ -12,6 +12,7 @@
 #include "scene/camera_control.h"
 #include "panels.h"
 #include "keys.h"
+#include "screenshot_comparison.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
@@ -46,9 +47,12 @@ void drawToolbar(EditorState& state) {
     }
     recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
     sameLineIfFits(labelledWidth(px(110), "Exposure"));
+    // A drag, not a slider: 16 stops across 110 pixels moved 8 EV in 60 of them. Fine steps
+    // (0.02 EV a pixel) for a look; a big change is typed.
     ImGui::SetNextItemWidth(px(110));
-    ImGui::SliderFloat("Exposure", &display.exposure, -8.0f, 8.0f, "%.2f EV");
-    recordItem("Exposure", "Brightness of the picture in stops (EV): +1 doubles it. Ctrl+click to type");
+    ImGui::DragFloat("Exposure", &display.exposure, 0.02f, -8.0f, 8.0f, "%.2f EV", ImGuiSliderFlags_AlwaysClamp);
+    recordItem("Exposure", "Brightness of the picture in stops (EV): +1 doubles it. Drag for fine steps (0.02 EV a "
+                           "pixel); Ctrl+click or double-click to type");
     sameLineIfFits(labelledWidth(px(100), "Tone map"));
     int tonemap = int(display.tonemap);
     ImGui::SetNextItemWidth(px(100));
@@ -117,6 +121,22 @@ void drawCapsule(ImDrawList* draw, ImVec2 start, ImVec2 end, float startRadius, 
     draw->PathStroke(color, 0, 1.5f);
 }
 
+// How far from the view's centre a directional light's arrow reaches: 1.6 units, less where the
+// view shows less (zoomed in, a narrow viewport), so that its tail, the handle, stays on screen
+// whichever way the light points (it used to leave the picture, out of reach).
+float arrowReach(const Camera& camera, glm::vec2 viewSize) {
+    const glm::vec2 centre = 0.5f * viewSize;
+    const float halfHeight =
+        glm::distance(unprojectAtDepthOf(camera, viewSize, {centre.x, 0.0f}, camera.target), camera.target);
+    const float halfWidth =
+        glm::distance(unprojectAtDepthOf(camera, viewSize, {0.0f, centre.y}, camera.target), camera.target);
+    return std::min(1.6f, 0.75f * std::min(halfHeight, halfWidth));
+}
+
+glm::vec3 arrowTail(const Light& light, const Camera& camera, glm::vec2 viewSize) {
+    return camera.target - arrowReach(camera, viewSize) * glm::normalize(light.direction);
+}
+
 // Where a light can be grabbed: a point's or a sphere's position, a tube's middle and ends, a
 // directional light's arrow tail.
 struct Grip {
@@ -125,7 +145,7 @@ struct Grip {
     float radius;   // of its marker, pixels
 };
 
-std::vector<Grip> gripsOf(const Light& light, const Camera& camera) {
+std::vector<Grip> gripsOf(const Light& light, const Camera& camera, glm::vec2 viewSize) {
     switch (light.type) {
     case LightType::Point:
     case LightType::Sphere: return {{LightHandle::Position, light.position, gizmoRadius()}};
@@ -134,11 +154,26 @@ std::vector<Grip> gripsOf(const Light& light, const Camera& camera) {
                 {LightHandle::TubeEnd, light.end, gizmoRadius() * 0.7f},
                 {LightHandle::Position, 0.5f * (light.start + light.end), gizmoRadius()}};
     case LightType::Directional:
-        return {{LightHandle::Position, camera.target - 1.6f * glm::normalize(light.direction), gizmoRadius() * 0.7f}};
+        return {{LightHandle::Position, arrowTail(light, camera, viewSize), gizmoRadius() * 0.7f}};
     case LightType::Hemisphere:
     case LightType::Environment: break;   // everywhere at once: nothing to grab
     }
     return {};
+}
+
+// Names a light's handle for automation ("gizmo:2", "gizmo:2 start"), while it is whole on
+// the picture.
+void recordGrip(int index, const Light& light, const Grip& grip, ImVec2 at, ImVec2 origin, ImVec2 size) {
+    const float r = grip.radius;
+    if (at.x - r < origin.x || at.y - r < origin.y || at.x + r > origin.x + size.x || at.y + r > origin.y + size.y) {
+        return;
+    }
+    const char* part = grip.handle == LightHandle::TubeStart ? " start"
+                       : grip.handle == LightHandle::TubeEnd ? " end"
+                                                             : "";
+    const std::string tooltip = light.name + ": drag to move it";
+    recordArea("gizmo:" + std::to_string(index) + part, ImVec2(at.x - r, at.y - r), ImVec2(at.x + r, at.y + r),
+               tooltip.c_str());
 }
 
 // Point lights as a marker, sphere lights as their outline at their size, tube lights as a
@@ -154,7 +189,7 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     const glm::vec2 viewSize(size.x, size.y);
     const Camera& camera = state.scene.camera;
     const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const glm::vec2 local(mouse.x - origin.x, mouse.y - origin.y);
+    const glm::vec2 mouseAt(mouse.x - origin.x, mouse.y - origin.y);
     auto onScreen = [&](glm::vec3 point) -> std::optional<ImVec2> {
         const auto screen = projectToViewport(camera, viewSize, point);
         return screen ? std::optional<ImVec2>(ImVec2(origin.x + screen->x, origin.y + screen->y)) : std::nullopt;
@@ -179,18 +214,20 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
                             screenRadius(camera, viewSize, light.end, light.sourceRadius), color);
             }
         } else if (light.type == LightType::Directional) {
-            const auto tail = onScreen(camera.target - 1.6f * glm::normalize(light.direction));
+            const auto tail = onScreen(arrowTail(light, camera, viewSize));
             if (const auto tip = onScreen(camera.target); tail && tip) {
                 draw->AddLine(*tail, *tip, color, 2.0f);
                 draw->AddTriangleFilled(*tip, ImVec2(tip->x - 4, tip->y - 4), ImVec2(tip->x + 4, tip->y - 4), color);
             }
         }
-        for (const Grip& grip : gripsOf(light, camera)) {
+        for (const Grip& grip : gripsOf(light, camera, viewSize)) {
             const auto at = onScreen(grip.at);
             if (!at) {
                 continue;
             }
-            const bool hovered = glm::distance(glm::vec2(at->x - origin.x, at->y - origin.y), local) <= grip.radius + 3.0f;
+            recordGrip(i, light, grip, *at, origin, size);
+            const glm::vec2 gripAt(at->x - origin.x, at->y - origin.y);
+            const bool hovered = glm::distance(gripAt, mouseAt) <= grip.radius + 3.0f;
             hoveredAny |= hovered;
             draw->AddCircleFilled(*at, grip.radius, light.type == LightType::Directional ? color : fill);
             if (light.type != LightType::Directional) {
@@ -206,6 +243,10 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     draw->PopClipRect();
     if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         Light& light = state.scene.lights[size_t(dragged)];
+        // The mouse is followed only inside the picture: a handle dragged past its edge stays
+        // on it, where it can be grabbed again.
+        const glm::vec2 margin(gizmoRadius() + 2.0f);
+        const glm::vec2 local = glm::clamp(mouseAt, margin, glm::max(viewSize - margin, margin));
         if (light.type == LightType::Point || light.type == LightType::Sphere) {
             light.position = unprojectAtDepthOf(camera, viewSize, local, light.position);
         } else if (light.type == LightType::Tube) {
@@ -223,7 +264,7 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
             // The arrow's tail follows the mouse on a sphere around the target.
             const glm::vec3 onPlane = unprojectAtDepthOf(camera, viewSize, local, camera.target);
             glm::vec3 fromTarget = onPlane - camera.target;
-            const float reach = 1.6f, planar = glm::length(fromTarget);
+            const float reach = arrowReach(camera, viewSize), planar = glm::length(fromTarget);
             const glm::vec3 toCamera = glm::normalize(camera.position - camera.target);
             fromTarget += toCamera * std::sqrt(std::max(reach * reach - planar * planar, 0.0f));
             if (glm::dot(fromTarget, fromTarget) > 1e-6f) {
@@ -259,6 +300,40 @@ void handleCameraInput(EditorState& state, ImVec2 size) {
             environment->rotationDegrees =
                 std::remainder(environment->rotationDegrees + io.MouseDelta.x * 0.5f, 360.0f);
         }
+    }
+}
+
+// A side's label ("A: gold") at the top of its part of the view, `room` pixels wide: left
+// aligned at `x`, or with `rightAligned` ending there; on a dark box so it reads over any
+// picture. The tooltip has it whole when it is cut.
+void sideLabel(char side, const Material& material, float x, float y, float room, bool rightAligned) {
+    const std::string whole = comparisonLabel(side, material);
+    const std::string shown = fittedText(whole, std::max(room, ImGui::CalcTextSize("A...").x));
+    const ImVec2 size = ImGui::CalcTextSize(shown.c_str());
+    const ImVec2 at(rightAligned ? x - size.x : x, y);
+    const float pad = px(3);
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x - pad, at.y - pad),
+                                              ImVec2(at.x + size.x + pad, at.y + size.y + pad),
+                                              IM_COL32(0, 0, 0, 150), pad);
+    ImGui::SetCursorScreenPos(at);
+    ImGui::TextUnformatted(shown.c_str());
+    const std::string tooltip =
+        whole + (side == 'A' ? " (kept with Set A)" : " (the material you edit)");
+    recordItem(std::string("label ") + side, tooltip.c_str());
+}
+
+// Which material each part of the view shows, named.
+void drawSideLabels(const EditorState& state, ImVec2 origin, ImVec2 size) {
+    const float margin = px(8);
+    const float a = state.compareView == CompareView::Split ? size.x * std::clamp(state.splitPosition, 0.0f, 1.0f)
+                                                            : std::floor(size.x / 2.0f);
+    sideLabel('A', *state.compareA, origin.x + margin, origin.y + margin, a - 2.0f * margin, false);
+    if (state.compareView == CompareView::Split) {
+        sideLabel('B', state.scene.material, origin.x + size.x - margin, origin.y + margin,
+                  size.x - a - 2.0f * margin, true);
+    } else {
+        sideLabel('B', state.scene.material, origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
+                  false);
     }
 }
 
@@ -300,11 +375,11 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
             image(a, ImVec2(size.x * split, size.y), 0.0f, split);
         }
     }
-    recordItem("viewport");
     ImGui::SetCursorScreenPos(origin);
     ImGui::InvisibleButton("viewport-input", size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
                                ImGuiButtonFlags_MouseButtonRight);
+    recordItem("viewport");   // the whole picture, whichever parts of it A and B show
     const bool viewportActive = ImGui::IsItemActive();
     const bool viewportPressed = ImGui::IsItemActivated();
     const bool hovered = ImGui::IsItemHovered();
@@ -314,8 +389,6 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (state.compareA && state.compareView == CompareView::Split) {
         const float x = origin.x + size.x * state.splitPosition;
         draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + size.y), IM_COL32(255, 255, 255, 220), 2.0f);
-        draw->AddText(ImVec2(origin.x + 8, origin.y + 24), IM_COL32(255, 255, 255, 255), "A");
-        draw->AddText(ImVec2(origin.x + size.x - 16, origin.y + 24), IM_COL32(255, 255, 255, 255), "B");
         bool& draggingDivider = state.draggingDivider;
         onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
         if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
@@ -342,6 +415,10 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (hovered && pressed(services.keyPresses, kKeyF) &&
         !ImGui::GetIO().WantTextInput) {
         frameMesh(state);
+    }
+
+    if (state.compareA && state.compareView != CompareView::Single) {
+        drawSideLabels(state, origin, size);
     }
 
     // An environment file being prepared: the picture keeps the one it had until then.

@@ -85,23 +85,24 @@ void linearSwatch(const char* label, const char* tooltip, glm::vec3 linear) {
     ImGui::Text("%s  linear %.4f %.4f %.4f", label, double(linear.r), double(linear.g), double(linear.b));
 }
 
-bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags) {
+bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags, const char* hint) {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, "%s", text->c_str());
-    if (ImGui::InputText(label, buffer, sizeof buffer, flags)) {
+    if (ImGui::InputTextWithHint(label, hint ? hint : "", buffer, sizeof buffer, flags)) {
         *text = buffer;
         return true;
     }
     return false;
 }
 
-void recordItem(const std::string& name, const char* tooltip) {
+namespace {
+void remember(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip) {
     const ImGuiContext& context = *ImGui::GetCurrentContext();
     const ImGuiWindow& window = *context.CurrentWindow;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     RecordedItem& item = recorded()[name];
-    item.min = ImGui::GetItemRectMin();
-    item.max = ImGui::GetItemRectMax();
+    item.min = min;
+    item.max = max;
     // What the item was drawn clipped to: its window's inside, its table column, its menu bar.
     const ImVec2 clipMin = window.DrawList->GetClipRectMin(), clipMax = window.DrawList->GetClipRectMax();
     item.visibleMin = ImVec2(std::max(clipMin.x, 0.0f), std::max(clipMin.y, 0.0f));
@@ -110,7 +111,19 @@ void recordItem(const std::string& name, const char* tooltip) {
     item.dimmed = (context.CurrentItemFlags & ImGuiItemFlags_Disabled) != 0 || context.Style.Alpha < 1.0f;
     item.tooltip = tooltip ? tooltip : "";
     item.frame = ImGui::GetFrameCount();
+}
+}  // namespace
+
+void recordItem(const std::string& name, const char* tooltip) {
+    remember(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), tooltip);
     if (tooltip && !ImGui::IsItemActive() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::SetTooltip("%s", tooltip);
+    }
+}
+
+void recordArea(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip) {
+    remember(name, min, max, tooltip);
+    if (tooltip && ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(min, max) && !ImGui::IsAnyMouseDown()) {
         ImGui::SetTooltip("%s", tooltip);
     }
 }
@@ -144,6 +157,17 @@ bool clipped(const RecordedItem& item) {
     const bool horizontally = item.min.x < item.visibleMin.x - slack || item.max.x > item.visibleMax.x + slack;
     const bool vertically = item.min.y < item.visibleMin.y - slack || item.max.y > item.visibleMax.y + slack;
     return horizontally || (vertically && !item.scrolls);
+}
+
+std::string fittedText(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) {
+        return text;
+    }
+    std::string cut = text;
+    while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) {
+        cut.pop_back();
+    }
+    return cut + "...";
 }
 
 void sameLineIfFits(float width) {

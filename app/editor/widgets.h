@@ -23,13 +23,17 @@ bool colorEditLinear(const char* label, const char* tooltip, glm::vec3* linear, 
                      ImGuiColorEditFlags flags = 0);
 // A swatch of a linear colour, shown in sRGB, with its numbers; named `label` for automation.
 void linearSwatch(const char* label, const char* tooltip, glm::vec3 linear);
-// InputText over a std::string (libimgui-dev ships no imgui_stdlib implementation).
-bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags = 0);
+// InputText over a std::string (libimgui-dev ships no imgui_stdlib implementation); `hint`
+// shows greyed in it while it is empty.
+bool inputString(const char* label, std::string* text, ImGuiInputTextFlags flags = 0, const char* hint = nullptr);
 
 // Names the last item: its screen rectangle is remembered under `name` for tests and
 // automation (PATINA_UI_LAYOUT, see editor_app.cpp), and `tooltip`, when given, is shown while
 // the mouse rests on it (not while it is being dragged).
 void recordItem(const std::string& name, const char* tooltip = nullptr);
+// The same for what ImGui knows no item of (a light's handle over the viewport): `min` to `max`
+// on screen, the tooltip shown while the mouse rests there with no button down.
+void recordArea(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip = nullptr);
 bool itemRect(const std::string& name, ImVec2* min, ImVec2* max);
 
 // What recordItem remembers of an item.
@@ -47,6 +51,8 @@ std::map<std::string, RecordedItem> itemsOfLastFrame();
 void forgetRecordedItems();
 // Whether an item is cut by the edge of its window or of the display.
 bool clipped(const RecordedItem& item);
+// `text` cut with "..." to fit `width` pixels in the current font.
+std::string fittedText(const std::string& text, float width);
 // Puts the next item on this line when `width` pixels still fit, else on a new line.
 void sameLineIfFits(float width);
 // The width of an item with a `fieldWidth` field and a label beside it.

@@ -15,6 +15,7 @@
 #include "lobe_plot.h"
 #include "open_folder.h"
 #include "panel_layout.h"
+#include "preset_files.h"
 #include "save_errors.h"
 #include "ui_scale.h"
 #include "widgets.h"
@@ -62,6 +63,40 @@ TEST_F(EditorStateTest, UndoAndRedoStepThroughEdits) {
     redo(state);
     EXPECT_EQ(state.scene.material.metallic, 1.0f);
     EXPECT_FALSE(state.history.canRedo());
+}
+
+// Issue 23: a preset's notes (where its numbers come from) stayed on a material whose values
+// had been edited, and were saved with it. They go with the edit, in the same undo step.
+TEST_F(EditorStateTest, NotesGoWhenTheValuesAreEdited) {
+    Material measured;
+    measured.name = "measured gold";
+    measured.metallic = 1.0f;
+    measured.notes = "F0 from Gulbrandsen 2014";
+    const fs::path file = dir_ / "measured.json";
+    std::ofstream(file) << prettyJson(materialToJson(measured));
+    state.presetFolders = {dir_};
+    requestOpen(state, file);
+    ASSERT_EQ(state.scene.material.notes, measured.notes) << "a preset brings its notes";
+    state.scene.material.roughness = 0.1f;
+    commitEdits(state);
+    EXPECT_EQ(state.scene.material.notes, "");
+    undo(state);
+    EXPECT_EQ(state.scene.material, measured) << "one step: the value and the notes";
+    redo(state);
+    EXPECT_EQ(state.scene.material.notes, "");
+
+    // A document's notes come back with its values (Reset).
+    startDocument(state, state.scene, {}, {});
+    state.scene.material = measured;
+    state.savedMaterial = measured;
+    state.committed = state.snapshot();
+    state.scene.material.metallic = 0.5f;
+    commitEdits(state);
+    EXPECT_EQ(state.scene.material.notes, "");
+    state.scene.material.metallic = 1.0f;
+    commitEdits(state);
+    EXPECT_EQ(state.scene.material.notes, measured.notes);
+    EXPECT_FALSE(state.materialChanged());
 }
 
 TEST_F(EditorStateTest, AContinuousDragIsOneStep) {
@@ -237,6 +272,42 @@ TEST_F(EditorStateTest, PresetsAreUndoableEditsAndResetReadsTheDocument) {
     undo(state);
     EXPECT_EQ(state.scene.material, document);
     EXPECT_FALSE(state.dirty());
+}
+
+// Issue 23: after Ctrl+Z the status still said "Preset brick applied", and an error from
+// before stayed up over a load that worked. Undo and redo say what they took back, and clear
+// the old error; so does a load that works.
+TEST_F(EditorStateTest, UndoRedoAndALoadSayWhatTheyDidAndClearAnOldError) {
+    state.presetFolders = {dir_};
+    requestOpen(state, writeMaterial("brick", 0.9f));
+    requestOpen(state, dir_ / "missing.json");
+    ASSERT_FALSE(state.error.empty());
+    undo(state);
+    EXPECT_EQ(state.status, "Undid the material brick");
+    EXPECT_TRUE(state.error.empty()) << state.error;
+    redo(state);
+    EXPECT_EQ(state.status, "Redid the material brick");
+    state.scene.material.roughness = 0.2f;
+    commitEdits(state);
+    undo(state);
+    EXPECT_EQ(state.status, "Undid roughness");
+    undo(state);
+    undo(state);
+    EXPECT_EQ(state.status, "Nothing to undo");
+    addLight(state, LightType::Point);
+    state.scene.display.exposure = 1.0f;
+    undo(state);
+    EXPECT_EQ(state.status, "Undid exposure");
+    undo(state);
+    EXPECT_EQ(state.status, "Undid adding a light");
+
+    requestOpen(state, dir_ / "missing.json");
+    ASSERT_FALSE(state.error.empty());
+    ASSERT_TRUE(setEnvironmentSource(state, "builtin:white"));
+    EXPECT_TRUE(state.error.empty()) << "the environment loaded: " << state.error;
+    requestOpen(state, dir_ / "missing.json");
+    ASSERT_TRUE(openFile(state, dir_ / "brick.json"));
+    EXPECT_TRUE(state.error.empty()) << state.error;
 }
 
 TEST_F(EditorStateTest, AMissingOrBrokenFileSaysSoBeforeAskingAnything) {
@@ -627,6 +698,7 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     state.uiScaleSetting = 1.5f;
     state.showGizmos = false;
     state.showAdvanced = true;
+    state.layout.showLobe = false;
     ASSERT_TRUE(saveSettings(state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
     EditorState next;
     WindowGeometry window;
@@ -634,6 +706,7 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     EXPECT_EQ(next.uiScaleSetting, 1.5f);
     EXPECT_FALSE(next.showGizmos);
     EXPECT_TRUE(next.showAdvanced);
+    EXPECT_FALSE(next.layout.showLobe);
     EXPECT_FALSE(EditorState().showAdvanced) << "research controls start closed";
 }
 
@@ -659,6 +732,7 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     sharp.metallic = 1.0f;
     state.compareA = sharp;
     state.scene.material.roughness = 0.9f;
+    state.scene.material.model = BrdfModelId::Filament;   // another model: the reference drawn too
     state.lobe.thetaInDegrees = 30.0f;
     const LobePlot plot = lobePlot(state);
     float aPeak = 0.0f, bPeak = 0.0f;
@@ -683,8 +757,32 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-1f, plot.maxValue, true), 2.0f / 3.0f, 1e-5f);
 }
 
+// Issue 23: the legend said "B total" with no A, and the reference model's curve was drawn
+// under the default model too, though the docs said only when another model is chosen.
+TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
+    auto legend = [&] {
+        std::vector<std::string> entries;
+        for (const LobeCurve& curve : lobePlot(state).curves) {
+            if (!curve.legend.empty()) {
+                entries.push_back(curve.legend);
+            }
+        }
+        return entries;
+    };
+    EXPECT_EQ(legend(), (std::vector<std::string>{"total, R G B (thick)", "specular (thin)"}));
+    state.lobe.luminance = true;
+    EXPECT_EQ(legend(), (std::vector<std::string>{"diffuse", "specular", "total"}));
+    state.compareA = state.scene.material;
+    EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "B diffuse", "B specular", "B total"}));
+    state.scene.material.model = BrdfModelId::Hammon;
+    EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "reference model", "B diffuse", "B specular", "B total"}));
+    state.scene.material.model = BrdfModelId::Reference;   // the reference itself: nothing to compare
+    EXPECT_EQ(lobePlot(state).curves.size(), 4u);
+}
+
 // The path dialog lists what its action takes (glTF and environments for Open), folders first,
-// filtered by what is typed; Enter on a folder enters it.
+// filtered by what is typed to open, not while a save's name is typed; Enter on a folder enters
+// it.
 TEST_F(EditorStateTest, ThePathDialogListsTheActionsFilesAndFollowsTheTyping) {
     for (const char* name : {"gold.json", "Golden.png", "model.gltf", "model.glb", "sky.hdr", "sky.exr", "notes.txt"}) {
         std::ofstream(dir_ / name) << "x";
@@ -709,6 +807,13 @@ TEST_F(EditorStateTest, ThePathDialogListsTheActionsFilesAndFollowsTheTyping) {
               (std::vector<std::string>{"golden-folder/", "Golden.png"}));
     EXPECT_NE(std::string(pathDialogKind(EditorState::PathDialog::Open).title),
               pathDialogKind(EditorState::PathDialog::SaveAs).title);
+
+    // Issue 23: a save's new name used to filter the folder's listing away as it was typed.
+    EXPECT_EQ(names(listForDialog(folder + "brand new.json", EditorState::PathDialog::SaveAs)),
+              (std::vector<std::string>{"golden-folder/", "gold.json"}));
+    EXPECT_EQ(names(listForDialog(folder + "shot", EditorState::PathDialog::ExportComparison)),
+              (std::vector<std::string>{"golden-folder/", "Golden.png"}));
+    EXPECT_EQ(names(listForDialog(folder + "brand new", EditorState::PathDialog::Open)), std::vector<std::string>{});
 
     std::string typed = (dir_ / "golden-folder").string();
     EXPECT_TRUE(enterFolder(&typed));
@@ -771,6 +876,12 @@ TEST(PanelLayout, TheViewportKeepsItsMinimumSize) {
     // With room to spare, the sizes asked for; at scale 2, twice them.
     EXPECT_FLOAT_EQ(placePanels(wanted, 1920, 1060, 20, 1.0f).material.width, wanted.leftWidth);
     EXPECT_FLOAT_EQ(placePanels(wanted, 3840, 2120, 40, 2.0f).material.width, 2.0f * wanted.leftWidth);
+    // The lobe hidden (View menu): the viewport takes the whole column.
+    PanelLayout noLobe;
+    noLobe.showLobe = false;
+    const PanelPlacement at = placePanels(noLobe, 1280, 700, 20, 1.0f);
+    EXPECT_FLOAT_EQ(at.viewport.height, 700.0f);
+    EXPECT_FLOAT_EQ(at.lobe.height, 0.0f);
 }
 
 TEST(UiScale, IsTheMonitorsTimesTheSetting) {
@@ -863,6 +974,86 @@ TEST_F(EditorStateTest, AnEnvironmentKeepsTheNameItWasGivenAndNotesReplacedPixel
     ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     EXPECT_NE(state.status.find("were NaN, infinite or negative"), std::string::npos) << state.status;
     EXPECT_TRUE(state.error.empty()) << state.error;
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// Issue 23: presets could not be renamed, deleted or searched. A rename renames the file and
+// the material in it; a name taken, a bad name or a folder that cannot be written is said in
+// words and changes nothing; a deletion keeps the file as .bak; the search matches any case.
+TEST_F(EditorStateTest, PresetsAreRenamedDeletedAndSearched) {
+    EXPECT_TRUE(presetMatches("", "anything", "x.json"));
+    EXPECT_TRUE(presetMatches("GOL", "warm gold", "a.json"));
+    EXPECT_TRUE(presetMatches("clay", "terracotta", dir_ / "clay-2.json")) << "the file's name counts too";
+    EXPECT_FALSE(presetMatches("steel", "warm gold", "a.json"));
+
+    const fs::path copper = writeMaterial("copper", 0.3f);
+    writeMaterial("brick", 0.9f);
+    std::vector<std::string> warnings;
+    const fs::path renamed = renamePreset(copper, "old copper");
+    EXPECT_EQ(renamed, dir_ / "old copper.json");
+    EXPECT_FALSE(fs::exists(copper));
+    EXPECT_EQ(loadMaterialFile(renamed, warnings).name, "old copper") << "the caption follows";
+    EXPECT_EQ(loadMaterialFile(renamed, warnings).roughness, 0.3f);
+    auto refused = [&](const std::string& name) {
+        try {
+            renamePreset(renamed, name);
+        } catch (const std::exception& error) {
+            return std::string(error.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(refused("brick").find("already there"), std::string::npos) << refused("brick");
+    EXPECT_NE(refused("a/b").find("cannot be a file's name"), std::string::npos);
+    EXPECT_NE(refused("").find("cannot be a file's name"), std::string::npos);
+    EXPECT_NE(refused(std::string(300, 'x')).find("the name is too long"), std::string::npos)
+        << refused(std::string(300, 'x'));
+    EXPECT_TRUE(fs::exists(renamed)) << "a refused rename changes nothing";
+    EXPECT_EQ(loadMaterialFile(dir_ / "brick.json", warnings).name, "brick");
+
+    deletePreset(renamed);
+    EXPECT_FALSE(fs::exists(renamed));
+    EXPECT_TRUE(fs::exists(dir_ / "old copper.json.bak"));
+    try {
+        deletePreset(renamed);
+        ADD_FAILURE() << "a preset already gone";
+    } catch (const std::exception& error) {
+        EXPECT_NE(std::string(error.what()).find("Could not delete old copper.json"), std::string::npos)
+            << error.what();
+    }
+}
+
+// The prompts' actions on the editor: a failure stays in the prompt, saying why; a preset saved
+// as the document's file takes the document along when renamed, and leaves it without a file
+// when deleted.
+TEST_F(EditorStateTest, RenamingTheDocumentsPresetTakesTheDocumentAlong) {
+    state.presetFolders = {dir_};
+    state.userPresetFolder = dir_;
+    ASSERT_TRUE(saveAsPreset(state, dir_ / "clay.json"));
+    writeMaterial("brick", 0.9f);
+    state.presets.renaming = dir_ / "clay.json";
+    state.presets.newName = "brick";
+    confirmPresetRename(state);
+    EXPECT_NE(state.presets.problem.find("already there"), std::string::npos);
+    EXPECT_EQ(state.presets.renaming, dir_ / "clay.json") << "the prompt stays";
+    state.presets.newName = " warm clay ";
+    confirmPresetRename(state);
+    EXPECT_TRUE(state.presets.renaming.empty());
+    EXPECT_TRUE(state.presets.problem.empty());
+    EXPECT_EQ(state.materialPath, dir_ / "warm clay.json");
+    EXPECT_EQ(state.scene.material.name, "warm clay");
+    EXPECT_FALSE(state.dirty()) << "the document is its file, renamed";
+    EXPECT_EQ(state.status, "Renamed the preset clay to warm clay");
+
+    state.presets.deleting = dir_ / "warm clay.json";
+    confirmPresetDelete(state);
+    EXPECT_TRUE(state.presets.deleting.empty());
+    EXPECT_TRUE(state.materialPath.empty()) << "its file is gone";
+    EXPECT_NE(state.status.find("warm clay.json.bak"), std::string::npos) << state.status;
 }
 
 }  // namespace

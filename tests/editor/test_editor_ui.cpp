@@ -970,5 +970,224 @@ TEST_F(EditorUi, DraggingATubesGizmosMovesItsEndsOrTheWholeTube) {
     EXPECT_EQ(state_.scene.lights[0].start, tube.start);
 }
 
+// Issue 23: a window shrunk to 300 x 200 for a moment used to keep the panels at the sizes it
+// squeezed them to (the lobe 44 pixels high, saved so). The sizes the user dragged to come
+// back when there is room; only a drag of a panel's edge changes them.
+TEST_F(EditorUi, PanelsGrowBackAfterTheWindowShrinksAndOnlyADragResizesThem) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.BackendFlags |= ImGuiBackendFlags_HasMouseCursors;   // as GLFW's backend: edges resize
+    io.ConfigWindowsResizeFromEdges = true;   // ImGui turned it off without that flag
+    const PanelLayout wanted = state_.layout;
+    io.DisplaySize = ImVec2(300, 200);
+    frames(3);
+    io.DisplaySize = ImVec2(1280, 800);
+    frames(3);
+    EXPECT_EQ(state_.layout.leftWidth, wanted.leftWidth);
+    EXPECT_EQ(state_.layout.rightWidth, wanted.rightWidth);
+    EXPECT_EQ(state_.layout.lobeHeight, wanted.lobeHeight);
+    const ImGuiWindow* lobe = ImGui::FindWindowByName("Lobe");
+    ASSERT_NE(lobe, nullptr);
+    EXPECT_FLOAT_EQ(lobe->Size.y, wanted.lobeHeight);
+
+    // The material panel's right edge, dragged 60 pixels right: the new width is kept.
+    const ImGuiWindow* material = ImGui::FindWindowByName("Material");
+    ASSERT_NE(material, nullptr);
+    const float edge = material->Pos.x + material->Size.x;
+    drag(ImVec2(edge - 1.0f, 400.0f), ImVec2(edge + 59.0f, 400.0f));
+    EXPECT_NEAR(state_.layout.leftWidth, wanted.leftWidth + 60.0f, 2.0f);
+}
+
+// Issue 23: the lobe took a third of the centre column at 1280 x 720 and could not be hidden.
+// View > Lobe panel hides it and the viewport takes the room.
+TEST_F(EditorUi, TheLobePanelCanBeHiddenFromTheViewMenu) {
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const float height = max.y - min.y;
+    EXPECT_TRUE(itemsOfLastFrame().contains("lobe"));
+    click(centreOf("menu:View"));
+    click(centreOf("Lobe panel"));
+    EXPECT_FALSE(state_.layout.showLobe);
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().contains("lobe"));
+    EXPECT_EQ(ImGui::FindWindowByName("Lobe")->Active, false);
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    EXPECT_GT(max.y - min.y, height + 200.0f);
+    click(centreOf("menu:View"));
+    click(centreOf("Lobe panel"));
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("lobe"));
+}
+
+// Issue 23: Split was labelled only "A" and "B", Side by side not at all. Both name the
+// materials, in the viewport and in a Split screenshot (Side by side's is captioned).
+TEST_F(EditorUi, BothComparisonViewsNameTheirMaterials) {
+    state_.scene.material.name = "terracotta";
+    click(centreOf("Set A"));
+    state_.scene.material.name = "blue glaze";
+    for (const char* view : {"Split", "Side by side"}) {
+        click(centreOf(view));
+        frames(1);
+        const auto items = itemsOfLastFrame();
+        ASSERT_TRUE(items.contains("label A")) << view;
+        ASSERT_TRUE(items.contains("label B")) << view;
+        EXPECT_NE(items.at("label A").tooltip.find("A: terracotta"), std::string::npos) << view;
+        EXPECT_NE(items.at("label B").tooltip.find("B: blue glaze"), std::string::npos) << view;
+        ImVec2 min, max;
+        ASSERT_TRUE(itemRect("viewport", &min, &max));
+        EXPECT_LT(items.at("label A").max.x, items.at("label B").min.x) << view << ": A left of B";
+        EXPECT_GE(items.at("label A").min.x, min.x) << view;
+        EXPECT_LE(items.at("label B").max.x, max.x) << view;
+    }
+    click(centreOf("Single"));
+    frames(1);
+    EXPECT_FALSE(itemsOfLastFrame().contains("label A"));
+
+    // A Split screenshot's labels are as wide as the names, not a letter each.
+    state_.compareView = CompareView::Split;
+    const LdrImage split = services_->shownImage(state_, 600, 400);
+    const int scale = captionScale(600);
+    int rightmost = 0;
+    for (int y = 24; y < 24 + kGlyphHeight * scale; ++y) {
+        for (int x = 0; x < 300; ++x) {
+            const size_t at = (size_t(y) * 600 + size_t(x)) * 4;
+            if (split.rgba[at] == kCaptionColour.r && split.rgba[at + 1] == kCaptionColour.g &&
+                split.rgba[at + 2] == kCaptionColour.b) {
+                rightmost = std::max(rightmost, x);
+            }
+        }
+    }
+    EXPECT_GE(rightmost, 8 + textWidth("A: terracott", scale)) << "A's label names it";
+}
+
+// Issue 23: the exposure slider was 110 pixels for 16 stops, so 60 pixels moved 8 EV. A drag
+// moves it in fine steps (0.02 EV a pixel), one undo step a drag.
+TEST_F(EditorUi, ExposureDragsInFineSteps) {
+    const ImVec2 from = centreOf("Exposure");
+    drag(from, ImVec2(from.x + 60.0f, from.y));
+    EXPECT_GT(state_.scene.display.exposure, 0.5f);
+    EXPECT_LT(state_.scene.display.exposure, 2.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.display.exposure, 0.0f);
+}
+
+// Issue 23: Escape did not close the F1 help; it does, as any help window.
+TEST_F(EditorUi, EscapeClosesTheShortcuts) {
+    press(kKeyF1);
+    ASSERT_TRUE(state_.showShortcuts);
+    EXPECT_TRUE(itemsOfLastFrame().contains("shortcuts"));
+    press(kKeyEscape);
+    EXPECT_FALSE(state_.showShortcuts);
+    EXPECT_FALSE(itemsOfLastFrame().contains("shortcuts"));
+}
+
+// Issue 23: a new tube light appeared above the view, and a directional light's handle could
+// be dragged out of the viewport, out of reach. New lights start in view, wherever the camera
+// looks from, and a handle dragged past the picture's edge stays on it.
+TEST_F(EditorUi, NewLightsStartInViewAndHandlesStayOnThePicture) {
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    auto inView = [&](const std::string& name) {
+        const auto items = itemsOfLastFrame();
+        const auto it = items.find(name);
+        return it != items.end() && it->second.min.x >= min.x && it->second.min.y >= min.y &&
+               it->second.max.x <= max.x && it->second.max.y <= max.y;
+    };
+    click(centreOf("Add tube"));
+    const std::string tube = "gizmo:" + std::to_string(state_.scene.lights.size() - 1);
+    EXPECT_TRUE(inView(tube)) << "the tube's middle";
+    EXPECT_TRUE(inView(tube + " start"));
+    EXPECT_TRUE(inView(tube + " end"));
+
+    // The camera orbited far round: a new point light is in view all the same.
+    orbitCamera(state_.scene.camera, 2.5f, 0.6f);
+    click(centreOf("Add point"));
+    EXPECT_TRUE(inView("gizmo:" + std::to_string(state_.scene.lights.size() - 1)));
+
+    click(centreOf("Add directional"));
+    const std::string arrow = "gizmo:" + std::to_string(state_.scene.lights.size() - 1);
+    ASSERT_TRUE(inView(arrow));
+    for (const ImVec2 away : {ImVec2(min.x - 400.0f, min.y - 300.0f), ImVec2(max.x + 300.0f, (min.y + max.y) / 2)}) {
+        const Camera camera = state_.scene.camera;
+        const glm::vec3 direction = state_.scene.lights.back().direction;
+        drag(centreOf(arrow), away);
+        EXPECT_EQ(state_.scene.camera, camera) << "the handle was held, not the view";
+        EXPECT_NE(state_.scene.lights.back().direction, direction);
+        EXPECT_TRUE(inView(arrow)) << "the handle is still on the picture";
+    }
+    // A point light's dot, dragged below the picture, stays on it too.
+    const std::string dot = "gizmo:" + std::to_string(state_.scene.lights.size() - 2);
+    drag(centreOf(dot), ImVec2(centreOf(dot).x, max.y + 200.0f));
+    EXPECT_TRUE(inView(dot));
+}
+
+// Issue 23: presets could not be searched, renamed or deleted. The search box narrows the
+// browser; a right-click on one of the user's presets renames it (a taken name is said in the
+// prompt, which stays) or deletes it after asking.
+TEST_F(EditorUi, PresetsAreSearchedRenamedAndDeletedFromTheBrowser) {
+    state_.userPresetFolder = dir_ / "presets";
+    state_.presetFolders = {state_.userPresetFolder};
+    std::filesystem::create_directories(state_.userPresetFolder);
+    for (const char* name : {"copper", "brick", "gold"}) {
+        Material material;
+        material.name = name;
+        saveMaterialFile(state_.userPresetFolder / (std::string(name) + ".json"), material);
+    }
+    frames(2);
+    ImGuiIO& io = ImGui::GetIO();
+    auto type = [&](const std::string& text) {
+        for (char c : text) {
+            io.AddInputCharacter(static_cast<unsigned>(c));
+        }
+        frames(2);
+    };
+    click(centreOf("preset search"));
+    type("OP");
+    EXPECT_EQ(state_.presets.filter, "OP");
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:copper"));
+    EXPECT_FALSE(itemsOfLastFrame().contains("preset:brick"));
+    click(centreOf("viewport"));   // the field lets go of the keys, and then it is emptied
+    state_.presets.filter.clear();
+    frames(2);
+    ASSERT_TRUE(itemsOfLastFrame().contains("preset:brick"));
+
+    auto rightClick = [&](const std::string& item) {
+        io.MousePos = centreOf(item);
+        frames(1);
+        io.MouseDown[1] = true;
+        frames(1);
+        io.MouseDown[1] = false;
+        frames(2);
+    };
+    rightClick("preset:copper");
+    click(centreOf("preset:rename"));
+    ASSERT_EQ(state_.presets.renaming, state_.userPresetFolder / "copper.json");
+    io.KeyMap[ImGuiKey_A] = 'A';
+    io.KeyCtrl = io.KeysDown[int('A')] = true;   // the field has the keys: Ctrl+A, then the name
+    frames(1);
+    io.KeyCtrl = io.KeysDown[int('A')] = false;
+    type("brick");
+    click(centreOf("preset prompt:confirm"));
+    EXPECT_NE(state_.presets.problem.find("already there"), std::string::npos) << state_.presets.problem;
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:new name")) << "the prompt stays, saying why";
+    state_.presets.newName = "old penny";
+    click(centreOf("preset prompt:confirm"));
+    EXPECT_TRUE(state_.presets.renaming.empty()) << state_.presets.problem;
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("preset:old penny"));
+    EXPECT_FALSE(std::filesystem::exists(state_.userPresetFolder / "copper.json"));
+
+    rightClick("preset:brick");
+    click(centreOf("preset:delete"));
+    click(centreOf("preset prompt:cancel"));
+    EXPECT_TRUE(std::filesystem::exists(state_.userPresetFolder / "brick.json")) << "Cancel deletes nothing";
+    rightClick("preset:brick");
+    click(centreOf("preset:delete"));
+    click(centreOf("preset prompt:confirm"));
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().contains("preset:brick"));
+    EXPECT_TRUE(std::filesystem::exists(state_.userPresetFolder / "brick.json.bak"));
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+}
+
 }  // namespace
 }  // namespace patina::editor

@@ -449,6 +449,28 @@ TEST_F(EditorWindow, AMissingFileOpensTheEditorWithItsError) {
     EXPECT_NE(readText(dir_ / "stats.log").find("missing-material.json: no such file"), std::string::npos);
 }
 
+// Issue 23: the window shrunk to 300 x 200 and grown back used to leave the lobe 44 pixels
+// high, and saved so. The panels grow back to their sizes, which are what settings.json keeps.
+TEST_F(EditorWindow, PanelsGrowBackAfterTheWindowShrinks) {
+    ASSERT_TRUE(waitFor([&] { return rect("lobe").size() == 4; }, 10s));
+    const std::vector<float> before = rect("lobe");
+    const std::string geometry = xdotool("getwindowgeometry " + window_);
+    int width = 0, height = 0;
+    ASSERT_EQ(std::sscanf(geometry.c_str() + geometry.find("Geometry: "), "Geometry: %dx%d", &width, &height), 2);
+    xdotool("windowsize --sync " + window_ + " 300 200");
+    std::this_thread::sleep_for(1500ms);   // long enough for the settings to be written
+    xdotool("windowsize --sync " + window_ + " " + std::to_string(width) + " " + std::to_string(height));
+    ASSERT_TRUE(waitFor([&] { return rect("lobe") == before; }, 10s))
+        << "the lobe plot is " << rect("lobe")[3] - rect("lobe")[1] << " pixels high, was " << before[3] - before[1];
+    const fs::path settings = dir_ / "config" / "patina" / "settings.json";
+    auto saved = [&] { return fs::exists(settings) ? readJsonFile(settings) : Json::object(); };
+    ASSERT_TRUE(waitFor([&] { return saved().value("windowWidth", 0) == width; }, 5s)) << "the size grown back";
+    const Json file = saved();
+    EXPECT_EQ(file["lobePanelHeight"].get<float>(), 260.0f);
+    EXPECT_EQ(file["leftPanelWidth"].get<float>(), 330.0f);
+    EXPECT_EQ(file["rightPanelWidth"].get<float>(), 340.0f);
+}
+
 TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {
     std::this_thread::sleep_for(2s);   // let start-up work and the first frames finish
     const long start = cpuTicks(editor_->pid());
