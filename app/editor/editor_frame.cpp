@@ -98,6 +98,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     finishEnvironmentLoad(state);
     services.environmentShading = state.environmentShading;
     resolveEnvironmentShown(state);
+    drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
     // keys, within the frames drawn after the key press.

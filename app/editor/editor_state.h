@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,9 @@ struct EditorState {
     std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
     int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
     std::filesystem::path lastScreenshot;               // its folder can be opened from the status
+    // F12's size, taken at the start of the next frame: the frame asking shows "Rendering..."
+    // first, as a large screenshot keeps the window waiting for seconds.
+    std::optional<std::pair<int, int>> screenshotRequested;
     std::string folderOpener = "xdg-open";              // what shows a folder (open_folder.h)
 
     Autosave autosave;                       // crash recovery (autosave.h)

@@ -47,10 +47,11 @@ void save(EditorState& state) {
     }
 }
 
-void screenshot(EditorState& state, EditorServices& services) {
-    const int width = state.screenshotWidth > 0 ? state.screenshotWidth : services.viewportWidth;
-    const int height = state.screenshotHeight > 0 ? state.screenshotHeight : services.viewportHeight;
-    services.screenshot(state, std::max(width, 1), std::max(height, 1));
+void screenshot(EditorState& state, const EditorServices& services) {
+    const int width = std::max(state.screenshotWidth > 0 ? state.screenshotWidth : services.viewportWidth, 1);
+    const int height = std::max(state.screenshotHeight > 0 ? state.screenshotHeight : services.viewportHeight, 1);
+    state.screenshotRequested = {width, height};
+    state.status = "Rendering the " + std::to_string(width) + " x " + std::to_string(height) + " screenshot...";
 }
 
 void openScreenshotFolder(EditorState& state) {
@@ -67,6 +68,13 @@ void saveAsPresetDialog(EditorState& state) {
 }
 
 }  // namespace
+
+void takeRequestedScreenshot(EditorState& state, EditorServices& services) {
+    if (const auto size = state.screenshotRequested) {
+        state.screenshotRequested.reset();   // once, even when it fails
+        services.screenshot(state, size->first, size->second);
+    }
+}
 
 void drawMenuBar(EditorState& state, EditorServices& services) {
     if (!ImGui::BeginMainMenuBar()) {

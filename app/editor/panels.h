@@ -12,6 +12,8 @@ void drawLobePanel(EditorState& state);
 void drawAccuracyPanel(EditorState& state, EditorServices& services);
 void drawPresetsPanel(EditorState& state, EditorServices& services);
 void drawMenuBar(EditorState& state, EditorServices& services);
+// Writes the screenshot F12 asked for in the frame before (EditorState::screenshotRequested).
+void takeRequestedScreenshot(EditorState& state, EditorServices& services);
 void drawDialogs(EditorState& state, EditorServices& services);
 void handleShortcuts(EditorState& state, EditorServices& services);
 

@@ -158,6 +158,22 @@ TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     EXPECT_EQ(state_.scene.lights.size(), before);
 }
 
+// A large screenshot keeps the window waiting for seconds (16384 x 16384: about 40 s here):
+// the frame F12 is pressed in says so, and the render starts with the next frame.
+TEST_F(EditorUi, F12SaysItIsRenderingBeforeTheWindowWaits) {
+    state_.screenshotWidth = 96;
+    state_.screenshotHeight = 64;
+    services_->keyPresses = {{kKeyF12, false, false}};
+    frames(1);
+    services_->keyPresses.clear();
+    EXPECT_EQ(state_.status, "Rendering the 96 x 64 screenshot...");
+    EXPECT_TRUE(std::filesystem::is_empty(dir_)) << "nothing is written before the message is shown";
+    frames(1);
+    EXPECT_FALSE(std::filesystem::is_empty(dir_)) << state_.error;
+    EXPECT_EQ(state_.status.rfind("Screenshot saved", 0), 0u) << state_.status;
+    EXPECT_FALSE(state_.screenshotRequested.has_value());
+}
+
 TEST_F(EditorUi, ScreenshotEmbedsTheSceneAndReopensIt) {
     state_.scene.material.name = "round trip";
     state_.scene.material.roughness = 0.123456f;
@@ -315,8 +331,9 @@ std::vector<std::filesystem::path> pngsIn(const std::filesystem::path& folder) {
 
 class EditorScreenshots : public EditorUi {
 protected:
-    // F12 handled in one frame: the textures that frame draws must be those of the frame before,
-    // alive and of the same size (the window's GL backend draws them after the frame's code ran).
+    // F12 taken in the frame after the key (which says "Rendering..."): the textures that frame
+    // draws must be those of the frame before, alive and of the same size (the window's GL
+    // backend draws them after the frame's code ran).
     void expectF12KeepsTheFramesTextures(const std::string& what) {
         frames(2);
         const auto before = drawnTextures();
@@ -325,6 +342,7 @@ protected:
         services_->keyPresses = {{kKeyF12, false, false}};
         frames(1);
         services_->keyPresses.clear();
+        frames(1);
         EXPECT_EQ(drawnTextures(), before) << what;
         ASSERT_EQ(pngsIn(dir_).size(), shots + 1) << what << ": " << state_.error;
         EXPECT_TRUE(state_.error.empty()) << what << ": " << state_.error;
