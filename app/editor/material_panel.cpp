@@ -84,8 +84,10 @@ void drawMaterialPanel(EditorState& state) {
     const Material& file = state.savedMaterial;   // as opened or last saved
     inputString("Name", &material.name);
     recordItem("Material name", "The material's name, saved in its file and shown in captions");
-    ImGui::SetNextItemWidth(widthBesideReset("Base colour sRGB"));   // colorEditLinear's label
-    colorEditLinear("Base colour", "The colour of diffuse light, or of the reflection for a metal (click the swatch to pick)",
+    // The label above: beside the field it left the three numbers too little room to be read.
+    ImGui::TextUnformatted("Base colour (sRGB)");
+    ImGui::SetNextItemWidth(widthBesideReset(""));
+    colorEditLinear("##Base colour", "The colour of diffuse light, or of the reflection for a metal (click the swatch to pick)",
                     &material.baseColor);
     ImGui::SameLine();
     resetButton("Base colour", &material.baseColor, file.baseColor, defaults.baseColor);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <string_view>
 #include <vector>
 
 #include <imgui_internal.h>
@@ -65,11 +66,14 @@ bool colorEditLinear(const char* label, const char* tooltip, glm::vec3* linear, 
     // 0.7991) without any edit: that is no change, and must not dirty the file or make a step.
     // The numbers are sRGB, as captions and screenshots show them: said beside them (the ID
     // stays the bare label), and in the tooltip with what files hold.
+    // A label "##NAME" is drawn by the caller (above a narrow field); the item is NAME.
+    const bool labelAbove = std::string_view(label).starts_with("##");
+    const std::string_view name = labelAbove ? label + 2 : label;
     const bool numbers = (flags & ImGuiColorEditFlags_NoInputs) == 0;
-    const std::string shown = numbers ? std::string(label) + " sRGB###" + label : std::string(label);
+    const std::string shown = numbers && !labelAbove ? std::string(label) + " sRGB###" + label : std::string(label);
     const bool changed = ImGui::ColorEdit3(shown.c_str(), color, ImGuiColorEditFlags_Float | flags) &&
                          !onlyQuantised(srgb, glm::vec3(color[0], color[1], color[2]));
-    recordItem(label, (std::string(tooltip) + " (shown in sRGB; files store linear values)").c_str());
+    recordItem(std::string(name), (std::string(tooltip) + " (shown in sRGB; files store linear values)").c_str());
     if (changed) {
         *linear = glm::clamp(toLinear(glm::vec3(color[0], color[1], color[2])), 0.0f, 1.0f) * peak;
     }

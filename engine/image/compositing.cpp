@@ -178,15 +178,24 @@ Rgb8 heatColour(int difference) {
 }
 
 std::string materialCaption(const Material& material, int panelWidth) {
-    char numbers[96];
     // The base colour as the editor's field shows it: sRGB, and named so (files hold linear).
     const glm::vec3 base = shader::srgbColor(material.baseColor);
-    std::snprintf(numbers, sizeof numbers, "  r %.2f s %.2f m %.2f  base sRGB %.2f %.2f %.2f",
-                  double(material.roughness), double(material.specular), double(material.metallic),
-                  double(base.r), double(base.g), double(base.b));
+    char full[96], parameters[48];
+    std::snprintf(parameters, sizeof parameters, "  r %.2f s %.2f m %.2f", double(material.roughness),
+                  double(material.specular), double(material.metallic));
+    std::snprintf(full, sizeof full, "%s  base sRGB %.2f %.2f %.2f", parameters, double(base.r), double(base.g),
+                  double(base.b));
     const int scale = captionScale(panelWidth);
-    const int room = panelWidth - 2 * kCaptionPadding * scale - textWidth(numbers, scale);
-    return fitText(material.name, std::max(room, textWidth("...", scale)), scale) + numbers;
+    const int width = panelWidth - 2 * kCaptionPadding * scale;
+    // The name comes first: the base colour, then the parameters, give way before the name is
+    // cut below a dozen characters (a side-by-side half is too narrow for all of it).
+    const int nameRoom = std::min(textWidth(material.name, scale), textWidth("MMMMMMMMMMMM", scale));
+    for (const char* numbers : {full, parameters}) {
+        if (const int room = width - textWidth(numbers, scale); room >= nameRoom) {
+            return fitText(material.name, room, scale) + numbers;
+        }
+    }
+    return fitText(material.name, std::max(width, textWidth("...", scale)), scale);
 }
 
 }  // namespace patina

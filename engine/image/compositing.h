@@ -60,8 +60,9 @@ private:
     LdrImage sheet_;
     size_t added_ = 0;
 };
-// "name  r 0.30 s 0.50 m 1.00  base sRGB 1.00 0.86 0.60": the name cut with "..." so that the
-// numbers always fit the caption of a panel this wide.
+// "name  r 0.30 s 0.50 m 1.00  base sRGB 1.00 0.86 0.60" in a caption of a panel this wide:
+// where the name would be cut below a dozen characters, the base colour is left out, then the
+// parameters; a name longer still is cut with "...".
 std::string materialCaption(const Material& material, int panelWidth);
 
 // a and b next to each other, captioned: a two-column contact sheet.

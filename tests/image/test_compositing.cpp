@@ -118,6 +118,21 @@ TEST(Compositing, ACaptionShowsTheBaseColourInSrgbAndNamesIt) {
     EXPECT_EQ(materialCaption(gold, 1000), "gold  r 0.30 s 0.50 m 1.00  base sRGB 1.00 0.86 0.60");
 }
 
+// A side-by-side half is narrow: the name is what tells A from B, so numbers give way first.
+TEST(Compositing, ANarrowCaptionKeepsTheNameBeforeTheNumbers) {
+    Material material;
+    material.name = "A: terracotta";
+    const std::string full = materialCaption(material, 1000);
+    EXPECT_EQ(full.rfind("A: terracotta  r 0.40 s 0.50 m 0.00  base sRGB", 0), 0u) << full;
+    const int withoutBase = textWidth("A: terracotta  r 0.40 s 0.50 m 0.00", 1) + 2 * kCaptionPadding;
+    EXPECT_EQ(materialCaption(material, withoutBase), "A: terracotta  r 0.40 s 0.50 m 0.00");
+    EXPECT_EQ(materialCaption(material, withoutBase - 30), "A: terracotta");
+    material.name = std::string(40, 'W');
+    const std::string cut = materialCaption(material, 200);
+    EXPECT_EQ(cut.substr(cut.size() - 3), "...");
+    EXPECT_LE(textWidth(cut, 1), 200 - 2 * kCaptionPadding);
+}
+
 TEST(Compositing, LaysOutCellsWithCaptionStrips) {
     const SheetLayout layout = sheetLayout(50, 40, 3, 2);
     EXPECT_EQ(layout.columns, 2);
