@@ -1,7 +1,5 @@
 #include "scene/scene.h"
 
-#include <stdexcept>
-
 #include "common/enum_names.h"
 #include "shading/shading.h"
 
@@ -81,13 +79,6 @@ Scene defaultScene() {
 
     scene.lights = {key, fill, studio, sky};
     return scene;
-}
-
-std::shared_ptr<const Mesh> meshShown(const Scene& scene) {
-    if (!scene.resolvedMesh && !scene.meshFile.empty()) {
-        throw std::invalid_argument("the scene's mesh " + scene.meshFile + " was never loaded (resolveMesh)");
-    }
-    return scene.resolvedMesh ? scene.resolvedMesh : builtinMesh(scene.mesh);
 }
 
 }  // namespace patina
