@@ -6,7 +6,7 @@
 
 #include "bench/bench.h"
 #include "bench/lighting_accuracy.h"
-#include "image/environment_source.h"
+#include "assets/asset_cache.h"
 #include "cli.h"
 #include "accuracy/furnace.h"
 #include "gl/headless_context.h"
@@ -106,14 +106,13 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
         }
     }
     std::vector<NamedEnvironment> environments;
+    AssetCache assets;
     for (const std::string& source : sources) {
         std::vector<std::string> warnings;
         const std::string absolute =
             source.starts_with("builtin:") ? source : std::filesystem::absolute(source).lexically_normal().string();
-        std::shared_ptr<const Environment> environment = loadEnvironment(absolute, warnings);
-        for (const std::string& warning : warnings) {
-            std::cerr << "warning: " << warning << "\n";
-        }
+        std::shared_ptr<const Environment> environment = assets.environment(absolute, warnings);
+        printWarnings(warnings);
         const std::string name =
             source.starts_with("builtin:") ? source.substr(8) : std::filesystem::path(source).stem().string();
         environments.push_back({name, std::move(environment)});

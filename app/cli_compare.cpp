@@ -29,9 +29,11 @@ Command addCompareCommand(CLI::App& app) {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
         const Scene scene = inputs.load();
+        AssetCache assets;
+        const PreparedScene prepared = SceneInputs::prepare(scene, assets);
         const std::vector<Material> materials = loadMaterials({options->a, options->b});
         std::vector<LdrImage> panels =
-            renderMaterials(scene, materials, options->width, options->height);
+            renderMaterials(prepared, materials, options->width, options->height);
         std::vector<std::string> captions{materialCaption(materials[0], options->width),
                                           materialCaption(materials[1], options->width)};
         if (options->diff) {

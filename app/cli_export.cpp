@@ -2,7 +2,7 @@
 
 #include "cli.h"
 #include "gltf/export.h"
-#include "gltf/import.h"
+#include "io/file_kinds.h"
 #include "io/input_error.h"
 #include "inputs.h"
 
@@ -28,10 +28,17 @@ Command addExportCommand(CLI::App& app) {
     command->add_flag("--bin", options->binFile, "With .gltf: the buffer in F.bin beside it, not a data: URI");
     return [options] {
         const Material material = options->inputs.load().material;
-        const auto kind = meshKindFromName(options->mesh);
-        const Mesh mesh = kind ? makeMesh(*kind) : importGltf(options->mesh).mesh;
+        // The triangles as every command loads them: a built-in's, or the glTF file's.
+        Scene source;
+        if (const auto kind = meshKindFromName(options->mesh)) {
+            source.mesh = *kind;
+        } else {
+            source.meshFile = options->mesh;
+        }
+        AssetCache assets;
+        const std::shared_ptr<const Mesh> mesh = assets.mesh(source);
         try {
-            exportGltf(options->out, mesh, material, options->binFile ? GltfBuffer::BinFile : GltfBuffer::Embedded);
+            exportGltf(options->out, *mesh, material, options->binFile ? GltfBuffer::BinFile : GltfBuffer::Embedded);
         } catch (const InputError&) {
             throw;
         } catch (const std::runtime_error& error) {

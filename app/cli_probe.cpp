@@ -30,18 +30,26 @@ Command addProbeCommand(CLI::App& app) {
         ->check(CLI::Range(1, 1 << 24));
     return [options] {
         const Scene scene = options->inputs.load();
+        // The environment alone: a probe shades given points, never the scene's mesh.
+        AssetCache assets;
+        std::shared_ptr<const Environment> environment;
+        if (const Light* light = enabledEnvironment(scene)) {
+            std::vector<std::string> warnings;
+            environment = assets.environment(light->source, warnings);
+            printWarnings(warnings);
+        }
         const std::vector<ProbeSample> samples =
             parseProbeCsv(readInputText(options->in), options->in);
         std::string csv;
         if (options->backend == "reference") {
             csv = formatReferenceCsv(
-                probeReference(scene.material, scene.lights, samples, scene.resolvedEnvironment, options->samples));
+                probeReference(scene.material, scene.lights, samples, environment, options->samples));
         } else if (options->backend == "cpu") {
-            csv = formatRadianceCsv(probeOnCpu(scene.material, scene.lights, samples, scene.resolvedEnvironment));
+            csv = formatRadianceCsv(probeOnCpu(scene.material, scene.lights, samples, environment));
         } else {
             HeadlessContext context;
             GpuProbe probe;
-            csv = formatRadianceCsv(probe.evaluate(scene.material, scene.lights, samples, scene.resolvedEnvironment));
+            csv = formatRadianceCsv(probe.evaluate(scene.material, scene.lights, samples, environment));
         }
         writeOutput(options->out, std::vector<uint8_t>(csv.begin(), csv.end()));
     };

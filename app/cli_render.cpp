@@ -13,7 +13,6 @@
 #include "image/display_image.h"
 #include "image/image.h"
 #include "inputs.h"
-#include "gltf/scene_mesh.h"
 #include "reference/reference_render.h"
 
 namespace patina::cli {
@@ -27,8 +26,9 @@ extern "C" void stopAfterThisPass(int) {
 
 // The ground truth through pixel centres, pass by pass (reference/reference_render.h), with the
 // progress on stderr; stoppable with Ctrl+C.
-RenderOutput renderReferenceImage(const Scene& scene, int width, int height, int samples) {
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, width, height);
+RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int height, int samples) {
+    const Scene& scene = prepared.scene;
+    const PixelSurfaces surfaces = rasterizeSurfaces(*prepared.mesh, scene.camera, width, height);
     ReferenceRenderOptions options;
     options.samplesPerPixel = samples;
     options.samplesPerPass = std::min(samples, 16);
@@ -36,7 +36,7 @@ RenderOutput renderReferenceImage(const Scene& scene, int width, int height, int
     const bool terminal = isatty(STDERR_FILENO) != 0;
     interrupted = false;
     auto* previous = std::signal(SIGINT, stopAfterThisPass);
-    const ReferenceImage image = renderReference(scene, surfaces, options, [&](const ReferenceImage& partial) {
+    const ReferenceImage image = renderReference(prepared, surfaces, options, [&](const ReferenceImage& partial) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         // One line rewritten on a terminal, a line a pass in a log.
         std::fprintf(stderr, "%sreference: %d of %d samples per pixel, %.1f s%s%s", terminal ? "\r" : "",
@@ -93,11 +93,12 @@ Command addRenderCommand(CLI::App& app) {
         if (!options->reference) {
             context.emplace();
         }
-        Scene scene = options->inputs.load();
-        resolveMesh(scene);
+        const Scene scene = options->inputs.load();
+        AssetCache assets;
+        const PreparedScene prepared = SceneInputs::prepare(scene, assets);
         if (options->reference) {
             const RenderOutput output =
-                renderReferenceImage(scene, options->width, options->height, options->referenceSamples);
+                renderReferenceImage(prepared, options->width, options->height, options->referenceSamples);
             const std::vector<uint8_t> png = encodePng(output.ldr);
             if (!options->hdr.empty()) {
                 writeOutput(options->hdr, encodePfm(output.hdr));
@@ -116,7 +117,7 @@ Command addRenderCommand(CLI::App& app) {
         // multisampled colour, and the linear image read back only when asked for.
         settings.maxTargetBytes = kOneOffTargetBytes;
         settings.readHdr = !options->hdr.empty();
-        const RenderOutput output = renderer.render(scene, settings);
+        const RenderOutput output = renderer.render(prepared, settings);
         // Encode both before writing either, so a failure leaves no output behind.
         const std::vector<uint8_t> png = encodePng(output.ldr);
         const std::vector<uint8_t> pfm = options->hdr.empty() ? std::vector<uint8_t>{} : encodePfm(output.hdr);

@@ -31,6 +31,8 @@ Command addSheetCommand(CLI::App& app) {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
         const Scene scene = inputs.load();
+        AssetCache assets;
+        const PreparedScene prepared = SceneInputs::prepare(scene, assets);
         const std::vector<Material> materials = loadMaterials(options->materials);
         std::vector<std::string> names;
         for (const Material& material : materials) {
@@ -58,7 +60,7 @@ Command addSheetCommand(CLI::App& app) {
                 png.emplace(sheet->image());
             }
         };
-        renderMaterials(scene, materials, options->size, options->size, [&](LdrImage&& cell) {
+        renderMaterials(prepared, materials, options->size, options->size, [&](LdrImage&& cell) {
             take();
             sheet->add(cell);
             png->rowsReady(sheet->finishedRows());

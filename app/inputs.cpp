@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "shading/brdf_models.h"
-#include "image/environment_source.h"
+#include "assets/prepare_scene.h"
 #include "image/image.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
@@ -11,13 +11,11 @@
 
 namespace patina::cli {
 
-namespace {
 void printWarnings(const std::vector<std::string>& warnings) {
     for (const std::string& warning : warnings) {
         std::cerr << "warning: " << warning << "\n";
     }
 }
-}  // namespace
 
 void SceneInputs::addOptions(CLI::App& command, bool withScene) {
     if (withScene) {
@@ -40,9 +38,15 @@ Scene SceneInputs::load() const {
         }
         scene.material.model = *id;
     }
-    resolveEnvironment(scene, warnings);
     printWarnings(warnings);
     return scene;
+}
+
+PreparedScene SceneInputs::prepare(const Scene& scene, AssetCache& assets) {
+    std::vector<std::string> warnings;
+    PreparedScene prepared = prepareScene(scene, assets, warnings);
+    printWarnings(warnings);
+    return prepared;
 }
 
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {

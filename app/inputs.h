@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "assets/asset_cache.h"
+#include "scene/prepared_scene.h"
 #include "scene/scene.h"
 
 namespace patina::cli {
@@ -15,9 +17,16 @@ struct SceneInputs {
 
     void addOptions(CLI::App& command, bool withScene = true);
     // The scene file (or the embedded default) with --material over its material and --model
-    // over the material's model. Warnings go to stderr; errors throw InputError.
+    // over the material's model: the document, nothing it names loaded. Warnings go to stderr;
+    // errors throw InputError.
     Scene load() const;
+    // `scene` with its mesh and environment loaded through `assets` (assets/prepare_scene.h),
+    // for the commands that draw it. Warnings go to stderr; errors throw InputError.
+    static PreparedScene prepare(const Scene& scene, AssetCache& assets);
 };
+
+// "warning: ..." on stderr, one a line.
+void printWarnings(const std::vector<std::string>& warnings);
 
 // Writes the bytes all-or-nothing; an unwritable path is an InputError (exit 3).
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes);

@@ -3,8 +3,6 @@
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
 #include "inputs.h"
-#include "geometry/mesh.h"
-#include "gltf/scene_mesh.h"
 
 namespace patina::cli {
 
@@ -18,13 +16,11 @@ std::vector<Material> loadMaterials(const std::vector<std::string>& paths) {
     return materials;
 }
 
-void renderMaterials(Scene scene, const std::vector<Material>& materials, int width, int height,
+void renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials, int width, int height,
                      const std::function<void(LdrImage&&)>& each) {
     HeadlessContext context;
     Renderer renderer;
-    if (!scene.resolvedMesh) {
-        resolveMesh(scene);   // once for every material
-    }
+    Scene scene = prepared.scene;
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
@@ -33,15 +29,15 @@ void renderMaterials(Scene scene, const std::vector<Material>& materials, int wi
     settings.path = RenderPath::Specialised;
     settings.readHdr = false;
     for (const Material& material : materials) {
-        scene.material = material;
-        each(renderer.render(scene, settings).ldr);
+        scene.material = material;   // the mesh and the environment stay: loaded once for all
+        each(renderer.render({scene, prepared.mesh, prepared.environment}, settings).ldr);
     }
 }
 
-std::vector<LdrImage> renderMaterials(const Scene& scene, const std::vector<Material>& materials,
+std::vector<LdrImage> renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials,
                                       int width, int height) {
     std::vector<LdrImage> images;
-    renderMaterials(scene, materials, width, height, [&](LdrImage&& image) { images.push_back(std::move(image)); });
+    renderMaterials(prepared, materials, width, height, [&](LdrImage&& image) { images.push_back(std::move(image)); });
     return images;
 }
 

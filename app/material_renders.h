@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "image/image.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace patina::cli {
 
@@ -13,11 +13,11 @@ namespace patina::cli {
 // Warnings go to stderr; errors throw InputError.
 std::vector<Material> loadMaterials(const std::vector<std::string>& paths);
 
-// The scene once per material, all with one headless context and one compiled renderer,
-// each image handed to `each` as it is read back.
-void renderMaterials(Scene scene, const std::vector<Material>& materials, int width, int height,
+// The prepared scene once per material, all with one headless context and one compiled
+// renderer, each image handed to `each` as it is read back.
+void renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials, int width, int height,
                      const std::function<void(LdrImage&&)>& each);
-std::vector<LdrImage> renderMaterials(const Scene& scene, const std::vector<Material>& materials,
+std::vector<LdrImage> renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials,
                                       int width, int height);
 
 }  // namespace patina::cli

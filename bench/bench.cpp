@@ -8,6 +8,7 @@
 
 #include <epoxy/gl.h>
 
+#include "assets/prepare_scene.h"
 #include "shading/cpu_shading.h"
 #include "gl/gpu_probe.h"
 #include "gl/renderer.h"
@@ -44,8 +45,9 @@ double gpuCost(Renderer& renderer, BrdfModelId model, int size, int runs) {
     settings.width = settings.height = size;
     settings.samples = 1;
     const Scene lit = workloadScene(model, kBenchLights), unlit = workloadScene(model, 0);
-    const double withLights = medianOf(runs, [&] { return renderer.timedDraw(lit, settings); });
-    const double without = medianOf(runs, [&] { return renderer.timedDraw(unlit, settings); });
+    const std::shared_ptr<const Mesh> sphere = builtinMesh(MeshKind::Sphere);   // no environment: nothing to load
+    const double withLights = medianOf(runs, [&] { return renderer.timedDraw({lit, sphere, nullptr}, settings); });
+    const double without = medianOf(runs, [&] { return renderer.timedDraw({unlit, sphere, nullptr}, settings); });
     return std::max(withLights - without, 0.0) * 1e6 / (double(size) * size * kBenchLights);
 }
 
@@ -109,7 +111,10 @@ BenchResult runBench(const BenchOptions& options) {
     imageSettings.width = imageSettings.height = options.quick ? 128 : 256;
     Scene scene = defaultScene();
     scene.material.model = BrdfModelId::Reference;
-    const HdrImage reference = renderer.render(scene, imageSettings).hdr;
+    AssetCache assets;
+    std::vector<std::string> notes;   // a built-in environment has none
+    const PreparedScene prepared = prepareScene(scene, assets, notes);   // the model changes below, nothing loaded
+    const HdrImage reference = renderer.render(prepared, imageSettings).hdr;
     for (const BrdfModelInfo& model : brdfModels()) {
         BenchRow row;
         row.model = std::string(model.name);
@@ -119,7 +124,7 @@ BenchResult runBench(const BenchOptions& options) {
         row.cpuNsPerEvaluation = cpuCost(model.id, set, runs);
         row.gpuNsPerFragmentLight = gpuCost(renderer, model.id, size, runs);
         scene.material.model = model.id;
-        row.imageRelativeRmse = imageError(renderer.render(scene, imageSettings).hdr, reference);
+        row.imageRelativeRmse = imageError(renderer.render(prepared, imageSettings).hdr, reference);
         result.rows.push_back(row);
     }
     return result;

@@ -33,6 +33,11 @@ std::optional<EnvironmentShading> shadingOf(const std::string& method) {
     return std::nullopt;
 }
 
+// The sphere of sphereUnder's scenes, which are prepared with the environment already made.
+std::shared_ptr<const Mesh> sphereMesh() {
+    return builtinMesh(MeshKind::Sphere);
+}
+
 Scene sphereUnder(const NamedEnvironment& named, float roughness, float metallic) {
     Scene scene;
     scene.material.name = "grid";
@@ -44,7 +49,6 @@ Scene sphereUnder(const NamedEnvironment& named, float roughness, float metallic
     light.name = named.name;
     light.source = named.environment->source;
     scene.lights = {light};
-    scene.resolvedEnvironment = named.environment;
     scene.display.backgroundFromEnvironment = true;
     scene.display.backgroundBlur = 0.5f;
     scene.display.tonemap = Tonemap::PbrNeutral;
@@ -84,10 +88,11 @@ LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& 
     const int runs = quick ? 3 : 9;
     Scene scene = sphereUnder(environments.front(), 0.5f, 1.0f);
     scene.display.backgroundFromEnvironment = false;
+    auto under = [&](const Scene& shown) { return PreparedScene{shown, sphereMesh(), environments.front().environment}; };
     for (const std::string& method : splitSumMethods(quick)) {
         if (const std::optional<EnvironmentShading> shading = shadingOf(method)) {
             settings.environment = *shading;
-            result.costs.push_back({method, *shading, medianOf(runs, [&] { return renderer.timedDraw(scene, settings); })});
+            result.costs.push_back({method, *shading, medianOf(runs, [&] { return renderer.timedDraw(under(scene), settings); })});
         }
     }
     Scene directional = scene;
@@ -95,7 +100,7 @@ LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& 
     sun.type = LightType::Directional;
     directional.lights = {sun};
     settings.environment = {};
-    result.directionalFrameMs = medianOf(runs, [&] { return renderer.timedDraw(directional, settings); });
+    result.directionalFrameMs = medianOf(runs, [&] { return renderer.timedDraw(under(directional), settings); });
     const char* version = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     result.renderer = version ? version : "?";
     return result;
@@ -189,11 +194,12 @@ LdrImage roughnessMetallicGrid(const NamedEnvironment& environment, int cellSize
     for (float metallic : {0.0f, 1.0f}) {
         for (float roughness : roughnesses) {
             const Scene scene = sphereUnder(environment, roughness, metallic);
-            const RenderOutput render = renderer.render(scene, settings);
-            const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, cellSize, cellSize);
+            const PreparedScene prepared{scene, sphereMesh(), environment.environment};
+            const RenderOutput render = renderer.render(prepared, settings);
+            const PixelSurfaces surfaces = rasterizeSurfaces(*prepared.mesh, scene.camera, cellSize, cellSize);
             ReferenceRenderOptions options;
             options.samplesPerPixel = samples;
-            const ReferenceImage reference = renderReference(scene, surfaces, options);
+            const ReferenceImage reference = renderReference(prepared, surfaces, options);
             split.push_back(render.ldr);
             truth.push_back(displayImage(reference.value, scene.display, reference.backdrop));
             LdrImage map{cellSize, cellSize, std::vector<uint8_t>(size_t(cellSize) * size_t(cellSize) * 4, 255)};

@@ -18,7 +18,7 @@
 #include "environment/equirect.h"
 #include "gltf/export.h"
 #include "image/environment_files.h"
-#include "image/environment_source.h"
+#include "assets/prepare_scene.h"
 #include "io/file_bytes.h"
 #include "gltf/import.h"
 #include "geometry/hidden_faces.h"
@@ -51,9 +51,14 @@ struct BenchRenderer : Renderer {
     RenderTarget multi, others;
 };
 
+// The bench's scenes without an environment name no file: their built-in mesh is all they need.
+PreparedScene analyticPrepared(const Scene& scene) {
+    return {scene, builtinMesh(scene.mesh), nullptr};
+}
+
 // One frame, drawn after the pipeline is idle so neither its timer query nor its wall time
 // includes earlier work, then read back as `patina render` does (timed apart).
-void timeFrame(BenchRenderer& renderer, const Scene& scene, const RenderSettings& settings, Samples* into) {
+void timeFrame(BenchRenderer& renderer, const PreparedScene& scene, const RenderSettings& settings, Samples* into) {
     glFinish();
     renderer.lastGpuMilliseconds();   // collect the previous query so this draw is timed
     const Clock::time_point start = Clock::now();
@@ -83,7 +88,7 @@ void interleaved(int runs, Each each) {
 }
 
 // Frames of `scene` under each of `variants`, rounds interleaved: the medians, in order.
-std::vector<FrameTiming> interleavedMedians(BenchRenderer& renderer, const Scene& scene,
+std::vector<FrameTiming> interleavedMedians(BenchRenderer& renderer, const PreparedScene& scene,
                                             const std::vector<RenderSettings>& variants, int runs) {
     std::vector<Samples> samples(variants.size());
     interleaved(runs, [&](bool keep) {
@@ -154,7 +159,8 @@ void measureLightCounts(BenchRenderer& renderer, const RenderBenchOptions& optio
                 RenderSettings s = settings;
                 s.path = renderPathOf(path);
                 const bool floor = path == BenchPath::BrdfFloor;
-                timeFrame(renderer, floor ? brdfFloorScene(scene) : scene, floor ? brdfFloorSettings(s) : s,
+                const Scene shown = floor ? brdfFloorScene(scene) : scene;
+                timeFrame(renderer, analyticPrepared(shown), floor ? brdfFloorSettings(s) : s,
                           keep ? &samples[{int(path), int(added), count}] : nullptr);
             }
         }
@@ -184,7 +190,8 @@ void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOp
         s.width = width;
         s.height = height;
         Samples samples;
-        interleaved(options.runs, [&](bool keep) { timeFrame(renderer, scene, s, keep ? &samples : nullptr); });
+        interleaved(options.runs,
+                    [&](bool keep) { timeFrame(renderer, analyticPrepared(scene), s, keep ? &samples : nullptr); });
         result.scaleRows.push_back({"resolution", width, height, triangleCount(mesh), samples.medians()});
     }
     // A mesh upload per size is slow at 1M triangles: sizes one after another, not interleaved.
@@ -203,8 +210,8 @@ void measureScale(BenchRenderer& renderer, const Mesh& mesh, const RenderBenchOp
     }
     for (size_t target : triangles) {
         const auto sphere = std::make_shared<const Mesh>(sphereOfAbout(target));
-        scene.resolvedMesh = sphere;
-        const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
+        const std::vector<FrameTiming> times =
+            interleavedMedians(renderer, {scene, sphere, nullptr}, variants, options.runs);
         for (size_t k = 0; k < std::size(kinds); ++k) {
             result.scaleRows.push_back({k == 0 ? "triangles" : "flat-lights", settings.width, settings.height,
                                         triangleCount(*sphere), times[k], std::get<0>(kinds[k])});
@@ -227,7 +234,7 @@ void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, 
         variants.back().path = passes;
         variants.back().cullHiddenFaces = cull;
     }
-    const std::vector<FrameTiming> times = interleavedMedians(renderer, scene, variants, options.runs);
+    const std::vector<FrameTiming> times = interleavedMedians(renderer, analyticPrepared(scene), variants, options.runs);
     for (size_t k = 0; k < std::size(kinds); ++k) {
         result.scaleRows.push_back({"culling", settings.width, settings.height, result.triangles, times[k],
                                     std::get<0>(kinds[k])});
@@ -338,19 +345,23 @@ void measureEnvironment(BenchRenderer& renderer, const RenderBenchOptions& optio
     directional.lights.erase(directional.lights.begin());   // the cool fill alone
     Scene environment = defaultScene();
     std::erase_if(environment.lights, [](const Light& light) { return light.type != LightType::Environment; });
+    AssetCache assets;
+    std::vector<std::string> notes;   // the built-in studio has none
+    const PreparedScene preparedDirectional = analyticPrepared(directional);
+    const PreparedScene preparedEnvironment = prepareScene(environment, assets, notes);
     struct Kind {
         const char* name;
-        const Scene* scene;
+        const PreparedScene* scene;
         RenderPath path;
         EnvironmentShading shading;
     };
-    const Kind kinds[] = {{"single-directional", &directional, RenderPath::Single, {}},
-                          {"specialised-directional", &directional, RenderPath::Specialised, {}},
-                          {"single-environment", &environment, RenderPath::Single, {}},
-                          {"specialised-environment", &environment, RenderPath::Specialised, {}},
-                          {"single-environment-dominant", &environment, RenderPath::Single,
+    const Kind kinds[] = {{"single-directional", &preparedDirectional, RenderPath::Single, {}},
+                          {"specialised-directional", &preparedDirectional, RenderPath::Specialised, {}},
+                          {"single-environment", &preparedEnvironment, RenderPath::Single, {}},
+                          {"specialised-environment", &preparedEnvironment, RenderPath::Specialised, {}},
+                          {"single-environment-dominant", &preparedEnvironment, RenderPath::Single,
                            {EnvironmentMethod::Dominant, 1}},
-                          {"single-environment-stochastic-16", &environment, RenderPath::Single,
+                          {"single-environment-stochastic-16", &preparedEnvironment, RenderPath::Single,
                            {EnvironmentMethod::Stochastic, 16}}};
     std::vector<Samples> samples(std::size(kinds));
     interleaved(options.runs, [&](bool keep) {
@@ -398,10 +409,11 @@ void measurePrefilter(const RenderBenchOptions& options, RenderBenchResult& resu
         std::vector<std::string> warnings;
         for (std::vector<double>* times : {&cold, &warm}) {
             const Clock::time_point start = Clock::now();
-            const std::shared_ptr<const Environment> environment = loadEnvironment(source.string(), warnings);
+            // A cache of its own each time: the second load reads the disk cache, not memory.
+            const std::shared_ptr<const Environment> environment = AssetCache().environment(source.string(), warnings);
             times->push_back(std::chrono::duration<double>(Clock::now() - start).count());
             result.prefilterFaceSize = environment->prefiltered.front().size;
-        }   // released: the second load reads the disk cache
+        }
     }
     if (previous) {
         setenv("PATINA_CACHE_DIR", kept.c_str(), 1);

@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include "assets/prepare_scene.h"
+
 #include <fstream>
 
 #include <algorithm>
@@ -44,6 +46,27 @@ std::vector<reference::Light> toReference(const std::vector<Light>& lights) {
         result.push_back(r);
     }
     return result;
+}
+
+AssetCache& assetCache() {
+    static AssetCache cache;
+    return cache;
+}
+
+PreparedScene prepared(const Scene& scene) {
+    std::vector<std::string> warnings;
+    return prepareScene(scene, assetCache(), warnings);
+}
+
+std::shared_ptr<const Environment> madeEnvironment(const std::string& source) {
+    std::vector<std::string> warnings;
+    return assetCache().environment(source, warnings);
+}
+
+const PreparedScene& preparedDefault() {
+    static const Scene scene = defaultScene();
+    static const PreparedScene prepared = test::prepared(scene);
+    return prepared;
 }
 
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples) {

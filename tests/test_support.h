@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "assets/asset_cache.h"
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
 #include "scene/probe.h"
@@ -21,6 +22,17 @@ namespace patina::test {
 
 // Created on first use and kept for the whole test binary (contexts are slow to make).
 HeadlessContext& glContext();
+
+// One cache for the whole test binary, as a program owns one: built-ins are made once.
+AssetCache& assetCache();
+// `scene` with what it names loaded through assetCache() (assets/prepare_scene.h); refers to
+// `scene`. Warnings are dropped.
+PreparedScene prepared(const Scene& scene);
+PreparedScene prepared(Scene&& scene) = delete;
+// defaultScene(), prepared.
+const PreparedScene& preparedDefault();
+// An environment light's source ("builtin:studio") made ready through assetCache().
+std::shared_ptr<const Environment> madeEnvironment(const std::string& source);
 
 // Default settings but for the image size, path and MSAA samples.
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples);

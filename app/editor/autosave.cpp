@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include "editor_state.h"
-#include "gltf/scene_mesh.h"
 #include "io/file_bytes.h"
 #include "io/json_reader.h"
 #include "io/scene_file.h"
@@ -90,7 +89,7 @@ void removeLocked(const std::filesystem::path& file, std::shared_ptr<FileLock>& 
     lock.reset();
 }
 
-Recoverable readRecoverable(const std::filesystem::path& file) {
+Recoverable readRecoverable(const std::filesystem::path& file, AssetCache& assets) {
     const Json json = readJsonFile(file);
     JsonObjectReader reader(json, "", file.string());
     reader.checkFormatAndVersion(kFormat, kVersion);
@@ -104,7 +103,7 @@ Recoverable readRecoverable(const std::filesystem::path& file) {
     found.scene = sceneFromJson(scene, file.string() + " (scene)", file.parent_path(), warnings);
     if (!found.scene.meshFile.empty()) {
         try {
-            resolveMesh(found.scene);
+            found.mesh = assets.mesh(found.scene);
         } catch (const std::exception&) {
             found.scene.meshFile.clear();   // the mesh file went away: the rest is still the work
         }
@@ -130,7 +129,7 @@ std::vector<Recoverable> findLeftBehind(EditorState& state, const std::filesyste
             if (!lock) {
                 continue;   // its editor is running: its work is its own
             }
-            Recoverable recoverable = readRecoverable(file);
+            Recoverable recoverable = readRecoverable(file, *state.assets);
             recoverable.lock = std::move(lock);
             found.push_back(std::move(recoverable));
         } catch (const std::exception& error) {
@@ -259,7 +258,7 @@ void restoreRecoverable(EditorState& state) {
         return;
     }
     Recoverable found = std::move(*state.recoverable);
-    startDocument(state, found.scene, found.scenePath, found.materialPath);
+    startDocument(state, found.scene, found.scenePath, found.materialPath, found.mesh);
     compareWithItsFiles(state, found);
     state.status = "Restored the work autosaved " + found.savedAt;
     // Kept in this editor's own file before the old one goes, so a crash now loses nothing.

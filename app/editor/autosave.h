@@ -42,7 +42,8 @@ private:
 
 // What an editor that is gone left, offered until restored or discarded.
 struct Recoverable {
-    Scene scene;                          // its mesh resolved when it has a file
+    Scene scene;
+    std::shared_ptr<const Mesh> mesh;     // its glTF file's, loaded; null for a built-in
     std::filesystem::path materialPath;   // where its material was saved, if anywhere
     std::filesystem::path scenePath;      // the scene file it was, if any
     std::string savedAt;                  // local time, for the prompt

@@ -114,7 +114,7 @@ int runEditor(const EditorOptions& options) {
 
     int exitCode = 0;
     {
-        EditorServices services;
+        EditorServices services(state.assets);
         openFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
         startAutosave(state, configFolder() / "autosave");
         const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "assets/prepare_scene.h"
 #include "image/compositing.h"
 #include "image/display_image.h"
 #include "image/png_text.h"
@@ -36,9 +37,10 @@ std::filesystem::path screenshotPath(const std::filesystem::path& folder, const 
 }
 }  // namespace
 
-EditorServices::EditorServices() : renderer_(std::make_unique<Renderer>()) {}
+EditorServices::EditorServices(std::shared_ptr<AssetCache> assets)
+    : assets_(std::move(assets)), renderer_(std::make_unique<Renderer>()) {}
 
-unsigned EditorServices::viewportTexture(const Scene& scene, int width, int height, RenderPath passes,
+unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes,
                                          Shown shown, int samples) {
     ViewImage& image = view(shown);
     ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading};
@@ -61,7 +63,7 @@ unsigned EditorServices::viewportTexture(const Scene& scene, int width, int heig
     return image.target.displayTexture();
 }
 
-RenderOutput EditorServices::renderImage(const Scene& scene, int width, int height, RenderPath passes) {
+RenderOutput EditorServices::renderImage(const PreparedScene& scene, int width, int height, RenderPath passes) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
@@ -85,7 +87,9 @@ const EditorServices::Preset* EditorServices::preset(const std::filesystem::path
         try {
             std::vector<std::string> warnings;
             const Material loaded = loadMaterialFile(material, warnings);
-            entry.preset = Preset{std::make_unique<Texture>(renderImage(previewScene(loaded), 64, 64, RenderPath::Single).ldr),
+            const Scene preview = previewScene(loaded);
+            const PreparedScene prepared = prepareScene(preview, *assets_, warnings);   // its built-in studio, once
+            entry.preset = Preset{std::make_unique<Texture>(renderImage(prepared, 64, 64, RenderPath::Single).ldr),
                                   loaded.name};
         } catch (const std::exception&) {
             // the browser shows the file without a picture
@@ -129,8 +133,9 @@ const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const 
 }
 
 LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {
-    const LdrImage a = renderImage(withMaterial(state, *state.compareA), halfWidth, height, state.renderPath).ldr;
-    const LdrImage b = renderImage(renderedScene(state), halfWidth, height, state.renderPath).ldr;
+    const Scene sceneA = withMaterial(state, *state.compareA), sceneB = renderedScene(state);
+    const LdrImage a = renderImage(preparedScene(state, sceneA), halfWidth, height, state.renderPath).ldr;
+    const LdrImage b = renderImage(preparedScene(state, sceneB), halfWidth, height, state.renderPath).ldr;
     // Captioned "A: name  r ..." and "B: ...", as the viewport labels them.
     auto caption = [&](char side, Material material) {
         material.name = comparisonLabel(side, material);
@@ -141,14 +146,16 @@ LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth
 
 LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
     if (!state.compareA || state.compareView == CompareView::Single) {
-        return renderImage(renderedScene(state), width, height, state.renderPath).ldr;
+        const Scene shown = renderedScene(state);
+        return renderImage(preparedScene(state, shown), width, height, state.renderPath).ldr;
     }
     if (state.compareView == CompareView::SideBySide) {
         return comparisonImage(state, std::max(width / 2, 1), height);
     }
     // Split: A's columns left of the divider over B's, the divider and the labels as drawn.
-    const LdrImage a = renderImage(withMaterial(state, *state.compareA), width, height, state.renderPath).ldr;
-    LdrImage shown = renderImage(renderedScene(state), width, height, state.renderPath).ldr;
+    const Scene sceneA = withMaterial(state, *state.compareA), sceneB = renderedScene(state);
+    const LdrImage a = renderImage(preparedScene(state, sceneA), width, height, state.renderPath).ldr;
+    LdrImage shown = renderImage(preparedScene(state, sceneB), width, height, state.renderPath).ldr;
     const int split = std::clamp(int(std::lround(std::clamp(state.splitPosition, 0.0f, 1.0f) * float(width))), 0, width);
     for (int y = 0; y < height; ++y) {
         const size_t row = size_t(y) * size_t(width) * 4;

@@ -21,10 +21,12 @@ struct AccuracyNumbers {
 AccuracyNumbers accuracyOf(const Material& material);
 
 // What panels need beyond EditorState: the renderer (a current GL context is assumed) and its
-// caches. Rendering happens here only when what it shows changed.
+// caches. Rendering happens here only when what it shows changed; what it draws comes
+// prepared (EditorState's mesh and environment), and its own preview scenes are prepared
+// through `assets`, the editor's cache (EditorState::assets).
 class EditorServices {
 public:
-    EditorServices();
+    explicit EditorServices(std::shared_ptr<AssetCache> assets);
 
     // What the viewport shows: the material being edited, or the comparison's A. Each has its
     // own render target, and offscreen renders (screenshots, thumbnails, exports) another, so
@@ -32,7 +34,7 @@ public:
     enum class Shown { Edited, A };
     // The display texture of `scene` at `size` for `shown`, re-rendered only when the scene,
     // size, pass mode or MSAA samples changed since its last render. Returns the GL texture.
-    unsigned viewportTexture(const Scene& scene, int width, int height, RenderPath passes, Shown shown,
+    unsigned viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes, Shown shown,
                              int samples = 4);
     double lastRenderMilliseconds() const { return lastRenderMilliseconds_; }
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
@@ -45,7 +47,7 @@ public:
 
     // Renders `scene` at the given size offscreen and returns the image (for screenshots,
     // thumbnails and exports); what the viewport shows is untouched.
-    RenderOutput renderImage(const Scene& scene, int width, int height, RenderPath passes);
+    RenderOutput renderImage(const PreparedScene& scene, int width, int height, RenderPath passes);
 
     // A material file's thumbnail, rendered in the fixed preview scene (preview_scene.h) once
     // per file modification time, and its material's name; null for a file that does not read.
@@ -86,6 +88,7 @@ private:
         RenderTarget target;
         std::optional<ViewKey> drawn;   // what the target holds
     };
+    std::shared_ptr<AssetCache> assets_;
     std::unique_ptr<Renderer> renderer_;
     ViewImage views_[2];   // by Shown
     double lastRenderMilliseconds_ = 0.0, lastGpuMilliseconds_ = 0.0;

@@ -3,9 +3,8 @@
 #include <algorithm>
 
 #include "scene/camera_control.h"
+#include "assets/prepare_scene.h"
 #include "gltf/import.h"
-#include "gltf/scene_mesh.h"
-#include "image/environment_source.h"
 #include "io/input_error.h"
 #include "image/png_text.h"
 #include "io/scene_file.h"
@@ -261,6 +260,10 @@ Scene renderedScene(const EditorState& state) {
     return scene;
 }
 
+PreparedScene preparedScene(const EditorState& state, const Scene& shown) {
+    return {shown, shown.meshFile.empty() ? builtinMesh(shown.mesh) : state.mesh, state.environment};
+}
+
 Scene withMaterial(const EditorState& state, const Material& material) {
     Scene scene = renderedScene(state);
     scene.material = material;
@@ -280,11 +283,11 @@ void rememberRecent(EditorState& state, const std::filesystem::path& path) {
 }
 
 void frameMesh(EditorState& state) {
-    if (state.scene.meshFile.empty() || !state.scene.resolvedMesh) {
+    if (state.scene.meshFile.empty() || !state.mesh) {
         frameCamera(state.scene.camera, glm::vec3(0.0f), state.scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
         return;
     }
-    const BoundingSphere bounds = boundingSphere(*state.scene.resolvedMesh);
+    const BoundingSphere bounds = boundingSphere(*state.mesh);
     frameCamera(state.scene.camera, bounds.center, std::max(bounds.radius, 1e-3f));
 }
 
@@ -308,9 +311,11 @@ std::string unusedParts(const GltfImport& imported) {
 
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
-        GltfImport imported = importGltf(path);   // before anything changes: a bad file changes nothing
+        // Before anything changes: a bad file changes nothing.
+        const std::shared_ptr<const GltfImport> model = state.assets->model(path);
+        const GltfImport& imported = *model;
         state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
-        state.scene.resolvedMesh = std::make_shared<const Mesh>(std::move(imported.mesh));
+        state.mesh = std::shared_ptr<const Mesh>(model, &model->mesh);
         frameMesh(state);
         std::string material = ", no material (the current one kept)";
         if (imported.material) {
@@ -343,7 +348,7 @@ void applyEnvironment(EditorState& state, const std::string& source, std::shared
             light.name = environmentName(source);
         }
         light.source = source;
-        s.scene.resolvedEnvironment = std::move(environment);   // kept while disabled, for the checkbox
+        s.environment = std::move(environment);   // kept while disabled, for the checkbox
     });
     state.selectedLight = index;
     state.environmentFailed.clear();
@@ -357,13 +362,13 @@ void applyEnvironment(EditorState& state, const std::string& source, std::shared
 bool setEnvironmentSource(EditorState& state, const std::string& source) {
     state.environmentLoad.reset();   // a newer choice replaces one under way (cancelled)
     if (!source.starts_with("builtin:")) {
-        state.environmentLoad = std::make_shared<EnvironmentLoad>(source);
+        state.environmentLoad = std::make_shared<EnvironmentLoad>(source, state.assets);
         state.status = "Preparing the environment " + environmentName(source) + "...";
         return true;
     }
     std::vector<std::string> warnings;
     try {
-        applyEnvironment(state, source, loadEnvironment(source, warnings), warnings);
+        applyEnvironment(state, source, state.assets->environment(source, warnings), warnings);
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();   // the previous environment stays
@@ -396,13 +401,13 @@ void resolveEnvironmentShown(EditorState& state) {
         return;
     }
     const std::string& source = state.scene.lights[size_t(index)].source;
-    const std::shared_ptr<const Environment>& resolved = state.scene.resolvedEnvironment;
-    if ((resolved && resolved->source == source) || state.environmentFailed == source) {
+    const std::shared_ptr<const Environment>& loaded = state.environment;
+    if ((loaded && loaded->source == source) || state.environmentFailed == source) {
         return;
     }
     std::vector<std::string> warnings;
     try {
-        state.scene.resolvedEnvironment = loadEnvironment(source, warnings);
+        state.environment = state.assets->environment(source, warnings);
         state.environmentFailed.clear();
     } catch (const std::exception& error) {
         state.error = error.what();
@@ -432,8 +437,11 @@ bool isPreset(const EditorState& state, const std::filesystem::path& path) {
 }
 
 void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
-                   const std::filesystem::path& materialPath) {
+                   const std::filesystem::path& materialPath, std::shared_ptr<const Mesh> mesh,
+                   std::shared_ptr<const Environment> environment) {
     state.scene = scene;
+    state.mesh = std::move(mesh);
+    state.environment = std::move(environment);
     state.scenePath = scenePath;
     state.materialPath = materialPath;
     state.savedScene = scene;
@@ -471,13 +479,16 @@ bool promptOpen(const EditorState& state) {
 namespace {
 // A scene, material or screenshot file, read and checked before anything changes.
 struct DocumentFile {
-    std::optional<Scene> scene;          // a scene file or a screenshot: mesh and environment resolved
+    std::optional<Scene> scene;          // a scene file or a screenshot
+    // What the scene names, loaded: its glTF file's mesh and its enabled environment.
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Environment> environment;
     std::optional<Material> material;    // a material file
     std::optional<ScreenshotComparison> comparison;   // a screenshot's A and view
     std::vector<std::string> warnings;
 };
 
-DocumentFile readDocumentFile(const std::filesystem::path& path) {
+DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& path) {
     std::error_code kind;
     if (std::filesystem::is_directory(path, kind)) {
         throw InputError(path.string() +
@@ -501,8 +512,9 @@ DocumentFile readDocumentFile(const std::filesystem::path& path) {
     // A scene's glTF and environment are read now, so a missing or bad one fails the open
     // instead of every later frame.
     if (file.scene) {
-        resolveMesh(*file.scene);
-        resolveEnvironment(*file.scene, file.warnings);
+        const PreparedScene prepared = prepareScene(*file.scene, assets, file.warnings);
+        file.mesh = file.scene->meshFile.empty() ? nullptr : prepared.mesh;
+        file.environment = prepared.environment;
     }
     return file;
 }
@@ -517,7 +529,8 @@ bool startsADocument(const EditorState& state, const std::filesystem::path& path
 void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
     if (file.scene) {
         // A scene file is the document; a screenshot's scene is not a file to save into.
-        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {});
+        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {}, file.mesh,
+                      file.environment);
         // A screenshot reopens as what it shows: a comparison with its A, view and split, or
         // a single view.
         if (path.extension() == ".png") {
@@ -535,7 +548,7 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
     } else {
         Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
         scene.material = *file.material;
-        startDocument(state, scene, {}, path);
+        startDocument(state, scene, {}, path, state.mesh, state.environment);
     }
     state.error.clear();
     const bool preset = !file.scene && isPreset(state, path);
@@ -554,7 +567,7 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         return setEnvironmentSource(state, std::filesystem::absolute(path).lexically_normal().string());
     }
     try {
-        applyDocumentFile(state, path, readDocumentFile(path));
+        applyDocumentFile(state, path, readDocumentFile(*state.assets, path));
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();
@@ -583,7 +596,7 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
     // The file is checked before anything is asked: a missing or broken one says so at once.
     DocumentFile file;
     try {
-        file = readDocumentFile(path);
+        file = readDocumentFile(*state.assets, path);
     } catch (const std::exception& error) {
         state.error = error.what();
         return;

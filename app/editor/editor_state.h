@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "assets/asset_cache.h"
 #include "gl/renderer.h"
 #include "geometry/mesh.h"
+#include "scene/prepared_scene.h"
 #include "scene/scene.h"
 #include "environment_load.h"
 #include "autosave.h"
@@ -42,6 +44,12 @@ struct PanelLayout {
 struct EditorState {
     // The default scene under a tone map that keeps highlights (a file's own choice replaces it).
     Scene scene = defaultScene();
+    // What the scene names, loaded (assets/), through a cache the editor owns and the
+    // environment's worker shares: its glTF file's mesh (null: the built-in kind's), and its
+    // environment light's environment (kept while the light is off, for the checkbox).
+    std::shared_ptr<AssetCache> assets = std::make_shared<AssetCache>();
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Environment> environment;
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
     // The scene as a document: where it was opened from or saved to (empty: none), and the
@@ -151,9 +159,9 @@ bool setEnvironmentSource(EditorState& state, const std::string& source);
 // Applies the environment load once it is done (with `wait`, waits for it): run once a frame.
 // True when one was applied.
 bool finishEnvironmentLoad(EditorState& state, bool wait = false);
-// Makes scene.resolvedEnvironment the file the environment light names, whatever changed the
-// light (open, undo, autosave restore): loaded through loadEnvironment's cache when it does
-// not match (a built-in too: read back from the disk cache). Run once a frame, before drawing.
+// Makes state.environment the one the environment light names, whatever changed the light
+// (open, undo, autosave restore): loaded through state.assets when it does not match (a
+// built-in too: read back from the disk cache once). Run once a frame, before drawing.
 void resolveEnvironmentShown(EditorState& state);
 // The scene's environment light, or null.
 Light* editedEnvironment(EditorState& state);
@@ -168,6 +176,9 @@ bool soloedOut(const EditorState& state, int index);
 
 // The scene as rendered: solo applied.
 Scene renderedScene(const EditorState& state);
+// `shown` (renderedScene, withMaterial) with the document's loaded mesh and environment: what
+// the renderer draws. Refers to `shown`, which must outlive it.
+PreparedScene preparedScene(const EditorState& state, const Scene& shown);
 // Aims the camera at the whole mesh (F, View > Frame mesh).
 void frameMesh(EditorState& state);
 Scene withMaterial(const EditorState& state, const Material& material);
@@ -178,10 +189,12 @@ Scene withMaterial(const EditorState& state, const Material& material);
 // unsaved mark compare with. Applying a preset, a mesh or an environment is an undoable edit of
 // the document that is open.
 //
-// Makes `scene` (its mesh and environment resolved) the document, saved at `scenePath` (a scene
-// file) or `materialPath` (a material file), or neither.
+// Makes `scene` the document, saved at `scenePath` (a scene file) or `materialPath` (a material
+// file), or neither, with what was loaded for it: `mesh` (required when it names a file) and
+// `environment` (null: loaded by resolveEnvironmentShown).
 void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
-                   const std::filesystem::path& materialPath);
+                   const std::filesystem::path& materialPath, std::shared_ptr<const Mesh> mesh = nullptr,
+                   std::shared_ptr<const Environment> environment = nullptr);
 // File > New: the default scene as a document with no file.
 void newDocument(EditorState& state);
 // Asks first (state.pendingNew) when anything is unsaved; else starts it.

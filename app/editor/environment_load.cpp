@@ -2,14 +2,14 @@
 
 #include <chrono>
 
-#include "image/environment_source.h"
-
 namespace patina::editor {
 
-EnvironmentLoad::EnvironmentLoad(std::string source) : source_(std::move(source)) {
-    result_ = std::async(std::launch::async, [source = source_, progress = progress_, cancelled = cancelled_] {
+EnvironmentLoad::EnvironmentLoad(std::string source, std::shared_ptr<AssetCache> assets) : source_(std::move(source)) {
+    // The worker holds the cache too: it may outlive the state that started it.
+    result_ = std::async(std::launch::async, [source = source_, assets = std::move(assets), progress = progress_,
+                                              cancelled = cancelled_] {
         Result result;
-        result.environment = loadEnvironment(source, result.warnings, {}, [&](float done) {
+        result.environment = assets->environment(source, result.warnings, {}, [&](float done) {
             progress->store(done);
             return !cancelled->load();
         });

@@ -5,16 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "assets/asset_cache.h"
 #include "environment/environment.h"
 
 namespace patina::editor {
 
-// An environment file made ready off the UI thread: decoding and prefiltering a large HDRI
-// takes seconds on a software rasteriser's machine, and the editor keeps drawing (with the
-// environment it has) and can cancel meanwhile. Destroying it cancels and waits.
+// An environment file made ready off the UI thread, through the editor's asset cache: decoding
+// and prefiltering a large HDRI takes seconds on a software rasteriser's machine, and the
+// editor keeps drawing (with the environment it has) and can cancel meanwhile. Destroying it
+// cancels and waits.
 class EnvironmentLoad {
 public:
-    explicit EnvironmentLoad(std::string source);
+    EnvironmentLoad(std::string source, std::shared_ptr<AssetCache> assets);
     ~EnvironmentLoad();
     EnvironmentLoad(const EnvironmentLoad&) = delete;
     EnvironmentLoad& operator=(const EnvironmentLoad&) = delete;

@@ -101,10 +101,9 @@ void editEnvironment(EditorState& state, EditorServices& services, Light& light)
         }
         recordItem("Environment cancel", "Stop preparing the new environment and keep the current one");
     }
+    // What the light shows once loaded (resolveEnvironmentShown); none while it is not.
     const std::shared_ptr<const Environment> shown =
-        light.source == (state.scene.resolvedEnvironment ? state.scene.resolvedEnvironment->source : std::string())
-            ? state.scene.resolvedEnvironment
-            : preparedBuiltinEnvironment(light.source);
+        state.environment && state.environment->source == light.source ? state.environment : nullptr;
     if (const Texture* panorama = services.environmentThumbnail(shown)) {
         const float width = ImGui::GetContentRegionAvail().x;
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(panorama->id())), ImVec2(width, width * 0.5f));

@@ -39,7 +39,7 @@ void drawToolbar(EditorState& state) {
                                   state.scene.meshFile.empty() && state.scene.mesh == kind)) {
                 state.scene.mesh = kind;
                 state.scene.meshFile.clear();
-                state.scene.resolvedMesh.reset();   // the built-in kind's
+                state.mesh.reset();   // the built-in kind's
             }
         }
         ImGui::TextDisabled("or open / drop a .gltf or .glb");
@@ -353,6 +353,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 size{float(width), float(height)};
     const Scene b = renderedScene(state);
+    const PreparedScene preparedB = preparedScene(state, b);
     // While a widget is held (a slider drag), skip MSAA so the preview keeps up; the full
     // quality frame follows on release.
     const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
@@ -360,15 +361,19 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     if (state.compareA && state.compareView == CompareView::SideBySide) {
         const int half = std::max(width / 2, 8);
         const ImVec2 halfSize(float(half), size.y);
-        image(services.viewportTexture(withMaterial(state, *state.compareA), half, height, state.renderPath,
+        const Scene a = withMaterial(state, *state.compareA);
+        image(services.viewportTexture(preparedScene(state, a), half, height, state.renderPath,
                                             EditorServices::Shown::A, samples), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
-        image(services.viewportTexture(b, half, height, state.renderPath, EditorServices::Shown::Edited, samples), halfSize);
+        image(services.viewportTexture(preparedB, half, height, state.renderPath, EditorServices::Shown::Edited, samples),
+              halfSize);
     } else {
-        image(services.viewportTexture(b, width, height, state.renderPath, EditorServices::Shown::Edited, samples), size);
+        image(services.viewportTexture(preparedB, width, height, state.renderPath, EditorServices::Shown::Edited, samples),
+              size);
         if (state.compareA && state.compareView == CompareView::Split) {
             // A left of the divider, B right, one camera: A's image drawn over B's left part.
-            const unsigned a = services.viewportTexture(withMaterial(state, *state.compareA), width, height,
+            const Scene sceneA = withMaterial(state, *state.compareA);
+            const unsigned a = services.viewportTexture(preparedScene(state, sceneA), width, height,
                                                         state.renderPath, EditorServices::Shown::A, samples);
             const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
             ImGui::SetCursorScreenPos(origin);

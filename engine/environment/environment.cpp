@@ -1,11 +1,8 @@
 #include "environment/environment.h"
 
 #include <algorithm>
-#include <map>
-#include <mutex>
 #include <stdexcept>
 
-#include "environment/builtin_environments.h"
 #include "environment/equirect.h"
 #include "shading/environment_brdf.h"
 
@@ -28,49 +25,12 @@ std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::strin
     return environment;
 }
 
-namespace {
-std::mutex builtinMutex;
-std::map<std::string, std::shared_ptr<const Environment>> builtins;   // made with the default settings
-}  // namespace
-
-void adoptBuiltinEnvironment(const std::shared_ptr<const Environment>& environment) {
-    if (environment && environment->source.starts_with("builtin:") && environment->settings == EnvironmentSettings{}) {
-        std::lock_guard lock(builtinMutex);
-        builtins.try_emplace(environment->source, environment);
-    }
-}
-
-std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source, bool make) {
-    if (!source.starts_with("builtin:")) {
-        return nullptr;
-    }
-    std::lock_guard lock(builtinMutex);
-    if (!make) {
-        const auto found = builtins.find(source);
-        return found == builtins.end() ? nullptr : found->second;
-    }
-    std::map<std::string, std::shared_ptr<const Environment>>& prepared = builtins;
-    std::shared_ptr<const Environment>& environment = prepared[source];
-    if (!environment) {
-        std::optional<HdrImage> image = builtinEnvironment(std::string_view(source).substr(8));
-        if (!image) {
-            prepared.erase(source);
-            return nullptr;
-        }
-        environment = prepareEnvironment(std::move(*image), source);
-    }
-    return environment;
-}
-
-std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const Environment>& resolved,
+std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const Environment>& prepared,
                                                    const std::string& source) {
-    if (resolved && resolved->source == source) {
-        return resolved;
+    if (prepared && prepared->source == source) {
+        return prepared;
     }
-    if (std::shared_ptr<const Environment> builtin = preparedBuiltinEnvironment(source)) {
-        return builtin;
-    }
-    throw std::invalid_argument("the environment " + source + " was never loaded (resolveEnvironment)");
+    throw std::invalid_argument("the environment " + source + " was not prepared for this scene (assets/)");
 }
 
 glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material, const Environment& environment,

@@ -21,7 +21,7 @@ struct EnvironmentSettings {
 
 // An environment made ready to light with: the source image at full resolution (the ground
 // truth and the coefficients read it, never the chain), the prefiltered chain and the
-// irradiance coefficients. Immutable once made; scenes share it (Scene::resolvedEnvironment).
+// irradiance coefficients. Immutable once made; prepared scenes share it (scene/prepared_scene.h).
 struct Environment {
     std::string source;      // what it was made from: "builtin:studio", a path
     HdrImage image;          // equirect, invalid pixels replaced
@@ -38,18 +38,9 @@ std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::strin
                                                       const EnvironmentSettings& settings = {},
                                                       const Progress& progress = {});
 
-// A built-in environment's source ("builtin:studio") made ready with the default settings,
-// once per process and shared; null for any other source. Scenes that name a built-in need not
-// be resolved by their loader: the renderer and the probes take it from here. Without `make`,
-// only one made already (else null); loadEnvironment (image/environment_source.h) makes them
-// through its disk cache and hands them here with adoptBuiltinEnvironment.
-std::shared_ptr<const Environment> preparedBuiltinEnvironment(const std::string& source, bool make = true);
-void adoptBuiltinEnvironment(const std::shared_ptr<const Environment>& environment);
-
-// What a scene's environment light shows: `resolved` when it was made from `source`, else the
-// built-in it names;
-// std::invalid_argument for a file nobody loaded.
-std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const Environment>& resolved,
+// What a scene's environment light shows: `prepared`, which must have been made from `source`.
+// Nothing is made here (assets/ prepares a scene): std::invalid_argument for any other.
+std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const Environment>& prepared,
                                                    const std::string& source);
 
 // The split sum on the CPU for `model`: the same code as the GPU's (ibl_model.glsl), reading

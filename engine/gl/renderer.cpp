@@ -206,11 +206,13 @@ double Renderer::lastGpuMilliseconds() {
     return s.gpuMilliseconds;
 }
 
-void Renderer::useMesh(State& s, const Scene& scene) {
-    std::shared_ptr<const Mesh> mesh = meshShown(scene);
+void Renderer::useMesh(State& s, const std::shared_ptr<const Mesh>& mesh) {
+    if (!mesh) {
+        throw std::invalid_argument("the scene's mesh was not prepared (assets/)");
+    }
     if (mesh != s.meshShown) {
         s.mesh.upload(*mesh);   // the hidden-faces analysis runs here, once per mesh shown
-        s.meshShown = std::move(mesh);
+        s.meshShown = mesh;
     }
 }
 
@@ -248,8 +250,9 @@ void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading,
     glDepthMask(GL_TRUE);
 }
 
-unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, RenderTarget& target) {
+unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& settings, RenderTarget& target) {
     State& s = *state_;
+    const Scene& scene = prepared.scene;
     // An error someone else left (the UI's own drawing, say) is not this draw's: take it off
     // the queue so the check at the end reports only what this draw did.
     while (glGetError() != GL_NO_ERROR) {
@@ -262,10 +265,10 @@ unsigned Renderer::draw(const Scene& scene, const RenderSettings& settings, Rend
     }
     const FramebufferKept kept;
     RenderTargets& t = *target.images_;
-    useMesh(s, scene);
+    useMesh(s, prepared.mesh);
     const Light* environmentLight = enabledEnvironment(scene);
     const std::shared_ptr<const Environment> environmentMap =
-        environmentLight ? environmentShown(scene.resolvedEnvironment, environmentLight->source) : nullptr;
+        environmentLight ? environmentShown(prepared.environment, environmentLight->source) : nullptr;
     const bool environment = environmentLight != nullptr;
     // A drawn background covers every pixel: nothing is left to fill around the mesh.
     const bool environmentBackground = environment && scene.display.backgroundFromEnvironment;
@@ -501,7 +504,7 @@ RenderOutput Renderer::readBack(const RenderTarget& target, bool hdr) const {
     return output;
 }
 
-double Renderer::timedDraw(const Scene& scene, const RenderSettings& settings) {
+double Renderer::timedDraw(const PreparedScene& scene, const RenderSettings& settings) {
     glFinish();
     lastGpuMilliseconds();   // collect a pending query so this draw is timed
     draw(scene, settings);
@@ -509,7 +512,7 @@ double Renderer::timedDraw(const Scene& scene, const RenderSettings& settings) {
     return lastGpuMilliseconds();
 }
 
-RenderOutput Renderer::render(const Scene& scene, const RenderSettings& settings) {
+RenderOutput Renderer::render(const PreparedScene& scene, const RenderSettings& settings) {
     draw(scene, settings);
     return readBack(settings.readHdr);
 }

@@ -8,7 +8,7 @@
 #include "gl/shader_specialisation.h"
 #include "image/image.h"
 #include "geometry/mesh.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -90,7 +90,8 @@ struct RenderOutput {
     LdrImage ldr;   // after the display transform, sRGB
 };
 
-// Draws scenes, each with its own mesh (Scene::resolvedMesh), with the shared shaders. Needs a
+// Draws prepared scenes (scene/prepared_scene.h), each with its own mesh and environment, with
+// the shared shaders; it loads and prefilters nothing itself. Needs a
 // current OpenGL 3.3 core context (a HeadlessContext or the editor's window) for its whole life.
 class Renderer {
 public:
@@ -102,10 +103,11 @@ public:
     // How many lights a specialised shader takes as flat inputs (shader_specialisation.h).
     size_t flatLightSlots() const;
     // Renders into `target` and returns its display texture (RenderTarget::displayTexture).
-    // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size].
-    unsigned draw(const Scene& scene, const RenderSettings& settings, RenderTarget& target);
+    // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size],
+    // or a prepared scene without the mesh or the environment its document names.
+    unsigned draw(const PreparedScene& scene, const RenderSettings& settings, RenderTarget& target);
     // The same into the renderer's own target (for render(), benchmarks and tests).
-    unsigned draw(const Scene& scene, const RenderSettings& settings) { return draw(scene, settings, own_); }
+    unsigned draw(const PreparedScene& scene, const RenderSettings& settings) { return draw(scene, settings, own_); }
     // The last draw into `target`, read back to the CPU with rows top to bottom (empty if never
     // drawn); without `hdr`, RenderOutput::hdr stays empty. Throws std::logic_error for `hdr`
     // when the draw did not keep it (RenderSettings::readHdr).
@@ -118,9 +120,9 @@ public:
     double lastGpuMilliseconds();
     // draw into the renderer's own target and wait for it: the GPU time of that draw in milliseconds (for
     // benchmarks; it stalls the pipeline).
-    double timedDraw(const Scene& scene, const RenderSettings& settings);
+    double timedDraw(const PreparedScene& scene, const RenderSettings& settings);
     // draw + readBack of the renderer's own target.
-    RenderOutput render(const Scene& scene, const RenderSettings& settings);
+    RenderOutput render(const PreparedScene& scene, const RenderSettings& settings);
 
 private:
     struct State;
@@ -128,9 +130,9 @@ private:
     RenderTarget own_;
     using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
     // The passes of one strip with `shading` (compiled for `passes`) and `lights` lights.
-    // Uploads the scene's mesh unless it is the one drawn last. Throws std::invalid_argument
-    // for a scene whose mesh file was never resolved.
-    static void useMesh(State& s, const Scene& scene);
+    // Uploads the prepared mesh unless it is the one drawn last. Throws std::invalid_argument
+    // for none.
+    static void useMesh(State& s, const std::shared_ptr<const Mesh>& mesh);
     static void drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights, bool environment,
                            const Prepare& prepare);
 };

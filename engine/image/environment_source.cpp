@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
-#include <map>
-#include <mutex>
 
+#include "common/content_hash.h"
 #include "environment/builtin_environments.h"
 #include "environment/equirect.h"
 #include "image/environment_files.h"
@@ -19,15 +18,6 @@ namespace {
 // Bumped whenever the prefilter, the coefficients or the built-ins change what they make.
 constexpr uint32_t kCacheVersion = 2;   // 2: the lod mapping starts at the roughness floor
 constexpr uint64_t kMaxEnvironmentFileBytes = uint64_t(512) << 20;
-
-// FNV-1a, 64 bits: a cache key, not a defence against anyone.
-uint64_t hashBytes(const void* data, size_t size, uint64_t hash = 0xcbf29ce484222325ull) {
-    const auto* bytes = static_cast<const uint8_t*>(data);
-    for (size_t i = 0; i < size; ++i) {
-        hash = (hash ^ bytes[i]) * 0x100000001b3ull;
-    }
-    return hash;
-}
 
 uint64_t settingsHash(const EnvironmentSettings& settings, uint64_t hash) {
     const int32_t values[] = {int32_t(kCacheVersion), settings.prefilter.levels, int32_t(settings.prefilter.samples),
@@ -101,33 +91,11 @@ bool deserialise(const std::vector<uint8_t>& bytes, Environment& environment) {
     return true;
 }
 
-// A source read but not yet decoded: its key (contents and settings) decides whether it must be.
-struct Source {
-    std::vector<uint8_t> bytes;   // a file's; empty for a built-in
-    uint64_t key = 0;
-};
-
-Source readSource(const std::string& source, const EnvironmentSettings& settings) {
-    if (source.starts_with("builtin:")) {
-        // Known by name: the image is generated once, by decodeSource, and only on a cache miss.
-        const auto names = builtinEnvironmentNames();
-        if (std::find(names.begin(), names.end(), std::string_view(source).substr(8)) == names.end()) {
-            throw InputError(source + ": no such built-in environment");
-        }
-        return {{}, settingsHash(settings, hashBytes(source.data(), source.size()))};
+HdrImage decodeSource(const EnvironmentSource& read) {
+    if (read.source.starts_with("builtin:")) {
+        return *builtinEnvironment(std::string_view(read.source).substr(8));
     }
-    RegularFile file(source, 0, source);
-    file.requireAtMost(kMaxEnvironmentFileBytes, "environment images");
-    Source read{file.readAll(), 0};
-    read.key = settingsHash(settings, hashBytes(read.bytes.data(), read.bytes.size()));
-    return read;
-}
-
-HdrImage decodeSource(const std::string& source, const Source& read) {
-    if (source.starts_with("builtin:")) {
-        return *builtinEnvironment(std::string_view(source).substr(8));
-    }
-    return decodeEnvironmentImage(read.bytes, source);
+    return decodeEnvironmentImage(read.bytes, read.source);
 }
 
 std::shared_ptr<const Environment> fromDiskCache(HdrImage& image, uint64_t key, const std::string& source,
@@ -186,52 +154,35 @@ std::filesystem::path environmentCacheFolder() {
     return {};
 }
 
-std::shared_ptr<const Environment> loadEnvironment(const std::string& source, std::vector<std::string>& warnings,
-                                                   const EnvironmentSettings& settings, const Progress& progress) {
-    // A built-in already made in this process (environmentShown makes them when first drawn).
-    if (settings == EnvironmentSettings{} && source.starts_with("builtin:")) {
-        if (std::shared_ptr<const Environment> builtin = preparedBuiltinEnvironment(source, false)) {
-            return builtin;
+EnvironmentSource readEnvironmentSource(const std::string& source, const EnvironmentSettings& settings) {
+    if (source.starts_with("builtin:")) {
+        // Known by name: the image is generated once, by makeEnvironment, and only on a miss.
+        const auto names = builtinEnvironmentNames();
+        if (std::find(names.begin(), names.end(), std::string_view(source).substr(8)) == names.end()) {
+            throw InputError(source + ": no such built-in environment");
         }
+        return {source, {}, settingsHash(settings, hashBytes(source.data(), source.size()))};
     }
-    // Built-ins go through the disk cache too: generating the studio takes milliseconds, its
-    // prefilter a third of a second, reading it back a few milliseconds.
-    const Source read = readSource(source, settings);
-    static std::mutex mutex;
-    static std::map<uint64_t, std::weak_ptr<const Environment>> shared;
-    std::shared_ptr<const Environment> environment;
-    {
-        std::lock_guard lock(mutex);
-        environment = shared[read.key].lock();
-    }
-    if (!environment) {
-        const uint64_t key = read.key;
-        HdrImage image = decodeSource(source, read);
-        environment = fromDiskCache(image, key, source, settings);
-        if (!environment) {
-            environment = prepareEnvironment(std::move(image), source, settings, progress);
-            if (!environment) {
-                return nullptr;
-            }
-            toDiskCache(*environment, key);
-        }
-        std::lock_guard lock(mutex);
-        shared[key] = environment;
-    }
-    adoptBuiltinEnvironment(environment);   // what environmentShown gives for its name from now on
-    if (environment->replacedPixels > 0) {
-        warnings.push_back(source + ": " + std::to_string(environment->replacedPixels) +
-                           " pixels were NaN, infinite or negative and were set to 0");
-    }
-    return environment;
+    RegularFile file(source, 0, source);
+    file.requireAtMost(kMaxEnvironmentFileBytes, "environment images");
+    EnvironmentSource read{source, file.readAll(), 0};
+    read.key = settingsHash(settings, hashBytes(read.bytes.data(), read.bytes.size()));
+    return read;
 }
 
-void resolveEnvironment(Scene& scene, std::vector<std::string>& warnings) {
-    const Light* light = enabledEnvironment(scene);
-    if (light && scene.resolvedEnvironment && scene.resolvedEnvironment->source == light->source) {
-        return;   // already the one it names
+std::shared_ptr<const Environment> makeEnvironment(const EnvironmentSource& read, const EnvironmentSettings& settings,
+                                                   const Progress& progress) {
+    // Built-ins go through the disk cache too: generating the studio takes milliseconds, its
+    // prefilter a third of a second, reading it back a few milliseconds.
+    HdrImage image = decodeSource(read);
+    std::shared_ptr<const Environment> environment = fromDiskCache(image, read.key, read.source, settings);
+    if (!environment) {
+        environment = prepareEnvironment(std::move(image), read.source, settings, progress);
+        if (environment) {
+            toDiskCache(*environment, read.key);
+        }
     }
-    scene.resolvedEnvironment = light ? loadEnvironment(light->source, warnings) : nullptr;
+    return environment;
 }
 
 }  // namespace patina

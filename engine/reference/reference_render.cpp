@@ -24,11 +24,12 @@ glm::vec3 backgroundRadiance(const Scene& scene, const Environment* environment,
 }
 }  // namespace
 
-ReferenceImage renderReference(const Scene& scene, const PixelSurfaces& surfaces,
+ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurfaces& surfaces,
                                const ReferenceRenderOptions& options, const ReferencePassDone& passDone) {
+    const Scene& scene = prepared.scene;
     const Light* light = enabledEnvironment(scene);
     const std::shared_ptr<const Environment> environment =
-        light ? environmentShown(scene.resolvedEnvironment, light->source) : nullptr;
+        light ? environmentShown(prepared.environment, light->source) : nullptr;
     const size_t pixels = size_t(surfaces.width) * size_t(surfaces.height);
     ReferenceImage image;
     image.value = {surfaces.width, surfaces.height, std::vector<float>(pixels * 3, 0.0f)};

@@ -5,7 +5,7 @@
 
 #include "common/hdr_image.h"
 #include "reference/pixel_surfaces.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 
 namespace patina {
 
@@ -31,9 +31,9 @@ struct ReferenceImage {
 // Told the image after each pass; false stops (the image so far is the result).
 using ReferencePassDone = std::function<bool(const ReferenceImage&)>;
 
-// `environment` is what the scene's enabled environment light shows (Scene::resolvedEnvironment
-// or a built-in; environmentShown).
-ReferenceImage renderReference(const Scene& scene, const PixelSurfaces& surfaces,
+// The enabled environment light shows the prepared environment (std::invalid_argument without
+// it); `surfaces` are the prepared mesh's (rasterizeSurfaces).
+ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurfaces& surfaces,
                                const ReferenceRenderOptions& options, const ReferencePassDone& passDone = {});
 
 }  // namespace patina

@@ -39,7 +39,7 @@ struct Light {
     // hemisphere (colour acts as a tint on both)
     glm::vec3 sky{1.0f};
     glm::vec3 ground{0.0f};
-    // environment (Scene::resolvedEnvironment holds it made ready): "builtin:NAME" or a file's
+    // environment (PreparedScene::environment holds it made ready): "builtin:NAME" or a file's
     // absolute path; turned about +Y, lighting and background alike. Radiance = image * intensity
     // (colour is not used).
     std::string source = "builtin:studio";

@@ -4,6 +4,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "environment/environment.h"
 #include "scene/material.h"
 #include "scene/scene.h"
 

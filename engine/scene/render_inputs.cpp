@@ -6,11 +6,10 @@
 
 namespace patina {
 
-RenderInputs renderInputs(const Scene& scene) {
+RenderInputs renderInputs(const PreparedScene& prepared) {
+    const Scene& scene = prepared.scene;
     RenderInputs inputs;
-    inputs.mesh = scene.resolvedMesh ? scene.resolvedMesh
-                                     : scene.meshFile.empty() ? builtinMesh(scene.mesh) : nullptr;
-    inputs.meshFile = scene.meshFile;
+    inputs.mesh = prepared.mesh;
     inputs.material = scene.material;
     inputs.cameraPosition = scene.camera.position;
     inputs.cameraTarget = scene.camera.target;
@@ -20,7 +19,7 @@ RenderInputs renderInputs(const Scene& scene) {
     inputs.tonemap = scene.display.tonemap;
     inputs.background = scene.display.background;
     if (const Light* environment = enabledEnvironment(scene)) {
-        inputs.environment = scene.resolvedEnvironment;
+        inputs.environment = prepared.environment;
         inputs.environmentSource = environment->source;
         inputs.environmentIntensity = environment->intensity;
         inputs.environmentRotation = environment->rotationDegrees;
@@ -31,7 +30,7 @@ RenderInputs renderInputs(const Scene& scene) {
 }
 
 bool RenderInputs::operator==(const RenderInputs& other) const {
-    return mesh == other.mesh && meshFile == other.meshFile && material == other.material &&
+    return mesh == other.mesh && material == other.material &&
            cameraPosition == other.cameraPosition && cameraTarget == other.cameraTarget &&
            fovYDegrees == other.fovYDegrees && exposure == other.exposure && tonemap == other.tonemap &&
            background == other.background && environment == other.environment &&

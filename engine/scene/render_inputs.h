@@ -8,15 +8,14 @@
 #include <glm/vec3.hpp>
 
 #include "geometry/mesh.h"
-#include "scene/scene.h"
+#include "scene/prepared_scene.h"
 #include "shading/material_parameters.h"
 #include "shading/shading.h"
 
 namespace patina {
 
 struct RenderInputs {
-    std::shared_ptr<const Mesh> mesh;                 // the scene's, or the built-in kind's
-    std::string meshFile;                             // for a scene whose mesh is not resolved
+    std::shared_ptr<const Mesh> mesh;                 // the prepared one
     MaterialParameters material;
     glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f};
     float fovYDegrees = 0.0f;
@@ -24,8 +23,8 @@ struct RenderInputs {
     float exposure = 0.0f;
     Tonemap tonemap = Tonemap::None;
     glm::vec3 background{0.0f};
-    // The enabled environment: what it shows (the resolved one, or its source for a built-in
-    // the renderer makes itself), intensity and rotation; the background drawn from it.
+    // The enabled environment: what it shows (the prepared one, and the source its light
+    // names), intensity and rotation; the background drawn from it.
     std::shared_ptr<const Environment> environment;
     std::string environmentSource;
     float environmentIntensity = 0.0f, environmentRotation = 0.0f;
@@ -37,6 +36,6 @@ struct RenderInputs {
     bool operator==(const RenderInputs& other) const;
 };
 
-RenderInputs renderInputs(const Scene& scene);
+RenderInputs renderInputs(const PreparedScene& prepared);
 
 }  // namespace patina

@@ -1,7 +1,5 @@
 #include "scene/scene.h"
 
-#include <stdexcept>
-
 #include "common/enum_names.h"
 #include "shading/shading.h"
 
@@ -84,13 +82,6 @@ Scene defaultScene() {
     // colours below 0.8 as they are): one look wherever the default scene is shown.
     scene.display.tonemap = Tonemap::PbrNeutral;
     return scene;
-}
-
-std::shared_ptr<const Mesh> meshShown(const Scene& scene) {
-    if (!scene.resolvedMesh && !scene.meshFile.empty()) {
-        throw std::invalid_argument("the scene's mesh " + scene.meshFile + " was never loaded (resolveMesh)");
-    }
-    return scene.resolvedMesh ? scene.resolvedMesh : builtinMesh(scene.mesh);
 }
 
 }  // namespace patina

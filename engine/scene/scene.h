@@ -1,5 +1,4 @@
 #pragma once
-#include <memory>
 #include <string>
 #include <string_view>
 #include <optional>
@@ -7,7 +6,6 @@
 
 #include <glm/vec3.hpp>
 
-#include "environment/environment.h"
 #include "geometry/mesh.h"
 #include "scene/light.h"
 #include "scene/material.h"
@@ -43,20 +41,13 @@ struct DisplaySettings {
 };
 
 
-// Everything a render needs: plain data, no graph.
+// The document: what a scene file says, values only, no graph. What it names (a glTF file, an
+// environment image) is loaded apart from it, by assets/, into a PreparedScene.
 struct Scene {
     MeshKind mesh = MeshKind::Sphere;
     // A .gltf or .glb file shown instead of `mesh` when not empty; an absolute path (a scene
     // file's relative path is resolved against the scene file's folder when it is read).
     std::string meshFile;
-    // The triangles drawn, resolved once by whoever loads the scene (gltf/scene_mesh.h) and shared
-    // by every copy; null stands for the built-in kind's (and is an error with a meshFile).
-    // Compared by identity: two scenes draw the same mesh when they hold the same one.
-    std::shared_ptr<const Mesh> resolvedMesh;
-    // The enabled environment light's source made ready (environment/environment.h), resolved
-    // by whoever loads the scene (image/environment_source.h) and shared like resolvedMesh;
-    // null when the scene has no enabled environment (an error for the renderer when it has).
-    std::shared_ptr<const Environment> resolvedEnvironment;
     Material material;
     Camera camera;
     std::vector<Light> lights;
@@ -65,10 +56,6 @@ struct Scene {
 
     bool operator==(const Scene&) const = default;
 };
-
-// The triangles the scene shows: its resolved mesh, or the built-in kind's. Throws
-// std::invalid_argument for a mesh file nobody resolved (gltf/scene_mesh.h).
-std::shared_ptr<const Mesh> meshShown(const Scene& scene);
 
 // The first enabled environment light (a scene file holds one at most), or null.
 const Light* enabledEnvironment(const std::vector<Light>& lights);

@@ -303,12 +303,12 @@ TEST(SplitSumAccuracy, AUniformEnvironmentIsWhereTheSplitSumIsExact) {
     options.quick = true;
     options.referenceSamples = 8192;   // the truth's own noise well below what is measured
     const SplitSumAccuracy white =
-        measureSplitSum({{"white", preparedBuiltinEnvironment("builtin:white")}}, options);
+        measureSplitSum({{"white", test::madeEnvironment("builtin:white")}}, options);
     EXPECT_LT(meanError(white.rows, "split sum"), 0.01);
     EXPECT_LT(meanError(white.rows, "mip quantisation (chain against exact LD)"), 1e-4);
     EXPECT_LT(meanError(white.rows, "N = V and the split (exact LD and AB)"), 0.01);
     const SplitSumAccuracy studio =
-        measureSplitSum({{"studio", preparedBuiltinEnvironment("builtin:studio")}}, options);
+        measureSplitSum({{"studio", test::madeEnvironment("builtin:studio")}}, options);
     EXPECT_GT(meanError(studio.rows, "N = V and the split (exact LD and AB)"),
               10.0 * meanError(white.rows, "N = V and the split (exact LD and AB)"));
     // The diffuse: a uniform environment is band 0 alone, exact; SH never rings there.

@@ -411,8 +411,8 @@ TEST_F(EditorStateTest, AnOpenedScenesEnvironmentFileIsWhatItShows) {
     std::ofstream(dir_ / "lit.json") << prettyJson(sceneToJson(scene));
     ASSERT_TRUE(openFile(state, dir_ / "lit.json")) << state.error;
     // Loaded by the open, and kept by it (it used to be dropped: "never loaded" in the viewport).
-    ASSERT_TRUE(state.scene.resolvedEnvironment);
-    EXPECT_EQ(state.scene.resolvedEnvironment->source, scene.lights[2].source);
+    ASSERT_TRUE(state.environment);
+    EXPECT_EQ(state.environment->source, scene.lights[2].source);
 }
 
 TEST_F(EditorStateTest, UndoingAnEnvironmentBringsBackTheImageItNamed) {
@@ -424,8 +424,8 @@ TEST_F(EditorStateTest, UndoingAnEnvironmentBringsBackTheImageItNamed) {
     ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     undo(state);
     resolveEnvironmentShown(state);
-    ASSERT_TRUE(state.scene.resolvedEnvironment);
-    EXPECT_EQ(state.scene.resolvedEnvironment->source, first);
+    ASSERT_TRUE(state.environment);
+    EXPECT_EQ(state.environment->source, first);
     // A file that cannot be read is said once and the light is left as it is.
     std::filesystem::remove(dir_ / "second.hdr");
     redo(state);
@@ -439,7 +439,7 @@ TEST_F(EditorStateTest, OpeningAnEnvironmentImageWhileDirtyDoesNotAsk) {
     requestOpen(state, writeHdr(dir_ / "sky.hdr", 64));
     EXPECT_FALSE(state.pendingOpen.has_value());
     ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
-    ASSERT_TRUE(state.scene.resolvedEnvironment) << state.error;
+    ASSERT_TRUE(state.environment) << state.error;
     EXPECT_EQ(state.scene.material.roughness, 0.12f);   // nothing else changed
 }
 
@@ -892,18 +892,18 @@ TEST(UiScale, IsTheMonitorsTimesTheSetting) {
 }
 
 TEST_F(EditorStateTest, AnEnvironmentFileIsPreparedOffTheUiThreadAndThenApplied) {
-    const std::shared_ptr<const Environment> before = state.scene.resolvedEnvironment;
+    const std::shared_ptr<const Environment> before = state.environment;
     const std::vector<Light> lights = state.scene.lights;
     const std::string sky = writeHdr(dir_ / "sky.hdr", 90).string();
     ASSERT_TRUE(setEnvironmentSource(state, sky));
     // Nothing changes until it is ready: the picture keeps the environment it had.
     ASSERT_TRUE(state.environmentLoad);
     EXPECT_EQ(state.scene.lights, lights);
-    EXPECT_EQ(state.scene.resolvedEnvironment, before);
+    EXPECT_EQ(state.environment, before);
     ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
     EXPECT_FALSE(state.environmentLoad);
-    ASSERT_TRUE(state.scene.resolvedEnvironment);
-    EXPECT_EQ(state.scene.resolvedEnvironment->source, sky);
+    ASSERT_TRUE(state.environment);
+    EXPECT_EQ(state.environment->source, sky);
     EXPECT_EQ(editedEnvironment(state)->source, sky);
     undo(state);   // one step back to the studio
     EXPECT_EQ(state.scene.lights, lights);

@@ -39,7 +39,7 @@ protected:
         io.DisplaySize = ImVec2(1280, 800);
         // The window's font and style (DejaVu Sans), so the layout is the one users see.
         EXPECT_EQ(applyUiScale(1.0f), "");
-        services_ = std::make_unique<EditorServices>();
+        services_ = std::make_unique<EditorServices>(state_.assets);
         state_.screenshotFolder = dir_;
         frames(3);   // lay out every panel
     }
@@ -279,8 +279,8 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     // A scene naming a glTF brings its mesh; one naming a missing file fails and changes nothing.
     write("with-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "torus.glb"})");
     ASSERT_TRUE(openFile(state_, path("with-mesh.json"))) << state_.error;
-    EXPECT_TRUE(state_.scene.resolvedMesh != nullptr);
-    EXPECT_EQ(state_.scene.resolvedMesh->positions.size(), makeTorus().positions.size());
+    EXPECT_TRUE(state_.mesh != nullptr);
+    EXPECT_EQ(state_.mesh->positions.size(), makeTorus().positions.size());
     frames(1);
     write("missing-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "gone.glb", "lights": []})");
     const EditSnapshot snapshot = state_.snapshot();
@@ -620,22 +620,22 @@ TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
     EXPECT_NEAR(glm::length(state_.scene.camera.target), 0.0f, 1e-5f);
 }
 
-// The scene owns its mesh: the editor draws the very triangles openFile resolved, and choosing
-// a built-in mesh lets go of the file's.
-TEST_F(EditorUi, TheSceneHoldsTheMeshItDraws) {
+// The editor holds the mesh loaded for its scene: it draws the very triangles openFile loaded,
+// and choosing a built-in mesh lets go of the file's.
+TEST_F(EditorUi, TheEditorHoldsTheMeshItDraws) {
     exportGltf(path("torus.glb"), makeTorus(), Material{});
     ASSERT_TRUE(openFile(state_, path("torus.glb"))) << state_.error;
-    const std::shared_ptr<const Mesh> torus = state_.scene.resolvedMesh;
+    const std::shared_ptr<const Mesh> torus = state_.mesh;
     ASSERT_TRUE(torus);
     frames(2);
     const LdrImage shown = services_->viewportPixels(EditorServices::Shown::Edited);
     state_.scene.meshFile.clear();
-    state_.scene.resolvedMesh.reset();
+    state_.mesh.reset();
     frames(2);
     EXPECT_GT(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 1000)
         << "the sphere again";
     state_.scene.meshFile = path("torus.glb").string();
-    state_.scene.resolvedMesh = torus;
+    state_.mesh = torus;
     frames(2);
     EXPECT_EQ(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
@@ -674,13 +674,13 @@ TEST_F(EditorUi, AnEnvironmentFileShowsItsProgressThenItsPanorama) {
     ASSERT_TRUE(state_.environmentLoad);
     {
         EXPECT_EQ(itemsOfLastFrame().count("Environment progress"), 1u);
-        EXPECT_NE(state_.scene.resolvedEnvironment ? state_.scene.resolvedEnvironment->source : "", path("big.hdr").string());
+        EXPECT_NE(state_.environment ? state_.environment->source : "", path("big.hdr").string());
     }
     ASSERT_TRUE(finishEnvironmentLoad(state_, true)) << state_.error;
     unsetenv("PATINA_CACHE_DIR");
     frames(2);
-    ASSERT_TRUE(state_.scene.resolvedEnvironment);
-    EXPECT_EQ(state_.scene.resolvedEnvironment->source, path("big.hdr").string());
+    ASSERT_TRUE(state_.environment);
+    EXPECT_EQ(state_.environment->source, path("big.hdr").string());
     EXPECT_EQ(itemsOfLastFrame().count("Environment progress"), 0u);
     EXPECT_EQ(itemsOfLastFrame().count("Environment panorama"), 1u);
 }

@@ -124,7 +124,7 @@ TEST(PrefilterMips, RoughnessAndLodAreInverses) {
 TEST(SplitSum, ASmoothMetalReadsMipZeroAlone) {
     // The shading floors r at 0.045; that floor must still read the unfiltered mip, not a blend
     // with mip 1 (docs/LIGHTING.md L5). The studio's mips differ, so a blend would show.
-    const auto studio = preparedBuiltinEnvironment("builtin:studio");
+    const auto studio = prepareEnvironment(*builtinEnvironment("studio"), "builtin:studio");
     ASSERT_TRUE(studio);
     Material mirror;
     mirror.baseColor = glm::vec3(1.0f);

@@ -52,8 +52,9 @@ TEST(EnvironmentRender, TheGpuSplitSumAgreesWithTheCpu) {
             for (float rotation : {0.0f, 33.0f}) {
                 const std::vector<Light> lights{studio(rotation)};
                 const std::vector<ProbeSample> samples = randomProbes(256, 7);
-                const std::vector<glm::vec3> gpu = probe.evaluate(material, lights, samples);
-                const std::vector<glm::vec3> cpu = probeOnCpu(material, lights, samples);
+                const auto environment = test::madeEnvironment(lights[0].source);
+                const std::vector<glm::vec3> gpu = probe.evaluate(material, lights, samples, environment);
+                const std::vector<glm::vec3> cpu = probeOnCpu(material, lights, samples, environment);
                 std::vector<reference::Vec3> expected;
                 for (const glm::vec3& c : cpu) {
                     expected.push_back(test::toReference(c));
@@ -94,15 +95,15 @@ TEST(EnvironmentRender, TheThreePathsAgree) {
         Scene scene = environmentScene(RenderPath::Single);
         scene.display.backgroundFromEnvironment = background;
         scene.display.backgroundBlur = 0.2f;
-        const HdrImage single = renderer.render(scene, test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;
-        const HdrImage multi = renderer.render(scene, test::renderSettings(96, 96, RenderPath::Multi, 1)).hdr;
+        const HdrImage single = renderer.render(test::prepared(scene), test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;
+        const HdrImage multi = renderer.render(test::prepared(scene), test::renderSettings(96, 96, RenderPath::Multi, 1)).hdr;
         const HdrImage specialised =
-            renderer.render(scene, test::renderSettings(96, 96, RenderPath::Specialised, 1)).hdr;
+            renderer.render(test::prepared(scene), test::renderSettings(96, 96, RenderPath::Specialised, 1)).hdr;
         EXPECT_LE(maxDifference(multi, single), 1e-5) << background;
         EXPECT_LE(maxDifference(specialised, single), 1e-5) << background;
         // And with MSAA, whose resolve must count the background as drawn.
         // (Only on average: MSAA changes the silhouette's pixels.)
-        const HdrImage msaa = renderer.render(scene, test::renderSettings(96, 96, RenderPath::Single, 4)).hdr;
+        const HdrImage msaa = renderer.render(test::prepared(scene), test::renderSettings(96, 96, RenderPath::Single, 4)).hdr;
         double sum = 0.0;
         for (size_t i = 0; i < msaa.rgb.size(); ++i) {
             sum += std::abs(msaa.rgb[i] - single.rgb[i]);
@@ -125,9 +126,10 @@ std::pair<double, double> gpuAgainstCpu(const EnvironmentShading& shading, float
     RenderSettings settings = test::renderSettings(size, size, RenderPath::Single, 1);
     settings.environment = shading;
     Renderer renderer;
-    const HdrImage image = renderer.render(scene, settings).hdr;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, size, size);
-    const auto environment = preparedBuiltinEnvironment("builtin:studio");
+    const PreparedScene prepared = test::prepared(scene);
+    const HdrImage image = renderer.render(prepared, settings).hdr;
+    const PixelSurfaces surfaces = rasterizeSurfaces(*prepared.mesh, scene.camera, size, size);
+    const std::shared_ptr<const Environment> environment = prepared.environment;
     const CubeChain source = sourceMipChain(*environment);
     const shader::SurfaceMaterial material = surfaceMaterial(scene.material);
     std::vector<double> differences;
@@ -189,7 +191,7 @@ TEST(EnvironmentRender, TheVariantsDifferFromTheSplitSumWhereTheyShould) {
     auto renderWith = [&](EnvironmentMethod method) {
         RenderSettings settings = test::renderSettings(48, 48, RenderPath::Single, 1);
         settings.environment = {method, 8};
-        return renderer.render(scene, settings).hdr;
+        return renderer.render(test::prepared(scene), settings).hdr;
     };
     const HdrImage split = renderWith(EnvironmentMethod::SplitSum);
     EXPECT_GT(maxDifference(renderWith(EnvironmentMethod::Dominant), split), 1e-2);
@@ -205,14 +207,14 @@ TEST(EnvironmentRender, AMetalUnderTheStudioIsNotABlackBall) {
     scene.material.metallic = 1.0f;
     scene.material.roughness = 0.25f;
     scene.lights = {studio()};
-    const HdrImage image = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    const HdrImage image = renderer.render(test::prepared(scene), test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
     // The centre of the sphere reflects the studio behind the camera: bright and gold.
     const float* centre = &image.rgb[(size_t(32) * 64 + 32) * 3];
     EXPECT_GT(centre[0], 0.1f);
     EXPECT_GT(centre[0], centre[2]);
     // Without the environment the same metal under no light is black.
     scene.lights.clear();
-    const HdrImage dark = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    const HdrImage dark = renderer.render(test::prepared(scene), test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
     EXPECT_EQ(dark.rgb[(size_t(32) * 64 + 32) * 3], 0.0f);
 }
 
@@ -222,29 +224,41 @@ TEST(EnvironmentRender, TheBackgroundIsTheEnvironmentAndTurnsWithIt) {
     Scene scene;
     scene.lights = {studio()};
     scene.display.backgroundFromEnvironment = true;
-    const HdrImage a = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    const HdrImage a = renderer.render(test::prepared(scene), test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
     // The corner shows the environment, not the clear colour.
     EXPECT_NE(a.rgb[0], scene.display.background.x);
     scene.lights[0].rotationDegrees = 360.0f;
-    const HdrImage turnedRound = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    const HdrImage turnedRound = renderer.render(test::prepared(scene), test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
     EXPECT_LE(maxDifference(turnedRound, a), 1e-3);
     scene.lights[0].rotationDegrees = 90.0f;
-    const HdrImage turned = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    const HdrImage turned = renderer.render(test::prepared(scene), test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
     EXPECT_GT(maxDifference(turned, a), 0.05);
     // Without "environment" the background stays the colour.
     scene.display.backgroundFromEnvironment = false;
-    const HdrImage plain = renderer.render(scene, test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
+    const HdrImage plain = renderer.render(test::prepared(scene), test::renderSettings(64, 64, RenderPath::Single, 1)).hdr;
     EXPECT_FLOAT_EQ(plain.rgb[0], scene.display.background.x);
 }
 
-TEST(EnvironmentRender, AnUnloadedFileIsAnErrorNotABlackImage) {
+TEST(EnvironmentRender, AnEnvironmentNotPreparedIsAnErrorNotABlackImage) {
+    // The renderer makes nothing itself, not even a built-in: what the prepared scene lacks
+    // is the caller's mistake, said at once.
     test::glContext();
     Renderer renderer;
     Scene scene;
     Light file = studio();
     file.source = "/nowhere/sky.hdr";
     scene.lights = {file};
-    EXPECT_THROW(renderer.render(scene, test::renderSettings(16, 16, RenderPath::Single, 1)), std::invalid_argument);
+    const std::shared_ptr<const Mesh> sphere = builtinMesh(MeshKind::Sphere);
+    const RenderSettings settings = test::renderSettings(16, 16, RenderPath::Single, 1);
+    EXPECT_THROW(renderer.render({scene, sphere, nullptr}, settings), std::invalid_argument);
+    scene.lights = {studio()};
+    EXPECT_THROW(renderer.render({scene, sphere, nullptr}, settings), std::invalid_argument);
+    // Another environment than the one the light names is not it either.
+    EXPECT_THROW(renderer.render({scene, sphere, test::madeEnvironment("builtin:white")}, settings),
+                 std::invalid_argument);
+    EXPECT_THROW(renderer.render({scene, nullptr, test::madeEnvironment("builtin:studio")}, settings),
+                 std::invalid_argument);
+    EXPECT_NO_THROW(renderer.render({scene, sphere, test::madeEnvironment("builtin:studio")}, settings));
 }
 
 }  // namespace

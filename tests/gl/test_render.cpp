@@ -25,7 +25,7 @@ RenderOutput renderScene(Renderer& renderer, const Scene& scene, RenderPath pass
                          FlatLights flatLights = FlatLights::WherePaying) {
     RenderSettings settings = test::renderSettings(size, size, passes, samples);
     settings.flatLightUse = flatLights;
-    return renderer.render(scene, settings);
+    return renderer.render(test::prepared(scene), settings);
 }
 
 int maxByteDifference(const LdrImage& a, const LdrImage& b) {
@@ -195,7 +195,7 @@ TEST(Renderer, GpuTimeCoversTheDraw) {
         glFinish();
         renderer.lastGpuMilliseconds();   // collect the last draw's queries so this one is timed
         const auto start = std::chrono::steady_clock::now();
-        renderer.draw(scene, settings);
+        renderer.draw(test::prepared(scene), settings);
         glFinish();
         const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const double gpu = renderer.lastGpuMilliseconds();
@@ -214,7 +214,7 @@ TEST(Renderer, BrdfFloorMatchesSinglePassForDirectionalLights) {
     for (FlatLights flat : {FlatLights::Always, FlatLights::Never}) {
         RenderSettings settings = brdfFloorSettings(test::renderSettings(160, 160, RenderPath::Specialised, 4));
         settings.flatLightUse = flat;
-        const RenderOutput floor = renderer.render(scene, settings);
+        const RenderOutput floor = renderer.render(test::prepared(scene), settings);
         EXPECT_LE(maxHdrRelativeDifference(single.hdr, floor.hdr), 1e-4) << (flat == FlatLights::Always);
     }
 }
@@ -230,11 +230,11 @@ TEST(Renderer, StripsGiveTheWholeImage) {
         settings.width = 150;
         settings.height = 130;
         settings.path = passes;
-        const RenderOutput whole = renderer.render(scene, settings);
+        const RenderOutput whole = renderer.render(test::prepared(scene), settings);
         // 37 rows of 4x RGBA32F a strip; then 1 byte, which the cap of 16 strips overrides.
         for (size_t budget : {size_t(settings.width) * 4 * 16 * 37, size_t(1)}) {
             settings.maxTargetBytes = budget;
-            const RenderOutput strips = renderer.render(scene, settings);
+            const RenderOutput strips = renderer.render(test::prepared(scene), settings);
             EXPECT_LE(maxByteDifference(whole.ldr, strips.ldr), 1) << renderPathName(passes) << " " << budget;
             EXPECT_LE(maxHdrRelativeDifference(whole.hdr, strips.hdr), 1e-4) << renderPathName(passes) << " " << budget;
             int identical = 0;
@@ -263,9 +263,9 @@ TEST(Renderer, SamplesOfAnEarlierDrawNeverShow) {
             settings.width = settings.height = 120;
             settings.path = passes;
             settings.maxTargetBytes = budget;
-            renderer.render(near, settings);
-            const RenderOutput after = renderer.render(far, settings);
-            const RenderOutput alone = fresh.render(far, settings);
+            renderer.render(test::prepared(near), settings);
+            const RenderOutput after = renderer.render(test::prepared(far), settings);
+            const RenderOutput alone = fresh.render(test::prepared(far), settings);
             const std::string what = std::string(renderPathName(passes)) + ", budget " + std::to_string(budget);
             EXPECT_EQ(after.ldr.rgba, alone.ldr.rgba) << what;
             EXPECT_EQ(after.hdr.rgb, alone.hdr.rgb) << what;
@@ -313,13 +313,13 @@ TEST(Renderer, DrawingIntoOneTargetLeavesAnotherAlone) {
     RenderTarget shown, other;
     EXPECT_EQ(shown.displayTexture(), 0u) << "nothing drawn yet";
     const RenderSettings small = test::renderSettings(48, 32, RenderPath::Single, 4);
-    const unsigned texture = renderer.draw(defaultScene(), small, shown);
+    const unsigned texture = renderer.draw(test::preparedDefault(), small, shown);
     EXPECT_EQ(texture, shown.displayTexture());
     const RenderOutput before = renderer.readBack(shown, false);
     Scene dark = defaultScene();
     dark.material.baseColor = glm::vec3(0.0f);
-    renderer.draw(dark, test::renderSettings(80, 60, RenderPath::Multi, 1), other);
-    renderer.render(dark, test::renderSettings(100, 20, RenderPath::Single, 1));
+    renderer.draw(test::prepared(dark), test::renderSettings(80, 60, RenderPath::Multi, 1), other);
+    renderer.render(test::prepared(dark), test::renderSettings(100, 20, RenderPath::Single, 1));
     EXPECT_TRUE(glIsTexture(texture));
     EXPECT_EQ(shown.displayTexture(), texture);
     const RenderOutput after = renderer.readBack(shown, false);
@@ -336,7 +336,7 @@ TEST(Renderer, AnErrorLeftByOtherCodeIsNotTheDrawsError) {
     glBindTexture(GL_TEXTURE_2D, 987654);   // never generated: GL_INVALID_OPERATION in a core context
     ASSERT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION)) << "the error this test leaves behind";
     glBindTexture(GL_TEXTURE_2D, 987654);
-    EXPECT_NO_THROW(renderer.render(defaultScene(), test::renderSettings(16, 16, RenderPath::Single, 1)));
+    EXPECT_NO_THROW(renderer.render(test::preparedDefault(), test::renderSettings(16, 16, RenderPath::Single, 1)));
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
@@ -355,11 +355,11 @@ TEST(Renderer, AFailedDrawLeavesTheFramebufferItFound) {
         code.lights = "this is not GLSL(";
         return code;
     };
-    EXPECT_THROW(renderer.render(defaultScene(), broken), std::exception);
+    EXPECT_THROW(renderer.render(test::preparedDefault(), broken), std::exception);
     GLint bound = -1;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
     EXPECT_EQ(GLuint(bound), mine);
-    renderer.render(defaultScene(), test::renderSettings(16, 16, RenderPath::Single, 1));
+    renderer.render(test::preparedDefault(), test::renderSettings(16, 16, RenderPath::Single, 1));
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &bound);
     EXPECT_EQ(GLuint(bound), mine) << "and a draw that succeeds likewise";
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -375,7 +375,7 @@ TEST(Renderer, ReadsTheLinearImageOnlyWhenAsked) {
     RenderSettings settings;
     settings.width = settings.height = 32;
     settings.readHdr = false;
-    const RenderOutput output = renderer.render(defaultScene(), settings);
+    const RenderOutput output = renderer.render(test::preparedDefault(), settings);
     EXPECT_TRUE(output.hdr.rgb.empty());
     EXPECT_EQ(output.ldr.rgba.size(), 32u * 32u * 4u);
     // The draw kept no linear image, so there is none to read: a clear error, not garbage.
@@ -393,9 +393,9 @@ TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
         LdrImage multi;
         for (RenderPath passes : {RenderPath::Multi, RenderPath::Single, RenderPath::Specialised}) {
             RenderSettings settings = test::renderSettings(96, 96, passes, samples);
-            const RenderOutput kept = renderer.render(scene, settings);
+            const RenderOutput kept = renderer.render(test::prepared(scene), settings);
             settings.readHdr = false;
-            const RenderOutput shown = renderer.render(scene, settings);
+            const RenderOutput shown = renderer.render(test::prepared(scene), settings);
             const std::string what = std::string(renderPathName(passes)) + ", " + std::to_string(samples) + " samples";
             EXPECT_EQ(kept.ldr.rgba, shown.ldr.rgba) << what;
             if (passes == RenderPath::Multi) {
@@ -425,7 +425,7 @@ TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
         for (int samples : {1, 4}) {
             for (RenderPath passes : {RenderPath::Multi, RenderPath::Single}) {
                 RenderSettings settings = test::renderSettings(64, 64, passes, samples);
-                const GLuint texture = renderer.draw(scene, settings);
+                const GLuint texture = renderer.draw(test::prepared(scene), settings);
                 const std::string what = std::string(renderPathName(passes)) + ", " + std::to_string(samples) +
                                          " samples, " + std::string(tonemapName(tonemap));
                 GLint format = 0;
@@ -653,16 +653,17 @@ TEST(Renderer, CroppingToTheMeshGivesTheSameImage) {
                                      {"aside, in strips", aside, size_t(150) * 4 * 16 * 23},
                                      {"a flat quad", quad}};
     for (const Case& c : cases) {
-        Scene scene = c.scene;
-        scene.resolvedMesh = std::make_shared<const Mesh>(c.name == "a flat quad" ? facingQuad() : makeUvSphere());
+        const Scene& scene = c.scene;
+        const PreparedScene shown{scene, std::make_shared<const Mesh>(c.name == "a flat quad" ? facingQuad() : makeUvSphere()),
+                                  test::prepared(scene).environment};
         RenderSettings settings;
         settings.width = 150;
         settings.height = 110;
         settings.maxTargetBytes = c.budget;
         settings.cropToMesh = false;
-        const RenderOutput whole = renderer.render(scene, settings);
+        const RenderOutput whole = renderer.render(shown, settings);
         settings.cropToMesh = true;
-        const RenderOutput cropped = renderer.render(scene, settings);
+        const RenderOutput cropped = renderer.render(shown, settings);
         EXPECT_LE(maxByteDifference(whole.ldr, cropped.ldr), 1) << c.name;
         EXPECT_LE(maxHdrRelativeDifference(whole.hdr, cropped.hdr), 1e-6) << c.name;
         int identical = 0;
@@ -711,15 +712,15 @@ TEST(Renderer, CullingHiddenFacesGivesTheSameImage) {
     const Scene lit = manyLightScene(2);
     for (const Case& c : cases) {
         Scene scene = lit;
-        scene.resolvedMesh = std::make_shared<const Mesh>(c.mesh);
         scene.camera.position = c.eye;
+        const PreparedScene shown{scene, std::make_shared<const Mesh>(c.mesh), test::prepared(scene).environment};
         for (RenderPath passes : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
             for (int samples : {4, 1}) {
                 RenderSettings settings = test::renderSettings(150, 110, passes, samples);
                 settings.cullHiddenFaces = false;
-                const RenderOutput every = renderer.render(scene, settings);
+                const RenderOutput every = renderer.render(shown, settings);
                 settings.cullHiddenFaces = true;
-                const RenderOutput culled = renderer.render(scene, settings);
+                const RenderOutput culled = renderer.render(shown, settings);
                 const std::string what = c.name + ", " + std::string(renderPathName(passes)) + ", " +
                                          std::to_string(samples) + " samples";
                 EXPECT_EQ(maxByteDifference(every.ldr, culled.ldr), 0) << what;
@@ -753,7 +754,7 @@ TEST(Renderer, CullingSkipsTheSpheresFarHalf) {
         settings.samples = samples;
         settings.cullHiddenFaces = cull;
         glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
-        renderer.draw(defaultScene(), settings);
+        renderer.draw(test::preparedDefault(), settings);
         glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         GLuint64 count = 0;
         glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
@@ -770,7 +771,7 @@ TEST(Renderer, RejectsImpossibleSizes) {
     Renderer renderer;
     RenderSettings settings;
     settings.width = 0;
-    EXPECT_THROW(renderer.render(defaultScene(), settings), std::invalid_argument);
+    EXPECT_THROW(renderer.render(test::preparedDefault(), settings), std::invalid_argument);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include "io/scene_file.h"
 #include "scratch_test.h"
 #include "io/file_bytes.h"
-#include "gltf/scene_mesh.h"
+#include "assets/asset_cache.h"
 
 namespace patina {
 namespace {
@@ -42,8 +42,8 @@ TEST_F(GltfScene, AMeshPathIsResolvedAgainstTheSceneFileAndRoundTrips) {
     Scene loaded = loadSceneFile(path("scene.json"), warnings);
     EXPECT_EQ(fs::path(loaded.meshFile), fs::absolute(path("models/cube.glb")));
     EXPECT_EQ(sceneFromJson(sceneToJson(loaded), "x", "/elsewhere", warnings), loaded);
-    resolveMesh(loaded);
-    EXPECT_EQ(loaded.resolvedMesh->positions.size(), 24u);
+    AssetCache assets;
+    EXPECT_EQ(assets.mesh(loaded)->positions.size(), 24u);
     EXPECT_EQ(sceneToJson(defaultScene())["mesh"], "sphere");
 
     write("typo.json", scene("models/cube"));

@@ -18,7 +18,7 @@ constexpr int kSize = 96;
 
 TEST(PixelSurfaces, TheSphereIsSeenWhereItIs) {
     const Scene scene = defaultScene();
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
+    const PixelSurfaces surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, kSize, kSize);
     ASSERT_EQ(surfaces.sampleOfPixel.size(), size_t(kSize * kSize));
     int covered = 0;
     for (int y = 0; y < kSize; ++y) {
@@ -69,11 +69,11 @@ RenderAndReference renderAndReference(const Scene& scene) {
     test::glContext();
     Renderer renderer;
     RenderAndReference both;
-    both.render = renderer.render(scene, test::renderSettings(kSize, kSize, RenderPath::Single, 1)).hdr;
-    both.surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
+    both.render = renderer.render(test::prepared(scene), test::renderSettings(kSize, kSize, RenderPath::Single, 1)).hdr;
+    both.surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, kSize, kSize);
     ReferenceRenderOptions options;
     options.samplesPerPixel = 1;
-    both.reference = renderReference(scene, both.surfaces, options);
+    both.reference = renderReference(test::prepared(scene), both.surfaces, options);
     return both;
 }
 
@@ -120,18 +120,18 @@ TEST(ReferenceRender, PassesAreIndependentAndAStopKeepsWhatIsDone) {
     Scene scene = defaultScene();
     scene.material.metallic = 1.0f;
     scene.material.roughness = 0.5f;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, 24, 24);
+    const PixelSurfaces surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, 24, 24);
     ReferenceRenderOptions options;
     options.samplesPerPixel = 64;
     options.samplesPerPass = 16;
     std::vector<int> reported;
-    const ReferenceImage stopped = renderReference(scene, surfaces, options, [&](const ReferenceImage& partial) {
+    const ReferenceImage stopped = renderReference(test::prepared(scene), surfaces, options, [&](const ReferenceImage& partial) {
         reported.push_back(partial.samplesPerPixel);
         return partial.samplesPerPixel < 32;
     });
     EXPECT_EQ(reported, (std::vector<int>{16, 32}));
     EXPECT_EQ(stopped.samplesPerPixel, 32);
-    const ReferenceImage full = renderReference(scene, surfaces, options);
+    const ReferenceImage full = renderReference(test::prepared(scene), surfaces, options);
     EXPECT_EQ(full.samplesPerPixel, 64);
     // Twice the samples: the standard error about 1/sqrt(2) of it; the two agree within it.
     double errorStopped = 0.0, errorFull = 0.0, outside = 0.0, values = 0.0;
@@ -159,12 +159,12 @@ TEST(DisplayImage, IsTheRenderersDisplayTransform) {
     scene.display.exposure = 0.7f;
     scene.display.tonemap = Tonemap::PbrNeutral;
     Renderer renderer;
-    const RenderOutput render = renderer.render(scene, test::renderSettings(kSize, kSize, RenderPath::Single, 1));
+    const RenderOutput render = renderer.render(test::prepared(scene), test::renderSettings(kSize, kSize, RenderPath::Single, 1));
     // The ground truth's backdrop: where the renderer shows the flat background as its swatch.
     ReferenceRenderOptions options;
     options.samplesPerPixel = 1;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*meshShown(scene), scene.camera, kSize, kSize);
-    const ReferenceImage reference = renderReference(scene, surfaces, options);
+    const PixelSurfaces surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, kSize, kSize);
+    const ReferenceImage reference = renderReference(test::prepared(scene), surfaces, options);
     ASSERT_GT(std::count(reference.backdrop.begin(), reference.backdrop.end(), 1), kSize);
     const LdrImage shown = displayImage(render.hdr, scene.display, reference.backdrop);
     ASSERT_EQ(shown.rgba.size(), render.ldr.rgba.size());

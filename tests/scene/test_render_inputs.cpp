@@ -12,6 +12,12 @@
 namespace patina {
 namespace {
 
+// `scene` as prepared with its built-in mesh, or `mesh`, and `environment`.
+RenderInputs inputsOf(const Scene& scene, std::shared_ptr<const Mesh> mesh = nullptr,
+                      std::shared_ptr<const Environment> environment = nullptr) {
+    return renderInputs({scene, mesh ? mesh : builtinMesh(scene.mesh), std::move(environment)});
+}
+
 TEST(RenderInputs, NamesAndUnknownKeysDrawNothing) {
     const Scene scene = defaultScene();
     Scene renamed = scene;
@@ -23,7 +29,7 @@ TEST(RenderInputs, NamesAndUnknownKeysDrawNothing) {
     renamed.camera.extras["lens"] = "50mm";
     renamed.display.extras["grain"] = true;
     renamed.extras["author"] = "someone";
-    EXPECT_EQ(renderInputs(renamed), renderInputs(scene));
+    EXPECT_EQ(inputsOf(renamed), inputsOf(scene));
 }
 
 TEST(RenderInputs, EverythingDrawnChangesThem) {
@@ -42,24 +48,27 @@ TEST(RenderInputs, EverythingDrawnChangesThem) {
         {"tone map", [](Scene& s) { s.display.tonemap = Tonemap::Aces; }},
         {"background", [](Scene& s) { s.display.background = glm::vec3(1.0f); }},
         {"built-in mesh", [](Scene& s) { s.mesh = MeshKind::Torus; }},
-        {"a mesh of its own", [](Scene& s) { s.resolvedMesh = std::make_shared<const Mesh>(makeUvSphere(8, 16)); }},
+        {"environment source", [](Scene& s) { s.lights[2].source = "builtin:white"; }},
     };
-    const RenderInputs original = renderInputs(scene);
+    const RenderInputs original = inputsOf(scene);
     for (const auto& [what, change] : changes) {
         Scene changed = scene;
         change(changed);
-        EXPECT_FALSE(renderInputs(changed) == original) << what;
+        EXPECT_FALSE(inputsOf(changed) == original) << what;
     }
+    // What was loaded for it: another mesh, another environment.
+    EXPECT_FALSE(inputsOf(scene, std::make_shared<const Mesh>(makeUvSphere(8, 16))) == original);
+    EXPECT_FALSE(inputsOf(scene, nullptr, std::make_shared<const Environment>()) == original);
     // A disabled light draws nothing, whatever its values.
     Scene off = scene;
     off.lights[1].enabled = false;
     Scene offAndChanged = off;
     offAndChanged.lights[1].intensity = 99.0f;
-    EXPECT_EQ(renderInputs(offAndChanged), renderInputs(off));
-    // The built-in mesh is one shared mesh, resolved or not.
-    Scene resolved = scene;
-    resolved.resolvedMesh = builtinMesh(scene.mesh);
-    EXPECT_EQ(renderInputs(resolved), original);
+    EXPECT_EQ(inputsOf(offAndChanged), inputsOf(off));
+    // A disabled environment light draws nothing, whatever was loaded for it.
+    Scene dark = scene;
+    dark.lights[2].enabled = false;
+    EXPECT_EQ(inputsOf(dark, nullptr, std::make_shared<const Environment>()), inputsOf(dark));
 }
 
 }  // namespace

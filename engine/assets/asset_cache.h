@@ -1,0 +1,54 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "environment/environment.h"
+#include "geometry/mesh.h"
+#include "gltf/import.h"
+#include "scene/scene.h"
+
+namespace patina {
+
+// What scenes name, loaded once and shared: glTF models and environments. The caller owns
+// the cache (a CLI command one for its run, the editor one for its session, each test its
+// own); nothing is cached process-wide, and the renderer never loads.
+//
+// A file is known by its path and its contents (a hash of its bytes, read on every call), an
+// environment also by its settings: the same file asked again is the same object, a file
+// rewritten is loaded again. A .gltf's external buffers count through the .gltf itself only.
+// Files are shared while someone holds them (a weak entry each); built-in environments, few
+// and costly to make, are kept for the cache's life. Safe to use from several threads (the
+// editor's environment worker): loading runs outside the lock.
+class AssetCache {
+public:
+    AssetCache() = default;
+    AssetCache(const AssetCache&) = delete;
+    AssetCache& operator=(const AssetCache&) = delete;
+
+    // A glTF model (gltf/import.h); InputError naming the file when it cannot be loaded.
+    std::shared_ptr<const GltfImport> model(const std::filesystem::path& path);
+    // The triangles `scene` shows: its glTF file's, else the built-in kind's.
+    std::shared_ptr<const Mesh> mesh(const Scene& scene);
+    // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
+    // the disk cache of image/environment_source.h. A note about replaced pixels goes to
+    // `warnings` each time. InputError naming the file when it cannot be read or decoded;
+    // null when `progress` stopped it.
+    std::shared_ptr<const Environment> environment(const std::string& source, std::vector<std::string>& warnings,
+                                                   const EnvironmentSettings& settings = {},
+                                                   const Progress& progress = {});
+
+private:
+    using Key = std::pair<std::string, uint64_t>;   // the path or source, the contents' hash
+    std::mutex mutex_;
+    std::map<Key, std::weak_ptr<const GltfImport>> models_;
+    std::map<Key, std::weak_ptr<const Environment>> environments_;
+    std::map<Key, std::shared_ptr<const Environment>> builtins_;
+};
+
+}  // namespace patina

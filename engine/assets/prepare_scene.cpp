@@ -1,0 +1,11 @@
+#include "assets/prepare_scene.h"
+
+namespace patina {
+
+PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings) {
+    const Light* light = enabledEnvironment(scene);
+    std::shared_ptr<const Environment> environment = light ? cache.environment(light->source, warnings) : nullptr;
+    return {scene, cache.mesh(scene), std::move(environment)};
+}
+
+}  // namespace patina

@@ -1,0 +1,180 @@
+// The assets layer: what a scene names, loaded once through a cache its caller owns, and the
+// prepared scene the renderer draws without loading anything itself.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "assets/asset_cache.h"
+#include "assets/prepare_scene.h"
+#include "gltf/export.h"
+#include "io/input_error.h"
+#include "scratch_test.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of its own for the environments' disk cache, so nothing is read from a user's.
+class Assets : public test::ScratchTest {
+protected:
+    void SetUp() override {
+        ScratchTest::SetUp();
+        if (const char* kept = std::getenv("PATINA_CACHE_DIR")) {
+            kept_ = kept;
+        }
+        setenv("PATINA_CACHE_DIR", path("cache").c_str(), 1);
+    }
+    void TearDown() override {
+        if (kept_) {
+            setenv("PATINA_CACHE_DIR", kept_->c_str(), 1);
+        } else {
+            unsetenv("PATINA_CACHE_DIR");
+        }
+        ScratchTest::TearDown();
+    }
+
+    // A scene showing `mesh` (a glTF file, or none for the sphere) under `environment` alone.
+    static Scene sceneOf(const std::string& mesh, const std::string& environment) {
+        Scene scene;
+        scene.meshFile = mesh;
+        Light light;
+        light.type = LightType::Environment;
+        light.source = environment;
+        scene.lights = {light};
+        return scene;
+    }
+
+    std::optional<std::string> kept_;
+};
+
+// The InputError's message, or "" when `load` throws none.
+template <typename Load>
+std::string inputErrorOf(Load&& load) {
+    try {
+        load();
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "";
+}
+
+TEST_F(Assets, TheSameFileIsLoadedOnce) {
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    test::writeFlatHdr(path("sky.hdr"), 32, 16, 100);
+    const auto sky = cache.environment(path("sky.hdr").string(), warnings);
+    ASSERT_TRUE(sky);
+    EXPECT_EQ(sky->source, path("sky.hdr").string());
+    EXPECT_EQ(cache.environment(path("sky.hdr").string(), warnings), sky);
+
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    const auto model = cache.model(path("torus.glb"));
+    EXPECT_EQ(cache.model(path("torus.glb")), model);
+    const Scene scene = sceneOf(path("torus.glb").string(), "builtin:white");
+    EXPECT_EQ(cache.mesh(scene).get(), &model->mesh);
+    EXPECT_EQ(cache.mesh(scene)->positions.size(), makeTorus().positions.size());
+}
+
+TEST_F(Assets, AChangedFileIsLoadedAgain) {
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    test::writeFlatHdr(path("sky.hdr"), 32, 16, 100);
+    const auto before = cache.environment(path("sky.hdr").string(), warnings);
+    test::writeFlatHdr(path("sky.hdr"), 32, 16, 200);   // same size, other contents
+    const auto after = cache.environment(path("sky.hdr").string(), warnings);
+    EXPECT_NE(after, before);
+    EXPECT_GT(after->image.rgb[0], before->image.rgb[0]);
+
+    exportGltf(path("model.glb"), makeTorus(), Material{});
+    const auto torus = cache.model(path("model.glb"));
+    exportGltf(path("model.glb"), makeUvSphere(), Material{});
+    const auto sphere = cache.model(path("model.glb"));
+    EXPECT_NE(sphere, torus);
+    EXPECT_EQ(sphere->mesh.positions.size(), makeUvSphere().positions.size());
+}
+
+TEST_F(Assets, BuiltInsAreKeptForTheCachesLifeAndNoOtherCacheShares) {
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    // Not held by anyone between the calls, and the same object all the same.
+    const Environment* studio = cache.environment("builtin:studio", warnings).get();
+    EXPECT_EQ(cache.environment("builtin:studio", warnings).get(), studio);
+    // Nothing is shared between caches: each caller owns what it loaded.
+    AssetCache other;
+    EXPECT_NE(other.environment("builtin:studio", warnings).get(), studio);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST_F(Assets, AMissingOrBrokenFileIsAnInputErrorNamingIt) {
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    const std::string sky = path("sky.hdr").string(), model = path("model.glb").string();
+
+    const Scene noModel = sceneOf(model, "builtin:studio");
+    std::string message = inputErrorOf([&] { prepareScene(noModel, cache, warnings); });
+    EXPECT_NE(message.find(model), std::string::npos) << message;
+
+    const Scene noSky = sceneOf("", sky);
+    message = inputErrorOf([&] { prepareScene(noSky, cache, warnings); });
+    EXPECT_NE(message.find(sky), std::string::npos) << message;
+
+    std::ofstream(sky, std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16 +X 32\n";   // no pixels
+    message = inputErrorOf([&] { prepareScene(noSky, cache, warnings); });
+    EXPECT_NE(message.find(sky), std::string::npos) << message;
+
+    std::ofstream(model, std::ios::binary) << "glTF";   // truncated
+    message = inputErrorOf([&] { prepareScene(noModel, cache, warnings); });
+    EXPECT_NE(message.find(model), std::string::npos) << message;
+
+    const Scene unknown = sceneOf("", "builtin:nowhere");
+    message = inputErrorOf([&] { prepareScene(unknown, cache, warnings); });
+    EXPECT_NE(message.find("builtin:nowhere"), std::string::npos) << message;
+}
+
+TEST_F(Assets, APreparedSceneHoldsWhatItsDocumentNames) {
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    Scene scene = sceneOf(path("torus.glb").string(), "builtin:studio");
+    const PreparedScene prepared = prepareScene(scene, cache, warnings);
+    EXPECT_EQ(&prepared.scene, &scene);
+    EXPECT_EQ(prepared.mesh->positions.size(), makeTorus().positions.size());
+    ASSERT_TRUE(prepared.environment);
+    EXPECT_EQ(prepared.environment->source, "builtin:studio");
+    // No enabled environment light: nothing loaded for one; a built-in mesh: the shared one.
+    scene.lights[0].enabled = false;
+    scene.meshFile.clear();
+    const PreparedScene dark = prepareScene(scene, cache, warnings);
+    EXPECT_FALSE(dark.environment);
+    EXPECT_EQ(dark.mesh, builtinMesh(MeshKind::Sphere));
+}
+
+TEST_F(Assets, TheRendererDrawsAPreparedSceneWithoutLoading) {
+    // Prepared, then the files are gone: the renderer reads nothing, so the image is the same.
+    test::glContext();
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    test::writeFlatHdr(path("sky.hdr"), 32, 16, 100);
+    Scene scene = sceneOf(path("torus.glb").string(), path("sky.hdr").string());
+    scene.display.backgroundFromEnvironment = true;
+    const PreparedScene prepared = prepareScene(scene, cache, warnings);
+    Renderer renderer;
+    const RenderSettings settings = test::renderSettings(48, 48, RenderPath::Single, 1);
+    const LdrImage before = renderer.render(prepared, settings).ldr;
+    fs::remove(path("torus.glb"));
+    fs::remove(path("sky.hdr"));
+    EXPECT_EQ(renderer.render(prepared, settings).ldr.rgba, before.rgba);
+    Renderer fresh;
+    EXPECT_EQ(fresh.render(prepared, settings).ldr.rgba, before.rgba);
+}
+
+}  // namespace
+}  // namespace patina
