@@ -12,7 +12,6 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
-#include "common/enum_names.h"
 #include "scene/light_packing.h"
 #include "scene/view.h"
 #include "gl/environment_texture.h"
@@ -36,20 +35,6 @@ extern const char* const environment_glsl;
 extern const char* const ibl_glsl;
 extern const char* const background_frag;
 }  // namespace shader_sources
-
-std::string_view renderPathName(RenderPath mode) {
-    switch (mode) {
-    case RenderPath::Single: return "single";
-    case RenderPath::Multi: return "multi";
-    case RenderPath::Specialised: return "specialised";
-    }
-    return "single";
-}
-
-std::optional<RenderPath> renderPathFromName(std::string_view name) {
-    static const RenderPath all[] = {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised};
-    return enumFromName(name, all, renderPathName);
-}
 
 namespace {
 // Binds again, however the scope is left, the framebuffer that was bound when it began. A draw
