@@ -16,7 +16,7 @@
 #include "editor_settings.h"
 #include "frame_stats.h"
 #include "panel_guard.h"
-#include "panels.h"
+#include "panels/panels.h"
 #include "ui_scale.h"
 #include "widgets.h"
 

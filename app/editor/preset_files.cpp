@@ -4,7 +4,7 @@
 #include <system_error>
 
 #include "io/scene_file.h"
-#include "file_dialog.h"
+#include "text_match.h"
 #include "save_errors.h"
 
 namespace patina::editor {
