@@ -8,10 +8,9 @@
 
 namespace patina::editor {
 
-void drawDialogs(EditorState& state, EditorServices& services) {
-    drawPathDialog(state, services);
-
-    // The last session's work, offered before anything else.
+namespace {
+// The last session's work, offered before anything else.
+void drawRestorePrompt(EditorState& state) {
     if (state.recoverable && !ImGui::IsPopupOpen("Restore unsaved work?")) {
         ImGui::OpenPopup("Restore unsaved work?");
     }
@@ -37,96 +36,84 @@ void drawDialogs(EditorState& state, EditorServices& services) {
         }
         ImGui::EndPopup();
     }
+}
 
-    // Unsaved changes are never dropped without asking. While a Save as started from the
-    // prompt is open, the open or quit waits for it, and goes on once nothing is unsaved.
+// What was waiting on the prompt goes on: the open, the new document or the quit.
+void proceed(EditorState& state) {
+    if (state.pendingOpen) {
+        openFile(state, *state.pendingOpen);
+    } else if (state.pendingNew) {
+        newDocument(state);
+    } else {
+        state.quitConfirmed = true;
+    }
+    state.pendingOpen.reset();
+    state.pendingNew = false;
+    state.pendingQuit = false;
+}
+
+// The prompt's Save: the whole scene when more than the material changed; a file first if it
+// has none.
+void saveForPrompt(EditorState& state) {
+    if (state.sceneChanged() || !state.scenePath.empty()) {
+        saveSceneDocument(state);
+    } else {
+        save(state);
+    }
+}
+
+// Unsaved changes are never dropped without asking. While a Save as started from the prompt is
+// open, the open or quit waits for it, and goes on once nothing is unsaved.
+void drawUnsavedPrompt(EditorState& state) {
     const bool asking = state.pendingOpen.has_value() || state.pendingNew || state.pendingQuit;
-    auto proceed = [&] {
-        if (state.pendingOpen) {
-            openFile(state, *state.pendingOpen);
-        } else if (state.pendingNew) {
-            newDocument(state);
-        } else {
-            state.quitConfirmed = true;
-        }
-        state.pendingOpen.reset();
-        state.pendingNew = false;
-        state.pendingQuit = false;
-    };
     if (asking && state.pathDialog == EditorState::PathDialog::None && !ImGui::IsPopupOpen("Unsaved changes")) {
         if (!state.dirty()) {
-            proceed();
+            proceed(state);
         } else {
             ImGui::OpenPopup("Unsaved changes");
         }
     }
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        const std::string parts = unsavedParts(state);
-        if (parts.empty()) {
-            ImGui::TextUnformatted("Nothing is unsaved.");
-        } else {
-            ImGui::Text("Unsaved changes to %s.", parts.c_str());
-        }
-        ImGui::TextDisabled(state.sceneChanged() ? "Save writes the scene, its material inline."
-                                                 : "Save writes the material.");
-        if (ImGui::Button("Save")) {
-            // The whole scene when more than the material changed; a file first if it has none.
-            ImGui::CloseCurrentPopup();
-            if (state.sceneChanged() || !state.scenePath.empty()) {
-                saveSceneDocument(state);
-            } else {
-                save(state);
-            }
-            if (!state.dirty()) {
-                proceed();
-            }
-        }
-        recordItem("Save changes");
-        ImGui::SameLine();
-        if (ImGui::Button("Discard changes")) {
-            proceed();
-            ImGui::CloseCurrentPopup();
-        }
-        recordItem("Discard changes");
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) {
-            state.pendingOpen.reset();
-            state.pendingNew = false;
-            state.pendingQuit = false;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        return;
     }
+    const std::string parts = unsavedParts(state);
+    if (parts.empty()) {
+        ImGui::TextUnformatted("Nothing is unsaved.");
+    } else {
+        ImGui::Text("Unsaved changes to %s.", parts.c_str());
+    }
+    ImGui::TextDisabled(state.sceneChanged() ? "Save writes the scene, its material inline."
+                                             : "Save writes the material.");
+    if (ImGui::Button("Save")) {
+        ImGui::CloseCurrentPopup();
+        saveForPrompt(state);
+        if (!state.dirty()) {
+            proceed(state);
+        }
+    }
+    recordItem("Save changes");
+    ImGui::SameLine();
+    if (ImGui::Button("Discard changes")) {
+        proceed(state);
+        ImGui::CloseCurrentPopup();
+    }
+    recordItem("Discard changes");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+        state.pendingOpen.reset();
+        state.pendingNew = false;
+        state.pendingQuit = false;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+}  // namespace
 
-    if (state.showShortcuts) {
-        // Centred and sized to its rows, never larger than the window.
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-        ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(display.x - px(20), display.y - px(20)));
-        if (ImGui::Begin("Shortcuts", &state.showShortcuts, ImGuiWindowFlags_AlwaysAutoResize)) {
-            const char* rows[][2] = {
-                {"Ctrl+N", "new scene"}, {"Ctrl+O", "open a material, scene, screenshot, glTF or environment"},
-                {"Ctrl+S", "save (the scene, if one is open; else the material)"},
-                {"Ctrl+Shift+S", "save the material as"}, {"Ctrl+Alt+S", "save the scene"}, {"Ctrl+Z", "undo"},
-                {"Ctrl+Shift+Z, Ctrl+Y", "redo"}, {"F12", "screenshot of the viewport"},
-                {"Delete", "delete the selected light"}, {"F", "frame the mesh (viewport)"},
-                {"Left drag", "orbit; on a light: move it"}, {"Middle or Shift+left drag", "pan"}, {"Right drag", "turn the environment (lighting and background)"},
-                {"Wheel", "zoom"}, {"Ctrl+click a slider", "type a value"},
-                {"Right-click Reset", "back to the default"}, {"F1", "this list (Escape closes it)"},
-                {"Ctrl+Q", "quit"}};
-            if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_SizingFixedFit)) {
-                for (const auto& row : rows) {
-                    ImGui::TableNextColumn();
-                    ImGui::TextUnformatted(row[0]);
-                    ImGui::TableNextColumn();
-                    ImGui::TextDisabled("%s", row[1]);
-                }
-                ImGui::EndTable();
-            }
-            recordItem("shortcuts");
-        }
-        ImGui::End();
-    }
+void drawDialogs(EditorState& state, EditorServices& services) {
+    drawPathDialog(state, services);
+    drawRestorePrompt(state);
+    drawUnsavedPrompt(state);
+    drawShortcutsWindow(state);
 }
 
 }  // namespace patina::editor

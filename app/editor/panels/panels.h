@@ -14,6 +14,8 @@ void drawPresetsPanel(EditorState& state, EditorServices& services);
 void drawMenuBar(EditorState& state, EditorServices& services);
 void drawDialogs(EditorState& state, EditorServices& services);
 void handleShortcuts(EditorState& state, EditorServices& services);
+// F1's list of the keys, while state.showShortcuts.
+void drawShortcutsWindow(EditorState& state);
 
 // The whole editor for one frame: menu, panels around the viewport, dialogs, shortcuts, and
 // the undo commit once no widget is active.
