@@ -116,6 +116,7 @@ public:
 
 private:
     struct State;
+    struct Frame;   // one draw, strip by strip (renderer.cpp)
     std::unique_ptr<State> state_;
     RenderTarget own_;
     using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
