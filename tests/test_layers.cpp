@@ -164,7 +164,10 @@ TEST(Layers, NoProductLayerReachesTheMeasurements) {
 TEST(Layers, TheEditorIncludesNoBenchmarkCode) {
     const fs::path editor = fs::path(PATINA_SOURCE_DIR) / "app" / "editor";
     const std::regex bench(R"(^\s*#\s*include\s*"bench/)");
-    for (const auto& source : fs::directory_iterator(editor)) {
+    for (const auto& source : fs::recursive_directory_iterator(editor)) {   // panels/ too
+        if (!source.is_regular_file()) {
+            continue;
+        }
         std::ifstream in(source.path());
         int number = 0;
         for (std::string line; std::getline(in, line);) {

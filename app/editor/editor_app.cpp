@@ -16,7 +16,7 @@
 #include "editor_settings.h"
 #include "frame_stats.h"
 #include "panel_guard.h"
-#include "panels.h"
+#include "panels/panels.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
@@ -60,6 +60,185 @@ std::optional<std::chrono::milliseconds> earliest(std::optional<std::chrono::mil
                                                   std::optional<std::chrono::milliseconds> b) {
     return a && b ? std::min(*a, *b) : a ? a : b;
 }
+
+// The window, sized for the monitor it opens on (a laptop's 1366 x 768 holds the default window
+// whole), with its GL context current; null, said on stderr, when it cannot be made.
+GLFWwindow* openWindow(WindowGeometry& geometry) {
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        int x = 0, y = 0, workWidth = 0, workHeight = 0;
+        float scaleX = 1.0f, scaleY = 1.0f;
+        glfwGetMonitorWorkarea(monitor, &x, &y, &workWidth, &workHeight);
+        glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
+        geometry = windowSizeFor(geometry, workWidth, workHeight, scaleX);
+    } else {
+        geometry = windowSizeFor(geometry, 0, 0, 1.0f);
+    }
+    GLFWwindow* window = glfwCreateWindow(geometry.width, geometry.height, "Patina", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "error: cannot create an OpenGL 3.3 window\n";
+        return nullptr;
+    }
+    glfwMakeContextCurrent(window);
+    return window;
+}
+
+void startImGui(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;   // panel sizes persist in settings.json instead
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+void stopImGui() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+// What the loop carries from one frame to the next.
+struct Loop {
+    GLFWwindow* window;
+    WindowInput& input;
+    EditorState& state;
+    EditorServices& services;
+    WindowGeometry& geometry;
+    SettingsWriter settingsWriter;
+    FrameStats stats;
+    const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
+    std::string title{};   // the window's, as last set
+    int framesLeft = kFramesAfterInput;
+    float appliedScale = 0.0f;   // none yet
+    std::optional<std::chrono::milliseconds> autosaveDue{}, settingsDue{};
+    std::string shownMessages = state.status + '\n' + state.error;
+};
+
+// A few frames after input, then asleep until input, or until a change waiting to be written
+// is due.
+void waitForEvents(Loop& loop) {
+    if (loop.framesLeft > 0) {
+        glfwPollEvents();
+        return;
+    }
+    const std::optional<std::chrono::milliseconds> due = earliest(loop.autosaveDue, loop.settingsDue);
+    if (loop.state.environmentLoad) {
+        glfwWaitEventsTimeout(0.1);   // the load's progress, and its end, are shown
+    } else if (due) {
+        glfwWaitEventsTimeout(std::chrono::duration<double>(*due).count() + 0.01);
+    } else {
+        glfwWaitEvents();
+    }
+    loop.framesLeft = kFramesAfterInput;
+}
+
+// The window's close button, dropped files and keys, handed to the editor.
+void takeInput(Loop& loop) {
+    EditorState& state = loop.state;
+    if (glfwWindowShouldClose(loop.window)) {
+        glfwSetWindowShouldClose(loop.window, GLFW_FALSE);
+        state.pendingQuit = true;
+    }
+    // A file dropped while a prompt is up waits for it: nothing edits the document behind one.
+    std::vector<std::filesystem::path>& dropped = loop.input.droppedFiles;
+    while (!dropped.empty() && !promptOpen(state)) {
+        requestOpen(state, dropped.front());
+        dropped.erase(dropped.begin());
+    }
+    loop.services.keyPresses.swap(loop.input.keyPresses);
+    loop.input.keyPresses.clear();
+}
+
+// The UI's scale follows the monitor the window is on and the View menu's setting; the font
+// atlas is rebuilt between frames when it changes.
+void followUiScale(Loop& loop) {
+    float contentScale = 1.0f, unused = 1.0f;
+    glfwGetWindowContentScale(loop.window, &contentScale, &unused);
+    const float scale = uiScaleFor(contentScale, loop.state.uiScaleSetting);
+    if (scale == loop.appliedScale) {
+        return;
+    }
+    if (const std::string message = applyUiScale(scale); !message.empty()) {
+        loop.state.status = message;
+    }
+    if (loop.appliedScale > 0.0f) {   // the first frame's NewFrame makes the texture
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+    loop.appliedScale = scale;
+}
+
+void drawFrame(Loop& loop) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    // Each panel catches its own errors (drawGuarded); this is the last resort for anything
+    // between them, with ImGui's stacks closed so the frame still ends cleanly.
+    try {
+        drawEditorFrame(loop.state, loop.services);
+    } catch (const std::exception& error) {
+        recoverFrame();
+        loop.state.error = error.what();
+    }
+    ImGui::Render();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(loop.window, &width, &height);
+    glViewport(0, 0, width, height);
+    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(loop.window);
+}
+
+// Through a temporary file and a rename: a reader never sees half a dump.
+void dumpLayout(const char* path) {
+    const std::string json = layoutJson();
+    try {
+        writeFileAtomic(path, std::vector<uint8_t>(json.begin(), json.end()));
+    } catch (const std::exception&) {
+        // Automation's aid only: a dump that cannot be written is no reason to stop.
+    }
+}
+
+// The title, the layout dump, and what is written when due: the autosave and the settings.
+void afterFrame(Loop& loop) {
+    EditorState& state = loop.state;
+    if (const std::string wanted = windowTitle(state); wanted != loop.title) {
+        glfwSetWindowTitle(loop.window, wanted.c_str());
+        loop.title = wanted;
+    }
+    if (loop.layoutDump) {
+        dumpLayout(loop.layoutDump);
+    }
+    loop.autosaveDue = updateAutosave(state, AutosaveClock::now());
+    glfwGetWindowSize(loop.window, &loop.geometry.width, &loop.geometry.height);
+    loop.settingsDue = loop.settingsWriter.update(state, loop.geometry, SettingsWriter::Clock::now());
+    // A message set during this frame (a failed screenshot, an autosave error) is drawn now,
+    // not when the next input happens to wake the loop.
+    if (std::string messages = state.status + '\n' + state.error; messages != loop.shownMessages) {
+        loop.shownMessages = std::move(messages);
+        loop.framesLeft = std::max(loop.framesLeft, kFramesAfterInput);
+    }
+}
+
+// The session from the command line's files to a confirmed quit.
+void runSession(Loop& loop) {
+    while (!loop.state.quitConfirmed) {
+        waitForEvents(loop);
+        const FrameStats::Clock::time_point frameStart = FrameStats::Clock::now();
+        --loop.framesLeft;
+        takeInput(loop);
+        followUiScale(loop);
+        drawFrame(loop);
+        loop.stats.frameDone(
+            std::chrono::duration<double, std::milli>(FrameStats::Clock::now() - frameStart).count(),
+            ImGui::IsAnyItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
+        afterFrame(loop);
+    }
+}
 }  // namespace
 
 int runEditor(const EditorOptions& options) {
@@ -74,28 +253,11 @@ int runEditor(const EditorOptions& options) {
     loadSettings(state, geometry, settingsFile);
     state.userPresetFolder = configFolder() / "presets";
     state.presetFolders = {PATINA_PRESETS_DIR, state.userPresetFolder};
-
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    // Sized for the monitor it opens on: a laptop's 1366 x 768 holds the default window whole.
-    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
-        int x = 0, y = 0, workWidth = 0, workHeight = 0;
-        float scaleX = 1.0f, scaleY = 1.0f;
-        glfwGetMonitorWorkarea(monitor, &x, &y, &workWidth, &workHeight);
-        glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
-        geometry = windowSizeFor(geometry, workWidth, workHeight, scaleX);
-    } else {
-        geometry = windowSizeFor(geometry, 0, 0, 1.0f);
-    }
-    GLFWwindow* window = glfwCreateWindow(geometry.width, geometry.height, "Patina", nullptr, nullptr);
+    GLFWwindow* window = openWindow(geometry);
     if (!window) {
-        std::cerr << "error: cannot create an OpenGL 3.3 window\n";
         glfwTerminate();
         return 1;
     }
-    glfwMakeContextCurrent(window);
     // Environments made ready on this (the UI) thread, as a scene opens, prefilter on the GPU;
     // files chosen in the light list are prepared on a worker, on the CPU, while this draws.
     setThreadPrefilter(prefilterCubeOnGpu);
@@ -104,128 +266,24 @@ int runEditor(const EditorOptions& options) {
     glfwSetWindowUserPointer(window, &input);
     glfwSetDropCallback(window, onDrop);
     glfwSetKeyCallback(window, onKey);
-
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;   // panel sizes persist in settings.json instead
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-
-    int exitCode = 0;
+    startImGui(window);
     {
         EditorServices services(state.assets);
         openFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
         startAutosave(state, configFolder() / "autosave");
-        const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
-        std::string title;
-        int framesLeft = kFramesAfterInput;
-        float appliedScale = 0.0f;   // none yet
-        std::optional<std::chrono::milliseconds> autosaveDue, settingsDue;
-        SettingsWriter settingsWriter(state, geometry, settingsFile);
-        std::string shownMessages = state.status + '\n' + state.error;
-        FrameStats stats(options.stats ? &std::cerr : nullptr, options.start);
-        while (!state.quitConfirmed) {
-            if (framesLeft <= 0) {
-                // Asleep until input, or until a change waiting to be written is due.
-                const std::optional<std::chrono::milliseconds> due = earliest(autosaveDue, settingsDue);
-                if (state.environmentLoad) {
-                    glfwWaitEventsTimeout(0.1);   // the load's progress, and its end, are shown
-                } else if (due) {
-                    glfwWaitEventsTimeout(std::chrono::duration<double>(*due).count() + 0.01);
-                } else {
-                    glfwWaitEvents();
-                }
-                framesLeft = kFramesAfterInput;
-            } else {
-                glfwPollEvents();
-            }
-            const FrameStats::Clock::time_point frameStart = FrameStats::Clock::now();
-            --framesLeft;
-            if (glfwWindowShouldClose(window)) {
-                glfwSetWindowShouldClose(window, GLFW_FALSE);
-                state.pendingQuit = true;
-            }
-            // A file dropped while a prompt is up waits for it: nothing edits the document behind one.
-            while (!input.droppedFiles.empty() && !promptOpen(state)) {
-                requestOpen(state, input.droppedFiles.front());
-                input.droppedFiles.erase(input.droppedFiles.begin());
-            }
-            services.keyPresses.swap(input.keyPresses);
-            input.keyPresses.clear();
-            // The UI's scale follows the monitor the window is on and the View menu's setting;
-            // the font atlas is rebuilt between frames when it changes.
-            float contentScale = 1.0f, unused = 1.0f;
-            glfwGetWindowContentScale(window, &contentScale, &unused);
-            if (const float scale = uiScaleFor(contentScale, state.uiScaleSetting); scale != appliedScale) {
-                if (const std::string message = applyUiScale(scale); !message.empty()) {
-                    state.status = message;
-                }
-                if (appliedScale > 0.0f) {   // the first frame's NewFrame makes the texture
-                    ImGui_ImplOpenGL3_DestroyFontsTexture();
-                    ImGui_ImplOpenGL3_CreateFontsTexture();
-                }
-                appliedScale = scale;
-            }
-
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            // Each panel catches its own errors (drawGuarded); this is the last resort for
-            // anything between them, with ImGui's stacks closed so the frame still ends cleanly.
-            try {
-                drawEditorFrame(state, services);
-            } catch (const std::exception& error) {
-                recoverFrame();
-                state.error = error.what();
-            }
-            ImGui::Render();
-            int width = 0, height = 0;
-            glfwGetFramebufferSize(window, &width, &height);
-            glViewport(0, 0, width, height);
-            glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            glfwSwapBuffers(window);
-            stats.frameDone(
-                std::chrono::duration<double, std::milli>(FrameStats::Clock::now() - frameStart).count(),
-                ImGui::IsAnyItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
-
-            if (const std::string wanted = windowTitle(state); wanted != title) {
-                glfwSetWindowTitle(window, wanted.c_str());
-                title = wanted;
-            }
-            if (layoutDump) {
-                // Through a temporary file and a rename: a reader never sees half a dump.
-                const std::string json = layoutJson();
-                try {
-                    writeFileAtomic(layoutDump, std::vector<uint8_t>(json.begin(), json.end()));
-                } catch (const std::exception&) {
-                    // Automation's aid only: a dump that cannot be written is no reason to stop.
-                }
-            }
-            autosaveDue = updateAutosave(state, AutosaveClock::now());
-            glfwGetWindowSize(window, &geometry.width, &geometry.height);
-            settingsDue = settingsWriter.update(state, geometry, SettingsWriter::Clock::now());
-            // A message set during this frame (a failed screenshot, an autosave error) is drawn
-            // now, not when the next input happens to wake the loop.
-            if (std::string messages = state.status + '\n' + state.error; messages != shownMessages) {
-                shownMessages = std::move(messages);
-                framesLeft = std::max(framesLeft, kFramesAfterInput);
-            }
-        }
+        Loop loop{window, input, state, services, geometry, SettingsWriter(state, geometry, settingsFile),
+                  FrameStats(options.stats ? &std::cerr : nullptr, options.start)};
+        runSession(loop);
         removeAutosave(state);   // a clean quit: nothing to recover
-        stats.finish();
+        loop.stats.finish();
         if (!saveSettings(state, geometry, settingsFile)) {
             std::cerr << "warning: " << state.error << "\n";
         }
     }
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
+    stopImGui();
     glfwDestroyWindow(window);
     glfwTerminate();
-    return exitCode;
+    return 0;
 }
 
 }  // namespace patina::editor

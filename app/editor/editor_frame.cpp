@@ -6,7 +6,7 @@
 
 #include "panel_guard.h"
 #include "panel_layout.h"
-#include "panels.h"
+#include "panels/panels.h"
 #include "ui_scale.h"
 #include "widgets.h"
 

@@ -4,7 +4,7 @@
 #include <system_error>
 
 #include "io/scene_file.h"
-#include "file_dialog.h"
+#include "text_match.h"
 #include "save_errors.h"
 
 namespace patina::editor {
@@ -72,7 +72,7 @@ void confirmPresetRename(EditorState& state) {
         const std::filesystem::path renamed = renamePreset(old, name);
         if (state.materialPath == old) {   // saved as this preset: the document follows its file
             if (state.scene.material.name == state.savedMaterial.name) {
-                applyEdit(state, [&](EditorState& s) { s.scene.material.name = name; });
+                applyEdit(state, [&](Document& d) { d.scene.material.name = name; });
             }
             state.materialPath = renamed;
             state.savedMaterial.name = name;

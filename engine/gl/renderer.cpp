@@ -12,7 +12,6 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
-#include "common/enum_names.h"
 #include "scene/light_packing.h"
 #include "scene/view.h"
 #include "gl/environment_texture.h"
@@ -36,20 +35,6 @@ extern const char* const environment_glsl;
 extern const char* const ibl_glsl;
 extern const char* const background_frag;
 }  // namespace shader_sources
-
-std::string_view renderPathName(RenderPath mode) {
-    switch (mode) {
-    case RenderPath::Single: return "single";
-    case RenderPath::Multi: return "multi";
-    case RenderPath::Specialised: return "specialised";
-    }
-    return "single";
-}
-
-std::optional<RenderPath> renderPathFromName(std::string_view name) {
-    static const RenderPath all[] = {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised};
-    return enumFromName(name, all, renderPathName);
-}
 
 namespace {
 // Binds again, however the scope is left, the framebuffer that was bound when it began. A draw
@@ -250,47 +235,82 @@ void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading,
     glDepthMask(GL_TRUE);
 }
 
-unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& settings, RenderTarget& target) {
-    State& s = *state_;
-    const Scene& scene = prepared.scene;
-    // An error someone else left (the UI's own drawing, say) is not this draw's: take it off
-    // the queue so the check at the end reports only what this draw did.
-    while (glGetError() != GL_NO_ERROR) {
-    }
-    if (settings.width < 1 || settings.height < 1 || settings.width > s.maxSize ||
-        settings.height > s.maxSize) {
-        throw std::invalid_argument("image size " + std::to_string(settings.width) + "x" +
-                                    std::to_string(settings.height) + " is outside 1.." +
-                                    std::to_string(s.maxSize));
-    }
-    const FramebufferKept kept;
-    RenderTargets& t = *target.images_;
-    useMesh(s, prepared.mesh);
-    const Light* environmentLight = enabledEnvironment(scene);
-    const std::shared_ptr<const Environment> environmentMap =
-        environmentLight ? environmentShown(prepared.environment, environmentLight->source) : nullptr;
-    const bool environment = environmentLight != nullptr;
-    // A drawn background covers every pixel: nothing is left to fill around the mesh.
-    const bool environmentBackground = environment && scene.display.backgroundFromEnvironment;
-    RenderSettings planned = settings;
-    planned.cropToMesh = settings.cropToMesh && !environmentBackground;
-    const int w = settings.width, h = settings.height;
-    const FramePlan plan = planFrame(planned, scene.camera,
-                                     {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()}, s.maxSamples,
-                                     s.flatLightSlots);
-    const std::vector<shader::PackedLight> packed = packEnabledLights(scene.lights);
-    s.lights.upload(packed);
-    s.lights.bind();
+// One draw: its plan, the programs and lights it uses, and the strips it draws one by one. Made
+// in full before the first strip, so that everything that can throw (targets the GL cannot
+// make, a shader that does not compile) comes before the timer query starts and a failed draw
+// leaves no state behind.
+struct Renderer::Frame {
+    Frame(State& state, const PreparedScene& prepared, const RenderSettings& settings, RenderTargets& targets);
+    void draw();
+    bool keepsLinear() const { return plan.keepLinear; }
 
-    // Everything that can throw (targets the GL cannot make, a shader that does not compile)
-    // comes before the timer query starts, so a failed draw leaves no state behind.
+private:
+    void planDraw();
+    void choosePrograms();
+    void environmentUniforms(const GlProgram& program) const;
+    void prepare(const GlProgram& program) const;   // the per-draw uniforms of a mesh pass
+    void clearAroundMesh() const;
+    void drawStrip(int top);
+    void clearStrip(int top, const PixelRect& area);
+    void drawBackground(int top) const;
+    void displayStrip(int top, const PixelRect& area) const;
+
+    State& s;
+    const PreparedScene& prepared;
+    const Scene& scene;   // prepared.scene
+    const RenderSettings& settings;
+    RenderTargets& t;
+    const int w, h;
+    const Light* environmentLight = nullptr;
+    std::shared_ptr<const Environment> environmentMap;
+    bool environment = false;
+    bool environmentBackground = false;   // a drawn background covers every pixel
+    FramePlan plan;
+    std::vector<shader::PackedLight> packed;
+    const GlImage* linear = nullptr;
+    const GlProgram* displayPass = nullptr;
+    const GlProgram* shading = nullptr;
+    const GlProgram* backgroundPass = nullptr;
+    int exposureTonemap = 0;
+    glm::vec3 background{0.0f};
+    float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
+};
+
+Renderer::Frame::Frame(State& state, const PreparedScene& prepared, const RenderSettings& settings,
+                       RenderTargets& targets)
+    : s(state), prepared(prepared), scene(prepared.scene), settings(settings), t(targets), w(settings.width),
+      h(settings.height) {
+    useMesh(s, prepared.mesh);
+    planDraw();
     // Until this draw succeeds the target has nothing to read back.
     t.drawn = false;
     t.prepare(w, h, plan.stripRows, plan.samples, plan.keepLinear, plan.displayInPass);
-    const GlImage* linear = plan.keepLinear ? &t.linear : nullptr;
-    const GlProgram* displayPass = plan.msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
-                                   : plan.displayInPass ? nullptr
-                                                        : &s.display.get();
+    linear = plan.keepLinear ? &t.linear : nullptr;
+    choosePrograms();
+    exposureTonemap = tonemapShaderIndex(scene.display.tonemap);
+    background = scene.display.background;
+}
+
+// The environment shown, the frame plan, and the enabled lights uploaded.
+void Renderer::Frame::planDraw() {
+    environmentLight = enabledEnvironment(scene);
+    environmentMap = environmentLight ? environmentShown(prepared.environment, environmentLight->source) : nullptr;
+    environment = environmentLight != nullptr;
+    environmentBackground = environment && scene.display.backgroundFromEnvironment;
+    RenderSettings planned = settings;
+    planned.cropToMesh = settings.cropToMesh && !environmentBackground;   // nothing left to fill around the mesh
+    plan = planFrame(planned, scene.camera, {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()},
+                     s.maxSamples, s.flatLightSlots);
+    packed = packEnabledLights(scene.lights);
+    s.lights.upload(packed);
+    s.lights.bind();
+}
+
+// The display, shading and background programs (compiled on first use), the environment bound.
+void Renderer::Frame::choosePrograms() {
+    displayPass = plan.msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
+                  : plan.displayInPass ? nullptr
+                                       : &s.display.get();
     const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
@@ -305,21 +325,199 @@ unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& set
         key.environment = environment;
         return key;
     };
-    const GlProgram& shading =
-        settings.path == RenderPath::Single  ? s.shading.useSingle(model, singlePass, output)
-        : settings.path == RenderPath::Multi ? s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment)
-                                             : s.shading.useSpecialised(model, specialisation(), output);
+    shading = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output)
+              : settings.path == RenderPath::Multi
+                  ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment)
+                  : &s.shading.useSpecialised(model, specialisation(), output);
     if (settings.path == RenderPath::Multi) {
         s.depthPrepass.get();
     }
-    const GlProgram* backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
+    backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
     if (environment) {
         s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit);
         if (environmentShading.method == EnvironmentMethod::Stochastic) {
             s.environment.bindSource(environmentMap, ShadingPrograms::kEnvironmentSourceUnit);
         }
     }
+}
 
+void Renderer::Frame::environmentUniforms(const GlProgram& program) const {
+    if (environment) {
+        setEnvironmentUniforms(program, *environmentMap, *environmentLight, ShadingPrograms::kEnvironmentMapUnit);
+    }
+}
+
+void Renderer::Frame::prepare(const GlProgram& program) const {
+    environmentUniforms(program);
+    glUniform1f(program.uniform("uSampleStamp"), stamp);
+    glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
+    glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
+    setMaterialUniforms(program, scene.material);
+    if (plan.displayInPass) {
+        glUniform1f(program.uniform("uExposure"), scene.display.exposure);
+        glUniform1i(program.uniform("uTonemap"), exposureTonemap);
+    }
+}
+
+namespace {
+// Alpha 0: nothing drawn here, so the display pass shows the backdrop (display.frag).
+std::array<GLfloat, 4> clearLinearOf(glm::vec3 background) {
+    return {background.r, background.g, background.b, 0.0f};
+}
+
+std::array<GLfloat, 4> clearDisplayOf(glm::vec3 background) {
+    const glm::vec3 shown = shader::srgbColor(background);
+    return {shown.r, shown.g, shown.b, 1.0f};
+}
+}  // namespace
+
+// The pixels around the mesh's area, which no strip draws.
+void Renderer::Frame::clearAroundMesh() const {
+    if (plan.meshArea == PixelRect{0, 0, w, h}) {
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
+    if (linear) {
+        glClearBufferfv(GL_COLOR, 0, clearLinearOf(background).data());
+    }
+    glClearBufferfv(GL_COLOR, 1, clearDisplayOf(background).data());
+}
+
+void Renderer::Frame::draw() {
+    // The display image is bytes: a GL may dither what it writes there, and the bytes must
+    // be the display values rounded (a float image read back was never dithered).
+    glDisable(GL_DITHER);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    clearAroundMesh();
+    for (int top = 0; top < h; top += plan.stripRows) {
+        drawStrip(top);
+    }
+}
+
+// The rows [top, top + stripRows) of the image, where they cross the mesh's area.
+void Renderer::Frame::drawStrip(int top) {
+    const int rows = std::min(plan.stripRows, h - top);
+    const PixelRect area{plan.meshArea.x0, std::max(plan.meshArea.y0, top), plan.meshArea.x1,
+                         std::min(plan.meshArea.y1, top + rows)};
+    if (area.empty()) {
+        return;
+    }
+    clearStrip(top, area);
+    if (backgroundPass) {
+        drawBackground(top);
+    }
+    if (plan.culled != HiddenFaces::None) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(plan.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
+    }
+    drawPasses(s, settings.path, *shading, packed.size(), environment,
+               [this](const GlProgram& program) { prepare(program); });
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    if (displayPass) {
+        displayStrip(top, area);
+    }
+}
+
+// The strip's targets made ready: the sample stamp advanced, the viewport and scissor set, the
+// colours and depth cleared.
+void Renderer::Frame::clearStrip(int top, const PixelRect& area) {
+    glBindFramebuffer(GL_FRAMEBUFFER, t.shadingFramebuffer);
+    if (plan.msaa) {
+        if (t.sampleStamp.advance()) {
+            const GLfloat clearStamp[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+            glClearBufferfv(GL_COLOR, 0, clearStamp);   // the whole strip: no scissor yet
+        }
+        stamp = t.sampleStamp.value;
+    }
+    // The whole image's viewport, moved down so rows [top, top + rows) land in the strip;
+    // the scissor (which clears obey too) keeps to the area.
+    glViewport(0, -top, w, h);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    if (!plan.msaa && linear) {   // MSAA samples are stamped instead (RenderTargets::SampleStamp)
+        glClearBufferfv(GL_COLOR, 0, clearLinearOf(background).data());
+    }
+    if (plan.displayInPass) {
+        glClearBufferfv(GL_COLOR, 1, clearDisplayOf(background).data());
+    }
+    if (plan.depthTest) {
+        glEnable(GL_DEPTH_TEST);
+        const GLfloat clearDepth = 1.0f;
+        glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+    } else {
+        glDisable(GL_DEPTH_TEST);
+    }
+}
+
+// The environment behind the mesh, over the whole strip.
+void Renderer::Frame::drawBackground(int top) const {
+    const GlProgram& program = *backgroundPass;
+    glDisable(GL_DEPTH_TEST);
+    program.use();
+    environmentUniforms(program);
+    glUniformMatrix4fv(program.uniform("uInverseViewProjection"), 1, GL_FALSE,
+                       glm::value_ptr(glm::inverse(plan.transform)));
+    glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
+    glUniform4f(program.uniform("uViewport"), 0.0f, float(-top), float(w), float(h));
+    glUniform1f(program.uniform("uBlur"), scene.display.backgroundBlur);
+    glUniform1f(program.uniform("uSampleStamp"), stamp);
+    glUniform1f(program.uniform("uExposure"), scene.display.exposure);
+    glUniform1i(program.uniform("uTonemap"), exposureTonemap);
+    glBindVertexArray(s.emptyVertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    if (plan.depthTest) {
+        glEnable(GL_DEPTH_TEST);
+    }
+}
+
+// The display values of the strip starting at image row `top`, written within `area`.
+void Renderer::Frame::displayStrip(int top, const PixelRect& area) const {
+    glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
+    glViewport(0, 0, w, h);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0);
+    glDisable(GL_DEPTH_TEST);
+    displayPass->use();
+    glActiveTexture(GL_TEXTURE0);
+    if (plan.msaa) {
+        glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.samples.name);
+        glUniform1i(displayPass->uniform("uSamples"), 0);
+        glUniform1i(displayPass->uniform("uStripTop"), top);
+        glUniform1f(displayPass->uniform("uSampleStamp"), stamp);
+    } else {
+        glBindTexture(GL_TEXTURE_2D, t.linear.name);
+        glUniform1i(displayPass->uniform("uHdr"), 0);
+    }
+    glUniform3fv(displayPass->uniform("uBackground"), 1, glm::value_ptr(background));
+    glUniform1f(displayPass->uniform("uExposure"), scene.display.exposure);
+    glUniform1i(displayPass->uniform("uTonemap"), exposureTonemap);
+    glBindVertexArray(s.emptyVertexArray);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& settings, RenderTarget& target) {
+    State& s = *state_;
+    // An error someone else left (the UI's own drawing, say) is not this draw's: take it off
+    // the queue so the check at the end reports only what this draw did.
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    if (settings.width < 1 || settings.height < 1 || settings.width > s.maxSize ||
+        settings.height > s.maxSize) {
+        throw std::invalid_argument("image size " + std::to_string(settings.width) + "x" +
+                                    std::to_string(settings.height) + " is outside 1.." +
+                                    std::to_string(s.maxSize));
+    }
+    const FramebufferKept kept;
+    RenderTargets& t = *target.images_;
+    Frame frame(s, prepared, settings, t);
     // One pair of queries in flight: a draw while the last pair is unread goes untimed.
     lastGpuMilliseconds();
     const bool timed = !s.timerPending;
@@ -329,137 +527,8 @@ unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& set
             glFlush();
         }
     }
-    // The display image is bytes: a GL may dither what it writes there, and the bytes must
-    // be the display values rounded (a float image read back was never dithered).
-    glDisable(GL_DITHER);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    const int exposureTonemap = tonemapShaderIndex(scene.display.tonemap);
-    const glm::vec3 background = scene.display.background;
-    const glm::vec3 backgroundShown = shader::srgbColor(background);
-    // Alpha 0: nothing drawn here, so the display pass shows the backdrop (display.frag).
-    const GLfloat clearLinear[4] = {background.r, background.g, background.b, 0.0f};
-    const GLfloat clearDisplay[4] = {backgroundShown.r, backgroundShown.g, backgroundShown.b, 1.0f};
-    const GLfloat clearDepth = 1.0f;
-    const GLfloat clearStamp[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
-
-    auto environmentUniforms = [&](const GlProgram& program) {
-        if (environment) {
-            setEnvironmentUniforms(program, *environmentMap, *environmentLight,
-                                   ShadingPrograms::kEnvironmentMapUnit);
-        }
-    };
-    auto prepare = [&](const GlProgram& program) {
-        environmentUniforms(program);
-        glUniform1f(program.uniform("uSampleStamp"), stamp);
-        glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
-        glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
-        setMaterialUniforms(program, scene.material);
-        if (plan.displayInPass) {
-            glUniform1f(program.uniform("uExposure"), scene.display.exposure);
-            glUniform1i(program.uniform("uTonemap"), exposureTonemap);
-        }
-    };
-    // `area`: the pixels of the strip starting at image row `top` to write.
-    auto displayStrip = [&](int top, const PixelRect& area) {
-        glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
-        glViewport(0, 0, w, h);
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0);
-        glDisable(GL_DEPTH_TEST);
-        displayPass->use();
-        glActiveTexture(GL_TEXTURE0);
-        if (plan.msaa) {
-            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.samples.name);
-            glUniform1i(displayPass->uniform("uSamples"), 0);
-            glUniform1i(displayPass->uniform("uStripTop"), top);
-            glUniform1f(displayPass->uniform("uSampleStamp"), stamp);
-        } else {
-            glBindTexture(GL_TEXTURE_2D, t.linear.name);
-            glUniform1i(displayPass->uniform("uHdr"), 0);
-        }
-        glUniform3fv(displayPass->uniform("uBackground"), 1, glm::value_ptr(background));
-        glUniform1f(displayPass->uniform("uExposure"), scene.display.exposure);
-        glUniform1i(displayPass->uniform("uTonemap"), exposureTonemap);
-        glBindVertexArray(s.emptyVertexArray);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindVertexArray(0);
-        glDisable(GL_SCISSOR_TEST);
-    };
-    if (plan.meshArea != PixelRect{0, 0, w, h}) {
-        glBindFramebuffer(GL_FRAMEBUFFER, t.displayFramebuffer);
-        if (linear) {
-            glClearBufferfv(GL_COLOR, 0, clearLinear);
-        }
-        glClearBufferfv(GL_COLOR, 1, clearDisplay);
-    }
-    for (int top = 0; top < h; top += plan.stripRows) {
-        const int rows = std::min(plan.stripRows, h - top);
-        const PixelRect area{plan.meshArea.x0, std::max(plan.meshArea.y0, top), plan.meshArea.x1,
-                             std::min(plan.meshArea.y1, top + rows)};
-        if (area.empty()) {
-            continue;
-        }
-        glBindFramebuffer(GL_FRAMEBUFFER, t.shadingFramebuffer);
-        if (plan.msaa) {
-            if (t.sampleStamp.advance()) {
-                glClearBufferfv(GL_COLOR, 0, clearStamp);   // the whole strip: no scissor yet
-            }
-            stamp = t.sampleStamp.value;
-        }
-        // The whole image's viewport, moved down so rows [top, top + rows) land in the strip;
-        // the scissor (which clears obey too) keeps to the area.
-        glViewport(0, -top, w, h);
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
-        glDepthMask(GL_TRUE);
-        glDepthFunc(GL_LESS);
-        if (!plan.msaa && linear) {   // MSAA samples are stamped instead (RenderTargets::SampleStamp)
-            glClearBufferfv(GL_COLOR, 0, clearLinear);
-        }
-        if (plan.displayInPass) {
-            glClearBufferfv(GL_COLOR, 1, clearDisplay);
-        }
-        if (plan.depthTest) {
-            glEnable(GL_DEPTH_TEST);
-            glClearBufferfv(GL_DEPTH, 0, &clearDepth);
-        } else {
-            glDisable(GL_DEPTH_TEST);
-        }
-        if (backgroundPass) {
-            const GlProgram* background = backgroundPass;
-            glDisable(GL_DEPTH_TEST);
-            background->use();
-            environmentUniforms(*background);
-            glUniformMatrix4fv(background->uniform("uInverseViewProjection"), 1, GL_FALSE,
-                               glm::value_ptr(glm::inverse(plan.transform)));
-            glUniform3fv(background->uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
-            glUniform4f(background->uniform("uViewport"), 0.0f, float(-top), float(w), float(h));
-            glUniform1f(background->uniform("uBlur"), scene.display.backgroundBlur);
-            glUniform1f(background->uniform("uSampleStamp"), stamp);
-            glUniform1f(background->uniform("uExposure"), scene.display.exposure);
-            glUniform1i(background->uniform("uTonemap"), exposureTonemap);
-            glBindVertexArray(s.emptyVertexArray);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glBindVertexArray(0);
-            if (plan.depthTest) {
-                glEnable(GL_DEPTH_TEST);
-            }
-        }
-        if (plan.culled != HiddenFaces::None) {
-            glEnable(GL_CULL_FACE);
-            glCullFace(plan.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
-        }
-        drawPasses(s, settings.path, shading, packed.size(), environment, prepare);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_SCISSOR_TEST);
-        if (displayPass) {
-            displayStrip(top, area);
-        }
-    }
-    glViewport(0, 0, w, h);
+    frame.draw();
+    glViewport(0, 0, settings.width, settings.height);
     glDisable(GL_DEPTH_TEST);
     if (timed) {
         glQueryCounter(s.timerQueries[1], GL_TIMESTAMP);
@@ -469,7 +538,7 @@ unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& set
         throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
     }
     t.drawn = true;
-    t.hasLinear = plan.keepLinear;
+    t.hasLinear = frame.keepsLinear();
     return t.display.name;
 }
 

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "gl/environment_method.h"
+#include "gl/render_path.h"
 #include "gl/shader_specialisation.h"
 #include "image/image.h"
 #include "geometry/mesh.h"
@@ -35,15 +36,6 @@ private:
     friend class Renderer;
     std::unique_ptr<RenderTargets> images_;
 };
-
-// multi: one additive pass per enabled light after a depth pre-pass (the seed's design);
-// single: every light in one pass from the LightBlock uniform buffer;
-// specialised: one pass compiled for the scene's light types and count (shader_specialisation.h).
-// The three agree to rounding.
-enum class RenderPath { Single, Multi, Specialised };
-std::string_view renderPathName(RenderPath mode);
-// single, multi or specialised.
-std::optional<RenderPath> renderPathFromName(std::string_view name);
 
 // The multisampled colour a one-off render (a file written, a screenshot) may take before it is
 // drawn in strips (RenderSettings::maxTargetBytes): its peak memory stays low at any size the
@@ -126,6 +118,7 @@ public:
 
 private:
     struct State;
+    struct Frame;   // one draw, strip by strip (renderer.cpp)
     std::unique_ptr<State> state_;
     RenderTarget own_;
     using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms

@@ -11,7 +11,7 @@
 
 #include "editor_settings.h"
 #include "editor_state.h"
-#include "file_dialog.h"
+#include "panels/file_dialog.h"
 #include "lobe_plot.h"
 #include "open_folder.h"
 #include "panel_layout.h"

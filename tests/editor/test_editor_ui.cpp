@@ -14,7 +14,7 @@
 #include "image/image.h"
 #include "gltf/export.h"
 #include "keys.h"
-#include "panels.h"
+#include "panels/panels.h"
 #include "preview_scene.h"
 #include "image/png_text.h"
 #include "scratch_test.h"

@@ -205,33 +205,30 @@ void editLight(Light& light) {
     case LightType::Environment: break;   // editEnvironment, which needs the scene
     }
 }
-}  // namespace
 
-void drawLightsPanel(EditorState& state, EditorServices& services) {
-    if (ImGui::Button("Add point")) {
-        addLight(state, LightType::Point);
+// The Add buttons, one a light type, wrapping onto more lines in a narrow panel.
+void drawAddButtons(EditorState& state) {
+    struct AddButton {
+        LightType type;
+        const char* label;
+        const char* tooltip;
+    };
+    static const AddButton buttons[] = {
+        {LightType::Point, "Add point", "A light from one point, like a bulb"},
+        {LightType::Sphere, "Add sphere", "A round light with a size, like a globe lamp: broad, soft highlights"},
+        {LightType::Tube, "Add tube", "A long light with a size, like a fluorescent tube"},
+        {LightType::Directional, "Add directional", "Parallel light from far away, like the sun"},
+        {LightType::Hemisphere, "Add hemisphere", "A sky colour above and a ground colour below"},
+    };
+    for (const AddButton& button : buttons) {
+        if (button.type != LightType::Point) {
+            sameLineIfFits(buttonWidth(button.label));
+        }
+        if (ImGui::Button(button.label)) {
+            addLight(state, button.type);
+        }
+        recordItem(button.label, button.tooltip);
     }
-    recordItem("Add point", "A light from one point, like a bulb");
-    sameLineIfFits(buttonWidth("Add sphere"));
-    if (ImGui::Button("Add sphere")) {
-        addLight(state, LightType::Sphere);
-    }
-    recordItem("Add sphere", "A round light with a size, like a globe lamp: broad, soft highlights");
-    sameLineIfFits(buttonWidth("Add tube"));
-    if (ImGui::Button("Add tube")) {
-        addLight(state, LightType::Tube);
-    }
-    recordItem("Add tube", "A long light with a size, like a fluorescent tube");
-    sameLineIfFits(buttonWidth("Add directional"));
-    if (ImGui::Button("Add directional")) {
-        addLight(state, LightType::Directional);
-    }
-    recordItem("Add directional", "Parallel light from far away, like the sun");
-    sameLineIfFits(buttonWidth("Add hemisphere"));
-    if (ImGui::Button("Add hemisphere")) {
-        addLight(state, LightType::Hemisphere);
-    }
-    recordItem("Add hemisphere", "A sky colour above and a ground colour below");
     sameLineIfFits(buttonWidth("Add environment"));
     const bool hasEnvironment = editedEnvironment(state) != nullptr;
     ImGui::BeginDisabled(hasEnvironment);   // a scene has one at most
@@ -242,48 +239,59 @@ void drawLightsPanel(EditorState& state, EditorServices& services) {
     recordItem("Add environment", hasEnvironment ? "Light from a whole surrounding image (HDR). The scene has one "
                                                    "already: change its source in the list"
                                                  : "Light from a whole surrounding image (HDR)");
+}
 
-    std::vector<Light>& lights = state.scene.lights;
-    if (ImGui::BeginTable("lights", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
-        ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed);
-        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableSetupColumn("solo", ImGuiTableColumnFlags_WidthFixed);
-        for (int i = 0; i < int(lights.size()); ++i) {
-            ImGui::PushID(i);
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            // A light solo leaves out is greyed out, still there to pick.
-            const bool faded = soloedOut(state, i);
-            ImGui::PushStyleVar(ImGuiStyleVar_Alpha, faded ? ImGui::GetStyle().DisabledAlpha : 1.0f);
-            const std::string id = "light:" + std::to_string(i);
-            ImGui::Checkbox("##enabled", &lights[size_t(i)].enabled);
-            recordItem(id + " enabled", "Whether this light shines");
-            ImGui::TableNextColumn();
-            const std::string label = std::string(typeIcon(lights[size_t(i)].type)) + " " + lights[size_t(i)].name;
-            if (ImGui::Selectable(label.c_str(), state.selectedLight == i)) {
-                state.selectedLight = i;
-            }
-            recordItem(id, faded ? "Left out by solo; click to edit it" : "Click to edit this light");
-            ImGui::PopStyleVar();
-            ImGui::TableNextColumn();
-            const bool solo = state.soloLight == i;
-            if (solo) {
-                ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.8f, 0.6f, 0.1f, 1.0f));
-            }
-            if (ImGui::SmallButton("S")) {
-                toggleSolo(state, i);
-            }
-            if (solo) {
-                ImGui::PopStyleColor();
-            }
-            recordItem(id + " solo", "Solo: render only this light (click again for all)");
-            ImGui::PopID();
-        }
-        ImGui::EndTable();
+// One row of the list: enabled, the name to select it by, solo.
+void drawLightRow(EditorState& state, int i) {
+    Light& light = state.scene.lights[size_t(i)];
+    ImGui::PushID(i);
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    // A light solo leaves out is greyed out, still there to pick.
+    const bool faded = soloedOut(state, i);
+    ImGui::PushStyleVar(ImGuiStyleVar_Alpha, faded ? ImGui::GetStyle().DisabledAlpha : 1.0f);
+    const std::string id = "light:" + std::to_string(i);
+    ImGui::Checkbox("##enabled", &light.enabled);
+    recordItem(id + " enabled", "Whether this light shines");
+    ImGui::TableNextColumn();
+    const std::string label = std::string(typeIcon(light.type)) + " " + light.name;
+    if (ImGui::Selectable(label.c_str(), state.selectedLight == i)) {
+        state.selectedLight = i;
     }
+    recordItem(id, faded ? "Left out by solo; click to edit it" : "Click to edit this light");
+    ImGui::PopStyleVar();
+    ImGui::TableNextColumn();
+    const bool solo = state.soloLight == i;
+    if (solo) {
+        ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.8f, 0.6f, 0.1f, 1.0f));
+    }
+    if (ImGui::SmallButton("S")) {
+        toggleSolo(state, i);
+    }
+    if (solo) {
+        ImGui::PopStyleColor();
+    }
+    recordItem(id + " solo", "Solo: render only this light (click again for all)");
+    ImGui::PopID();
+}
+
+void drawLightTable(EditorState& state) {
+    if (!ImGui::BeginTable("lights", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
+        return;
+    }
+    ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("solo", ImGuiTableColumnFlags_WidthFixed);
+    for (int i = 0; i < int(state.scene.lights.size()); ++i) {
+        drawLightRow(state, i);
+    }
+    ImGui::EndTable();
+}
+
+// Duplicate, Delete, up and down, on the selected light.
+void drawSelectionButtons(EditorState& state) {
     const int selected = state.selectedLight;
-    const bool hasSelection = selected >= 0 && selected < int(lights.size());
-    ImGui::BeginDisabled(!hasSelection);
+    ImGui::BeginDisabled(!state.hasLight(selected));
     if (ImGui::Button("Duplicate")) {
         duplicateLight(state, selected);
     }
@@ -304,9 +312,16 @@ void drawLightsPanel(EditorState& state, EditorServices& services) {
     }
     recordItem("Light down", "Move the selected light down the list");
     ImGui::EndDisabled();
-    if (state.selectedLight >= 0 && state.selectedLight < int(lights.size())) {
+}
+}  // namespace
+
+void drawLightsPanel(EditorState& state, EditorServices& services) {
+    drawAddButtons(state);
+    drawLightTable(state);
+    drawSelectionButtons(state);
+    if (state.hasLight(state.selectedLight)) {
         ImGui::Separator();
-        Light& light = lights[size_t(state.selectedLight)];
+        Light& light = state.scene.lights[size_t(state.selectedLight)];
         editLight(light);
         if (light.type == LightType::Environment) {
             editEnvironment(state, services, light);

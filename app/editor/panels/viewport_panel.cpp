@@ -342,46 +342,74 @@ void image(unsigned texture, ImVec2 size, float u0 = 0.0f, float u1 = 1.0f) {
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(u0, 1.0f),
                  ImVec2(u1, 0.0f));
 }
-}  // namespace
 
-void drawViewportPanel(EditorState& state, EditorServices& services) {
-    drawToolbar(state);
-    const ImVec2 available = ImGui::GetContentRegionAvail();
-    const int width = std::max(int(available.x), 16), height = std::max(int(available.y), 16);
-    services.viewportWidth = width;
-    services.viewportHeight = height;
-    const ImVec2 origin = ImGui::GetCursorScreenPos();
-    const ImVec2 size{float(width), float(height)};
-    const Scene b = renderedScene(state);
-    const PreparedScene preparedB = preparedScene(state, b);
+// The viewport's picture on screen: where it starts, its size, in whole pixels too.
+struct ViewArea {
+    ImVec2 origin, size;
+    int width, height;
+};
+
+// The picture: B, or A and B side by side, or A over B's left part up to the divider.
+void drawPictures(EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
     // While a widget is held (a slider drag), skip MSAA so the preview keeps up; the full
     // quality frame follows on release.
     const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
-
+    const int width = area.width, height = area.height;
     if (state.compareA && state.compareView == CompareView::SideBySide) {
         const int half = std::max(width / 2, 8);
-        const ImVec2 halfSize(float(half), size.y);
+        const ImVec2 halfSize(float(half), area.size.y);
         const Scene a = withMaterial(state, *state.compareA);
         image(services.viewportTexture(preparedScene(state, a), half, height, state.renderPath,
-                                            EditorServices::Shown::A, samples), halfSize);
+                                       EditorServices::Shown::A, samples), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
-        image(services.viewportTexture(preparedB, half, height, state.renderPath, EditorServices::Shown::Edited, samples),
-              halfSize);
-    } else {
-        image(services.viewportTexture(preparedB, width, height, state.renderPath, EditorServices::Shown::Edited, samples),
-              size);
-        if (state.compareA && state.compareView == CompareView::Split) {
-            // A left of the divider, B right, one camera: A's image drawn over B's left part.
-            const Scene sceneA = withMaterial(state, *state.compareA);
-            const unsigned a = services.viewportTexture(preparedScene(state, sceneA), width, height,
-                                                        state.renderPath, EditorServices::Shown::A, samples);
-            const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
-            ImGui::SetCursorScreenPos(origin);
-            image(a, ImVec2(size.x * split, size.y), 0.0f, split);
-        }
+        image(services.viewportTexture(preparedScene(state, b), half, height, state.renderPath,
+                                       EditorServices::Shown::Edited, samples), halfSize);
+        return;
     }
-    ImGui::SetCursorScreenPos(origin);
-    ImGui::InvisibleButton("viewport-input", size,
+    image(services.viewportTexture(preparedScene(state, b), width, height, state.renderPath,
+                                   EditorServices::Shown::Edited, samples), area.size);
+    if (state.compareA && state.compareView == CompareView::Split) {
+        // A left of the divider, B right, one camera: A's image drawn over B's left part.
+        const Scene sceneA = withMaterial(state, *state.compareA);
+        const unsigned a = services.viewportTexture(preparedScene(state, sceneA), width, height,
+                                                    state.renderPath, EditorServices::Shown::A, samples);
+        const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
+        ImGui::SetCursorScreenPos(area.origin);
+        image(a, ImVec2(area.size.x * split, area.size.y), 0.0f, split);
+    }
+}
+
+// The split view's divider, drawn and dragged; true while the pointer is on it or drags it.
+bool handleDivider(EditorState& state, const ViewArea& area, bool hovered) {
+    if (!state.compareA || state.compareView != CompareView::Split) {
+        return false;
+    }
+    const float x = area.origin.x + area.size.x * state.splitPosition;
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, area.origin.y), ImVec2(x, area.origin.y + area.size.y),
+                                        IM_COL32(255, 255, 255, 220), 2.0f);
+    bool& draggingDivider = state.draggingDivider;
+    bool onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
+    if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        draggingDivider = true;
+    }
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        draggingDivider = false;
+    }
+    if (draggingDivider) {
+        state.splitPosition = std::clamp((ImGui::GetIO().MousePos.x - area.origin.x) / area.size.x, 0.02f, 0.98f);
+        onDivider = true;
+    }
+    if (onDivider) {
+        ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    }
+    return onDivider;
+}
+
+// The pointer over the picture: the divider first, then a light's gizmo, else the camera; F
+// frames the mesh.
+void handlePointer(EditorState& state, EditorServices& services, const ViewArea& area) {
+    ImGui::SetCursorScreenPos(area.origin);
+    ImGui::InvisibleButton("viewport-input", area.size,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
                                ImGuiButtonFlags_MouseButtonRight);
     recordItem("viewport");   // the whole picture, whichever parts of it A and B show
@@ -389,31 +417,11 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     const bool viewportPressed = ImGui::IsItemActivated();
     const bool hovered = ImGui::IsItemHovered();
 
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    bool onDivider = false;
-    if (state.compareA && state.compareView == CompareView::Split) {
-        const float x = origin.x + size.x * state.splitPosition;
-        draw->AddLine(ImVec2(x, origin.y), ImVec2(x, origin.y + size.y), IM_COL32(255, 255, 255, 220), 2.0f);
-        bool& draggingDivider = state.draggingDivider;
-        onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
-        if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-            draggingDivider = true;
-        }
-        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-            draggingDivider = false;
-        }
-        if (draggingDivider) {
-            state.splitPosition = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / size.x, 0.02f, 0.98f);
-            onDivider = true;
-        }
-        if (onDivider) {
-            ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-        }
-    }
+    const bool onDivider = handleDivider(state, area, hovered);
     const bool gizmo = state.showGizmos && state.compareView != CompareView::SideBySide &&
-                       drawLightGizmos(state, origin, size, viewportPressed);
+                       drawLightGizmos(state, area.origin, area.size, viewportPressed);
     if (viewportActive && !gizmo && !onDivider) {
-        handleCameraInput(state, size);
+        handleCameraInput(state, area.size);
     } else if (hovered && ImGui::GetIO().MouseWheel != 0.0f) {
         dollyCamera(state.scene.camera, std::pow(0.9f, ImGui::GetIO().MouseWheel));
     }
@@ -421,24 +429,22 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
         !ImGui::GetIO().WantTextInput) {
         frameMesh(state);
     }
+}
 
-    if (state.compareA && state.compareView != CompareView::Single) {
-        drawSideLabels(state, origin, size);
-    }
-
-    // An environment file being prepared: the picture keeps the one it had until then.
+// An environment file being prepared: the picture keeps the one it had until then.
+void drawEnvironmentProgress(const EditorState& state, const ViewArea& area) {
     if (const std::shared_ptr<EnvironmentLoad>& load = state.environmentLoad) {
         char text[160];
         std::snprintf(text, sizeof text, "Preparing the environment %s: %.0f%%", environmentName(load->source()).c_str(),
                       100.0f * load->progress());
-        draw->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetTextLineHeight() - 8),
-                      IM_COL32(255, 230, 150, 255), text);
+        ImGui::GetWindowDrawList()->AddText(
+            ImVec2(area.origin.x + 8, area.origin.y + area.size.y - ImGui::GetTextLineHeight() - 8),
+            IM_COL32(255, 230, 150, 255), text);
     }
+}
 
-    // Overlay (Advanced): cost of the last render and what was drawn.
-    if (!state.showAdvanced) {
-        return;
-    }
+// Overlay (Advanced): cost of the last render and what was drawn.
+void drawRenderOverlay(const EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
     int enabled = 0;
     for (const Light& light : b.lights) {
         enabled += light.enabled;
@@ -448,10 +454,35 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
                   services.lastRenderMilliseconds(), services.lastGpuMilliseconds(), enabled,
                   std::string(renderPathName(state.renderPath)).c_str());
     const float line = ImGui::GetTextLineHeight();
+    const ImVec2 origin = area.origin, size = area.size;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(ImVec2(origin.x + px(4), origin.y + size.y - line - px(8)),
                         ImVec2(origin.x + px(12) + ImGui::CalcTextSize(overlay).x, origin.y + size.y - px(4)),
                         IM_COL32(0, 0, 0, 150));
     draw->AddText(ImVec2(origin.x + px(8), origin.y + size.y - line - px(6)), IM_COL32(220, 220, 220, 255), overlay);
+}
+}  // namespace
+
+void drawViewportPanel(EditorState& state, EditorServices& services) {
+    drawToolbar(state);
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    ViewArea area;
+    area.width = std::max(int(available.x), 16);
+    area.height = std::max(int(available.y), 16);
+    area.origin = ImGui::GetCursorScreenPos();
+    area.size = ImVec2(float(area.width), float(area.height));
+    services.viewportWidth = area.width;
+    services.viewportHeight = area.height;
+    const Scene b = renderedScene(state);
+    drawPictures(state, services, b, area);
+    handlePointer(state, services, area);
+    if (state.compareA && state.compareView != CompareView::Single) {
+        drawSideLabels(state, area.origin, area.size);
+    }
+    drawEnvironmentProgress(state, area);
+    if (state.showAdvanced) {
+        drawRenderOverlay(state, services, b, area);
+    }
 }
 
 }  // namespace patina::editor

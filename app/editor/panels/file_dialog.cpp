@@ -1,23 +1,18 @@
 #include "file_dialog.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <system_error>
 
 #include <imgui.h>
 
+#include "text_match.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
 
 namespace {
-std::string lowered(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
-}
-
 // The folder part and the name part of what is typed: "a/b/go" is ("a/b", "go"), "a/b/" is
 // ("a/b", ""), "go" is (".", "go").
 std::pair<std::filesystem::path, std::string> splitTyped(const std::string& typed) {
@@ -41,10 +36,6 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
     }
 }
 }  // namespace
-
-bool containsAnyCase(const std::string& text, const std::string& part) {
-    return lowered(text).find(lowered(part)) != std::string::npos;
-}
 
 const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
     static const PathDialogKind open{

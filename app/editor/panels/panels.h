@@ -16,6 +16,8 @@ void drawMenuBar(EditorState& state, EditorServices& services);
 void takeRequestedScreenshot(EditorState& state, EditorServices& services);
 void drawDialogs(EditorState& state, EditorServices& services);
 void handleShortcuts(EditorState& state, EditorServices& services);
+// F1's list of the keys, while state.showShortcuts.
+void drawShortcutsWindow(EditorState& state);
 
 // The whole editor for one frame: menu, panels around the viewport, dialogs, shortcuts, and
 // the undo commit once no widget is active.

@@ -22,10 +22,6 @@ struct PathDialogKind {
 };
 const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog);
 
-// Whether `text` contains `part`, in any case: how the dialog's list and the preset browser's
-// search box match what is typed.
-bool containsAnyCase(const std::string& text, const std::string& part);
-
 struct ListedEntry {
     std::filesystem::path path;
     bool folder = false;

@@ -1,0 +1,138 @@
+#include "document.h"
+
+#include <algorithm>
+
+#include "editor_state.h"
+#include "geometry/mesh.h"
+#include "scene/camera_control.h"
+
+namespace patina::editor {
+
+bool Document::sceneChanged() const {
+    return scene.lights != savedScene.lights || scene.camera != savedScene.camera ||
+           scene.display != savedScene.display || scene.mesh != savedScene.mesh ||
+           scene.meshFile != savedScene.meshFile;
+}
+
+int Document::environmentIndex() const {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        if (scene.lights[i].type == LightType::Environment) {
+            return int(i);
+        }
+    }
+    return -1;
+}
+
+std::string windowTitle(const Document& document) {
+    const std::string name = !document.scenePath.empty()      ? document.scenePath.filename().string()
+                             : !document.materialPath.empty() ? document.materialPath.filename().string()
+                                                              : document.scene.material.name;
+    return (document.dirty() ? "*" : "") + name + " - Patina";
+}
+
+std::string unsavedParts(const Document& document) {
+    const Scene& now = document.scene;
+    const Scene& saved = document.savedScene;
+    std::vector<std::string> parts;
+    if (document.materialChanged()) {
+        parts.push_back("the material");
+    }
+    if (now.lights != saved.lights) {
+        parts.push_back("the lights");
+    }
+    if (now.camera != saved.camera) {
+        parts.push_back("the camera");
+    }
+    if (now.display != saved.display) {
+        parts.push_back("the display settings");
+    }
+    if (now.mesh != saved.mesh || now.meshFile != saved.meshFile) {
+        parts.push_back("the mesh");
+    }
+    std::string text;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return text;
+}
+
+namespace {
+bool sameValues(const Material& a, const Material& b) {
+    return a.baseColor == b.baseColor && a.roughness == b.roughness && a.specular == b.specular &&
+           a.metallic == b.metallic;
+}
+
+// A material's notes describe it as saved (where a preset's numbers come from): once a value is
+// edited by hand they are untrue, and go in the same step; values back at the file's bring its
+// notes back. An edit that sets notes too (a preset, a file) keeps its own.
+void dropStaleNotes(Material& material, const Material& committed, const Material& saved) {
+    if (sameValues(material, committed) || material.notes != committed.notes) {
+        return;
+    }
+    material.notes = sameValues(material, saved) ? saved.notes : "";
+}
+}  // namespace
+
+void commitEdits(Document& document) {
+    dropStaleNotes(document.scene.material, document.committed.material, document.savedMaterial);
+    EditSnapshot current = document.snapshot();
+    if (current != document.committed) {
+        document.history.record(std::move(document.committed));
+        document.committed = std::move(current);
+    }
+}
+
+namespace {
+void restore(EditorState& state, const EditSnapshot& snapshot) {
+    state.scene.material = snapshot.material;
+    state.scene.lights = snapshot.lights;
+    state.scene.display = snapshot.display;
+    state.committed = snapshot;
+    const int count = int(state.scene.lights.size());
+    state.selectedLight = std::clamp(state.selectedLight, count ? 0 : -1, count - 1);
+    if (state.soloLight >= count) {
+        state.soloLight = -1;
+    }
+}
+}  // namespace
+
+// An error from before the step is old news.
+void undo(EditorState& state) {
+    commitEdits(state);
+    const EditSnapshot current = state.snapshot();
+    if (auto previous = state.history.undo(current)) {
+        state.status = "Undid " + describeChange(*previous, current);
+        state.error.clear();
+        restore(state, *previous);
+    } else {
+        state.status = "Nothing to undo";
+    }
+}
+
+void redo(EditorState& state) {
+    commitEdits(state);
+    const EditSnapshot current = state.snapshot();
+    if (auto next = state.history.redo(current)) {
+        state.status = "Redid " + describeChange(current, *next);
+        state.error.clear();
+        restore(state, *next);
+    } else {
+        state.status = "Nothing to redo";
+    }
+}
+
+void frameMesh(Document& document) {
+    Scene& scene = document.scene;
+    if (scene.meshFile.empty() || !document.mesh) {
+        frameCamera(scene.camera, glm::vec3(0.0f), scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
+        return;
+    }
+    const BoundingSphere bounds = boundingSphere(*document.mesh);
+    frameCamera(scene.camera, bounds.center, std::max(bounds.radius, 1e-3f));
+}
+
+PreparedScene preparedScene(const Document& document, const Scene& shown) {
+    return {shown, shown.meshFile.empty() ? builtinMesh(shown.mesh) : document.mesh, document.environment};
+}
+
+}  // namespace patina::editor

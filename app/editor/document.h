@@ -1,0 +1,75 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "environment/environment.h"
+#include "geometry/mesh.h"
+#include "scene/prepared_scene.h"
+#include "scene/scene.h"
+#include "undo_history.h"
+
+namespace patina::editor {
+
+struct EditorState;
+
+// The document: the scene being edited, the files it was opened from or saved to, what is in
+// them, and the history of its edits. Everything Save writes and Undo restores is here.
+struct Document {
+    Scene scene = defaultScene();
+    // What the scene names, loaded (assets/, through Jobs::assets): its glTF file's mesh (null:
+    // the built-in kind's), and its environment light's environment (kept while the light is
+    // off, for the checkbox).
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Environment> environment;
+    std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
+    Material savedMaterial = scene.material; // what is on disk at materialPath
+    // The scene as a document: where it was opened from or saved to (empty: none), and the
+    // scene as it was then (or at start), against which lights, camera, display and mesh are
+    // unsaved changes.
+    std::filesystem::path scenePath;
+    Scene savedScene = scene;
+    UndoHistory history;
+    EditSnapshot committed = snapshot();     // the state history knows; edits since are pending
+
+    // What differs from the files: the material from its own (or the scene's), the rest of the
+    // scene from the scene as opened, saved or started with.
+    bool materialChanged() const { return scene.material != savedMaterial; }
+    bool sceneChanged() const;
+    bool dirty() const { return materialChanged() || sceneChanged(); }
+    EditSnapshot snapshot() const { return {scene.material, scene.lights, scene.display}; }
+    // Whether `index` is one of the scene's lights.
+    bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
+    // The scene's environment light's index, or -1.
+    int environmentIndex() const;
+};
+
+// The window title: the document's file name (the scene's, else the material's, else the
+// material's name), a '*' while anything is unsaved.
+std::string windowTitle(const Document& document);
+// "the material", "the lights and the camera", ...: what is unsaved, for the prompt.
+std::string unsavedParts(const Document& document);
+
+// --- Undoable edits ---------------------------------------------------------------------
+// Widgets write straight into the document's scene. Whatever changed since the last commit
+// becomes one undo step when commitEdits runs, which the editor does once no widget is active:
+// a slider drag over many frames is one step, whatever widget made it.
+void commitEdits(Document& document);
+// A discrete edit (a button): its own step, apart from anything pending.
+template <typename Apply>
+void applyEdit(Document& document, Apply&& apply) {
+    commitEdits(document);
+    apply(document);
+    commitEdits(document);
+}
+// The status says what a step undid or redid; the selection and solo stay on lights that exist.
+void undo(EditorState& state);
+void redo(EditorState& state);
+
+// Aims the camera at the whole mesh (F, View > Frame mesh).
+void frameMesh(Document& document);
+// `shown` (renderedScene, withMaterial) with the document's loaded mesh and environment: what
+// the renderer draws. Refers to `shown`, which must outlive it.
+PreparedScene preparedScene(const Document& document, const Scene& shown);
+
+}  // namespace patina::editor

@@ -1,0 +1,280 @@
+#include "document_files.h"
+
+#include <optional>
+
+#include "editor_state.h"
+#include "assets/prepare_scene.h"
+#include "gltf/import.h"
+#include "image/png_text.h"
+#include "io/input_error.h"
+#include "io/scene_file.h"
+#include "save_errors.h"
+#include "screenshot_comparison.h"
+
+namespace patina::editor {
+
+namespace {
+// "; 2 more materials and 3 textures not used (Patina reads the first material's factors)".
+std::string unusedParts(const GltfImport& imported) {
+    std::vector<std::string> parts;
+    if (imported.materialCount > 1) {
+        parts.push_back(std::to_string(imported.materialCount - 1) + " more material" +
+                        (imported.materialCount > 2 ? "s" : ""));
+    }
+    if (imported.textureCount > 0) {
+        parts.push_back(std::to_string(imported.textureCount) + " texture" + (imported.textureCount > 1 ? "s" : ""));
+    }
+    if (parts.empty()) {
+        return "";
+    }
+    return "; " + (parts.size() == 2 ? parts[0] + " and " + parts[1] : parts[0]) +
+           " not used (Patina reads the first material's factors)";
+}
+
+bool openMesh(EditorState& state, const std::filesystem::path& path) {
+    try {
+        // Before anything changes: a bad file changes nothing.
+        const std::shared_ptr<const GltfImport> model = state.assets->model(path);
+        const GltfImport& imported = *model;
+        state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+        state.mesh = std::shared_ptr<const Mesh>(model, &model->mesh);
+        frameMesh(state);
+        std::string material = ", no material (the current one kept)";
+        if (imported.material) {
+            applyEdit(state, [&](Document& d) { d.scene.material = *imported.material; });
+            material = ", material \"" + imported.material->name + "\" applied";
+        }
+        state.error.clear();
+        state.status = "Mesh " + path.filename().string() + material + unusedParts(imported);
+        rememberRecent(state, path);
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();   // the previous mesh stays
+        return false;
+    }
+}
+}  // namespace
+
+void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
+                   const std::filesystem::path& materialPath, std::shared_ptr<const Mesh> mesh,
+                   std::shared_ptr<const Environment> environment) {
+    state.scene = scene;
+    state.mesh = std::move(mesh);
+    state.environment = std::move(environment);
+    state.scenePath = scenePath;
+    state.materialPath = materialPath;
+    state.savedScene = scene;
+    state.savedMaterial = scene.material;
+    state.history = UndoHistory();   // the last document's steps would restore its content under this path
+    state.committed = state.snapshot();
+    state.selectedLight = scene.lights.empty() ? -1 : 0;
+    state.soloLight = -1;
+    state.draggedLight = -1;
+    // An environment still being prepared was chosen for the last document.
+    state.environmentLoad.reset();
+    state.environmentFailed.clear();
+}
+
+void newDocument(EditorState& state) {
+    startDocument(state, defaultScene(), {}, {});
+    state.error.clear();
+    state.status = "New scene";
+}
+
+void requestNew(EditorState& state) {
+    if (state.dirty()) {
+        state.pendingNew = true;
+    } else {
+        newDocument(state);
+    }
+}
+
+namespace {
+// A scene, material or screenshot file, read and checked before anything changes.
+struct DocumentFile {
+    std::optional<Scene> scene;          // a scene file or a screenshot
+    // What the scene names, loaded: its glTF file's mesh and its enabled environment.
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Environment> environment;
+    std::optional<Material> material;    // a material file
+    std::optional<ScreenshotComparison> comparison;   // a screenshot's A and view
+    std::vector<std::string> warnings;
+};
+
+DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& path) {
+    std::error_code kind;
+    if (std::filesystem::is_directory(path, kind)) {
+        throw InputError(path.string() +
+                         " is a folder: open a material, scene, screenshot (.png) or glTF (.gltf, .glb) file");
+    }
+    DocumentFile file;
+    if (path.extension() == ".png") {
+        file.scene = sceneFromPng(path, file.warnings);
+        if (!file.scene) {
+            throw InputError(path.string() + ": this PNG holds no Patina scene");
+        }
+        file.comparison = comparisonFromPng(path);
+    } else {
+        const Json json = readJsonFile(path);
+        if (json.is_object() && json.value("format", Json()) == "patina-scene") {
+            file.scene = sceneFromJson(json, path.string(), path.parent_path(), file.warnings);
+        } else {
+            file.material = materialFromJson(json, "", path.string(), true, file.warnings);
+        }
+    }
+    // A scene's glTF and environment are read now, so a missing or bad one fails the open
+    // instead of every later frame.
+    if (file.scene) {
+        const PreparedScene prepared = prepareScene(*file.scene, assets, file.warnings);
+        file.mesh = file.scene->meshFile.empty() ? nullptr : prepared.mesh;
+        file.environment = prepared.environment;
+    }
+    return file;
+}
+
+// Whether opening `path` starts a new document (a scene, a screenshot, a material file) rather
+// than editing the open one (a preset, a mesh, an environment image).
+bool startsADocument(const EditorState& state, const std::filesystem::path& path) {
+    const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
+    return !environment && gltfExtension(path).empty() && !isPreset(state, path);
+}
+
+void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
+    if (file.scene) {
+        // A scene file is the document; a screenshot's scene is not a file to save into.
+        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {}, file.mesh,
+                      file.environment);
+        // A screenshot reopens as what it shows: a comparison with its A, view and split, or
+        // a single view.
+        if (path.extension() == ".png") {
+            state.compareView = CompareView::Single;
+        }
+        if (file.comparison) {
+            state.compareA = file.comparison->a;
+            state.compareView = file.comparison->view;
+            state.splitPosition = file.comparison->split;
+        }
+    } else if (isPreset(state, path)) {
+        // A preset is a template: an undoable edit of the material; Save never writes into it
+        // (Save as preset does, when asked to).
+        applyEdit(state, [&](Document& d) { d.scene.material = *file.material; });
+    } else {
+        Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
+        scene.material = *file.material;
+        startDocument(state, scene, {}, path);
+    }
+    state.error.clear();
+    const bool preset = !file.scene && isPreset(state, path);
+    state.status = (preset ? "Preset " + file.material->name + " applied (Ctrl+Z undoes it)"
+                           : "Opened " + path.filename().string()) +
+                   (file.warnings.empty() ? "" : "\n" + joinLines(file.warnings));
+    rememberRecent(state, path);
+}
+}  // namespace
+
+bool openFile(EditorState& state, const std::filesystem::path& path) {
+    if (!gltfExtension(path).empty()) {
+        return openMesh(state, path);
+    }
+    if (path.extension() == ".hdr" || path.extension() == ".exr") {
+        return setEnvironmentSource(state, std::filesystem::absolute(path).lexically_normal().string());
+    }
+    try {
+        applyDocumentFile(state, path, readDocumentFile(*state.assets, path));
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();
+        return false;
+    }
+}
+
+bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths) {
+    std::string errors;
+    for (const std::filesystem::path& path : paths) {
+        // An environment image is prepared on a worker; here it is waited for, so that its error
+        // joins the others instead of replacing them when it arrives.
+        if (!openFile(state, path) || (state.environmentLoad && !finishEnvironmentLoad(state, true))) {
+            errors += (errors.empty() ? "" : "\n") + state.error;
+        }
+    }
+    state.error = errors;
+    return errors.empty();
+}
+
+void requestOpen(EditorState& state, const std::filesystem::path& path) {
+    if (!startsADocument(state, path)) {
+        openFile(state, path);   // undoable: nothing can be lost
+        return;
+    }
+    // The file is checked before anything is asked: a missing or broken one says so at once.
+    DocumentFile file;
+    try {
+        file = readDocumentFile(*state.assets, path);
+    } catch (const std::exception& error) {
+        state.error = error.what();
+        return;
+    }
+    if (state.dirty()) {
+        state.pendingOpen = path;
+    } else {
+        applyDocumentFile(state, path, std::move(file));
+    }
+}
+
+bool saveScene(EditorState& state, const std::filesystem::path& path) {
+    commitEdits(state);
+    try {
+        saveSceneFile(path, state.scene);
+    } catch (const std::exception& error) {
+        state.error = couldNotSave(path, error);
+        return false;
+    }
+    state.scenePath = path;
+    state.savedScene = state.scene;
+    state.savedMaterial = state.scene.material;   // inline in the scene file
+    state.error.clear();
+    state.status = "Saved " + path.filename().string();
+    rememberRecent(state, path);
+    return true;
+}
+
+bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
+    commitEdits(state);   // what was saved is a step of its own to come back to
+    try {
+        saveMaterialFile(path, state.scene.material);
+    } catch (const std::exception& error) {
+        state.error = couldNotSave(path, error);
+        return false;
+    }
+    state.materialPath = path;
+    state.savedMaterial = state.scene.material;
+    state.error.clear();
+    state.status = "Saved " + path.filename().string();
+    rememberRecent(state, path);
+    return true;
+}
+
+bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
+    std::filesystem::path file = path;
+    if (file.extension() != ".json") {
+        file += ".json";
+    }
+    try {
+        std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
+    } catch (const std::exception& error) {
+        state.error = couldNotSave(file, error);
+        return false;
+    }
+    // The preset is known by its file in the browser: the material takes the file's name.
+    const std::string name = file.stem().string();
+    if (state.scene.material.name != name) {
+        applyEdit(state, [&](Document& d) { d.scene.material.name = name; });
+    }
+    if (!saveMaterial(state, file)) {
+        return false;
+    }
+    state.status = "Saved preset " + name + " in " + std::filesystem::absolute(file).parent_path().string();
+    return true;
+}
+
+}  // namespace patina::editor

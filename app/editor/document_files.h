@@ -1,0 +1,50 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "environment/environment.h"
+#include "geometry/mesh.h"
+#include "scene/scene.h"
+
+namespace patina::editor {
+
+struct EditorState;
+
+// Opening and saving the document. Opening a scene, a material file or a screenshot starts a
+// new document, as in every editor: its own path, its own undo history, and its content as what
+// is saved, which Reset and the unsaved mark compare with. Applying a preset, a mesh or an
+// environment is an undoable edit of the document that is open.
+//
+// Makes `scene` the document, saved at `scenePath` (a scene file) or `materialPath` (a material
+// file), or neither, with what was loaded for it: `mesh` (required when it names a file) and
+// `environment` (null: loaded by resolveEnvironmentShown).
+void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
+                   const std::filesystem::path& materialPath, std::shared_ptr<const Mesh> mesh = nullptr,
+                   std::shared_ptr<const Environment> environment = nullptr);
+// File > New: the default scene as a document with no file.
+void newDocument(EditorState& state);
+// Asks first (state.pendingNew) when anything is unsaved; else starts it.
+void requestNew(EditorState& state);
+// Opens a material, scene or Patina screenshot (PNG with an embedded scene, its comparison A
+// too) as a new document, a preset as an undoable edit of the material, or a .gltf/.glb mesh
+// (shown instead of the sphere, the camera framed on it) or an environment image. A file that
+// fails to load sets state.error and changes nothing else.
+bool openFile(EditorState& state, const std::filesystem::path& path);
+// Reads the file first: one that cannot be opened says why and asks nothing. Then, when it
+// starts a new document and the one open is unsaved, asks first (state.pendingOpen); else opens.
+void requestOpen(EditorState& state, const std::filesystem::path& path);
+// Opens each in turn (the command line's files): every file's error is kept, one a line, in
+// state.error, so a later file does not hide an earlier one's. False when any failed.
+bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths);
+// Writes the material (saveMaterialFile: atomically, the old file kept as .bak); on failure
+// sets state.error, stays dirty and leaves the file on disk as it was.
+bool saveMaterial(EditorState& state, const std::filesystem::path& path);
+// Saves the material as a preset at `path` (".json" added when missing), its folder made if
+// need be, the material renamed after the file (one undoable step) so the browser's caption
+// and the file agree. Same failure rules as saveMaterial.
+bool saveAsPreset(EditorState& state, const std::filesystem::path& path);
+// Saves the whole scene, material inline; the scene becomes the document. Same failure rules.
+bool saveScene(EditorState& state, const std::filesystem::path& path);
+
+}  // namespace patina::editor

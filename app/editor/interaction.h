@@ -1,0 +1,54 @@
+#pragma once
+#include <optional>
+
+#include "gl/environment_method.h"
+#include "gl/render_path.h"
+#include "scene/scene.h"
+
+namespace patina::editor {
+
+struct EditorState;
+
+enum class CompareView { Single, Split, SideBySide };
+// What a viewport drag holds of a light: a point's or a sphere's position (a tube's middle,
+// moving both ends), or one end of a tube.
+enum class LightHandle { Position, TubeStart, TubeEnd };
+
+struct LobeSettings {
+    float thetaInDegrees = 45.0f;
+    bool followFirstDirectional = false;
+    bool luminance = false;       // else per channel
+    bool logScale = false;
+    bool multiplyByCosine = false;
+};
+
+// The interaction: what the user is looking at and holding, which is no part of the document
+// (not saved, not undone) and not kept between sessions: the selection, solo, the viewport's
+// drags, the A/B comparison and how it is viewed, and how the picture is made.
+struct Interaction {
+    int selectedLight = 0;
+    int soloLight = -1;                      // -1: all enabled lights
+    RenderPath renderPath = RenderPath::Single;
+
+    std::optional<Material> compareA;        // "Set A"; B is the current material
+    CompareView compareView = CompareView::Single;
+    float splitPosition = 0.5f;              // split wipe divider, fraction of the width
+    // The viewport's drags in progress: the light whose gizmo is held (-1: none), the divider.
+    int draggedLight = -1;
+    LightHandle draggedHandle = LightHandle::Position;   // which part of it
+    bool draggingDivider = false;
+
+    // How the environment is shaded in the viewport and screenshots (Advanced; not saved).
+    EnvironmentShading environmentShading;
+    LobeSettings lobe;
+};
+
+void toggleSolo(Interaction& interaction, int index);
+// Whether solo leaves this light out of the picture (the list and the gizmos grey it out).
+bool soloedOut(const EditorState& state, int index);
+// The scene as rendered: solo applied.
+Scene renderedScene(const EditorState& state);
+// The scene as rendered with another material (a side of the comparison).
+Scene withMaterial(const EditorState& state, const Material& material);
+
+}  // namespace patina::editor

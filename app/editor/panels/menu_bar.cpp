@@ -1,0 +1,183 @@
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "file_dialog.h"
+#include "menu_actions.h"
+#include "panels.h"
+#include "ui_scale.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+namespace {
+constexpr int kLargestScreenshot = 16384;
+
+void drawSaveItems(EditorState& state) {
+    if (ImGui::MenuItem("Save", "Ctrl+S")) {
+        save(state);
+    }
+    if (ImGui::MenuItem("Save material as...", "Ctrl+Shift+S")) {
+        saveAs(state);
+    }
+    if (ImGui::MenuItem("Save scene", "Ctrl+Alt+S")) {
+        saveSceneDocument(state);
+    }
+    recordItem("Save scene");
+    if (ImGui::MenuItem("Save scene as...")) {
+        saveSceneAs(state);
+    }
+    if (ImGui::MenuItem("Save as preset...", nullptr, false, !state.userPresetFolder.empty())) {
+        saveAsPresetDialog(state);
+    }
+    recordItem("Save as preset", "Save the material into your presets folder; it shows in the preset browser");
+}
+
+void drawFileMenu(EditorState& state, EditorServices& services) {
+    const bool fileMenu = ImGui::BeginMenu("File");
+    if (!fileMenu) {
+        recordItem("menu:File");   // while open, the last item is the menu's window
+        return;
+    }
+    if (ImGui::MenuItem("New", "Ctrl+N")) {
+        requestNew(state);
+    }
+    recordItem("New", "A new scene: the default sphere, lights and material, saved nowhere yet");
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) {
+        openDialog(state);
+    }
+    if (ImGui::BeginMenu("Open recent", !state.recentFiles.empty())) {
+        for (const std::filesystem::path& recent : state.recentFiles) {
+            if (ImGui::MenuItem(recent.string().c_str())) {
+                requestOpen(state, recent);
+            }
+        }
+        ImGui::EndMenu();
+    }
+    drawSaveItems(state);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Screenshot", "F12")) {
+        screenshot(state, services);
+    }
+    if (ImGui::MenuItem("Open screenshot folder")) {
+        openScreenshotFolder(state);
+    }
+    recordItem("Open screenshot folder", "Show the folder screenshots go to in the file manager");
+    if (ImGui::MenuItem("Export comparison...", nullptr, false, state.compareA.has_value())) {
+        startPathDialog(state, EditorState::PathDialog::ExportComparison, "comparison.png");
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) {
+        state.pendingQuit = true;
+    }
+    ImGui::EndMenu();
+}
+
+void drawEditMenu(EditorState& state) {
+    if (!ImGui::BeginMenu("Edit")) {
+        return;
+    }
+    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.history.canUndo() || state.snapshot() != state.committed)) {
+        undo(state);
+    }
+    if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z / Ctrl+Y", false, state.history.canRedo())) {
+        redo(state);
+    }
+    ImGui::EndMenu();
+}
+
+// Steps, not a slider: the menu would grow under the mouse while it is dragged.
+void drawUiSizeMenu(EditorState& state) {
+    const bool sizes = ImGui::BeginMenu("UI size");
+    if (!sizes) {   // while open, the last item is the menu's window
+        recordItem("UI size", "Text and controls larger or smaller, on top of the screen's own scale");
+        return;
+    }
+    for (int percent : {75, 100, 125, 150, 175, 200, 250, 300}) {
+        const std::string label = std::to_string(percent) + "%";
+        if (ImGui::MenuItem(label.c_str(), nullptr, std::lround(state.uiScaleSetting * 100.0f) == percent)) {
+            state.uiScaleSetting = float(percent) / 100.0f;
+        }
+        recordItem("UI size " + label);
+    }
+    ImGui::EndMenu();
+}
+
+void drawScreenshotSettings(EditorState& state) {
+    ImGui::SetNextItemWidth(px(90));
+    ImGui::InputInt("Screenshot width (0: viewport)", &state.screenshotWidth);
+    recordItem("Screenshot width", "Screenshots this many pixels wide; 0: as wide as the viewport");
+    ImGui::SetNextItemWidth(px(90));
+    ImGui::InputInt("Screenshot height (0: viewport)", &state.screenshotHeight);
+    recordItem("Screenshot height", "Screenshots this many pixels high; 0: as high as the viewport");
+    // What `patina render` takes: the renderer says at once when the GL cannot.
+    state.screenshotWidth = std::clamp(state.screenshotWidth, 0, kLargestScreenshot);
+    state.screenshotHeight = std::clamp(state.screenshotHeight, 0, kLargestScreenshot);
+    std::string folder = state.screenshotFolder.string();
+    if (inputString("Screenshot folder", &folder)) {
+        state.screenshotFolder = folder;
+    }
+    recordItem("Screenshot folder", "Where F12 writes screenshots (made when missing)");
+}
+
+void drawViewMenu(EditorState& state) {
+    const bool viewMenu = ImGui::BeginMenu("View");
+    if (!viewMenu) {
+        recordItem("menu:View");   // while open, the last item is the menu's window
+        return;
+    }
+    if (ImGui::MenuItem("Frame mesh", "F")) {
+        frameMesh(state);
+    }
+    recordItem("Frame mesh", "Aim the camera at the whole mesh");
+    ImGui::MenuItem("Light gizmos", nullptr, &state.showGizmos);
+    recordItem("Light gizmos", "Show the lights' dots and arrows over the viewport");
+    ImGui::MenuItem("Lobe panel", nullptr, &state.layout.showLobe);
+    recordItem("Lobe panel", "Show the BRDF lobe under the viewport; hidden, the viewport takes its room");
+    ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
+    recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
+    drawUiSizeMenu(state);
+    ImGui::Separator();
+    drawScreenshotSettings(state);
+    ImGui::EndMenu();
+}
+
+void drawHelpMenu(EditorState& state) {
+    if (ImGui::BeginMenu("Help")) {
+        if (ImGui::MenuItem("Shortcuts", "F1")) {
+            state.showShortcuts = true;
+        }
+        ImGui::EndMenu();
+    }
+}
+
+// The last completed action, on one line where it moves nothing; after a screenshot, a
+// button to its folder.
+void drawStatus(EditorState& state) {
+    const std::string status = state.status.substr(0, state.status.find('\n'));
+    ImGui::SameLine(0.0f, px(24));
+    ImGui::TextDisabled("%s", status.c_str());
+    if (!state.lastScreenshot.empty() && status.find(state.lastScreenshot.string()) != std::string::npos) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Open folder")) {
+            openScreenshotFolder(state);
+        }
+        recordItem("Open folder", "Show the screenshot's folder in the file manager");
+    }
+}
+}  // namespace
+
+void drawMenuBar(EditorState& state, EditorServices& services) {
+    if (!ImGui::BeginMainMenuBar()) {
+        return;
+    }
+    drawFileMenu(state, services);
+    drawEditMenu(state);
+    drawViewMenu(state);
+    drawHelpMenu(state);
+    drawStatus(state);
+    ImGui::EndMainMenuBar();
+}
+
+}  // namespace patina::editor
