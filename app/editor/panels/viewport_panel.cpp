@@ -176,6 +176,100 @@ void recordGrip(int index, const Light& light, const Grip& grip, ImVec2 at, ImVe
                tooltip.c_str());
 }
 
+// What the gizmos are drawn over: the picture on screen, its camera, and where a point of the
+// scene lands on it.
+struct GizmoView {
+    ImVec2 origin, size;
+    glm::vec2 viewSize;
+    const Camera& camera;
+    ImDrawList* draw;
+
+    std::optional<ImVec2> onScreen(glm::vec3 point) const {
+        const auto screen = projectToViewport(camera, viewSize, point);
+        return screen ? std::optional<ImVec2>(ImVec2(origin.x + screen->x, origin.y + screen->y)) : std::nullopt;
+    }
+};
+
+// The light at its size: a sphere's outline, a tube's capsule, a directional light's arrow.
+void drawLightShape(const GizmoView& view, const Light& light, ImU32 color) {
+    const Camera& camera = view.camera;
+    if (light.type == LightType::Sphere) {
+        if (const auto at = view.onScreen(light.position)) {
+            view.draw->AddCircle(*at, screenRadius(camera, view.viewSize, light.position, light.sourceRadius), color,
+                                 0, 1.5f);
+        }
+    } else if (light.type == LightType::Tube) {
+        const auto a = view.onScreen(light.start), b = view.onScreen(light.end);
+        if (a && b) {
+            drawCapsule(view.draw, *a, *b, screenRadius(camera, view.viewSize, light.start, light.sourceRadius),
+                        screenRadius(camera, view.viewSize, light.end, light.sourceRadius), color);
+        }
+    } else if (light.type == LightType::Directional) {
+        const auto tail = view.onScreen(arrowTail(light, camera, view.viewSize));
+        if (const auto tip = view.onScreen(camera.target); tail && tip) {
+            view.draw->AddLine(*tail, *tip, color, 2.0f);
+            view.draw->AddTriangleFilled(*tip, ImVec2(tip->x - 4, tip->y - 4), ImVec2(tip->x + 4, tip->y - 4), color);
+        }
+    }
+}
+
+// Light `i`'s handles, drawn; a click on one starts its drag. True when the mouse is over one.
+bool drawGrips(EditorState& state, const GizmoView& view, int i, ImU32 color, bool pressed) {
+    const Light& light = state.scene.lights[size_t(i)];
+    const ImU32 fill = light.enabled ? color : IM_COL32(90, 90, 90, 200);
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const glm::vec2 mouseAt(mouse.x - view.origin.x, mouse.y - view.origin.y);
+    bool hoveredAny = false;
+    for (const Grip& grip : gripsOf(light, view.camera, view.viewSize)) {
+        const auto at = view.onScreen(grip.at);
+        if (!at) {
+            continue;
+        }
+        recordGrip(i, light, grip, *at, view.origin, view.size);
+        const glm::vec2 gripAt(at->x - view.origin.x, at->y - view.origin.y);
+        const bool hovered = glm::distance(gripAt, mouseAt) <= grip.radius + 3.0f;
+        hoveredAny |= hovered;
+        view.draw->AddCircleFilled(*at, grip.radius, light.type == LightType::Directional ? color : fill);
+        if (light.type != LightType::Directional) {
+            view.draw->AddCircle(*at, grip.radius + 2.0f, IM_COL32(0, 0, 0, 200));
+        }
+        if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+            state.draggedLight = i;
+            state.draggedHandle = grip.handle;
+            state.selectedLight = i;
+        }
+    }
+    return hoveredAny;
+}
+
+// The held handle follows the mouse at `local` (pixels in the picture).
+void dragLight(Light& light, LightHandle handle, const Camera& camera, glm::vec2 viewSize, glm::vec2 local) {
+    if (light.type == LightType::Point || light.type == LightType::Sphere) {
+        light.position = unprojectAtDepthOf(camera, viewSize, local, light.position);
+    } else if (light.type == LightType::Tube) {
+        if (handle == LightHandle::TubeStart) {
+            light.start = unprojectAtDepthOf(camera, viewSize, local, light.start);
+        } else if (handle == LightHandle::TubeEnd) {
+            light.end = unprojectAtDepthOf(camera, viewSize, local, light.end);
+        } else {   // the middle: both ends move together
+            const glm::vec3 middle = 0.5f * (light.start + light.end);
+            const glm::vec3 moved = unprojectAtDepthOf(camera, viewSize, local, middle) - middle;
+            light.start += moved;
+            light.end += moved;
+        }
+    } else if (light.type == LightType::Directional) {
+        // The arrow's tail follows the mouse on a sphere around the target.
+        const glm::vec3 onPlane = unprojectAtDepthOf(camera, viewSize, local, camera.target);
+        glm::vec3 fromTarget = onPlane - camera.target;
+        const float reach = arrowReach(camera, viewSize), planar = glm::length(fromTarget);
+        const glm::vec3 toCamera = glm::normalize(camera.position - camera.target);
+        fromTarget += toCamera * std::sqrt(std::max(reach * reach - planar * planar, 0.0f));
+        if (glm::dot(fromTarget, fromTarget) > 1e-6f) {
+            light.direction = -glm::normalize(fromTarget);
+        }
+    }
+}
+
 // Point lights as a marker, sphere lights as their outline at their size, tube lights as a
 // capsule outline with a marker at each end and one in the middle, directional lights as an
 // arrow from the centre of the view; all can be dragged (a tube's ends each on their own).
@@ -186,91 +280,25 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     int& dragged = state.draggedLight;
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
-    const glm::vec2 viewSize(size.x, size.y);
-    const Camera& camera = state.scene.camera;
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const glm::vec2 mouseAt(mouse.x - origin.x, mouse.y - origin.y);
-    auto onScreen = [&](glm::vec3 point) -> std::optional<ImVec2> {
-        const auto screen = projectToViewport(camera, viewSize, point);
-        return screen ? std::optional<ImVec2>(ImVec2(origin.x + screen->x, origin.y + screen->y)) : std::nullopt;
-    };
+    const GizmoView view{origin, size, glm::vec2(size.x, size.y), state.scene.camera, draw};
     bool hoveredAny = false;
     for (int i = 0; i < int(state.scene.lights.size()); ++i) {
-        Light& light = state.scene.lights[size_t(i)];
         // The selected light in yellow; one that solo leaves out of the picture greyed out.
         const ImU32 color = i == state.selectedLight ? IM_COL32(255, 210, 80, 255)
                             : soloedOut(state, i)    ? IM_COL32(110, 110, 110, 160)
                                                      : IM_COL32(230, 230, 230, 200);
-        const ImU32 fill = light.enabled ? color : IM_COL32(90, 90, 90, 200);
-        // The light at its size.
-        if (light.type == LightType::Sphere) {
-            if (const auto at = onScreen(light.position)) {
-                draw->AddCircle(*at, screenRadius(camera, viewSize, light.position, light.sourceRadius), color, 0, 1.5f);
-            }
-        } else if (light.type == LightType::Tube) {
-            const auto a = onScreen(light.start), b = onScreen(light.end);
-            if (a && b) {
-                drawCapsule(draw, *a, *b, screenRadius(camera, viewSize, light.start, light.sourceRadius),
-                            screenRadius(camera, viewSize, light.end, light.sourceRadius), color);
-            }
-        } else if (light.type == LightType::Directional) {
-            const auto tail = onScreen(arrowTail(light, camera, viewSize));
-            if (const auto tip = onScreen(camera.target); tail && tip) {
-                draw->AddLine(*tail, *tip, color, 2.0f);
-                draw->AddTriangleFilled(*tip, ImVec2(tip->x - 4, tip->y - 4), ImVec2(tip->x + 4, tip->y - 4), color);
-            }
-        }
-        for (const Grip& grip : gripsOf(light, camera, viewSize)) {
-            const auto at = onScreen(grip.at);
-            if (!at) {
-                continue;
-            }
-            recordGrip(i, light, grip, *at, origin, size);
-            const glm::vec2 gripAt(at->x - origin.x, at->y - origin.y);
-            const bool hovered = glm::distance(gripAt, mouseAt) <= grip.radius + 3.0f;
-            hoveredAny |= hovered;
-            draw->AddCircleFilled(*at, grip.radius, light.type == LightType::Directional ? color : fill);
-            if (light.type != LightType::Directional) {
-                draw->AddCircle(*at, grip.radius + 2.0f, IM_COL32(0, 0, 0, 200));
-            }
-            if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-                dragged = i;
-                state.draggedHandle = grip.handle;
-                state.selectedLight = i;
-            }
-        }
+        drawLightShape(view, state.scene.lights[size_t(i)], color);
+        hoveredAny |= drawGrips(state, view, i, color, pressed);
     }
     draw->PopClipRect();
     if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        Light& light = state.scene.lights[size_t(dragged)];
         // The mouse is followed only inside the picture: a handle dragged past its edge stays
         // on it, where it can be grabbed again.
+        const ImVec2 mouse = ImGui::GetIO().MousePos;
+        const glm::vec2 mouseAt(mouse.x - origin.x, mouse.y - origin.y);
         const glm::vec2 margin(gizmoRadius() + 2.0f);
-        const glm::vec2 local = glm::clamp(mouseAt, margin, glm::max(viewSize - margin, margin));
-        if (light.type == LightType::Point || light.type == LightType::Sphere) {
-            light.position = unprojectAtDepthOf(camera, viewSize, local, light.position);
-        } else if (light.type == LightType::Tube) {
-            if (state.draggedHandle == LightHandle::TubeStart) {
-                light.start = unprojectAtDepthOf(camera, viewSize, local, light.start);
-            } else if (state.draggedHandle == LightHandle::TubeEnd) {
-                light.end = unprojectAtDepthOf(camera, viewSize, local, light.end);
-            } else {   // the middle: both ends move together
-                const glm::vec3 middle = 0.5f * (light.start + light.end);
-                const glm::vec3 moved = unprojectAtDepthOf(camera, viewSize, local, middle) - middle;
-                light.start += moved;
-                light.end += moved;
-            }
-        } else if (light.type == LightType::Directional) {
-            // The arrow's tail follows the mouse on a sphere around the target.
-            const glm::vec3 onPlane = unprojectAtDepthOf(camera, viewSize, local, camera.target);
-            glm::vec3 fromTarget = onPlane - camera.target;
-            const float reach = arrowReach(camera, viewSize), planar = glm::length(fromTarget);
-            const glm::vec3 toCamera = glm::normalize(camera.position - camera.target);
-            fromTarget += toCamera * std::sqrt(std::max(reach * reach - planar * planar, 0.0f));
-            if (glm::dot(fromTarget, fromTarget) > 1e-6f) {
-                light.direction = -glm::normalize(fromTarget);
-            }
-        }
+        const glm::vec2 local = glm::clamp(mouseAt, margin, glm::max(view.viewSize - margin, margin));
+        dragLight(state.scene.lights[size_t(dragged)], state.draggedHandle, view.camera, view.viewSize, local);
         return true;
     }
     dragged = -1;
