@@ -49,6 +49,8 @@ void loadSettings(EditorState& state, WindowGeometry& window, const std::filesys
         state.showGizmos = reader.boolean("showLightGizmos", state.showGizmos);
         state.showAdvanced = reader.boolean("showAdvanced", state.showAdvanced);
         state.screenshotFolder = reader.string("screenshotFolder", state.screenshotFolder.string());
+        state.screenshotWidth = reader.integer("screenshotWidth", state.screenshotWidth, {0, kLargestScreenshot});
+        state.screenshotHeight = reader.integer("screenshotHeight", state.screenshotHeight, {0, kLargestScreenshot});
         if (const Json* recent = reader.child("recentFiles"); recent && recent->is_array()) {
             state.recentFiles.clear();
             for (const Json& entry : *recent) {
@@ -88,6 +90,8 @@ Json settingsJson(const EditorState& state, const WindowGeometry& window, bool s
               {"showLightGizmos", state.showGizmos},
               {"showAdvanced", state.showAdvanced},
               {"screenshotFolder", state.screenshotFolder.string()},
+              {"screenshotWidth", state.screenshotWidth},
+              {"screenshotHeight", state.screenshotHeight},
               {"recentFiles", recent}};
     if (session) {
         // The material as it is now (saved or not), and where it was saved, so a new session

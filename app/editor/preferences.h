@@ -5,6 +5,9 @@
 
 namespace patina::editor {
 
+// The largest screenshot side the View menu takes: what `patina render --width` takes.
+constexpr int kLargestScreenshot = 16384;
+
 // Sizes the user can drag, and whether the lobe panel shows (View menu), persisted between
 // sessions.
 struct PanelLayout {
@@ -28,7 +31,7 @@ struct Preferences {
     std::filesystem::path userPresetFolder;             // where Save as preset writes
     std::filesystem::path screenshotFolder = ".";
     std::filesystem::path benchFolder = ".";            // where `patina bench` wrote its chart
-    int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size
+    int screenshotWidth = 0, screenshotHeight = 0;      // 0: the viewport's size; kept
     std::string folderOpener = "xdg-open";              // what shows a folder (open_folder.h)
 };
 

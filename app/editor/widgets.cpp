@@ -186,10 +186,11 @@ float labelledWidth(float fieldWidth, const char* label) {
 }
 
 std::string layoutJson() {
-    std::string json = "{";
+    // The frame it was written after: automation waits for its input to have been drawn.
+    std::string json = "{\"frame\": " + std::to_string(ImGui::GetFrameCount());
     for (const auto& [name, item] : recorded()) {
         char entry[256];
-        std::snprintf(entry, sizeof entry, "%s\"%s\": [%.1f, %.1f, %.1f, %.1f]", json.size() > 1 ? ", " : "",
+        std::snprintf(entry, sizeof entry, ", \"%s\": [%.1f, %.1f, %.1f, %.1f]",
                       name.c_str(), double(item.min.x), double(item.min.y), double(item.max.x),
                       double(item.max.y));
         json += entry;

@@ -693,12 +693,15 @@ TEST(SaveErrors, SayWhatIsWrongInWords) {
     EXPECT_EQ(couldNotSave("/x/gold.json", std::runtime_error("odd")), "Could not save gold.json: odd");
 }
 
-// The editor's own settings persist with the rest: UI size, gizmos, Advanced.
+// The editor's own settings persist with the rest: UI size, gizmos, Advanced, the View menu's
+// screenshot size.
 TEST_F(EditorStateTest, ViewSettingsPersist) {
     state.uiScaleSetting = 1.5f;
     state.showGizmos = false;
     state.showAdvanced = true;
     state.layout.showLobe = false;
+    state.screenshotWidth = 3840;
+    state.screenshotHeight = 2160;
     ASSERT_TRUE(saveSettings(state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
     EditorState next;
     WindowGeometry window;
@@ -707,6 +710,8 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     EXPECT_FALSE(next.showGizmos);
     EXPECT_TRUE(next.showAdvanced);
     EXPECT_FALSE(next.layout.showLobe);
+    EXPECT_EQ(next.screenshotWidth, 3840);
+    EXPECT_EQ(next.screenshotHeight, 2160);
     EXPECT_FALSE(EditorState().showAdvanced) << "research controls start closed";
 }
 

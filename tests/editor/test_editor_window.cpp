@@ -180,6 +180,21 @@ protected:
         return values;
     }
 
+    // The number of the last frame the editor drew (the layout dump's "frame"); -1 before the first.
+    int frameDrawn() {
+        const std::string layout = readText(dir_ / "layout.json");
+        const size_t at = layout.find("\"frame\": ");
+        return at == std::string::npos ? -1 : std::atoi(layout.c_str() + at + 9);
+    }
+
+    // Input sent after frame `before` was drawn has been taken by the editor: two more frames
+    // are drawn (the first may have polled its input before ours came; input wakes the loop for
+    // both). Under load, typed keys and a click that follows them used to reach one frame
+    // together, and the click closed the field first.
+    void waitUntilDrawn(int before) {
+        EXPECT_TRUE(waitFor([&] { return frameDrawn() >= before + 2; }, 20s)) << "the editor stopped drawing";
+    }
+
     std::vector<fs::path> screenshots() {
         std::vector<fs::path> files;
         for (const auto& entry : fs::directory_iterator(dir_)) {
@@ -197,14 +212,21 @@ protected:
         ASSERT_EQ(slider.size(), 4u);
         const int y = int((slider[1] + slider[3]) / 2);
         const int from = int(slider[0] + (slider[2] - slider[0]) * 0.4f);
-        xdotool("mousemove --window " + window_ + " " + std::to_string(from) + " " + std::to_string(y));
-        xdotool("mousedown 1");
-        for (int step = 1; step <= 5; ++step) {
-            xdotool("mousemove --window " + window_ + " " +
-                    std::to_string(from - step * (from - int(slider[0]) - 2) / 5) + " " + std::to_string(y));
+        // Each step drawn before the next: ImGui 1.86 reads the button's state once a frame, so
+        // a press, the moves and the release polled together would be a click at the end.
+        auto step = [&](const std::string& command) {
+            const int before = frameDrawn();
+            xdotool(command);
             std::this_thread::sleep_for(100ms);
+            waitUntilDrawn(before);
+        };
+        step("mousemove --window " + window_ + " " + std::to_string(from) + " " + std::to_string(y));
+        step("mousedown 1");
+        for (int i = 1; i <= 5; ++i) {
+            step("mousemove --window " + window_ + " " + std::to_string(from - i * (from - int(slider[0]) - 2) / 5) +
+                 " " + std::to_string(y));
         }
-        xdotool("mouseup 1");
+        step("mouseup 1");
     }
 
     // Moves to a named widget (its centre, or `fromLeft` pixels in) and clicks it; false when the
@@ -215,9 +237,11 @@ protected:
             return false;
         }
         const int x = fromLeft < 0 ? int((r[0] + r[2]) / 2) : int(r[0]) + fromLeft;
+        const int before = frameDrawn();
         xdotool("mousemove --window " + window_ + " " + std::to_string(x) + " " +
                 std::to_string(int((r[1] + r[3]) / 2)) + " click 1");
         std::this_thread::sleep_for(300ms);
+        waitUntilDrawn(before);
         return true;
     }
 
@@ -226,9 +250,28 @@ protected:
     void typeInto(const std::string& name, const std::string& value) {
         ASSERT_TRUE(waitFor([&] { return rect(name).size() == 4; }, 10s)) << name << " is not shown";
         ASSERT_TRUE(clickOn(name, 20));
+        const int before = frameDrawn();
         xdotool("key --window " + window_ + " ctrl+a");
         xdotool("type --window " + window_ + " " + value);
         std::this_thread::sleep_for(300ms);
+        waitUntilDrawn(before);
+    }
+
+    // Types the View menu's screenshot size and waits until the editor has it (settings.json
+    // says so): F12 reaches the editor at once, a field's keys only as fast as it draws.
+    void setScreenshotSize(int width, int height) {
+        ASSERT_TRUE(clickOn("menu:View"));
+        typeInto("Screenshot width", std::to_string(width));
+        typeInto("Screenshot height", std::to_string(height));
+        ASSERT_TRUE(clickOn("viewport"));   // closes the menu (Escape would undo the field being typed in)
+        const fs::path settings = dir_ / "config" / "patina" / "settings.json";
+        ASSERT_TRUE(waitFor([&] {
+            if (!fs::exists(settings)) {
+                return false;
+            }
+            const Json json = readJsonFile(settings);
+            return json.value("screenshotWidth", 0) == width && json.value("screenshotHeight", 0) == height;
+        }, 20s)) << "the screenshot size typed is not the editor's";
     }
 
     // F12 with the mouse over the viewport; waits for the file and then checks that the
@@ -320,10 +363,7 @@ TEST_F(EditorWindow, F12InSideBySideKeepsTheEditorRunning) {
 
 // (b) View: screenshot 800 x 600, then F12 in the Single view.
 TEST_F(EditorWindow, F12AtAFixedSizeKeepsTheEditorRunning) {
-    ASSERT_TRUE(clickOn("menu:View"));
-    typeInto("Screenshot width", "800");
-    typeInto("Screenshot height", "600");
-    ASSERT_TRUE(clickOn("viewport"));   // closes the menu (Escape would undo the field being typed in)
+    setScreenshotSize(800, 600);
     const fs::path fixed = screenshotOfViewport();
     ASSERT_FALSE(fixed.empty());
     const LdrImage image = decodePng(readFileBytes(fixed));
@@ -337,10 +377,7 @@ TEST_F(EditorWindow, F12AtAFixedSizeKeepsTheEditorRunning) {
 // stop repainting, and show "render target 8192x8192 is incomplete" only after a slider drag;
 // `patina render` took the size all along. Now the editor takes it too, and goes on drawing.
 TEST_F(EditorWindow, AnF12AsLargeAsTheCommandLineTakesIsWritten) {
-    ASSERT_TRUE(clickOn("menu:View"));
-    typeInto("Screenshot width", "8192");
-    typeInto("Screenshot height", "8192");
-    ASSERT_TRUE(clickOn("viewport"));
+    setScreenshotSize(8192, 8192);
     const std::vector<float> view = rect("viewport");
     ASSERT_EQ(view.size(), 4u);
     xdotool("mousemove --window " + window_ + " " + std::to_string(int((view[0] + view[2]) / 2)) + " " +

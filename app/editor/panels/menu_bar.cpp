@@ -12,8 +12,6 @@
 namespace patina::editor {
 
 namespace {
-constexpr int kLargestScreenshot = 16384;
-
 void drawSaveItems(EditorState& state) {
     if (ImGui::MenuItem("Save", "Ctrl+S")) {
         save(state);
