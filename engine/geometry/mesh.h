@@ -6,7 +6,9 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace patina {
 
@@ -15,11 +17,15 @@ enum class MeshKind { Sphere, Torus };
 std::string_view meshKindName(MeshKind mesh);
 std::optional<MeshKind> meshKindFromName(std::string_view name);
 
-// An indexed triangle mesh in world space with smooth per-vertex normals.
+// An indexed triangle mesh with per-vertex normals (world space for the built-in meshes and a
+// flattened model; a model's primitive is in its own space, placed by its draw's transform).
+// The optional attributes are empty when the mesh has none, else one per position.
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<uint32_t> indices;
+    std::vector<glm::vec2> uv0, uv1;     // glTF TEXCOORD_0 / _1: (0, 0) the image's top-left
+    std::vector<glm::vec4> tangents;     // xyz unit, w = +-1: bitangent = cross(N, T.xyz) * w
 };
 
 // Unit sphere at the origin: `rings` latitude bands, `segments` longitude bands.
