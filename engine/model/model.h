@@ -1,0 +1,78 @@
+#pragma once
+// A loaded model: its primitives, materials, images and where each primitive is drawn (glTF 2.0
+// sections 3.5-3.9). What the assets layer loads and the renderer draws; the scene document
+// names the file and holds the user's edits, never this.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "geometry/mesh.h"
+#include "shading/material_parameters.h"
+#include "shading/texture.h"
+
+namespace patina {
+
+// Decoded pixels as the file holds them: 8-bit RGBA, rows top first. Whether they are sRGB
+// depends on the map that uses them (base colour and emissive are; the others are data).
+struct ModelImage {
+    std::string name;   // the URI, the image's name, or "image N": what a note calls it
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;
+};
+
+// One texture reference of a material (glTF textureInfo): an image, how it is sampled, which
+// UV set and the KHR_texture_transform. `image` < 0: the material has no such map.
+struct TextureSlot {
+    int image = -1;
+    int texCoord = 0;   // 0 or 1 (after the transform's override)
+    TextureSampler sampler;
+    TextureTransform transform;
+    bool present() const { return image >= 0; }
+    bool operator==(const TextureSlot&) const = default;
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// A glTF metallic-roughness material in Patina's terms (docs/FORMATS.md, "glTF"): the factors
+// as Patina's parameters (base colour linear, roughness perceptual, specular from
+// KHR_materials_specular / _ior) and each map, multiplied in as the glTF spec says.
+struct ModelMaterial {
+    std::string name;
+    MaterialParameters factors;
+    float baseAlpha = 1.0f;                 // baseColorFactor's alpha
+    TextureSlot baseColor;                  // sRGB; RGBA multiplies the factor
+    TextureSlot metallicRoughness;          // linear; G scales roughness, B metallic
+    TextureSlot normal;                     // linear; tangent space, +Y up the bitangent
+    float normalScale = 1.0f;
+    TextureSlot occlusion;                  // linear; R, on indirect light only
+    float occlusionStrength = 1.0f;
+    TextureSlot emissive;                   // sRGB
+    glm::vec3 emissiveFactor{0.0f};         // times KHR_materials_emissive_strength
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    bool operator==(const ModelMaterial&) const = default;
+};
+
+// One primitive placed once: glTF node world matrix times the mesh's primitive. `material` < 0
+// draws glTF's default material (white, metallic 1, roughness 1).
+struct DrawItem {
+    int primitive = 0;
+    int material = -1;
+    glm::mat4 transform{1.0f};
+    std::string node;   // the node's name (or "node N"), for picking and messages
+};
+
+struct Model {
+    std::vector<Mesh> primitives;        // each in its own (the mesh's) space
+    std::vector<ModelMaterial> materials;
+    std::vector<ModelImage> images;
+    std::vector<DrawItem> draws;         // the default scene's node instances, in node order
+    std::vector<std::string> notes;      // what was skipped or left out, a line each
+};
+
+}  // namespace patina
