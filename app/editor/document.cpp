@@ -5,6 +5,7 @@
 #include "editor_state.h"
 #include "geometry/mesh.h"
 #include "scene/camera_control.h"
+#include "scene/light_rig.h"
 
 namespace patina::editor {
 
@@ -121,14 +122,30 @@ void redo(EditorState& state) {
     }
 }
 
-void frameMesh(Document& document) {
-    Scene& scene = document.scene;
+BoundingSphere meshBounds(const Document& document) {
+    const Scene& scene = document.scene;
     if (scene.meshFile.empty() || !document.mesh) {
-        frameCamera(scene.camera, glm::vec3(0.0f), scene.mesh == MeshKind::Torus ? 1.05f : 1.0f);
-        return;
+        return {glm::vec3(0.0f), scene.mesh == MeshKind::Torus ? 1.05f : 1.0f};
     }
     const BoundingSphere bounds = boundingSphere(*document.mesh);
-    frameCamera(scene.camera, bounds.center, std::max(bounds.radius, 1e-3f));
+    return {bounds.center, std::max(bounds.radius, 1e-3f)};
+}
+
+void frameMesh(Document& document) {
+    const BoundingSphere bounds = meshBounds(document);
+    frameCamera(document.scene.camera, bounds.center, bounds.radius);
+}
+
+void chooseBuiltinMesh(Document& document, MeshKind kind) {
+    const bool fromFile = !document.scene.meshFile.empty();
+    const BoundingSphere before = meshBounds(document);
+    document.scene.mesh = kind;
+    document.scene.meshFile.clear();
+    document.mesh.reset();   // the built-in kind's
+    if (fromFile) {   // back from a model: the camera and the lights return to the unit scale
+        frameMesh(document);
+        applyEdit(document, [&](Document& d) { moveLightRig(d.scene.lights, before, {glm::vec3(0.0f), 1.0f}); });
+    }
 }
 
 PreparedScene preparedScene(const Document& document, const Scene& shown) {

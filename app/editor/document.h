@@ -66,8 +66,14 @@ void applyEdit(Document& document, Apply&& apply) {
 void undo(EditorState& state);
 void redo(EditorState& state);
 
+// The sphere the camera frames and the light rig is fitted to: the mesh file's bounds, or the
+// built-in mesh's (about the origin, radius 1).
+BoundingSphere meshBounds(const Document& document);
 // Aims the camera at the whole mesh (F, View > Frame mesh).
 void frameMesh(Document& document);
+// The built-in sphere or torus; coming back from a model, the camera frames it and the lights
+// return to the unit scale (an undoable step).
+void chooseBuiltinMesh(Document& document, MeshKind kind);
 // `shown` (renderedScene, withMaterial) with the document's loaded mesh and environment: what
 // the renderer draws. Refers to `shown`, which must outlive it.
 PreparedScene preparedScene(const Document& document, const Scene& shown);

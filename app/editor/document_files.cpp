@@ -1,5 +1,7 @@
 #include "document_files.h"
 
+#include "scene/light_rig.h"
+
 #include <optional>
 
 #include "editor_state.h"
@@ -8,6 +10,7 @@
 #include "image/png_text.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
+#include "scene/light_rig.h"
 #include "save_errors.h"
 #include "screenshot_comparison.h"
 
@@ -36,12 +39,21 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
         // Before anything changes: a bad file changes nothing.
         const std::shared_ptr<const GltfImport> model = state.assets->model(path);
         const GltfImport& imported = *model;
+        const BoundingSphere before = meshBounds(state);
         state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
         state.mesh = std::shared_ptr<const Mesh>(model, &model->mesh);
         frameMesh(state);
+        // The lights follow the model's size and place in the same undoable step as its
+        // material: a model of hundreds of units used to swallow every point light.
+        const BoundingSphere after = meshBounds(state);
         std::string material = ", no material (the current one kept)";
+        applyEdit(state, [&](Document& d) {
+            moveLightRig(d.scene.lights, before, after);
+            if (imported.material) {
+                d.scene.material = *imported.material;
+            }
+        });
         if (imported.material) {
-            applyEdit(state, [&](Document& d) { d.scene.material = *imported.material; });
             material = ", material \"" + imported.material->name + "\" applied";
         }
         state.error.clear();

@@ -636,6 +636,40 @@ TEST_F(EditorStateTest, OpeningAGltfAppliesItsMaterial) {
     EXPECT_EQ(state.scene.material, before);
 }
 
+// A model of hundreds of units (2CylinderEngine's size) swallowed every point, sphere and tube
+// light and rendered flat. Opening it frames it and the rig follows its size and centre; back
+// on the sphere, the lights and the camera are where they were.
+TEST_F(EditorStateTest, TheLightsFollowAModelsSizeAndComeBackWithTheSphere) {
+    Mesh big = makeTorus();
+    for (glm::vec3& p : big.positions) {
+        p = p * 300.0f + glm::vec3(100.0f, 50.0f, -20.0f);
+    }
+    exportGltf(dir_ / "engine.glb", big, state.scene.material);
+    const std::vector<Light> unit = state.scene.lights;
+    const Light* point = nullptr;
+    for (const Light& light : unit) {
+        point = light.type == LightType::Point ? &light : point;
+    }
+    ASSERT_NE(point, nullptr) << "the default scene has a point light";
+    ASSERT_TRUE(openFile(state, dir_ / "engine.glb")) << state.error;
+    const BoundingSphere bounds = meshBounds(state);
+    EXPECT_GT(bounds.radius, 200.0f);
+    EXPECT_NEAR(glm::distance(state.scene.camera.target, bounds.center), 0.0f, 1e-3f);
+    EXPECT_GT(glm::distance(state.scene.camera.position, bounds.center), bounds.radius) << "the camera outside it";
+    const size_t index = size_t(point - unit.data());
+    const Light& moved = state.scene.lights[index];
+    const float s = bounds.radius / 1.0f;
+    EXPECT_NEAR(glm::distance(moved.position, bounds.center), glm::length(point->position) * s, 1e-2f * s)
+        << "the point light as far out, in model radii, as it was from the sphere";
+    EXPECT_NEAR(moved.intensity, point->intensity * s * s, 1e-3f * s * s);
+    chooseBuiltinMesh(state, MeshKind::Sphere);
+    for (size_t i = 0; i < unit.size(); ++i) {
+        EXPECT_NEAR(glm::distance(state.scene.lights[i].position, unit[i].position), 0.0f, 1e-3f) << i;
+        EXPECT_NEAR(state.scene.lights[i].intensity, unit[i].intensity, 1e-3f * unit[i].intensity) << i;
+    }
+    EXPECT_LT(glm::length(state.scene.camera.position), 10.0f) << "framed on the unit sphere again";
+}
+
 }  // namespace
 }  // namespace patina::editor
 

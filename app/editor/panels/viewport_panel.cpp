@@ -37,9 +37,7 @@ void drawToolbar(EditorState& state) {
         for (MeshKind kind : {MeshKind::Sphere, MeshKind::Torus}) {
             if (ImGui::Selectable(std::string(meshKindName(kind)).c_str(),
                                   state.scene.meshFile.empty() && state.scene.mesh == kind)) {
-                state.scene.mesh = kind;
-                state.scene.meshFile.clear();
-                state.mesh.reset();   // the built-in kind's
+                chooseBuiltinMesh(state, kind);
             }
         }
         ImGui::TextDisabled("or open / drop a .gltf or .glb");

@@ -1,0 +1,33 @@
+#include "scene/light_rig.h"
+
+#include <cmath>
+
+namespace patina {
+
+namespace {
+bool usableRadius(float radius) {
+    return std::isfinite(radius) && radius > 0.0f;
+}
+}  // namespace
+
+void moveLightRig(std::vector<Light>& lights, const BoundingSphere& from, const BoundingSphere& to) {
+    if (!usableRadius(from.radius) || !usableRadius(to.radius)) {
+        return;
+    }
+    const float s = to.radius / from.radius;
+    auto place = [&](glm::vec3 p) { return to.center + (p - from.center) * s; };
+    for (Light& light : lights) {
+        if (light.type != LightType::Point && light.type != LightType::Sphere && light.type != LightType::Tube) {
+            continue;
+        }
+        light.position = place(light.position);
+        light.start = place(light.start);
+        light.end = place(light.end);
+        light.range *= s;   // 0 (no window) stays 0
+        light.sourceRadius *= s;
+        light.intensity *= s * s;
+        light.attenuation *= glm::vec3(s * s, s, 1.0f);
+    }
+}
+
+}  // namespace patina
