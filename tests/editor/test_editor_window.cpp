@@ -283,9 +283,15 @@ protected:
         if (view.size() != 4) {
             return {};
         }
+        // The hover drawn before the key: F12 reads where the mouse is in the frame that takes it.
+        const int hovered = frameDrawn();
         xdotool("mousemove --window " + window_ + " " + std::to_string(int((view[0] + view[2]) / 2)) + " " +
-                std::to_string(int((view[1] + view[3]) / 2)) + " key --window " + window_ + " F12");
-        EXPECT_TRUE(waitFor([&] { return screenshots().size() > before; }, 20s)) << "F12 wrote no screenshot";
+                std::to_string(int((view[1] + view[3]) / 2)));
+        std::this_thread::sleep_for(100ms);
+        waitUntilDrawn(hovered);
+        xdotool("key --window " + window_ + " F12");
+        // Generous: under sanitizers a screenshot's render takes tens of seconds on llvmpipe.
+        EXPECT_TRUE(waitFor([&] { return screenshots().size() > before; }, 60s)) << "F12 wrote no screenshot";
         std::this_thread::sleep_for(1500ms);
         EXPECT_TRUE(editor_->running()) << "the editor ended after F12";
         std::vector<fs::path> files = screenshots();
@@ -461,11 +467,17 @@ TEST_F(EditorWindow, UndoAfterAnOpenNeverWritesTheLastDocumentIntoTheNewFile) {
     xdotool("key --window " + window_ + " Return");
     ASSERT_TRUE(waitFor([&] { return xdotool("getwindowname " + window_).find("a.json") != std::string::npos; }, 10s))
         << xdotool("getwindowname " + window_);
+    // Each input taken before the next (under sanitizers frames take long enough that a fixed
+    // pause let the drag start before the undo's frame had redrawn the panel).
+    int before = frameDrawn();
     xdotool("key --window " + window_ + " ctrl+z");
-    std::this_thread::sleep_for(500ms);
+    std::this_thread::sleep_for(100ms);
+    waitUntilDrawn(before);
     dragRoughness();
-    std::this_thread::sleep_for(500ms);
+    before = frameDrawn();
     xdotool("key --window " + window_ + " ctrl+s");
+    std::this_thread::sleep_for(100ms);
+    waitUntilDrawn(before);
     ASSERT_TRUE(waitFor([&] { return fs::exists(dir_ / "a.json.bak"); }, 10s)) << "Ctrl+S wrote nothing";
     std::vector<std::string> warnings;
     const Material saved = loadMaterialFile(dir_ / "a.json", warnings);
