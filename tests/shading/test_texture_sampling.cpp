@@ -100,43 +100,40 @@ TEST(TextureWrapTexel, EachModeAgainstHandComputedIndices) {
     }
 }
 
-// A 4 x 1 row read with NEAREST outside [0, 1]: u width = -1, 5, 11 and -6.4.
-TEST(TextureSampling, NearestWrapsOutsideTheUnitSquare) {
+// Which texel of a 4 x 1 row each of four u values reads under one wrap mode.
+struct WrapCase {
+    TextureWrap wrap;
+    int texels[4];
+};
+
+void expectRowTexels(bool nearest, const float (&us)[4], const WrapCase (&cases)[3]) {
     const std::vector<uint8_t> bytes = countingBytes(4, 1);
     const LinearTexture texture = linearTexture(bytes.data(), 4, 1, false);
-    const float us[] = {-0.25f, 1.25f, 2.75f, -1.6f};
-    const struct {
-        TextureWrap wrap;
-        int texels[4];
-    } cases[] = {{TextureWrap::Repeat, {3, 1, 3, 1}},
-                 {TextureWrap::ClampToEdge, {0, 3, 3, 0}},
-                 {TextureWrap::MirroredRepeat, {0, 2, 3, 1}}};
-    for (const auto& c : cases) {
+    for (const WrapCase& c : cases) {
+        const TextureSampler s = sampler(c.wrap, TextureWrap::Repeat, nearest);
         for (size_t k = 0; k < 4; ++k) {
-            const glm::vec4 got = sampleTexture(texture, sampler(c.wrap, TextureWrap::Repeat, true), {us[k], 0.5f});
-            EXPECT_EQ(got, texelOf(bytes, 4, c.texels[k], 0)) << "wrap " << int(c.wrap) << " at u = " << us[k];
+            EXPECT_EQ(sampleTexture(texture, s, {us[k], 0.5f}), texelOf(bytes, 4, c.texels[k], 0))
+                << "wrap " << int(c.wrap) << " at u = " << us[k] << ", nearest " << nearest;
         }
     }
 }
 
+// NEAREST outside [0, 1]: u width = -1, 5, 11 and -6.4.
+TEST(TextureSampling, NearestWrapsOutsideTheUnitSquare) {
+    expectRowTexels(true, {-0.25f, 1.25f, 2.75f, -1.6f},
+                    {{TextureWrap::Repeat, {3, 1, 3, 1}},
+                     {TextureWrap::ClampToEdge, {0, 3, 3, 0}},
+                     {TextureWrap::MirroredRepeat, {0, 2, 3, 1}}});
+}
+
 // Bilinear at texel centres outside [0, 1] (x = u 4 - 1/2 = -1, -2, 4, 10) and on the seam.
 TEST(TextureSampling, BilinearWrapsEachNeighbourAndBlendsAcrossTheRepeatSeam) {
+    expectRowTexels(false, {-0.125f, -0.375f, 1.125f, 2.625f},
+                    {{TextureWrap::Repeat, {3, 2, 0, 2}},
+                     {TextureWrap::ClampToEdge, {0, 0, 3, 3}},
+                     {TextureWrap::MirroredRepeat, {0, 1, 3, 2}}});
     const std::vector<uint8_t> bytes = countingBytes(4, 1);
     const LinearTexture texture = linearTexture(bytes.data(), 4, 1, false);
-    const float us[] = {-0.125f, -0.375f, 1.125f, 2.625f};
-    const struct {
-        TextureWrap wrap;
-        int texels[4];
-    } cases[] = {{TextureWrap::Repeat, {3, 2, 0, 2}},
-                 {TextureWrap::ClampToEdge, {0, 0, 3, 3}},
-                 {TextureWrap::MirroredRepeat, {0, 1, 3, 2}}};
-    for (const auto& c : cases) {
-        const TextureSampler s = sampler(c.wrap, TextureWrap::Repeat, false);
-        for (size_t k = 0; k < 4; ++k) {
-            EXPECT_EQ(sampleTexture(texture, s, {us[k], 0.5f}), texelOf(bytes, 4, c.texels[k], 0))
-                << "wrap " << int(c.wrap) << " at u = " << us[k];
-        }
-    }
     // u = 0 and u = 1 lie halfway between texel 3's centre and texel 0's across the seam.
     const glm::vec4 seam = 0.5f * (texelOf(bytes, 4, 3, 0) + texelOf(bytes, 4, 0, 0));
     const TextureSampler repeat = sampler(TextureWrap::Repeat, TextureWrap::Repeat, false);
