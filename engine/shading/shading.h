@@ -14,6 +14,7 @@ using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #include "brdf.glsl"
 #include "lights.glsl"
 #include "display.glsl"
+#include "texture.glsl"
 // The prefilter's source on the CPU (ibl.glsl): any trilinear lookup of (direction, mip).
 using EnvironmentSource = const std::function<vec3(vec3, real)>&;
 inline vec3 sampleEnvironmentSource(EnvironmentSource source, vec3 direction, real lod) {
