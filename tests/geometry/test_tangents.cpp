@@ -154,5 +154,110 @@ TEST(Tangents, MirroredIslandSplitsItsSharedEdge) {
     }
 }
 
+// makeUvSphere's grid: (rings + 1) rows of (segments + 1) vertices from the north pole down,
+// the last column repeating the first. Its UVs as a glTF UV sphere has them: u round the
+// longitude, v from the north pole (the image's top) down.
+Mesh sphereWithUvs(int rings, int segments) {
+    Mesh sphere = makeUvSphere(rings, segments);
+    EXPECT_TRUE(sphere.uv0.empty());   // the built-in sphere has none: made here
+    EXPECT_EQ(sphere.positions.size(), size_t(rings + 1) * size_t(segments + 1));
+    for (int ring = 0; ring <= rings; ++ring) {
+        for (int segment = 0; segment <= segments; ++segment) {
+            sphere.uv0.emplace_back(float(segment) / float(segments), float(ring) / float(rings));
+        }
+    }
+    return sphere;
+}
+
+TEST(Tangents, SphereTangentsFollowTheLongitude) {
+    const int rings = 16, segments = 32;
+    const Mesh sphere = sphereWithUvs(rings, segments);
+    const std::vector<glm::vec4> tangents = mikkTSpaceTangents(sphere, 0);
+    expectValidTangents(sphere, tangents);
+    for (size_t v = size_t(segments + 1); v < size_t(rings) * size_t(segments + 1); ++v) {   // off the poles
+        const glm::vec3 n = sphere.normals[v];
+        // u grows with the longitude: d/dphi of (sin phi, ., cos phi) is (cos phi, 0, -sin phi);
+        // up the image is north, +y in the tangent plane.
+        const glm::vec3 east = glm::normalize(glm::vec3(n.z, 0.0f, -n.x));
+        const glm::vec3 north = glm::normalize(glm::vec3(0.0f, 1.0f, 0.0f) - n * n.y);
+        // A face's dP/du is its chord along a ring, half a segment off the tangent at its ends:
+        // a seam vertex, with faces on one side only, keeps that turn; elsewhere both sides cancel it.
+        const bool seam = v % size_t(segments + 1) == 0 || v % size_t(segments + 1) == size_t(segments);
+        const float halfSegment = std::cos(std::numbers::pi_v<float> / float(segments));
+        EXPECT_GT(glm::dot(glm::vec3(tangents[v]), east), seam ? halfSegment - 1e-5f : 0.9995f) << "vertex " << v;
+        EXPECT_EQ(tangents[v].w, glm::dot(glm::cross(n, east), north) > 0.0f ? 1.0f : -1.0f) << "vertex " << v;
+    }
+    // Every face at a vertex agrees (the seam is already two columns): nothing splits.
+    EXPECT_EQ(withTangents(sphere, 0).positions.size(), sphere.positions.size());
+}
+
+TEST(Tangents, TriangleSoupWeldsToTheIndexedTangents) {
+    // A glTF primitive without indices: three vertices of its own per triangle.
+    const Mesh indexed = sphereWithUvs(8, 16);
+    Mesh soup;
+    for (uint32_t index : indexed.indices) {
+        soup.indices.push_back(uint32_t(soup.positions.size()));
+        soup.positions.push_back(indexed.positions[index]);
+        soup.normals.push_back(indexed.normals[index]);
+        soup.uv0.push_back(indexed.uv0[index]);
+    }
+    const std::vector<glm::vec4> smooth = mikkTSpaceTangents(indexed, 0);
+    const std::vector<glm::vec4> welded = mikkTSpaceTangents(soup, 0);
+    expectValidTangents(soup, welded);
+    for (size_t corner = 0; corner < soup.indices.size(); ++corner) {
+        expectNear(welded[corner], smooth[indexed.indices[corner]], "corner " + std::to_string(corner));
+    }
+}
+
+TEST(Tangents, DegenerateFacesGiveFiniteTangents) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    Mesh triangle;
+    triangle.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    triangle.normals.assign(3, kUp);
+    triangle.indices = {0, 1, 2};
+    // One UV for all corners, UVs on a line, a NaN UV; then corners on a line, and no UVs.
+    for (const std::vector<glm::vec2>& uvs : std::vector<std::vector<glm::vec2>>{
+             {{0.5f, 0.5f}, {0.5f, 0.5f}, {0.5f, 0.5f}}, {{0, 0}, {1, 1}, {2, 2}}, {{0, 0}, {1, 0}, {nan, 1}}}) {
+        triangle.uv0 = uvs;
+        const std::vector<glm::vec4> tangents = mikkTSpaceTangents(triangle, 0);
+        expectValidTangents(triangle, tangents);
+        for (const glm::vec4& t : tangents) {
+            EXPECT_EQ(t, glm::vec4(fallbackTangent(kUp), 1.0f));
+        }
+        const Mesh split = withTangents(triangle, 0);
+        expectValidTangents(split, split.tangents);
+    }
+    Mesh sliver = triangle;
+    sliver.positions[2] = {2, 0, 0};
+    sliver.uv0 = {{0, 0}, {1, 0}, {0, 1}};
+    expectValidTangents(sliver, mikkTSpaceTangents(sliver, 0));
+    expectValidTangents(sliver, mikkTSpaceTangents(sliver, 1));   // no uv1
+}
+
+TEST(Tangents, DegenerateFaceInheritsItsNeighboursTangent) {
+    // A rotated layout, so that the neighbour's tangent is not the fallback's +x.
+    const float a = glm::radians(60.0f);
+    const Layout layout{glm::mat2(std::cos(a), std::sin(a), -std::sin(a), std::cos(a)) * gltfLayout().matrix};
+    Mesh quad;
+    addQuad(quad, {0.0f, 0.0f}, {1.0f, 1.0f}, layout);
+    ASSERT_EQ(quad.indices[3], 0u);
+    quad.uv0[quad.indices[5]] = quad.uv0[0];   // the second triangle: no UV area
+    const std::vector<glm::vec4> tangents = mikkTSpaceTangents(quad, 0);
+    expectValidTangents(quad, tangents);
+    for (uint32_t v : {quad.indices[3], quad.indices[4]}) {   // shared with the first triangle
+        expectNear(tangents[v], analyticTangent(layout), "vertex " + std::to_string(v));
+    }
+    expectNear(tangents[quad.indices[5]], glm::vec4(fallbackTangent(kUp), 1.0f), "its own vertex");
+}
+
+TEST(Tangents, MeshWithoutNormalsGetsSmoothOnes) {
+    Mesh sphere = sphereWithUvs(8, 16);
+    sphere.normals.clear();
+    sphere.indices.insert(sphere.indices.end(), {0, 1, uint32_t(sphere.positions.size())});   // left out
+    const Mesh tangents = withTangents(sphere, 0);
+    ASSERT_EQ(tangents.normals.size(), tangents.positions.size());
+    expectValidTangents(tangents, tangents.tangents);
+}
+
 }  // namespace
 }  // namespace patina
