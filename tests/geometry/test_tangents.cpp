@@ -38,6 +38,11 @@ glm::vec4 analyticTangent(const Layout& layout) {
     return {t, glm::dot(glm::cross(kUp, t), upImage) > 0.0f ? 1.0f : -1.0f};
 }
 
+// The up-the-image direction a layout gives (-dP/dv), unit.
+glm::vec3 analyticUp(const Layout& layout) {
+    return glm::normalize(glm::vec3(-glm::inverse(layout.matrix)[1], 0.0f));
+}
+
 // The vertex at `p` with `uv`, made when the mesh has none yet: quads that meet along an edge
 // with the same UVs there share its vertices, as an indexed glTF mesh does.
 uint32_t vertexAt(Mesh& mesh, glm::vec3 p, glm::vec2 uv) {
@@ -262,6 +267,60 @@ TEST(Tangents, MeshWithoutNormalsGetsSmoothOnes) {
         EXPECT_NEAR(glm::length(tangents.normals[v] - smooth[v]), 0.0f, 1e-6f) << "vertex " << v;
     }
     expectValidTangents(tangents, tangents.tangents);
+}
+
+// The normal a shader makes of tangent-space normal `map` with a vertex's frame (glTF's).
+glm::vec3 perturbed(const glm::vec3& map, const glm::vec3& normal, const glm::vec4& tangent) {
+    const glm::vec3 t(tangent), bitangent = glm::cross(normal, t) * tangent.w;
+    return glm::normalize(t * map.x + bitangent * map.y + normal * map.z);
+}
+
+TEST(Tangents, MirroredStripeLightsFromTheSameSide) {
+    // One stripe of a normal map, painted once and used by both halves: its slope faces the
+    // map's +X (across the stripe) or +Y (along it).
+    const Mesh model = withTangents(mirroredModel(), 0);
+    for (const glm::vec3& map : {glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f)), glm::normalize(glm::vec3(0.0f, 0.3f, 1.0f))}) {
+        for (size_t corner = 0; corner < model.indices.size(); ++corner) {
+            const bool mirrored = onMirroredHalf(model, corner);
+            const Layout half = mirrored ? mirroredLayout() : gltfLayout();
+            const uint32_t v = model.indices[corner];
+            const glm::vec3 bumped = perturbed(map, model.normals[v], model.tangents[v]);
+            // Tilted as the map says, in this half's own UV directions: across the stripe
+            // towards growing u (mirrored in the world), along it up the image (not mirrored).
+            const glm::vec3 du = glm::vec3(analyticTangent(half)), up = analyticUp(half);
+            const glm::vec3 expected = glm::normalize(du * map.x + up * map.y + kUp * map.z);
+            EXPECT_NEAR(glm::length(bumped - expected), 0.0f, 1e-5f) << "corner " << corner << (mirrored ? ", mirrored" : "");
+            // So a light on the stripe's sloped side, seen in each half's UVs, lights it on both.
+            const glm::vec3 light = glm::normalize(du * map.x + up * map.y + kUp);
+            EXPECT_GT(glm::dot(bumped, light), glm::dot(kUp, light)) << "corner " << corner;
+        }
+    }
+}
+
+TEST(Tangents, FanWhoseTangentsTurnRoundSplits) {
+    // A disc with polar UVs, as at a UV sphere's pole made of one vertex: u runs round the rim,
+    // so each face's dP/du is its rim chord and the tangents at the centre turn a full circle.
+    const int sides = 8;
+    Mesh disc;
+    disc.positions = {glm::vec3(0.0f)};
+    disc.uv0 = {{0.5f, 0.0f}};
+    for (int k = 0; k <= sides; ++k) {   // the last repeats the first, at u = 1: the seam
+        const float a = 2.0f * std::numbers::pi_v<float> * float(k % sides) / float(sides);
+        disc.positions.emplace_back(std::cos(a), std::sin(a), 0.0f);
+        disc.uv0.emplace_back(float(k) / float(sides), 1.0f);
+    }
+    disc.normals.assign(disc.positions.size(), kUp);
+    for (uint32_t k = 1; k <= uint32_t(sides); ++k) {
+        disc.indices.insert(disc.indices.end(), {0, k, k + 1});
+    }
+    const Mesh split = withTangents(disc, 0);
+    expectValidTangents(split, split.tangents);
+    EXPECT_GT(split.positions.size(), disc.positions.size());   // the centre, at least
+    for (size_t corner = 0; corner < split.indices.size(); corner += 3) {
+        const glm::vec3 chord = glm::normalize(split.positions[split.indices[corner + 2]] - split.positions[split.indices[corner + 1]]);
+        // Each face's centre corner keeps a tangent on the chord's side, not a cancelled sum.
+        EXPECT_GT(glm::dot(glm::vec3(split.tangents[split.indices[corner]]), chord), 0.0f) << "face " << corner / 3;
+    }
 }
 
 }  // namespace
