@@ -1,6 +1,7 @@
 // MikkTSpace tangents (tangents.h): against the tangent frames the UV layouts give analytically.
 // glTF's v grows down the image and a normal map's +Y points up it, so the bitangent a tangent
 // implies, cross(N, T) * w, must point along -dP/dv.
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -57,14 +58,18 @@ uint32_t vertexAt(Mesh& mesh, glm::vec3 p, glm::vec2 uv) {
     return uint32_t(mesh.positions.size() - 1);
 }
 
+// The triangle a, b, c of the xy plane, UVs by `layout`.
+void addTriangle(Mesh& mesh, glm::vec2 a, glm::vec2 b, glm::vec2 c, const Layout& layout) {
+    for (glm::vec2 xy : {a, b, c}) {
+        mesh.indices.push_back(vertexAt(mesh, glm::vec3(xy, 0.0f), layout.matrix * xy + layout.offset));
+    }
+}
+
 // The square [low, high] in the xy plane, wound counter-clockwise about +z, UVs by `layout`.
 void addQuad(Mesh& mesh, glm::vec2 low, glm::vec2 high, const Layout& layout) {
-    uint32_t corner[4];
-    const glm::vec2 xy[4] = {low, {high.x, low.y}, high, {low.x, high.y}};
-    for (int k = 0; k < 4; ++k) {
-        corner[k] = vertexAt(mesh, glm::vec3(xy[k], 0.0f), layout.matrix * xy[k] + layout.offset);
-    }
-    mesh.indices.insert(mesh.indices.end(), {corner[0], corner[1], corner[2], corner[0], corner[2], corner[3]});
+    const glm::vec2 right(high.x, low.y), left(low.x, high.y);
+    addTriangle(mesh, low, right, high, layout);
+    addTriangle(mesh, low, high, left, layout);
 }
 
 // The contract of every tangent: finite, xyz unit and orthogonal to the normal, w = +-1.
@@ -321,6 +326,34 @@ TEST(Tangents, FanWhoseTangentsTurnRoundSplits) {
         // Each face's centre corner keeps a tangent on the chord's side, not a cancelled sum.
         EXPECT_GT(glm::dot(glm::vec3(split.tangents[split.indices[corner]]), chord), 0.0f) << "face " << corner / 3;
     }
+}
+
+TEST(Tangents, CuttingAFaceLeavesTheVertexTangent) {
+    // Two faces at the origin with UV maps that meet along x = 0 and give tangents 45 degrees
+    // apart; the second is then cut in two through the origin (its angle there halved in
+    // each), or away from it (its area at the origin halved). The origin's tangent is each
+    // face's weighted by its angle there, so neither cut moves it.
+    const Layout second{glm::mat2(3.0f, 1.0f, 0.0f, -1.0f), glm::vec2(0.0f, 1.0f)};
+    const glm::vec2 origin(0.0f), right(1.0f, 0.0f), top(0.0f, 1.0f), left(-1.0f, 0.0f);
+    auto tangentAtOrigin = [&](const std::vector<std::array<glm::vec2, 3>>& cut) {
+        Mesh mesh;
+        addTriangle(mesh, origin, right, top, gltfLayout());
+        for (const std::array<glm::vec2, 3>& t : cut) {
+            addTriangle(mesh, t[0], t[1], t[2], second);
+        }
+        EXPECT_EQ(mesh.positions.front(), glm::vec3(0.0f));
+        const Mesh split = withTangents(mesh, 0);
+        EXPECT_EQ(split.positions.size(), mesh.positions.size());   // one group at the origin
+        return split.tangents.front();
+    };
+    const glm::vec4 whole = tangentAtOrigin({{origin, top, left}});
+    const glm::vec2 edgeMiddle = 0.5f * (top + left), sideMiddle = 0.5f * left;
+    const glm::vec4 throughIt = tangentAtOrigin({{origin, top, edgeMiddle}, {origin, edgeMiddle, left}});
+    const glm::vec4 awayFromIt = tangentAtOrigin({{origin, top, sideMiddle}, {sideMiddle, top, left}});
+    EXPECT_GT(glm::dot(glm::vec3(whole), glm::vec3(analyticTangent(gltfLayout()))), 0.9f);
+    EXPECT_LT(glm::dot(glm::vec3(whole), glm::vec3(analyticTangent(gltfLayout()))), 0.99f);   // both faces count
+    expectNear(throughIt, whole, "cut through the origin");
+    expectNear(awayFromIt, whole, "cut away from the origin");
 }
 
 }  // namespace
