@@ -5,12 +5,14 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <glm/mat2x2.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "geometry/tangents.h"
 
@@ -133,7 +135,8 @@ TEST(Tangents, RotatedLayoutRotatesTheTangent) {
         const std::vector<glm::vec4> tangents = mikkTSpaceTangents(quad, 0);
         expectValidTangents(quad, tangents);
         for (size_t v = 0; v < tangents.size(); ++v) {
-            expectNear(tangents[v], analyticTangent(layout), std::to_string(degrees) + " degrees, vertex " + std::to_string(v));
+            expectNear(tangents[v], analyticTangent(layout),
+                       std::to_string(degrees) + " degrees, vertex " + std::to_string(v));
         }
     }
 }
@@ -284,7 +287,9 @@ TEST(Tangents, MirroredStripeLightsFromTheSameSide) {
     // One stripe of a normal map, painted once and used by both halves: its slope faces the
     // map's +X (across the stripe) or +Y (along it).
     const Mesh model = withTangents(mirroredModel(), 0);
-    for (const glm::vec3& map : {glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f)), glm::normalize(glm::vec3(0.0f, 0.3f, 1.0f))}) {
+    const glm::vec3 across = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));
+    const glm::vec3 along = glm::normalize(glm::vec3(0.0f, 0.3f, 1.0f));
+    for (const glm::vec3& map : {across, along}) {
         for (size_t corner = 0; corner < model.indices.size(); ++corner) {
             const bool mirrored = onMirroredHalf(model, corner);
             const Layout half = mirrored ? mirroredLayout() : gltfLayout();
@@ -294,7 +299,8 @@ TEST(Tangents, MirroredStripeLightsFromTheSameSide) {
             // towards growing u (mirrored in the world), along it up the image (not mirrored).
             const glm::vec3 du = glm::vec3(analyticTangent(half)), up = analyticUp(half);
             const glm::vec3 expected = glm::normalize(du * map.x + up * map.y + kUp * map.z);
-            EXPECT_NEAR(glm::length(bumped - expected), 0.0f, 1e-5f) << "corner " << corner << (mirrored ? ", mirrored" : "");
+            EXPECT_NEAR(glm::length(bumped - expected), 0.0f, 1e-5f)
+                << "corner " << corner << (mirrored ? ", mirrored" : "");
             // So a light on the stripe's sloped side, seen in each half's UVs, lights it on both.
             const glm::vec3 light = glm::normalize(du * map.x + up * map.y + kUp);
             EXPECT_GT(glm::dot(bumped, light), glm::dot(kUp, light)) << "corner " << corner;
@@ -322,7 +328,8 @@ TEST(Tangents, FanWhoseTangentsTurnRoundSplits) {
     expectValidTangents(split, split.tangents);
     EXPECT_GT(split.positions.size(), disc.positions.size());   // the centre, at least
     for (size_t corner = 0; corner < split.indices.size(); corner += 3) {
-        const glm::vec3 chord = glm::normalize(split.positions[split.indices[corner + 2]] - split.positions[split.indices[corner + 1]]);
+        const glm::vec3& rim = split.positions[split.indices[corner + 1]];
+        const glm::vec3 chord = glm::normalize(split.positions[split.indices[corner + 2]] - rim);
         // Each face's centre corner keeps a tangent on the chord's side, not a cancelled sum.
         EXPECT_GT(glm::dot(glm::vec3(split.tangents[split.indices[corner]]), chord), 0.0f) << "face " << corner / 3;
     }
