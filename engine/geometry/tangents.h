@@ -20,12 +20,15 @@ namespace patina {
 //   them), so a glTF primitive without indices gets smooth tangents too; a UV seam repeats a
 //   position with other UVs, so the faces on its two sides never share a tangent.
 // - Each face's tangent is its dP/du; its sign is +1 where its UVs, with v read up the image
-//   (glTF's v grows down), wind as its corners do, and -1 on a mirrored face.
+//   (glTF's v grows down), wind as its corners do, and -1 on a mirrored face. That is the
+//   right sign for faces wound counter-clockwise about their normals (glTF's front faces).
 // - At a vertex, faces of one sign whose tangents, made orthogonal to the vertex's normal, lie
 //   within 90 degrees of the group's first face's (in index order) form a group: the sum of
 //   their tangents, weighted by each face's angle at the vertex, made unit, is the group's.
 //   A mirrored face never shares a tangent with an unmirrored one; a fan whose tangents turn
-//   right round (a pole with one vertex) splits instead of cancelling.
+//   right round (a pole with one vertex) splits instead of cancelling. (The reference's
+//   default merges every face of one sign; the two differ only where faces at a vertex turn
+//   more than 90 degrees apart, where its sum may cancel to noise.)
 // - A face with no UV gradient (zero UV area) or no area joins the vertex's first group and
 //   adds nothing; a vertex with no other face gets fallbackTangent(normal) and w = +1.
 // A vertex whose faces form several groups takes its first corner's (in index order):
