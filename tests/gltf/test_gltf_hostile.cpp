@@ -22,9 +22,6 @@ using test::cubeModel;
 using test::GltfBuilder;
 using test::importError;
 
-#define EXPECT_ERROR(message, part) \
-    EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
-
 class GltfHostile : public test::ScratchTest {
 protected:
     void SetUp() override {
