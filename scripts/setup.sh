@@ -15,6 +15,9 @@ packages=(
   # Blender's eight CC0 HDRIs (/usr/share/blender/datafiles/studiolights/world/*.exr), which the
   # environment tests read: real files from a real writer.
   blender-data
+  # assimp's glTF 2.0 test models (/usr/share/assimp/models/glTF2), which the glTF model tests
+  # read: real files from other writers, broken ones among them.
+  assimp-testmodels
 )
 # Clang 16, the first to take the shaders' C++ (parenthesized aggregate initialization, P0960);
 # libclang-rt-16-dev holds libFuzzer and the ASan/UBSan runtimes (clang-16 only recommends it);

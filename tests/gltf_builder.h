@@ -9,11 +9,17 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <gtest/gtest.h>
 
 #include "gltf/glb.h"
 #include "gltf/import.h"
+#include "gltf/model_import.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
+
+// `message` (an error) contains `part`; else the test fails, showing the message.
+#define EXPECT_ERROR(message, part) \
+    EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
 
 namespace patina::test {
 
@@ -163,14 +169,23 @@ inline GltfBuilder cubeModel(bool withNormals = true, int indexType = kUnsignedS
     return model;
 }
 
-// The InputError importGltf throws, or "(loaded)"; any other exception fails the test.
-inline std::string importError(const std::filesystem::path& path) {
+// The InputError `load` throws, or "(loaded)"; any other exception fails the test.
+template <typename Load>
+std::string errorOf(const Load& load) {
     try {
-        importGltf(path);
+        load();
     } catch (const InputError& error) {
         return error.what();
     }
     return "(loaded)";
+}
+
+// The InputError importGltf / importGltfModel throws, or "(loaded)".
+inline std::string importError(const std::filesystem::path& path) {
+    return errorOf([&] { importGltf(path); });
+}
+inline std::string modelError(const std::filesystem::path& path) {
+    return errorOf([&] { importGltfModel(path); });
 }
 
 }  // namespace patina::test

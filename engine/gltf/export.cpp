@@ -23,21 +23,6 @@ constexpr int kUnsignedInt = 5125;      // UNSIGNED_INT
 constexpr int kArrayBuffer = 34962;     // bufferView targets
 constexpr int kElementArrayBuffer = 34963;
 
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string text;
-    text.reserve((bytes.size() + 2) / 3 * 4);
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        const size_t n = std::min<size_t>(3, bytes.size() - i);
-        uint32_t group = uint32_t(bytes[i]) << 16;
-        group |= n > 1 ? uint32_t(bytes[i + 1]) << 8 : 0;
-        group |= n > 2 ? uint32_t(bytes[i + 2]) : 0;
-        for (size_t k = 0; k < 4; ++k) {
-            text += k <= n ? digits[(group >> (18 - 6 * k)) & 63] : '=';
-        }
-    }
-    return text;
-}
 
 // A file name as a URI path: everything but RFC 3986's unreserved characters percent-encoded.
 std::string uriOfFileName(const std::string& name) {
@@ -63,6 +48,22 @@ void append(std::vector<uint8_t>& bin, const std::vector<T>& values) {
 Json vec3Json(const glm::vec3& v) { return Json::array({double(v.x), double(v.y), double(v.z)}); }
 
 }  // namespace
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string text;
+    text.reserve((bytes.size() + 2) / 3 * 4);
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const size_t n = std::min<size_t>(3, bytes.size() - i);
+        uint32_t group = uint32_t(bytes[i]) << 16;
+        group |= n > 1 ? uint32_t(bytes[i + 1]) << 8 : 0;
+        group |= n > 2 ? uint32_t(bytes[i + 2]) : 0;
+        for (size_t k = 0; k < 4; ++k) {
+            text += k <= n ? digits[(group >> (18 - 6 * k)) & 63] : '=';
+        }
+    }
+    return text;
+}
 
 std::vector<OutputFile> encodeGltf(const fs::path& path, const Mesh& mesh, const Material& material,
                                    GltfBuffer buffer) {

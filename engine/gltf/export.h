@@ -2,6 +2,7 @@
 // glTF 2.0 export of a mesh with a material (docs/FORMATS.md, "glTF": export).
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "scene/material.h"
@@ -23,6 +24,9 @@ struct OutputFile {
 // ends in neither .gltf nor .glb, or an empty mesh.
 std::vector<OutputFile> encodeGltf(const std::filesystem::path& path, const Mesh& mesh,
                                    const Material& material, GltfBuffer buffer = GltfBuffer::Embedded);
+
+// RFC 4648 base64, as a data: URI holds its bytes.
+std::string base64(const std::vector<uint8_t>& bytes);
 
 // Writes encodeGltf's files, each atomically, the .bin first; if one cannot be written, those
 // written before it are removed again. Throws std::runtime_error naming the path.

@@ -1,7 +1,11 @@
 #include "gltf/json_check.h"
 
+#include <cmath>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
+#include "gltf/json_rules.h"
 #include "io/input_error.h"
 
 namespace patina::gltf {
@@ -10,24 +14,130 @@ namespace {
 
 using SaxJson = nlohmann::json;
 
+// What a JSON value is, as far as the rules care; `text` shows it in a message.
+struct Found {
+    enum Kind { Null, Boolean, Negative, Unsigned, Float, String, Object, Array } kind;
+    std::string text;
+    double number = 0.0;
+};
+
+std::string expected(const JsonRule& rule) {
+    switch (rule.kind) {
+    case JsonKind::Object: return "an object";
+    case JsonKind::Array: return "an array";
+    case JsonKind::String: return "a string";
+    case JsonKind::Number: return "a number";
+    case JsonKind::Boolean: return "true or false";
+    case JsonKind::Integer: return "a whole number";
+    case JsonKind::Unsigned: return "a whole number of at least 0";
+    case JsonKind::Index: return std::string("the index of a ") + rule.noun;
+    }
+    return "";
+}
+
+// A float that holds a whole number passes where an integer is asked for (2.0 for 2).
+bool fits(const JsonRule& rule, const Found& found) {
+    const bool whole = found.kind == Found::Negative || found.kind == Found::Unsigned ||
+                       (found.kind == Found::Float && found.number == std::floor(found.number));
+    const bool notNegative = whole && found.number >= 0.0;
+    switch (rule.kind) {
+    case JsonKind::Object: return found.kind == Found::Object;
+    case JsonKind::Array: return found.kind == Found::Array;
+    case JsonKind::String: return found.kind == Found::String;
+    case JsonKind::Number: return found.kind == Found::Negative || found.kind == Found::Unsigned || found.kind == Found::Float;
+    case JsonKind::Boolean: return found.kind == Found::Boolean;
+    case JsonKind::Integer: return whole;
+    case JsonKind::Unsigned:
+    case JsonKind::Index: return notNegative;
+    }
+    return true;
+}
+
+// RFC 6901: '~' and '/' in a key.
+std::string escaped(const std::string& key) {
+    std::string text;
+    for (const char c : key) {
+        text += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+    }
+    return text;
+}
+
+// Where the parse is, as a JSON pointer for messages and as the pattern gltfJsonRule looks up
+// (array indices as "*"), and the check of each value against its rule.
+class TypedPath {
+public:
+    void key(const std::string& key) {
+        const Frame& frame = frames_.back();
+        pointer_.resize(frame.pointerBase);
+        pattern_.resize(frame.patternBase);
+        pointer_ += "/" + escaped(key);
+        pattern_ += "/" + escaped(key);
+    }
+    // Before each value: an array's element takes its index. Returns what is wrong, or "".
+    std::string check(const Found& found) {
+        if (!frames_.empty() && frames_.back().array) {
+            Frame& frame = frames_.back();
+            pointer_.resize(frame.pointerBase);
+            pattern_.resize(frame.patternBase);
+            pointer_ += "/" + std::to_string(frame.index++);
+            pattern_ += "/*";
+        }
+        const JsonRule* rule = this->rule();
+        if (!rule || fits(*rule, found)) {
+            return "";
+        }
+        if (rule->kind == JsonKind::Index && found.kind == Found::Negative) {
+            return pointer_ + ": " + rule->noun + " " + found.text + " does not exist";
+        }
+        return pointer_ + ": must be " + expected(*rule) + ", not " + found.text;
+    }
+    void enter(bool array) { frames_.push_back({array, 0, pointer_.size(), pattern_.size()}); }
+    void leave() { frames_.pop_back(); }
+
+private:
+    struct Frame {
+        bool array;
+        size_t index, pointerBase, patternBase;
+    };
+    static constexpr size_t kDeepestRule = 8;   // segments of the longest pattern in json_rules.cpp
+
+    const JsonRule* rule() const {
+        if (frames_.empty() || frames_.size() > kDeepestRule) {
+            return nullptr;
+        }
+        if (const JsonRule* exact = gltfJsonRule(pattern_)) {
+            return exact;
+        }
+        const Frame& frame = frames_.back();
+        return frame.array ? nullptr : gltfJsonRule(pattern_.substr(0, frame.patternBase) + "/{}");
+    }
+
+    std::vector<Frame> frames_;
+    std::string pointer_, pattern_;
+};
+
 // Counts as it goes and stops the parse at the first broken rule; no document is built.
 class Checker final : public nlohmann::json_sax<SaxJson> {
 public:
     explicit Checker(bool glb) : glb_(glb) {}
 
-    bool null() override { return value(); }
-    bool boolean(bool) override { return value(); }
-    bool number_integer(number_integer_t) override { return value(); }
-    bool number_unsigned(number_unsigned_t) override { return value(); }
-    bool number_float(number_float_t, const string_t&) override { return value(); }
-    bool string(string_t&) override { return value(); }
-    bool binary(binary_t&) override { return value(); }
+    bool null() override { return value({Found::Null, "null"}); }
+    bool boolean(bool b) override { return value({Found::Boolean, b ? "true" : "false"}); }
+    bool number_integer(number_integer_t n) override {
+        return value({n < 0 ? Found::Negative : Found::Unsigned, std::to_string(n), double(n)});
+    }
+    bool number_unsigned(number_unsigned_t n) override {
+        return value({Found::Unsigned, std::to_string(n), double(n)});
+    }
+    bool number_float(number_float_t n, const string_t& text) override { return value({Found::Float, text, n}); }
+    bool string(string_t&) override { return value({Found::String, "a string"}); }
+    bool binary(binary_t&) override { return value({Found::String, "binary data"}); }
 
     bool start_object(std::size_t) override {
         if (++objects_ > kMaxJsonObjects) {
             return stop("more than " + std::to_string(kMaxJsonObjects) + " objects");
         }
-        if (!enter()) {
+        if (!enter({Found::Object, "an object"}, false)) {
             return false;
         }
         if (inBuffers_ && depth_ == 3) {
@@ -36,6 +146,7 @@ public:
         return true;
     }
     bool key(string_t& key) override {
+        path_.key(key);
         if (depth_ == 1) {
             rootKey_ = key;
         } else if (inBuffers_ && depth_ == 3 && key == "uri") {
@@ -53,10 +164,11 @@ public:
             ++buffer_;
         }
         --depth_;
+        path_.leave();
         return true;
     }
     bool start_array(std::size_t) override {
-        if (!enter()) {
+        if (!enter({Found::Array, "an array"}, true)) {
             return false;
         }
         if (depth_ == 2 && rootKey_ == "buffers") {
@@ -69,6 +181,7 @@ public:
             inBuffers_ = false;
         }
         --depth_;
+        path_.leave();
         return true;
     }
     bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) override {
@@ -83,14 +196,18 @@ public:
     const std::string& problem() const { return problem_; }
 
 private:
-    bool value() {
-        return ++values_ <= kMaxJsonValues ||
-               stop("more than " + std::to_string(kMaxJsonValues) + " JSON values");
+    bool value(const Found& found) {
+        if (++values_ > kMaxJsonValues) {
+            return stop("more than " + std::to_string(kMaxJsonValues) + " JSON values");
+        }
+        const std::string problem = path_.check(found);
+        return problem.empty() || stop(problem);
     }
-    bool enter() {
-        if (!value()) {
+    bool enter(const Found& found, bool array) {
+        if (!value(found)) {
             return false;
         }
+        path_.enter(array);
         return ++depth_ <= kMaxJsonDepth ||
                stop("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     }
@@ -106,6 +223,7 @@ private:
     std::string rootKey_;
     bool inBuffers_ = false, bufferHasUri_ = false;
     size_t buffer_ = 0;
+    TypedPath path_;
     std::string problem_;
 };
 

@@ -1,8 +1,9 @@
 #pragma once
 // A pass over the glTF JSON before tinygltf parses it, for what would otherwise cost a crash
 // or unbounded memory inside the parser: syntax, nesting depth, the number of values (each
-// becomes an object of up to 2 KiB in tinygltf's model), and in a GLB that only buffers[0]
-// takes the BIN chunk (tinygltf copies the chunk for every buffer without a uri).
+// becomes an object of up to 2 KiB in tinygltf's model), in a GLB that only buffers[0] takes
+// the BIN chunk (tinygltf copies the chunk for every buffer without a uri), and the JSON type
+// of every property Patina reads (json_rules.h: tinygltf drops one of the wrong type quietly).
 #include <cstddef>
 #include <string>
 #include <string_view>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gltf/values.h"
 #include "io/input_error.h"
 
 namespace patina::gltf {
@@ -10,25 +11,6 @@ namespace {
 
 constexpr const char* kSpecular = "KHR_materials_specular";
 constexpr const char* kIor = "KHR_materials_ior";
-
-// JSON numbers are finite: checkGltfJson refuses any that a double cannot hold.
-double numberOf(const tinygltf::Value& value, const std::string& what, const std::string& source) {
-    if (!value.IsNumber()) {
-        throw InputError(source + ": " + what + ": must be a number");
-    }
-    return value.GetNumberAsDouble();
-}
-
-// The extension's object (tinygltf keeps only objects), or null when the material has none.
-const tinygltf::Value* extension(const tinygltf::Material& material, const char* name) {
-    const auto found = material.extensions.find(name);
-    return found == material.extensions.end() ? nullptr : &found->second;
-}
-
-double field(const tinygltf::Value* object, const char* key, double fallback, const std::string& what,
-             const std::string& source) {
-    return object && object->Has(key) ? numberOf(object->Get(key), what + "/" + key, source) : fallback;
-}
 
 float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
 
@@ -56,22 +38,13 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     result.roughness = unit(pbr.roughnessFactor);
 
     const std::string specularAt = what + "/extensions/" + kSpecular;
-    const tinygltf::Value* specular = extension(material, kSpecular);
-    const double specularFactor = field(specular, "specularFactor", 1.0, specularAt, source);
-    double largestColor = 1.0;   // Patina's F0 is grey: the largest channel keeps the highlight
-    if (specular && specular->Has("specularColorFactor")) {
-        const tinygltf::Value& color = specular->Get("specularColorFactor");
-        const std::string colorAt = specularAt + "/specularColorFactor";
-        if (!color.IsArray() || color.ArrayLen() != 3) {
-            throw InputError(source + ": " + colorAt + ": must be an array of 3 numbers");
-        }
-        largestColor = 0.0;
-        for (int i = 0; i < 3; ++i) {
-            largestColor = std::max(largestColor, numberOf(color.Get(i), colorAt + "/" + std::to_string(i), source));
-        }
-    }
+    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
+    const double specularFactor = numberField(specular, "specularFactor", 1.0, specularAt, source);
+    // Patina's F0 is grey: the largest channel keeps the highlight.
+    const std::vector<double> color = numbersField(specular, "specularColorFactor", 3, specularAt, source);
+    const double largestColor = color.empty() ? 1.0 : *std::max_element(color.begin(), color.end());
     const std::string iorAt = what + "/extensions/" + kIor;
-    const double ior = field(extension(material, kIor), "ior", kExportIor, iorAt, source);
+    const double ior = numberField(extensionOf(material.extensions, kIor), "ior", kExportIor, iorAt, source);
     if (ior < 1.0) {
         throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1");
     }

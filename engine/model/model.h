@@ -60,11 +60,17 @@ struct ModelMaterial {
 
 // One primitive placed once: glTF node world matrix times the mesh's primitive. `material` < 0
 // draws glTF's default material (white, metallic 1, roughness 1).
+// Primitives are shared between draws and wound counter-clockwise in their own space; a
+// transform with a negative determinant winds them clockwise in world space (glTF 2.0 section
+// 3.7.4). Such a draw has `mirrored` set, and whoever draws it takes clockwise triangles as its
+// front faces (glFrontFace(GL_CW)); its normals go through the inverse transpose as any draw's.
 struct DrawItem {
     int primitive = 0;
     int material = -1;
     glm::mat4 transform{1.0f};
-    std::string node;   // the node's name (or "node N"), for picking and messages
+    std::string node;        // the node's name (or "node N"), for picking and messages
+    bool mirrored = false;   // determinant(transform) < 0
+    bool operator==(const DrawItem&) const = default;
 };
 
 struct Model {

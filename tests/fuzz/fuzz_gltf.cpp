@@ -1,6 +1,7 @@
 // glTF import of one model file, written for each input to PATINA_FUZZ_MODEL in a folder of
-// its own (importGltf reads files only, inside the model's folder). Refusals are InputErrors;
-// anything else, or a mesh that breaks the import's promises, is a bug.
+// its own (the imports read files only, inside the model's folder): the flattened mesh
+// (importGltf) and the whole model (importGltfModel). Refusals are InputErrors; anything else,
+// or a result that breaks the import's promises, is a bug.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -8,8 +9,10 @@
 #include <fstream>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
 #include "gltf/import.h"
+#include "gltf/model_import.h"
 #include "geometry/hidden_faces.h"
 #include "io/input_error.h"
 #include "scratch_folder.h"
@@ -23,6 +26,52 @@ const std::filesystem::path& modelPath() {
 bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+
+// model.h's promises: attributes absent or one per position, indices in range, every index of
+// a draw or a map pointing at something, images the size they say.
+bool wellFormed(const patina::Mesh& mesh) {
+    const size_t n = mesh.positions.size();
+    auto absentOrOnePer = [n](size_t size) { return size == 0 || size == n; };
+    if (mesh.normals.size() != n || !absentOrOnePer(mesh.uv0.size()) || !absentOrOnePer(mesh.uv1.size()) ||
+        !absentOrOnePer(mesh.tangents.size()) || mesh.indices.size() % 3 != 0) {
+        return false;
+    }
+    for (const uint32_t index : mesh.indices) {
+        if (index >= n) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool wellFormed(const patina::Model& model) {
+    for (const patina::Mesh& primitive : model.primitives) {
+        if (!wellFormed(primitive)) {
+            return false;
+        }
+    }
+    for (const patina::DrawItem& draw : model.draws) {
+        if (draw.primitive < 0 || size_t(draw.primitive) >= model.primitives.size() || draw.material < -1 ||
+            draw.material >= int(model.materials.size()) ||
+            (glm::determinant(glm::dmat3(glm::dmat4(draw.transform))) < 0.0) != draw.mirrored) {
+            return false;
+        }
+    }
+    for (const patina::ModelMaterial& material : model.materials) {
+        for (const patina::TextureSlot* slot : {&material.baseColor, &material.metallicRoughness, &material.normal,
+                                                &material.occlusion, &material.emissive}) {
+            if (slot->image >= int(model.images.size()) || slot->texCoord < 0 || slot->texCoord > 1) {
+                return false;
+            }
+        }
+    }
+    for (const patina::ModelImage& image : model.images) {
+        if (image.rgba.size() != size_t(image.width) * size_t(image.height) * 4) {
+            return false;
+        }
+    }
+    return !model.draws.empty();
+}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -32,6 +81,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!file) {
             std::abort();
         }
+    }
+    try {
+        if (!wellFormed(patina::importGltfModel(modelPath()))) {
+            std::abort();
+        }
+    } catch (const patina::InputError&) {
     }
     patina::GltfImport model;
     try {

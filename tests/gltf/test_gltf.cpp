@@ -1,5 +1,5 @@
 // glTF import (engine/gltf/import.h) of valid files: geometry through the node hierarchy,
-// index widths, strips and fans, generated normals, the material mapping, framing and speed.
+// index widths, strips and fans, flat normals, the material mapping, framing and speed.
 // Hostile files are in test_gltf_hostile.cpp, export in test_gltf_export.cpp.
 #include <chrono>
 #include <cmath>
@@ -55,23 +55,27 @@ TEST_F(Gltf, CubeWithNormalsFromGltfGlbAndDataUri) {
     }
 }
 
-TEST_F(Gltf, MissingNormalsAreGeneratedSmoothAndAreaWeighted) {
+// glTF 2.0 section 3.7.2.1: without NORMAL, flat normals.
+TEST_F(Gltf, MissingNormalsAreFlat) {
     cubeModel(false).writeGltf(path("cube.gltf"));
     const Mesh mesh = importGltf(path("cube.gltf")).mesh;
     const Cube cube;
-    ASSERT_EQ(mesh.normals.size(), cube.normals.size());
-    for (size_t i = 0; i < cube.normals.size(); ++i) {   // no shared vertices: the face normals
+    ASSERT_EQ(mesh.normals.size(), cube.normals.size());   // split by face already: no copies
+    for (size_t i = 0; i < cube.normals.size(); ++i) {
         EXPECT_NEAR(glm::distance(mesh.normals[i], cube.normals[i]), 0.0f, 1e-6f) << i;
     }
-    // A shared vertex between a big and a small triangle leans towards the big one's normal.
+    // A vertex shared by a big and a small triangle facing apart: each triangle keeps its own
+    // plane's normal, through a copy of the vertex.
     GltfBuilder model;
     const int positions = model.positions({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 0.1f}, {0, -0.1f, 0}});
     const int indices = model.data(std::vector<uint16_t>{0, 1, 2, 0, 3, 4}, test::kUnsignedShort, "SCALAR", 1);
     model.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
     model.writeGltf(path("fan.gltf"));
-    const glm::vec3 shared = importGltf(path("fan.gltf")).mesh.normals[0];
-    EXPECT_NEAR(glm::length(shared), 1.0f, 1e-6f);
-    EXPECT_GT(shared.z, 0.99f);   // area 8 facing +z against area 0.005 facing +x
+    const Mesh fan = importGltf(path("fan.gltf")).mesh;
+    ASSERT_EQ(fan.positions.size(), 6u);
+    EXPECT_EQ(fan.normals[fan.indices[0]], glm::vec3(0, 0, 1));
+    EXPECT_EQ(fan.normals[fan.indices[3]], glm::vec3(1, 0, 0));
+    EXPECT_EQ(fan.positions[fan.indices[3]], glm::vec3(0, 0, 0));
     // A vertex on no triangle of any area still gets a unit normal.
     GltfBuilder point;
     point.meshNode({{"attributes", {{"POSITION", point.positions({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}})}}}});

@@ -22,9 +22,6 @@ using test::cubeModel;
 using test::GltfBuilder;
 using test::importError;
 
-#define EXPECT_ERROR(message, part) \
-    EXPECT_NE(std::string(message).find(part), std::string::npos) << "message: " << (message)
-
 class GltfHostile : public test::ScratchTest {
 protected:
     void SetUp() override {
@@ -222,9 +219,9 @@ TEST_F(GltfHostile, WrongTypesAreRefusedWithThePlace) {
         {"/accessors/0/componentType", 5130, "not VEC3 of component type 5130"},
         {"/accessors/0/count", "24", "count"},
         {"/accessors/1/count", 23, "/meshes/0/primitives/0/attributes/NORMAL: 23 normals for 24 positions"},
-        {"/accessors/0/sparse", {{"count", 1}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}},
+        {"/accessors/0/sparse", {{"count", 25}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}},
                                  {"values", {{"bufferView", 0}}}},
-         "sparse accessors are not supported"},
+         "/accessors/0/sparse/count: 25 must be from 1 to the accessor's 24 elements"},
         {"/accessors/0/bufferView", 42, "/accessors/0 (/meshes/0/primitives/0/attributes/POSITION): buffer view 42"},
         {"/accessors/0/bufferView", nullptr, "buffer view -1 does not exist"},
         {"/bufferViews/0/buffer", 3, "/bufferViews/0: buffer 3 does not exist"},
@@ -239,10 +236,10 @@ TEST_F(GltfHostile, WrongTypesAreRefusedWithThePlace) {
         {"/nodes/0/rotation", {0, 0, 0, 0}, "/nodes/0/rotation: not a unit quaternion"},
         {"/nodes/0/rotation", {1e300, 1e300, 0, 0}, "/nodes/0/rotation: not a unit quaternion"},   // overflows
         {"/nodes/0/scale", {1, 2, 3, 4}, "/nodes/0/scale: must have 3 numbers"},
-        {"/nodes/0/children", {0}, "/nodes/0: reached twice (a cycle, or a node with two parents)"},
+        {"/nodes/0/children", {0}, "/nodes/0: is its own ancestor (a cycle in the node hierarchy)"},
         {"/nodes/0/children", {5}, "/nodes/0/children: node 5 does not exist"},
         {"/scenes/0/nodes", {9}, "/scenes/0/nodes: node 9 does not exist"},
-        {"/scenes/0/nodes", {0, 0}, "reached twice"},
+        {"/scenes/0/nodes", {0, 0}, "/scenes/0/nodes: node 0 is listed twice"},
         {"/scene", 4, "/scene: scene 4 does not exist"},
         {"/scene", -3, "/scene: scene -3 does not exist"},
         {"/materials/0/pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1}}}, "baseColorFactor"},
@@ -258,8 +255,7 @@ TEST_F(GltfHostile, WrongTypesAreRefusedWithThePlace) {
         {"/extensionsRequired", {"KHR_draco_mesh_compression"},
          "requires the extension KHR_draco_mesh_compression, which Patina does not support"},
         {"/asset", nullptr, "asset"},
-        {"/nodes/0/translation", {1e308, 0, 0}, "/meshes/0/primitives/0/attributes/POSITION: element 0 is not finite "
-                                                "(after the node transforms)"},
+        {"/nodes/0/translation", {1e308, 0, 0}, "/nodes/0: its world transform is not finite in single precision"},
     };
     for (const auto& c : cases) {
         const std::string error = errorWith(c.pointer, c.value);

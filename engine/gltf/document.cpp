@@ -1,0 +1,83 @@
+#include "gltf/document.h"
+
+#include <new>
+
+#include "common/one_line.h"
+#include "gltf/files.h"
+#include "gltf/glb.h"
+#include "gltf/json_check.h"
+#include "io/input_error.h"
+
+namespace patina::gltf {
+
+namespace {
+
+// Extensions a file may require (section 3.12): Patina reads them all.
+bool canRequire(const std::string& extension) {
+    return extension == "KHR_materials_specular" || extension == "KHR_materials_ior" ||
+           extension == "KHR_texture_transform" || extension == "KHR_materials_emissive_strength";
+}
+
+// tinygltf's image callback: the encoded bytes are kept for images.cpp, which decodes only
+// what a material uses. A buffer view's bytes are left where they are: images.cpp reads them
+// after checking the view against its buffer, which tinygltf does not.
+bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                    const unsigned char* bytes, int size, void*) {
+    if (image->bufferView == -1) {
+        image->image.assign(bytes, bytes + size);
+        image->as_is = true;
+    }
+    return true;
+}
+
+bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector<uint8_t>& bytes,
+           const std::string& baseDir, std::string& error, std::string& warning, const std::string& source) {
+    if (looksLikeGlb(bytes)) {
+        const GlbChunks glb = splitGlb(bytes, source);
+        checkGltfJson(glb.json, true, source);
+        // tinygltf reads the layout again from the header: give it one without other chunks.
+        const std::vector<uint8_t> joined = glb.onlyJsonAndBin ? std::vector<uint8_t>() : joinGlb(glb.json, glb.bin, glb.binSize);
+        const std::vector<uint8_t>& clean = glb.onlyJsonAndBin ? bytes : joined;
+        return loader.LoadBinaryFromMemory(&model, &error, &warning, clean.data(), unsigned(clean.size()), baseDir);
+    }
+    const std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    checkGltfJson(json, false, source);
+    return loader.LoadASCIIFromString(&model, &error, &warning, json.data(), unsigned(json.size()), baseDir);
+}
+
+}  // namespace
+
+tinygltf::Model loadDocument(const std::filesystem::path& path, const std::string& source) {
+    const std::vector<uint8_t> bytes = readModelFile(path);
+    ModelFolder folder(path, source);
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks(folder.callbacks());
+    loader.SetImageLoader(&keepImageBytes, nullptr);
+    tinygltf::Model model;
+    std::string error, warning;
+    bool loaded = false;
+    try {
+        loaded = parse(loader, model, bytes, folder.baseDir(), error, warning, source);
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw InputError(source + ": out of memory while loading");
+    } catch (const std::exception& exception) {
+        throw InputError(source + ": " + exception.what());
+    }
+    // tinygltf also reports some errors (an array of the wrong length) without failing, and
+    // fails on some (an empty image file) with only a warning.
+    if (!loaded || !error.empty()) {
+        // tinygltf collects messages line by line: one line, its lines apart by ';'.
+        const std::string message = oneLine(error.empty() ? warning : error, ';');
+        throw InputError(source + ": " + (message.empty() ? "cannot be loaded" : message));
+    }
+    for (const std::string& extension : model.extensionsRequired) {
+        if (!canRequire(extension)) {
+            throw InputError(source + ": requires the extension " + extension + ", which Patina does not support");
+        }
+    }
+    return model;
+}
+
+}  // namespace patina::gltf

@@ -1,0 +1,101 @@
+#include "gltf/images.h"
+
+#include <climits>
+#include <cstring>
+#include <memory>
+#include <span>
+
+#include <stb_image.h>
+
+#include "gltf/accessor.h"
+
+namespace patina::gltf {
+
+namespace {
+
+// Section 3.8.3: images are PNG or JPEG; told apart by their signatures, not by mimeType or the
+// file's extension. Nothing else reaches stb_image, which would read BMP, GIF, PSD and more.
+bool isPngOrJpeg(std::span<const uint8_t> bytes) {
+    static constexpr uint8_t kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    static constexpr uint8_t kJpeg[3] = {0xFF, 0xD8, 0xFF};
+    return (bytes.size() >= sizeof kPng && std::memcmp(bytes.data(), kPng, sizeof kPng) == 0) ||
+           (bytes.size() >= sizeof kJpeg && std::memcmp(bytes.data(), kJpeg, sizeof kJpeg) == 0);
+}
+
+std::string imageName(const tinygltf::Image& image, size_t index) {
+    return !image.uri.empty() ? image.uri : !image.name.empty() ? image.name : "image " + std::to_string(index);
+}
+
+class ImageDecoder {
+public:
+    // Why the image cannot be had, or "" with `out` filled.
+    std::string decode(std::span<const uint8_t> bytes, ModelImage& out) {
+        if (!isPngOrJpeg(bytes)) {
+            return "is neither PNG nor JPEG";
+        }
+        if (bytes.size() > size_t(INT_MAX)) {   // stb_image takes an int
+            return "is over 2 GiB";
+        }
+        int width = 0, height = 0, channels = 0;
+        if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels)) {
+            return std::string("cannot be read: ") + stbi_failure_reason();
+        }
+        if (width > kGltfMaxImageSide || height > kGltfMaxImageSide) {
+            return "is " + std::to_string(width) + " x " + std::to_string(height) + " pixels, over Patina's limit of " +
+                   std::to_string(kGltfMaxImageSide) + " a side";
+        }
+        const uint64_t size = uint64_t(width) * uint64_t(height) * 4;
+        if (size > kGltfMaxImageBytes - decoded_) {
+            return "would take the model's decoded images past Patina's limit of " +
+                   std::to_string(kGltfMaxImageBytes >> 20) + " MiB";
+        }
+        // Four channels asked for: grey, grey-alpha, RGB and palettes all become RGBA, 16 bits 8.
+        const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+            stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width, &out.height, &channels, 4),
+            stbi_image_free);
+        if (!pixels) {
+            return std::string("cannot be decoded: ") + stbi_failure_reason();
+        }
+        if (out.width != width || out.height != height) {
+            return "decodes to another size than its header gives";
+        }
+        out.rgba.assign(pixels.get(), pixels.get() + size);
+        decoded_ += size;
+        return "";
+    }
+
+private:
+    uint64_t decoded_ = 0;
+};
+
+}  // namespace
+
+std::vector<int> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used, Model& model,
+                              const std::string& source) {
+    std::vector<int> indices(document.images.size(), -1);
+    ImageDecoder decoder;
+    for (size_t i = 0; i < document.images.size(); ++i) {
+        if (!used[i]) {
+            continue;
+        }
+        const tinygltf::Image& image = document.images[i];
+        const std::string at = "/images/" + std::to_string(i);
+        // loadDocument kept a file's or data: URI's bytes; a view's are checked here.
+        const std::span<const uint8_t> bytes =
+            image.bufferView != -1 ? bufferViewBytes(document, image.bufferView, source + ": " + at, source)
+                                   : std::span<const uint8_t>(image.image);
+        ModelImage decoded;
+        decoded.name = imageName(image, i);
+        const std::string problem = image.bufferView == -1 && !image.as_is ? "is not found in the model's folder"
+                                                                           : decoder.decode(bytes, decoded);
+        if (!problem.empty()) {
+            model.notes.push_back(at + " (" + decoded.name + "): " + problem + "; the maps that use it are left out");
+            continue;
+        }
+        indices[i] = int(model.images.size());
+        model.images.push_back(std::move(decoded));
+    }
+    return indices;
+}
+
+}  // namespace patina::gltf

@@ -1,0 +1,152 @@
+#include "gltf/json_rules.h"
+
+#include <unordered_map>
+
+namespace patina::gltf {
+
+namespace {
+
+using Rules = std::unordered_map<std::string, JsonRule>;
+
+constexpr JsonRule kObject{JsonKind::Object}, kArray{JsonKind::Array}, kString{JsonKind::String},
+    kNumber{JsonKind::Number}, kBoolean{JsonKind::Boolean}, kInteger{JsonKind::Integer},
+    kUnsigned{JsonKind::Unsigned};
+
+constexpr JsonRule index(const char* noun) { return {JsonKind::Index, noun}; }
+
+// An array of `element`s at `at`.
+void arrayOf(Rules& rules, const std::string& at, JsonRule element) {
+    rules[at] = kArray;
+    rules[at + "/*"] = element;
+}
+
+// A textureInfo (section 5.29, with 5.25's scale and 5.26's strength) and its
+// KHR_texture_transform.
+void textureInfo(Rules& rules, const std::string& at) {
+    rules[at] = kObject;
+    rules[at + "/index"] = index("texture");
+    rules[at + "/texCoord"] = kInteger;
+    rules[at + "/scale"] = kNumber;
+    rules[at + "/strength"] = kNumber;
+    rules[at + "/extensions"] = kObject;
+    const std::string transform = at + "/extensions/KHR_texture_transform";
+    rules[transform] = kObject;
+    arrayOf(rules, transform + "/offset", kNumber);
+    arrayOf(rules, transform + "/scale", kNumber);
+    rules[transform + "/rotation"] = kNumber;
+    rules[transform + "/texCoord"] = kInteger;
+}
+
+void materials(Rules& rules) {
+    const std::string m = "/materials/*", pbr = m + "/pbrMetallicRoughness";
+    rules[m + "/name"] = kString;
+    rules[pbr] = kObject;
+    arrayOf(rules, pbr + "/baseColorFactor", kNumber);
+    rules[pbr + "/metallicFactor"] = kNumber;
+    rules[pbr + "/roughnessFactor"] = kNumber;
+    for (const std::string& texture : {pbr + "/baseColorTexture", pbr + "/metallicRoughnessTexture",
+                                       m + "/normalTexture", m + "/occlusionTexture", m + "/emissiveTexture"}) {
+        textureInfo(rules, texture);
+    }
+    arrayOf(rules, m + "/emissiveFactor", kNumber);
+    rules[m + "/alphaMode"] = kString;
+    rules[m + "/alphaCutoff"] = kNumber;
+    rules[m + "/doubleSided"] = kBoolean;
+    const std::string extensions = m + "/extensions";
+    rules[extensions] = kObject;
+    rules[extensions + "/KHR_materials_emissive_strength"] = kObject;
+    rules[extensions + "/KHR_materials_emissive_strength/emissiveStrength"] = kNumber;
+    rules[extensions + "/KHR_materials_specular"] = kObject;
+    rules[extensions + "/KHR_materials_specular/specularFactor"] = kNumber;
+    arrayOf(rules, extensions + "/KHR_materials_specular/specularColorFactor", kNumber);
+    rules[extensions + "/KHR_materials_ior"] = kObject;
+    rules[extensions + "/KHR_materials_ior/ior"] = kNumber;
+}
+
+void textures(Rules& rules) {
+    rules["/textures/*/source"] = index("image");
+    rules["/textures/*/sampler"] = index("sampler");
+    rules["/textures/*/extensions"] = kObject;
+    for (const char* other : {"KHR_texture_basisu", "EXT_texture_webp", "MSFT_texture_dds"}) {
+        rules[std::string("/textures/*/extensions/") + other] = kObject;
+    }
+    for (const char* filter : {"magFilter", "minFilter", "wrapS", "wrapT"}) {
+        rules[std::string("/samplers/*/") + filter] = kInteger;
+    }
+    rules["/images/*/uri"] = kString;
+    rules["/images/*/mimeType"] = kString;
+    rules["/images/*/bufferView"] = index("buffer view");
+    rules["/images/*/name"] = kString;
+}
+
+// Scenes, nodes and meshes (sections 5.17, 5.19, 5.23 and 5.24).
+void sceneGraph(Rules& rules) {
+    rules["/scene"] = index("scene");
+    rules["/scenes/*/name"] = kString;
+    arrayOf(rules, "/scenes/*/nodes", index("node"));
+    arrayOf(rules, "/nodes/*/children", index("node"));
+    rules["/nodes/*/mesh"] = index("mesh");
+    rules["/nodes/*/name"] = kString;
+    for (const char* transform : {"matrix", "translation", "rotation", "scale"}) {
+        arrayOf(rules, std::string("/nodes/*/") + transform, kNumber);
+    }
+    const std::string primitive = "/meshes/*/primitives/*";
+    arrayOf(rules, "/meshes/*/primitives", kObject);
+    rules[primitive + "/attributes"] = kObject;
+    rules[primitive + "/attributes/{}"] = index("accessor");
+    rules[primitive + "/indices"] = index("accessor");
+    rules[primitive + "/material"] = index("material");
+    rules[primitive + "/mode"] = kInteger;
+}
+
+// Accessors, buffer views and buffers (sections 5.1-5.4, 5.10 and 5.11).
+void data(Rules& rules) {
+    const std::string a = "/accessors/*", sparse = a + "/sparse";
+    rules[a + "/bufferView"] = index("buffer view");
+    rules[a + "/byteOffset"] = kUnsigned;
+    rules[a + "/componentType"] = kInteger;
+    rules[a + "/normalized"] = kBoolean;
+    rules[a + "/count"] = kUnsigned;
+    rules[a + "/type"] = kString;
+    rules[sparse] = kObject;
+    rules[sparse + "/count"] = kUnsigned;
+    for (const std::string& part : {sparse + "/indices", sparse + "/values"}) {
+        rules[part] = kObject;
+        rules[part + "/bufferView"] = index("buffer view");
+        rules[part + "/byteOffset"] = kUnsigned;
+    }
+    rules[sparse + "/indices/componentType"] = kInteger;
+    rules["/bufferViews/*/buffer"] = index("buffer");
+    for (const char* size : {"byteOffset", "byteLength", "byteStride"}) {
+        rules[std::string("/bufferViews/*/") + size] = kUnsigned;
+    }
+    rules["/buffers/*/uri"] = kString;
+    rules["/buffers/*/byteLength"] = kUnsigned;
+}
+
+Rules makeRules() {
+    Rules rules;
+    for (const char* collection : {"/scenes", "/nodes", "/meshes", "/materials", "/textures", "/images", "/samplers",
+                                   "/accessors", "/bufferViews", "/buffers"}) {
+        arrayOf(rules, collection, kObject);
+    }
+    arrayOf(rules, "/extensionsUsed", kString);
+    arrayOf(rules, "/extensionsRequired", kString);
+    rules["/asset"] = kObject;
+    rules["/asset/version"] = kString;
+    sceneGraph(rules);
+    materials(rules);
+    textures(rules);
+    data(rules);
+    return rules;
+}
+
+}  // namespace
+
+const JsonRule* gltfJsonRule(const std::string& pattern) {
+    static const Rules rules = makeRules();
+    const auto found = rules.find(pattern);
+    return found == rules.end() ? nullptr : &found->second;
+}
+
+}  // namespace patina::gltf

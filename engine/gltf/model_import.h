@@ -1,0 +1,19 @@
+#pragma once
+// A whole glTF 2.0 model, .gltf or .glb: its scene graph as draw items, its primitives with
+// their UVs and tangents, all its materials with their texture maps, and the images they use,
+// decoded (docs/FORMATS.md, "glTF": what is read, the conventions, the limits).
+#include <filesystem>
+
+#include "model/model.h"
+
+namespace patina {
+
+// The default scene (`scene`, else scene 0, else every root node) of the model at `path`: a
+// DrawItem for every node that shows a mesh and each of its primitives, each primitive read
+// once in its mesh's space. Reads only regular files inside the model's folder, within the
+// limits of import.h and images.h. What Patina leaves out (points and lines, a map whose image
+// is missing or cannot be decoded, an image format it does not read) is a line in
+// Model::notes; anything else it cannot use throws InputError naming the file and the place.
+Model importGltfModel(const std::filesystem::path& path);
+
+}  // namespace patina
