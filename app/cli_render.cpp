@@ -28,7 +28,7 @@ extern "C" void stopAfterThisPass(int) {
 // progress on stderr; stoppable with Ctrl+C.
 RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int height, int samples) {
     const Scene& scene = prepared.scene;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*prepared.mesh, scene.camera, width, height);
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, width, height);
     ReferenceRenderOptions options;
     options.samplesPerPixel = samples;
     options.samplesPerPass = std::min(samples, 16);

@@ -30,7 +30,9 @@ void renderMaterials(const PreparedScene& prepared, const std::vector<Material>&
     settings.readHdr = false;
     for (const Material& material : materials) {
         scene.material = material;   // the mesh and the environment stay: loaded once for all
-        each(renderer.render({scene, prepared.mesh, prepared.environment}, settings).ldr);
+        // Each material over the whole shape: a model's flattened mesh without its draw items,
+        // whose own materials would hide the one compared.
+        each(renderer.render({scene, prepared.mesh, prepared.environment, nullptr}, settings).ldr);
     }
 }
 

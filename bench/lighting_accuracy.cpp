@@ -196,7 +196,7 @@ LdrImage roughnessMetallicGrid(const NamedEnvironment& environment, int cellSize
             const Scene scene = sphereUnder(environment, roughness, metallic);
             const PreparedScene prepared{scene, sphereMesh(), environment.environment};
             const RenderOutput render = renderer.render(prepared, settings);
-            const PixelSurfaces surfaces = rasterizeSurfaces(*prepared.mesh, scene.camera, cellSize, cellSize);
+            const PixelSurfaces surfaces = rasterizeSurfaces(prepared, cellSize, cellSize);
             ReferenceRenderOptions options;
             options.samplesPerPixel = samples;
             const ReferenceImage reference = renderReference(prepared, surfaces, options);

@@ -69,6 +69,17 @@ const PreparedScene& preparedDefault() {
     return prepared;
 }
 
+Mesh facingQuad(float halfWidth, float halfHeight) {
+    Mesh quad;
+    quad.positions = {{-halfWidth, -halfHeight, 0.0f},
+                      {halfWidth, -halfHeight, 0.0f},
+                      {halfWidth, halfHeight, 0.0f},
+                      {-halfWidth, halfHeight, 0.0f}};
+    quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    return quad;
+}
+
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples) {
     RenderSettings settings;
     settings.width = width;

@@ -34,6 +34,10 @@ const PreparedScene& preparedDefault();
 // An environment light's source ("builtin:studio") made ready through assetCache().
 std::shared_ptr<const Environment> madeEnvironment(const std::string& source);
 
+// A rectangle of half sides `halfWidth` and `halfHeight` in the xy plane around the origin,
+// facing +z (counter-clockwise seen from there).
+Mesh facingQuad(float halfWidth, float halfHeight);
+
 // Default settings but for the image size, path and MSAA samples.
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples);
 

@@ -2,6 +2,7 @@
 
 #include "common/content_hash.h"
 #include "gltf/files.h"
+#include "gltf/model_import.h"
 #include "image/environment_source.h"
 
 namespace patina {
@@ -14,30 +15,43 @@ void dropExpired(Map& entries) {
 }
 }  // namespace
 
-std::shared_ptr<const GltfImport> AssetCache::model(const std::filesystem::path& path) {
+struct AssetCache::LoadedModel {
+    GltfImport imported;
+    Model model;
+};
+
+std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::filesystem::path& path) {
     const std::vector<uint8_t> bytes = gltf::readModelFile(path);
     const Key key{std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
     {
         std::lock_guard lock(mutex_);
         if (const auto found = models_.find(key); found != models_.end()) {
-            if (std::shared_ptr<const GltfImport> model = found->second.lock()) {
+            if (std::shared_ptr<const LoadedModel> model = found->second.lock()) {
                 return model;
             }
         }
     }
-    auto model = std::make_shared<const GltfImport>(importGltf(path));
+    Model drawn = importGltfModel(path);
+    GltfImport imported = flattenedImport(drawn, path);
+    auto model = std::make_shared<const LoadedModel>(LoadedModel{std::move(imported), std::move(drawn)});
     std::lock_guard lock(mutex_);
     dropExpired(models_);
     models_[key] = model;
     return model;
 }
 
-std::shared_ptr<const Mesh> AssetCache::mesh(const Scene& scene) {
+// Each part of a loaded model shares its owner, so any one held keeps the cache entry alive.
+std::shared_ptr<const GltfImport> AssetCache::model(const std::filesystem::path& path) {
+    std::shared_ptr<const LoadedModel> model = loaded(path);
+    return {model, &model->imported};
+}
+
+AssetCache::Shape AssetCache::shape(const Scene& scene) {
     if (scene.meshFile.empty()) {
-        return builtinMesh(scene.mesh);
+        return {builtinMesh(scene.mesh), nullptr};
     }
-    std::shared_ptr<const GltfImport> imported = model(scene.meshFile);
-    return {imported, &imported->mesh};   // keeps the model alive, and its cache entry
+    std::shared_ptr<const LoadedModel> model = loaded(scene.meshFile);
+    return {{model, &model->imported.mesh}, {model, &model->model}};
 }
 
 std::shared_ptr<const Environment> AssetCache::environment(const std::string& source,

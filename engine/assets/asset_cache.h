@@ -11,6 +11,7 @@
 #include "environment/environment.h"
 #include "geometry/mesh.h"
 #include "gltf/import.h"
+#include "model/model.h"
 #include "scene/scene.h"
 
 namespace patina {
@@ -33,8 +34,15 @@ public:
 
     // A glTF model (gltf/import.h); InputError naming the file when it cannot be loaded.
     std::shared_ptr<const GltfImport> model(const std::filesystem::path& path);
-    // The triangles `scene` shows: its glTF file's, else the built-in kind's.
-    std::shared_ptr<const Mesh> mesh(const Scene& scene);
+    // The shape `scene` shows, its file read once: the triangles (its glTF file's, flattened
+    // into world space, else the built-in kind's) and what its glTF file draws
+    // (gltf/model_import.h; null for a built-in mesh), each keeping the other's entry.
+    struct Shape {
+        std::shared_ptr<const Mesh> mesh;
+        std::shared_ptr<const Model> model;
+    };
+    Shape shape(const Scene& scene);
+    std::shared_ptr<const Mesh> mesh(const Scene& scene) { return shape(scene).mesh; }
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
     // the disk cache of image/environment_source.h. A note about replaced pixels goes to
     // `warnings` each time. InputError naming the file when it cannot be read or decoded;
@@ -45,8 +53,10 @@ public:
 
 private:
     using Key = std::pair<std::string, uint64_t>;   // the path or source, the contents' hash
+    struct LoadedModel;   // a file's import and its Model, loaded together
+    std::shared_ptr<const LoadedModel> loaded(const std::filesystem::path& path);
     std::mutex mutex_;
-    std::map<Key, std::weak_ptr<const GltfImport>> models_;
+    std::map<Key, std::weak_ptr<const LoadedModel>> models_;
     std::map<Key, std::weak_ptr<const Environment>> environments_;
     std::map<Key, std::shared_ptr<const Environment>> builtins_;
 };

@@ -5,7 +5,8 @@ namespace patina {
 PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings) {
     const Light* light = enabledEnvironment(scene);
     std::shared_ptr<const Environment> environment = light ? cache.environment(light->source, warnings) : nullptr;
-    return {scene, cache.mesh(scene), std::move(environment)};
+    AssetCache::Shape shape = cache.shape(scene);
+    return {scene, std::move(shape.mesh), std::move(environment), std::move(shape.model)};
 }
 
 }  // namespace patina

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -118,8 +119,11 @@ struct Renderer::State {
     }
     EnvironmentTexture environment;
     LightBuffer lights;
-    MeshBuffers mesh;
-    std::shared_ptr<const Mesh> meshShown;   // what `mesh` holds
+    // The primitives of the shape drawn last (a model's, or the one mesh), uploaded once for
+    // as long as it is drawn; `shapeShown` holds it, so it cannot be freed and its address
+    // reused by another while these stand for it.
+    std::vector<std::unique_ptr<MeshBuffers>> primitives;
+    std::shared_ptr<const void> shapeShown;
     GLuint emptyVertexArray = 0;
     GLuint timerQueries[2] = {0, 0};   // GL_TIMESTAMP before and after a draw
     bool timerPending = false;
@@ -191,48 +195,36 @@ double Renderer::lastGpuMilliseconds() {
     return s.gpuMilliseconds;
 }
 
-void Renderer::useMesh(State& s, const std::shared_ptr<const Mesh>& mesh) {
-    if (!mesh) {
-        throw std::invalid_argument("the scene's mesh was not prepared (assets/)");
+namespace {
+// The meshes a prepared scene's draw items index: its model's primitives, or its one mesh.
+std::vector<const Mesh*> primitivesOf(const PreparedScene& prepared) {
+    if (!prepared.model) {
+        return {prepared.mesh.get()};
     }
-    if (mesh != s.meshShown) {
-        s.mesh.upload(*mesh);   // the hidden-faces analysis runs here, once per mesh shown
-        s.meshShown = mesh;
+    std::vector<const Mesh*> meshes;
+    for (const Mesh& primitive : prepared.model->primitives) {
+        meshes.push_back(&primitive);
     }
+    return meshes;
 }
+}  // namespace
 
-void Renderer::drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights, bool environment,
-                          const Prepare& prepare) {
-    if (passes != RenderPath::Multi) {
-        shading.use();
-        prepare(shading);
-        s.mesh.draw();
+void Renderer::uploadShape(State& s, const PreparedScene& prepared) {
+    const std::shared_ptr<const void> shape =
+        prepared.model ? std::shared_ptr<const void>(prepared.model) : std::shared_ptr<const void>(prepared.mesh);
+    if (shape == s.shapeShown) {
         return;
     }
-    const GlProgram& depthPrepass = s.depthPrepass.get();
-    depthPrepass.use();
-    prepare(depthPrepass);
-    s.mesh.draw();
-    // Light passes add onto the black mesh where depth matches the pre-pass exactly
-    // (mesh.vert's gl_Position is invariant).
-    shading.use();
-    prepare(shading);
-    // The passes add 0 to alpha, so the pre-pass's stamp (RenderTargets::SampleStamp) stays.
-    glUniform1f(shading.uniform("uSampleStamp"), 0.0f);
-    glDepthMask(GL_FALSE);
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
-    for (size_t i = 0; i < lights; ++i) {
-        glUniform1i(shading.uniform("uLightIndex"), GLint(i));
-        s.mesh.draw();
+    s.shapeShown.reset();   // until every primitive is up: a throw leaves nothing half-shown
+    const std::vector<const Mesh*> meshes = primitivesOf(prepared);
+    s.primitives.resize(meshes.size());
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        if (!s.primitives[i]) {
+            s.primitives[i] = std::make_unique<MeshBuffers>();
+        }
+        s.primitives[i]->upload(*meshes[i]);   // the hidden-faces analysis runs here, once per primitive shown
     }
-    if (environment) {   // the environment's pass, after the lights as in the single pass
-        glUniform1i(shading.uniform("uLightIndex"), -1);
-        s.mesh.draw();
-    }
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
+    s.shapeShown = shape;
 }
 
 // One draw: its plan, the programs and lights it uses, and the strips it draws one by one. Made
@@ -245,12 +237,19 @@ struct Renderer::Frame {
     bool keepsLinear() const { return plan.keepLinear; }
 
 private:
+    using Items = std::span<const DrawPlan>;
     void planDraw();
     void choosePrograms();
     void environmentUniforms(const GlProgram& program) const;
     void prepare(const GlProgram& program) const;   // the per-draw uniforms of a mesh pass
     void clearAroundMesh() const;
     void drawStrip(int top);
+    void drawItems() const;
+    void drawSinglePass(Items opaque, Items blended) const;
+    void drawMultiPass(Items opaque, Items blended) const;
+    void lightPasses(GLint lightIndex, const DrawPlan& item) const;
+    void useItem(const DrawUniforms& uniforms, const DrawPlan& item) const;
+    void drawItem(const DrawPlan& item) const;
     void clearStrip(int top, const PixelRect& area);
     void drawBackground(int top) const;
     void displayStrip(int top, const PixelRect& area) const;
@@ -261,6 +260,7 @@ private:
     const RenderSettings& settings;
     RenderTargets& t;
     const int w, h;
+    const std::vector<SceneDraw> draws;   // what is drawn, in the list's order
     const Light* environmentLight = nullptr;
     std::shared_ptr<const Environment> environmentMap;
     bool environment = false;
@@ -279,8 +279,8 @@ private:
 Renderer::Frame::Frame(State& state, const PreparedScene& prepared, const RenderSettings& settings,
                        RenderTargets& targets)
     : s(state), prepared(prepared), scene(prepared.scene), settings(settings), t(targets), w(settings.width),
-      h(settings.height) {
-    useMesh(s, prepared.mesh);
+      h(settings.height), draws(sceneDraws(prepared)) {
+    uploadShape(s, prepared);
     planDraw();
     // Until this draw succeeds the target has nothing to read back.
     t.drawn = false;
@@ -299,8 +299,15 @@ void Renderer::Frame::planDraw() {
     environmentBackground = environment && scene.display.backgroundFromEnvironment;
     RenderSettings planned = settings;
     planned.cropToMesh = settings.cropToMesh && !environmentBackground;   // nothing left to fill around the mesh
-    plan = planFrame(planned, scene.camera, {s.mesh.bounds(), s.mesh.culling(), s.mesh.triangleCount()},
-                     s.maxSamples, s.flatLightSlots);
+    std::vector<DrawFacts> facts;
+    for (const SceneDraw& item : draws) {
+        const MeshBuffers& buffers = *s.primitives[size_t(item.primitive)];
+        facts.push_back({{buffers.bounds(), buffers.culling(), buffers.triangleCount()},
+                         item.transform,
+                         item.doubleSided,
+                         item.blend});
+    }
+    plan = planFrame(planned, scene.camera, facts, s.maxSamples, s.flatLightSlots);
     packed = packEnabledLights(scene.lights);
     s.lights.upload(packed);
     s.lights.bind();
@@ -319,9 +326,12 @@ void Renderer::Frame::choosePrograms() {
     s.shading.setEnvironmentShading(environmentShading);
     ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
     singlePass.environment = environment;
+    // The specialised shader leaves out diffuse only where no item has any.
+    const bool noDiffuse = std::all_of(draws.begin(), draws.end(),
+                                       [](const SceneDraw& item) { return hasNoDiffuse(item.material); });
     auto specialisation = [&] {
         ShaderSpecialisation key = settings.lightCode ? settings.lightCode(packed, plan.flatLightCount)
-                                                      : specialiseFor(packed, scene.material, plan.flatLightCount);
+                                                      : specialiseFor(packed, noDiffuse, plan.flatLightCount);
         key.environment = environment;
         return key;
     };
@@ -352,7 +362,6 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
     glUniform1f(program.uniform("uSampleStamp"), stamp);
     glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
     glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
-    setMaterialUniforms(program, scene.material);
     if (plan.displayInPass) {
         glUniform1f(program.uniform("uExposure"), scene.display.exposure);
         glUniform1i(program.uniform("uTonemap"), exposureTonemap);
@@ -408,16 +417,128 @@ void Renderer::Frame::drawStrip(int top) {
     if (backgroundPass) {
         drawBackground(top);
     }
-    if (plan.culled != HiddenFaces::None) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(plan.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
-    }
-    drawPasses(s, settings.path, *shading, packed.size(), environment,
-               [this](const GlProgram& program) { prepare(program); });
+    drawItems();
     glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
     glDisable(GL_SCISSOR_TEST);
     if (displayPass) {
         displayStrip(top, area);
+    }
+}
+
+// Every item of the plan: the opaque ones, then the blended ones over them.
+void Renderer::Frame::drawItems() const {
+    const Items items(plan.items);
+    const auto firstBlended = std::find_if(items.begin(), items.end(),
+                                           [&](const DrawPlan& item) { return draws[item.item].blend; });
+    const Items opaque(items.begin(), firstBlended), blended(firstBlended, items.end());
+    if (settings.path == RenderPath::Multi) {
+        drawMultiPass(opaque, blended);
+    } else {
+        drawSinglePass(opaque, blended);
+    }
+}
+
+// The item's faces culled, its front winding, and its uniforms set (its program in use).
+void Renderer::Frame::useItem(const DrawUniforms& uniforms, const DrawPlan& item) const {
+    if (item.culled == HiddenFaces::None) {
+        glDisable(GL_CULL_FACE);
+    } else {
+        glEnable(GL_CULL_FACE);
+        glCullFace(item.culled == HiddenFaces::Back ? GL_BACK : GL_FRONT);
+    }
+    glFrontFace(item.frontClockwise ? GL_CW : GL_CCW);
+    uniforms.set(draws[item.item]);
+}
+
+void Renderer::Frame::drawItem(const DrawPlan& item) const {
+    s.primitives[size_t(draws[item.item].primitive)]->draw();
+}
+
+namespace {
+// glTF's BLEND, "over" (§3.9.4) by the item's alpha, a constant blend colour: what is behind
+// times 1 - alpha plus the item times alpha. Alpha takes the shader's (the sample stamp, or 1):
+// the sample now holds a drawn value.
+void blendOver(float alpha) {
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, alpha);
+    glBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_ONE, GL_ZERO);
+}
+}  // namespace
+
+// Single and specialised: each item in one pass of every light. Blended items test against
+// the opaque items' depth and write none, so each shows what lies behind it.
+void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
+    shading->use();
+    prepare(*shading);
+    const DrawUniforms uniforms(*shading);
+    for (const DrawPlan& item : opaque) {
+        useItem(uniforms, item);
+        drawItem(item);
+    }
+    glDepthMask(GL_FALSE);
+    for (const DrawPlan& item : blended) {
+        blendOver(draws[item.item].alpha);
+        useItem(uniforms, item);
+        drawItem(item);
+    }
+}
+
+// Multi: the opaque items' depth and a black surface first, then a pass per light (and one for
+// the environment) added where depth matches the pre-pass exactly (mesh.vert's gl_Position is
+// invariant). A blended item darkens what is behind it by 1 - alpha in a black pass, and its
+// light passes add alpha times theirs: the same "over" as one pass where the item does not
+// cover itself (where it does, each pass adds every layer, not the layers over one another).
+void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
+    const GlProgram& depthPrepass = s.depthPrepass.get();
+    depthPrepass.use();
+    prepare(depthPrepass);
+    const DrawUniforms prepassUniforms(depthPrepass);
+    for (const DrawPlan& item : opaque) {
+        useItem(prepassUniforms, item);
+        drawItem(item);
+    }
+    shading->use();
+    prepare(*shading);
+    const DrawUniforms uniforms(*shading);
+    const GLint lightIndex = shading->uniform("uLightIndex");
+    // The passes add 0 to alpha, so the pre-pass's stamp (RenderTargets::SampleStamp) stays.
+    glUniform1f(shading->uniform("uSampleStamp"), 0.0f);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    for (const DrawPlan& item : opaque) {
+        useItem(uniforms, item);
+        lightPasses(lightIndex, item);
+    }
+    glDepthFunc(GL_LESS);   // against the opaque items' depth; the blended ones write none
+    for (const DrawPlan& item : blended) {
+        const float alpha = draws[item.item].alpha;
+        depthPrepass.use();
+        useItem(prepassUniforms, item);   // the pre-pass's stamp: the sample now holds a drawn value
+        glBlendColor(0.0f, 0.0f, 0.0f, alpha);
+        glBlendFuncSeparate(GL_ZERO, GL_ONE_MINUS_CONSTANT_ALPHA, GL_ONE, GL_ZERO);
+        drawItem(item);
+        shading->use();
+        glBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
+        useItem(uniforms, item);
+        lightPasses(lightIndex, item);
+    }
+}
+
+// One item's light passes, then the environment's, as in the single pass (the shading program
+// in use; `lightIndex` its uLightIndex).
+void Renderer::Frame::lightPasses(GLint lightIndex, const DrawPlan& item) const {
+    for (size_t i = 0; i < packed.size(); ++i) {
+        glUniform1i(lightIndex, GLint(i));
+        drawItem(item);
+    }
+    if (environment) {
+        glUniform1i(lightIndex, -1);
+        drawItem(item);
     }
 }
 
@@ -439,7 +560,9 @@ void Renderer::Frame::clearStrip(int top, const PixelRect& area) {
     glScissor(area.x0, area.y0 - top, area.x1 - area.x0, area.y1 - area.y0);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
-    if (!plan.msaa && linear) {   // MSAA samples are stamped instead (RenderTargets::SampleStamp)
+    // MSAA samples are stamped instead (RenderTargets::SampleStamp), but a blended item needs
+    // the background's value beneath it where nothing else was drawn.
+    if ((!plan.msaa && linear) || (plan.msaa && plan.blending)) {
         glClearBufferfv(GL_COLOR, 0, clearLinearOf(background).data());
     }
     if (plan.displayInPass) {

@@ -82,8 +82,9 @@ struct RenderOutput {
     LdrImage ldr;   // after the display transform, sRGB
 };
 
-// Draws prepared scenes (scene/prepared_scene.h), each with its own mesh and environment, with
-// the shared shaders; it loads and prefilters nothing itself. Needs a
+// Draws prepared scenes (scene/prepared_scene.h), each with its own draw items (sceneDraws: a
+// model's primitives, each where its transform puts it with its own material, or the one mesh)
+// and environment, with the shared shaders; it loads and prefilters nothing itself. Needs a
 // current OpenGL 3.3 core context (a HeadlessContext or the editor's window) for its whole life.
 class Renderer {
 public:
@@ -96,7 +97,8 @@ public:
     size_t flatLightSlots() const;
     // Renders into `target` and returns its display texture (RenderTarget::displayTexture).
     // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size],
-    // or a prepared scene without the mesh or the environment its document names.
+    // or a prepared scene without the mesh or the environment its document names (or whose
+    // model's items name what it lacks).
     unsigned draw(const PreparedScene& scene, const RenderSettings& settings, RenderTarget& target);
     // The same into the renderer's own target (for render(), benchmarks and tests).
     unsigned draw(const PreparedScene& scene, const RenderSettings& settings) { return draw(scene, settings, own_); }
@@ -121,13 +123,9 @@ private:
     struct Frame;   // one draw, strip by strip (renderer.cpp)
     std::unique_ptr<State> state_;
     RenderTarget own_;
-    using Prepare = std::function<void(const GlProgram&)>;   // sets a program's per-draw uniforms
-    // The passes of one strip with `shading` (compiled for `passes`) and `lights` lights.
-    // Uploads the prepared mesh unless it is the one drawn last. Throws std::invalid_argument
-    // for none.
-    static void useMesh(State& s, const std::shared_ptr<const Mesh>& mesh);
-    static void drawPasses(State& s, RenderPath passes, const GlProgram& shading, size_t lights, bool environment,
-                           const Prepare& prepare);
+    // Uploads the prepared scene's primitives (its model's, or its one mesh) unless they are
+    // the ones drawn last.
+    static void uploadShape(State& s, const PreparedScene& prepared);
 };
 
 }  // namespace patina

@@ -44,12 +44,14 @@ std::vector<std::string> ShaderSpecialisation::defines() const {
     return result;
 }
 
-ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights, const Material& material,
-                                   size_t flatSlots) {
-    ShaderSpecialisation key;
-    // The same fp32 product as deriveSurfaceMaterial, so "exactly 0" means what the shader sees.
+bool hasNoDiffuse(const MaterialParameters& material) {
     const glm::vec3 diffuseColor = (1.0f - material.metallic) * material.baseColor;
-    key.noDiffuse = diffuseColor == glm::vec3(0.0f);
+    return diffuseColor == glm::vec3(0.0f);
+}
+
+ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights, bool noDiffuse, size_t flatSlots) {
+    ShaderSpecialisation key;
+    key.noDiffuse = noDiffuse;
     for (size_t i = 0; i < lights.size(); ++i) {
         const shader::PackedLight& light = lights[i];
         std::string call;

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/material.h"
+#include "shading/material_parameters.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -30,10 +30,19 @@ struct ShaderSpecialisation {
     std::vector<std::string> defines() const;
 };
 
-// `lights` as packEnabledLights gives them (the uniform block's order). `flatSlots`: how many
-// lights the vertex stage can hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).
-ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights, const Material& material,
-                                   size_t flatSlots);
+// Whether `material`'s diffuse colour, c_diff, is exactly 0: the same fp32 product as
+// deriveSurfaceMaterial, so "exactly 0" means what the shader sees.
+bool hasNoDiffuse(const MaterialParameters& material);
+
+// `lights` as packEnabledLights gives them (the uniform block's order); `noDiffuse` when every
+// material drawn has none (hasNoDiffuse). `flatSlots`: how many lights the vertex stage can
+// hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).
+ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights, bool noDiffuse, size_t flatSlots);
+// For one material.
+inline ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& lights,
+                                          const MaterialParameters& material, size_t flatSlots) {
+    return specialiseFor(lights, hasNoDiffuse(material), flatSlots);
+}
 
 // Whether handing lights on as flat inputs pays for a draw: it costs the vertex stage per
 // triangle drawn (each vertex writes two more outputs a light, each triangle sets them up) and

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "scene/light_packing.h"
 #include "shading/environment_brdf.h"
 
@@ -84,12 +86,30 @@ void setEnvironmentUniforms(const GlProgram& program, const Environment& environ
     glUniform1f(program.uniform("uEnvironmentSourceSize"), float(environment.prefiltered.front().size));
 }
 
-void setMaterialUniforms(const GlProgram& program, const Material& material) {
-    glUniform3f(program.uniform("uBaseColor"), material.baseColor.x, material.baseColor.y,
-                material.baseColor.z);
-    glUniform1f(program.uniform("uRoughness"), material.roughness);
-    glUniform1f(program.uniform("uSpecular"), material.specular);
-    glUniform1f(program.uniform("uMetallic"), material.metallic);
+MaterialUniforms::MaterialUniforms(const GlProgram& program)
+    : baseColor_(program.uniform("uBaseColor")), roughness_(program.uniform("uRoughness")),
+      specular_(program.uniform("uSpecular")), metallic_(program.uniform("uMetallic")) {}
+
+void MaterialUniforms::set(const MaterialParameters& material) const {
+    glUniform3f(baseColor_, material.baseColor.x, material.baseColor.y, material.baseColor.z);
+    glUniform1f(roughness_, material.roughness);
+    glUniform1f(specular_, material.specular);
+    glUniform1f(metallic_, material.metallic);
+}
+
+void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material) {
+    MaterialUniforms(program).set(material);
+}
+
+DrawUniforms::DrawUniforms(const GlProgram& program)
+    : model_(program.uniform("uModel")), normalMatrix_(program.uniform("uNormalMatrix")),
+      reverseBackNormals_(program.uniform("uReverseBackNormals")), material_(program) {}
+
+void DrawUniforms::set(const SceneDraw& draw) const {
+    glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(draw.transform));
+    glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(draw.normalTransform));
+    glUniform1i(reverseBackNormals_, draw.reverseBackNormals ? 1 : 0);
+    material_.set(draw.material);
 }
 
 }  // namespace patina

@@ -5,7 +5,8 @@
 
 #include "environment/environment.h"
 #include "scene/light.h"
-#include "scene/material.h"
+#include "scene/prepared_scene.h"
+#include "shading/material_parameters.h"
 #include "shading/shading.h"
 #include "gl/program.h"
 
@@ -36,8 +37,30 @@ private:
     GLuint buffer_ = 0;
 };
 
-// uBaseColor, uRoughness, uSpecular, uMetallic of shade.frag (program must be in use).
-void setMaterialUniforms(const GlProgram& program, const Material& material);
+// uBaseColor, uRoughness, uSpecular, uMetallic of shade.frag, looked up once.
+class MaterialUniforms {
+public:
+    explicit MaterialUniforms(const GlProgram& program);
+    void set(const MaterialParameters& material) const;   // its program in use
+
+private:
+    GLint baseColor_, roughness_, specular_, metallic_;
+};
+// The same, for one draw (program must be in use).
+void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material);
+
+// What one draw item sets of mesh.vert and shade.frag (uModel, uNormalMatrix, the material,
+// uReverseBackNormals), looked up once per program: a model may have thousands of items. A
+// program without some of them (the depth pre-pass's) ignores those.
+class DrawUniforms {
+public:
+    explicit DrawUniforms(const GlProgram& program);
+    void set(const SceneDraw& draw) const;   // its program in use
+
+private:
+    GLint model_, normalMatrix_, reverseBackNormals_;
+    MaterialUniforms material_;
+};
 // environment.glsl's uniforms for `light` (an environment light) showing `environment`, its
 // cube map on `unit` (program must be in use).
 void setEnvironmentUniforms(const GlProgram& program, const Environment& environment, const Light& light, int unit);

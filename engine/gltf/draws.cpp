@@ -8,6 +8,7 @@
 #include "gltf/nodes.h"
 #include "gltf/primitives.h"
 #include "io/input_error.h"
+#include "model/placement.h"
 
 namespace patina::gltf {
 
@@ -103,7 +104,7 @@ private:
         draw.transform = glm::mat4(instance.world);
         draw.node = nodeName(document_, instance.node);
         // Of the float matrix the renderer gets, in double: it grows as the cube of the scale.
-        draw.mirrored = glm::determinant(glm::dmat3(glm::dmat4(draw.transform))) < 0.0;
+        draw.mirrored = mirrors(draw.transform);
         model_.draws.push_back(std::move(draw));
     }
 

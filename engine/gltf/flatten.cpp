@@ -1,32 +1,17 @@
 #include "gltf/flatten.h"
 
-#include <algorithm>
 #include <cmath>
 
 #include <glm/mat3x3.hpp>
 
 #include "io/input_error.h"
+#include "model/placement.h"
 
 namespace patina::gltf {
 
 namespace {
 
 bool isFinite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-// The cofactor matrix: the inverse transpose times the determinant, defined even at 0. Only its
-// directions matter, so it is scaled to its largest entry, and negated for a mirror. In double:
-// it grows as the square of the scale, and a scale of 1e-20 or 1e20 is finite in a float.
-glm::mat3 normalMatrix(const glm::mat4& transform) {
-    const glm::dmat3 linear(transform);
-    const glm::dmat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
-                              glm::cross(linear[0], linear[1]));
-    double largest = 0.0;
-    for (int c = 0; c < 3; ++c) {
-        largest = std::max({largest, std::abs(cofactor[c].x), std::abs(cofactor[c].y), std::abs(cofactor[c].z)});
-    }
-    const double scale = largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
-    return glm::mat3(cofactor * (glm::determinant(linear) < 0.0 ? -scale : scale));
-}
 
 void appendDraw(Mesh& mesh, const Mesh& primitive, const DrawItem& draw, const std::string& source) {
     const size_t base = mesh.positions.size();
@@ -38,7 +23,7 @@ void appendDraw(Mesh& mesh, const Mesh& primitive, const DrawItem& draw, const s
         }
         mesh.positions.push_back(p);
     }
-    const glm::mat3 normals = normalMatrix(draw.transform);
+    const glm::mat3 normals = normalTransform(draw.transform);
     for (const glm::vec3& n : primitive.normals) {
         mesh.normals.push_back(unitNormal(normals * n));
     }

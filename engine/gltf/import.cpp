@@ -22,4 +22,18 @@ GltfImport importGltf(const std::filesystem::path& path) {
     return result;
 }
 
+GltfImport flattenedImport(const Model& model, const std::filesystem::path& path) {
+    GltfImport result;
+    result.mesh = gltf::flattenDraws(model, path.string());
+    if (!model.materials.empty()) {
+        Material first;
+        static_cast<MaterialParameters&>(first) = model.materials[0].factors;
+        first.name = model.materials[0].name;
+        result.material = first;
+    }
+    result.materialCount = model.materials.size();
+    result.textureCount = model.images.size();   // the images its materials use, decoded
+    return result;
+}
+
 }  // namespace patina

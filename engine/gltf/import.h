@@ -8,6 +8,7 @@
 
 #include "geometry/mesh.h"
 #include "io/file_kinds.h"
+#include "model/model.h"
 #include "scene/material.h"
 
 namespace patina {
@@ -20,7 +21,7 @@ struct GltfImport {
     Mesh mesh;                          // world space, counter-clockwise, unit normals (flat without NORMAL)
     std::optional<Material> material;   // the file's first material, when it has one
     size_t materialCount = 0;           // all of the file's: Patina takes the first only
-    size_t textureCount = 0;            // Patina reads factors, no texture
+    size_t textureCount = 0;            // the file's textures; the flattened mesh takes none
 };
 
 // The triangles of every mesh primitive of the default scene (or scene 0, or every root node
@@ -29,5 +30,9 @@ struct GltfImport {
 // decoded. Reads only regular files inside the model's folder. Throws InputError naming the
 // file and what is wrong for anything it cannot use; nothing else changes.
 GltfImport importGltf(const std::filesystem::path& path);
+
+// What importGltf(path) returns, made from `model`, importGltfModel(path)'s result, so that a
+// caller wanting both reads and parses the file once (the asset cache).
+GltfImport flattenedImport(const Model& model, const std::filesystem::path& path);
 
 }  // namespace patina

@@ -6,6 +6,7 @@
 #include "gltf/draws.h"
 #include "gltf/images.h"
 #include "gltf/model_materials.h"
+#include "geometry/tangents.h"
 
 namespace patina {
 
@@ -36,6 +37,26 @@ void attachImages(const tinygltf::Model& document, Model& model, const std::stri
     }
 }
 
+// glTF 2.0 section 3.7.2.1: a normal-mapped primitive without TANGENT gets MikkTSpace
+// tangents, the frames the map was baked in, for the UV set its (first drawn) normal map reads.
+void addMissingTangents(Model& model) {
+    std::vector<int> normalUvSet(model.primitives.size(), -1);
+    for (const DrawItem& draw : model.draws) {
+        if (draw.material >= 0 && model.materials[size_t(draw.material)].normal.present() &&
+            normalUvSet[size_t(draw.primitive)] < 0) {
+            normalUvSet[size_t(draw.primitive)] = model.materials[size_t(draw.material)].normal.texCoord;
+        }
+    }
+    for (size_t i = 0; i < model.primitives.size(); ++i) {
+        Mesh& primitive = model.primitives[i];
+        const int uvSet = normalUvSet[i];
+        const bool hasUvs = (uvSet == 0 && !primitive.uv0.empty()) || (uvSet == 1 && !primitive.uv1.empty());
+        if (uvSet >= 0 && hasUvs && primitive.tangents.empty()) {
+            primitive = withTangents(std::move(primitive), uvSet);
+        }
+    }
+}
+
 }  // namespace
 
 Model importGltfModel(const std::filesystem::path& path) {
@@ -44,6 +65,7 @@ Model importGltfModel(const std::filesystem::path& path) {
     Model model = gltf::modelGeometry(document, source);
     model.materials = gltf::modelMaterials(document, source, model.notes);
     attachImages(document, model, source);
+    addMissingTangents(model);
     return model;
 }
 

@@ -5,24 +5,34 @@
 #include <glm/vec3.hpp>
 
 #include "geometry/mesh.h"
+#include "scene/prepared_scene.h"
 #include "scene/probe.h"
 #include "scene/scene.h"
 
 namespace patina {
 
 // What the centre of each pixel of a width x height image of the scene sees, as the GPU
-// rasterises it (shaders/stages/mesh.vert): the nearest surface of the mesh, with position and
-// normal interpolated perspective-correctly across its triangle (the normal not normalised,
-// as the shaders get it), and the unit vector to the camera. The ground-truth render shades
-// these points; rows top first, as images are stored.
+// rasterises it (shaders/stages/mesh.vert): the nearest surface of the draw items, with
+// position and normal in world space interpolated perspective-correctly across its triangle
+// (the normal not normalised, as the shaders get it; reversed on a back face where the item's
+// material says so), the unit vector to the camera, and which item it is of. The ground-truth
+// render shades these points, each with its item's material; rows top first, as images are
+// stored.
 struct PixelSurfaces {
     int width = 0, height = 0;
-    std::vector<int32_t> sampleOfPixel;   // index into samples; -1 where the mesh is not
+    std::vector<int32_t> sampleOfPixel;   // index into samples; -1 where no item is
     std::vector<ProbeSample> samples;
+    std::vector<int32_t> drawOfSample;    // index into the draw list (and materials)
+    std::vector<MaterialParameters> materials;   // each draw item's, in the list's order
 };
 
-// `mesh` seen by `camera` at width x height (triangles are clipped at the near plane).
-PixelSurfaces rasterizeSurfaces(const Mesh& mesh, const Camera& camera, int width, int height);
+// `draws` seen by `camera` at width x height, with the renderer's rules: triangles clipped at
+// the near plane, back faces of a single-sided item culled (a mirrored item's front faces
+// wind clockwise), the nearest fragment kept and the first drawn on a tie. A blended item
+// counts as opaque here: the ground truth has no transparency yet.
+PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camera& camera, int width, int height);
+// What `prepared` draws (sceneDraws), seen by its camera.
+PixelSurfaces rasterizeSurfaces(const PreparedScene& prepared, int width, int height);
 
 // The unit direction of the view ray through the centre of pixel (x, y), top row first.
 glm::vec3 pixelRayDirection(const Camera& camera, int width, int height, int x, int y);

@@ -9,11 +9,23 @@
 
 namespace patina {
 
-std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
+std::vector<ReferenceRow> probeReference(const MaterialParameters& material, const std::vector<Light>& lights,
                                          const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
                                          uint64_t pass) {
-    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    return probeReference({material}, std::vector<int32_t>(samples.size(), 0), lights, samples, environment,
+                          samplesPerRow, pass);
+}
+
+std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& materials,
+                                         const std::vector<int32_t>& materialOfSample,
+                                         const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
+                                         uint64_t pass) {
+    std::vector<shader::SurfaceMaterial> surfaces;
+    for (const MaterialParameters& material : materials) {
+        surfaces.push_back(surfaceMaterial(material));
+    }
     const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
     const Light* environmentLight = enabledEnvironment(lights);
     const std::shared_ptr<const Environment> shown =
@@ -29,8 +41,10 @@ std::vector<ReferenceRow> probeReference(const Material& material, const std::ve
         ReferenceOptions options;
         options.samples = samplesPerRow;
         options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
-        const ReferenceEstimate e = referenceRadiance(material.model, surface, reference, packed, samples[i].position,
-                                                      samples[i].normal, samples[i].toViewer, options);
+        const size_t m = size_t(materialOfSample[i]);
+        const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
+                                                      samples[i].position, samples[i].normal, samples[i].toViewer,
+                                                      options);
         rows[i] = {e.value, e.standardError};
     });
     return rows;

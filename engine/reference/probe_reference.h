@@ -17,8 +17,15 @@ struct ReferenceRow {
     glm::vec3 value;
     glm::vec3 standardError;
 };
-std::vector<ReferenceRow> probeReference(const Material& material, const std::vector<Light>& lights,
+std::vector<ReferenceRow> probeReference(const MaterialParameters& material, const std::vector<Light>& lights,
                                          const std::vector<ProbeSample>& samples,
+                                         const std::shared_ptr<const Environment>& environment, int samplesPerRow,
+                                         uint64_t pass = 0);
+// The same with each row's own material: samples[i] shaded with materials[materialOfSample[i]]
+// (the same seeds as above, so one material gives the same rows).
+std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& materials,
+                                         const std::vector<int32_t>& materialOfSample,
+                                         const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
                                          uint64_t pass = 0);
 

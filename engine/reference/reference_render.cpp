@@ -52,8 +52,8 @@ ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurface
     const int perPass = std::max(1, options.samplesPerPass);
     for (uint64_t pass = 0; image.samplesPerPixel < options.samplesPerPixel; ++pass) {
         const int n = std::min(perPass, options.samplesPerPixel - image.samplesPerPixel);
-        const std::vector<ReferenceRow> rows =
-            probeReference(scene.material, scene.lights, surfaces.samples, environment, n, pass);
+        const std::vector<ReferenceRow> rows = probeReference(surfaces.materials, surfaces.drawOfSample, scene.lights,
+                                                              surfaces.samples, environment, n, pass);
         image.samplesPerPixel += n;
         const double total = double(image.samplesPerPixel);
         for (size_t pixel = 0; pixel < pixels; ++pixel) {

@@ -32,7 +32,8 @@ struct ReferenceImage {
 using ReferencePassDone = std::function<bool(const ReferenceImage&)>;
 
 // The enabled environment light shows the prepared environment (std::invalid_argument without
-// it); `surfaces` are the prepared mesh's (rasterizeSurfaces).
+// it); `surfaces` are the prepared scene's (rasterizeSurfaces), each shaded with its draw
+// item's material.
 ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurfaces& surfaces,
                                const ReferenceRenderOptions& options, const ReferencePassDone& passDone = {});
 

@@ -1,10 +1,16 @@
 #pragma once
 // What the renderer and the ground truth draw: the document with what was loaded for it.
 #include <memory>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 
 #include "environment/environment.h"
 #include "geometry/mesh.h"
+#include "model/model.h"
 #include "scene/scene.h"
+#include "shading/material_parameters.h"
 
 namespace patina {
 
@@ -13,10 +19,45 @@ namespace patina {
 // It refers to the document, which must outlive it; the loaded things are shared.
 struct PreparedScene {
     const Scene& scene;
-    std::shared_ptr<const Mesh> mesh;                // never null: the file's or the built-in kind's
+    // The built-in kind's mesh, or the model's draws flattened into one world-space mesh: what
+    // the camera frames and a caller showing one material over the whole shape (the editor, a
+    // sheet) draws. Never null.
+    std::shared_ptr<const Mesh> mesh;
     // The enabled environment light's source made ready (kept while the light is off, so
     // turning it on again loads nothing); null when the scene has none.
     std::shared_ptr<const Environment> environment;
+    // The scene's glTF file as drawn: primitives, materials and draw items. Null: `mesh` is
+    // drawn alone, with the document's material.
+    std::shared_ptr<const Model> model = nullptr;
 };
+
+// One primitive drawn once, as both the renderer and the ground truth draw it.
+struct SceneDraw {
+    const Mesh* mesh = nullptr;          // in its own space; the prepared scene holds it
+    int primitive = 0;                   // its index in the model (0: the one mesh)
+    glm::mat4 transform{1.0f};           // its space into the world
+    glm::mat3 normalTransform{1.0f};     // model/placement.h
+    MaterialParameters material;         // shaded by the document's BRDF model
+    // Both sides drawn; false culls back faces (glTF 2.0 §3.9.5).
+    bool doubleSided = true;
+    // glTF's double-sided lighting: a back face's normal is reversed before shading (§3.9.5).
+    // The built-in meshes have always been shaded with the normals they have.
+    bool reverseBackNormals = false;
+    // glTF's BLEND (§3.9.4): "over" what is behind it by `alpha`, after every opaque draw.
+    bool blend = false;
+    float alpha = 1.0f;
+};
+
+// glTF's default material (§3.9.6) in Patina's parameters: white, metallic 1, roughness 1, and
+// specular 0.5 (F0 0.04, a glTF dielectric's).
+MaterialParameters defaultModelMaterial();
+
+// What `prepared` draws, in order: without a model its mesh with the document's material, as
+// it has always been drawn; with one each draw item with its own material (the default one for
+// none), under the document's BRDF model (one program shades a frame). A MASK item whose alpha
+// is below its cutoff is left out: a texture's alpha, at most 1, could only lower it. Throws
+// std::invalid_argument for a scene without its mesh, or an item naming a primitive or
+// material the model lacks.
+std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared);
 
 }  // namespace patina

@@ -10,6 +10,7 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
     const Scene& scene = prepared.scene;
     RenderInputs inputs;
     inputs.mesh = prepared.mesh;
+    inputs.model = prepared.model;
     inputs.material = scene.material;
     inputs.cameraPosition = scene.camera.position;
     inputs.cameraTarget = scene.camera.target;
@@ -30,7 +31,7 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
 }
 
 bool RenderInputs::operator==(const RenderInputs& other) const {
-    return mesh == other.mesh && material == other.material &&
+    return mesh == other.mesh && model == other.model && material == other.material &&
            cameraPosition == other.cameraPosition && cameraTarget == other.cameraTarget &&
            fovYDegrees == other.fovYDegrees && exposure == other.exposure && tonemap == other.tonemap &&
            background == other.background && environment == other.environment &&

@@ -1,8 +1,13 @@
-// Mesh vertices are in world space (Patina's meshes have no transform of their own).
+// A draw item's vertices in its primitive's space, placed in the world by uModel; normals go
+// through the inverse transpose, uNormalMatrix (model/placement.h; glTF 2.0 §3.7.2.1). Both are
+// the identity for a mesh drawn where it is (the built-in meshes), and multiplying by the
+// identity is exact: those images are the same bits as before meshes had transforms.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 
 uniform mat4 uViewProjection;
+uniform mat4 uModel;
+uniform mat3 uNormalMatrix;
 
 out vec3 vPosition;
 out vec3 vNormal;
@@ -28,14 +33,16 @@ void writeFlatLight(int i, vec3 first, float firstW, vec3 second, float secondW)
 #endif
 
 // The multi-pass path draws the mesh once per light with depth test EQUAL: every pass must
-// produce bit-identical depth.
+// produce bit-identical depth. Each pass computes it by the same expression from the same
+// uniforms (the depth pre-pass and the light passes set one item's uModel alike).
 invariant gl_Position;
 
 void main() {
-    vPosition = aPosition;
-    vNormal = aNormal;
+    vec4 world = uModel * vec4(aPosition, 1.0f);
+    vPosition = world.xyz;
+    vNormal = uNormalMatrix * aNormal;
 #ifdef PATINA_FLAT_LIGHT_COUNT
     PATINA_FLAT_LIGHTS
 #endif
-    gl_Position = uViewProjection * vec4(aPosition, 1.0f);
+    gl_Position = uViewProjection * world;
 }

@@ -27,6 +27,11 @@ uniform vec3 uBaseColor;
 uniform float uRoughness;
 uniform float uSpecular;
 uniform float uMetallic;
+#ifndef PATINA_PROBE
+// glTF's double-sided lighting (§3.9.5): a back face is shaded with its normal reversed. Off
+// for the built-in meshes, which have always been shaded with the normals they have.
+uniform bool uReverseBackNormals;
+#endif
 
 #ifdef PATINA_FLAT_LIGHT_COUNT
 // Lights 0 to PATINA_FLAT_LIGHT_COUNT - 1 as mesh.vert's FLAT_* wrote them: two rows each, the
@@ -104,6 +109,9 @@ void main() {
 #ifdef PATINA_PROBE
     vec3 V = safeNormalize(vView);
 #else
+    if (uReverseBackNormals && !gl_FrontFacing) {
+        N = -N;
+    }
     vec3 V = safeNormalize(uCameraPosition - vPosition);
 #endif
     vec3 radiance = vec3(0.0f);

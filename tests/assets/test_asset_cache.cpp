@@ -13,6 +13,7 @@
 #include "assets/prepare_scene.h"
 #include "gltf/export.h"
 #include "io/input_error.h"
+#include "gltf_builder.h"
 #include "scratch_test.h"
 #include "test_support.h"
 
@@ -154,6 +155,53 @@ TEST_F(Assets, APreparedSceneHoldsWhatItsDocumentNames) {
     const PreparedScene dark = prepareScene(scene, cache, warnings);
     EXPECT_FALSE(dark.environment);
     EXPECT_EQ(dark.mesh, builtinMesh(MeshKind::Sphere));
+}
+
+// A glTF scene is prepared with the model it draws beside its flattened mesh, both from one
+// load of the file: its primitive, its material's factors, one item where the file puts it;
+// glTF's default material (item material -1) for a file without one. A built-in mesh has none.
+TEST_F(Assets, AGltfSceneIsPreparedWithTheModelItDraws) {
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    Material gold;
+    gold.baseColor = {1.0f, 0.78f, 0.34f};
+    gold.metallic = 1.0f;
+    gold.roughness = 0.25f;
+    exportGltf(path("torus.glb"), makeTorus(), gold);
+    Scene scene;
+    scene.meshFile = path("torus.glb").string();
+    const PreparedScene prepared = prepareScene(scene, cache, warnings);
+    ASSERT_TRUE(prepared.model);
+    const Model& model = *prepared.model;
+    ASSERT_EQ(model.primitives.size(), 1u);
+    EXPECT_EQ(model.primitives[0].positions.size(), prepared.mesh->positions.size());
+    ASSERT_EQ(model.draws.size(), 1u);
+    EXPECT_EQ(model.draws[0].primitive, 0);
+    EXPECT_EQ(model.draws[0].transform, glm::mat4(1.0f));
+    ASSERT_EQ(model.draws[0].material, 0);
+    ASSERT_EQ(model.materials.size(), 1u);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(model.materials[0].factors.baseColor[c], gold.baseColor[c], 1e-6f);
+    }
+    EXPECT_NEAR(model.materials[0].factors.metallic, 1.0f, 1e-6f);
+    EXPECT_NEAR(model.materials[0].factors.roughness, 0.25f, 1e-6f);
+    EXPECT_EQ(prepareScene(scene, cache, warnings).model, prepared.model) << "loaded once";
+    EXPECT_EQ(cache.mesh(scene), prepared.mesh);
+
+    test::GltfBuilder cube = test::cubeModel();
+    cube.json["meshes"][0]["primitives"][0].erase("material");
+    cube.json.erase("materials");
+    cube.writeGlb(path("plain.glb"));
+    scene.meshFile = path("plain.glb").string();
+    const PreparedScene plain = prepareScene(scene, cache, warnings);
+    ASSERT_TRUE(plain.model);
+    EXPECT_EQ(plain.model->draws.at(0).material, -1);
+    MaterialParameters defaults = defaultModelMaterial();
+    defaults.model = scene.material.model;
+    EXPECT_EQ(sceneDraws(plain).at(0).material, defaults);
+
+    scene.meshFile.clear();
+    EXPECT_FALSE(prepareScene(scene, cache, warnings).model);
 }
 
 TEST_F(Assets, TheRendererDrawsAPreparedSceneWithoutLoading) {

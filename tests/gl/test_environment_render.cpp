@@ -128,7 +128,7 @@ std::pair<double, double> gpuAgainstCpu(const EnvironmentShading& shading, float
     Renderer renderer;
     const PreparedScene prepared = test::prepared(scene);
     const HdrImage image = renderer.render(prepared, settings).hdr;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*prepared.mesh, scene.camera, size, size);
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, size, size);
     const std::shared_ptr<const Environment> environment = prepared.environment;
     const CubeChain source = sourceMipChain(*environment);
     const shader::SurfaceMaterial material = surfaceMaterial(scene.material);

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/frame_plan.h"
 #include "geometry/hidden_faces.h"
@@ -121,35 +122,35 @@ TEST(FramePlan, CullsOnlyWithTheEyeOutsideAClosedMesh) {
     const RenderSettings settings = settingsOf(RenderPath::Single, 4);
 
     FramePlan plan = planFrame(settings, outside, sphere, kMaxSamples, kSlots);
-    EXPECT_EQ(plan.culled, HiddenFaces::Back);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::Back);
     EXPECT_FALSE(plan.depthTest);
 
     Camera inside = outside;
     inside.position = {0.0f, 0.0f, 0.5f};
     plan = planFrame(settings, inside, sphere, kMaxSamples, kSlots);
-    EXPECT_EQ(plan.culled, HiddenFaces::None);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::None);
     EXPECT_TRUE(plan.depthTest);
 
     RenderSettings everyFace = settings;
     everyFace.cullHiddenFaces = false;
     plan = planFrame(everyFace, outside, sphere, kMaxSamples, kSlots);
-    EXPECT_EQ(plan.culled, HiddenFaces::None);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::None);
     EXPECT_TRUE(plan.depthTest);
 
     MeshFacts inward = sphere;
     inward.culling.hidden = HiddenFaces::Front;
-    EXPECT_EQ(planFrame(settings, outside, inward, kMaxSamples, kSlots).culled, HiddenFaces::Front);
+    EXPECT_EQ(planFrame(settings, outside, inward, kMaxSamples, kSlots).items[0].culled, HiddenFaces::Front);
 
     MeshFacts torusLike = sphere;
     torusLike.culling.convex = false;
     plan = planFrame(settings, outside, torusLike, kMaxSamples, kSlots);
-    EXPECT_EQ(plan.culled, HiddenFaces::Back);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::Back);
     EXPECT_TRUE(plan.depthTest) << "culled faces of a non-convex mesh can still overlap";
 
     MeshFacts open = sphere;
     open.culling = {};
     plan = planFrame(settings, outside, open, kMaxSamples, kSlots);
-    EXPECT_EQ(plan.culled, HiddenFaces::None);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::None);
     EXPECT_TRUE(plan.depthTest);
 }
 
@@ -183,6 +184,81 @@ TEST(FramePlan, FlatLightsWeighThisPlansBoxAndStrips) {
     EXPECT_EQ(planFrame(settings, camera, dense, kMaxSamples, kSlots).flatLightCount, kSlots);
     settings.flatLightUse = FlatLights::Never;
     EXPECT_EQ(planFrame(settings, camera, sphereFacts(), kMaxSamples, kSlots).flatLightCount, 0u);
+}
+
+// Two spheres side by side, one blended: how each item is drawn and what the frame covers.
+std::vector<DrawFacts> twoSpheres() {
+    DrawFacts left{sphereFacts(), glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, 0.0f))};
+    DrawFacts right{sphereFacts(), glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, 0.0f))};
+    return {left, right};
+}
+
+// The frame's box is every item's, each placed by its transform.
+TEST(FramePlan, TheBoxHoldsEveryItemWhereItIs) {
+    const Camera camera = defaultScene().camera;
+    const RenderSettings settings = settingsOf(RenderPath::Single, 4);
+    const std::vector<DrawFacts> items = twoSpheres();
+    const FramePlan plan = planFrame(settings, camera, items, kMaxSamples, kSlots);
+    for (const DrawFacts& item : items) {
+        const PixelRect box = screenBounds(plan.transform * item.transform, item.mesh.bounds, 320, 200);
+        EXPECT_LE(plan.meshBox.x0, box.x0);
+        EXPECT_LE(plan.meshBox.y0, box.y0);
+        EXPECT_GE(plan.meshBox.x1, box.x1);
+        EXPECT_GE(plan.meshBox.y1, box.y1);
+    }
+    const PixelRect untransformed = screenBounds(plan.transform, sphereFacts().bounds, 320, 200);
+    EXPECT_GT(plan.meshBox.x1 - plan.meshBox.x0, untransformed.x1 - untransformed.x0 + 40);
+    EXPECT_EQ(plan.meshArea, plan.meshBox);
+    EXPECT_TRUE(planFrame(settings, camera, std::vector<DrawFacts>{}, kMaxSamples, kSlots).meshBox.empty());
+}
+
+// Each item culls its own hidden side (the eye is outside each sphere), but two convex items'
+// faces may share a sample: the depth test stays. A single-sided item culls its back faces
+// wherever the eye is (glTF 2.0 §3.9.5), and a mirrored one turns its front winding round.
+TEST(FramePlan, EachItemIsCulledAndWoundByItsOwnFacts) {
+    const Camera camera = defaultScene().camera;
+    const RenderSettings settings = settingsOf(RenderPath::Single, 4);
+    std::vector<DrawFacts> items = twoSpheres();
+    FramePlan plan = planFrame(settings, camera, items, kMaxSamples, kSlots);
+    ASSERT_EQ(plan.items.size(), 2u);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::Back);
+    EXPECT_EQ(plan.items[1].culled, HiddenFaces::Back);
+    EXPECT_TRUE(plan.depthTest) << "the shortcut of one convex mesh does not hold for two";
+
+    Camera inside = camera;
+    inside.position = {1.2f, 0.0f, 0.5f};   // in the right sphere
+    items[0].doubleSided = false;
+    plan = planFrame(settings, inside, items, kMaxSamples, kSlots);
+    EXPECT_EQ(plan.items[0].culled, HiddenFaces::Back);
+    EXPECT_EQ(plan.items[1].culled, HiddenFaces::None) << "its inside is seen";
+
+    items[1].transform = glm::scale(items[1].transform, glm::vec3(1.0f, -1.0f, 1.0f));
+    plan = planFrame(settings, camera, items, kMaxSamples, kSlots);
+    EXPECT_FALSE(plan.items[0].frontClockwise);
+    EXPECT_TRUE(plan.items[1].frontClockwise);
+}
+
+// Blended items come after the opaque ones, farthest first; the display values then come from
+// a display pass, over the composited linear values.
+TEST(FramePlan, BlendedItemsComeLastFarthestFirst) {
+    Camera camera = defaultScene().camera;
+    camera.position = {-4.0f, 0.0f, 0.0f};   // on the left: the right sphere is the farther
+    camera.target = {0.0f, 0.0f, 0.0f};
+    std::vector<DrawFacts> items = twoSpheres();
+    DrawFacts middle{sphereFacts()};
+    items.insert(items.begin(), middle);
+    for (DrawFacts& item : items) {
+        item.blend = true;
+    }
+    items[1].blend = false;   // the left one, opaque
+    const FramePlan plan = planFrame(settingsOf(RenderPath::Single, 1), camera, items, kMaxSamples, kSlots);
+    ASSERT_EQ(plan.items.size(), 3u);
+    EXPECT_EQ(plan.items[0].item, 1u);
+    EXPECT_EQ(plan.items[1].item, 2u) << "the right sphere, farthest from the eye";
+    EXPECT_EQ(plan.items[2].item, 0u);
+    EXPECT_TRUE(plan.blending);
+    EXPECT_FALSE(plan.displayInPass);
+    EXPECT_TRUE(plan.keepLinear);
 }
 
 }  // namespace

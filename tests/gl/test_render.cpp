@@ -585,11 +585,7 @@ TEST(Renderer, ResolvedInteriorMatchesOneSample) {
 // A flat rectangle facing +z: its bounding box is the rectangle itself, so its screen bounds
 // are tight and any cropping short of them shows.
 Mesh facingQuad() {
-    Mesh quad;
-    quad.positions = {{-0.8f, -0.5f, 0.0f}, {0.8f, -0.5f, 0.0f}, {0.8f, 0.5f, 0.0f}, {-0.8f, 0.5f, 0.0f}};
-    quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
-    quad.indices = {0, 1, 2, 0, 2, 3};
-    return quad;
+    return test::facingQuad(0.8f, 0.5f);
 }
 
 // The pixels MSAA work is cropped to hold every vertex the camera sees in front of it, for

@@ -141,7 +141,7 @@ TEST_F(GltfAssets, BoxTexcoordsReadsTheSecondUvSet) {
     EXPECT_TRUE(model.materials[0].doubleSided);
 }
 
-TEST_F(GltfAssets, ClearCoatReadsNormalMapsFromPngAndJpegWithoutTangents) {
+TEST_F(GltfAssets, ClearCoatReadsNormalMapsFromPngAndJpegAndMakesTheirTangents) {
     const Model model = importGltfModel(kModels / "ClearCoat-glTF/ClearCoatTest.gltf");
     std::map<std::string, const ModelMaterial*> materials;
     for (const ModelMaterial& material : model.materials) {
@@ -161,9 +161,18 @@ TEST_F(GltfAssets, ClearCoatReadsNormalMapsFromPngAndJpegWithoutTangents) {
     EXPECT_EQ(materials.at("Partial_Coating")->alphaMode, AlphaMode::Blend);
     EXPECT_EQ(materials.at("LabelMaterial")->emissiveFactor, glm::vec3(1.0f));
     EXPECT_TRUE(materials.at("LabelMaterial")->emissive.present());
-    for (const Mesh& primitive : model.primitives) {
-        EXPECT_TRUE(primitive.tangents.empty());   // the file has no TANGENT: the renderer makes them
+    // The file has no TANGENT: the normal-mapped primitives get MikkTSpace ones, the others none.
+    for (const DrawItem& draw : model.draws) {
+        const Mesh& primitive = model.primitives.at(size_t(draw.primitive));
         EXPECT_EQ(primitive.uv0.size(), primitive.positions.size());
+        const bool normalMapped = draw.material >= 0 && model.materials[size_t(draw.material)].normal.present();
+        ASSERT_EQ(primitive.tangents.size(), normalMapped ? primitive.positions.size() : 0u) << draw.node;
+        for (size_t i = 0; i < primitive.tangents.size(); ++i) {
+            const glm::vec4& tangent = primitive.tangents[i];
+            EXPECT_NEAR(glm::length(glm::vec3(tangent)), 1.0f, 1e-4f);
+            EXPECT_NEAR(glm::dot(glm::vec3(tangent), primitive.normals[i]), 0.0f, 1e-4f);
+            EXPECT_EQ(std::abs(tangent.w), 1.0f);
+        }
     }
     EXPECT_TRUE(model.notes.empty());
 }

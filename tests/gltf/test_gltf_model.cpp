@@ -326,6 +326,30 @@ TEST_F(GltfModel, TheFlattenedMeshIsTheDrawsInWorldSpace) {
 
 // --- Images ---
 
+// Section 3.7.2.1: "When tangents are not specified, client implementations SHOULD calculate
+// tangents using default MikkTSpace algorithms": only where a normal map will read them.
+TEST_F(GltfModel, ANormalMappedPrimitiveWithoutTangentsGetsMikkTSpaceOnes) {
+    GltfBuilder model;
+    const int positions = model.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int normals = model.positions({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    // v grows down the image: the image's +x along +x, its up (+Y) along +y.
+    const int uvs = model.data(std::vector<float>{0, 1, 1, 1, 0, 0}, test::kFloat, "VEC2", 2);
+    model.add("images", {{"uri", "map.png"}});
+    model.add("textures", {{"source", 0}});
+    const int mapped = model.add("materials", {{"normalTexture", {{"index", 0}}}});
+    const int plain = model.add("materials", {{"name", "plain"}});
+    const Json attributes{{"POSITION", positions}, {"NORMAL", normals}, {"TEXCOORD_0", uvs}};
+    model.meshNode({{"attributes", attributes}, {"material", mapped}});
+    model.meshNode({{"attributes", attributes}, {"material", plain}});
+    const Model imported = load(model);
+    ASSERT_EQ(imported.primitives.size(), 2u);
+    ASSERT_EQ(imported.primitives[0].tangents.size(), 3u);
+    for (const glm::vec4& tangent : imported.primitives[0].tangents) {
+        EXPECT_NEAR(glm::distance(tangent, glm::vec4(1, 0, 0, 1)), 0.0f, 1e-6f);
+    }
+    EXPECT_TRUE(imported.primitives[1].tangents.empty()) << "no normal map, no tangents made";
+}
+
 TEST_F(GltfModel, ImagesDecodeFromAFileADataUriAndABufferViewTopRowFirst) {
     const LdrImage pixels = fourPixels();
     const std::vector<uint8_t> png = encodePng(pixels);

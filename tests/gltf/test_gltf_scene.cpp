@@ -26,6 +26,9 @@ protected:
         fs::create_directory(path("models"));
         test::GltfBuilder cube = test::cubeModel();
         cube.json["nodes"][0]["scale"] = {0.4, 0.4, 0.4};
+        // The file's material is what shows: a dielectric, which the scenes' hemisphere light
+        // (diffuse only) lights. glTF's defaults make a metal, which it leaves black.
+        cube.json["materials"][0]["pbrMetallicRoughness"] = {{"metallicFactor", 0.0}};
         cube.writeGlb(path("models/cube.glb"));
     }
     test::CliRun run(const std::string& arguments) const { return test::runPatina(arguments, dir_); }

@@ -18,7 +18,7 @@ constexpr int kSize = 96;
 
 TEST(PixelSurfaces, TheSphereIsSeenWhereItIs) {
     const Scene scene = defaultScene();
-    const PixelSurfaces surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, kSize, kSize);
+    const PixelSurfaces surfaces = rasterizeSurfaces(test::prepared(scene), kSize, kSize);
     ASSERT_EQ(surfaces.sampleOfPixel.size(), size_t(kSize * kSize));
     int covered = 0;
     for (int y = 0; y < kSize; ++y) {
@@ -70,7 +70,7 @@ RenderAndReference renderAndReference(const Scene& scene) {
     Renderer renderer;
     RenderAndReference both;
     both.render = renderer.render(test::prepared(scene), test::renderSettings(kSize, kSize, RenderPath::Single, 1)).hdr;
-    both.surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, kSize, kSize);
+    both.surfaces = rasterizeSurfaces(test::prepared(scene), kSize, kSize);
     ReferenceRenderOptions options;
     options.samplesPerPixel = 1;
     both.reference = renderReference(test::prepared(scene), both.surfaces, options);
@@ -120,7 +120,7 @@ TEST(ReferenceRender, PassesAreIndependentAndAStopKeepsWhatIsDone) {
     Scene scene = defaultScene();
     scene.material.metallic = 1.0f;
     scene.material.roughness = 0.5f;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, 24, 24);
+    const PixelSurfaces surfaces = rasterizeSurfaces(test::prepared(scene), 24, 24);
     ReferenceRenderOptions options;
     options.samplesPerPixel = 64;
     options.samplesPerPass = 16;
@@ -163,7 +163,7 @@ TEST(DisplayImage, IsTheRenderersDisplayTransform) {
     // The ground truth's backdrop: where the renderer shows the flat background as its swatch.
     ReferenceRenderOptions options;
     options.samplesPerPixel = 1;
-    const PixelSurfaces surfaces = rasterizeSurfaces(*test::prepared(scene).mesh, scene.camera, kSize, kSize);
+    const PixelSurfaces surfaces = rasterizeSurfaces(test::prepared(scene), kSize, kSize);
     const ReferenceImage reference = renderReference(test::prepared(scene), surfaces, options);
     ASSERT_GT(std::count(reference.backdrop.begin(), reference.backdrop.end(), 1), kSize);
     const LdrImage shown = displayImage(render.hdr, scene.display, reference.backdrop);

@@ -1,0 +1,76 @@
+#include "scene/prepared_scene.h"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "model/placement.h"
+
+namespace patina {
+
+namespace {
+[[noreturn]] void missing(size_t item, const char* what, int index, size_t count) {
+    throw std::invalid_argument("draw item " + std::to_string(item) + " names " + what + " " + std::to_string(index) +
+                                " of " + std::to_string(count));
+}
+
+// Item `i` of `model` as drawn, or nothing when its MASK cutoff hides it whole.
+std::optional<SceneDraw> modelDraw(const Model& model, size_t i, BrdfModelId brdf) {
+    const DrawItem& item = model.draws[i];
+    if (item.primitive < 0 || size_t(item.primitive) >= model.primitives.size()) {
+        missing(i, "primitive", item.primitive, model.primitives.size());
+    }
+    if (item.material >= 0 && size_t(item.material) >= model.materials.size()) {
+        missing(i, "material", item.material, model.materials.size());
+    }
+    ModelMaterial defaults;
+    defaults.factors = defaultModelMaterial();
+    const ModelMaterial& material = item.material >= 0 ? model.materials[size_t(item.material)] : defaults;
+    if (material.alphaMode == AlphaMode::Mask && !(material.baseAlpha >= material.alphaCutoff)) {
+        return std::nullopt;
+    }
+    SceneDraw draw;
+    draw.mesh = &model.primitives[size_t(item.primitive)];
+    draw.primitive = item.primitive;
+    draw.transform = item.transform;
+    draw.normalTransform = normalTransform(item.transform);
+    draw.material = material.factors;
+    draw.material.model = brdf;
+    draw.doubleSided = material.doubleSided;
+    draw.reverseBackNormals = material.doubleSided;
+    draw.blend = material.alphaMode == AlphaMode::Blend;
+    draw.alpha = draw.blend ? material.baseAlpha : 1.0f;
+    return draw;
+}
+}  // namespace
+
+MaterialParameters defaultModelMaterial() {
+    MaterialParameters material;
+    material.baseColor = glm::vec3(1.0f);
+    material.metallic = 1.0f;
+    material.roughness = 1.0f;
+    material.specular = 0.5f;
+    return material;
+}
+
+std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared) {
+    if (!prepared.model) {
+        if (!prepared.mesh) {
+            throw std::invalid_argument("the scene's mesh was not prepared (assets/)");
+        }
+        SceneDraw draw;
+        draw.mesh = prepared.mesh.get();
+        draw.material = prepared.scene.material;
+        return {draw};
+    }
+    std::vector<SceneDraw> draws;
+    draws.reserve(prepared.model->draws.size());
+    for (size_t i = 0; i < prepared.model->draws.size(); ++i) {
+        if (std::optional<SceneDraw> draw = modelDraw(*prepared.model, i, prepared.scene.material.model)) {
+            draws.push_back(*draw);
+        }
+    }
+    return draws;
+}
+
+}  // namespace patina

@@ -1,0 +1,131 @@
+// What a prepared scene draws (scene/prepared_scene.h's sceneDraws) and what a draw's transform
+// does to normals and winding (model/placement.h).
+#include <cmath>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "model/placement.h"
+#include "scene/prepared_scene.h"
+
+namespace patina {
+namespace {
+
+TEST(Placement, NormalsGoThroughTheInverseTranspose) {
+    EXPECT_EQ(normalTransform(glm::mat4(1.0f)), glm::mat3(1.0f)) << "exactly: the built-in meshes' images stay";
+    // A stretch along x tilts a slanted surface's normal towards the other axes.
+    const glm::mat4 stretch = glm::scale(glm::mat4(1.0f), glm::vec3(4.0f, 1.0f, 1.0f));
+    const glm::vec3 n = glm::normalize(normalTransform(stretch) * glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f)));
+    const glm::vec3 expected = glm::normalize(glm::transpose(glm::inverse(glm::mat3(stretch))) * glm::vec3(1.0f, 1.0f, 0.0f));
+    EXPECT_NEAR(glm::length(n - expected), 0.0f, 1e-6f);
+    // Perpendicular to the surface after the stretch: the tangent (1, -1, 0) becomes (4, -1, 0).
+    EXPECT_NEAR(glm::dot(n, glm::vec3(4.0f, -1.0f, 0.0f)), 0.0f, 1e-6f);
+    // A mirror keeps the inverse transpose's sign: an outward normal stays outward.
+    const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f));
+    EXPECT_TRUE(mirrors(mirror));
+    EXPECT_FALSE(mirrors(stretch));
+    EXPECT_EQ(normalTransform(mirror) * glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(-1.0f, 0.0f, 0.0f));
+    // A flattened axis has no inverse; the normals still have directions, the flat one's kept.
+    const glm::mat3 flat = normalTransform(glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, 1.0f)));
+    EXPECT_GT((flat * glm::vec3(0.0f, 1.0f, 0.0f)).y, 0.0f);
+    EXPECT_TRUE(std::isfinite(flat[0][0]) && std::isfinite(flat[1][1]));
+}
+
+// Two primitives, two materials, three items (one with no material).
+Model threeItems() {
+    Model model;
+    model.primitives = {makeUvSphere(4, 8), makeTorus(0.75f, 0.3f, 6, 4)};
+    ModelMaterial red, blue;
+    red.factors.baseColor = {0.8f, 0.1f, 0.1f};
+    red.doubleSided = true;
+    blue.factors.baseColor = {0.1f, 0.1f, 0.8f};
+    blue.alphaMode = AlphaMode::Blend;
+    blue.baseAlpha = 0.25f;
+    model.materials = {red, blue};
+    model.draws = {{0, 0, glm::translate(glm::mat4(1.0f), glm::vec3(-1.0f, 0.0f, 0.0f)), "left"},
+                   {1, 1, glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)), "mirrored"},
+                   {0, -1, glm::mat4(1.0f), "default"}};
+    return model;
+}
+
+TEST(SceneDraws, ABuiltInMeshIsOneItemWithTheDocumentsMaterial) {
+    Scene scene = defaultScene();
+    scene.material.model = BrdfModelId::Filament;
+    const PreparedScene prepared{scene, builtinMesh(MeshKind::Torus), nullptr};
+    const std::vector<SceneDraw> draws = sceneDraws(prepared);
+    ASSERT_EQ(draws.size(), 1u);
+    EXPECT_EQ(draws[0].mesh, prepared.mesh.get());
+    EXPECT_EQ(draws[0].material, MaterialParameters(scene.material));
+    EXPECT_EQ(draws[0].transform, glm::mat4(1.0f));
+    EXPECT_EQ(draws[0].normalTransform, glm::mat3(1.0f));
+    EXPECT_TRUE(draws[0].doubleSided) << "the built-in meshes have always shown both sides";
+    EXPECT_FALSE(draws[0].reverseBackNormals);
+    EXPECT_FALSE(draws[0].blend);
+    EXPECT_THROW(sceneDraws(PreparedScene{scene, nullptr, nullptr}), std::invalid_argument);
+}
+
+TEST(SceneDraws, AModelsItemsKeepTheirPlacesAndMaterials) {
+    Scene scene = defaultScene();
+    scene.material.model = BrdfModelId::Filament;
+    const auto model = std::make_shared<const Model>(threeItems());
+    const PreparedScene prepared{scene, builtinMesh(MeshKind::Sphere), nullptr, model};
+    const std::vector<SceneDraw> draws = sceneDraws(prepared);
+    ASSERT_EQ(draws.size(), 3u);
+    EXPECT_EQ(draws[0].mesh, &model->primitives[0]);
+    EXPECT_EQ(draws[1].mesh, &model->primitives[1]);
+    EXPECT_EQ(draws[1].primitive, 1);
+    EXPECT_EQ(draws[0].transform, model->draws[0].transform);
+    EXPECT_EQ(draws[1].normalTransform, normalTransform(model->draws[1].transform));
+    EXPECT_EQ(draws[0].material.baseColor, model->materials[0].factors.baseColor);
+    EXPECT_EQ(draws[1].material.baseColor, model->materials[1].factors.baseColor);
+    for (const SceneDraw& draw : draws) {
+        EXPECT_EQ(draw.material.model, BrdfModelId::Filament) << "one program shades a frame: the document's model";
+    }
+    // glTF 2.0 §3.9.5: doubleSided draws both sides and lights a back face from its side.
+    EXPECT_TRUE(draws[0].doubleSided && draws[0].reverseBackNormals);
+    EXPECT_FALSE(draws[1].doubleSided || draws[1].reverseBackNormals);
+    EXPECT_TRUE(draws[1].blend);
+    EXPECT_EQ(draws[1].alpha, 0.25f);
+    EXPECT_FALSE(draws[0].blend);
+    EXPECT_EQ(draws[0].alpha, 1.0f) << "an opaque item's alpha is ignored (§3.9.4)";
+    // §3.9.6: no material is the default one.
+    MaterialParameters defaults = defaultModelMaterial();
+    defaults.model = BrdfModelId::Filament;
+    EXPECT_EQ(draws[2].material, defaults);
+    EXPECT_EQ(defaultModelMaterial().baseColor, glm::vec3(1.0f));
+    EXPECT_EQ(defaultModelMaterial().metallic, 1.0f);
+    EXPECT_EQ(defaultModelMaterial().roughness, 1.0f);
+    EXPECT_EQ(defaultModelMaterial().specular, 0.5f);
+    EXPECT_FALSE(draws[2].doubleSided);
+}
+
+TEST(SceneDraws, AMaskBelowItsCutoffHidesTheItemWhole) {
+    const Scene scene = defaultScene();
+    Model model = threeItems();
+    model.materials[0].alphaMode = AlphaMode::Mask;
+    model.materials[0].baseAlpha = 0.4f;
+    model.materials[0].alphaCutoff = 0.5f;
+    auto drawn = [&](const Model& m) {
+        return sceneDraws(PreparedScene{scene, builtinMesh(MeshKind::Sphere), nullptr, std::make_shared<const Model>(m)});
+    };
+    EXPECT_EQ(drawn(model).size(), 2u);
+    model.materials[0].alphaCutoff = 0.4f;   // "greater than or equal to" the cutoff: opaque
+    ASSERT_EQ(drawn(model).size(), 3u);
+    EXPECT_FALSE(drawn(model)[0].blend);
+}
+
+TEST(SceneDraws, AnItemNamingWhatTheModelLacksIsRefused) {
+    const Scene scene = defaultScene();
+    for (const auto& [primitive, material] : {std::pair{2, 0}, std::pair{-1, 0}, std::pair{0, 2}}) {
+        Model model = threeItems();
+        model.draws[1].primitive = primitive;
+        model.draws[1].material = material;
+        const PreparedScene prepared{scene, builtinMesh(MeshKind::Sphere), nullptr, std::make_shared<const Model>(model)};
+        EXPECT_THROW(sceneDraws(prepared), std::invalid_argument) << primitive << " " << material;
+    }
+}
+
+}  // namespace
+}  // namespace patina
