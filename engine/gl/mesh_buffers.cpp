@@ -8,17 +8,38 @@ MeshBuffers::MeshBuffers() {
     glGenVertexArrays(1, &vertexArray_);
     glGenBuffers(1, &vertices_);
     glGenBuffers(1, &indices_);
-    glBindVertexArray(vertexArray_);
-    glBindBuffer(GL_ARRAY_BUFFER, vertices_);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_);
-    const GLsizei stride = 6 * sizeof(float);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(3 * sizeof(float)));
-    glBindVertexArray(0);
 }
+
+namespace {
+constexpr int kSurfaceFloats = 3 + 3 + 2 + 2 + 4;   // position, normal, uv0, uv1, tangent
+
+bool hasSurfaceAttributes(const Mesh& mesh) {
+    return !mesh.uv0.empty() || !mesh.uv1.empty() || !mesh.tangents.empty();
+}
+
+// Attribute `index`, `size` floats at `offset` floats into a vertex `stride` floats long.
+void attribute(GLuint index, GLint size, int offset, int stride) {
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, GLsizei(stride * sizeof(float)),
+                          reinterpret_cast<const void*>(offset * sizeof(float)));
+}
+
+std::vector<float> interleave(const Mesh& mesh, bool surface) {
+    std::vector<float> interleaved;
+    interleaved.reserve(mesh.positions.size() * (surface ? kSurfaceFloats : 6));
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::vec3 p = mesh.positions[i], n = mesh.normals[i];
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+        if (surface) {
+            const glm::vec2 uv0 = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[i];
+            const glm::vec2 uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[i];
+            const glm::vec4 t = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[i];
+            interleaved.insert(interleaved.end(), {uv0.x, uv0.y, uv1.x, uv1.y, t.x, t.y, t.z, t.w});
+        }
+    }
+    return interleaved;
+}
+}  // namespace
 
 MeshBuffers::~MeshBuffers() {
     glDeleteBuffers(1, &indices_);
@@ -31,14 +52,22 @@ void MeshBuffers::upload(const Mesh& mesh) {
     // old mesh's verdict on its faces.
     const BoundingBox bounds = boundingBox(mesh);
     const FaceCulling culling = faceCulling(mesh);
-    std::vector<float> interleaved;
-    interleaved.reserve(mesh.positions.size() * 6);
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-        const glm::vec3 p = mesh.positions[i], n = mesh.normals[i];
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-    }
+    const bool surface = hasSurfaceAttributes(mesh);
+    const std::vector<float> interleaved = interleave(mesh, surface);
     glBindVertexArray(vertexArray_);
     glBindBuffer(GL_ARRAY_BUFFER, vertices_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_);
+    const int stride = surface ? kSurfaceFloats : 6;
+    attribute(0, 3, 0, stride);
+    attribute(1, 3, 3, stride);
+    for (GLuint extra = 2; extra <= 4; ++extra) {
+        glDisableVertexAttribArray(extra);
+    }
+    if (surface) {
+        attribute(2, 2, 6, stride);
+        attribute(3, 2, 8, stride);
+        attribute(4, 4, 10, stride);
+    }
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
                  interleaved.data(), GL_STATIC_DRAW);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)),

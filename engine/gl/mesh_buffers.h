@@ -6,7 +6,10 @@
 
 namespace patina {
 
-// A mesh on the GPU: interleaved position + normal (attributes 0 and 1) and 32-bit indices.
+// A mesh on the GPU: interleaved position and normal (attributes 0 and 1) and 32-bit indices;
+// a mesh with UVs or tangents also has uv0, uv1 and the tangent (attributes 2, 3, 4; zeros for
+// a set it lacks, and no tangent's w is 0, which shade.frag takes for "none"). A mesh with
+// neither keeps the six floats a vertex (the built-in meshes).
 class MeshBuffers {
 public:
     MeshBuffers();

@@ -18,6 +18,7 @@
 #include "gl/environment_texture.h"
 #include "gl/frame_plan.h"
 #include "gl/mesh_buffers.h"
+#include "gl/model_textures.h"
 #include "gl/program.h"
 #include "gl/render_targets.h"
 #include "gl/shading_inputs.h"
@@ -28,6 +29,8 @@ namespace patina {
 namespace shader_sources {
 extern const char* const mesh_vert;
 extern const char* const black_frag;
+extern const char* const texture_glsl;
+extern const char* const surface_maps_glsl;
 extern const char* const fullscreen_vert;
 extern const char* const display_glsl;
 extern const char* const display_frag;
@@ -85,6 +88,12 @@ private:
 struct Renderer::State {
     ShadingPrograms shading;
     LazyProgram depthPrepass{{shader_sources::mesh_vert}, {shader_sources::black_frag}};
+    // The same for a frame with maps: MASK's cut-outs lay down no depth.
+    LazyProgram depthPrepassMaps{{shader_sources::mesh_vert},
+                                 {shader_sources::texture_glsl, shader_sources::surface_maps_glsl,
+                                  shader_sources::black_frag},
+                                 {"PATINA_TEXTURED"}};
+    LazyProgram& prepass(bool maps) { return maps ? depthPrepassMaps : depthPrepass; }
     LazyProgram display{{shader_sources::fullscreen_vert}, {shader_sources::display_glsl, shader_sources::display_frag}};
     std::map<int, LazyProgram> resolves;   // by the sample count the GL made
 
@@ -123,6 +132,7 @@ struct Renderer::State {
     // as long as it is drawn; `shapeShown` holds it, so it cannot be freed and its address
     // reused by another while these stand for it.
     std::vector<std::unique_ptr<MeshBuffers>> primitives;
+    ModelTextures textures;   // the shown model's maps' images
     std::shared_ptr<const void> shapeShown;
     GLuint emptyVertexArray = 0;
     GLuint timerQueries[2] = {0, 0};   // GL_TIMESTAMP before and after a draw
@@ -224,6 +234,7 @@ void Renderer::uploadShape(State& s, const PreparedScene& prepared) {
         }
         s.primitives[i]->upload(*meshes[i]);   // the hidden-faces analysis runs here, once per primitive shown
     }
+    s.textures.upload(prepared.model);
     s.shapeShown = shape;
 }
 
@@ -250,6 +261,7 @@ private:
     void lightPasses(GLint lightIndex, const DrawPlan& item) const;
     void useItem(const DrawUniforms& uniforms, const DrawPlan& item) const;
     void drawItem(const DrawPlan& item) const;
+    ModelTextures* mapTextures() const { return maps ? &s.textures : nullptr; }
     void clearStrip(int top, const PixelRect& area);
     void drawBackground(int top) const;
     void displayStrip(int top, const PixelRect& area) const;
@@ -265,6 +277,7 @@ private:
     std::shared_ptr<const Environment> environmentMap;
     bool environment = false;
     bool environmentBackground = false;   // a drawn background covers every pixel
+    bool maps = false;                    // an item has texture maps: the programs read them
     FramePlan plan;
     std::vector<shader::PackedLight> packed;
     const GlImage* linear = nullptr;
@@ -307,7 +320,10 @@ void Renderer::Frame::planDraw() {
                          item.doubleSided,
                          item.blend});
     }
-    plan = planFrame(planned, scene.camera, facts, s.maxSamples, s.flatLightSlots);
+    maps = std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) { return item.maps != nullptr; });
+    // The maps' three vertex outputs (surface_maps.glsl) take two flat lights' rows and more.
+    const size_t flatSlots = maps ? s.flatLightSlots - std::min<size_t>(s.flatLightSlots, 2) : s.flatLightSlots;
+    plan = planFrame(planned, scene.camera, facts, s.maxSamples, flatSlots);
     packed = packEnabledLights(scene.lights);
     s.lights.upload(packed);
     s.lights.bind();
@@ -327,20 +343,25 @@ void Renderer::Frame::choosePrograms() {
     ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
     singlePass.environment = environment;
     // The specialised shader leaves out diffuse only where no item has any.
-    const bool noDiffuse = std::all_of(draws.begin(), draws.end(),
-                                       [](const SceneDraw& item) { return hasNoDiffuse(item.material); });
+    // A metallic-roughness map can lower metallic below its factor's 1 (a base colour map can
+    // only darken a black factor's nothing).
+    const bool noDiffuse = std::all_of(draws.begin(), draws.end(), [](const SceneDraw& item) {
+        const bool mapLowersMetallic = item.maps && item.maps->metallicRoughness.present();
+        return hasNoDiffuse(item.material) && (item.material.baseColor == glm::vec3(0.0f) || !mapLowersMetallic);
+    });
     auto specialisation = [&] {
         ShaderSpecialisation key = settings.lightCode ? settings.lightCode(packed, plan.flatLightCount)
                                                       : specialiseFor(packed, noDiffuse, plan.flatLightCount);
         key.environment = environment;
         return key;
     };
-    shading = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output)
+    const ShadingPrograms::Surface surface = maps ? ShadingPrograms::Surface::Maps : ShadingPrograms::Surface::Factors;
+    shading = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
               : settings.path == RenderPath::Multi
-                  ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment)
-                  : &s.shading.useSpecialised(model, specialisation(), output);
+                  ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface)
+                  : &s.shading.useSpecialised(model, specialisation(), output, surface);
     if (settings.path == RenderPath::Multi) {
-        s.depthPrepass.get();
+        s.prepass(maps).get();
     }
     backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
     if (environment) {
@@ -473,7 +494,7 @@ void blendOver(float alpha) {
 void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
     shading->use();
     prepare(*shading);
-    const DrawUniforms uniforms(*shading);
+    const DrawUniforms uniforms(*shading, mapTextures());
     for (const DrawPlan& item : opaque) {
         useItem(uniforms, item);
         drawItem(item);
@@ -492,17 +513,17 @@ void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
 // light passes add alpha times theirs: the same "over" as one pass where the item does not
 // cover itself (where it does, each pass adds every layer, not the layers over one another).
 void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
-    const GlProgram& depthPrepass = s.depthPrepass.get();
+    const GlProgram& depthPrepass = s.prepass(maps).get();
     depthPrepass.use();
     prepare(depthPrepass);
-    const DrawUniforms prepassUniforms(depthPrepass);
+    const DrawUniforms prepassUniforms(depthPrepass, mapTextures());
     for (const DrawPlan& item : opaque) {
         useItem(prepassUniforms, item);
         drawItem(item);
     }
     shading->use();
     prepare(*shading);
-    const DrawUniforms uniforms(*shading);
+    const DrawUniforms uniforms(*shading, mapTextures());
     const GLint lightIndex = shading->uniform("uLightIndex");
     // The passes add 0 to alpha, so the pre-pass's stamp (RenderTargets::SampleStamp) stays.
     glUniform1f(shading->uniform("uSampleStamp"), 0.0f);
@@ -531,12 +552,16 @@ void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
 
 // One item's light passes, then the environment's, as in the single pass (the shading program
 // in use; `lightIndex` its uLightIndex).
+// Emission (with maps) comes in the first pass only.
 void Renderer::Frame::lightPasses(GLint lightIndex, const DrawPlan& item) const {
+    const GLint emissionPass = maps ? shading->uniform("uEmissionPass") : -1;
     for (size_t i = 0; i < packed.size(); ++i) {
+        glUniform1i(emissionPass, i == 0 ? 1 : 0);
         glUniform1i(lightIndex, GLint(i));
         drawItem(item);
     }
     if (environment) {
+        glUniform1i(emissionPass, packed.empty() ? 1 : 0);
         glUniform1i(lightIndex, -1);
         drawItem(item);
     }

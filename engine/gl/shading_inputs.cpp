@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl/shading_programs.h"
 #include "scene/light_packing.h"
 #include "shading/environment_brdf.h"
 
@@ -22,6 +23,8 @@ extern const char* const energy_table_glsl;
 extern const char* const brdf_terms_glsl;
 extern const char* const brdf_model_glsl;
 extern const char* const display_glsl;
+extern const char* const texture_glsl;
+extern const char* const surface_maps_glsl;
 extern const char* const shade_frag;
 }  // namespace shader_sources
 
@@ -37,7 +40,8 @@ std::vector<const char*> shadingFragmentParts() {
     return {shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
             shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::energy_texel_glsl,
             shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
-            shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::shade_frag};
+            shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::texture_glsl,
+            shader_sources::surface_maps_glsl, shader_sources::shade_frag};
 }
 
 LightBuffer::LightBuffer() {
@@ -101,15 +105,22 @@ void setMaterialUniforms(const GlProgram& program, const MaterialParameters& mat
     MaterialUniforms(program).set(material);
 }
 
-DrawUniforms::DrawUniforms(const GlProgram& program)
+DrawUniforms::DrawUniforms(const GlProgram& program, ModelTextures* textures)
     : model_(program.uniform("uModel")), normalMatrix_(program.uniform("uNormalMatrix")),
-      reverseBackNormals_(program.uniform("uReverseBackNormals")), material_(program) {}
+      reverseBackNormals_(program.uniform("uReverseBackNormals")), material_(program), textures_(textures) {
+    if (textures_) {
+        maps_.emplace(program, ShadingPrograms::kFirstMapUnit);
+    }
+}
 
 void DrawUniforms::set(const SceneDraw& draw) const {
     glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(draw.transform));
     glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(draw.normalTransform));
     glUniform1i(reverseBackNormals_, draw.reverseBackNormals ? 1 : 0);
     material_.set(draw.material);
+    if (maps_) {
+        maps_->set(draw, *textures_);
+    }
 }
 
 }  // namespace patina

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -9,6 +10,7 @@
 #include "shading/material_parameters.h"
 #include "shading/shading.h"
 #include "gl/program.h"
+#include "gl/surface_map_uniforms.h"
 
 namespace patina {
 
@@ -52,14 +54,18 @@ void setMaterialUniforms(const GlProgram& program, const MaterialParameters& mat
 // What one draw item sets of mesh.vert and shade.frag (uModel, uNormalMatrix, the material,
 // uReverseBackNormals), looked up once per program: a model may have thousands of items. A
 // program without some of them (the depth pre-pass's) ignores those.
+// With `textures`, a textured program's maps too (surface_map_uniforms.h; `program` in use
+// when made, as it points the samplers at their units).
 class DrawUniforms {
 public:
-    explicit DrawUniforms(const GlProgram& program);
+    explicit DrawUniforms(const GlProgram& program, ModelTextures* textures = nullptr);
     void set(const SceneDraw& draw) const;   // its program in use
 
 private:
     GLint model_, normalMatrix_, reverseBackNormals_;
     MaterialUniforms material_;
+    ModelTextures* textures_;
+    std::optional<SurfaceMapUniforms> maps_;
 };
 // environment.glsl's uniforms for `light` (an environment light) showing `environment`, its
 // cube map on `unit` (program must be in use).

@@ -40,13 +40,16 @@ ShadingPrograms::~ShadingPrograms() {
     }
 }
 
-std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output output,
+std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output output, Surface surface,
                                                   const std::vector<const char*>& vertexParts,
                                                   std::vector<std::string> defines) {
     const std::vector<std::string> modelDefines = brdfModelDefines(model);
     defines.insert(defines.begin(), modelDefines.begin(), modelDefines.end());
     if (output == Output::LinearAndDisplay) {
         defines.push_back("PATINA_DISPLAY_OUTPUT");
+    }
+    if (surface == Surface::Maps) {
+        defines.push_back("PATINA_TEXTURED");
     }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {
@@ -130,8 +133,9 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
     return defines;
 }
 
-const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output, bool environment) {
-    std::unique_ptr<GlProgram>& program = programs_[{model, use, output, environment}];
+const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output, bool environment,
+                                      Surface surface) {
+    std::unique_ptr<GlProgram>& program = programs_[{model, use, output, environment, surface}];
     if (!program) {
         std::vector<std::string> defines;
         if (environment) {
@@ -139,30 +143,31 @@ const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output,
         }
         if (use == Use::Probe) {
             defines.insert(defines.end(), {"PATINA_SINGLE_PASS", "PATINA_PROBE"});
-            program = build(model, output, {shader_sources::probe_vert}, defines);
+            program = build(model, output, surface, {shader_sources::probe_vert}, defines);
         } else {
-            program = build(model, output, meshVertexParts(), defines);
+            program = build(model, output, surface, meshVertexParts(), defines);
         }
     }
     return bind(model, *program, environment);
 }
 
-const GlProgram& ShadingPrograms::useSingle(BrdfModelId model, const SinglePass& pass, Output output) {
-    std::unique_ptr<GlProgram>& program = singles_[{model, pass, output}];
+const GlProgram& ShadingPrograms::useSingle(BrdfModelId model, const SinglePass& pass, Output output,
+                                            Surface surface) {
+    std::unique_ptr<GlProgram>& program = singles_[{model, pass, output, surface}];
     if (!program) {
-        program = build(model, output, meshVertexParts(), pass.defines());
+        program = build(model, output, surface, meshVertexParts(), pass.defines());
     }
     return bind(model, *program, pass.environment);
 }
 
 const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
-                                                 Output output) {
-    Specialised& entry = specialised_[{model, key, output}];
+                                                 Output output, Surface surface) {
+    Specialised& entry = specialised_[{model, key, output, surface}];
     if (!entry.program) {
         try {
-            entry.program = build(model, output, meshVertexParts(), key.defines());
+            entry.program = build(model, output, surface, meshVertexParts(), key.defines());
         } catch (...) {
-            specialised_.erase({model, key, output});
+            specialised_.erase({model, key, output, surface});
             throw;
         }
     }

@@ -37,6 +37,10 @@ public:
     // What the fragment shader writes: the linear radiance, or also its display value
     // (PATINA_DISPLAY_OUTPUT, for a pass with nothing to resolve or sum afterwards).
     enum class Output { Linear, LinearAndDisplay };
+    // What the surface is shaded with: the draw's factors alone, or also a model's texture maps
+    // and emission (PATINA_TEXTURED: mesh.vert hands on UVs and tangents, surface_maps.glsl
+    // reads the maps; docs/FORMATS.md, "glTF").
+    enum class Surface { Factors, Maps };
 
     ShadingPrograms() = default;
     ~ShadingPrograms();
@@ -46,22 +50,25 @@ public:
     // Makes the program current (with its energy table, and with `environment` its environment
     // BRDF table, bound) and returns it. Multi with `environment` shades the environment when
     // uLightIndex < 0.
-    const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear, bool environment = false);
+    const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear, bool environment = false,
+                         Surface surface = Surface::Factors);
     // Texture units of the environment's cube map and BRDF table (unit 0 is the display pass's,
     // 1 the energy table's).
     static constexpr int kEnvironmentMapUnit = 2;
     static constexpr int kEnvironmentBrdfUnit = 3;
     static constexpr int kEnvironmentSourceUnit = 4;   // the stochastic mode's source chain
+    static constexpr int kFirstMapUnit = 5;            // Surface::Maps: the maps' units (SurfaceMap order)
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);
     const EnvironmentShading& environmentShading() const { return environmentShading_; }
-    const GlProgram& useSingle(BrdfModelId model, const SinglePass& pass, Output output = Output::Linear);
+    const GlProgram& useSingle(BrdfModelId model, const SinglePass& pass, Output output = Output::Linear,
+                               Surface surface = Surface::Factors);
     // The single-pass program specialised to `key`, compiled on first use. The least recently
     // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
     // makes a new key each time.
     const GlProgram& useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
-                                    Output output = Output::Linear);
+                                    Output output = Output::Linear, Surface surface = Surface::Factors);
     static constexpr size_t kSpecialisedCapacity = 16;
     size_t specialisedCount() const { return specialised_.size(); }
 
@@ -70,19 +77,19 @@ private:
         std::unique_ptr<GlProgram> program;
         unsigned long long lastUse = 0;
     };
-    std::map<std::tuple<BrdfModelId, Use, Output, bool>, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::tuple<BrdfModelId, Use, Output, bool, Surface>, std::unique_ptr<GlProgram>> programs_;
     // 48 shapes at most (with no point, sphere or tube light, karisPoints is always true), each
     // with and without the environment.
-    std::map<std::tuple<BrdfModelId, SinglePass, Output>, std::unique_ptr<GlProgram>> singles_;
-    std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output>, Specialised> specialised_;
+    std::map<std::tuple<BrdfModelId, SinglePass, Output, Surface>, std::unique_ptr<GlProgram>> singles_;
+    std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output, Surface>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
     EnvironmentShading environmentShading_;
     std::map<BrdfModelId, unsigned> energyTextures_, environmentBrdfTextures_;
 
     unsigned energyTexture(BrdfModelId model);
     unsigned environmentBrdfTexture(BrdfModelId model);
-    std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, const std::vector<const char*>& vertexParts,
-                                     std::vector<std::string> defines);
+    std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, Surface surface,
+                                     const std::vector<const char*>& vertexParts, std::vector<std::string> defines);
     const GlProgram& bind(BrdfModelId model, const GlProgram& program, bool environment);
 };
 

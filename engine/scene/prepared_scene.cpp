@@ -40,9 +40,16 @@ std::optional<SceneDraw> modelDraw(const Model& model, size_t i, BrdfModelId brd
     draw.reverseBackNormals = material.doubleSided;
     draw.blend = material.alphaMode == AlphaMode::Blend;
     draw.alpha = draw.blend ? material.baseAlpha : 1.0f;
+    draw.maps = item.material >= 0 && hasMaps(material) ? &material : nullptr;
+    draw.alphaCutoff = material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     return draw;
 }
 }  // namespace
+
+bool hasMaps(const ModelMaterial& material) {
+    return material.baseColor.present() || material.metallicRoughness.present() || material.normal.present() ||
+           material.occlusion.present() || material.emissive.present() || material.emissiveFactor != glm::vec3(0.0f);
+}
 
 MaterialParameters defaultModelMaterial() {
     MaterialParameters material;

@@ -46,7 +46,18 @@ struct SceneDraw {
     // glTF's BLEND (§3.9.4): "over" what is behind it by `alpha`, after every opaque draw.
     bool blend = false;
     float alpha = 1.0f;
+    // The item's material with its texture maps (model/model.h), when hasMaps: its factors are
+    // `material`'s, each map multiplies in per pixel (glTF 2.0 §3.9.2-3.9.3), emission added.
+    // Null: the factors alone. Points into the prepared scene's model.
+    const ModelMaterial* maps = nullptr;
+    // glTF's MASK (§3.9.4): a pixel whose alpha (the factor times the base colour map's) is
+    // below this is not drawn; negative for OPAQUE and BLEND.
+    float alphaCutoff = -1.0f;
 };
+
+// Whether `material` needs its maps shaded: it has a texture map, or emits (emission is added
+// only where maps are read).
+bool hasMaps(const ModelMaterial& material);
 
 // glTF's default material (§3.9.6) in Patina's parameters: white, metallic 1, roughness 1, and
 // specular 0.5 (F0 0.04, a glTF dielectric's).

@@ -12,6 +12,17 @@ uniform mat3 uNormalMatrix;
 out vec3 vPosition;
 out vec3 vNormal;
 
+#ifdef PATINA_TEXTURED
+// A model's UV sets and tangents for its maps (surface_maps.glsl); attributes a mesh lacks
+// read GL's default (0, 0, 0, 1), a tangent with no direction, which the maps take for none.
+layout(location = 2) in vec2 aUv0;
+layout(location = 3) in vec2 aUv1;
+layout(location = 4) in vec4 aTangent;
+out vec2 vUv0;
+out vec2 vUv1;
+out vec4 vTangent;
+#endif
+
 #ifdef PATINA_FLAT_LIGHT_COUNT
 // A specialised shader's first lights, handed on unchanged as flat inputs: on llvmpipe a vertex
 // shader loads a uniform scalar once per 8 vertices, a fragment shader gathers it lane by lane
@@ -41,6 +52,16 @@ void main() {
     vec4 world = uModel * vec4(aPosition, 1.0f);
     vPosition = world.xyz;
     vNormal = uNormalMatrix * aNormal;
+#ifdef PATINA_TEXTURED
+    vUv0 = aUv0;
+    vUv1 = aUv1;
+    // A tangent lies in the surface, so it moves as positions do. Under a mirror the normal
+    // (through the inverse transpose) and this tangent make a frame of the other handedness:
+    // w turns so that cross(N, T) w stays the bitangent the map was baked with (glTF 2.0
+    // section 3.7.2.1 defines it in the mesh's own space).
+    mat3 linear = mat3(uModel);
+    vTangent = vec4(linear * aTangent.xyz, determinant(linear) < 0.0f ? -aTangent.w : aTangent.w);
+#endif
 #ifdef PATINA_FLAT_LIGHT_COUNT
     PATINA_FLAT_LIGHTS
 #endif

@@ -13,6 +13,9 @@
 // builds the list and says why).
 // PATINA_ENVIRONMENT: the scene's environment (environment.glsl) by the split sum, after the
 // lights in single and specialised, in a pass of its own (uLightIndex < 0) in multi.
+// PATINA_TEXTURED: a model's maps (surface_maps.glsl) multiply into the factors, bend the
+// normal, occlude the environment and hemisphere lights, add emission (once: in multi, in the
+// pass uEmissionPass marks) and cut out MASK's pixels.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -65,6 +68,17 @@ PackedLight flatLight(int i) {
 uniform int uLightIndex;
 #endif
 
+// Light that skips the surface's crevices: the environment's and the hemisphere lights'
+// (glTF 2.0 section 3.9.3: occlusion applies to indirect lighting).
+#ifdef PATINA_TEXTURED
+#define OCCLUDED(radiance) (occlusion * (radiance))
+#if !defined(PATINA_SINGLE_PASS) && !defined(PATINA_SPECIALISED)
+uniform bool uEmissionPass;
+#endif
+#else
+#define OCCLUDED(radiance) (radiance)
+#endif
+
 #ifdef PATINA_ENVIRONMENT
 // PATINA_ENVIRONMENT_DOMINANT: the split sum along the dominant direction;
 // PATINA_ENVIRONMENT_STOCHASTIC N: N filtered importance samples a pixel instead
@@ -104,7 +118,16 @@ layout(location = 1) out vec4 displayColor;
 #endif
 
 void main() {
+#ifdef PATINA_TEXTURED
+    discardMasked();
+    TexturedMaterial mapped = texturedMaterial(vec4(uBaseColor, uBaseAlpha), MAP_TEXEL(0, uBaseColorMap, vec4(1.0f)),
+                                               uRoughness, uMetallic,
+                                               MAP_TEXEL(1, uMetallicRoughnessMap, vec4(1.0f)));
+    SurfaceMaterial material = deriveSurfaceMaterial(mapped.baseColor, mapped.roughness, uSpecular, mapped.metallic);
+    float occlusion = surfaceOcclusion();
+#else
     SurfaceMaterial material = deriveSurfaceMaterial(uBaseColor, uRoughness, uSpecular, uMetallic);
+#endif
     vec3 N = safeNormalize(vNormal);
 #ifdef PATINA_PROBE
     vec3 V = safeNormalize(vView);
@@ -114,11 +137,14 @@ void main() {
     }
     vec3 V = safeNormalize(uCameraPosition - vPosition);
 #endif
+#ifdef PATINA_TEXTURED
+    N = mappedNormal(N);
+#endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
 #define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V);
 #define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V);
-#define SHADE_HEMISPHERE(light) radiance += shadeHemisphereLight(light, material, N, V);
+#define SHADE_HEMISPHERE(light) radiance += OCCLUDED(shadeHemisphereLight(light, material, N, V));
 #define SHADE_SPHERE(light, windowed, karis) radiance += shadeSphereLight(light, windowed, karis, material, vPosition, N, V);
 #define SHADE_TUBE(light, windowed, karis) radiance += shadeTubeLight(light, windowed, karis, material, vPosition, N, V);
     PATINA_LIGHTS
@@ -159,7 +185,7 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += shadeHemisphereLight(uLights[i], material, N, V);
+            radiance += OCCLUDED(shadeHemisphereLight(uLights[i], material, N, V));
         } while (++i < end);
     }
 #endif
@@ -186,13 +212,29 @@ void main() {
 #endif
 #if defined(PATINA_SPECIALISED) || defined(PATINA_SINGLE_PASS)
 #ifdef PATINA_ENVIRONMENT
-    radiance += environmentRadiance(material, N, V);
+    radiance += OCCLUDED(environmentRadiance(material, N, V));
 #endif
-#elif defined(PATINA_ENVIRONMENT)
-    radiance = uLightIndex < 0 ? environmentRadiance(material, N, V)
-                               : shadeLight(uLights[max(uLightIndex, 0)], material, vPosition, N, V);
+#ifdef PATINA_TEXTURED
+    radiance += surfaceEmission();
+#endif
 #else
-    radiance = shadeLight(uLights[uLightIndex], material, vPosition, N, V);
+#if defined(PATINA_ENVIRONMENT)
+    if (uLightIndex < 0) {
+        radiance = OCCLUDED(environmentRadiance(material, N, V));
+    } else
+#endif
+    {
+        PackedLight light = uLights[max(uLightIndex, 0)];
+        radiance = shadeLight(light, material, vPosition, N, V);
+        if (light.type == LIGHT_HEMISPHERE) {
+            radiance = OCCLUDED(radiance);
+        }
+    }
+#ifdef PATINA_TEXTURED
+    if (uEmissionPass) {
+        radiance += surfaceEmission();
+    }
+#endif
 #endif
 #ifdef PATINA_STAMPED
     fragColor = vec4(radiance, uSampleStamp);

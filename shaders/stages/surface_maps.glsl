@@ -1,0 +1,73 @@
+// A model's texture maps, with PATINA_TEXTURED (GLSL only): which UV set and transform each map
+// reads, and what it does to the surface (glTF 2.0 sections 3.9.2-3.9.3, KHR_texture_transform),
+// through texture.glsl's shared functions. The texture units filter; the sRGB maps decode before
+// they filter (GL_SRGB8_ALPHA8, engine/gl/model_textures.h). Read by shade.frag, and by
+// black.frag for MASK's cut-outs in the multi-pass depth pre-pass.
+#ifdef PATINA_TEXTURED
+in vec2 vUv0;
+in vec2 vUv1;
+in vec4 vTangent;   // world space; w = 0: the vertex has none
+
+// The maps in SurfaceMap order (engine/gl/surface_map_uniforms.h): 0 base colour,
+// 1 metallic-roughness, 2 normal, 3 occlusion, 4 emissive. A sampler array could be indexed
+// only by constants in GLSL 3.30, so each has its own name.
+uniform sampler2D uBaseColorMap;
+uniform sampler2D uMetallicRoughnessMap;
+uniform sampler2D uNormalMap;
+uniform sampler2D uOcclusionMap;
+uniform sampler2D uEmissiveMap;
+uniform vec4 uMapPlacement[5];   // KHR_texture_transform: offset (xy), scale (zw)
+uniform vec2 uMapRotationSet[5];   // its rotation; the UV set read, -1 where there is no map
+uniform float uBaseAlpha;          // baseColorFactor's alpha
+uniform float uAlphaCutoff;        // MASK's; negative for OPAQUE and BLEND
+uniform float uNormalScale;
+uniform float uOcclusionStrength;
+uniform vec3 uEmissive;            // emissiveFactor times KHR_materials_emissive_strength
+
+bool hasMap(int map) {
+    return uMapRotationSet[map].y >= 0.0f;
+}
+
+vec2 mapCoordinate(int map) {
+    vec2 uv = uMapRotationSet[map].y > 0.5f ? vUv1 : vUv0;
+    return transformTextureCoordinate(uv, uMapPlacement[map].xy, uMapPlacement[map].zw, uMapRotationSet[map].x);
+}
+
+// A map's texel, or `absent` (what multiplies as nothing) where the material has no such map.
+// Whether it has one is uniform, so the lookup's derivatives are defined.
+#define MAP_TEXEL(map, sampler, absent) (hasMap(map) ? texture(sampler, mapCoordinate(map)) : (absent))
+
+// glTF 2.0 section 3.9.4: MASK draws a pixel only where the factor's alpha times the base
+// colour map's reaches the cutoff (alpha 1 and a cutoff of 0.5 where neither says otherwise).
+void discardMasked() {
+    if (uAlphaCutoff >= 0.0f && uBaseAlpha * MAP_TEXEL(0, uBaseColorMap, vec4(1.0f)).w < uAlphaCutoff) {
+        discard;
+    }
+}
+
+// The normal map's normal about N (unit, facing the viewer as shaded). The tangent is made
+// orthogonal to N first: interpolation leaves it a little off. A vertex without a tangent (a
+// primitive without UVs for the map) keeps N: the map has no frame to be read in.
+vec3 mappedNormal(vec3 N) {
+    if (!hasMap(2)) {
+        return N;
+    }
+    vec3 T = vTangent.xyz - N * dot(N, vTangent.xyz);
+    if (vTangent.w == 0.0f || !(dot(T, T) > 1e-12f)) {
+        return N;
+    }
+    vec4 tangent = vec4(normalize(T), vTangent.w < 0.0f ? -1.0f : 1.0f);
+    return perturbedNormal(N, tangent, tangentSpaceNormal(MAP_TEXEL(2, uNormalMap, vec4(0.5f, 0.5f, 1.0f, 1.0f)).xyz,
+                                                          uNormalScale));
+}
+
+// What reaches the environment's and hemisphere lights' light (1 without an occlusion map).
+float surfaceOcclusion() {
+    return hasMap(3) ? occlusionFactor(texture(uOcclusionMap, mapCoordinate(3)).x, uOcclusionStrength) : 1.0f;
+}
+
+// Linear radiance the surface emits.
+vec3 surfaceEmission() {
+    return uEmissive * MAP_TEXEL(4, uEmissiveMap, vec4(1.0f)).xyz;
+}
+#endif

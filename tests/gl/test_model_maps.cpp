@@ -1,0 +1,255 @@
+// A model's texture maps on the GPU (shaders/stages/surface_maps.glsl): each map does what glTF
+// 2.0 sections 3.9.2-3.9.4 say, on every render path and with and without MSAA. Each case is
+// checked against an image the maps must reproduce: the same surface drawn with factors alone
+// (a base colour, a normal, a roughness) that the texel stands for.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gl/renderer.h"
+#include "scene/view.h"
+#include "shading/shading.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+constexpr int kWidth = 96, kHeight = 96;
+constexpr RenderPath kPaths[] = {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised};
+
+// The default scene's analytic lights and the quad head on.
+Scene quadScene() {
+    Scene scene = defaultScene();
+    std::erase_if(scene.lights, [](const Light& light) { return light.type == LightType::Environment; });
+    scene.camera.position = {0.0f, 0.0f, 3.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    return scene;
+}
+
+// A square from (-1, -1) to (1, 1) facing +z, UV (0, 0) at its top-left corner (glTF's v runs
+// down the image), tangent +x; `normal` at every corner.
+Mesh quad(glm::vec3 normal = {0.0f, 0.0f, 1.0f}, float tangentSign = 1.0f) {
+    Mesh mesh;
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    mesh.normals.assign(4, glm::normalize(normal));
+    mesh.uv0 = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    mesh.tangents.assign(4, glm::vec4(1, 0, 0, tangentSign));
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+}
+
+ModelMaterial factors(glm::vec3 baseColor) {
+    ModelMaterial material;
+    material.factors.baseColor = baseColor;
+    material.factors.metallic = 0.0f;
+    material.factors.roughness = 0.5f;
+    return material;
+}
+
+ModelImage image(int width, int height, std::vector<uint8_t> rgba) {
+    return {"map", width, height, std::move(rgba)};
+}
+
+// A slot on image 0, magnified texel by texel.
+TextureSlot nearestSlot() {
+    TextureSlot slot;
+    slot.image = 0;
+    slot.sampler.nearestMagnification = true;
+    slot.sampler.wrapS = slot.sampler.wrapT = TextureWrap::ClampToEdge;
+    return slot;
+}
+
+std::shared_ptr<const Model> oneQuad(const Mesh& mesh, const ModelMaterial& material, std::vector<ModelImage> images = {}) {
+    Model model;
+    model.primitives = {mesh};
+    model.materials = {material};
+    model.images = std::move(images);
+    model.draws = {{0, 0, glm::mat4(1.0f), "quad"}};
+    return std::make_shared<const Model>(std::move(model));
+}
+
+glm::vec3 pixel(const HdrImage& image, int x, int y) {
+    const size_t i = (size_t(y) * size_t(image.width) + size_t(x)) * 3;
+    return {image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
+}
+
+// Where `point` lands in the image (rows top first).
+glm::ivec2 pixelOf(const Scene& scene, glm::vec3 point) {
+    const glm::vec4 clip = viewProjection(scene.camera, float(kWidth) / float(kHeight)) * glm::vec4(point, 1.0f);
+    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(kWidth)), int((0.5f - clip.y / clip.w * 0.5f) * float(kHeight))};
+}
+
+float largestRelativeError(glm::vec3 actual, glm::vec3 expected) {
+    float largest = 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        largest = std::max(largest, std::abs(actual[c] - expected[c]) / std::max(std::abs(expected[c]), 0.02f));
+    }
+    return largest;
+}
+
+class ModelMaps : public ::testing::Test {
+protected:
+    HdrImage render(const Scene& scene, const std::shared_ptr<const Model>& model, RenderPath path, int samples) {
+        const PreparedScene prepared{scene, std::make_shared<const Mesh>(model->primitives[0]), nullptr, model};
+        return renderer_.render(prepared, test::renderSettings(kWidth, kHeight, path, samples)).hdr;
+    }
+
+    // At each of `points` (on the quad), `mapped` and `expected` agree on every path.
+    void expectSame(const Scene& scene, const std::shared_ptr<const Model>& mapped,
+                    const std::shared_ptr<const Model>& expected, const std::vector<glm::vec3>& points,
+                    float tolerance, const std::string& what) {
+        for (RenderPath path : kPaths) {
+            for (int samples : {1, 4}) {
+                const HdrImage a = render(scene, mapped, path, samples), b = render(scene, expected, path, samples);
+                for (const glm::vec3& point : points) {
+                    const glm::ivec2 at = pixelOf(scene, point);
+                    EXPECT_LE(largestRelativeError(pixel(a, at.x, at.y), pixel(b, at.x, at.y)), tolerance)
+                        << what << ", " << renderPathName(path) << ", " << samples << " samples, at " << at.x << " "
+                        << at.y;
+                }
+            }
+        }
+    }
+
+    HeadlessContext& context_ = test::glContext();   // before the renderer: it needs the context
+    Renderer renderer_;
+};
+
+const std::vector<glm::vec3> kQuadrants{{-0.5f, 0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}};
+
+// glTF 2.0 3.9.2: base colour = factor x the map's texel, sRGB-decoded; the image's first row
+// at the top of the quad (v = 0), its first column on the left. Each quadrant shows its texel
+// as that colour given as a factor does.
+TEST_F(ModelMaps, TheBaseColourMapMultipliesTheFactorTexelByTexel) {
+    const Scene scene = quadScene();
+    const std::vector<uint8_t> rgba{200, 40, 40, 255, 40, 200, 40, 255, 40, 40, 200, 255, 230, 230, 230, 255};
+    ModelMaterial mapped = factors(glm::vec3(0.5f, 1.0f, 1.0f));
+    mapped.baseColor = nearestSlot();
+    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
+    for (size_t q = 0; q < 4; ++q) {
+        const glm::vec3 texel{shader::srgbDecode(rgba[q * 4] / 255.0f), shader::srgbDecode(rgba[q * 4 + 1] / 255.0f),
+                              shader::srgbDecode(rgba[q * 4 + 2] / 255.0f)};
+        const auto expected = oneQuad(quad(), factors(glm::vec3(0.5f, 1.0f, 1.0f) * texel));
+        // GL's sRGB decode (llvmpipe's table) is within 0.6% of the exact one on these texels.
+        expectSame(scene, model, expected, {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
+    }
+}
+
+// 3.9.2: roughness = factor x G, metallic = factor x B of the metallic-roughness map; a metallic
+// factor of 1 the map lowers still has diffuse light (the specialised shader keeps it).
+TEST_F(ModelMaps, TheMetallicRoughnessMapScalesRoughnessByGreenAndMetallicByBlue) {
+    const Scene scene = quadScene();
+    ModelMaterial mapped = factors(glm::vec3(0.9f, 0.6f, 0.3f));
+    mapped.factors.roughness = 0.8f;
+    mapped.factors.metallic = 1.0f;
+    mapped.metallicRoughness = nearestSlot();
+    const auto model = oneQuad(quad(), mapped, {image(1, 1, {255, 128, 64, 255})});
+    ModelMaterial plain = mapped;
+    plain.metallicRoughness = {};
+    plain.factors.roughness = 0.8f * 128.0f / 255.0f;
+    plain.factors.metallic = 64.0f / 255.0f;
+    expectSame(scene, model, oneQuad(quad(), plain), kQuadrants, 1e-3f, "metallic-roughness");
+}
+
+// 3.9.3: the map's normal in the frame (T, cross(N, T) w, N): the quad shades as a quad whose
+// vertex normal is that normal. w = -1 (mirrored UVs) turns the bitangent round.
+TEST_F(ModelMaps, TheNormalMapBendsTheNormalInTheTangentFrame) {
+    const Scene scene = quadScene();
+    const std::vector<uint8_t> texel{200, 90, 220, 255};
+    const glm::vec3 tangentNormal = glm::normalize(glm::vec3(texel[0], texel[1], texel[2]) * (2.0f / 255.0f) - 1.0f);
+    for (float w : {1.0f, -1.0f}) {
+        ModelMaterial mapped = factors(glm::vec3(0.7f));
+        mapped.normal = nearestSlot();
+        const auto model = oneQuad(quad({0, 0, 1}, w), mapped, {image(1, 1, texel)});
+        // T = +x, N = +z, bitangent = cross(N, T) w = +y w.
+        const glm::vec3 bent{tangentNormal.x, tangentNormal.y * w, tangentNormal.z};
+        expectSame(scene, model, oneQuad(quad(bent), factors(glm::vec3(0.7f))), kQuadrants, 2e-3f,
+                   "w = " + std::to_string(int(w)));
+    }
+}
+
+// 3.9.3: occlusion darkens the hemisphere light (indirect light) by 1 + strength (R - 1), and
+// leaves a directional light alone.
+TEST_F(ModelMaps, OcclusionDarkensTheHemisphereLightOnly) {
+    Scene scene = quadScene();
+    ModelMaterial mapped = factors(glm::vec3(0.6f));
+    mapped.occlusion = nearestSlot();
+    mapped.occlusionStrength = 0.5f;
+    const auto model = oneQuad(quad(), mapped, {image(1, 1, {64, 0, 0, 255})});
+    const auto plain = oneQuad(quad(), factors(glm::vec3(0.6f)));
+    const float occlusion = 1.0f + 0.5f * (64.0f / 255.0f - 1.0f);
+    for (LightType kept : {LightType::Hemisphere, LightType::Directional}) {
+        Scene lit = scene;
+        std::erase_if(lit.lights, [&](const Light& light) { return light.type != kept; });
+        ASSERT_EQ(lit.lights.size(), 1u) << lightTypeName(kept);
+        const float expected = kept == LightType::Hemisphere ? occlusion : 1.0f;
+        for (RenderPath path : kPaths) {
+            const HdrImage a = render(lit, model, path, 1), b = render(lit, plain, path, 1);
+            const glm::ivec2 at = pixelOf(lit, {0.2f, 0.1f, 0.0f});
+            EXPECT_LE(largestRelativeError(pixel(a, at.x, at.y), pixel(b, at.x, at.y) * expected), 1e-3f)
+                << lightTypeName(kept) << ", " << renderPathName(path);
+        }
+    }
+}
+
+// 3.9.3: emission = emissiveFactor x the map's texel, added once (the multi-pass path adds one
+// pass per light: emission must come in one of them).
+TEST_F(ModelMaps, EmissionIsAddedOnceOnEveryPath) {
+    const Scene scene = quadScene();
+    ASSERT_GE(scene.lights.size(), 2u);
+    ModelMaterial mapped = factors(glm::vec3(0.5f));
+    mapped.emissive = nearestSlot();
+    mapped.emissiveFactor = {2.0f, 1.0f, 0.5f};
+    const auto model = oneQuad(quad(), mapped, {image(1, 1, {255, 128, 255, 255})});
+    const auto plain = oneQuad(quad(), factors(glm::vec3(0.5f)));
+    const glm::vec3 emitted = mapped.emissiveFactor * glm::vec3(1.0f, shader::srgbDecode(128.0f / 255.0f), 1.0f);
+    for (RenderPath path : kPaths) {
+        for (int samples : {1, 4}) {
+            const HdrImage a = render(scene, model, path, samples), b = render(scene, plain, path, samples);
+            const glm::ivec2 at = pixelOf(scene, {0.3f, -0.2f, 0.0f});
+            EXPECT_LE(largestRelativeError(pixel(a, at.x, at.y) - pixel(b, at.x, at.y), emitted), 1e-2f)   // sRGB
+                << renderPathName(path) << ", " << samples << " samples";
+        }
+    }
+}
+
+// 3.9.4: MASK draws a pixel only where alpha (factor x the base colour map's) reaches the
+// cutoff; the pixels cut out show what is behind, on every path (the multi-pass depth
+// pre-pass must cut them out too, or the light passes would add nothing there and leave black).
+TEST_F(ModelMaps, MaskCutsOutThePixelsBelowTheCutoff) {
+    Scene scene = quadScene();
+    scene.display.background = {0.25f, 0.5f, 0.75f};
+    ModelMaterial mapped = factors(glm::vec3(0.8f));
+    mapped.baseColor = nearestSlot();
+    mapped.alphaMode = AlphaMode::Mask;
+    mapped.alphaCutoff = 0.5f;
+    // Left column opaque, right column alpha 0.4 (cut out); the factor's alpha 0.9 keeps the left.
+    mapped.baseAlpha = 0.9f;
+    const auto model = oneQuad(quad(), mapped, {image(2, 1, {255, 255, 255, 255, 255, 255, 255, 102})});
+    for (RenderPath path : kPaths) {
+        for (int samples : {1, 4}) {
+            const HdrImage shown = render(scene, model, path, samples);
+            const glm::ivec2 kept = pixelOf(scene, {-0.5f, 0.2f, 0.0f}), cut = pixelOf(scene, {0.5f, 0.2f, 0.0f});
+            const std::string what = std::string(renderPathName(path)) + ", " + std::to_string(samples) + " samples";
+            EXPECT_LE(largestRelativeError(pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f) << what;
+            EXPECT_GT(largestRelativeError(pixel(shown, kept.x, kept.y), scene.display.background), 0.1f) << what;
+        }
+    }
+}
+
+// KHR_texture_transform: an offset of half the image in u moves the right column to the left.
+TEST_F(ModelMaps, TheTextureTransformMovesTheMap) {
+    const Scene scene = quadScene();
+    ModelMaterial mapped = factors(glm::vec3(1.0f));
+    mapped.baseColor = nearestSlot();
+    mapped.baseColor.sampler.wrapS = TextureWrap::Repeat;
+    mapped.baseColor.transform.offset = {0.5f, 0.0f};
+    const auto model = oneQuad(quad(), mapped, {image(2, 1, {255, 0, 0, 255, 0, 0, 255, 255})});
+    expectSame(scene, model, oneQuad(quad(), factors({0.0f, 0.0f, 1.0f})), {{-0.5f, 0.2f, 0.0f}}, 1e-3f, "left");
+    expectSame(scene, model, oneQuad(quad(), factors({1.0f, 0.0f, 0.0f})), {{0.5f, 0.2f, 0.0f}}, 1e-3f, "right");
+}
+
+}  // namespace
+}  // namespace patina
