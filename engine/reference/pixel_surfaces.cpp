@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -10,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "model/placement.h"
+#include "reference/surface_maps.h"
 #include "scene/view.h"
 #include "shading/shading.h"
 
@@ -19,11 +21,17 @@ namespace {
 struct ClipVertex {
     glm::vec4 clip;
     glm::vec3 position, normal;
+    MapCoordinates maps;   // what mesh.vert hands on for a textured item
 };
 
+template <typename T>
+T along(const T& a, const T& b, float t) {
+    return a + (b - a) * t;
+}
+
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t) {
-    return {a.clip + (b.clip - a.clip) * t, a.position + (b.position - a.position) * t,
-            a.normal + (b.normal - a.normal) * t};
+    return {along(a.clip, b.clip, t), along(a.position, b.position, t), along(a.normal, b.normal, t),
+            {along(a.maps.uv0, b.maps.uv0, t), along(a.maps.uv1, b.maps.uv1, t), along(a.maps.tangent, b.maps.tangent, t)}};
 }
 
 // The polygon's part in front of the near plane (z >= -w in GL clip space): Sutherland-Hodgman
@@ -48,6 +56,7 @@ std::vector<ClipVertex> clipToNearPlane(const std::vector<ClipVertex>& polygon) 
 namespace {
 struct Hit {
     glm::vec3 position, normal;
+    MapCoordinates maps;
     int32_t draw = -1;
 };
 
@@ -56,12 +65,14 @@ struct Raster {
     int width = 0, height = 0;
     std::vector<float> depth;
     std::vector<Hit> hits;
+    const MapTextures* textures = nullptr;   // the model's maps, where an item has any
 };
 
 // One triangle (window coordinates, x right, y down) of draw item `draw` into `raster`: each
-// pixel centre inside it whose depth is nearer than what is there. `area` is its signed area.
+// pixel centre inside it whose depth is nearer than what is there and that MASK keeps. `area`
+// is its signed area.
 void fillTriangle(Raster& raster, const ClipVertex* const corner[3], const glm::vec2 screen[3], const float z[3],
-                  const float inverseW[3], float area, int32_t draw, bool reverseNormal) {
+                  const float inverseW[3], float area, const SceneDraw& item, int32_t draw, bool reverseNormal) {
     const float minX = std::min({screen[0].x, screen[1].x, screen[2].x});
     const float maxX = std::max({screen[0].x, screen[1].x, screen[2].x});
     const float minY = std::min({screen[0].y, screen[1].y, screen[2].y});
@@ -85,15 +96,21 @@ void fillTriangle(Raster& raster, const ClipVertex* const corner[3], const glm::
             if (!(d < raster.depth[pixel]) || d > 1.0f) {
                 continue;
             }
-            raster.depth[pixel] = d;
             // Perspective-correct: attributes over w, interpolated, divided by 1/w.
             const float w = b[0] * inverseW[0] + b[1] * inverseW[1] + b[2] * inverseW[2];
-            Hit hit{glm::vec3(0.0f), glm::vec3(0.0f), draw};
+            Hit hit{glm::vec3(0.0f), glm::vec3(0.0f), {}, draw};
             for (int c = 0; c < 3; ++c) {
                 const float weight = b[c] * inverseW[c] / w;
                 hit.position += weight * corner[c]->position;
                 hit.normal += weight * corner[c]->normal;
+                hit.maps.uv0 += weight * corner[c]->maps.uv0;
+                hit.maps.uv1 += weight * corner[c]->maps.uv1;
+                hit.maps.tangent += weight * corner[c]->maps.tangent;
             }
+            if (raster.textures && !keptByMask(item, *raster.textures, hit.maps)) {
+                continue;   // cut out: no depth written, what is behind shows
+            }
+            raster.depth[pixel] = d;
             if (reverseNormal) {
                 hit.normal = -hit.normal;
             }
@@ -108,12 +125,20 @@ void fillTriangle(Raster& raster, const ClipVertex* const corner[3], const glm::
 void rasterizeDraw(Raster& raster, const SceneDraw& item, int32_t draw, const glm::mat4& viewProjection) {
     const Mesh& mesh = *item.mesh;
     const bool mirrored = mirrors(item.transform);
+    const glm::mat3 linear(item.transform);
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         std::vector<ClipVertex> polygon;
         for (size_t k = 0; k < 3; ++k) {
             const uint32_t i = mesh.indices[t + k];
             const glm::vec4 world = item.transform * glm::vec4(mesh.positions[i], 1.0f);
-            polygon.push_back({viewProjection * world, glm::vec3(world), item.normalTransform * mesh.normals[i]});
+            ClipVertex vertex{viewProjection * world, glm::vec3(world), item.normalTransform * mesh.normals[i], {}};
+            if (item.maps) {   // as mesh.vert hands them on: the tangent moves with the surface
+                vertex.maps.uv0 = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[i];
+                vertex.maps.uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[i];
+                const glm::vec4 tangent = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[i];
+                vertex.maps.tangent = glm::vec4(linear * glm::vec3(tangent), mirrored ? -tangent.w : tangent.w);
+            }
+            polygon.push_back(vertex);
         }
         polygon = clipToNearPlane(polygon);
         // Fan triangles of the clipped polygon, in window coordinates (x right, y down).
@@ -138,16 +163,46 @@ void rasterizeDraw(Raster& raster, const SceneDraw& item, int32_t draw, const gl
             if (!front && !item.doubleSided) {
                 continue;   // glTF 2.0 §3.9.5: back faces culled
             }
-            fillTriangle(raster, corner, screen, z, inverseW, area, draw, !front && item.reverseBackNormals);
+            fillTriangle(raster, corner, screen, z, inverseW, area, item, draw, !front && item.reverseBackNormals);
         }
     }
 }
 }  // namespace
 
-PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camera& camera, int width, int height) {
+namespace {
+// What the maps make of each sample (shade.frag's order: the normal unit and reversed on a back
+// face first, then mapped); the sample's normal becomes the mapped one.
+void mapSamples(PixelSurfaces& surfaces, const std::vector<SceneDraw>& draws, const MapTextures& textures,
+                const Raster& raster) {
+    const size_t count = surfaces.samples.size();
+    surfaces.sampleMaterials.resize(count);
+    surfaces.occlusion.assign(count, 1.0f);
+    surfaces.emission.assign(count, glm::vec3(0.0f));
+    for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
+        const int32_t i = surfaces.sampleOfPixel[pixel];
+        if (i < 0) {
+            continue;
+        }
+        const Hit& hit = raster.hits[pixel];
+        ProbeSample& sample = surfaces.samples[size_t(i)];
+        const MappedSurface mapped =
+            mappedSurface(draws[size_t(hit.draw)], textures, hit.maps, shader::safeNormalize(sample.normal));
+        surfaces.sampleMaterials[size_t(i)] = mapped.material;
+        surfaces.occlusion[size_t(i)] = mapped.occlusion;
+        surfaces.emission[size_t(i)] = mapped.emission;
+        sample.normal = mapped.normal;
+    }
+}
+}  // namespace
+
+PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camera& camera, int width, int height,
+                                const Model* model) {
     const size_t pixels = size_t(width) * size_t(height);
+    const bool anyMaps =
+        model && std::any_of(draws.begin(), draws.end(), [](const SceneDraw& draw) { return draw.maps != nullptr; });
+    const std::optional<MapTextures> textures = anyMaps ? std::optional<MapTextures>(std::in_place, *model) : std::nullopt;
     Raster raster{width, height, std::vector<float>(pixels, std::numeric_limits<float>::infinity()),
-                  std::vector<Hit>(pixels)};
+                  std::vector<Hit>(pixels), textures ? &*textures : nullptr};
     const glm::mat4 viewProjection = patina::viewProjection(camera, float(width) / float(height));
     for (size_t d = 0; d < draws.size(); ++d) {
         rasterizeDraw(raster, draws[d], int32_t(d), viewProjection);
@@ -167,11 +222,14 @@ PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camer
             surfaces.drawOfSample.push_back(hit.draw);
         }
     }
+    if (textures) {
+        mapSamples(surfaces, draws, *textures, raster);
+    }
     return surfaces;
 }
 
 PixelSurfaces rasterizeSurfaces(const PreparedScene& prepared, int width, int height) {
-    return rasterizeSurfaces(sceneDraws(prepared), prepared.scene.camera, width, height);
+    return rasterizeSurfaces(sceneDraws(prepared), prepared.scene.camera, width, height, prepared.model.get());
 }
 
 glm::vec3 pixelRayDirection(const Camera& camera, int width, int height, int x, int y) {

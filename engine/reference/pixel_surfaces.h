@@ -24,13 +24,22 @@ struct PixelSurfaces {
     std::vector<ProbeSample> samples;
     std::vector<int32_t> drawOfSample;    // index into the draw list (and materials)
     std::vector<MaterialParameters> materials;   // each draw item's, in the list's order
+    // With a textured item (SceneDraw::maps), per sample what the maps make of it
+    // (reference/surface_maps.h): its material (the item's factors where it has no maps), the
+    // occlusion of its environment and hemisphere light, its emission; the sample's normal is
+    // then the normal map's. Empty without one.
+    std::vector<MaterialParameters> sampleMaterials;
+    std::vector<float> occlusion;
+    std::vector<glm::vec3> emission;
 };
 
 // `draws` seen by `camera` at width x height, with the renderer's rules: triangles clipped at
 // the near plane, back faces of a single-sided item culled (a mirrored item's front faces
 // wind clockwise), the nearest fragment kept and the first drawn on a tie. A blended item
-// counts as opaque here: the ground truth has no transparency yet.
-PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camera& camera, int width, int height);
+// counts as opaque here: the ground truth has no transparency yet. `model`: the one whose
+// materials the draws' maps point into (their images), for MASK and the mapped samples.
+PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camera& camera, int width, int height,
+                                const Model* model = nullptr);
 // What `prepared` draws (sceneDraws), seen by its camera.
 PixelSurfaces rasterizeSurfaces(const PreparedScene& prepared, int width, int height);
 

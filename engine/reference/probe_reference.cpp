@@ -21,7 +21,7 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
                                          const std::vector<int32_t>& materialOfSample,
                                          const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
-                                         uint64_t pass) {
+                                         uint64_t pass, const std::vector<float>& occlusion) {
     std::vector<shader::SurfaceMaterial> surfaces;
     for (const MaterialParameters& material : materials) {
         surfaces.push_back(surfaceMaterial(material));
@@ -41,6 +41,7 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         ReferenceOptions options;
         options.samples = samplesPerRow;
         options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
+        options.indirectOcclusion = occlusion.empty() ? 1.0f : occlusion[i];
         const size_t m = size_t(materialOfSample[i]);
         const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,

@@ -22,11 +22,12 @@ std::vector<ReferenceRow> probeReference(const MaterialParameters& material, con
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
                                          uint64_t pass = 0);
 // The same with each row's own material: samples[i] shaded with materials[materialOfSample[i]]
-// (the same seeds as above, so one material gives the same rows).
+// (the same seeds as above, so one material gives the same rows), and where `occlusion` is not
+// empty, its environment and hemisphere light scaled by occlusion[i] (ReferenceOptions).
 std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& materials,
                                          const std::vector<int32_t>& materialOfSample,
                                          const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
-                                         uint64_t pass = 0);
+                                         uint64_t pass = 0, const std::vector<float>& occlusion = {});
 
 }  // namespace patina

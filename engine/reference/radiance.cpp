@@ -44,10 +44,18 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     V = shader::safeNormalize(V);
     // Sphere and tube lights by their own Monte Carlo (area_lights.h), the others exactly.
     ReferenceEstimate estimate = areaLightReference(model, material, lights, P, N, V, options);
-    std::vector<shader::PackedLight> exact;
-    std::copy_if(lights.begin(), lights.end(), std::back_inserter(exact),
-                 [](const shader::PackedLight& light) { return !isAreaLight(light); });
+    // Hemisphere lights apart only where something occludes them: one sum is the same bits.
+    const bool occluded = options.indirectOcclusion != 1.0f;
+    std::vector<shader::PackedLight> exact, hemispheres;
+    for (const shader::PackedLight& light : lights) {
+        if (!isAreaLight(light)) {
+            (occluded && light.type == shader::LIGHT_HEMISPHERE ? hemispheres : exact).push_back(light);
+        }
+    }
     estimate.value += shadePoint(model, material, exact, P, N, V);
+    if (!hemispheres.empty()) {
+        estimate.value += options.indirectOcclusion * shadePoint(model, material, hemispheres, P, N, V);
+    }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
     }
@@ -99,8 +107,10 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     }
     const double n = double(options.samples);
     const glm::dvec3 mean = sum / n;
-    const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) / std::max(n - 1.0, 1.0);
-    estimate.value += glm::vec3(mean);
+    const double occlusion = options.indirectOcclusion;
+    const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) / std::max(n - 1.0, 1.0) *
+                                (occlusion * occlusion);
+    estimate.value += glm::vec3(mean * occlusion);
     // Independent estimates: their variances add.
     estimate.standardError = glm::vec3(glm::sqrt(variance + glm::dvec3(estimate.standardError * estimate.standardError)));
     return estimate;

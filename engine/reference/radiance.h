@@ -25,6 +25,9 @@ struct ReferenceOptions {
     uint64_t seed = 1;
     bool diffuse = true;    // the lobes estimated (both: the full f)
     bool specular = true;
+    // What reaches the point of the environment's and the hemisphere lights' light (an
+    // occlusion map's factor, glTF 2.0 3.9.3; shade.frag's OCCLUDED).
+    float indirectOcclusion = 1.0f;
 };
 
 struct ReferenceEstimate {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "environment/environment.h"
 #include "reference/probe_reference.h"
@@ -49,11 +50,24 @@ ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurface
     // standard errors: independent passes, so the variance of the overall mean adds as
     // sum n_p^2 se_p^2 / N^2.
     std::vector<glm::dvec3> sum(surfaces.samples.size(), glm::dvec3(0.0)), variance = sum;
+    // A textured model's samples each have their own material (surface_maps.h).
+    const bool mapped = !surfaces.sampleMaterials.empty();
+    std::vector<int32_t> ownMaterial;
+    if (mapped) {
+        ownMaterial.resize(surfaces.samples.size());
+        std::iota(ownMaterial.begin(), ownMaterial.end(), 0);
+    }
     const int perPass = std::max(1, options.samplesPerPass);
     for (uint64_t pass = 0; image.samplesPerPixel < options.samplesPerPixel; ++pass) {
         const int n = std::min(perPass, options.samplesPerPixel - image.samplesPerPixel);
-        const std::vector<ReferenceRow> rows = probeReference(surfaces.materials, surfaces.drawOfSample, scene.lights,
-                                                              surfaces.samples, environment, n, pass);
+        std::vector<ReferenceRow> rows =
+            mapped ? probeReference(surfaces.sampleMaterials, ownMaterial, scene.lights, surfaces.samples, environment, n,
+                                    pass, surfaces.occlusion)
+                   : probeReference(surfaces.materials, surfaces.drawOfSample, scene.lights, surfaces.samples,
+                                    environment, n, pass);
+        for (size_t i = 0; i < surfaces.emission.size(); ++i) {
+            rows[i].value += surfaces.emission[i];   // exact: no error added
+        }
         image.samplesPerPixel += n;
         const double total = double(image.samplesPerPixel);
         for (size_t pixel = 0; pixel < pixels; ++pixel) {

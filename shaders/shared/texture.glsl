@@ -60,6 +60,20 @@ PATINA_INLINE vec3 perturbedNormal(vec3 N, vec4 T, vec3 tangentNormal) {
     return normalize(tangent * tangentNormal.x + bitangent * tangentNormal.y + N * tangentNormal.z);
 }
 
+// The normal map's normal about N (unit, as shaded) in the interpolated tangent frame T: the
+// tangent is made orthogonal to N first (interpolation leaves it a little off). Where the
+// vertex has no tangent (w = 0, or no direction left once orthogonal) N stays: the map has no
+// frame to be read in.
+PATINA_INLINE vec3 normalMappedNormal(vec3 N, vec4 T, vec3 tangentNormal) {
+    vec3 tangent = vec3(T.x, T.y, T.z);
+    tangent = tangent - N * dot(N, tangent);
+    if (T.w == 0.0f || !(dot(tangent, tangent) > 1e-12f)) {
+        return N;
+    }
+    tangent = normalize(tangent);
+    return perturbedNormal(N, vec4(tangent.x, tangent.y, tangent.z, T.w < 0.0f ? -1.0f : 1.0f), tangentNormal);
+}
+
 // glTF 2.0, 3.9.3 Additional Textures (occlusionTexture): 1 + strength (R - 1). Patina applies
 // it to the environment and hemisphere light only, not to direct lights.
 PATINA_INLINE real occlusionFactor(real occlusionTexel, real strength) {

@@ -45,20 +45,14 @@ void discardMasked() {
     }
 }
 
-// The normal map's normal about N (unit, facing the viewer as shaded). The tangent is made
-// orthogonal to N first: interpolation leaves it a little off. A vertex without a tangent (a
-// primitive without UVs for the map) keeps N: the map has no frame to be read in.
+// The normal map's normal about N (unit, facing the viewer as shaded): texture.glsl's
+// normalMappedNormal in the interpolated tangent frame.
 vec3 mappedNormal(vec3 N) {
     if (!hasMap(2)) {
         return N;
     }
-    vec3 T = vTangent.xyz - N * dot(N, vTangent.xyz);
-    if (vTangent.w == 0.0f || !(dot(T, T) > 1e-12f)) {
-        return N;
-    }
-    vec4 tangent = vec4(normalize(T), vTangent.w < 0.0f ? -1.0f : 1.0f);
-    return perturbedNormal(N, tangent, tangentSpaceNormal(MAP_TEXEL(2, uNormalMap, vec4(0.5f, 0.5f, 1.0f, 1.0f)).xyz,
-                                                          uNormalScale));
+    vec3 texel = texture(uNormalMap, mapCoordinate(2)).xyz;
+    return normalMappedNormal(N, vTangent, tangentSpaceNormal(texel, uNormalScale));
 }
 
 // What reaches the environment's and hemisphere lights' light (1 without an occlusion map).

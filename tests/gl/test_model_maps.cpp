@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "gl/renderer.h"
+#include "reference/pixel_surfaces.h"
+#include "reference/reference_render.h"
 #include "scene/view.h"
 #include "shading/shading.h"
 #include "test_support.h"
@@ -249,6 +251,69 @@ TEST_F(ModelMaps, TheTextureTransformMovesTheMap) {
     const auto model = oneQuad(quad(), mapped, {image(2, 1, {255, 0, 0, 255, 0, 0, 255, 255})});
     expectSame(scene, model, oneQuad(quad(), factors({0.0f, 0.0f, 1.0f})), {{-0.5f, 0.2f, 0.0f}}, 1e-3f, "left");
     expectSame(scene, model, oneQuad(quad(), factors({1.0f, 0.0f, 0.0f})), {{0.5f, 0.2f, 0.0f}}, 1e-3f, "right");
+}
+
+// A small texture of varied texels (a fixed pattern of `seed`), magnified over the quad so
+// that the GPU reads its mip 0 as the CPU does.
+std::vector<uint8_t> pattern(int width, int height, unsigned seed) {
+    std::vector<uint8_t> rgba(size_t(width * height * 4));
+    for (size_t i = 0; i < rgba.size(); ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        rgba[i] = uint8_t(64 + (seed >> 24) % 192);
+    }
+    return rgba;
+}
+
+// The CPU twin (reference/surface_maps.h) shades a textured item as the GPU does: every map at
+// once, bilinear, under the analytic lights (which the ground truth adds exactly), MASK's
+// cut-outs included. They differ by the GPU's filtering arithmetic (8-bit weights on llvmpipe)
+// and its sRGB decode.
+TEST_F(ModelMaps, TheGroundTruthShadesTheSameMapsAsTheGpu) {
+    const Scene scene = quadScene();
+    ModelMaterial mapped = factors(glm::vec3(0.9f, 0.8f, 0.7f));
+    mapped.factors.metallic = 0.6f;
+    mapped.factors.roughness = 0.9f;
+    int image = 0;
+    for (TextureSlot* slot : {&mapped.baseColor, &mapped.metallicRoughness, &mapped.normal, &mapped.occlusion,
+                              &mapped.emissive}) {
+        slot->image = image++;
+        slot->sampler.wrapS = TextureWrap::MirroredRepeat;
+    }
+    mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
+    mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
+    mapped.alphaMode = AlphaMode::Mask;
+    mapped.alphaCutoff = 0.4f;
+    std::vector<ModelImage> images;
+    for (int i = 0; i < 5; ++i) {
+        images.push_back(::patina::image(6, 5, pattern(6, 5, 7u + unsigned(i))));
+    }
+    const auto model = oneQuad(quad(glm::vec3(0.1f, 0.0f, 1.0f)), mapped, images);
+    const PreparedScene prepared{scene, std::make_shared<const Mesh>(model->primitives[0]), nullptr, model};
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kWidth, kHeight);
+    ASSERT_EQ(surfaces.sampleMaterials.size(), surfaces.samples.size());
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = 1;
+    const ReferenceImage reference = renderReference(prepared, surfaces, options);
+    for (RenderPath path : kPaths) {
+        const HdrImage shown = render(scene, model, path, 1);
+        int covered = 0, agreeing = 0, cut = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const glm::vec3 a = pixel(shown, x, y), b = pixel(reference.value, x, y);
+                if (surfaces.sampleOfPixel[size_t(y * kWidth + x)] < 0) {
+                    cut += pixelOf(scene, {-0.9f, -0.9f, 0.0f}).x < x && x < pixelOf(scene, {0.9f, 0.9f, 0.0f}).x &&
+                           pixelOf(scene, {0.9f, 0.9f, 0.0f}).y < y && y < pixelOf(scene, {-0.9f, -0.9f, 0.0f}).y;
+                    continue;
+                }
+                ++covered;
+                agreeing += largestRelativeError(a, b) <= 2e-2f;
+            }
+        }
+        EXPECT_GT(cut, 100) << "MASK cuts out some of the quad";
+        EXPECT_GT(covered, 1000);
+        // Texel edges: where the two filters' arithmetic puts a pixel across a sharp step.
+        EXPECT_GE(agreeing, covered * 97 / 100) << renderPathName(path) << ": " << agreeing << " of " << covered;
+    }
 }
 
 }  // namespace

@@ -1,0 +1,82 @@
+#include "reference/surface_maps.h"
+
+#include "shading/shading.h"
+#include "shading/texture_sampling.h"
+
+namespace patina {
+
+namespace {
+// Each map's slot and whether its texels are sRGB (glTF 2.0 3.9.2-3.9.3), as ModelTextures
+// uploads them.
+template <typename Visit>
+void forEachMap(const ModelMaterial& material, Visit&& visit) {
+    visit(material.baseColor, true);
+    visit(material.metallicRoughness, false);
+    visit(material.normal, false);
+    visit(material.occlusion, false);
+    visit(material.emissive, true);
+}
+}  // namespace
+
+MapTextures::MapTextures(const Model& model) {
+    for (const ModelMaterial& material : model.materials) {
+        forEachMap(material, [&](const TextureSlot& slot, bool srgb) {
+            const bool usable = slot.present() && size_t(slot.image) < model.images.size() &&
+                                !model.images[size_t(slot.image)].rgba.empty();
+            if (usable && !textures_.count({slot.image, srgb})) {
+                const ModelImage& image = model.images[size_t(slot.image)];
+                textures_[{slot.image, srgb}] = linearTexture(image.rgba.data(), image.width, image.height, srgb);
+            }
+        });
+    }
+}
+
+glm::vec4 MapTextures::texel(const TextureSlot& slot, bool srgb, glm::vec2 uv0, glm::vec2 uv1,
+                             glm::vec4 absent) const {
+    const auto found = textures_.find({slot.image, srgb});
+    if (!slot.present() || found == textures_.end()) {
+        return absent;
+    }
+    return sampleTexture(found->second, slot.sampler, transformedUv(slot.transform, slot.texCoord == 1 ? uv1 : uv0));
+}
+
+bool keptByMask(const SceneDraw& draw, const MapTextures& textures, const MapCoordinates& at) {
+    if (draw.alphaCutoff < 0.0f || !draw.maps) {
+        return true;   // a MASK item without maps was kept or dropped whole (sceneDraws)
+    }
+    const float alpha = draw.maps->baseAlpha * textures.texel(draw.maps->baseColor, true, at.uv0, at.uv1, glm::vec4(1.0f)).w;
+    return alpha >= draw.alphaCutoff;
+}
+
+MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, const MapCoordinates& at,
+                            glm::vec3 normal) {
+    MappedSurface surface;
+    surface.material = draw.material;
+    surface.normal = normal;
+    const ModelMaterial* maps = draw.maps;
+    if (!maps) {
+        return surface;
+    }
+    auto texel = [&](const TextureSlot& slot, bool srgb, glm::vec4 absent) {
+        return textures.texel(slot, srgb, at.uv0, at.uv1, absent);
+    };
+    const shader::TexturedMaterial mapped = shader::texturedMaterial(
+        glm::vec4(draw.material.baseColor, maps->baseAlpha), texel(maps->baseColor, true, glm::vec4(1.0f)),
+        draw.material.roughness, draw.material.metallic, texel(maps->metallicRoughness, false, glm::vec4(1.0f)));
+    surface.material.baseColor = mapped.baseColor;
+    surface.material.roughness = mapped.roughness;
+    surface.material.metallic = mapped.metallic;
+    if (maps->normal.present()) {
+        const glm::vec4 n = texel(maps->normal, false, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+        surface.normal =
+            shader::normalMappedNormal(normal, at.tangent, shader::tangentSpaceNormal(glm::vec3(n), maps->normalScale));
+    }
+    if (maps->occlusion.present()) {
+        surface.occlusion = shader::occlusionFactor(texel(maps->occlusion, false, glm::vec4(1.0f)).x,
+                                                    maps->occlusionStrength);
+    }
+    surface.emission = maps->emissiveFactor * glm::vec3(texel(maps->emissive, true, glm::vec4(1.0f)));
+    return surface;
+}
+
+}  // namespace patina

@@ -1,0 +1,56 @@
+#pragma once
+// A model's texture maps on the CPU: the twin of shaders/stages/surface_maps.glsl and of
+// shade.frag's use of it, through the same shared functions (shaders/shared/texture.glsl), so
+// the ground truth of a textured model shades what the GPU shades. Lookups are
+// shading/texture_sampling.h's: bilinear (or nearest) on mip 0, where the GPU filters its
+// mipmaps, so the two agree where a texture is magnified and differ by the filter where it is
+// minified.
+#include <map>
+#include <utility>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "model/model.h"
+#include "scene/prepared_scene.h"
+#include "shading/material_parameters.h"
+#include "shading/texture.h"
+
+namespace patina {
+
+// The images of `model`'s maps as linear texels, each decoded once in the colour space its
+// maps read it in (sRGB for base colour and emissive): gl/model_textures.h's twin.
+class MapTextures {
+public:
+    explicit MapTextures(const Model& model);
+    // `slot`'s texel at the UV set it reads (uv0 or uv1) through its transform; `absent` where
+    // the slot has no map or its image is not there.
+    glm::vec4 texel(const TextureSlot& slot, bool srgb, glm::vec2 uv0, glm::vec2 uv1, glm::vec4 absent) const;
+
+private:
+    std::map<std::pair<int, bool>, LinearTexture> textures_;   // (image, sRGB)
+};
+
+// Where a fragment of `draw` is, in its primitive's UVs and its interpolated world tangent.
+struct MapCoordinates {
+    glm::vec2 uv0{0.0f}, uv1{0.0f};
+    glm::vec4 tangent{0.0f};   // w = 0: none
+};
+
+// glTF 2.0 section 3.9.4: whether MASK keeps the fragment (alpha, the factor's times the base
+// colour map's, at least the cutoff); always for OPAQUE and BLEND.
+bool keptByMask(const SceneDraw& draw, const MapTextures& textures, const MapCoordinates& at);
+
+// What the maps make of one point of a textured item (SceneDraw::maps).
+struct MappedSurface {
+    MaterialParameters material;   // the factors times the maps (3.9.2)
+    glm::vec3 normal;              // the normal map's, about the unit shading normal given (3.9.3)
+    float occlusion = 1.0f;        // on the environment and hemisphere lights
+    glm::vec3 emission{0.0f};      // linear radiance emitted
+};
+// `normal` is the unit shading normal (reversed on a back face where the material says so).
+MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, const MapCoordinates& at,
+                            glm::vec3 normal);
+
+}  // namespace patina
