@@ -267,6 +267,33 @@ Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::st
     return materialFromJson(readJsonFile(path), "", path.string(), true, warnings);
 }
 
+namespace {
+// "modelMaterials": [{"index": N, "material": {a material, its name the key}}, ...], one per index.
+std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const std::string& source,
+                                                      std::vector<std::string>& warnings) {
+    if (!json.is_array()) {
+        throw InputError(source + ": /modelMaterials: expected an array of edited model materials");
+    }
+    std::vector<ModelMaterialEdit> edits;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const std::string pointer = "/modelMaterials/" + std::to_string(i);
+        JsonObjectReader reader(json[i], pointer, source);
+        ModelMaterialEdit edit;
+        reader.required("index");
+        edit.index = reader.integer("index", 0, {0.0, double(1 << 20)});
+        edit.material = materialFromJson(reader.required("material"), pointer + "/material", source, false, warnings);
+        for (const ModelMaterialEdit& earlier : edits) {
+            if (earlier.index == edit.index) {
+                reader.fail("index", "material " + std::to_string(edit.index) + " is edited twice");
+            }
+        }
+        edit.extras = reader.keepUnknown(warnings);
+        edits.push_back(std::move(edit));
+    }
+    return edits;
+}
+}  // namespace
+
 Scene sceneFromJson(const Json& json, const std::string& source,
                     const std::filesystem::path& baseDirectory, std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, "", source);
@@ -289,6 +316,9 @@ Scene sceneFromJson(const Json& json, const std::string& source,
         } else {
             scene.material = materialFromJson(*material, "/material", source, false, warnings);
         }
+    }
+    if (const Json* edits = reader.child("modelMaterials")) {
+        scene.modelMaterials = modelMaterialsFromJson(*edits, source, warnings);
     }
     if (const Json* camera = reader.child("camera")) {
         scene.camera = cameraFromJson(*camera, "/camera", source, warnings);
@@ -384,7 +414,7 @@ Json sceneToJson(const Scene& scene) {
     }
     const Camera& camera = scene.camera;
     const DisplaySettings& display = scene.display;
-    return withExtras(
+    Json json =
         Json{{"format", "patina-scene"},
              {"version", kSceneFormatVersion},
              {"mesh", scene.meshFile.empty() ? std::string(meshKindName(scene.mesh)) : scene.meshFile},
@@ -394,8 +424,15 @@ Json sceneToJson(const Scene& scene) {
                                     {"fovYDegrees", toJson(camera.fovYDegrees)}},
                                    camera.extras)},
              {"lights", lights},
-             {"display", withExtras(displayToJson(display), display.extras)}},
-        scene.extras);
+             {"display", withExtras(displayToJson(display), display.extras)}};
+    if (!scene.modelMaterials.empty()) {   // only a tuned model's scene has the key
+        Json edits = Json::array();
+        for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+            edits.push_back(withExtras({{"index", edit.index}, {"material", materialToJson(edit.material)}}, edit.extras));
+        }
+        json["modelMaterials"] = edits;
+    }
+    return withExtras(json, scene.extras);
 }
 
 }  // namespace patina

@@ -14,8 +14,20 @@ namespace {
                                 " of " + std::to_string(count));
 }
 
+// The factors material `index` of the model is drawn with: the scene's edit of it where one
+// has its index and name, else the file's.
+MaterialParameters factorsOf(const Scene& scene, int index, const ModelMaterial& material) {
+    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+        if (edit.index == index && edit.material.name == material.name) {
+            return edit.material;
+        }
+    }
+    return material.factors;
+}
+
 // Item `i` of `model` as drawn, or nothing when its MASK cutoff hides it whole.
-std::optional<SceneDraw> modelDraw(const Model& model, size_t i, BrdfModelId brdf) {
+std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_t i) {
+    const BrdfModelId brdf = scene.material.model;
     const DrawItem& item = model.draws[i];
     if (item.primitive < 0 || size_t(item.primitive) >= model.primitives.size()) {
         missing(i, "primitive", item.primitive, model.primitives.size());
@@ -34,7 +46,7 @@ std::optional<SceneDraw> modelDraw(const Model& model, size_t i, BrdfModelId brd
     draw.primitive = item.primitive;
     draw.transform = item.transform;
     draw.normalTransform = normalTransform(item.transform);
-    draw.material = material.factors;
+    draw.material = item.material >= 0 ? factorsOf(scene, item.material, material) : material.factors;
     draw.material.model = brdf;
     draw.doubleSided = material.doubleSided;
     draw.reverseBackNormals = material.doubleSided;
@@ -73,7 +85,7 @@ std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared) {
     std::vector<SceneDraw> draws;
     draws.reserve(prepared.model->draws.size());
     for (size_t i = 0; i < prepared.model->draws.size(); ++i) {
-        if (std::optional<SceneDraw> draw = modelDraw(*prepared.model, i, prepared.scene.material.model)) {
+        if (std::optional<SceneDraw> draw = modelDraw(prepared.scene, *prepared.model, i)) {
             draws.push_back(*draw);
         }
     }

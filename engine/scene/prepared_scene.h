@@ -65,7 +65,8 @@ MaterialParameters defaultModelMaterial();
 
 // What `prepared` draws, in order: without a model its mesh with the document's material, as
 // it has always been drawn; with one each draw item with its own material (the default one for
-// none), under the document's BRDF model (one program shades a frame). A MASK item whose alpha
+// none; its factors the scene's edit of it, Scene::modelMaterials, where there is one), under
+// the document's BRDF model (one program shades a frame). A MASK item whose alpha
 // is below its cutoff is left out: a texture's alpha, at most 1, could only lower it. Throws
 // std::invalid_argument for a scene without its mesh, or an item naming a primitive or
 // material the model lacks.

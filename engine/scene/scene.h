@@ -41,6 +41,17 @@ struct DisplaySettings {
 };
 
 
+// A material of the scene's model as the user tuned it: the factors it is drawn with instead of
+// the file's (its maps still multiply in, as glTF defines). Keyed by the material's index in
+// the file and its name (material.name), so that an edit never lands on another material
+// when the file changes: a key the file no longer has is ignored.
+struct ModelMaterialEdit {
+    int index = 0;
+    Material material;
+    Json extras = Json::object();   // unknown keys of the file, as Material::extras
+    bool operator==(const ModelMaterialEdit&) const = default;
+};
+
 // The document: what a scene file says, values only, no graph. What it names (a glTF file, an
 // environment image) is loaded apart from it, by assets/, into a PreparedScene.
 struct Scene {
@@ -48,7 +59,8 @@ struct Scene {
     // A .gltf or .glb file shown instead of `mesh` when not empty; an absolute path (a scene
     // file's relative path is resolved against the scene file's folder when it is read).
     std::string meshFile;
-    Material material;
+    Material material;   // the built-in meshes'
+    std::vector<ModelMaterialEdit> modelMaterials;   // the model's materials as tuned, by index
     Camera camera;
     std::vector<Light> lights;
     DisplaySettings display;

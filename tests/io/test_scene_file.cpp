@@ -61,6 +61,34 @@ TEST(SceneFile, RoundTripsTheDefaultScene) {
     EXPECT_TRUE(warnings.empty());
 }
 
+// A tuned model's materials travel with the scene, each under its index and name; a scene
+// without edits writes no key (files saved before keep their bytes).
+TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
+    std::vector<std::string> warnings;
+    Scene scene = defaultScene();
+    EXPECT_FALSE(sceneToJson(scene).contains("modelMaterials"));
+    scene.meshFile = "/models/box.glb";
+    Material edited;
+    edited.name = "Texture";
+    edited.roughness = 0.2f;
+    scene.modelMaterials = {{3, edited}};
+    const Json json = sceneToJson(scene);
+    ASSERT_TRUE(json.contains("modelMaterials"));
+    EXPECT_EQ(json["modelMaterials"][0]["index"], 3);
+    EXPECT_EQ(sceneFromJson(json, "x", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+    Json twice = json;
+    twice["modelMaterials"].push_back(json["modelMaterials"][0]);
+    try {
+        sceneFromJson(twice, "x.json", ".", warnings);
+        ADD_FAILURE() << "a material edited twice was read";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("x.json: /modelMaterials/1/index: material 3 is edited twice"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
 // Version 2 renamed a point light's "radius" (its attenuation window) to "range": a version 1
 // file still loads with the same light, and saving writes version 2.
 TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {

@@ -101,6 +101,31 @@ TEST(SceneDraws, AModelsItemsKeepTheirPlacesAndMaterials) {
     EXPECT_FALSE(draws[2].doubleSided);
 }
 
+// Scene::modelMaterials: a tuned material's factors replace the file's for every item that
+// uses it, and only where the index and the name both match (a file changed since the edit
+// keeps its own material).
+TEST(SceneDraws, TheScenesEditOfAModelMaterialReplacesItsFactors) {
+    Scene scene = defaultScene();
+    Model items = threeItems();
+    items.materials[0].name = "red";
+    items.materials[1].name = "blue";
+    const auto model = std::make_shared<const Model>(items);
+    Material tuned;
+    tuned.name = "red";
+    tuned.baseColor = {0.2f, 0.9f, 0.3f};
+    tuned.roughness = 0.15f;
+    Material misnamed = tuned;
+    misnamed.name = "not blue";
+    scene.modelMaterials = {{0, tuned}, {1, misnamed}};
+    const std::vector<SceneDraw> draws = sceneDraws(PreparedScene{scene, builtinMesh(MeshKind::Sphere), nullptr, model});
+    ASSERT_EQ(draws.size(), 3u);
+    EXPECT_EQ(draws[0].material.baseColor, tuned.baseColor);
+    EXPECT_EQ(draws[0].material.roughness, 0.15f);
+    EXPECT_EQ(draws[0].material.model, scene.material.model);
+    EXPECT_EQ(draws[1].material.baseColor, items.materials[1].factors.baseColor) << "another name: not this material";
+    EXPECT_EQ(draws[2].material.baseColor, defaultModelMaterial().baseColor) << "no material: glTF's default";
+}
+
 TEST(SceneDraws, AMaskBelowItsCutoffHidesTheItemWhole) {
     const Scene scene = defaultScene();
     Model model = threeItems();
