@@ -103,7 +103,7 @@ Recoverable readRecoverable(const std::filesystem::path& file, AssetCache& asset
     found.scene = sceneFromJson(scene, file.string() + " (scene)", file.parent_path(), warnings);
     if (!found.scene.meshFile.empty()) {
         try {
-            found.mesh = assets.mesh(found.scene);
+            found.shape = assets.shape(found.scene);
         } catch (const std::exception&) {
             found.scene.meshFile.clear();   // the mesh file went away: the rest is still the work
         }
@@ -258,7 +258,7 @@ void restoreRecoverable(EditorState& state) {
         return;
     }
     Recoverable found = std::move(*state.recoverable);
-    startDocument(state, found.scene, found.scenePath, found.materialPath, found.mesh);
+    startDocument(state, found.scene, found.scenePath, found.materialPath, found.shape);
     compareWithItsFiles(state, found);
     state.status = "Restored the work autosaved " + found.savedAt;
     // Kept in this editor's own file before the old one goes, so a crash now loses nothing.

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "assets/asset_cache.h"
 #include "scene/scene.h"
 
 namespace patina::editor {
@@ -43,7 +44,7 @@ private:
 // What an editor that is gone left, offered until restored or discarded.
 struct Recoverable {
     Scene scene;
-    std::shared_ptr<const Mesh> mesh;     // its glTF file's, loaded; null for a built-in
+    AssetCache::Shape shape;              // its glTF file's, loaded; empty for a built-in
     std::filesystem::path materialPath;   // where its material was saved, if anywhere
     std::filesystem::path scenePath;      // the scene file it was, if any
     std::string savedAt;                  // local time, for the prompt

@@ -12,7 +12,7 @@ namespace patina::editor {
 bool Document::sceneChanged() const {
     return scene.lights != savedScene.lights || scene.camera != savedScene.camera ||
            scene.display != savedScene.display || scene.mesh != savedScene.mesh ||
-           scene.meshFile != savedScene.meshFile;
+           scene.meshFile != savedScene.meshFile || scene.modelMaterials != savedScene.modelMaterials;
 }
 
 int Document::environmentIndex() const {
@@ -49,6 +49,9 @@ std::string unsavedParts(const Document& document) {
     }
     if (now.mesh != saved.mesh || now.meshFile != saved.meshFile) {
         parts.push_back("the mesh");
+    }
+    if (now.modelMaterials != saved.modelMaterials) {
+        parts.push_back("the model's materials");
     }
     std::string text;
     for (size_t i = 0; i < parts.size(); ++i) {
@@ -88,6 +91,7 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.material = snapshot.material;
     state.scene.lights = snapshot.lights;
     state.scene.display = snapshot.display;
+    state.scene.modelMaterials = snapshot.modelMaterials;
     state.committed = snapshot;
     const int count = int(state.scene.lights.size());
     state.selectedLight = std::clamp(state.selectedLight, count ? 0 : -1, count - 1);
@@ -142,6 +146,7 @@ void chooseBuiltinMesh(Document& document, MeshKind kind) {
     document.scene.mesh = kind;
     document.scene.meshFile.clear();
     document.mesh.reset();   // the built-in kind's
+    document.model.reset();
     if (fromFile) {   // back from a model: the camera and the lights return to the unit scale
         frameMesh(document);
         applyEdit(document, [&](Document& d) { moveLightRig(d.scene.lights, before, {glm::vec3(0.0f), 1.0f}); });
@@ -149,7 +154,55 @@ void chooseBuiltinMesh(Document& document, MeshKind kind) {
 }
 
 PreparedScene preparedScene(const Document& document, const Scene& shown) {
-    return {shown, shown.meshFile.empty() ? builtinMesh(shown.mesh) : document.mesh, document.environment};
+    const bool file = !shown.meshFile.empty();
+    return {shown, file ? document.mesh : builtinMesh(shown.mesh), document.environment,
+            file ? document.model : nullptr};
+}
+
+int modelMaterialCount(const Document& document) {
+    return document.model && !document.scene.meshFile.empty() ? int(document.model->materials.size()) : 0;
+}
+
+Material modelMaterial(const Document& document, const Scene& scene, int index) {
+    const ModelMaterial& file = document.model->materials.at(size_t(index));
+    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+        if (edit.index == index && edit.material.name == file.name) {
+            Material material = edit.material;
+            material.model = scene.material.model;
+            return material;
+        }
+    }
+    Material material;
+    static_cast<MaterialParameters&>(material) = file.factors;
+    material.name = file.name;
+    material.model = scene.material.model;
+    return material;
+}
+
+void setModelMaterial(const Document& document, Scene& scene, int index, Material material) {
+    material.name = document.model->materials.at(size_t(index)).name;
+    material.model = scene.material.model;   // the document's: one program shades a frame
+    for (ModelMaterialEdit& edit : scene.modelMaterials) {
+        if (edit.index == index) {
+            edit.material = std::move(material);
+            return;
+        }
+    }
+    scene.modelMaterials.push_back({index, std::move(material)});
+}
+
+std::string mapsOf(const Document& document, int index) {
+    const ModelMaterial& material = document.model->materials.at(size_t(index));
+    std::string maps;
+    for (const auto& [slot, name] : {std::pair{&material.baseColor, "base colour"},
+                                     std::pair{&material.metallicRoughness, "metallic-roughness"},
+                                     std::pair{&material.normal, "normal"}, std::pair{&material.occlusion, "occlusion"},
+                                     std::pair{&material.emissive, "emissive"}}) {
+        if (slot->present()) {
+            maps += (maps.empty() ? "" : ", ") + std::string(name);
+        }
+    }
+    return maps;
 }
 
 }  // namespace patina::editor

@@ -21,6 +21,7 @@ struct Document {
     // the built-in kind's), and its environment light's environment (kept while the light is
     // off, for the checkbox).
     std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Model> model;   // what the glTF file draws (null: a built-in mesh)
     std::shared_ptr<const Environment> environment;
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
@@ -37,7 +38,7 @@ struct Document {
     bool materialChanged() const { return scene.material != savedMaterial; }
     bool sceneChanged() const;
     bool dirty() const { return materialChanged() || sceneChanged(); }
-    EditSnapshot snapshot() const { return {scene.material, scene.lights, scene.display}; }
+    EditSnapshot snapshot() const { return {scene.material, scene.lights, scene.display, scene.modelMaterials}; }
     // Whether `index` is one of the scene's lights.
     bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
     // The scene's environment light's index, or -1.
@@ -74,8 +75,20 @@ void frameMesh(Document& document);
 // The built-in sphere or torus; coming back from a model, the camera frames it and the lights
 // return to the unit scale (an undoable step).
 void chooseBuiltinMesh(Document& document, MeshKind kind);
-// `shown` (renderedScene, withMaterial) with the document's loaded mesh and environment: what
-// the renderer draws. Refers to `shown`, which must outlive it.
+// `shown` (renderedScene, withMaterial) with the document's loaded mesh, model and environment:
+// what the renderer draws. Refers to `shown`, which must outlive it.
 PreparedScene preparedScene(const Document& document, const Scene& shown);
+
+// --- A model's materials ----------------------------------------------------------------
+// How many materials the shown model has (0 for a built-in mesh).
+int modelMaterialCount(const Document& document);
+// Material `index` of the model as `scene` draws it: its edit (Scene::modelMaterials) or the
+// file's factors, under the file's name, with the document's BRDF model.
+Material modelMaterial(const Document& document, const Scene& scene, int index);
+// Writes `material`'s values as the edit of material `index` in `scene` (its name stays the
+// file's: the key), made or replaced.
+void setModelMaterial(const Document& document, Scene& scene, int index, Material material);
+// "base colour, normal": the maps material `index` of the model uses; empty for none.
+std::string mapsOf(const Document& document, int index);
 
 }  // namespace patina::editor

@@ -17,47 +17,40 @@
 namespace patina::editor {
 
 namespace {
-// "; 2 more materials and 3 textures not used (Patina reads the first material's factors)".
-std::string unusedParts(const GltfImport& imported) {
-    std::vector<std::string> parts;
-    if (imported.materialCount > 1) {
-        parts.push_back(std::to_string(imported.materialCount - 1) + " more material" +
-                        (imported.materialCount > 2 ? "s" : ""));
+// ": 3 materials (\"Texture\" edited), 2 textures" and any notes of what was left out.
+std::string modelSummary(const Model& model) {
+    const size_t materials = model.materials.size(), images = model.images.size();
+    std::string text = ": " + std::to_string(materials) + " material" + (materials == 1 ? "" : "s");
+    if (materials > 0) {
+        text += " (\"" + model.materials[0].name + "\" edited; the Material panel picks another)";
     }
-    if (imported.textureCount > 0) {
-        parts.push_back(std::to_string(imported.textureCount) + " texture" + (imported.textureCount > 1 ? "s" : ""));
+    if (images > 0) {
+        text += ", " + std::to_string(images) + " texture image" + (images == 1 ? "" : "s");
     }
-    if (parts.empty()) {
-        return "";
+    for (const std::string& note : model.notes) {
+        text += "\n" + note;
     }
-    return "; " + (parts.size() == 2 ? parts[0] + " and " + parts[1] : parts[0]) +
-           " not used (Patina reads the first material's factors)";
+    return text;
 }
 
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
         // Before anything changes: a bad file changes nothing.
-        const std::shared_ptr<const GltfImport> model = state.assets->model(path);
-        const GltfImport& imported = *model;
+        const std::shared_ptr<const GltfImport> imported = state.assets->model(path);
+        std::shared_ptr<const Model> model = state.assets->drawnModel(path);
         const BoundingSphere before = meshBounds(state);
         state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
-        state.mesh = std::shared_ptr<const Mesh>(model, &model->mesh);
+        state.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
+        state.model = model;
+        state.selectedModelMaterial = 0;
         frameMesh(state);
-        // The lights follow the model's size and place in the same undoable step as its
-        // material: a model of hundreds of units used to swallow every point light.
+        // The lights follow the model's size and place, an undoable step: a model of hundreds
+        // of units used to swallow every point light. Its materials are its own (the scene's
+        // material stays the built-in meshes').
         const BoundingSphere after = meshBounds(state);
-        std::string material = ", no material (the current one kept)";
-        applyEdit(state, [&](Document& d) {
-            moveLightRig(d.scene.lights, before, after);
-            if (imported.material) {
-                d.scene.material = *imported.material;
-            }
-        });
-        if (imported.material) {
-            material = ", material \"" + imported.material->name + "\" applied";
-        }
+        applyEdit(state, [&](Document& d) { moveLightRig(d.scene.lights, before, after); });
         state.error.clear();
-        state.status = "Mesh " + path.filename().string() + material + unusedParts(imported);
+        state.status = "Mesh " + path.filename().string() + modelSummary(*model);
         rememberRecent(state, path);
         return true;
     } catch (const std::exception& error) {
@@ -68,10 +61,12 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
 }  // namespace
 
 void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
-                   const std::filesystem::path& materialPath, std::shared_ptr<const Mesh> mesh,
+                   const std::filesystem::path& materialPath, AssetCache::Shape shape,
                    std::shared_ptr<const Environment> environment) {
     state.scene = scene;
-    state.mesh = std::move(mesh);
+    state.mesh = std::move(shape.mesh);
+    state.model = std::move(shape.model);
+    state.selectedModelMaterial = 0;
     state.environment = std::move(environment);
     state.scenePath = scenePath;
     state.materialPath = materialPath;
@@ -105,8 +100,8 @@ namespace {
 // A scene, material or screenshot file, read and checked before anything changes.
 struct DocumentFile {
     std::optional<Scene> scene;          // a scene file or a screenshot
-    // What the scene names, loaded: its glTF file's mesh and its enabled environment.
-    std::shared_ptr<const Mesh> mesh;
+    // What the scene names, loaded: its glTF file's mesh and model, and its enabled environment.
+    AssetCache::Shape shape;
     std::shared_ptr<const Environment> environment;
     std::optional<Material> material;    // a material file
     std::optional<ScreenshotComparison> comparison;   // a screenshot's A and view
@@ -138,7 +133,9 @@ DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& p
     // instead of every later frame.
     if (file.scene) {
         const PreparedScene prepared = prepareScene(*file.scene, assets, file.warnings);
-        file.mesh = file.scene->meshFile.empty() ? nullptr : prepared.mesh;
+        if (!file.scene->meshFile.empty()) {
+            file.shape = {prepared.mesh, prepared.model};
+        }
         file.environment = prepared.environment;
     }
     return file;
@@ -154,7 +151,7 @@ bool startsADocument(const EditorState& state, const std::filesystem::path& path
 void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
     if (file.scene) {
         // A scene file is the document; a screenshot's scene is not a file to save into.
-        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {}, file.mesh,
+        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {}, file.shape,
                       file.environment);
         // A screenshot reopens as what it shows: a comparison with its A, view and split, or
         // a single view.
@@ -169,7 +166,8 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
     } else if (isPreset(state, path)) {
         // A preset is a template: an undoable edit of the material; Save never writes into it
         // (Save as preset does, when asked to).
-        applyEdit(state, [&](Document& d) { d.scene.material = *file.material; });
+        // On a model, onto the material the panel edits.
+        applyEdit(state, [&](Document& d) { setEditedMaterial(state, d.scene, *file.material); });
     } else {
         Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
         scene.material = *file.material;
@@ -177,7 +175,9 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
     }
     state.error.clear();
     const bool preset = !file.scene && isPreset(state, path);
-    state.status = (preset ? "Preset " + file.material->name + " applied (Ctrl+Z undoes it)"
+    state.status = (preset ? "Preset " + file.material->name + " applied" +
+                                 (modelMaterialCount(state) > 0 ? " to " + editedMaterial(state).name : "") +
+                                 " (Ctrl+Z undoes it)"
                            : "Opened " + path.filename().string()) +
                    (file.warnings.empty() ? "" : "\n" + joinLines(file.warnings));
     rememberRecent(state, path);
@@ -279,6 +279,19 @@ bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
     }
     // The preset is known by its file in the browser: the material takes the file's name.
     const std::string name = file.stem().string();
+    if (modelMaterialCount(state) > 0) {   // a model's material: written as it is, its key kept
+        Material preset = editedMaterial(state);
+        preset.name = name;
+        try {
+            saveMaterialFile(file, preset);
+        } catch (const std::exception& error) {
+            state.error = couldNotSave(file, error);
+            return false;
+        }
+        state.status = "Saved " + editedMaterial(state).name + " as the preset " + name + " in " +
+                       std::filesystem::absolute(file).parent_path().string();
+        return true;
+    }
     if (state.scene.material.name != name) {
         applyEdit(state, [&](Document& d) { d.scene.material.name = name; });
     }

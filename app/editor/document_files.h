@@ -1,5 +1,7 @@
 #pragma once
 #include <filesystem>
+
+#include "assets/asset_cache.h"
 #include <memory>
 #include <vector>
 
@@ -17,10 +19,11 @@ struct EditorState;
 // environment is an undoable edit of the document that is open.
 //
 // Makes `scene` the document, saved at `scenePath` (a scene file) or `materialPath` (a material
-// file), or neither, with what was loaded for it: `mesh` (required when it names a file) and
-// `environment` (null: loaded by resolveEnvironmentShown).
+// file), or neither, with what was loaded for it: `shape`, its glTF file's mesh and model
+// (required when it names a file), and `environment` (null: loaded by resolveEnvironmentShown).
+// The model's first material is the one edited.
 void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
-                   const std::filesystem::path& materialPath, std::shared_ptr<const Mesh> mesh = nullptr,
+                   const std::filesystem::path& materialPath, AssetCache::Shape shape = {},
                    std::shared_ptr<const Environment> environment = nullptr);
 // File > New: the default scene as a document with no file.
 void newDocument(EditorState& state);

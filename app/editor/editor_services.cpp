@@ -141,7 +141,7 @@ LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth
         material.name = comparisonLabel(side, material);
         return materialCaption(material, halfWidth);
     };
-    return sideBySide(a, b, caption('A', *state.compareA), caption('B', state.scene.material));
+    return sideBySide(a, b, caption('A', *state.compareA), caption('B', editedMaterial(state)));
 }
 
 LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
@@ -169,7 +169,7 @@ LdrImage EditorServices::shownImage(const EditorState& state, int width, int hei
     const int least = textWidth("A...", scale);
     const std::string labelA = fitText(comparisonLabel('A', *state.compareA), std::max(split - 16, least), scale);
     const std::string labelB =
-        fitText(comparisonLabel('B', state.scene.material), std::max(width - split - 16, least), scale);
+        fitText(comparisonLabel('B', editedMaterial(state)), std::max(width - split - 16, least), scale);
     drawText(shown, 8, 24, labelA, scale, kCaptionColour);
     drawText(shown, width - 8 - textWidth(labelB, scale), 24, labelB, scale, kCaptionColour);
     return shown;
@@ -180,7 +180,7 @@ std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& sta
     try {
         const LdrImage image = shownImage(state, width, height);
         std::filesystem::create_directories(state.screenshotFolder);   // a folder set but not made yet
-        path = std::filesystem::absolute(screenshotPath(state.screenshotFolder, state.scene.material.name))
+        path = std::filesystem::absolute(screenshotPath(state.screenshotFolder, editedMaterial(state).name))
                    .lexically_normal();
         std::vector<std::pair<std::string, std::string>> text{{kSceneTextKeyword, sceneToJson(state.scene).dump()}};
         if (const std::string comparison = comparisonText(state); !comparison.empty()) {

@@ -1,5 +1,7 @@
 #include "interaction.h"
 
+#include <algorithm>
+
 #include "editor_state.h"
 
 namespace patina::editor {
@@ -22,9 +24,25 @@ Scene renderedScene(const EditorState& state) {
     return scene;
 }
 
+Material editedMaterial(const EditorState& state) {
+    if (modelMaterialCount(state) > 0) {
+        return modelMaterial(state, state.scene, std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1));
+    }
+    return state.scene.material;
+}
+
+void setEditedMaterial(const EditorState& state, Scene& scene, const Material& material) {
+    if (modelMaterialCount(state) > 0) {
+        setModelMaterial(state, scene, std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1),
+                         material);
+    } else {
+        scene.material = material;
+    }
+}
+
 Scene withMaterial(const EditorState& state, const Material& material) {
     Scene scene = renderedScene(state);
-    scene.material = material;
+    setEditedMaterial(state, scene, material);
     return scene;
 }
 

@@ -27,6 +27,7 @@ struct LobeSettings {
 // drags, the A/B comparison and how it is viewed, and how the picture is made.
 struct Interaction {
     int selectedLight = 0;
+    int selectedModelMaterial = 0;           // of the shown model: the one the Material panel edits
     int soloLight = -1;                      // -1: all enabled lights
     RenderPath renderPath = RenderPath::Single;
 
@@ -48,7 +49,13 @@ void toggleSolo(Interaction& interaction, int index);
 bool soloedOut(const EditorState& state, int index);
 // The scene as rendered: solo applied.
 Scene renderedScene(const EditorState& state);
-// The scene as rendered with another material (a side of the comparison).
+// The material the Material panel edits: the selected one of a shown model (its tuning or the
+// file's factors), else the scene's own.
+Material editedMaterial(const EditorState& state);
+// `material`'s values as the edited material of `scene` (a model's keeps the file's name).
+void setEditedMaterial(const EditorState& state, Scene& scene, const Material& material);
+// The scene as rendered with another material in the edited one's place (a side of the
+// comparison).
 Scene withMaterial(const EditorState& state, const Material& material);
 
 }  // namespace patina::editor

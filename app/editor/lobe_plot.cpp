@@ -35,14 +35,15 @@ LobePlot lobePlot(const EditorState& state) {
     }
     // The same material under the reference model, for what a model chosen instead of the
     // default gets wrong; under the default it is a research question the Accuracy tab answers.
-    const BrdfModelId model = state.scene.material.model;
+    const Material edited = editedMaterial(state);
+    const BrdfModelId model = edited.model;
     if (model != MaterialParameters{}.model && model != BrdfModelId::Reference) {
-        Material reference = state.scene.material;
+        Material reference = edited;
         reference.model = BrdfModelId::Reference;
         add(evaluateLobe(reference, lobe.thetaInDegrees, kLobeSamples), total, rgba(0, 220, 220, 200), 1.0f,
             "reference model");
     }
-    const std::vector<LobeSample> samples = evaluateLobe(state.scene.material, lobe.thetaInDegrees, kLobeSamples);
+    const std::vector<LobeSample> samples = evaluateLobe(edited, lobe.thetaInDegrees, kLobeSamples);
     const std::string b = state.compareA ? "B " : "";   // "B" says which only beside an A
     if (lobe.luminance) {
         add(samples, [](const LobeSample& s) { return luminance(s.diffuse); }, rgba(110, 170, 255, 255), 1.0f,

@@ -62,6 +62,30 @@ std::string displayChange(const DisplaySettings& a, const DisplaySettings& b) {
     }
     return fieldsOr(fields, "the display settings");
 }
+// "roughness of Texture": the first model material whose edit differs (one is edited at a time).
+std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const std::vector<ModelMaterialEdit>& b) {
+    auto find = [](const std::vector<ModelMaterialEdit>& edits, int index) -> const ModelMaterialEdit* {
+        for (const ModelMaterialEdit& edit : edits) {
+            if (edit.index == index) {
+                return &edit;
+            }
+        }
+        return nullptr;
+    };
+    for (const std::vector<ModelMaterialEdit>* side : {&b, &a}) {
+        for (const ModelMaterialEdit& edit : *side) {
+            const ModelMaterialEdit* before = find(a, edit.index);
+            const ModelMaterialEdit* after = find(b, edit.index);
+            if (!before || !after || *before != *after) {
+                if (!before || !after) {
+                    return "the tuning of " + edit.material.name;
+                }
+                return materialChange(before->material, after->material) + " of " + edit.material.name;
+            }
+        }
+    }
+    return "the model's materials";
+}
 }  // namespace
 
 std::string describeChange(const EditSnapshot& before, const EditSnapshot& after) {
@@ -74,6 +98,9 @@ std::string describeChange(const EditSnapshot& before, const EditSnapshot& after
     }
     if (before.display != after.display) {
         parts.push_back(displayChange(before.display, after.display));
+    }
+    if (before.modelMaterials != after.modelMaterials) {
+        parts.push_back(modelMaterialsChange(before.modelMaterials, after.modelMaterials));
     }
     std::string text;
     for (size_t i = 0; i < parts.size(); ++i) {

@@ -15,6 +15,7 @@ struct EditSnapshot {
     Material material;
     std::vector<Light> lights;
     DisplaySettings display;
+    std::vector<ModelMaterialEdit> modelMaterials;   // the scene's model's materials as tuned
 
     bool operator==(const EditSnapshot&) const = default;
 };

@@ -46,6 +46,11 @@ std::shared_ptr<const GltfImport> AssetCache::model(const std::filesystem::path&
     return {model, &model->imported};
 }
 
+std::shared_ptr<const Model> AssetCache::drawnModel(const std::filesystem::path& path) {
+    std::shared_ptr<const LoadedModel> model = loaded(path);
+    return {model, &model->model};
+}
+
 AssetCache::Shape AssetCache::shape(const Scene& scene) {
     if (scene.meshFile.empty()) {
         return {builtinMesh(scene.mesh), nullptr};

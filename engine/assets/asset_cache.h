@@ -42,6 +42,8 @@ public:
         std::shared_ptr<const Model> model;
     };
     Shape shape(const Scene& scene);
+    // The model the glTF file at `path` draws (shares its entry with model(path)).
+    std::shared_ptr<const Model> drawnModel(const std::filesystem::path& path);
     std::shared_ptr<const Mesh> mesh(const Scene& scene) { return shape(scene).mesh; }
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
     // the disk cache of image/environment_source.h. A note about replaced pixels goes to

@@ -617,9 +617,11 @@ TEST_F(EditorStateTest, EveryFilesErrorIsShownAndAFolderIsCalledAFolder) {
 namespace patina::editor {
 namespace {
 
-// Opening a glTF applies its material's factors (it used to keep the edited material and say
-// nothing), undoably, and says so.
-TEST_F(EditorStateTest, OpeningAGltfAppliesItsMaterial) {
+// Opening a glTF shows it with its own materials (it used to put its first material's factors
+// on the scene's material, which now stays the built-in meshes'): the panel edits the first,
+// an edit is an undoable tuning of that material alone, presets and A apply to it, and Save
+// scene keeps the tuning, which reopens.
+TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     Material gold;
     gold.name = "model gold";
     gold.baseColor = {1.0f, 0.78f, 0.34f};
@@ -628,12 +630,60 @@ TEST_F(EditorStateTest, OpeningAGltfAppliesItsMaterial) {
     exportGltf(dir_ / "gold.glb", makeTorus(), gold);
     const Material before = state.scene.material;
     ASSERT_TRUE(openFile(state, dir_ / "gold.glb")) << state.error;
-    EXPECT_EQ(state.scene.material.name, "model gold");
-    EXPECT_NEAR(state.scene.material.roughness, 0.3f, 1e-6f);
-    EXPECT_EQ(state.scene.material.metallic, 1.0f);
-    EXPECT_NE(state.status.find("material \"model gold\" applied"), std::string::npos) << state.status;
+    EXPECT_EQ(state.scene.material, before) << "the scene's own material is untouched";
+    ASSERT_EQ(modelMaterialCount(state), 1);
+    EXPECT_NE(state.status.find("1 material (\"model gold\" edited"), std::string::npos) << state.status;
+    Material edited = editedMaterial(state);
+    EXPECT_EQ(edited.name, "model gold");
+    EXPECT_NEAR(edited.roughness, 0.3f, 1e-6f);
+    EXPECT_EQ(edited.metallic, 1.0f);
+    // What the viewport draws: the model, its material as tuned.
+    edited.roughness = 0.7f;
+    edited.name = "renamed";   // the key stays the file's
+    setEditedMaterial(state, state.scene, edited);
+    commitEdits(state);
+    ASSERT_EQ(state.scene.modelMaterials.size(), 1u);
+    EXPECT_EQ(state.scene.modelMaterials[0].material.name, "model gold");
+    const Scene shown = renderedScene(state);
+    const PreparedScene prepared = preparedScene(state, shown);
+    ASSERT_NE(prepared.model, nullptr);
+    const std::vector<SceneDraw> draws = sceneDraws(prepared);
+    ASSERT_EQ(draws.size(), 1u);
+    EXPECT_EQ(draws[0].material.roughness, 0.7f);
+    EXPECT_TRUE(state.dirty());
+    EXPECT_NE(unsavedParts(state).find("the model's materials"), std::string::npos);
+    edited.metallic = 0.5f;
+    setEditedMaterial(state, state.scene, edited);
+    commitEdits(state);
     undo(state);
+    EXPECT_NE(state.status.find("Undid metallic of model gold"), std::string::npos) << state.status;
+    undo(state);
+    EXPECT_NE(state.status.find("Undid the tuning of model gold"), std::string::npos) << state.status;
+    EXPECT_NEAR(editedMaterial(state).roughness, 0.3f, 1e-6f);
+    EXPECT_TRUE(state.scene.modelMaterials.empty());
+    redo(state);
+    redo(state);
+    EXPECT_EQ(editedMaterial(state).metallic, 0.5f);
+    // A preset lands on the model's material, under its name.
+    Material brick;
+    brick.name = "brick";
+    brick.baseColor = {0.5f, 0.2f, 0.1f};
+    brick.roughness = 0.9f;
+    fs::create_directories(dir_ / "presets");
+    saveMaterialFile(dir_ / "presets" / "brick.json", brick);
+    state.presetFolders = {dir_ / "presets"};
+    ASSERT_TRUE(openFile(state, dir_ / "presets" / "brick.json")) << state.error;
+    EXPECT_EQ(editedMaterial(state).baseColor, brick.baseColor);
+    EXPECT_EQ(editedMaterial(state).name, "model gold");
     EXPECT_EQ(state.scene.material, before);
+    // Saved and reopened, the tuning is there.
+    ASSERT_TRUE(saveScene(state, dir_ / "tuned.json")) << state.error;
+    newDocument(state);
+    EXPECT_EQ(modelMaterialCount(state), 0);
+    ASSERT_TRUE(openFile(state, dir_ / "tuned.json")) << state.error;
+    ASSERT_EQ(modelMaterialCount(state), 1);
+    EXPECT_EQ(editedMaterial(state).roughness, 0.9f);
+    EXPECT_FALSE(state.dirty());
 }
 
 // A model of hundreds of units (2CylinderEngine's size) swallowed every point, sphere and tube

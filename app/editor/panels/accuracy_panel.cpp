@@ -23,7 +23,7 @@ AccuracyNumbers accuracyOf(const Material& material) {
 }
 
 void drawAccuracyPanel(EditorState& state, EditorServices& services) {
-    const Material& material = state.scene.material;
+    const Material material = editedMaterial(state);
     const BrdfModelInfo& model = brdfModel(material.model);
     ImGui::Text("Model: %s", std::string(model.name).c_str());
     ImGui::SameLine();

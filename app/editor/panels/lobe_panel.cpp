@@ -121,14 +121,15 @@ void drawLobePanel(EditorState& state) {
 
     // The three specular terms against theta_out, from the shared code.
     ImGui::BeginGroup();
-    const shader::SurfaceMaterial m = surfaceMaterial(state.scene.material);
+    const Material edited = editedMaterial(state);
+    const shader::SurfaceMaterial m = surfaceMaterial(edited);
     const float inRadians = glm::radians(lobe.thetaInDegrees);
     const glm::vec3 N(0, 0, 1), L(std::sin(inRadians), 0, std::cos(inRadians));
     float d[kLobeSamples], g[kLobeSamples], f[kLobeSamples];
     for (int i = 0; i < kLobeSamples; ++i) {
         const float out = glm::radians(-90.0f + 180.0f * float(i) / float(kLobeSamples - 1));
         const glm::vec3 V(std::sin(out), 0, std::cos(out));
-        const shader::SpecularTerms t = specularTerms(state.scene.material.model, m, N, V, L);
+        const shader::SpecularTerms t = specularTerms(edited.model, m, N, V, L);
         const float NoV = std::max(glm::dot(N, V), shader::MIN_N_DOT_V), NoL = std::max(glm::dot(N, L), 0.0f);
         d[i] = t.D;
         g[i] = t.Vis * 4.0f * NoL * NoV;   // G = V * 4 NoL NoV

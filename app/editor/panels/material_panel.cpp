@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <imgui.h>
 
 #include "shading/brdf_models.h"
@@ -63,11 +65,12 @@ void drawAdvanced(EditorState& state) {
     ImGui::TextDisabled("The viewport shows the render's CPU and GPU time.");
 
     // What the shader derives from the four parameters (shaders/shared/brdf.glsl), guards included.
-    const shader::SurfaceMaterial derived = surfaceMaterial(material);
+    const Material edited = editedMaterial(state);
+    const shader::SurfaceMaterial derived = surfaceMaterial(edited);
     ImGui::TextDisabled("Derived");
     ImGui::Text("alpha = r^2       %.5f", double(derived.alpha));
     ImGui::Text("k = (r+1)^2 / 8   %.5f", double(shader::k_Karis(derived.roughness)));
-    if (derived.roughness != material.roughness) {
+    if (derived.roughness != edited.roughness) {
         ImGui::TextDisabled("roughness floored at %.3f (D is 0/0 at r = 0)", double(derived.roughness));
     }
     ImGui::PopTextWrapPos();
@@ -78,12 +81,9 @@ void drawAdvanced(EditorState& state) {
 }
 }  // namespace
 
-void drawMaterialPanel(EditorState& state) {
-    Material& material = state.scene.material;
-    const Material defaults;
-    const Material& file = state.savedMaterial;   // as opened or last saved
-    inputString("Name", &material.name);
-    recordItem("Material name", "The material's name, saved in its file and shown in captions");
+namespace {
+// The four factors, each with its reset to `file` (as opened or last saved) and to `defaults`.
+void drawFactors(Material& material, const Material& file, const Material& defaults) {
     // The label above: beside the field it left the three numbers too little room to be read.
     ImGui::TextUnformatted("Base colour (sRGB)");
     ImGui::SetNextItemWidth(widthBesideReset(""));
@@ -97,6 +97,53 @@ void drawMaterialPanel(EditorState& state) {
                     &material.specular, 0.0f, 1.0f, file.specular, defaults.specular);
     sliderWithReset("Metallic", "0: a dielectric (plastic, stone); 1: a metal, whose reflection takes the base colour",
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
+}
+
+// A model's materials: which one the panel edits (its factors; each multiplies its map, as
+// glTF defines), named with the maps it uses.
+void drawModelMaterial(EditorState& state) {
+    const int count = modelMaterialCount(state);
+    int& selected = state.selectedModelMaterial;
+    selected = std::clamp(selected, 0, count - 1);
+    auto label = [&](int i) { return std::to_string(i) + ": " + state.model->materials[size_t(i)].name; };
+    if (ImGui::BeginCombo("Part", label(selected).c_str())) {
+        for (int i = 0; i < count; ++i) {
+            if (ImGui::Selectable(label(i).c_str(), i == selected)) {
+                selected = i;
+            }
+            if (ImGui::IsItemHovered()) {
+                const std::string maps = mapsOf(state, i);
+                ImGui::SetTooltip("%s", maps.empty() ? "Factors only, no texture maps" : ("Maps: " + maps).c_str());
+            }
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Model material", "Which of the model's materials the sliders, presets and A/B edit");
+    const std::string maps = mapsOf(state, selected);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
+                                           : ("Maps: " + maps + ". Each factor multiplies its map").c_str());
+    ImGui::PopTextWrapPos();
+    Material material = modelMaterial(state, state.scene, selected);
+    const Material before = material;
+    Scene untuned = state.scene;
+    untuned.modelMaterials.clear();
+    drawFactors(material, modelMaterial(state, state.savedScene, selected), modelMaterial(state, untuned, selected));
+    if (material != before) {
+        setModelMaterial(state, state.scene, selected, material);
+    }
+}
+}  // namespace
+
+void drawMaterialPanel(EditorState& state) {
+    if (modelMaterialCount(state) > 0) {
+        drawModelMaterial(state);
+    } else {
+        Material& material = state.scene.material;
+        inputString("Name", &material.name);
+        recordItem("Material name", "The material's name, saved in its file and shown in captions");
+        drawFactors(material, state.savedMaterial, Material());
+    }
 
     ImGui::SetNextItemOpen(state.showAdvanced);
     state.showAdvanced = ImGui::CollapsingHeader("Advanced");

@@ -58,7 +58,8 @@ void openScreenshotFolder(EditorState& state) {
 }
 
 void saveAsPresetDialog(EditorState& state) {
-    std::string name = state.scene.material.name.empty() ? "material" : state.scene.material.name;
+    const std::string edited = editedMaterial(state).name;
+    std::string name = edited.empty() ? "material" : edited;
     std::replace(name.begin(), name.end(), '/', '_');
     startPathDialog(state, EditorState::PathDialog::SavePreset, state.userPresetFolder / (name + ".json"));
 }
