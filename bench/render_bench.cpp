@@ -23,6 +23,7 @@
 #include "gltf/import.h"
 #include "geometry/hidden_faces.h"
 #include "geometry/mesh.h"
+#include "geometry/tangents.h"
 #include "bench/brdf_floor.h"
 #include "io/temporary_folder.h"
 #include "bench/timing.h"
@@ -241,6 +242,57 @@ void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, 
     }
 }
 
+// A textured asset's frame against the same asset untextured, each path: the default scene's
+// sphere with spherical UVs, MikkTSpace tangents and five 1024 x 1024 maps (base colour,
+// metallic-roughness, normal, occlusion, emissive), drawn as a one-item model; untextured, the
+// same model whose material has no maps.
+void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                     RenderBenchResult& result) {
+    Mesh sphere = *builtinMesh(MeshKind::Sphere);
+    for (const glm::vec3& n : sphere.normals) {
+        sphere.uv0.push_back({std::atan2(n.z, n.x) / (2.0f * std::numbers::pi_v<float>) + 0.5f,
+                              std::acos(std::clamp(n.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>});
+    }
+    Model textured;
+    textured.primitives = {withTangents(std::move(sphere), 0)};
+    const int side = options.quick ? 256 : 1024;
+    ModelMaterial material;
+    material.factors = defaultScene().material;
+    material.emissiveFactor = glm::vec3(0.1f);
+    int image = 0;
+    for (TextureSlot* slot : {&material.baseColor, &material.metallicRoughness, &material.normal, &material.occlusion,
+                              &material.emissive}) {
+        ModelImage pixels{"map", side, side, std::vector<uint8_t>(size_t(side) * size_t(side) * 4)};
+        for (size_t i = 0; i < pixels.rgba.size(); ++i) {
+            pixels.rgba[i] = uint8_t((i * 2654435761u) >> 24 | 0x80);   // a busy, bright pattern
+        }
+        textured.images.push_back(std::move(pixels));
+        slot->image = image++;
+    }
+    textured.materials = {material};
+    textured.draws = {{0, 0, glm::mat4(1.0f), "sphere"}};
+    Model plain = textured;
+    plain.materials[0] = ModelMaterial{};
+    plain.materials[0].factors = material.factors;
+    plain.images.clear();
+    const Scene scene = analyticDefaultScene();
+    const auto texturedModel = std::make_shared<const Model>(std::move(textured));
+    const auto plainModel = std::make_shared<const Model>(std::move(plain));
+    const auto mesh = std::make_shared<const Mesh>(texturedModel->primitives[0]);
+    for (const RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        RenderSettings variant = settings;
+        variant.path = path;
+        // One model a series: a model change uploads its images again, which is loading, not drawing.
+        for (const auto& [name, model] : {std::pair{"textured", texturedModel}, std::pair{"untextured", plainModel}}) {
+            const PreparedScene prepared{scene, mesh, nullptr, model};
+            const std::vector<FrameTiming> times = interleavedMedians(renderer, prepared, {variant}, options.runs);
+            result.scaleRows.push_back({name, settings.width, settings.height,
+                                        texturedModel->primitives[0].indices.size() / 3, times[0],
+                                        std::string(renderPathName(path))});
+        }
+    }
+}
+
 // Export a big sphere as GLB and time importing it (what opening a heavy model costs).
 void measureGltfLoad(const RenderBenchOptions& options, RenderBenchResult& result) {
     const Mesh mesh = sphereOfAbout(options.quick ? 40'000 : 1'000'000);
@@ -440,6 +492,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     measureCulling(renderer, options, settings, result);
     measureEnvironment(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
+    measureTextured(renderer, options, settings, result);
     measureGltfLoad(options, result);
     measurePrefilter(options, result);
     return result;

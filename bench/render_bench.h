@@ -54,7 +54,9 @@ struct LightCountRow {
 };
 
 struct ScaleRow {
-    std::string axis;     // "resolution", "triangles", "flat-lights", "culling" or "environment"
+    // "resolution", "triangles", "flat-lights", "culling", "environment", or "textured" and
+    // "untextured" (a sphere with five maps, and without, as a model; path by path)
+    std::string axis;
     int width = 0, height = 0;
     size_t triangles = 0;
     FrameTiming time;     // the default scene's three lights

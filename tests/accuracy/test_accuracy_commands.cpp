@@ -121,6 +121,10 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "environment single-environment-stochastic-16 "}) {
         EXPECT_EQ(perSeries[series], 1) << series;
     }
+    for (const char* path : {"single", "multi", "specialised"}) {   // a textured asset against itself untextured
+        EXPECT_EQ(perSeries[std::string("textured ") + path + " "], 1) << path;
+        EXPECT_EQ(perSeries[std::string("untextured ") + path + " "], 1) << path;
+    }
     const std::string targets = read("render_targets.csv");
     for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
                                "single's cost per added point light /",
