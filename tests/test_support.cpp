@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include "assets/prepare_scene.h"
+#include "scene/view.h"
 
 #include <fstream>
 
@@ -78,6 +79,16 @@ Mesh facingQuad(float halfWidth, float halfHeight) {
     quad.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
     quad.indices = {0, 1, 2, 0, 2, 3};
     return quad;
+}
+
+glm::vec3 pixel(const HdrImage& image, int x, int y) {
+    const size_t i = (size_t(y) * size_t(image.width) + size_t(x)) * 3;
+    return {image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
+}
+
+glm::ivec2 pixelOf(const Camera& camera, glm::vec3 point, int width, int height) {
+    const glm::vec4 clip = viewProjection(camera, float(width) / float(height)) * glm::vec4(point, 1.0f);
+    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(width)), int((0.5f - clip.y / clip.w * 0.5f) * float(height))};
 }
 
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples) {

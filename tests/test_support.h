@@ -38,6 +38,11 @@ std::shared_ptr<const Environment> madeEnvironment(const std::string& source);
 // facing +z (counter-clockwise seen from there).
 Mesh facingQuad(float halfWidth, float halfHeight);
 
+// Pixel (x, y) of `image` (rows top first), and the pixel `point` lands in seen by `camera` in a
+// width x height image.
+glm::vec3 pixel(const HdrImage& image, int x, int y);
+glm::ivec2 pixelOf(const Camera& camera, glm::vec3 point, int width, int height);
+
 // Default settings but for the image size, path and MSAA samples.
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples);
 

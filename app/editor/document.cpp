@@ -191,18 +191,14 @@ void setModelMaterial(const Document& document, Scene& scene, int index, Materia
     scene.modelMaterials.push_back({index, std::move(material)});
 }
 
-std::string mapsOf(const Document& document, int index) {
-    const ModelMaterial& material = document.model->materials.at(size_t(index));
-    std::string maps;
-    for (const auto& [slot, name] : {std::pair{&material.baseColor, "base colour"},
-                                     std::pair{&material.metallicRoughness, "metallic-roughness"},
-                                     std::pair{&material.normal, "normal"}, std::pair{&material.occlusion, "occlusion"},
-                                     std::pair{&material.emissive, "emissive"}}) {
-        if (slot->present()) {
-            maps += (maps.empty() ? "" : ", ") + std::string(name);
+std::string mapNames(const Document& document, int index) {
+    std::string names;
+    for (const auto& map : mapsOf(document.model->materials.at(size_t(index)))) {
+        if (map.slot->present()) {
+            names += (names.empty() ? "" : ", ") + std::string(map.name);
         }
     }
-    return maps;
+    return names;
 }
 
 }  // namespace patina::editor

@@ -89,6 +89,6 @@ Material modelMaterial(const Document& document, const Scene& scene, int index);
 // file's: the key), made or replaced.
 void setModelMaterial(const Document& document, Scene& scene, int index, Material material);
 // "base colour, normal": the maps material `index` of the model uses; empty for none.
-std::string mapsOf(const Document& document, int index);
+std::string mapNames(const Document& document, int index);
 
 }  // namespace patina::editor

@@ -3,17 +3,6 @@
 namespace patina {
 
 namespace {
-// Which images a material reads, and as what: base colour and emissive are sRGB, the others
-// data (glTF 2.0 section 3.9.2-3.9.5).
-template <typename Visit>
-void forEachMap(const ModelMaterial& material, Visit&& visit) {
-    visit(material.baseColor, true);
-    visit(material.metallicRoughness, false);
-    visit(material.normal, false);
-    visit(material.occlusion, false);
-    visit(material.emissive, true);
-}
-
 GLuint uploadImage(const ModelImage& image, bool srgb) {
     GLuint id = 0;
     glGenTextures(1, &id);
@@ -66,13 +55,13 @@ void ModelTextures::upload(std::shared_ptr<const Model> shown) {
     }
     const Model& model = *model_;
     for (const ModelMaterial& material : model.materials) {
-        forEachMap(material, [&](const TextureSlot& slot, bool srgb) {
-            const bool usable = slot.present() && size_t(slot.image) < model.images.size() &&
-                                !model.images[size_t(slot.image)].rgba.empty();
-            if (usable && !textures_.count({slot.image, srgb})) {
-                textures_[{slot.image, srgb}] = uploadImage(model.images[size_t(slot.image)], srgb);
+        for (const auto& [slot, srgb, name] : mapsOf(material)) {
+            const bool usable = slot->present() && size_t(slot->image) < model.images.size() &&
+                                !model.images[size_t(slot->image)].rgba.empty();
+            if (usable && !textures_.count({slot->image, srgb})) {
+                textures_[{slot->image, srgb}] = uploadImage(model.images[size_t(slot->image)], srgb);
             }
-        });
+        }
     }
 }
 

@@ -8,18 +8,6 @@ namespace {
 constexpr const char* kSamplerNames[kSurfaceMapCount] = {"uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",
                                                          "uOcclusionMap", "uEmissiveMap"};
 
-// Each map's slot, and whether its texels are sRGB (base colour and emissive, glTF 2.0 3.9.2-3).
-struct MapSlot {
-    const TextureSlot* slot;
-    bool srgb;
-};
-std::array<MapSlot, kSurfaceMapCount> slotsOf(const ModelMaterial& material) {
-    return {{{&material.baseColor, true},
-             {&material.metallicRoughness, false},
-             {&material.normal, false},
-             {&material.occlusion, false},
-             {&material.emissive, true}}};
-}
 }  // namespace
 
 SurfaceMapUniforms::SurfaceMapUniforms(const GlProgram& program, int firstUnit)
@@ -39,10 +27,10 @@ void SurfaceMapUniforms::set(const SceneDraw& draw, ModelTextures& textures) con
     rotationSet.fill(glm::vec2(0.0f, -1.0f));   // no map
     const ModelMaterial* material = draw.maps;
     if (material) {
-        const std::array<MapSlot, kSurfaceMapCount> slots = slotsOf(*material);
+        const auto maps = mapsOf(*material);
         for (int map = 0; map < kSurfaceMapCount; ++map) {
-            const TextureSlot& slot = *slots[size_t(map)].slot;
-            if (textures.bind(firstUnit_ + map, slot, slots[size_t(map)].srgb)) {
+            const TextureSlot& slot = *maps[size_t(map)].slot;
+            if (textures.bind(firstUnit_ + map, slot, maps[size_t(map)].srgb)) {
                 placement[size_t(map)] = glm::vec4(slot.transform.offset, slot.transform.scale);
                 rotationSet[size_t(map)] = glm::vec2(slot.transform.rotation, float(slot.texCoord));
             }

@@ -14,7 +14,7 @@ namespace patina {
 
 // The maps in surface_maps.glsl's order; each on texture unit firstUnit + its index.
 enum class SurfaceMap { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive };
-inline constexpr int kSurfaceMapCount = 5;
+inline constexpr int kSurfaceMapCount = kMapCount;   // model/model.h's mapsOf order
 
 // Looked up once per program (a model may have thousands of items); a program without the maps
 // (or the depth pre-pass, which reads only the base colour's alpha) ignores what it lacks.

@@ -12,26 +12,22 @@ namespace patina {
 
 namespace {
 
-std::array<TextureSlot*, 5> mapsOf(ModelMaterial& material) {
-    return {&material.baseColor, &material.metallicRoughness, &material.normal, &material.occlusion, &material.emissive};
-}
-
 // Only the images a material uses are decoded; the slots then point into Model::images (or
 // lose their map when the image could not be had).
 void attachImages(const tinygltf::Model& document, Model& model, const std::string& source) {
     std::vector<bool> used(document.images.size(), false);
     for (ModelMaterial& material : model.materials) {
-        for (TextureSlot* slot : mapsOf(material)) {
-            if (slot->present()) {
-                used[size_t(slot->image)] = true;
+        for (const auto& map : mapsOf(material)) {
+            if (map.slot->present()) {
+                used[size_t(map.slot->image)] = true;
             }
         }
     }
     const std::vector<int> decoded = gltf::decodeImages(document, used, model, source);
     for (ModelMaterial& material : model.materials) {
-        for (TextureSlot* slot : mapsOf(material)) {
-            if (slot->present()) {
-                slot->image = decoded[size_t(slot->image)];
+        for (const auto& map : mapsOf(material)) {
+            if (map.slot->present()) {
+                map.slot->image = decoded[size_t(map.slot->image)];
             }
         }
     }

@@ -2,7 +2,9 @@
 // A loaded model: its primitives, materials, images and where each primitive is drawn (glTF 2.0
 // sections 3.5-3.9). What the assets layer loads and the renderer draws; the scene document
 // names the file and holds the user's edits, never this.
+#include <array>
 #include <cstdint>
+#include <type_traits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,6 +59,26 @@ struct ModelMaterial {
     bool doubleSided = false;
     bool operator==(const ModelMaterial&) const = default;
 };
+
+// A material's five maps in their one order (the shaders' too: surface_maps.glsl), each with
+// whether its texels are sRGB (base colour and emissive; the others are data, glTF 2.0
+// 3.9.2-3.9.3) and its name for people.
+template <typename Slot>
+struct MapOf {
+    Slot* slot;
+    bool srgb;
+    const char* name;
+};
+inline constexpr int kMapCount = 5;
+template <typename Material>   // ModelMaterial or const ModelMaterial
+auto mapsOf(Material& material) {
+    using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
+    return std::array<MapOf<Slot>, kMapCount>{{{&material.baseColor, true, "base colour"},
+                                               {&material.metallicRoughness, false, "metallic-roughness"},
+                                               {&material.normal, false, "normal"},
+                                               {&material.occlusion, false, "occlusion"},
+                                               {&material.emissive, true, "emissive"}}};
+}
 
 // One primitive placed once: glTF node world matrix times the mesh's primitive. `material` < 0
 // draws glTF's default material (white, metallic 1, roughness 1).

@@ -5,29 +5,16 @@
 
 namespace patina {
 
-namespace {
-// Each map's slot and whether its texels are sRGB (glTF 2.0 3.9.2-3.9.3), as ModelTextures
-// uploads them.
-template <typename Visit>
-void forEachMap(const ModelMaterial& material, Visit&& visit) {
-    visit(material.baseColor, true);
-    visit(material.metallicRoughness, false);
-    visit(material.normal, false);
-    visit(material.occlusion, false);
-    visit(material.emissive, true);
-}
-}  // namespace
-
 MapTextures::MapTextures(const Model& model) {
     for (const ModelMaterial& material : model.materials) {
-        forEachMap(material, [&](const TextureSlot& slot, bool srgb) {
-            const bool usable = slot.present() && size_t(slot.image) < model.images.size() &&
-                                !model.images[size_t(slot.image)].rgba.empty();
-            if (usable && !textures_.count({slot.image, srgb})) {
-                const ModelImage& image = model.images[size_t(slot.image)];
-                textures_[{slot.image, srgb}] = linearTexture(image.rgba.data(), image.width, image.height, srgb);
+        for (const auto& [slot, srgb, name] : mapsOf(material)) {
+            const bool usable = slot->present() && size_t(slot->image) < model.images.size() &&
+                                !model.images[size_t(slot->image)].rgba.empty();
+            if (usable && !textures_.count({slot->image, srgb})) {
+                const ModelImage& image = model.images[size_t(slot->image)];
+                textures_[{slot->image, srgb}] = linearTexture(image.rgba.data(), image.width, image.height, srgb);
             }
-        });
+        }
     }
 }
 

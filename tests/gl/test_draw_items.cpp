@@ -88,15 +88,9 @@ void onEveryPath(Check&& check) {
     }
 }
 
-glm::vec3 pixel(const HdrImage& image, int x, int y) {
-    const size_t i = (size_t(y) * size_t(image.width) + size_t(x)) * 3;
-    return {image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
-}
-
 // Where `point` lands in the image (rows top first).
 glm::ivec2 pixelOf(const Scene& scene, glm::vec3 point) {
-    const glm::vec4 clip = viewProjection(scene.camera, float(kWidth) / float(kHeight)) * glm::vec4(point, 1.0f);
-    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(kWidth)), int((0.5f - clip.y / clip.w * 0.5f) * float(kHeight))};
+    return test::pixelOf(scene.camera, point, kWidth, kHeight);
 }
 
 bool near(glm::vec3 a, glm::vec3 b, float relative) {
@@ -115,7 +109,7 @@ double agreement(const HdrImage& render, const PixelSurfaces& surfaces, const Re
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
             if (surfaces.sampleOfPixel[size_t(y * kWidth + x)] >= 0) {
-                agreeing += near(pixel(render, x, y), pixel(reference.value, x, y), 2e-3f);
+                agreeing += near(test::pixel(render, x, y), test::pixel(reference.value, x, y), 2e-3f);
             }
         }
     }
@@ -155,11 +149,11 @@ TEST(DrawItems, EachItemShowsWhereItIsWithItsOwnMaterialOnEveryPath) {
     const glm::ivec2 left = pixelOf(scene, {-1.1f, 0.0f, 0.8f}), right = pixelOf(scene, {1.1f, 0.0f, 0.8f});
     onEveryPath([&](RenderPath path, int samples, const std::string& what) {
         const HdrImage render = renderer.render(prepared, test::renderSettings(kWidth, kHeight, path, samples)).hdr;
-        const glm::vec3 red = pixel(render, left.x, left.y), blue = pixel(render, right.x, right.y);
+        const glm::vec3 red = test::pixel(render, left.x, left.y), blue = test::pixel(render, right.x, right.y);
         EXPECT_GT(red.r, 2.0f * red.b) << what;
         EXPECT_GT(blue.b, 2.0f * blue.r) << what;
-        EXPECT_TRUE(near(red, pixel(reference.value, left.x, left.y), 2e-3f)) << what;
-        EXPECT_TRUE(near(blue, pixel(reference.value, right.x, right.y), 2e-3f)) << what;
+        EXPECT_TRUE(near(red, test::pixel(reference.value, left.x, left.y), 2e-3f)) << what;
+        EXPECT_TRUE(near(blue, test::pixel(reference.value, right.x, right.y), 2e-3f)) << what;
         // Without MSAA every pixel the ground truth sees (MSAA shades off the pixel centre).
         if (samples == 1) {
             EXPECT_GT(agreement(render, surfaces, reference), 0.97) << what;
@@ -194,7 +188,7 @@ TEST(DrawItems, AMirroredItemStillShowsItsFrontFaces) {
             int same = 0;
             for (int y = 0; y < kHeight; ++y) {
                 for (int x = 0; x < kWidth; ++x) {
-                    same += near(pixel(shownMirrored, x, y), pixel(shown, x, y), 2e-2f);
+                    same += near(test::pixel(shownMirrored, x, y), test::pixel(shown, x, y), 2e-2f);
                 }
             }
             EXPECT_GT(same, kWidth * kHeight * 97 / 100) << what;
@@ -232,15 +226,15 @@ TEST(DrawItems, OnlyADoubleSidedItemShowsItsBack) {
                 int drawn = 0;
                 for (int y = 0; y < kHeight; ++y) {
                     for (int x = 0; x < kWidth; ++x) {
-                        drawn += !near(pixel(render, x, y), scene.display.background, 1e-5f);
+                        drawn += !near(test::pixel(render, x, y), scene.display.background, 1e-5f);
                     }
                 }
                 EXPECT_EQ(drawn, 0) << what << ": only background";
                 return;
             }
-            const glm::vec3 seen = pixel(render, centre.x, centre.y);
+            const glm::vec3 seen = test::pixel(render, centre.x, centre.y);
             EXPECT_GT(seen.g, 0.2f) << what << ": lit from its back";
-            EXPECT_TRUE(near(seen, pixel(reference.value, centre.x, centre.y), 2e-3f)) << what;
+            EXPECT_TRUE(near(seen, test::pixel(reference.value, centre.x, centre.y), 2e-3f)) << what;
             if (samples == 1) {
                 EXPECT_GT(agreement(render, surfaces, reference), 0.97) << what;
             }
@@ -280,11 +274,11 @@ TEST(DrawItems, ABlendedItemIsOverWhatIsBehindIt) {
         const HdrImage behind = renderer.render(preparedWith(scene, backOnly), settings).hdr;
         const HdrImage over = renderer.render(preparedWith(scene, frontOnly), settings).hdr;
         const glm::vec3 expected =
-            0.75f * pixel(behind, overQuad.x, overQuad.y) + 0.25f * pixel(over, overQuad.x, overQuad.y);
-        EXPECT_TRUE(near(pixel(blended, overQuad.x, overQuad.y), expected, 1e-3f)) << what;
+            0.75f * test::pixel(behind, overQuad.x, overQuad.y) + 0.25f * test::pixel(over, overQuad.x, overQuad.y);
+        EXPECT_TRUE(near(test::pixel(blended, overQuad.x, overQuad.y), expected, 1e-3f)) << what;
         const glm::vec3 overColour =
-            0.75f * scene.display.background + 0.25f * pixel(over, overBackground.x, overBackground.y);
-        EXPECT_TRUE(near(pixel(blended, overBackground.x, overBackground.y), overColour, 1e-3f))
+            0.75f * scene.display.background + 0.25f * test::pixel(over, overBackground.x, overBackground.y);
+        EXPECT_TRUE(near(test::pixel(blended, overBackground.x, overBackground.y), overColour, 1e-3f))
             << what << ": over the background";
     });
 }

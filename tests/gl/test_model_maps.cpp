@@ -72,15 +72,9 @@ std::shared_ptr<const Model> oneQuad(const Mesh& mesh, const ModelMaterial& mate
     return std::make_shared<const Model>(std::move(model));
 }
 
-glm::vec3 pixel(const HdrImage& image, int x, int y) {
-    const size_t i = (size_t(y) * size_t(image.width) + size_t(x)) * 3;
-    return {image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]};
-}
-
 // Where `point` lands in the image (rows top first).
 glm::ivec2 pixelOf(const Scene& scene, glm::vec3 point) {
-    const glm::vec4 clip = viewProjection(scene.camera, float(kWidth) / float(kHeight)) * glm::vec4(point, 1.0f);
-    return {int((clip.x / clip.w * 0.5f + 0.5f) * float(kWidth)), int((0.5f - clip.y / clip.w * 0.5f) * float(kHeight))};
+    return test::pixelOf(scene.camera, point, kWidth, kHeight);
 }
 
 float largestRelativeError(glm::vec3 actual, glm::vec3 expected) {
@@ -107,7 +101,7 @@ protected:
                 const HdrImage a = render(scene, mapped, path, samples), b = render(scene, expected, path, samples);
                 for (const glm::vec3& point : points) {
                     const glm::ivec2 at = pixelOf(scene, point);
-                    EXPECT_LE(largestRelativeError(pixel(a, at.x, at.y), pixel(b, at.x, at.y)), tolerance)
+                    EXPECT_LE(largestRelativeError(test::pixel(a, at.x, at.y), test::pixel(b, at.x, at.y)), tolerance)
                         << what << ", " << renderPathName(path) << ", " << samples << " samples, at " << at.x << " "
                         << at.y;
                 }
@@ -190,7 +184,7 @@ TEST_F(ModelMaps, OcclusionDarkensTheHemisphereLightOnly) {
         for (RenderPath path : kPaths) {
             const HdrImage a = render(lit, model, path, 1), b = render(lit, plain, path, 1);
             const glm::ivec2 at = pixelOf(lit, {0.2f, 0.1f, 0.0f});
-            EXPECT_LE(largestRelativeError(pixel(a, at.x, at.y), pixel(b, at.x, at.y) * expected), 1e-3f)
+            EXPECT_LE(largestRelativeError(test::pixel(a, at.x, at.y), test::pixel(b, at.x, at.y) * expected), 1e-3f)
                 << lightTypeName(kept) << ", " << renderPathName(path);
         }
     }
@@ -211,7 +205,7 @@ TEST_F(ModelMaps, EmissionIsAddedOnceOnEveryPath) {
         for (int samples : {1, 4}) {
             const HdrImage a = render(scene, model, path, samples), b = render(scene, plain, path, samples);
             const glm::ivec2 at = pixelOf(scene, {0.3f, -0.2f, 0.0f});
-            EXPECT_LE(largestRelativeError(pixel(a, at.x, at.y) - pixel(b, at.x, at.y), emitted), 1e-2f)   // sRGB
+            EXPECT_LE(largestRelativeError(test::pixel(a, at.x, at.y) - test::pixel(b, at.x, at.y), emitted), 1e-2f)   // sRGB
                 << renderPathName(path) << ", " << samples << " samples";
         }
     }
@@ -235,8 +229,8 @@ TEST_F(ModelMaps, MaskCutsOutThePixelsBelowTheCutoff) {
             const HdrImage shown = render(scene, model, path, samples);
             const glm::ivec2 kept = pixelOf(scene, {-0.5f, 0.2f, 0.0f}), cut = pixelOf(scene, {0.5f, 0.2f, 0.0f});
             const std::string what = std::string(renderPathName(path)) + ", " + std::to_string(samples) + " samples";
-            EXPECT_LE(largestRelativeError(pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f) << what;
-            EXPECT_GT(largestRelativeError(pixel(shown, kept.x, kept.y), scene.display.background), 0.1f) << what;
+            EXPECT_LE(largestRelativeError(test::pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f) << what;
+            EXPECT_GT(largestRelativeError(test::pixel(shown, kept.x, kept.y), scene.display.background), 0.1f) << what;
         }
     }
 }
@@ -299,7 +293,7 @@ TEST_F(ModelMaps, TheGroundTruthShadesTheSameMapsAsTheGpu) {
         int covered = 0, agreeing = 0, cut = 0;
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
-                const glm::vec3 a = pixel(shown, x, y), b = pixel(reference.value, x, y);
+                const glm::vec3 a = test::pixel(shown, x, y), b = test::pixel(reference.value, x, y);
                 if (surfaces.sampleOfPixel[size_t(y * kWidth + x)] < 0) {
                     cut += pixelOf(scene, {-0.9f, -0.9f, 0.0f}).x < x && x < pixelOf(scene, {0.9f, 0.9f, 0.0f}).x &&
                            pixelOf(scene, {0.9f, 0.9f, 0.0f}).y < y && y < pixelOf(scene, {-0.9f, -0.9f, 0.0f}).y;

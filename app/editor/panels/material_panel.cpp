@@ -112,14 +112,14 @@ void drawModelMaterial(EditorState& state) {
                 selected = i;
             }
             if (ImGui::IsItemHovered()) {
-                const std::string maps = mapsOf(state, i);
+                const std::string maps = mapNames(state, i);
                 ImGui::SetTooltip("%s", maps.empty() ? "Factors only, no texture maps" : ("Maps: " + maps).c_str());
             }
         }
         ImGui::EndCombo();
     }
     recordItem("Model material", "Which of the model's materials the sliders, presets and A/B edit");
-    const std::string maps = mapsOf(state, selected);
+    const std::string maps = mapNames(state, selected);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
                                            : ("Maps: " + maps + ". Each factor multiplies its map").c_str());
