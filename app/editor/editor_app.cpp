@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -32,6 +33,15 @@ namespace {
 struct WindowInput {
     std::vector<std::filesystem::path> droppedFiles;
     KeyPresses keyPresses;
+    // ImGui 1.86 reads each key's state once a frame (io.KeysDown): a key pressed and released
+    // between two frames was never seen, so under a slow frame (a large model, a software
+    // rasteriser) Ctrl+A in a field went missing and the typed digits were appended. A release
+    // of a key pressed since the last frame waits for the next one.
+    std::vector<int> pressedSinceFrame;
+    struct Release {
+        int key, scancode, mods;
+    };
+    std::vector<Release> heldReleases;
 };
 
 WindowInput& inputOf(GLFWwindow* window) {
@@ -43,6 +53,36 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
         inputOf(window).keyPresses.push_back(
             {key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
+    }
+}
+
+// Installed over ImGui's (after it), so it sees every key first; ImGui's then calls onKey.
+void onKeyForImGui(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    WindowInput& input = inputOf(window);
+    if (action == GLFW_PRESS) {
+        input.pressedSinceFrame.push_back(key);
+    } else if (action == GLFW_RELEASE &&
+               std::find(input.pressedSinceFrame.begin(), input.pressedSinceFrame.end(), key) !=
+                   input.pressedSinceFrame.end()) {
+        input.heldReleases.push_back({key, scancode, mods});
+        return;
+    }
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+
+// NewFrame has read the keys: a release from now on is of a key some frame has seen down.
+void keysRead(GLFWwindow* window) {
+    inputOf(window).pressedSinceFrame.clear();
+}
+
+// After the frame (never inside one: ImGui checks that the modifiers stay as NewFrame read
+// them), the releases held back reach ImGui for the next frame.
+void releaseHeldKeys(GLFWwindow* window) {
+    WindowInput& input = inputOf(window);
+    const std::vector<WindowInput::Release> releases = std::move(input.heldReleases);
+    input.heldReleases.clear();
+    for (const WindowInput::Release& release : releases) {
+        ImGui_ImplGlfw_KeyCallback(window, release.key, release.scancode, GLFW_RELEASE, release.mods);
     }
 }
 
@@ -110,6 +150,9 @@ struct Loop {
     SettingsWriter settingsWriter;
     FrameStats stats;
     const char* layoutDump = std::getenv("PATINA_UI_LAYOUT");
+    // Automation's aid too: every frame this much slower, as a heavy model on a software
+    // rasteriser makes it (the window tests check that no key is lost then).
+    const int frameDelayMs = std::clamp(std::atoi(std::getenv("PATINA_FRAME_DELAY_MS") ? std::getenv("PATINA_FRAME_DELAY_MS") : "0"), 0, 2000);
     std::string title{};   // the window's, as last set
     int framesLeft = kFramesAfterInput;
     float appliedScale = 0.0f;   // none yet
@@ -175,6 +218,7 @@ void drawFrame(Loop& loop) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    keysRead(loop.window);
     // Each panel catches its own errors (drawGuarded); this is the last resort for anything
     // between them, with ImGui's stacks closed so the frame still ends cleanly.
     try {
@@ -184,6 +228,7 @@ void drawFrame(Loop& loop) {
         loop.state.error = error.what();
     }
     ImGui::Render();
+    releaseHeldKeys(loop.window);
     int width = 0, height = 0;
     glfwGetFramebufferSize(loop.window, &width, &height);
     glViewport(0, 0, width, height);
@@ -233,6 +278,9 @@ void runSession(Loop& loop) {
         takeInput(loop);
         followUiScale(loop);
         drawFrame(loop);
+        if (loop.frameDelayMs > 0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(loop.frameDelayMs));
+        }
         loop.stats.frameDone(
             std::chrono::duration<double, std::milli>(FrameStats::Clock::now() - frameStart).count(),
             ImGui::IsAnyItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
@@ -267,6 +315,7 @@ int runEditor(const EditorOptions& options) {
     glfwSetDropCallback(window, onDrop);
     glfwSetKeyCallback(window, onKey);
     startImGui(window);
+    glfwSetKeyCallback(window, onKeyForImGui);
     {
         EditorServices services(state.assets);
         openFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
