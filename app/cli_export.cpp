@@ -2,6 +2,7 @@
 
 #include "cli.h"
 #include "gltf/export.h"
+#include "gltf/model_export.h"
 #include "io/file_kinds.h"
 #include "io/input_error.h"
 #include "inputs.h"
@@ -11,13 +12,15 @@ namespace patina::cli {
 Command addExportCommand(CLI::App& app) {
     struct Options {
         SceneInputs inputs;
-        std::string mesh = "sphere", out;
+        std::string mesh, out;
         bool binFile = false;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand("export", "Write a mesh with a material as glTF 2.0 (.gltf or .glb)");
-    options->inputs.addOptions(*command, false);
-    command->add_option("--mesh", options->mesh, "sphere, torus, or a .gltf/.glb file to take the triangles from");
+    CLI::App* command = app.add_subcommand(
+        "export", "Write a mesh with a material, or a glTF model with its tuned materials, as glTF 2.0 (.gltf or .glb)");
+    options->inputs.addOptions(*command);
+    command->add_option("--mesh", options->mesh,
+                        "sphere, torus, or a .gltf/.glb model (default: the scene's mesh)");
     command->add_option("--out", options->out, "Output .gltf or .glb")
         ->required()
         ->check(CLI::Validator(
@@ -27,18 +30,26 @@ Command addExportCommand(CLI::App& app) {
             "F.gltf|F.glb"));
     command->add_flag("--bin", options->binFile, "With .gltf: the buffer in F.bin beside it, not a data: URI");
     return [options] {
-        const Material material = options->inputs.load().material;
-        // The triangles as every command loads them: a built-in's, or the glTF file's.
-        Scene source;
+        Scene scene = options->inputs.load();
         if (const auto kind = meshKindFromName(options->mesh)) {
-            source.mesh = *kind;
-        } else {
-            source.meshFile = options->mesh;
+            scene.mesh = *kind;
+            scene.meshFile.clear();
+        } else if (!options->mesh.empty()) {
+            scene.meshFile = options->mesh;
         }
+        const GltfBuffer buffer = options->binFile ? GltfBuffer::BinFile : GltfBuffer::Embedded;
         AssetCache assets;
-        const std::shared_ptr<const Mesh> mesh = assets.mesh(source);
         try {
-            exportGltf(options->out, *mesh, material, options->binFile ? GltfBuffer::BinFile : GltfBuffer::Embedded);
+            if (scene.meshFile.empty()) {
+                options->inputs.putMaterialOnParts(scene, nullptr);   // refuses a --part
+                exportGltf(options->out, *assets.mesh(scene), scene.material, buffer);
+            } else {
+                // The whole model: every part with its maps, as the scene tunes it.
+                const std::shared_ptr<const Model> model = assets.drawnModel(scene.meshFile);
+                printWarnings(model->notes);   // what the import left out stays out of the export
+                options->inputs.putMaterialOnParts(scene, model.get());
+                exportGltfModel(options->out, tunedModel(*model, scene), buffer);
+            }
         } catch (const InputError&) {
             throw;
         } catch (const std::runtime_error& error) {

@@ -93,9 +93,10 @@ Command addRenderCommand(CLI::App& app) {
         if (!options->reference) {
             context.emplace();
         }
-        const Scene scene = options->inputs.load();
+        Scene scene = options->inputs.load();
         AssetCache assets;
         const PreparedScene prepared = SceneInputs::prepare(scene, assets);
+        options->inputs.putMaterialOnParts(scene, prepared.model.get());   // `prepared` reads `scene`
         if (options->reference) {
             const RenderOutput output =
                 renderReferenceImage(prepared, options->width, options->height, options->referenceSamples);

@@ -14,7 +14,7 @@ namespace patina::cli {
 
 Command addSheetCommand(CLI::App& app) {
     struct Options {
-        std::string scenePath, out;
+        std::string scenePath, out, part;
         std::vector<std::string> materials;
         int columns = 4, size = 256;
     };
@@ -27,6 +27,8 @@ Command addSheetCommand(CLI::App& app) {
     command->add_option("--size", options->size, "Width and height of each cell")
         ->check(CLI::Range(1, 4096));
     command->add_option("--scene", options->scenePath, "Scene JSON (default: the embedded scene)");
+    command->add_option("--part", options->part,
+                        "With a glTF model: each material on the parts of this material name only (default: every part)");
     return [options] {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
@@ -60,7 +62,7 @@ Command addSheetCommand(CLI::App& app) {
                 png.emplace(sheet->image());
             }
         };
-        renderMaterials(prepared, materials, options->size, options->size, [&](LdrImage&& cell) {
+        renderMaterials(prepared, materials, {options->size, options->size, options->part}, [&](LdrImage&& cell) {
             take();
             sheet->add(cell);
             png->rowsReady(sheet->finishedRows());

@@ -22,6 +22,9 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene) {
         command.add_option("--scene", scenePath, "Scene JSON (default: the embedded scene)");
     }
     command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
+    command.add_option("--part", part,
+                       "With --material and a glTF model: the material on the parts of this name only "
+                       "(default: every part)");
     command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
 }
 
@@ -47,6 +50,21 @@ PreparedScene SceneInputs::prepare(const Scene& scene, AssetCache& assets) {
     PreparedScene prepared = prepareScene(scene, assets, warnings);
     printWarnings(warnings);
     return prepared;
+}
+
+void SceneInputs::putMaterialOnParts(Scene& scene, const Model* model) const {
+    if (!part.empty() && (materialPath.empty() || !model)) {
+        throw InputError("--part names a part of a glTF model and needs --material" +
+                         std::string(model ? "" : " and a scene or --mesh that is a model"));
+    }
+    if (materialPath.empty() || !model) {
+        return;
+    }
+    try {
+        setPartMaterials(scene, *model, scene.material, part);
+    } catch (const std::invalid_argument& error) {
+        throw InputError("--part: " + std::string(error.what()));
+    }
 }
 
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {

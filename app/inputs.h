@@ -14,6 +14,7 @@ struct SceneInputs {
     std::string scenePath;
     std::string materialPath;
     std::string model;   // empty: the material's own
+    std::string part;    // --part: with --material over a model, only the parts of this name
 
     void addOptions(CLI::App& command, bool withScene = true);
     // The scene file (or the embedded default) with --material over its material and --model
@@ -23,6 +24,10 @@ struct SceneInputs {
     // `scene` with its mesh and environment loaded through `assets` (assets/prepare_scene.h),
     // for the commands that draw it. Warnings go to stderr; errors throw InputError.
     static PreparedScene prepare(const Scene& scene, AssetCache& assets);
+    // --material over `model` (the scene's, null for a built-in mesh): its factors on every
+    // part, or on --part's, as the scene's edits of them (setPartMaterials). InputError for a
+    // --part the model lacks, or given without --material or without a model.
+    void putMaterialOnParts(Scene& scene, const Model* model) const;
 };
 
 // "warning: ..." on stderr, one a line.

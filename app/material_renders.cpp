@@ -3,6 +3,7 @@
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
 #include "inputs.h"
+#include "io/input_error.h"
 
 namespace patina::cli {
 
@@ -16,30 +17,51 @@ std::vector<Material> loadMaterials(const std::vector<std::string>& paths) {
     return materials;
 }
 
-void renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials, int width, int height,
-                     const std::function<void(LdrImage&&)>& each) {
+namespace {
+// `scene` with `material` where the command puts it: the built-in meshes' material, and over a
+// model its parts' (every part, or `part`'s).
+void putMaterial(Scene& scene, const PreparedScene& prepared, const Material& material, const std::string& part) {
+    scene.material = material;
+    scene.modelMaterials = prepared.scene.modelMaterials;
+    if (!prepared.model) {
+        if (!part.empty()) {
+            throw InputError("--part names a part of a glTF model, and the scene's mesh is a built-in one");
+        }
+        return;
+    }
+    try {
+        setPartMaterials(scene, *prepared.model, material, part);
+    } catch (const std::invalid_argument& error) {
+        throw InputError("--part: " + std::string(error.what()));
+    }
+}
+}  // namespace
+
+void renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials,
+                     const MaterialRenders& options, const std::function<void(LdrImage&&)>& each) {
+    Scene scene = prepared.scene;
+    if (!materials.empty()) {
+        putMaterial(scene, prepared, materials.front(), options.part);   // a bad --part fails here, before any render
+    }
     HeadlessContext context;
     Renderer renderer;
-    Scene scene = prepared.scene;
     RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
+    settings.width = options.width;
+    settings.height = options.height;
     // The same image as single or multi to rounding, faster: materials of one scene share one
     // or two compiled shaders (with and without diffuse). Only the sRGB image is needed.
     settings.path = RenderPath::Specialised;
     settings.readHdr = false;
     for (const Material& material : materials) {
-        scene.material = material;   // the mesh and the environment stay: loaded once for all
-        // Each material over the whole shape: a model's flattened mesh without its draw items,
-        // whose own materials would hide the one compared.
-        each(renderer.render({scene, prepared.mesh, prepared.environment, nullptr}, settings).ldr);
+        putMaterial(scene, prepared, material, options.part);   // the mesh and the environment stay: loaded once for all
+        each(renderer.render({scene, prepared.mesh, prepared.environment, prepared.model}, settings).ldr);
     }
 }
 
 std::vector<LdrImage> renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials,
-                                      int width, int height) {
+                                      const MaterialRenders& options) {
     std::vector<LdrImage> images;
-    renderMaterials(prepared, materials, width, height, [&](LdrImage&& image) { images.push_back(std::move(image)); });
+    renderMaterials(prepared, materials, options, [&](LdrImage&& image) { images.push_back(std::move(image)); });
     return images;
 }
 

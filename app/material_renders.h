@@ -14,10 +14,17 @@ namespace patina::cli {
 std::vector<Material> loadMaterials(const std::vector<std::string>& paths);
 
 // The prepared scene once per material, all with one headless context and one compiled
-// renderer, each image handed to `each` as it is read back.
-void renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials, int width, int height,
-                     const std::function<void(LdrImage&&)>& each);
+// renderer, each image handed to `each` as it is read back. Over a model each material goes on
+// every part, or on the parts named `part` (setPartMaterials: each keeps its maps), the others
+// as the scene has them. InputError, before anything is rendered, for a `part` that the scene
+// has no model for or that its model lacks.
+struct MaterialRenders {
+    int width = 512, height = 512;
+    std::string part;
+};
+void renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials,
+                     const MaterialRenders& options, const std::function<void(LdrImage&&)>& each);
 std::vector<LdrImage> renderMaterials(const PreparedScene& prepared, const std::vector<Material>& materials,
-                                      int width, int height);
+                                      const MaterialRenders& options);
 
 }  // namespace patina::cli

@@ -1,7 +1,6 @@
 #include "gltf/export.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 
 #include <glm/common.hpp>
@@ -10,7 +9,6 @@
 #include "gltf/import.h"
 #include "gltf/material.h"
 #include "io/input_error.h"
-#include "io/file_bytes.h"
 
 namespace patina {
 
@@ -24,20 +22,6 @@ constexpr int kArrayBuffer = 34962;     // bufferView targets
 constexpr int kElementArrayBuffer = 34963;
 
 
-// A file name as a URI path: everything but RFC 3986's unreserved characters percent-encoded.
-std::string uriOfFileName(const std::string& name) {
-    static const char hex[] = "0123456789ABCDEF";
-    std::string uri;
-    for (const unsigned char c : name) {
-        if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
-            uri += char(c);
-        } else {
-            uri += {'%', hex[c >> 4], hex[c & 15]};
-        }
-    }
-    return uri;
-}
-
 template <typename T>
 void append(std::vector<uint8_t>& bin, const std::vector<T>& values) {
     const size_t offset = bin.size();
@@ -48,22 +32,6 @@ void append(std::vector<uint8_t>& bin, const std::vector<T>& values) {
 Json vec3Json(const glm::vec3& v) { return Json::array({double(v.x), double(v.y), double(v.z)}); }
 
 }  // namespace
-
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string text;
-    text.reserve((bytes.size() + 2) / 3 * 4);
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        const size_t n = std::min<size_t>(3, bytes.size() - i);
-        uint32_t group = uint32_t(bytes[i]) << 16;
-        group |= n > 1 ? uint32_t(bytes[i + 1]) << 8 : 0;
-        group |= n > 2 ? uint32_t(bytes[i + 2]) : 0;
-        for (size_t k = 0; k < 4; ++k) {
-            text += k <= n ? digits[(group >> (18 - 6 * k)) & 63] : '=';
-        }
-    }
-    return text;
-}
 
 std::vector<OutputFile> encodeGltf(const fs::path& path, const Mesh& mesh, const Material& material,
                                    GltfBuffer buffer) {
@@ -131,20 +99,7 @@ std::vector<OutputFile> encodeGltf(const fs::path& path, const Mesh& mesh, const
 }
 
 void exportGltf(const fs::path& path, const Mesh& mesh, const Material& material, GltfBuffer buffer) {
-    const std::vector<OutputFile> files = encodeGltf(path, mesh, material, buffer);
-    std::vector<fs::path> written;
-    try {
-        for (const OutputFile& file : files) {
-            writeFileAtomic(file.path, file.bytes);
-            written.push_back(file.path);
-        }
-    } catch (...) {
-        for (const fs::path& done : written) {
-            std::error_code ignored;
-            fs::remove(done, ignored);
-        }
-        throw;
-    }
+    writeOutputFiles(encodeGltf(path, mesh, material, buffer));
 }
 
 }  // namespace patina

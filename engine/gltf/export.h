@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gltf/output_files.h"
 #include "scene/material.h"
 #include "geometry/mesh.h"
 
@@ -13,20 +14,12 @@ namespace patina {
 // Where a .gltf keeps its buffer. A .glb always holds it in its BIN chunk.
 enum class GltfBuffer { Embedded, BinFile };   // a base64 data: URI, or PATH.bin beside it
 
-struct OutputFile {
-    std::filesystem::path path;
-    std::vector<uint8_t> bytes;
-};
-
 // The files of PATH: a .glb, or a .gltf and with BinFile its .bin. One node, one mesh of one
 // indexed triangle primitive (POSITION, NORMAL), one pbrMetallicRoughness material with
 // KHR_materials_specular and KHR_materials_ior (gltf_material.h). InputError for a path that
 // ends in neither .gltf nor .glb, or an empty mesh.
 std::vector<OutputFile> encodeGltf(const std::filesystem::path& path, const Mesh& mesh,
                                    const Material& material, GltfBuffer buffer = GltfBuffer::Embedded);
-
-// RFC 4648 base64, as a data: URI holds its bytes.
-std::string base64(const std::vector<uint8_t>& bytes);
 
 // Writes encodeGltf's files, each atomically, the .bin first; if one cannot be written, those
 // written before it are removed again. Throws std::runtime_error naming the path.

@@ -58,6 +58,34 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
 }
 }  // namespace
 
+Model tunedModel(const Model& model, const Scene& scene) {
+    Model tuned = model;
+    for (size_t i = 0; i < tuned.materials.size(); ++i) {
+        tuned.materials[i].factors = factorsOf(scene, int(i), tuned.materials[i]);
+    }
+    return tuned;
+}
+
+void setPartMaterials(Scene& scene, const Model& model, const Material& material, const std::string& part) {
+    bool found = false;
+    std::string names;
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        const std::string& name = model.materials[i].name;
+        names += (i ? ", \"" : "\"") + name + "\"";
+        if (!part.empty() && name != part) {
+            continue;
+        }
+        found = true;
+        ModelMaterialEdit edit{int(i), material, Json::object()};
+        edit.material.name = name;
+        std::erase_if(scene.modelMaterials, [&](const ModelMaterialEdit& old) { return old.index == int(i); });
+        scene.modelMaterials.push_back(std::move(edit));
+    }
+    if (!found && !model.materials.empty()) {
+        throw std::invalid_argument("the model has no part \"" + part + "\" (its parts: " + names + ")");
+    }
+}
+
 bool hasMaps(const ModelMaterial& material) {
     return material.baseColor.present() || material.metallicRoughness.present() || material.normal.present() ||
            material.occlusion.present() || material.emissive.present() || material.emissiveFactor != glm::vec3(0.0f);

@@ -72,4 +72,15 @@ MaterialParameters defaultModelMaterial();
 // material the model lacks.
 std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared);
 
+// `model` as the scene tunes it: each material with an edit in Scene::modelMaterials (matched
+// by index and name, as sceneDraws matches them) takes the edit's factors; its maps, alpha,
+// emission and the rest stay the file's. What an export of the scene's model writes.
+Model tunedModel(const Model& model, const Scene& scene);
+
+// `material`'s factors (not its name) on the parts of `model` whose material is named `part`,
+// or on every part when `part` is empty, as the scene's edits of them (Scene::modelMaterials;
+// each part keeps its name and maps): what a material named on the command line does to a
+// model. Throws std::invalid_argument listing the parts when none is named `part`.
+void setPartMaterials(Scene& scene, const Model& model, const Material& material, const std::string& part = {});
+
 }  // namespace patina

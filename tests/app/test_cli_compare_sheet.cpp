@@ -12,6 +12,8 @@
 #include "image/image.h"
 #include "scratch_test.h"
 #include "io/file_bytes.h"
+#include "io/json_writer.h"
+#include "io/scene_file.h"
 
 namespace patina {
 namespace {
@@ -117,6 +119,43 @@ TEST_F(CompareAndSheet, CompareUsesTheGivenScene) {
     const Rgb corner = at(image("g.png"), 1, 1);
     EXPECT_EQ(corner.g, 255);
     EXPECT_EQ(corner.r, 0);
+}
+
+// Over a model each material goes on every part, keeping the part's maps (BoxTextured's
+// logo multiplies it), or on --part's alone; a part the model lacks is refused by name.
+TEST_F(CompareAndSheet, OnAModelTheMaterialsGoOnItsPartsWithTheirMaps) {
+    const fs::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!fs::exists(box)) {
+        GTEST_SKIP() << "needs Debian's assimp-testmodels";
+    }
+    Scene scene = defaultScene();   // lit: a scene file without lights is unlit
+    scene.meshFile = box.string();
+    write("box.json", prettyJson(sceneToJson(scene)));
+    const std::string pair = "compare " + path("red.json") + " " + path("blue.json") + " --scene " + path("box.json");
+    ASSERT_EQ(run(pair + " --width 64 --height 64 --out " + path("box.png")), 0) << errors_;
+    const LdrImage out = image("box.png");
+    const SheetLayout layout = sheetLayout(64, 64, 2, 2);
+    const Rgb left = at(out, layout.cellX(0) + 32, 32), right = at(out, layout.cellX(1) + 32, 32);
+    EXPECT_GT(left.r, left.b + 20);
+    EXPECT_GT(right.b, right.r + 20);
+    ASSERT_EQ(run(pair + " --part Texture --width 64 --height 64 --out " + path("part.png")), 0) << errors_;
+    EXPECT_EQ(image("part.png").rgba, out.rgba);   // the box's one part is every part
+
+    EXPECT_EQ(run(pair + " --part Wood --out " + path("wood.png")), 3);
+    EXPECT_NE(errors_.find("\"Texture\""), std::string::npos) << errors_;
+    EXPECT_EQ(run("sheet " + path("red.json") + " --part Texture --out " + path("sphere.png")), 3);
+    EXPECT_NE(errors_.find("built-in"), std::string::npos) << errors_;
+    EXPECT_FALSE(fs::exists(path("wood.png")));
+    EXPECT_FALSE(fs::exists(path("sphere.png")));
+
+    // render --material does the same to the scene's model.
+    ASSERT_EQ(run("render --scene " + path("box.json") + " --width 64 --height 64 --out " + path("own.png")), 0);
+    ASSERT_EQ(run("render --scene " + path("box.json") + " --material " + path("red.json") +
+                  " --width 64 --height 64 --out " + path("red.png")),
+              0);
+    const Rgb own = at(image("own.png"), 32, 32), red = at(image("red.png"), 32, 32);
+    EXPECT_GT(red.r, red.b + 20);
+    EXPECT_FALSE(own.r > own.b + 20) << "the box's own material is not red, so the check above can fail";
 }
 
 TEST_F(CompareAndSheet, SheetHasOneCaptionedCellPerMaterial) {

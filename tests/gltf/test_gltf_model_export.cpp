@@ -1,0 +1,263 @@
+// Whole-model export (engine/gltf/model_export.h, `patina export` of a model): the Khronos
+// validator finds no error and no warning, importing the export gives back every draw,
+// material, map and texel, renders the same image, and carries the scene's tuning.
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "cli_runner.h"
+#include "gltf/model_export.h"
+#include "gltf/model_import.h"
+#include "image/image.h"
+#include "io/file_bytes.h"
+#include "io/input_error.h"
+#include "io/json_writer.h"
+#include "io/scene_file.h"
+#include "model/placement.h"
+#include "scene/prepared_scene.h"
+#include "scratch_test.h"
+#include "validator.h"
+
+namespace patina {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kModels = "/usr/share/assimp/models/glTF2";
+
+void expectNear(const glm::mat4& a, const glm::mat4& b, const std::string& what) {
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            EXPECT_NEAR(a[c][r], b[c][r], 1e-5f * (1.0f + std::abs(a[c][r]))) << what << " [" << c << "][" << r << "]";
+        }
+    }
+}
+
+void expectSameSlot(const TextureSlot& a, const TextureSlot& b, const Model& modelA, const Model& modelB,
+                    const std::string& what) {
+    ASSERT_EQ(a.present(), b.present()) << what;
+    if (!a.present()) {
+        return;
+    }
+    EXPECT_EQ(a.texCoord, b.texCoord) << what;
+    EXPECT_EQ(a.sampler, b.sampler) << what;
+    EXPECT_NEAR(a.transform.offset.x, b.transform.offset.x, 1e-6f) << what;
+    EXPECT_NEAR(a.transform.offset.y, b.transform.offset.y, 1e-6f) << what;
+    EXPECT_NEAR(a.transform.scale.x, b.transform.scale.x, 1e-6f) << what;
+    EXPECT_NEAR(a.transform.scale.y, b.transform.scale.y, 1e-6f) << what;
+    EXPECT_NEAR(a.transform.rotation, b.transform.rotation, 1e-6f) << what;
+    const ModelImage& imageA = modelA.images[size_t(a.image)];
+    const ModelImage& imageB = modelB.images[size_t(b.image)];
+    EXPECT_EQ(imageA.width, imageB.width) << what;
+    EXPECT_EQ(imageA.height, imageB.height) << what;
+    EXPECT_TRUE(imageA.rgba == imageB.rgba) << what << ": the texels differ";
+}
+
+void expectSameMaterial(const ModelMaterial& a, const ModelMaterial& b, const Model& modelA, const Model& modelB) {
+    EXPECT_EQ(a.name, b.name);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a.factors.baseColor[i], b.factors.baseColor[i], 1e-6f) << a.name;
+        EXPECT_NEAR(a.emissiveFactor[i], b.emissiveFactor[i], 1e-5f * (1.0f + a.emissiveFactor[i])) << a.name;
+    }
+    EXPECT_NEAR(a.factors.roughness, b.factors.roughness, 1e-6f) << a.name;
+    EXPECT_NEAR(a.factors.metallic, b.factors.metallic, 1e-6f) << a.name;
+    EXPECT_NEAR(a.factors.specular, b.factors.specular, 1e-5f) << a.name;
+    EXPECT_NEAR(a.baseAlpha, b.baseAlpha, 1e-6f) << a.name;
+    EXPECT_NEAR(a.normalScale, b.normalScale, 1e-6f) << a.name;
+    EXPECT_NEAR(a.occlusionStrength, b.occlusionStrength, 1e-6f) << a.name;
+    EXPECT_EQ(a.alphaMode, b.alphaMode) << a.name;
+    EXPECT_NEAR(a.alphaCutoff, b.alphaCutoff, 1e-6f) << a.name;
+    EXPECT_EQ(a.doubleSided, b.doubleSided) << a.name;
+    const auto mapsA = mapsOf(a), mapsB = mapsOf(b);
+    for (int m = 0; m < kMapCount; ++m) {
+        expectSameSlot(*mapsA[size_t(m)].slot, *mapsB[size_t(m)].slot, modelA, modelB,
+                       a.name + ": " + mapsA[size_t(m)].name);
+    }
+}
+
+// What a draw shows: its triangles in world space with their attributes, and its material.
+void expectSameModel(const Model& a, const Model& b) {
+    ASSERT_EQ(a.materials.size(), b.materials.size());
+    for (size_t i = 0; i < a.materials.size(); ++i) {
+        expectSameMaterial(a.materials[i], b.materials[i], a, b);
+    }
+    ASSERT_EQ(a.draws.size(), b.draws.size());
+    for (size_t i = 0; i < a.draws.size(); ++i) {
+        const DrawItem& da = a.draws[i];
+        const DrawItem& db = b.draws[i];
+        const std::string what = "draw " + std::to_string(i) + " (" + da.node + ")";
+        EXPECT_EQ(da.node, db.node) << what;
+        EXPECT_EQ(da.material, db.material) << what;
+        EXPECT_EQ(da.mirrored, db.mirrored) << what;
+        expectNear(da.transform, db.transform, what);
+        const Mesh& ma = a.primitives[size_t(da.primitive)];
+        const Mesh& mb = b.primitives[size_t(db.primitive)];
+        EXPECT_EQ(ma.positions, mb.positions) << what;
+        EXPECT_EQ(ma.indices, mb.indices) << what;
+        EXPECT_EQ(ma.uv0, mb.uv0) << what;
+        EXPECT_EQ(ma.uv1, mb.uv1) << what;
+        ASSERT_EQ(ma.normals.size(), mb.normals.size()) << what;
+        for (size_t v = 0; v < ma.normals.size(); ++v) {
+            EXPECT_LT(glm::length(ma.normals[v] - mb.normals[v]), 1e-6f) << what << " vertex " << v;
+        }
+        ASSERT_EQ(ma.tangents.size(), mb.tangents.size()) << what;
+        for (size_t v = 0; v < ma.tangents.size(); ++v) {
+            if (ma.tangents[v].w != 0.0f) {   // a vertex without one gets any tangent: see validTangents
+                EXPECT_LT(glm::length(ma.tangents[v] - mb.tangents[v]), 1e-6f) << what << " vertex " << v;
+            }
+        }
+    }
+}
+
+class GltfModelExport : public test::ScratchTest {
+protected:
+    void SetUp() override {
+        test::ScratchTest::SetUp();
+        if (!fs::is_directory(kModels)) {
+            GTEST_SKIP() << "needs Debian's assimp-testmodels (" << kModels.string() << ")";
+        }
+    }
+    test::CliRun run(const std::string& arguments) const { return test::runPatina(arguments, dir_); }
+
+    // A scene file showing `model` in the default scene, with `edits`.
+    fs::path sceneOf(const fs::path& model, const std::string& name,
+                     const std::vector<ModelMaterialEdit>& edits = {}) const {
+        Scene scene = defaultScene();
+        scene.meshFile = model.string();
+        scene.modelMaterials = edits;
+        write(name, prettyJson(sceneToJson(scene)));
+        return path(name);
+    }
+    LdrImage render(const fs::path& scene, const std::string& out) const {
+        const test::CliRun result =
+            run("render --scene '" + scene.string() + "' --width 96 --height 96 --out " + path(out).string());
+        EXPECT_EQ(result.exitCode, 0) << result.stderrText;
+        return decodePng(readFileBytes(path(out)));
+    }
+};
+
+// Real models from other writers: every map, sampler and transform kind, a hierarchy of
+// matrices, JPEG images, images from a GLB and a data: URI, texCoord 1.
+const char* const kRealModels[] = {
+    "BoxTextured-glTF-Binary/BoxTextured.glb",
+    "BoxTextured-glTF-Embedded/BoxTextured.gltf",
+    "BoxTexcoords-glTF/boxTexcoords.gltf",
+    "textureTransform/TextureTransformTest.gltf",
+    "ClearCoat-glTF/ClearCoatTest.gltf",
+    "2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+};
+
+TEST_F(GltfModelExport, RealModelsComeBackWholeAndTheValidatorFindsNothing) {
+    for (const char* name : kRealModels) {
+        SCOPED_TRACE(name);
+        const Model model = importGltfModel(kModels / name);
+        for (const char* out : {"out.glb", "out.gltf"}) {
+            SCOPED_TRACE(out);
+            exportGltfModel(path(out), model);
+            test::expectValidGltf(path(out), dir_);
+            expectSameModel(model, importGltfModel(path(out)));
+        }
+    }
+}
+
+TEST_F(GltfModelExport, AGltfHasItsImagesBesideItAndItsBufferWhereAsked) {
+    const Model model = importGltfModel(kModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
+    exportGltfModel(path("box.gltf"), model, GltfBuffer::BinFile);
+    EXPECT_TRUE(fs::is_regular_file(path("box.bin")));
+    EXPECT_TRUE(fs::is_regular_file(path("box_0.png")));
+    EXPECT_EQ(decodePng(readFileBytes(path("box_0.png"))).rgba, model.images[0].rgba);
+    test::expectValidGltf(path("box.gltf"), dir_);
+    const std::vector<OutputFile> glb = encodeGltfModel(path("box.glb"), model);
+    ASSERT_EQ(glb.size(), 1u);   // the images inside it
+    EXPECT_THROW(encodeGltfModel(path("box.obj"), model), InputError);
+    EXPECT_THROW(encodeGltfModel(path("empty.glb"), Model{}), InputError);
+}
+
+// A node matrix must be a translation, rotation and scale (glTF 5.25): a shear is baked into
+// the vertices, which then stand where they stood, lit the same way.
+TEST_F(GltfModelExport, AShearIsBakedIntoTheVerticesAndAMirrorKeepsItsFrontFaces) {
+    Model model = importGltfModel(kModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
+    glm::mat4 shear(1.0f);
+    shear[1][0] = 0.5f;   // x += 0.5 y
+    model.draws = {model.draws[0], model.draws[0]};
+    model.draws[0].transform = shear;
+    model.draws[1].transform = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)) * shear;
+    model.draws[1].mirrored = true;
+    exportGltfModel(path("sheared.glb"), model);
+    test::expectValidGltf(path("sheared.glb"), dir_);
+    const Model back = importGltfModel(path("sheared.glb"));
+    ASSERT_EQ(back.draws.size(), 2u);
+    for (size_t d = 0; d < 2; ++d) {
+        const DrawItem& before = model.draws[d];
+        const DrawItem& after = back.draws[d];
+        EXPECT_EQ(after.transform, glm::mat4(1.0f));
+        EXPECT_FALSE(after.mirrored);   // the triangles are wound back instead
+        const Mesh& source = model.primitives[size_t(before.primitive)];
+        const Mesh& baked = back.primitives[size_t(after.primitive)];
+        ASSERT_EQ(baked.indices.size(), source.indices.size());
+        for (size_t t = 0; t < source.indices.size(); t += 3) {
+            // The same corners, and each face's front where it was: its world normal (the
+            // renderer's normal transform) on the side its winding now faces.
+            const uint32_t* s = &source.indices[t];
+            const uint32_t* b = &baked.indices[t];
+            const glm::vec3 p0 = baked.positions[b[0]], p1 = baked.positions[b[1]], p2 = baked.positions[b[2]];
+            const glm::vec3 facing = glm::cross(p1 - p0, p2 - p0);
+            const glm::vec3 normal = normalTransform(before.transform) * source.normals[s[0]];
+            EXPECT_GT(glm::dot(facing, normal), 0.0f) << "draw " << d << " triangle " << t / 3;
+            EXPECT_LT(glm::length(glm::vec3(before.transform * glm::vec4(source.positions[s[0]], 1.0f)) - p0), 1e-5f);
+            EXPECT_EQ(baked.uv0[b[0]], source.uv0[s[0]]);
+        }
+    }
+}
+
+// The command exports the scene's model with the scene's tuning, and --material puts a
+// material on every part or on --part's; importing the export renders the same image.
+TEST_F(GltfModelExport, TheCommandExportsTheTunedModelAndItRendersTheSame) {
+    const fs::path box = kModels / "BoxTextured-glTF-Binary/BoxTextured.glb";
+    const Model model = importGltfModel(box);
+    ModelMaterialEdit edit{0, Material{}, Json::object()};
+    edit.material.name = model.materials[0].name;
+    edit.material.baseColor = {0.25f, 0.5f, 1.0f};
+    edit.material.roughness = 0.125f;
+    edit.material.metallic = 0.75f;
+    const fs::path tuned = sceneOf(box, "tuned.json", {edit});
+    const test::CliRun exported = run("export --scene " + tuned.string() + " --out " + path("tuned.glb").string());
+    ASSERT_EQ(exported.exitCode, 0) << exported.stderrText;
+    test::expectValidGltf(path("tuned.glb"), dir_);
+    const Model back = importGltfModel(path("tuned.glb"));
+    EXPECT_EQ(back.materials[0].factors.baseColor, edit.material.baseColor);
+    EXPECT_EQ(back.materials[0].factors.roughness, 0.125f);
+    EXPECT_EQ(back.materials[0].factors.metallic, 0.75f);
+    EXPECT_TRUE(back.materials[0].baseColor.present());   // the tuned factors still multiply the map
+
+    // The export, shown in the same scene without the tuning, looks as the tuned original.
+    const LdrImage original = render(tuned, "original.png");
+    const LdrImage again = render(sceneOf(path("tuned.glb"), "again.json"), "again.png");
+    ASSERT_EQ(original.rgba.size(), again.rgba.size());
+    int largest = 0;
+    for (size_t i = 0; i < original.rgba.size(); ++i) {
+        largest = std::max(largest, std::abs(int(original.rgba[i]) - int(again.rgba[i])));
+    }
+    EXPECT_LE(largest, 1);
+    const LdrImage untuned = render(sceneOf(box, "untuned.json"), "untuned.png");
+    EXPECT_NE(untuned.rgba, original.rgba);   // the tuning shows, so the check above can fail
+
+    write("m.json", prettyJson(materialToJson(edit.material)));
+    const std::string material = " --material " + path("m.json").string();
+    ASSERT_EQ(run("export --mesh " + box.string() + material + " --out " + path("every.gltf").string()).exitCode, 0);
+    EXPECT_EQ(importGltfModel(path("every.gltf")).materials[0].factors.roughness, 0.125f);
+    EXPECT_EQ(run("export --mesh " + box.string() + material + " --part " + model.materials[0].name + " --out " +
+                  path("part.glb").string())
+                  .exitCode,
+              0);
+    const test::CliRun wrongPart =
+        run("export --mesh " + box.string() + material + " --part nothing --out " + path("x.glb").string());
+    EXPECT_EQ(wrongPart.exitCode, 3);
+    EXPECT_NE(wrongPart.stderrText.find(model.materials[0].name), std::string::npos) << wrongPart.stderrText;
+    EXPECT_EQ(run("export --part " + model.materials[0].name + " --out " + path("y.glb").string()).exitCode, 3);
+    EXPECT_FALSE(fs::exists(path("x.glb")));
+    EXPECT_FALSE(fs::exists(path("y.glb")));
+}
+
+}  // namespace
+}  // namespace patina
