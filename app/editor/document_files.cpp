@@ -1,13 +1,13 @@
 #include "document_files.h"
 
-#include "scene/light_rig.h"
-
 #include <optional>
 
 #include "editor_state.h"
 #include "assets/prepare_scene.h"
 #include "gltf/import.h"
+#include "gltf/model_export.h"
 #include "image/png_text.h"
+#include "io/file_kinds.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
 #include "scene/light_rig.h"
@@ -247,6 +247,27 @@ bool saveScene(EditorState& state, const std::filesystem::path& path) {
     state.error.clear();
     state.status = "Saved " + path.filename().string();
     rememberRecent(state, path);
+    return true;
+}
+
+bool exportGltfFile(EditorState& state, std::filesystem::path path) {
+    if (gltfExtension(path).empty()) {
+        path += ".glb";
+    }
+    try {
+        if (state.scene.meshFile.empty()) {
+            exportGltf(path, *builtinMesh(state.scene.mesh), state.scene.material);
+        } else if (state.model) {
+            exportGltfModel(path, tunedModel(*state.model, state.scene));
+        } else {
+            throw std::runtime_error("the model is still loading");
+        }
+    } catch (const std::exception& error) {
+        state.error = couldNotSave(path, error);
+        return false;
+    }
+    state.error.clear();
+    state.status = "Exported " + path.filename().string();
     return true;
 }
 

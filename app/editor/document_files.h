@@ -49,5 +49,10 @@ bool saveMaterial(EditorState& state, const std::filesystem::path& path);
 bool saveAsPreset(EditorState& state, const std::filesystem::path& path);
 // Saves the whole scene, material inline; the scene becomes the document. Same failure rules.
 bool saveScene(EditorState& state, const std::filesystem::path& path);
+// Exports what the viewport shows as glTF 2.0 (".glb" added when the name has neither .glb nor
+// .gltf): the model whole, its materials as tuned, with its maps (a .gltf's images beside it);
+// or the built-in mesh with the material. An export is no save: the document stays as it is.
+// On failure sets state.error and leaves no file behind.
+bool exportGltfFile(EditorState& state, std::filesystem::path path);
 
 }  // namespace patina::editor

@@ -26,7 +26,7 @@ struct Prompts {
         std::string newName;                        // typed in the Rename prompt
         std::string problem;                        // why the last try failed, said in its prompt
     } presets;
-    enum class PathDialog { None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison } pathDialog = PathDialog::None;
+    enum class PathDialog { None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison, ExportGltf } pathDialog = PathDialog::None;
     std::string pathDialogText;
 };
 

@@ -20,6 +20,8 @@
 #include "ui_scale.h"
 #include "widgets.h"
 #include "gltf/export.h"
+#include "gltf/import.h"
+#include "gltf/model_import.h"
 #include "io/json_writer.h"
 #include "scratch_test.h"
 #include "test_support.h"
@@ -684,6 +686,35 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_EQ(modelMaterialCount(state), 1);
     EXPECT_EQ(editedMaterial(state).roughness, 0.9f);
     EXPECT_FALSE(state.dirty());
+}
+
+// File > Export as glTF writes the model as tuned, maps and all, and is no save; a built-in
+// mesh goes with the material; a name without an extension becomes a .glb; a failure says so.
+TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone) {
+    Material gold;
+    gold.name = "model gold";
+    gold.roughness = 0.3f;
+    exportGltf(dir_ / "gold.glb", makeTorus(), gold);
+    ASSERT_TRUE(openFile(state, dir_ / "gold.glb")) << state.error;
+    Material edited = editedMaterial(state);
+    edited.roughness = 0.6f;
+    setEditedMaterial(state, state.scene, edited);
+    commitEdits(state);
+    const Scene before = state.scene;
+    ASSERT_TRUE(exportGltfFile(state, dir_ / "tuned")) << state.error;
+    EXPECT_EQ(state.status, "Exported tuned.glb");
+    const Model exported = importGltfModel(dir_ / "tuned.glb");
+    ASSERT_EQ(exported.materials.size(), 1u);
+    EXPECT_EQ(exported.materials[0].name, "model gold");
+    EXPECT_EQ(exported.materials[0].factors.roughness, 0.6f);
+    EXPECT_EQ(state.scene, before);
+    EXPECT_TRUE(state.dirty()) << "an export is no save";
+
+    newDocument(state);
+    ASSERT_TRUE(exportGltfFile(state, dir_ / "sphere.gltf")) << state.error;
+    EXPECT_EQ(importGltf(dir_ / "sphere.gltf").material->name, state.scene.material.name);
+    EXPECT_FALSE(exportGltfFile(state, dir_ / "no" / "such" / "x.glb"));
+    EXPECT_NE(state.error.find("x.glb"), std::string::npos) << state.error;
 }
 
 // A model of hundreds of units (2CylinderEngine's size) swallowed every point, sphere and tube

@@ -32,6 +32,7 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
     case EditorState::PathDialog::SaveSceneAs: saveScene(state, path); break;
     case EditorState::PathDialog::SavePreset: saveAsPreset(state, path); break;
     case EditorState::PathDialog::ExportComparison: services.exportComparison(state, path); break;
+    case EditorState::PathDialog::ExportGltf: exportGltfFile(state, path); break;
     case EditorState::PathDialog::None: break;
     }
 }
@@ -50,7 +51,13 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
         {".json"}};
     static const PathDialogKind exportComparison{
         "Export comparison", "Export A and B side by side, captioned, as a PNG:", "Export", {".png"}};
+    static const PathDialogKind exportGltf{
+        "Export as glTF",
+        "Export the model with its materials as tuned and its maps (or the built-in mesh with the material) as "
+        ".glb, or as .gltf with its images beside it:",
+        "Export", {".glb", ".gltf"}};
     switch (dialog) {
+    case EditorState::PathDialog::ExportGltf: return exportGltf;
     case EditorState::PathDialog::SaveAs: return saveMaterial;
     case EditorState::PathDialog::SaveSceneAs: return saveScene;
     case EditorState::PathDialog::SavePreset: return savePreset;

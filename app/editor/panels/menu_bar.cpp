@@ -65,6 +65,12 @@ void drawFileMenu(EditorState& state, EditorServices& services) {
     if (ImGui::MenuItem("Export comparison...", nullptr, false, state.compareA.has_value())) {
         startPathDialog(state, EditorState::PathDialog::ExportComparison, "comparison.png");
     }
+    if (ImGui::MenuItem("Export as glTF...")) {
+        const std::string stem = state.model ? std::filesystem::path(state.scene.meshFile).stem().string() : "material";
+        startPathDialog(state, EditorState::PathDialog::ExportGltf, stem + "-tuned.glb");
+    }
+    recordItem("Export as glTF...", "Write the model with its tuned materials and maps (or the built-in mesh with "
+                                    "the material) as .glb, or .gltf with its images beside it");
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) {
         state.pendingQuit = true;
