@@ -3,6 +3,7 @@
 // Writes render_bench.csv, render_targets.csv, render_lights.png and render_scale.png.
 #include <filesystem>
 #include <iostream>
+#include <thread>
 #include <memory>
 
 #include "child_process.h"
@@ -146,6 +147,12 @@ Command addBenchRenderCommand(CLI::App& app) {
         std::cout << "  glTF: " << result.gltfTriangles << " triangles (" << result.gltfBytes / 1e6
                   << " MB GLB) imported in " << result.gltfLoadSeconds << " s; its hidden faces found in "
                   << result.hiddenFacesSeconds << " s (" << (result.gltfClosed ? "closed" : "not closed") << ")\n";
+        for (const TexturedLoadRow& load : result.texturedLoads) {
+            std::cout << "  textured model, " << load.maps << " PNG map(s) of " << load.side << "x" << load.side
+                      << " (" << load.pngBytes / 1e6 << " MB): " << load.coldSeconds << " s cold, "
+                      << load.cachedSeconds << " s from the cache (decoded on up to "
+                      << std::thread::hardware_concurrency() << " cores)\n";
+        }
         std::cout << "  environment " << result.prefilterSource << " (cube faces of " << result.prefilterFaceSize
                   << "): ready in " << result.prefilterColdSeconds << " s with an empty cache, "
                   << result.prefilterWarmSeconds << " s from the disk cache\n";

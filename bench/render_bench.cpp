@@ -17,6 +17,7 @@
 #include "environment/builtin_environments.h"
 #include "environment/equirect.h"
 #include "gltf/export.h"
+#include "gltf/model_export.h"
 #include "image/environment_files.h"
 #include "assets/prepare_scene.h"
 #include "io/file_bytes.h"
@@ -242,38 +243,46 @@ void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, 
     }
 }
 
-// A textured asset's frame against the same asset untextured, each path: the default scene's
-// sphere with spherical UVs, MikkTSpace tangents and five 1024 x 1024 maps (base colour,
-// metallic-roughness, normal, occlusion, emissive), drawn as a one-item model; untextured, the
-// same model whose material has no maps.
-void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
-                     RenderBenchResult& result) {
+// The default scene's sphere with spherical UVs and MikkTSpace tangents, drawn once for each
+// material, with `images` maps of `side` x `side` busy pixels (the noise a PNG cannot shrink:
+// the most a decoder has to do) dealt out five a material, in mapsOf's order.
+Model texturedSphere(int side, int images) {
     Mesh sphere = *builtinMesh(MeshKind::Sphere);
     for (const glm::vec3& n : sphere.normals) {
         sphere.uv0.push_back({std::atan2(n.z, n.x) / (2.0f * std::numbers::pi_v<float>) + 0.5f,
                               std::acos(std::clamp(n.y, -1.0f, 1.0f)) / std::numbers::pi_v<float>});
     }
-    Model textured;
-    textured.primitives = {withTangents(std::move(sphere), 0)};
-    const int side = options.quick ? 256 : 1024;
-    ModelMaterial material;
-    material.factors = defaultScene().material;
-    material.emissiveFactor = glm::vec3(0.1f);
-    int image = 0;
-    for (TextureSlot* slot : {&material.baseColor, &material.metallicRoughness, &material.normal, &material.occlusion,
-                              &material.emissive}) {
-        ModelImage pixels{"map", side, side, std::vector<uint8_t>(size_t(side) * size_t(side) * 4)};
+    Model model;
+    model.primitives = {withTangents(std::move(sphere), 0)};
+    for (int image = 0; image < images; ++image) {
+        ModelImage pixels{"map " + std::to_string(image), side, side,
+                          std::vector<uint8_t>(size_t(side) * size_t(side) * 4)};
         for (size_t i = 0; i < pixels.rgba.size(); ++i) {
-            pixels.rgba[i] = uint8_t((i * 2654435761u) >> 24 | 0x80);   // a busy, bright pattern
+            pixels.rgba[i] = uint8_t(((i + size_t(image)) * 2654435761u) >> 24 | 0x80);   // busy and bright
         }
-        textured.images.push_back(std::move(pixels));
-        slot->image = image++;
+        model.images.push_back(std::move(pixels));
+        if (image % kMapCount == 0) {
+            ModelMaterial material;
+            material.factors = defaultScene().material;
+            material.emissiveFactor = glm::vec3(0.1f);
+            material.name = "part " + std::to_string(model.materials.size());
+            model.materials.push_back(material);
+            model.draws.push_back({0, int(model.materials.size()) - 1, glm::mat4(1.0f), material.name});
+        }
+        mapsOf(model.materials.back())[size_t(image % kMapCount)].slot->image = image;
     }
-    textured.materials = {material};
-    textured.draws = {{0, 0, glm::mat4(1.0f), "sphere"}};
+    return model;
+}
+
+// A textured asset's frame against the same asset untextured, each path: texturedSphere with
+// five 1024 x 1024 maps (base colour, metallic-roughness, normal, occlusion, emissive), drawn as
+// a one-item model; untextured, the same model whose material has no maps.
+void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                     RenderBenchResult& result) {
+    Model textured = texturedSphere(options.quick ? 256 : 1024, kMapCount);
     Model plain = textured;
     plain.materials[0] = ModelMaterial{};
-    plain.materials[0].factors = material.factors;
+    plain.materials[0].factors = textured.materials[0].factors;
     plain.images.clear();
     const Scene scene = analyticDefaultScene();
     const auto texturedModel = std::make_shared<const Model>(std::move(textured));
@@ -290,6 +299,41 @@ void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options,
                                         texturedModel->primitives[0].indices.size() / 3, times[0],
                                         std::string(renderPathName(path))});
         }
+    }
+}
+
+// Opening a textured model: texturedSphere with one map and with eight, 2048 x 2048 PNGs beside
+// a .gltf, loaded through a new AssetCache (cold: read, parse, decode, tangents) and again
+// through the same one (from the cache). Eight maps against one shows the decoding spread over
+// the cores.
+void measureTexturedLoad(const RenderBenchOptions& options, RenderBenchResult& result) {
+    const TemporaryFolder folder("patina-bench-textured");
+    const int side = options.quick ? 256 : 2048;
+    for (const int maps : {1, 8}) {
+        const std::filesystem::path file = folder.path() / ("maps" + std::to_string(maps) + ".gltf");
+        exportGltfModel(file, texturedSphere(side, maps));
+        TexturedLoadRow row{maps, side};
+        for (const std::filesystem::directory_entry& entry : std::filesystem::directory_iterator(folder.path())) {
+            if (entry.path().stem().string().starts_with(file.stem().string() + "_")) {
+                row.pngBytes += double(entry.file_size());
+            }
+        }
+        std::vector<double> cold, cached;
+        for (int run = 0; run < (options.quick ? 1 : 3); ++run) {
+            AssetCache assets;
+            Clock::time_point start = Clock::now();
+            const std::shared_ptr<const Model> model = assets.drawnModel(file);
+            cold.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+            start = Clock::now();
+            const std::shared_ptr<const Model> again = assets.drawnModel(file);
+            cached.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+            if (model->images.size() != size_t(maps) || again != model) {
+                throw std::runtime_error("the textured load bench's model did not load whole");
+            }
+        }
+        row.coldSeconds = median(cold);
+        row.cachedSeconds = median(cached);
+        result.texturedLoads.push_back(row);
     }
 }
 
@@ -494,6 +538,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     measureScale(renderer, mesh, options, settings, result);
     measureTextured(renderer, options, settings, result);
     measureGltfLoad(options, result);
+    measureTexturedLoad(options, result);
     measurePrefilter(options, result);
     return result;
 }

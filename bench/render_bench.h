@@ -68,6 +68,14 @@ struct ScaleRow {
     int lights = 3;       // the environment axis: 1
 };
 
+// Loading a model with `maps` PNG maps of side x side (medians, seconds).
+struct TexturedLoadRow {
+    int maps = 0, side = 0;
+    double pngBytes = 0.0;        // the image files' size
+    double coldSeconds = 0.0;     // through a new AssetCache
+    double cachedSeconds = 0.0;   // through the same one again
+};
+
 struct RenderBenchResult {
     std::vector<LightCountRow> lightRows;
     std::vector<ScaleRow> scaleRows;
@@ -84,6 +92,7 @@ struct RenderBenchResult {
     std::string prefilterSource;
     int prefilterFaceSize = 0;
     double prefilterColdSeconds = 0.0, prefilterWarmSeconds = 0.0;
+    std::vector<TexturedLoadRow> texturedLoads;   // one map, then eight
     std::string renderer;   // GL_RENDERER
     size_t flatLightSlots = 0;   // lights specialised takes as flat inputs (Renderer::flatLightSlots)
 };

@@ -1,5 +1,6 @@
 #include "gltf/images.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
 #include <memory>
@@ -7,6 +8,7 @@
 
 #include <stb_image.h>
 
+#include "common/parallel_for.h"
 #include "gltf/accessor.h"
 
 namespace patina::gltf {
@@ -26,10 +28,11 @@ std::string imageName(const tinygltf::Image& image, size_t index) {
     return !image.uri.empty() ? image.uri : !image.name.empty() ? image.name : "image " + std::to_string(index);
 }
 
-class ImageDecoder {
+// An image's size from its header, against the limits: why it cannot be had, or "". Run in
+// the images' order, so that the budget of decoded bytes goes to the first ones.
+class ImageBudget {
 public:
-    // Why the image cannot be had, or "" with `out` filled.
-    std::string decode(std::span<const uint8_t> bytes, ModelImage& out) {
+    std::string admit(std::span<const uint8_t> bytes, uint64_t& size) {
         if (!isPngOrJpeg(bytes)) {
             return "is neither PNG nor JPEG";
         }
@@ -44,22 +47,11 @@ public:
             return "is " + std::to_string(width) + " x " + std::to_string(height) + " pixels, over Patina's limit of " +
                    std::to_string(kGltfMaxImageSide) + " a side";
         }
-        const uint64_t size = uint64_t(width) * uint64_t(height) * 4;
+        size = uint64_t(width) * uint64_t(height) * 4;
         if (size > kGltfMaxImageBytes - decoded_) {
             return "would take the model's decoded images past Patina's limit of " +
                    std::to_string(kGltfMaxImageBytes >> 20) + " MiB";
         }
-        // Four channels asked for: grey, grey-alpha, RGB and palettes all become RGBA, 16 bits 8.
-        const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-            stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width, &out.height, &channels, 4),
-            stbi_image_free);
-        if (!pixels) {
-            return std::string("cannot be decoded: ") + stbi_failure_reason();
-        }
-        if (out.width != width || out.height != height) {
-            return "decodes to another size than its header gives";
-        }
-        out.rgba.assign(pixels.get(), pixels.get() + size);
         decoded_ += size;
         return "";
     }
@@ -68,32 +60,69 @@ private:
     uint64_t decoded_ = 0;
 };
 
+// Decodes an admitted image of `size` bytes decoded into `out`: why it failed, or "". Safe on
+// several threads at once (stb_image keeps its failure reason per thread).
+std::string decode(std::span<const uint8_t> bytes, uint64_t size, ModelImage& out) {
+    int channels = 0;
+    // Four channels asked for: grey, grey-alpha, RGB and palettes all become RGBA, 16 bits 8.
+    const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+        stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width, &out.height, &channels, 4),
+        stbi_image_free);
+    if (!pixels) {
+        return std::string("cannot be decoded: ") + stbi_failure_reason();
+    }
+    if (uint64_t(out.width) * uint64_t(out.height) * 4 != size) {
+        return "decodes to another size than its header gives";
+    }
+    out.rgba.assign(pixels.get(), pixels.get() + size);
+    return "";
+}
+
 }  // namespace
 
 std::vector<int> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used, Model& model,
                               const std::string& source) {
-    std::vector<int> indices(document.images.size(), -1);
-    ImageDecoder decoder;
+    struct Pending {
+        size_t index;
+        std::span<const uint8_t> bytes;
+        uint64_t size = 0;
+        ModelImage image;
+        std::string problem;
+    };
+    std::vector<Pending> pending;
+    ImageBudget budget;
     for (size_t i = 0; i < document.images.size(); ++i) {
         if (!used[i]) {
             continue;
         }
         const tinygltf::Image& image = document.images[i];
-        const std::string at = "/images/" + std::to_string(i);
         // loadDocument kept a file's or data: URI's bytes; a view's are checked here.
-        const std::span<const uint8_t> bytes =
-            image.bufferView != -1 ? bufferViewBytes(document, image.bufferView, source + ": " + at, source)
-                                   : std::span<const uint8_t>(image.image);
-        ModelImage decoded;
-        decoded.name = imageName(image, i);
-        const std::string problem = image.bufferView == -1 && !image.as_is ? "is not found in the model's folder"
-                                                                           : decoder.decode(bytes, decoded);
-        if (!problem.empty()) {
-            model.notes.push_back(at + " (" + decoded.name + "): " + problem + "; the maps that use it are left out");
+        Pending next;
+        next.index = i;
+        next.bytes = image.bufferView != -1 ? bufferViewBytes(document, image.bufferView,
+                                                              source + ": /images/" + std::to_string(i), source)
+                                            : std::span<const uint8_t>(image.image);
+        next.image.name = imageName(image, i);
+        next.problem = image.bufferView == -1 && !image.as_is ? "is not found in the model's folder"
+                                                               : budget.admit(next.bytes, next.size);
+        pending.push_back(std::move(next));
+    }
+    // The decoding, a model's slowest step, on every core: an image a thread.
+    const bool decoding = std::any_of(pending.begin(), pending.end(), [](const Pending& p) { return p.problem.empty(); });
+    parallelFor(decoding ? pending.size() : 0, [&](size_t k) {
+        if (pending[k].problem.empty()) {
+            pending[k].problem = decode(pending[k].bytes, pending[k].size, pending[k].image);
+        }
+    });
+    std::vector<int> indices(document.images.size(), -1);
+    for (Pending& image : pending) {
+        if (!image.problem.empty()) {
+            model.notes.push_back("/images/" + std::to_string(image.index) + " (" + image.image.name +
+                                  "): " + image.problem + "; the maps that use it are left out");
             continue;
         }
-        indices[i] = int(model.images.size());
-        model.images.push_back(std::move(decoded));
+        indices[image.index] = int(model.images.size());
+        model.images.push_back(std::move(image.image));
     }
     return indices;
 }
