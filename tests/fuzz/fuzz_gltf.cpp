@@ -1,7 +1,7 @@
 // glTF import of one model file, written for each input to PATINA_FUZZ_MODEL in a folder of
 // its own (the imports read files only, inside the model's folder): the flattened mesh
-// (importGltf) and the whole model (importGltfModel). Refusals are InputErrors; anything else,
-// or a result that breaks the import's promises, is a bug.
+// (importGltf) and the whole model (importGltfModel), exported again. Refusals are
+// InputErrors; anything else, or a result that breaks the import's promises, is a bug.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -12,6 +12,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "gltf/import.h"
+#include "gltf/model_export.h"
 #include "gltf/model_import.h"
 #include "geometry/hidden_faces.h"
 #include "io/input_error.h"
@@ -83,8 +84,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
     }
     try {
-        if (!wellFormed(patina::importGltfModel(modelPath()))) {
+        const patina::Model imported = patina::importGltfModel(modelPath());
+        if (!wellFormed(imported)) {
             std::abort();
+        }
+        // Whatever imports exports (its images as PNG too): the export refuses only a model
+        // with no triangles to draw.
+        try {
+            patina::encodeGltfModel("fuzz.glb", imported);
+        } catch (const patina::InputError&) {
         }
     } catch (const patina::InputError&) {
     }
