@@ -2,6 +2,7 @@
 #include <optional>
 
 #include "gl/environment_method.h"
+#include "part_picking.h"
 #include "gl/render_path.h"
 #include "scene/scene.h"
 
@@ -28,6 +29,7 @@ struct LobeSettings {
 struct Interaction {
     int selectedLight = 0;
     int selectedModelMaterial = 0;           // of the shown model: the one the Material panel edits
+    PartOutlineCachePtr partOutline;         // its outline, kept while the eye stays (part_picking.h)
     int soloLight = -1;                      // -1: all enabled lights
     RenderPath renderPath = RenderPath::Single;
 

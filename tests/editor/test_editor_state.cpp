@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "editor_settings.h"
@@ -21,7 +22,11 @@
 #include "widgets.h"
 #include "gltf/export.h"
 #include "gltf/import.h"
+#include "gltf/model_export.h"
 #include "gltf/model_import.h"
+#include "part_picking.h"
+#include "scene/camera_control.h"
+#include "scene/view.h"
 #include "io/json_writer.h"
 #include "scratch_test.h"
 #include "test_support.h"
@@ -715,6 +720,52 @@ TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone
     EXPECT_EQ(importGltf(dir_ / "sphere.gltf").material->name, state.scene.material.name);
     EXPECT_FALSE(exportGltfFile(state, dir_ / "no" / "such" / "x.glb"));
     EXPECT_NE(state.error.find("x.glb"), std::string::npos) << state.error;
+}
+
+// A click on a part selects its material for the Material panel; the selected part is
+// outlined, and its outline follows the eye.
+TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {
+    Model model;
+    model.primitives = {makeUvSphere(16, 32)};
+    for (const char* name : {"left", "right"}) {
+        ModelMaterial material;
+        material.name = name;
+        model.materials.push_back(material);
+    }
+    const glm::vec3 left(-1.2f, 0.0f, 0.0f), right(1.2f, 0.0f, 0.0f);
+    model.draws = {{0, 0, glm::translate(glm::mat4(1.0f), left), "left ball"},
+                   {0, 1, glm::translate(glm::mat4(1.0f), right), "right ball"}};
+    exportGltfModel(dir_ / "two.glb", model);
+    ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
+    ASSERT_EQ(state.selectedModelMaterial, 0);
+    const float aspect = 1.5f;
+    auto ndcOf = [&](glm::vec3 point) {   // where the framed camera shows a point
+        const glm::vec4 clip = viewProjection(state.scene.camera, aspect) * glm::vec4(point, 1.0f);
+        return glm::vec2(clip) / clip.w;
+    };
+    const std::vector<Segment> leftOutline = partOutline(state);
+    EXPECT_FALSE(leftOutline.empty());
+    for (const auto& [a, b] : leftOutline) {
+        EXPECT_LT(a.x, 0.0f);   // the left ball's
+    }
+    ASSERT_TRUE(pickPart(state, ndcOf(right), aspect));
+    EXPECT_EQ(state.selectedModelMaterial, 1);
+    EXPECT_EQ(editedMaterial(state).name, "right");
+    EXPECT_NE(state.status.find("\"right\" (right ball)"), std::string::npos) << state.status;
+    for (const auto& [a, b] : partOutline(state)) {
+        EXPECT_GT(a.x, 0.0f);
+    }
+    // Between the balls, nothing: the selection stays.
+    EXPECT_FALSE(pickPart(state, ndcOf(glm::vec3(0.0f, 1.5f, 0.0f)), aspect));
+    EXPECT_EQ(state.selectedModelMaterial, 1);
+    // Another eye, another outline.
+    const std::vector<Segment> before = partOutline(state);
+    orbitCamera(state.scene.camera, 0.0f, 0.8f);
+    EXPECT_NE(partOutline(state), before);
+    // No model, nothing to pick or outline.
+    newDocument(state);
+    EXPECT_FALSE(pickPart(state, glm::vec2(0.0f), aspect));
+    EXPECT_TRUE(partOutline(state).empty());
 }
 
 // A model of hundreds of units (2CylinderEngine's size) swallowed every point, sphere and tube

@@ -10,6 +10,8 @@
 #include <imgui.h>
 
 #include "scene/camera_control.h"
+#include "scene/view.h"
+#include "part_picking.h"
 #include "panels.h"
 #include "keys.h"
 #include "screenshot_comparison.h"
@@ -431,13 +433,53 @@ bool handleDivider(EditorState& state, const ViewArea& area, bool hovered) {
     return onDivider;
 }
 
-// The pointer over the picture: the divider first, then a light's gizmo, else the camera; F
-// frames the mesh.
+// The edited part of a model of several parts, outlined over the picture as the camera sees
+// it (with the gizmos: hidden with them, and not in Side by side, whose halves differ).
+void drawPartOutline(EditorState& state, const ViewArea& area) {
+    if (!state.model || modelMaterialCount(state) < 2 || !state.showGizmos ||
+        state.compareView == CompareView::SideBySide) {
+        return;
+    }
+    const glm::mat4 transform = viewProjection(state.scene.camera, area.size.x / area.size.y);
+    auto screen = [&](const glm::vec4& clip) {
+        return ImVec2(area.origin.x + (clip.x / clip.w + 1.0f) * 0.5f * area.size.x,
+                      area.origin.y + (1.0f - clip.y / clip.w) * 0.5f * area.size.y);
+    };
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(area.origin, ImVec2(area.origin.x + area.size.x, area.origin.y + area.size.y), true);
+    for (const auto& [a, b] : partOutline(state)) {
+        const glm::vec4 clipA = transform * glm::vec4(a, 1.0f), clipB = transform * glm::vec4(b, 1.0f);
+        if (clipA.w > 1e-4f && clipB.w > 1e-4f) {   // both in front of the eye
+            draw->AddLine(screen(clipA), screen(clipB), IM_COL32(255, 160, 40, 230), px(1.5f));
+        }
+    }
+    draw->PopClipRect();
+}
+
+// A left click (a press and release that did not drag) on the picture picks the model's part under
+// it, in the half it falls in when Side by side.
+void pickOnClick(EditorState& state, const ViewArea& area) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!state.model || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.KeyShift ||
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] > px(3.0f) * px(3.0f)) {
+        return;
+    }
+    float x = (io.MousePos.x - area.origin.x) / area.size.x, width = area.size.x;
+    if (state.compareA && state.compareView == CompareView::SideBySide) {
+        x = x < 0.5f ? 2.0f * x : 2.0f * x - 1.0f;
+        width *= 0.5f;
+    }
+    const float y = (io.MousePos.y - area.origin.y) / area.size.y;
+    pickPart(state, glm::vec2(2.0f * x - 1.0f, 1.0f - 2.0f * y), width / area.size.y);
+}
+
+// The pointer over the picture: the divider first, then a light's gizmo, else the camera; a
+// click picks a part; F frames the mesh.
 void handlePointer(EditorState& state, EditorServices& services, const ViewArea& area) {
     ImGui::SetCursorScreenPos(area.origin);
-    ImGui::InvisibleButton("viewport-input", area.size,
-                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
-                               ImGuiButtonFlags_MouseButtonRight);
+    const bool clicked = ImGui::InvisibleButton("viewport-input", area.size,
+                                                ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
+                                                    ImGuiButtonFlags_MouseButtonRight);
     recordItem("viewport");   // the whole picture, whichever parts of it A and B show
     const bool viewportActive = ImGui::IsItemActive();
     const bool viewportPressed = ImGui::IsItemActivated();
@@ -450,6 +492,9 @@ void handlePointer(EditorState& state, EditorServices& services, const ViewArea&
         handleCameraInput(state, area.size);
     } else if (hovered && ImGui::GetIO().MouseWheel != 0.0f) {
         dollyCamera(state.scene.camera, std::pow(0.9f, ImGui::GetIO().MouseWheel));
+    }
+    if (clicked && !gizmo && !onDivider) {
+        pickOnClick(state, area);
     }
     if (hovered && pressed(services.keyPresses, kKeyF) &&
         !ImGui::GetIO().WantTextInput) {
@@ -501,6 +546,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     services.viewportHeight = area.height;
     const Scene b = renderedScene(state);
     drawPictures(state, services, b, area);
+    drawPartOutline(state, area);
     handlePointer(state, services, area);
     if (state.compareA && state.compareView != CompareView::Single) {
         drawSideLabels(state, area.origin, area.size);

@@ -1,0 +1,74 @@
+#include "part_picking.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/matrix.hpp>
+
+#include "editor_state.h"
+#include "geometry/silhouette.h"
+#include "model/pick.h"
+#include "scene/view.h"
+
+namespace patina::editor {
+
+struct PartOutlineCache {
+    std::shared_ptr<const Model> model;
+    int material = -1;
+    std::vector<std::pair<glm::mat4, EdgeFaces>> draws;   // the part's draws: transform, edges
+    glm::vec3 eye{NAN};
+    std::vector<Segment> segments;
+};
+
+bool pickPart(EditorState& state, glm::vec2 ndc, float aspect) {
+    if (!state.model) {
+        return false;
+    }
+    // The ray through the pixel: its points on the near and far planes, back through the view.
+    const glm::mat4 inverse = glm::inverse(viewProjection(state.scene.camera, aspect));
+    const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f), farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 origin = glm::vec3(nearPoint) / nearPoint.w;
+    const DrawHit hit = firstDrawHit(*state.model, origin, glm::vec3(farPoint) / farPoint.w - origin);
+    if (hit.draw < 0) {
+        return false;
+    }
+    const DrawItem& item = state.model->draws[size_t(hit.draw)];
+    if (item.material < 0) {
+        state.status = "That part (" + item.node + ") has glTF's default material, which the file gives no values to tune";
+        return false;
+    }
+    state.selectedModelMaterial = item.material;
+    state.status = "Selected the part \"" + state.model->materials[size_t(item.material)].name + "\" (" + item.node + ")";
+    return true;
+}
+
+const std::vector<Segment>& partOutline(EditorState& state) {
+    if (!state.partOutline) {
+        state.partOutline = std::make_shared<PartOutlineCache>();
+    }
+    PartOutlineCache& cache = *state.partOutline;
+    if (cache.model != state.model || cache.material != state.selectedModelMaterial) {
+        cache = PartOutlineCache{};
+        cache.model = state.model;
+        cache.material = state.selectedModelMaterial;
+        for (const DrawItem& item : state.model ? state.model->draws : std::vector<DrawItem>{}) {
+            if (item.material == cache.material && size_t(item.primitive) < state.model->primitives.size()) {
+                cache.draws.emplace_back(item.transform, edgeFaces(state.model->primitives[size_t(item.primitive)]));
+            }
+        }
+    }
+    const glm::vec3 eye = state.scene.camera.position;
+    if (eye != cache.eye) {
+        cache.eye = eye;
+        cache.segments.clear();
+        for (const auto& [transform, edges] : cache.draws) {
+            for (const auto& [a, b] : silhouetteEdges(edges, glm::vec3(glm::inverse(transform) * glm::vec4(eye, 1.0f)))) {
+                cache.segments.emplace_back(glm::vec3(transform * glm::vec4(a, 1.0f)),
+                                            glm::vec3(transform * glm::vec4(b, 1.0f)));
+            }
+        }
+    }
+    return cache.segments;
+}
+
+}  // namespace patina::editor
