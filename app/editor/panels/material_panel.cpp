@@ -99,26 +99,51 @@ void drawFactors(Material& material, const Material& file, const Material& defau
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
 }
 
-// A model's materials: which one the panel edits (its factors; each multiplies its map, as
-// glTF defines), named with the maps it uses.
-void drawModelMaterial(EditorState& state) {
+// A model's parts (its materials), a row each: a swatch of the base colour as tuned, the index
+// and name, and how many maps it uses (named in the tooltip). A click makes it the one the
+// panel edits; a part picked in the viewport is scrolled into view.
+void drawPartList(EditorState& state) {
     const int count = modelMaterialCount(state);
     int& selected = state.selectedModelMaterial;
     selected = std::clamp(selected, 0, count - 1);
-    auto label = [&](int i) { return std::to_string(i) + ": " + state.model->materials[size_t(i)].name; };
-    if (ImGui::BeginCombo("Part", label(selected).c_str())) {
+    static int shown = -1;   // the selection the list last scrolled to
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    ImGui::TextUnformatted("Parts");
+    if (ImGui::BeginListBox("##parts", ImVec2(-FLT_MIN, (float(std::min(count, 6)) + 0.4f) * line))) {
         for (int i = 0; i < count; ++i) {
-            if (ImGui::Selectable(label(i).c_str(), i == selected)) {
+            ImGui::PushID(i);
+            const Material tuned = modelMaterial(state, state.scene, i);
+            const glm::vec3 srgb = shader::srgbColor(glm::clamp(tuned.baseColor, 0.0f, 1.0f));
+            const float side = ImGui::GetTextLineHeight();
+            ImGui::ColorButton("##swatch", ImVec4(srgb.r, srgb.g, srgb.b, 1.0f),
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(side, side));
+            ImGui::SameLine();
+            const std::string maps = mapNames(state, i);
+            const int mapCount = maps.empty() ? 0 : int(std::count(maps.begin(), maps.end(), ',')) + 1;
+            const std::string label = std::to_string(i) + ": " + state.model->materials[size_t(i)].name +
+                                      (mapCount ? "  (" + std::to_string(mapCount) + (mapCount > 1 ? " maps)" : " map)") : "");
+            if (ImGui::Selectable(label.c_str(), i == selected)) {
                 selected = i;
             }
+            if (i == selected && shown != selected) {
+                ImGui::SetScrollHereY();
+                shown = selected;
+            }
             if (ImGui::IsItemHovered()) {
-                const std::string maps = mapNames(state, i);
                 ImGui::SetTooltip("%s", maps.empty() ? "Factors only, no texture maps" : ("Maps: " + maps).c_str());
             }
+            ImGui::PopID();
         }
-        ImGui::EndCombo();
+        ImGui::EndListBox();
     }
-    recordItem("Model material", "Which of the model's materials the sliders, presets and A/B edit");
+    recordItem("Model material", "Which of the model's materials the sliders, presets and A/B edit (or click a part "
+                                 "in the viewport)");
+}
+
+// The edited part of a model: its factors, each multiplying its map as glTF defines.
+void drawModelMaterial(EditorState& state) {
+    drawPartList(state);
+    const int selected = state.selectedModelMaterial;
     const std::string maps = mapNames(state, selected);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
