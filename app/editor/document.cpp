@@ -191,6 +191,41 @@ void setModelMaterial(const Document& document, Scene& scene, int index, Materia
     scene.modelMaterials.push_back({index, std::move(material)});
 }
 
+namespace {
+ModelMaterialEdit* editOf(Scene& scene, int index) {
+    for (ModelMaterialEdit& edit : scene.modelMaterials) {
+        if (edit.index == index) {
+            return &edit;
+        }
+    }
+    return nullptr;
+}
+}  // namespace
+
+bool mapShown(const Scene& scene, int index, const std::string& key) {
+    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+        if (edit.index == index) {
+            return std::find(edit.mapsOff.begin(), edit.mapsOff.end(), key) == edit.mapsOff.end();
+        }
+    }
+    return true;
+}
+
+void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown) {
+    if (mapShown(scene, index, key) == shown) {
+        return;
+    }
+    if (!editOf(scene, index)) {
+        setModelMaterial(document, scene, index, modelMaterial(document, scene, index));
+    }
+    std::vector<std::string>& off = editOf(scene, index)->mapsOff;
+    if (shown) {
+        std::erase(off, key);
+    } else {
+        off.push_back(key);
+    }
+}
+
 std::string mapNames(const Document& document, int index) {
     std::string names;
     for (const auto& map : mapsOf(document.model->materials.at(size_t(index)))) {

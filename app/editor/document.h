@@ -89,6 +89,12 @@ Material modelMaterial(const Document& document, const Scene& scene, int index);
 // file's: the key), made or replaced.
 void setModelMaterial(const Document& document, Scene& scene, int index, Material material);
 // "base colour, normal": the maps material `index` of the model uses; empty for none.
+// Whether `scene` draws map `key` (model/model.h mapsOf) of the model's material `index`: false
+// where the scene's edit of it leaves the map out.
+bool mapShown(const Scene& scene, int index, const std::string& key);
+// Draws or leaves out that map: an edit of the material (made with its values as they are
+// where the scene has none).
+void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown);
 std::string mapNames(const Document& document, int index);
 
 }  // namespace patina::editor

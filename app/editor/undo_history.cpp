@@ -77,8 +77,11 @@ std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const 
             const ModelMaterialEdit* before = find(a, edit.index);
             const ModelMaterialEdit* after = find(b, edit.index);
             if (!before || !after || *before != *after) {
-                if (!before || !after) {
-                    return "the tuning of " + edit.material.name;
+                if (!before || !after) {   // made or removed: by a map switch when it leaves maps out
+                    return (edit.mapsOff.empty() ? "the tuning of " : "the maps of ") + edit.material.name;
+                }
+                if (before->mapsOff != after->mapsOff) {
+                    return "the maps of " + edit.material.name;
                 }
                 return materialChange(before->material, after->material) + " of " + edit.material.name;
             }

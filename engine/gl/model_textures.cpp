@@ -55,7 +55,7 @@ void ModelTextures::upload(std::shared_ptr<const Model> shown) {
     }
     const Model& model = *model_;
     for (const ModelMaterial& material : model.materials) {
-        for (const auto& [slot, srgb, name] : mapsOf(material)) {
+        for (const auto& [slot, srgb, name, key] : mapsOf(material)) {
             const bool usable = slot->present() && size_t(slot->image) < model.images.size() &&
                                 !model.images[size_t(slot->image)].rgba.empty();
             if (usable && !textures_.count({slot->image, srgb})) {

@@ -154,7 +154,6 @@ Json samplerJson(const TextureSampler& sampler) {
 
 // The document's textures, samplers and images, each made once for what the maps use.
 struct Textures {
-    const Model& model;
     Json textures = Json::array(), samplers = Json::array();
     std::vector<int> images;   // exported image -> the model's image
     std::map<std::pair<int, int>, int> byImageAndSampler;
@@ -324,7 +323,7 @@ std::vector<OutputFile> encodeGltfModel(const fs::path& path, const Model& model
     } catch (const InputError& error) {
         throw InputError(path.string() + ": " + error.what());
     }
-    Textures textures{model};
+    Textures textures;
     Json materials = Json::array();
     for (const ModelMaterial& material : model.materials) {
         materials.push_back(materialJson(material, textures));

@@ -9,6 +9,7 @@
 #include "io/file_kinds.h"
 #include "io/file_bytes.h"
 #include "io/json_writer.h"
+#include "model/model.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -268,7 +269,35 @@ Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::st
 }
 
 namespace {
-// "modelMaterials": [{"index": N, "material": {a material, its name the key}}, ...], one per index.
+// "mapsOff": ["normalTexture", ...]: each a map's key (model/model.h mapsOf), once.
+std::vector<std::string> mapKeysFromJson(const Json& json, const std::string& pointer, const std::string& source) {
+    std::vector<std::string> known;
+    std::string keys;
+    const ModelMaterial none;
+    for (const auto& map : mapsOf(none)) {
+        known.emplace_back(map.key);
+        keys += (keys.empty() ? "" : ", ") + known.back();
+    }
+    if (!json.is_array()) {
+        failAt(source, pointer, "expected an array of map names (" + keys + ")");
+    }
+    std::vector<std::string> names;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const std::string at = pointer + "/" + std::to_string(i);
+        const std::string name = json[i].is_string() ? json[i].get<std::string>() : "";
+        if (std::find(known.begin(), known.end(), name) == known.end()) {
+            failAt(source, at, "expected the name of a map (" + keys + ")");
+        }
+        if (std::find(names.begin(), names.end(), name) != names.end()) {
+            failAt(source, at, "\"" + name + "\" is named twice");
+        }
+        names.push_back(name);
+    }
+    return names;
+}
+
+// "modelMaterials": [{"index": N, "material": {a material, its name the key}, "mapsOff": [...]}, ...],
+// one per index.
 std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const std::string& source,
                                                       std::vector<std::string>& warnings) {
     if (!json.is_array()) {
@@ -282,6 +311,9 @@ std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const st
         reader.required("index");
         edit.index = reader.integer("index", 0, {0.0, double(1 << 20)});
         edit.material = materialFromJson(reader.required("material"), pointer + "/material", source, false, warnings);
+        if (const Json* off = reader.child("mapsOff")) {
+            edit.mapsOff = mapKeysFromJson(*off, reader.pointerOf("mapsOff"), source);
+        }
         for (const ModelMaterialEdit& earlier : edits) {
             if (earlier.index == edit.index) {
                 reader.fail("index", "material " + std::to_string(edit.index) + " is edited twice");
@@ -428,7 +460,11 @@ Json sceneToJson(const Scene& scene) {
     if (!scene.modelMaterials.empty()) {   // only a tuned model's scene has the key
         Json edits = Json::array();
         for (const ModelMaterialEdit& edit : scene.modelMaterials) {
-            edits.push_back(withExtras({{"index", edit.index}, {"material", materialToJson(edit.material)}}, edit.extras));
+            Json entry{{"index", edit.index}, {"material", materialToJson(edit.material)}};
+            if (!edit.mapsOff.empty()) {   // written only where a map is left out
+                entry["mapsOff"] = edit.mapsOff;
+            }
+            edits.push_back(withExtras(entry, edit.extras));
         }
         json["modelMaterials"] = edits;
     }

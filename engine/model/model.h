@@ -62,22 +62,25 @@ struct ModelMaterial {
 
 // A material's five maps in their one order (the shaders' too: surface_maps.glsl), each with
 // whether its texels are sRGB (base colour and emissive; the others are data, glTF 2.0
-// 3.9.2-3.9.3) and its name for people.
+// 3.9.2-3.9.3), its name for people and its key (glTF's name of the property, which scene
+// files use too).
 template <typename Slot>
 struct MapOf {
     Slot* slot;
     bool srgb;
     const char* name;
+    const char* key;
 };
 inline constexpr int kMapCount = 5;
 template <typename Material>   // ModelMaterial or const ModelMaterial
 auto mapsOf(Material& material) {
     using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
-    return std::array<MapOf<Slot>, kMapCount>{{{&material.baseColor, true, "base colour"},
-                                               {&material.metallicRoughness, false, "metallic-roughness"},
-                                               {&material.normal, false, "normal"},
-                                               {&material.occlusion, false, "occlusion"},
-                                               {&material.emissive, true, "emissive"}}};
+    return std::array<MapOf<Slot>, kMapCount>{
+        {{&material.baseColor, true, "base colour", "baseColorTexture"},
+         {&material.metallicRoughness, false, "metallic-roughness", "metallicRoughnessTexture"},
+         {&material.normal, false, "normal", "normalTexture"},
+         {&material.occlusion, false, "occlusion", "occlusionTexture"},
+         {&material.emissive, true, "emissive", "emissiveTexture"}}};
 }
 
 // One primitive placed once: glTF node world matrix times the mesh's primitive. `material` < 0

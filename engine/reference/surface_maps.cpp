@@ -7,7 +7,7 @@ namespace patina {
 
 MapTextures::MapTextures(const Model& model) {
     for (const ModelMaterial& material : model.materials) {
-        for (const auto& [slot, srgb, name] : mapsOf(material)) {
+        for (const auto& [slot, srgb, name, key] : mapsOf(material)) {
             const bool usable = slot->present() && size_t(slot->image) < model.images.size() &&
                                 !model.images[size_t(slot->image)].rgba.empty();
             if (usable && !textures_.count({slot->image, srgb})) {

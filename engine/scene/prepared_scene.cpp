@@ -1,5 +1,6 @@
 #include "scene/prepared_scene.h"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -14,15 +15,14 @@ namespace {
                                 " of " + std::to_string(count));
 }
 
-// The factors material `index` of the model is drawn with: the scene's edit of it where one
-// has its index and name, else the file's.
-MaterialParameters factorsOf(const Scene& scene, int index, const ModelMaterial& material) {
+// The scene's edit of material `index` of the model, where one has its index and name.
+const ModelMaterialEdit* editOf(const Scene& scene, int index, const ModelMaterial& material) {
     for (const ModelMaterialEdit& edit : scene.modelMaterials) {
         if (edit.index == index && edit.material.name == material.name) {
-            return edit.material;
+            return &edit;
         }
     }
-    return material.factors;
+    return nullptr;
 }
 
 // Item `i` of `model` as drawn, or nothing when its MASK cutoff hides it whole.
@@ -46,22 +46,40 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
     draw.primitive = item.primitive;
     draw.transform = item.transform;
     draw.normalTransform = normalTransform(item.transform);
-    draw.material = item.material >= 0 ? factorsOf(scene, item.material, material) : material.factors;
+    const ModelMaterialEdit* edit = item.material >= 0 ? editOf(scene, item.material, material) : nullptr;
+    draw.material = edit ? edit->material : material.factors;
     draw.material.model = brdf;
     draw.doubleSided = material.doubleSided;
     draw.reverseBackNormals = material.doubleSided;
     draw.blend = material.alphaMode == AlphaMode::Blend;
     draw.alpha = draw.blend ? material.baseAlpha : 1.0f;
-    draw.maps = item.material >= 0 && hasMaps(material) ? &material : nullptr;
+    if (edit && !edit->mapsOff.empty()) {
+        draw.tunedMaps = std::make_shared<const ModelMaterial>(tunedMaterial(scene, item.material, material));
+    }
+    const ModelMaterial& maps = draw.tunedMaps ? *draw.tunedMaps : material;
+    draw.maps = item.material >= 0 && hasMaps(maps) ? &maps : nullptr;
     draw.alphaCutoff = material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     return draw;
 }
 }  // namespace
 
+ModelMaterial tunedMaterial(const Scene& scene, int index, const ModelMaterial& material) {
+    ModelMaterial tuned = material;
+    if (const ModelMaterialEdit* edit = editOf(scene, index, material)) {
+        tuned.factors = edit->material;
+        for (const auto& map : mapsOf(tuned)) {
+            if (std::find(edit->mapsOff.begin(), edit->mapsOff.end(), map.key) != edit->mapsOff.end()) {
+                *map.slot = TextureSlot{};
+            }
+        }
+    }
+    return tuned;
+}
+
 Model tunedModel(const Model& model, const Scene& scene) {
     Model tuned = model;
     for (size_t i = 0; i < tuned.materials.size(); ++i) {
-        tuned.materials[i].factors = factorsOf(scene, int(i), tuned.materials[i]);
+        tuned.materials[i] = tunedMaterial(scene, int(i), model.materials[i]);
     }
     return tuned;
 }

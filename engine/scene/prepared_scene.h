@@ -50,6 +50,7 @@ struct SceneDraw {
     // `material`'s, each map multiplies in per pixel (glTF 2.0 §3.9.2-3.9.3), emission added.
     // Null: the factors alone. Points into the prepared scene's model.
     const ModelMaterial* maps = nullptr;
+    std::shared_ptr<const ModelMaterial> tunedMaps;   // holds `maps` where the scene left some out
     // glTF's MASK (§3.9.4): a pixel whose alpha (the factor times the base colour map's) is
     // below this is not drawn; negative for OPAQUE and BLEND.
     float alphaCutoff = -1.0f;
@@ -72,9 +73,14 @@ MaterialParameters defaultModelMaterial();
 // material the model lacks.
 std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared);
 
+// Material `index` of a model (`material`, the file's) as the scene tunes it: the factors of
+// the scene's edit of it (matched by index and name), without the maps the edit leaves out.
+ModelMaterial tunedMaterial(const Scene& scene, int index, const ModelMaterial& material);
+
 // `model` as the scene tunes it: each material with an edit in Scene::modelMaterials (matched
-// by index and name, as sceneDraws matches them) takes the edit's factors; its maps, alpha,
-// emission and the rest stay the file's. What an export of the scene's model writes.
+// by index and name, as sceneDraws matches them) takes the edit's factors and loses the maps
+// it leaves out; its other maps, alpha, emission and the rest stay the file's. What an export
+// of the scene's model writes.
 Model tunedModel(const Model& model, const Scene& scene);
 
 // `material`'s factors (not its name) on the parts of `model` whose material is named `part`,

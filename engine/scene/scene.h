@@ -49,6 +49,9 @@ struct ModelMaterialEdit {
     int index = 0;
     Material material;
     Json extras = Json::object();   // unknown keys of the file, as Material::extras
+    // The maps left out (glTF's keys: "baseColorTexture", "normalTexture", ...; model/model.h
+    // mapsOf): the factor alone is drawn where each was.
+    std::vector<std::string> mapsOff = {};
     bool operator==(const ModelMaterialEdit&) const = default;
 };
 

@@ -722,6 +722,33 @@ TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone
     EXPECT_NE(state.error.find("x.glb"), std::string::npos) << state.error;
 }
 
+// A map ticked off is an undoable edit of the part, saved in the scene, and left out of the
+// export; the factors stay as they were.
+TEST_F(EditorStateTest, AMapTickedOffIsAnUndoableEditThatTheExportKeeps) {
+    const fs::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!fs::exists(box)) {
+        GTEST_SKIP() << "needs Debian's assimp-testmodels";
+    }
+    ASSERT_TRUE(openFile(state, box)) << state.error;
+    const Material factors = editedMaterial(state);
+    EXPECT_TRUE(mapShown(state.scene, 0, "baseColorTexture"));
+    setMapShown(state, state.scene, 0, "baseColorTexture", false);
+    commitEdits(state);
+    EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture"));
+    EXPECT_EQ(editedMaterial(state), factors);
+    const std::vector<SceneDraw> draws = sceneDraws(preparedScene(state, renderedScene(state)));
+    ASSERT_EQ(draws.size(), 1u);
+    EXPECT_EQ(draws[0].maps, nullptr);
+    ASSERT_TRUE(exportGltfFile(state, dir_ / "plain.glb")) << state.error;
+    EXPECT_FALSE(importGltfModel(dir_ / "plain.glb").materials[0].baseColor.present());
+    ASSERT_TRUE(saveScene(state, dir_ / "plain.json")) << state.error;
+    undo(state);
+    EXPECT_NE(state.status.find("Undid the maps of " + factors.name), std::string::npos) << state.status;
+    EXPECT_TRUE(mapShown(state.scene, 0, "baseColorTexture"));
+    ASSERT_TRUE(openFile(state, dir_ / "plain.json")) << state.error;
+    EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture"));
+}
+
 // A click on a part selects its material for the Material panel; the selected part is
 // outlined, and its outline follows the eye.
 TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {

@@ -284,5 +284,26 @@ TEST_F(GltfModelExport, TheCommandExportsTheTunedModelAndItRendersTheSame) {
     EXPECT_FALSE(fs::exists(path("y.glb")));
 }
 
+// A map the scene leaves out is left out on the GPU as in the export: the box without its logo
+// renders as the exported box that has none.
+TEST_F(GltfModelExport, AMapLeftOutRendersAsTheExportWithoutIt) {
+    const fs::path box = kModels / "BoxTextured-glTF-Binary/BoxTextured.glb";
+    const Model model = importGltfModel(box);
+    ModelMaterialEdit edit{0, Material{}, Json::object(), {"baseColorTexture"}};
+    static_cast<MaterialParameters&>(edit.material) = model.materials[0].factors;
+    edit.material.name = model.materials[0].name;
+    const fs::path plain = sceneOf(box, "plain.json", {edit});
+    ASSERT_EQ(run("export --scene " + plain.string() + " --out " + path("plain.glb").string()).exitCode, 0);
+    EXPECT_FALSE(importGltfModel(path("plain.glb")).materials[0].baseColor.present());
+    const LdrImage left = render(plain, "left.png");
+    const LdrImage exported = render(sceneOf(path("plain.glb"), "exported.json"), "exported.png");
+    int largest = 0;
+    for (size_t i = 0; i < left.rgba.size(); ++i) {
+        largest = std::max(largest, std::abs(int(left.rgba[i]) - int(exported.rgba[i])));
+    }
+    EXPECT_LE(largest, 1);
+    EXPECT_NE(render(sceneOf(box, "logo.json"), "logo.png").rgba, left.rgba);
+}
+
 }  // namespace
 }  // namespace patina

@@ -89,6 +89,36 @@ TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
     }
 }
 
+// The maps a scene leaves out of a model's material: written only where there are some, each
+// one of the five by glTF's name, once.
+TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {
+    std::vector<std::string> warnings;
+    Scene scene = defaultScene();
+    scene.meshFile = "/models/box.glb";
+    Material edited;
+    edited.name = "Texture";
+    scene.modelMaterials = {{0, edited}};
+    EXPECT_FALSE(sceneToJson(scene)["modelMaterials"][0].contains("mapsOff"));
+    scene.modelMaterials[0].mapsOff = {"normalTexture", "baseColorTexture"};
+    const Json json = sceneToJson(scene);
+    EXPECT_EQ(json["modelMaterials"][0]["mapsOff"], Json::array({"normalTexture", "baseColorTexture"}));
+    EXPECT_EQ(sceneFromJson(json, "x", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+    for (const auto& [names, message] :
+         {std::pair{Json::array({"normal"}), "/modelMaterials/0/mapsOff/0: expected the name of a map (baseColorTexture, "},
+          std::pair{Json::array({"normalTexture", "normalTexture"}), "/modelMaterials/0/mapsOff/1: \"normalTexture\" is named twice"},
+          std::pair{Json("normalTexture"), "/modelMaterials/0/mapsOff: expected an array"}}) {
+        Json bad = json;
+        bad["modelMaterials"][0]["mapsOff"] = names;
+        try {
+            sceneFromJson(bad, "x.json", ".", warnings);
+            ADD_FAILURE() << names.dump() << " was read";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+        }
+    }
+}
+
 // Version 2 renamed a point light's "radius" (its attenuation window) to "range": a version 1
 // file still loads with the same light, and saving writes version 2.
 TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {

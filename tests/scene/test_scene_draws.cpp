@@ -126,6 +126,33 @@ TEST(SceneDraws, TheScenesEditOfAModelMaterialReplacesItsFactors) {
     EXPECT_EQ(draws[2].material.baseColor, defaultModelMaterial().baseColor) << "no material: glTF's default";
 }
 
+// A map the scene leaves out is not drawn (the draw's maps lack it), nor exported (tunedModel);
+// with every map out and no emission the item is drawn untextured.
+TEST(SceneDraws, AMapTheSceneLeavesOutIsNotDrawnOrExported) {
+    Scene scene = defaultScene();
+    Model items = threeItems();
+    items.materials[0].name = "red";
+    items.materials[0].baseColor.image = 0;
+    items.materials[0].normal.image = 1;
+    items.images.resize(2);
+    const auto model = std::make_shared<const Model>(items);
+    const PreparedScene prepared{scene, builtinMesh(MeshKind::Sphere), nullptr, model};
+    ASSERT_NE(sceneDraws(prepared)[0].maps, nullptr);
+    EXPECT_TRUE(sceneDraws(prepared)[0].maps->normal.present());
+    Material red;
+    red.name = "red";
+    scene.modelMaterials = {{0, red}};
+    scene.modelMaterials[0].mapsOff = {"normalTexture"};
+    const std::vector<SceneDraw> draws = sceneDraws(prepared);
+    ASSERT_NE(draws[0].maps, nullptr);
+    EXPECT_FALSE(draws[0].maps->normal.present());
+    EXPECT_TRUE(draws[0].maps->baseColor.present());
+    EXPECT_FALSE(tunedModel(items, scene).materials[0].normal.present());
+    EXPECT_TRUE(model->materials[0].normal.present()) << "the loaded model is not touched";
+    scene.modelMaterials[0].mapsOff.push_back("baseColorTexture");
+    EXPECT_EQ(sceneDraws(prepared)[0].maps, nullptr);
+}
+
 TEST(SceneDraws, AMaskBelowItsCutoffHidesTheItemWhole) {
     const Scene scene = defaultScene();
     Model model = threeItems();

@@ -140,6 +140,28 @@ void drawPartList(EditorState& state) {
                                  "in the viewport)");
 }
 
+// A checkbox for each map the file gives the part: unticked, the factor alone is drawn there
+// (an undoable edit, saved in the scene and kept by an export).
+void drawMapSwitches(EditorState& state, int index) {
+    int shownOnLine = 0;
+    for (const auto& map : mapsOf(state.model->materials.at(size_t(index)))) {
+        if (!map.slot->present()) {
+            continue;
+        }
+        if (shownOnLine++ % 2 != 0) {
+            ImGui::SameLine();
+        }
+        bool shown = mapShown(state.scene, index, map.key);
+        const std::string label = std::string(map.name) + "##map";
+        if (ImGui::Checkbox(label.c_str(), &shown)) {
+            setMapShown(state, state.scene, index, map.key, shown);
+        }
+        recordItem("map: " + std::string(map.name), ("Draw the " + std::string(map.name) +
+                                   " map; unticked, its factor alone is drawn (the map stays in the file)")
+                                      .c_str());
+    }
+}
+
 // The edited part of a model: its factors, each multiplying its map as glTF defines.
 void drawModelMaterial(EditorState& state) {
     drawPartList(state);
@@ -149,6 +171,7 @@ void drawModelMaterial(EditorState& state) {
     ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
                                            : ("Maps: " + maps + ". Each factor multiplies its map").c_str());
     ImGui::PopTextWrapPos();
+    drawMapSwitches(state, selected);
     Material material = modelMaterial(state, state.scene, selected);
     const Material before = material;
     Scene untuned = state.scene;
