@@ -18,7 +18,7 @@ Command addExportCommand(CLI::App& app) {
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
         "export", "Write a mesh with a material, or a glTF model with its tuned materials, as glTF 2.0 (.gltf or .glb)");
-    options->inputs.addOptions(*command);
+    options->inputs.addOptions(*command, true, true);
     command->add_option("--mesh", options->mesh,
                         "sphere, torus, or a .gltf/.glb model (default: the scene's mesh)");
     command->add_option("--out", options->out, "Output .gltf or .glb")

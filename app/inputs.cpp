@@ -17,14 +17,16 @@ void printWarnings(const std::vector<std::string>& warnings) {
     }
 }
 
-void SceneInputs::addOptions(CLI::App& command, bool withScene) {
+void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     if (withScene) {
         command.add_option("--scene", scenePath, "Scene JSON (default: the embedded scene)");
     }
     command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
-    command.add_option("--part", part,
-                       "With --material and a glTF model: the material on the parts of this name only "
-                       "(default: every part)");
+    if (withPart) {
+        command.add_option("--part", part,
+                           "With --material and a glTF model: the material on the parts of this name only "
+                           "(default: every part)");
+    }
     command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
 }
 

@@ -16,7 +16,9 @@ struct SceneInputs {
     std::string model;   // empty: the material's own
     std::string part;    // --part: with --material over a model, only the parts of this name
 
-    void addOptions(CLI::App& command, bool withScene = true);
+    // --scene (withScene), --material, --model, and --part for the commands that draw a model
+    // (withPart).
+    void addOptions(CLI::App& command, bool withScene = true, bool withPart = false);
     // The scene file (or the embedded default) with --material over its material and --model
     // over the material's model: the document, nothing it names loaded. Warnings go to stderr;
     // errors throw InputError.

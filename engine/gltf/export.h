@@ -16,8 +16,9 @@ enum class GltfBuffer { Embedded, BinFile };   // a base64 data: URI, or PATH.bi
 
 // The files of PATH: a .glb, or a .gltf and with BinFile its .bin. One node, one mesh of one
 // indexed triangle primitive (POSITION, NORMAL), one pbrMetallicRoughness material with
-// KHR_materials_specular and KHR_materials_ior (gltf_material.h). InputError for a path that
-// ends in neither .gltf nor .glb, or an empty mesh.
+// KHR_materials_specular and KHR_materials_ior (gltf/material.h): encodeGltfModel's file of
+// a model of one draw. InputError for a path that ends in neither .gltf nor .glb, or an empty
+// mesh.
 std::vector<OutputFile> encodeGltf(const std::filesystem::path& path, const Mesh& mesh,
                                    const Material& material, GltfBuffer buffer = GltfBuffer::Embedded);
 

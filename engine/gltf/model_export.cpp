@@ -126,11 +126,11 @@ Json meshJson(const Mesh& mesh, int material, Buffer& buffer) {
         attributes["TEXCOORD_1"] = buffer.accessor(mesh.uv1, "VEC2", kFloat, kArrayBuffer);
     }
     Json primitive{{"attributes", attributes},
-                   {"indices", buffer.accessor(mesh.indices, "SCALAR", kUnsignedInt, kElementArrayBuffer)},
-                   {"mode", 4}};
+                   {"indices", buffer.accessor(mesh.indices, "SCALAR", kUnsignedInt, kElementArrayBuffer)}};
     if (material >= 0) {
         primitive["material"] = material;
     }
+    primitive["mode"] = 4;
     return Json{{"primitives", Json::array({primitive})}};
 }
 
@@ -256,7 +256,10 @@ void writeDraws(const Model& model, Buffer& buffer, Json& document) {
         if (primitive.indices.empty()) {
             continue;   // an accessor holds at least one element (5.1.2)
         }
-        Json node{{"name", item.node}};
+        Json node = Json::object();
+        if (!item.node.empty()) {
+            node["name"] = item.node;
+        }
         if (decomposes(item.transform)) {
             auto [entry, added] = meshOf.try_emplace({item.primitive, item.material}, int(meshes.size()));
             if (added) {
@@ -317,6 +320,7 @@ std::vector<OutputFile> encodeGltfModel(const fs::path& path, const Model& model
     const bool glb = extension == ".glb";
     Json document = Json::object();
     document["asset"] = {{"version", "2.0"}, {"generator", "Patina"}};
+    document["extensionsUsed"] = Json::array();   // its place in the file; filled in below
     Buffer buffer;
     try {
         writeDraws(model, buffer, document);
@@ -329,9 +333,10 @@ std::vector<OutputFile> encodeGltfModel(const fs::path& path, const Model& model
         materials.push_back(materialJson(material, textures));
     }
     std::vector<OutputFile> files;
-    std::set<std::string> used(textures.extensions);
-    used.insert(gltf::kMaterialExtensions, gltf::kMaterialExtensions + 2);
-    document["extensionsUsed"] = Json(std::vector<std::string>(used.begin(), used.end()));
+    // The material's own two first, as every export has them, then what the maps and emission use.
+    std::vector<std::string> used(gltf::kMaterialExtensions, gltf::kMaterialExtensions + 2);
+    used.insert(used.end(), textures.extensions.begin(), textures.extensions.end());
+    document["extensionsUsed"] = used;
     if (!materials.empty()) {
         document["materials"] = std::move(materials);
     }
