@@ -5,6 +5,7 @@
 #include <map>
 
 #include <epoxy/gl.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -13,6 +14,7 @@
 #include "scene/camera_control.h"
 #include "image/image.h"
 #include "gltf/export.h"
+#include "gltf/model_export.h"
 #include "keys.h"
 #include "panels/panels.h"
 #include "preview_scene.h"
@@ -290,6 +292,44 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
 }
 
+
+// A click on a part of a model selects its material for the Material panel, a drag does not;
+// a map's checkbox leaves the map out of the picture, undoably.
+TEST_F(EditorUi, AClickOnAPartSelectsItAndAMapsCheckboxLeavesTheMapOut) {
+    Model model;
+    model.primitives = {makeUvSphere(16, 32)};
+    for (const char* name : {"left", "right"}) {
+        ModelMaterial material;
+        material.name = name;
+        model.materials.push_back(material);
+    }
+    const glm::vec3 left(-1.2f, 0.0f, 0.0f), right(1.2f, 0.0f, 0.0f);
+    model.draws = {{0, 0, glm::translate(glm::mat4(1.0f), left), "left ball"},
+                   {0, 1, glm::translate(glm::mat4(1.0f), right), "right ball"}};
+    exportGltfModel(path("two.glb"), model);
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    ASSERT_EQ(state_.selectedModelMaterial, 0);
+    click(onScreen(right));
+    EXPECT_EQ(state_.selectedModelMaterial, 1);
+    EXPECT_NE(state_.status.find("\"right\""), std::string::npos) << state_.status;
+    const ImVec2 from = onScreen(left);
+    drag(from, ImVec2(from.x + 60.0f, from.y));   // an orbit, not a pick
+    EXPECT_EQ(state_.selectedModelMaterial, 1);
+
+    const std::filesystem::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!std::filesystem::exists(box)) {
+        GTEST_SKIP() << "needs Debian's assimp-testmodels";
+    }
+    ASSERT_TRUE(openFile(state_, box)) << state_.error;
+    frames(2);
+    const LdrImage logo = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("map: base colour"));
+    EXPECT_FALSE(mapShown(state_.scene, 0, "baseColorTexture"));
+    EXPECT_GT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+    press(kKeyZ, true);
+    EXPECT_TRUE(mapShown(state_.scene, 0, "baseColorTexture"));
+}
 
 // Every texture the last rendered UI frame draws (the font atlas has none headlessly), with
 // its size as the GL has it now; -1 x -1 for a name that is no longer a texture.
