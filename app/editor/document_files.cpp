@@ -33,11 +33,11 @@ std::string modelSummary(const Model& model) {
     return text;
 }
 
-bool openMesh(EditorState& state, const std::filesystem::path& path) {
-    try {
-        // Before anything changes: a bad file changes nothing.
-        const std::shared_ptr<const GltfImport> imported = state.assets->model(path);
-        std::shared_ptr<const Model> model = state.assets->drawnModel(path);
+// The loaded model becomes the shown mesh: framed, the lights following its size.
+void applyMesh(EditorState& state, const std::filesystem::path& path, const ModelLoad::Result& loaded) {
+    const std::shared_ptr<const GltfImport>& imported = loaded.imported;
+    const std::shared_ptr<const Model>& model = loaded.model;
+    {
         const BoundingSphere before = meshBounds(state);
         state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
         state.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
@@ -52,6 +52,13 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
         state.error.clear();
         state.status = "Mesh " + path.filename().string() + modelSummary(*model);
         rememberRecent(state, path);
+    }
+}
+
+bool openMesh(EditorState& state, const std::filesystem::path& path) {
+    try {
+        // Before anything changes: a bad file changes nothing.
+        applyMesh(state, path, {state.assets->model(path), state.assets->drawnModel(path)});
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();   // the previous mesh stays
@@ -59,6 +66,37 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
     }
 }
 }  // namespace
+
+void startModelLoad(EditorState& state, const std::filesystem::path& path) {
+    cancelModelLoad(state);   // a newer choice replaces one under way
+    state.modelLoad = std::make_shared<ModelLoad>(path, state.assets);
+    state.status = "Loading " + path.filename().string() + "...";
+}
+
+bool finishModelLoad(EditorState& state, bool wait) {
+    std::erase_if(state.droppedModelLoads, [](const std::shared_ptr<ModelLoad>& load) { return load->ready(); });
+    if (!state.modelLoad || (!wait && !state.modelLoad->ready())) {
+        return false;
+    }
+    const std::shared_ptr<ModelLoad> load = std::move(state.modelLoad);
+    try {
+        applyMesh(state, load->path(), load->take());
+        return true;
+    } catch (const std::exception& error) {
+        state.error = error.what();   // the previous mesh stays
+        state.status.clear();
+        return false;
+    }
+}
+
+void cancelModelLoad(EditorState& state) {
+    if (state.modelLoad) {
+        // Its worker cannot be stopped midway: it ends on its own, its result unused, while
+        // the editor goes on (a future waits for its worker when destroyed).
+        state.droppedModelLoads.push_back(std::move(state.modelLoad));
+        state.status = "Mesh left as it was";
+    }
+}
 
 void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
                    const std::filesystem::path& materialPath, AssetCache::Shape shape,
@@ -214,6 +252,10 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
 }
 
 void requestOpen(EditorState& state, const std::filesystem::path& path) {
+    if (!gltfExtension(path).empty()) {
+        startModelLoad(state, path);   // read and decoded on a worker: the window keeps drawing
+        return;
+    }
     if (!startsADocument(state, path)) {
         openFile(state, path);   // undoable: nothing can be lost
         return;

@@ -49,6 +49,15 @@ bool saveMaterial(EditorState& state, const std::filesystem::path& path);
 bool saveAsPreset(EditorState& state, const std::filesystem::path& path);
 // Saves the whole scene, material inline; the scene becomes the document. Same failure rules.
 bool saveScene(EditorState& state, const std::filesystem::path& path);
+// Opens a glTF model on a worker (state.modelLoad, replacing one under way), applied by
+// finishModelLoad as openFile applies it: the window's Open, Recent and dropped files.
+void startModelLoad(EditorState& state, const std::filesystem::path& path);
+// Applies the model under way once it is read (with `wait`, waits for it); its error, if it
+// could not be read, goes to state.error and the mesh shown stays. Run once a frame. True when
+// one was applied.
+bool finishModelLoad(EditorState& state, bool wait = false);
+// Stops waiting for the model under way: the mesh shown stays.
+void cancelModelLoad(EditorState& state);
 // Exports what the viewport shows as glTF 2.0 (".glb" added when the name has neither .glb nor
 // .gltf): the model whole, its materials as tuned, with its maps (a .gltf's images beside it);
 // or the built-in mesh with the material. An export is no save: the document stays as it is.

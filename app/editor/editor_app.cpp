@@ -168,7 +168,7 @@ void waitForEvents(Loop& loop) {
         return;
     }
     const std::optional<std::chrono::milliseconds> due = earliest(loop.autosaveDue, loop.settingsDue);
-    if (loop.state.environmentLoad) {
+    if (loop.state.environmentLoad || loop.state.modelLoad) {
         glfwWaitEventsTimeout(0.1);   // the load's progress, and its end, are shown
     } else if (due) {
         glfwWaitEventsTimeout(std::chrono::duration<double>(*due).count() + 0.01);

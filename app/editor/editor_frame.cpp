@@ -96,6 +96,7 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
     finishEnvironmentLoad(state);
+    finishModelLoad(state);
     services.environmentShading = state.environmentShading;
     resolveEnvironmentShown(state);
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });

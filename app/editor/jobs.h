@@ -7,6 +7,7 @@
 #include "assets/asset_cache.h"
 #include "autosave.h"
 #include "environment_load.h"
+#include "model_load.h"
 
 namespace patina::editor {
 
@@ -25,6 +26,10 @@ struct Jobs {
     // An environment file being made ready on a worker (setEnvironmentSource), applied by
     // finishEnvironmentLoad when done; the viewport shows its progress.
     std::shared_ptr<EnvironmentLoad> environmentLoad;
+    // A glTF model being read on a worker (startModelLoad), applied by finishModelLoad; and the
+    // cancelled ones, kept until their workers end so that dropping them never waits.
+    std::shared_ptr<ModelLoad> modelLoad;
+    std::vector<std::shared_ptr<ModelLoad>> droppedModelLoads;
     // F12's size, taken at the start of the next frame: the frame asking shows "Rendering..."
     // first, as a large screenshot keeps the window waiting for seconds.
     std::optional<std::pair<int, int>> screenshotRequested;

@@ -6,6 +6,7 @@
 #include <system_error>
 #include <fstream>
 #include <iterator>
+#include <thread>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -747,6 +748,39 @@ TEST_F(EditorStateTest, AMapTickedOffIsAnUndoableEditThatTheExportKeeps) {
     EXPECT_TRUE(mapShown(state.scene, 0, "baseColorTexture"));
     ASSERT_TRUE(openFile(state, dir_ / "plain.json")) << state.error;
     EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture"));
+}
+
+// A model opened from the window is read on a worker: the mesh shown stays until it is ready;
+// a broken one says why and changes nothing; a cancelled one never arrives.
+TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled) {
+    exportGltf(dir_ / "torus.glb", makeTorus(), Material{});
+    requestOpen(state, dir_ / "torus.glb");
+    ASSERT_NE(state.modelLoad, nullptr);
+    EXPECT_TRUE(state.scene.meshFile.empty()) << "the sphere stays until the model is read";
+    EXPECT_NE(state.status.find("Loading torus.glb"), std::string::npos) << state.status;
+    ASSERT_TRUE(finishModelLoad(state, true)) << state.error;
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
+    EXPECT_EQ(state.modelLoad, nullptr);
+    EXPECT_EQ(state.mesh->positions.size(), makeTorus().positions.size());
+
+    std::ofstream(dir_ / "broken.glb") << "not a model";
+    requestOpen(state, dir_ / "broken.glb");
+    EXPECT_FALSE(finishModelLoad(state, true));
+    EXPECT_NE(state.error.find("broken.glb"), std::string::npos) << state.error;
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
+
+    exportGltf(dir_ / "sphere.glb", makeUvSphere(), Material{});
+    requestOpen(state, dir_ / "sphere.glb");
+    cancelModelLoad(state);
+    EXPECT_EQ(state.modelLoad, nullptr);
+    EXPECT_EQ(state.status, "Mesh left as it was");
+    ASSERT_EQ(state.droppedModelLoads.size(), 1u);
+    while (!state.droppedModelLoads.front()->ready()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    EXPECT_FALSE(finishModelLoad(state));
+    EXPECT_TRUE(state.droppedModelLoads.empty()) << "a dropped load is let go once its worker ends";
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
 }
 
 // A click on a part selects its material for the Material panel; the selected part is

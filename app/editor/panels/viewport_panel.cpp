@@ -46,6 +46,16 @@ void drawToolbar(EditorState& state) {
         ImGui::EndCombo();
     }
     recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
+    if (const std::shared_ptr<ModelLoad> load = state.modelLoad) {
+        // A model being read: the mesh shown stays until it is done, or for good if cancelled.
+        ImGui::SameLine();
+        ImGui::Text("Loading %s (%.1f s)", load->path().filename().string().c_str(), load->seconds());
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel##model")) {
+            cancelModelLoad(state);
+        }
+        recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
+    }
     sameLineIfFits(labelledWidth(px(110), "Exposure"));
     // A drag, not a slider: 16 stops across 110 pixels moved 8 EV in 60 of them. Fine steps
     // (0.02 EV a pixel) for a look; a big change is typed.

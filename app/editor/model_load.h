@@ -1,0 +1,41 @@
+#pragma once
+// A glTF model opened from the window (Open, Recent, a dropped file), read and decoded off the
+// UI thread: a model with several 4K maps takes seconds, and the editor keeps drawing the mesh
+// it has and can cancel meanwhile. Destroying it waits for the worker.
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <memory>
+
+#include "assets/asset_cache.h"
+#include "gltf/import.h"
+#include "model/model.h"
+
+namespace patina::editor {
+
+class ModelLoad {
+public:
+    ModelLoad(std::filesystem::path path, std::shared_ptr<AssetCache> assets);
+    ~ModelLoad();
+    ModelLoad(const ModelLoad&) = delete;
+    ModelLoad& operator=(const ModelLoad&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    double seconds() const;   // since it started
+    bool ready() const;
+
+    struct Result {
+        std::shared_ptr<const GltfImport> imported;
+        std::shared_ptr<const Model> model;
+    };
+    // Once ready (waits otherwise): the model, or the import's error rethrown (InputError for a
+    // file that cannot be read). Once only.
+    Result take();
+
+private:
+    std::filesystem::path path_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    std::future<Result> result_;
+};
+
+}  // namespace patina::editor
