@@ -95,8 +95,10 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
-    finishEnvironmentLoad(state);
-    finishModelLoad(state);
+    if (!promptOpen(state)) {   // a load that ends behind a prompt waits for its answer
+        finishEnvironmentLoad(state);
+        finishModelLoad(state);
+    }
     services.environmentShading = state.environmentShading;
     resolveEnvironmentShown(state);
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <thread>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -329,6 +330,24 @@ TEST_F(EditorUi, AClickOnAPartSelectsItAndAMapsCheckboxLeavesTheMapOut) {
     EXPECT_GT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
     press(kKeyZ, true);
     EXPECT_TRUE(mapShown(state_.scene, 0, "baseColorTexture"));
+}
+
+// A model read on a worker is shown once read, but not behind a prompt: it waits for the
+// answer, as every edit does.
+TEST_F(EditorUi, AModelReadOnAWorkerWaitsForAnOpenPrompt) {
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    requestOpen(state_, path("torus.glb"));
+    state_.scene.material.roughness = 0.9f;   // unsaved, so that File > New asks
+    state_.pendingNew = true;
+    while (!state_.modelLoad->ready()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    frames(2);
+    EXPECT_TRUE(state_.scene.meshFile.empty());
+    state_.pendingNew = false;
+    frames(2);
+    EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
+    EXPECT_EQ(state_.modelLoad, nullptr);
 }
 
 // Every texture the last rendered UI frame draws (the font atlas has none headlessly), with
