@@ -1,5 +1,7 @@
 #include "gl/model_textures.h"
 
+#include "shading/texture_sampling.h"
+
 namespace patina {
 
 namespace {
@@ -10,11 +12,16 @@ GLuint uploadImage(const ModelImage& image, bool srgb) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     // Rows in file order: glTF's (0, 0) is the image's top-left, and GL's first row is t = 0,
     // so UVs are used as given, with no flip anywhere.
-    glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width, image.height, 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, image.rgba.data());
-    // For an sRGB format the averages are taken in linear light (Mesa decodes, filters and
-    // encodes again), as the assets contract asks of an sRGB image's mipmaps.
-    glGenerateMipmap(GL_TEXTURE_2D);
+    const GLenum format = srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+    glTexImage2D(GL_TEXTURE_2D, 0, format, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    // The mip levels the CPU twin samples (shading/texture_sampling.h), not the driver's: an
+    // sRGB image's averaged in linear light, as the assets contract asks.
+    const std::vector<ImageLevel> levels = mipLevels(image.rgba.data(), image.width, image.height, srgb);
+    for (size_t i = 0; i < levels.size(); ++i) {
+        glTexImage2D(GL_TEXTURE_2D, GLint(i + 1), format, levels[i].width, levels[i].height, 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, levels[i].rgba.data());
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(levels.size()));
     glBindTexture(GL_TEXTURE_2D, 0);
     return id;
 }

@@ -79,15 +79,38 @@ void fillTriangle(Raster& raster, const ClipVertex* const corner[3], const glm::
     const float maxY = std::max({screen[0].y, screen[1].y, screen[2].y});
     const int x0 = std::max(0, int(std::floor(minX))), x1 = std::min(raster.width - 1, int(std::ceil(maxX)));
     const int y0 = std::max(0, int(std::floor(minY))), y1 = std::min(raster.height - 1, int(std::ceil(maxY)));
+    // The barycentric coordinates of window point p, and the perspective-correct weights of the
+    // corners' attributes there (over w, interpolated, divided by 1/w).
+    auto barycentric = [&](glm::vec2 p, float b[3]) {
+        for (int c = 0; c < 3; ++c) {
+            const glm::vec2& e0 = screen[(c + 1) % 3];
+            const glm::vec2& e1 = screen[(c + 2) % 3];
+            b[c] = ((e1.x - e0.x) * (p.y - e0.y) - (p.x - e0.x) * (e1.y - e0.y)) / area;
+        }
+    };
+    auto weights = [&](const float b[3], float weight[3]) {
+        const float w = b[0] * inverseW[0] + b[1] * inverseW[1] + b[2] * inverseW[2];
+        for (int c = 0; c < 3; ++c) {
+            weight[c] = b[c] * inverseW[c] / w;
+        }
+    };
+    // The UVs on the triangle's plane at window point p (outside the triangle too).
+    auto uvsAt = [&](glm::vec2 p) {
+        float b[3], weight[3];
+        barycentric(p, b);
+        weights(b, weight);
+        std::pair<glm::vec2, glm::vec2> uvs{glm::vec2(0.0f), glm::vec2(0.0f)};
+        for (int c = 0; c < 3; ++c) {
+            uvs.first += weight[c] * corner[c]->maps.uv0;
+            uvs.second += weight[c] * corner[c]->maps.uv1;
+        }
+        return uvs;
+    };
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
             const glm::vec2 p(float(x) + 0.5f, float(y) + 0.5f);
             float b[3];
-            for (int c = 0; c < 3; ++c) {
-                const glm::vec2& e0 = screen[(c + 1) % 3];
-                const glm::vec2& e1 = screen[(c + 2) % 3];
-                b[c] = ((e1.x - e0.x) * (p.y - e0.y) - (p.x - e0.x) * (e1.y - e0.y)) / area;
-            }
+            barycentric(p, b);
             if (b[0] < 0.0f || b[1] < 0.0f || b[2] < 0.0f) {
                 continue;
             }
@@ -96,16 +119,23 @@ void fillTriangle(Raster& raster, const ClipVertex* const corner[3], const glm::
             if (!(d < raster.depth[pixel]) || d > 1.0f) {
                 continue;
             }
-            // Perspective-correct: attributes over w, interpolated, divided by 1/w.
-            const float w = b[0] * inverseW[0] + b[1] * inverseW[1] + b[2] * inverseW[2];
+            float weight[3];
+            weights(b, weight);
             Hit hit{glm::vec3(0.0f), glm::vec3(0.0f), {}, draw};
             for (int c = 0; c < 3; ++c) {
-                const float weight = b[c] * inverseW[c] / w;
-                hit.position += weight * corner[c]->position;
-                hit.normal += weight * corner[c]->normal;
-                hit.maps.uv0 += weight * corner[c]->maps.uv0;
-                hit.maps.uv1 += weight * corner[c]->maps.uv1;
-                hit.maps.tangent += weight * corner[c]->maps.tangent;
+                hit.position += weight[c] * corner[c]->position;
+                hit.normal += weight[c] * corner[c]->normal;
+                hit.maps.uv0 += weight[c] * corner[c]->maps.uv0;
+                hit.maps.uv1 += weight[c] * corner[c]->maps.uv1;
+                hit.maps.tangent += weight[c] * corner[c]->maps.tangent;
+            }
+            if (item.maps) {   // the UVs' change to the next pixel centre: the level of detail
+                const auto [rightUv0, rightUv1] = uvsAt(p + glm::vec2(1.0f, 0.0f));
+                const auto [downUv0, downUv1] = uvsAt(p + glm::vec2(0.0f, 1.0f));
+                hit.maps.uv0Dx = rightUv0 - hit.maps.uv0;
+                hit.maps.uv1Dx = rightUv1 - hit.maps.uv1;
+                hit.maps.uv0Dy = downUv0 - hit.maps.uv0;
+                hit.maps.uv1Dy = downUv1 - hit.maps.uv1;
             }
             if (raster.textures && !keptByMask(item, *raster.textures, hit.maps)) {
                 continue;   // cut out: no depth written, what is behind shows

@@ -12,26 +12,37 @@ MapTextures::MapTextures(const Model& model) {
                                 !model.images[size_t(slot->image)].rgba.empty();
             if (usable && !textures_.count({slot->image, srgb})) {
                 const ModelImage& image = model.images[size_t(slot->image)];
-                textures_[{slot->image, srgb}] = linearTexture(image.rgba.data(), image.width, image.height, srgb);
+                std::vector<LinearTexture>& levels = textures_[{slot->image, srgb}];
+                levels.push_back(linearTexture(image.rgba.data(), image.width, image.height, srgb));
+                for (const ImageLevel& level : mipLevels(image.rgba.data(), image.width, image.height, srgb)) {
+                    levels.push_back(linearTexture(level.rgba.data(), level.width, level.height, srgb));
+                }
             }
         }
     }
 }
 
-glm::vec4 MapTextures::texel(const TextureSlot& slot, bool srgb, glm::vec2 uv0, glm::vec2 uv1,
-                             glm::vec4 absent) const {
+glm::vec4 MapTextures::texel(const TextureSlot& slot, bool srgb, const MapCoordinates& at, glm::vec4 absent) const {
     const auto found = textures_.find({slot.image, srgb});
     if (!slot.present() || found == textures_.end()) {
         return absent;
     }
-    return sampleTexture(found->second, slot.sampler, transformedUv(slot.transform, slot.texCoord == 1 ? uv1 : uv0));
+    const bool second = slot.texCoord == 1;
+    // The transform is affine: its offset moves no derivative.
+    auto moved = [&](glm::vec2 d) {
+        return shader::transformTextureCoordinate(d, glm::vec2(0.0f), slot.transform.scale, slot.transform.rotation);
+    };
+    const LinearTexture& base = found->second.front();
+    const float lod = shader::textureLevelOfDetail(moved(second ? at.uv1Dx : at.uv0Dx), moved(second ? at.uv1Dy : at.uv0Dy),
+                                                   glm::vec2(float(base.width), float(base.height)));
+    return sampleTextureLod(found->second, slot.sampler, transformedUv(slot.transform, second ? at.uv1 : at.uv0), lod);
 }
 
 bool keptByMask(const SceneDraw& draw, const MapTextures& textures, const MapCoordinates& at) {
     if (draw.alphaCutoff < 0.0f || !draw.maps) {
         return true;   // a MASK item without maps was kept or dropped whole (sceneDraws)
     }
-    const float alpha = draw.maps->baseAlpha * textures.texel(draw.maps->baseColor, true, at.uv0, at.uv1, glm::vec4(1.0f)).w;
+    const float alpha = draw.maps->baseAlpha * textures.texel(draw.maps->baseColor, true, at, glm::vec4(1.0f)).w;
     return alpha >= draw.alphaCutoff;
 }
 
@@ -45,7 +56,7 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
         return surface;
     }
     auto texel = [&](const TextureSlot& slot, bool srgb, glm::vec4 absent) {
-        return textures.texel(slot, srgb, at.uv0, at.uv1, absent);
+        return textures.texel(slot, srgb, at, absent);
     };
     const shader::TexturedMaterial mapped = shader::texturedMaterial(
         glm::vec4(draw.material.baseColor, maps->baseAlpha), texel(maps->baseColor, true, glm::vec4(1.0f)),

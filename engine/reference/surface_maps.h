@@ -2,9 +2,9 @@
 // A model's texture maps on the CPU: the twin of shaders/stages/surface_maps.glsl and of
 // shade.frag's use of it, through the same shared functions (shaders/shared/texture.glsl), so
 // the ground truth of a textured model shades what the GPU shades. Lookups are
-// shading/texture_sampling.h's: bilinear (or nearest) on mip 0, where the GPU filters its
-// mipmaps, so the two agree where a texture is magnified and differ by the filter where it is
-// minified.
+// shading/texture_sampling.h's, on the same mip levels as the GPU's and at the level of detail
+// texture.glsl computes from the UVs' change between neighbouring pixels, as the GPU's dFdx and
+// dFdy give it.
 #include <map>
 #include <utility>
 
@@ -19,23 +19,28 @@
 
 namespace patina {
 
-// The images of `model`'s maps as linear texels, each decoded once in the colour space its
-// maps read it in (sRGB for base colour and emissive): gl/model_textures.h's twin.
-class MapTextures {
-public:
-    explicit MapTextures(const Model& model);
-    // `slot`'s texel at the UV set it reads (uv0 or uv1) through its transform; `absent` where
-    // the slot has no map or its image is not there.
-    glm::vec4 texel(const TextureSlot& slot, bool srgb, glm::vec2 uv0, glm::vec2 uv1, glm::vec4 absent) const;
-
-private:
-    std::map<std::pair<int, bool>, LinearTexture> textures_;   // (image, sRGB)
-};
-
 // Where a fragment of `draw` is, in its primitive's UVs and its interpolated world tangent.
 struct MapCoordinates {
     glm::vec2 uv0{0.0f}, uv1{0.0f};
     glm::vec4 tangent{0.0f};   // w = 0: none
+    // How each UV set changes to the next pixel centre along x and along y (the GPU's dFdx and
+    // dFdy, up to sign): what the level of detail is read from. Zero: magnified, level 0.
+    glm::vec2 uv0Dx{0.0f}, uv0Dy{0.0f}, uv1Dx{0.0f}, uv1Dy{0.0f};
+};
+
+// The images of `model`'s maps as linear texels with their mip levels, each decoded once in the
+// colour space its maps read it in (sRGB for base colour and emissive): gl/model_textures.h's
+// twin.
+class MapTextures {
+public:
+    explicit MapTextures(const Model& model);
+    // `slot`'s texel at the UV set it reads (uv0 or uv1) through its transform, at the level of
+    // detail of that set's derivatives through it; `absent` where the slot has no map or its
+    // image is not there.
+    glm::vec4 texel(const TextureSlot& slot, bool srgb, const MapCoordinates& at, glm::vec4 absent) const;
+
+private:
+    std::map<std::pair<int, bool>, std::vector<LinearTexture>> textures_;   // (image, sRGB): its levels
 };
 
 // glTF 2.0 section 3.9.4: whether MASK keeps the fragment (alpha, the factor's times the base

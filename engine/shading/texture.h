@@ -1,6 +1,7 @@
 #pragma once
 // Texture lookups on the CPU, the twin of the GPU's texture units: the same wrap modes and the
-// same transform (shaders/shared/texture.glsl), bilinear on mip 0 of linear texels. glTF 2.0
+// same transform (shaders/shared/texture.glsl), the same mip levels and level of detail, on
+// linear texels. glTF 2.0
 // section 3.8 (samplers) and KHR_texture_transform; docs/FORMATS.md says the conventions.
 #include <cstdint>
 #include <vector>

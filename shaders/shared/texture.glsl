@@ -44,6 +44,19 @@ PATINA_INLINE vec2 transformTextureCoordinate(vec2 uv, vec2 offset, vec2 scale, 
     return offset + vec2(c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y);
 }
 
+// The level of detail a lookup reads (OpenGL 4.6 core, 8.14.1 "Scale Factor and Level of
+// Detail", equations 8.6-8.9 in their isotropic form): rho, the larger of the lengths, in
+// texels, of the coordinate's derivatives along the window's x and y, and lambda = log2(rho).
+// `size` is level 0's in texels. The GPU passes it to textureLod with dFdx and dFdy of the
+// coordinate; the CPU twin with differences of the coordinates at neighbouring pixel centres.
+// A coordinate that does not move gives a level far below 0: magnification.
+PATINA_INLINE real textureLevelOfDetail(vec2 dUvDx, vec2 dUvDy, vec2 size) {
+    vec2 x = dUvDx * size;
+    vec2 y = dUvDy * size;
+    real rho = max(sqrt(dot(x, x)), sqrt(dot(y, y)));
+    return log2(max(rho, 1e-20f));
+}
+
 // glTF 2.0, 3.9.3 Additional Textures (normalTexture): the texel's RGB maps [0, 1] to
 // [-1, 1]; scale multiplies X and Y, then the vector is normalised.
 PATINA_INLINE vec3 tangentSpaceNormal(vec3 texel, real scale) {

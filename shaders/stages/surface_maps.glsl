@@ -1,7 +1,8 @@
 // A model's texture maps, with PATINA_TEXTURED (GLSL only): which UV set and transform each map
 // reads, and what it does to the surface (glTF 2.0 sections 3.9.2-3.9.3, KHR_texture_transform),
 // through texture.glsl's shared functions. The texture units filter; the sRGB maps decode before
-// they filter (GL_SRGB8_ALPHA8, engine/gl/model_textures.h). Read by shade.frag, and by
+// they filter (GL_SRGB8_ALPHA8, engine/gl/model_textures.h), at the level of detail
+// texture.glsl computes, which the CPU twin computes too. Read by shade.frag, and by
 // black.frag for MASK's cut-outs in the multi-pass depth pre-pass.
 #ifdef PATINA_TEXTURED
 in vec2 vUv0;
@@ -33,9 +34,16 @@ vec2 mapCoordinate(int map) {
     return transformTextureCoordinate(uv, uMapPlacement[map].xy, uMapPlacement[map].zw, uMapRotationSet[map].x);
 }
 
+// A map's texel at `coordinate`, at texture.glsl's level of detail (not the texture unit's own
+// choice, so that the CPU twin reads the same levels).
+vec4 mapTexel(sampler2D map, vec2 coordinate) {
+    vec2 size = vec2(textureSize(map, 0));
+    return textureLod(map, coordinate, textureLevelOfDetail(dFdx(coordinate), dFdy(coordinate), size));
+}
+
 // A map's texel, or `absent` (what multiplies as nothing) where the material has no such map.
-// Whether it has one is uniform, so the lookup's derivatives are defined.
-#define MAP_TEXEL(map, sampler, absent) (hasMap(map) ? texture(sampler, mapCoordinate(map)) : (absent))
+// Whether it has one is uniform, so the coordinate's derivatives are defined.
+#define MAP_TEXEL(map, sampler, absent) (hasMap(map) ? mapTexel(sampler, mapCoordinate(map)) : (absent))
 
 // glTF 2.0 section 3.9.4: MASK draws a pixel only where the factor's alpha times the base
 // colour map's reaches the cutoff (alpha 1 and a cutoff of 0.5 where neither says otherwise).
@@ -51,13 +59,13 @@ vec3 mappedNormal(vec3 N) {
     if (!hasMap(2)) {
         return N;
     }
-    vec3 texel = texture(uNormalMap, mapCoordinate(2)).xyz;
+    vec3 texel = mapTexel(uNormalMap, mapCoordinate(2)).xyz;
     return normalMappedNormal(N, vTangent, tangentSpaceNormal(texel, uNormalScale));
 }
 
 // What reaches the environment's and hemisphere lights' light (1 without an occlusion map).
 float surfaceOcclusion() {
-    return hasMap(3) ? occlusionFactor(texture(uOcclusionMap, mapCoordinate(3)).x, uOcclusionStrength) : 1.0f;
+    return hasMap(3) ? occlusionFactor(mapTexel(uOcclusionMap, mapCoordinate(3)).x, uOcclusionStrength) : 1.0f;
 }
 
 // Linear radiance the surface emits.

@@ -4,6 +4,7 @@
 // (a base colour, a normal, a roughness) that the texel stands for.
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -307,6 +308,46 @@ TEST_F(ModelMaps, TheGroundTruthShadesTheSameMapsAsTheGpu) {
         EXPECT_GT(covered, 1000);
         // Texel edges: where the two filters' arithmetic puts a pixel across a sharp step.
         EXPECT_GE(agreeing, covered * 97 / 100) << renderPathName(path) << ": " << agreeing << " of " << covered;
+    }
+}
+
+// Where a map is minified the CPU twin reads the GPU's mip levels at the GPU's level of detail
+// (texture.glsl's textureLevelOfDetail, shading/texture_sampling.h's mipLevels): a busy
+// 256 x 256 map, repeated four times across a quad seen at a slant, shows as the same blur of
+// its texels on both (with level 0 alone the CPU would show the texels' noise). Each sampler
+// the glTF enums give: trilinear, nearest within a level, and no mipmaps.
+TEST_F(ModelMaps, AMinifiedMapReadsTheSameLevelsOnTheCpuAsOnTheGpu) {
+    Scene scene = quadScene();
+    scene.camera.position = {0.0f, 2.2f, 2.2f};   // 45 degrees: the far side more minified than the near
+    Mesh slanted = quad();
+    const std::vector<uint8_t> busy = pattern(256, 256, 11u);
+    for (const auto& [nearest, mipmaps] : {std::pair{false, true}, std::pair{true, true}, std::pair{false, false}}) {
+        ModelMaterial mapped = factors(glm::vec3(1.0f));
+        mapped.baseColor.image = 0;
+        mapped.baseColor.transform.scale = {4.0f, 4.0f};
+        mapped.baseColor.sampler.nearestMinification = nearest;
+        mapped.baseColor.sampler.mipmaps = mipmaps;
+        const auto model = oneQuad(slanted, mapped, {image(256, 256, busy)});
+        const PreparedScene prepared{scene, std::make_shared<const Mesh>(model->primitives[0]), nullptr, model};
+        const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kWidth, kHeight);
+        ReferenceRenderOptions options;
+        options.samplesPerPixel = 1;
+        const ReferenceImage reference = renderReference(prepared, surfaces, options);
+        const HdrImage shown = render(scene, model, RenderPath::Single, 1);
+        int covered = 0, agreeing = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                if (surfaces.sampleOfPixel[size_t(y * kWidth + x)] >= 0) {
+                    ++covered;
+                    agreeing += largestRelativeError(test::pixel(shown, x, y), test::pixel(reference.value, x, y)) <= 3e-2f;
+                }
+            }
+        }
+        EXPECT_GT(covered, 2000);
+        // Every pixel agrees on llvmpipe (with level 0 alone on the CPU, none did); a margin for
+        // another rasteriser's filtering arithmetic.
+        EXPECT_GE(agreeing, covered * 98 / 100)
+            << "nearest " << nearest << ", mipmaps " << mipmaps << ": " << agreeing << " of " << covered;
     }
 }
 

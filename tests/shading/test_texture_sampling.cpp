@@ -273,5 +273,58 @@ TEST(TextureMaterial, FactorsTimesTexelsFromTheRightChannels) {
     EXPECT_FLOAT_EQ(m.metallic, 0.24f);    // B
 }
 
+// OpenGL 4.6 core 8.14.1: lambda = log2 of the larger derivative's length in texels.
+TEST(TextureLevelOfDetail, IsLog2OfTheLargerStepInTexels) {
+    EXPECT_FLOAT_EQ(shader::textureLevelOfDetail({1.0f / 64.0f, 0.0f}, {0.0f, 1.0f / 256.0f}, {256.0f, 256.0f}), 2.0f);
+    EXPECT_FLOAT_EQ(shader::textureLevelOfDetail({0.0f, 0.0f}, {0.0f, 3.0f / 128.0f}, {64.0f, 128.0f}), std::log2(3.0f));
+    EXPECT_LT(shader::textureLevelOfDetail({0.0f, 0.0f}, {0.0f, 0.0f}, {64.0f, 64.0f}), -60.0f);   // magnified
+}
+
+// Each level half the last down to 1 x 1, each texel the mean of four: an sRGB image's RGB in
+// linear light, its alpha (and a data image's every channel) as stored.
+TEST(TextureMipLevels, HalveDownToOneTexelAveragingSrgbInLinearLight) {
+    // 5 x 2: black and white columns, alpha 0 and 255.
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 5; ++x) {
+            const uint8_t v = x % 2 ? 255 : 0;
+            rgba.insert(rgba.end(), {v, v, v, v});
+        }
+    }
+    const std::vector<ImageLevel> srgb = mipLevels(rgba.data(), 5, 2, true);
+    ASSERT_EQ(srgb.size(), 2u);   // 2 x 1, then 1 x 1
+    EXPECT_EQ(srgb[0].width, 2);
+    EXPECT_EQ(srgb[0].height, 1);
+    EXPECT_EQ(srgb[1].width, 1);
+    // Half of white in linear light is sRGB 188, not 128; alpha is data: 128 (127.5 rounded).
+    EXPECT_EQ(int(srgb[0].rgba[0]), int(std::lround(255.0f * shader::srgbEncode(0.5f))));
+    EXPECT_EQ(int(srgb[0].rgba[0]), 188);
+    EXPECT_EQ(int(srgb[0].rgba[3]), 128);
+    const std::vector<ImageLevel> data = mipLevels(rgba.data(), 5, 2, false);
+    EXPECT_EQ(int(data[0].rgba[0]), 128);
+    EXPECT_TRUE(mipLevels(rgba.data(), 1, 1, false).empty());
+}
+
+// textureLod's choices (OpenGL 4.6 core 8.14-8.15): level 0 magnified at or below c, the two
+// levels around lambda blended by its fraction above it, the last level beyond it.
+TEST(TextureMipLevels, TheLevelOfDetailPicksAndBlendsTheLevels) {
+    std::vector<LinearTexture> levels;
+    for (float v : {0.0f, 0.5f, 1.0f}) {
+        levels.push_back({1 << (2 - levels.size()), 1 << (2 - levels.size()), {}});
+        levels.back().texels.assign(size_t(levels.back().width * levels.back().height), glm::vec4(v));
+    }
+    TextureSampler sampler;
+    const glm::vec2 uv(0.3f, 0.6f);
+    EXPECT_EQ(sampleTextureLod(levels, sampler, uv, -3.0f).x, 0.0f);
+    EXPECT_FLOAT_EQ(sampleTextureLod(levels, sampler, uv, 0.5f).x, 0.25f);
+    EXPECT_FLOAT_EQ(sampleTextureLod(levels, sampler, uv, 1.25f).x, 0.625f);
+    EXPECT_EQ(sampleTextureLod(levels, sampler, uv, 9.0f).x, 1.0f);
+    sampler.nearestMinification = true;   // NEAREST_MIPMAP_LINEAR with LINEAR magnification: c = 0.5
+    EXPECT_EQ(sampleTextureLod(levels, sampler, uv, 0.4f).x, 0.0f);
+    EXPECT_FLOAT_EQ(sampleTextureLod(levels, sampler, uv, 0.75f).x, 0.375f);
+    sampler.mipmaps = false;
+    EXPECT_EQ(sampleTextureLod(levels, sampler, uv, 2.0f).x, 0.0f);
+}
+
 }  // namespace
 }  // namespace patina
