@@ -1,6 +1,7 @@
 #include "shading/texture_sampling.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "shading/shading.h"
@@ -53,10 +54,18 @@ glm::vec4 filtered(const LinearTexture& texture, const TextureSampler& sampler, 
 
 // One channel's mean of four 8-bit values, in linear light when `srgb`, rounded to 8 bits.
 uint8_t meanOf(const uint8_t* const values[4], int channel, bool srgb) {
+    // srgbDecode of each 8-bit value, made once: a 4K map's levels decode 64 million values.
+    static const std::array<float, 256> decoded = [] {
+        std::array<float, 256> table{};
+        for (int v = 0; v < 256; ++v) {
+            table[size_t(v)] = shader::srgbDecode(float(v) / 255.0f);
+        }
+        return table;
+    }();
     float sum = 0.0f;
     for (int i = 0; i < 4; ++i) {
-        const float v = float(values[i][channel]) / 255.0f;
-        sum += srgb ? shader::srgbDecode(v) : v;
+        const uint8_t v = values[i][channel];
+        sum += srgb ? decoded[v] : float(v) / 255.0f;
     }
     const float mean = sum / 4.0f;
     return uint8_t(std::lround(255.0f * (srgb ? shader::srgbEncode(mean) : mean)));
