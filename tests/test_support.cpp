@@ -70,6 +70,23 @@ const PreparedScene& preparedDefault() {
     return prepared;
 }
 
+Model twoBalls() {
+    Model model;
+    model.primitives = {makeUvSphere(16, 32)};
+    for (const char* name : {"left", "right"}) {
+        ModelMaterial material;
+        material.name = name;
+        model.materials.push_back(material);
+    }
+    auto at = [](float x) {
+        glm::mat4 transform(1.0f);
+        transform[3] = glm::vec4(x, 0.0f, 0.0f, 1.0f);
+        return transform;
+    };
+    model.draws = {{0, 0, at(-1.2f), "left ball"}, {0, 1, at(1.2f), "right ball"}};
+    return model;
+}
+
 Mesh facingQuad(float halfWidth, float halfHeight) {
     Mesh quad;
     quad.positions = {{-halfWidth, -halfHeight, 0.0f},

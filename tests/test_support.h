@@ -38,6 +38,10 @@ std::shared_ptr<const Environment> madeEnvironment(const std::string& source);
 // facing +z (counter-clockwise seen from there).
 Mesh facingQuad(float halfWidth, float halfHeight);
 
+// Two unit spheres at x = -1.2 ("left ball", material "left") and x = 1.2 ("right ball",
+// material "right"): a model of two parts to pick between.
+Model twoBalls();
+
 // Pixel (x, y) of `image` (rows top first), and the pixel `point` lands in seen by `camera` in a
 // width x height image.
 glm::vec3 pixel(const HdrImage& image, int x, int y);

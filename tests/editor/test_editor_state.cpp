@@ -8,7 +8,6 @@
 #include <iterator>
 #include <thread>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "editor_settings.h"
@@ -786,17 +785,8 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
 // A click on a part selects its material for the Material panel; the selected part is
 // outlined, and its outline follows the eye.
 TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {
-    Model model;
-    model.primitives = {makeUvSphere(16, 32)};
-    for (const char* name : {"left", "right"}) {
-        ModelMaterial material;
-        material.name = name;
-        model.materials.push_back(material);
-    }
-    const glm::vec3 left(-1.2f, 0.0f, 0.0f), right(1.2f, 0.0f, 0.0f);
-    model.draws = {{0, 0, glm::translate(glm::mat4(1.0f), left), "left ball"},
-                   {0, 1, glm::translate(glm::mat4(1.0f), right), "right ball"}};
-    exportGltfModel(dir_ / "two.glb", model);
+    const glm::vec3 right(1.2f, 0.0f, 0.0f);
+    exportGltfModel(dir_ / "two.glb", test::twoBalls());
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
     ASSERT_EQ(state.selectedModelMaterial, 0);
     const float aspect = 1.5f;

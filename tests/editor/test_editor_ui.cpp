@@ -6,7 +6,6 @@
 #include <thread>
 
 #include <epoxy/gl.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -297,17 +296,8 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
 // A click on a part of a model selects its material for the Material panel, a drag does not;
 // a map's checkbox leaves the map out of the picture, undoably.
 TEST_F(EditorUi, AClickOnAPartSelectsItAndAMapsCheckboxLeavesTheMapOut) {
-    Model model;
-    model.primitives = {makeUvSphere(16, 32)};
-    for (const char* name : {"left", "right"}) {
-        ModelMaterial material;
-        material.name = name;
-        model.materials.push_back(material);
-    }
-    const glm::vec3 left(-1.2f, 0.0f, 0.0f), right(1.2f, 0.0f, 0.0f);
-    model.draws = {{0, 0, glm::translate(glm::mat4(1.0f), left), "left ball"},
-                   {0, 1, glm::translate(glm::mat4(1.0f), right), "right ball"}};
-    exportGltfModel(path("two.glb"), model);
+    const glm::vec3 left(-1.2f, 0.0f, 0.0f), right(1.2f, 0.0f, 0.0f);   // test::twoBalls's
+    exportGltfModel(path("two.glb"), test::twoBalls());
     ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
     frames(2);
     ASSERT_EQ(state_.selectedModelMaterial, 0);
