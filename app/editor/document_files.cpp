@@ -117,6 +117,9 @@ void startDocument(EditorState& state, const Scene& scene, const std::filesystem
     state.draggedLight = -1;
     // An environment still being prepared was chosen for the last document.
     state.environmentLoad.reset();
+    if (state.modelLoad) {   // the last document's model does not land in this one
+        state.droppedModelLoads.push_back(std::move(state.modelLoad));
+    }
     state.environmentFailed.clear();
 }
 

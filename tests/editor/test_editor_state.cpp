@@ -780,6 +780,12 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
     EXPECT_FALSE(finishModelLoad(state));
     EXPECT_TRUE(state.droppedModelLoads.empty()) << "a dropped load is let go once its worker ends";
     EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
+    // A new document started meanwhile does not get the last one's model.
+    requestOpen(state, dir_ / "sphere.glb");
+    newDocument(state);
+    EXPECT_EQ(state.modelLoad, nullptr);
+    EXPECT_FALSE(finishModelLoad(state, true));
+    EXPECT_TRUE(state.scene.meshFile.empty());
 }
 
 // A click on a part selects its material for the Material panel; the selected part is
