@@ -39,7 +39,11 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
     const std::shared_ptr<const Model>& model = loaded.model;
     {
         const BoundingSphere before = meshBounds(state);
-        state.scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+        const std::string file = std::filesystem::absolute(path).lexically_normal().string();
+        // The tuning belongs to the file it was made on: another model, even with a material
+        // of the same index and name, starts as its file says (reopening the same one keeps it).
+        const bool another = file != state.scene.meshFile;
+        state.scene.meshFile = file;
         state.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
         state.model = model;
         state.selectedModelMaterial = 0;
@@ -48,7 +52,12 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
         // of units used to swallow every point light. Its materials are its own (the scene's
         // material stays the built-in meshes').
         const BoundingSphere after = meshBounds(state);
-        applyEdit(state, [&](Document& d) { moveLightRig(d.scene.lights, before, after); });
+        applyEdit(state, [&](Document& d) {
+            moveLightRig(d.scene.lights, before, after);
+            if (another) {
+                d.scene.modelMaterials.clear();
+            }
+        });
         state.error.clear();
         state.status = "Mesh " + path.filename().string() + modelSummary(*model);
         rememberRecent(state, path);

@@ -130,6 +130,9 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         ImGui::PopItemWidth();
     }
     ImGui::End();
+    // The menu, a shortcut or a panel may have changed the document this frame (New, Open, an
+    // undo): the viewport draws the environment its light names, never one not yet looked up.
+    resolveEnvironmentShown(state);
     ImGui::SetNextWindowPos(ImVec2(at.viewport.x, at.viewport.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(at.viewport.width, at.viewport.height), ImGuiCond_Always);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(px(4), px(4)));

@@ -143,8 +143,9 @@ Json samplerJson(const TextureSampler& sampler) {
         }
         return 10497;
     };
-    // NEAREST / LINEAR, and with mipmaps NEAREST_MIPMAP_NEAREST / LINEAR_MIPMAP_LINEAR.
-    const int minFilter = sampler.mipmaps ? (sampler.nearestMinification ? 9984 : 9987)
+    // NEAREST / LINEAR, and with mipmaps NEAREST_MIPMAP_LINEAR / LINEAR_MIPMAP_LINEAR: what
+    // Patina samples (nearest within a level, levels blended; gl/model_textures.cpp).
+    const int minFilter = sampler.mipmaps ? (sampler.nearestMinification ? 9986 : 9987)
                                           : (sampler.nearestMinification ? 9728 : 9729);
     return Json{{"magFilter", sampler.nearestMagnification ? 9728 : 9729},
                 {"minFilter", minFilter},

@@ -691,6 +691,14 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_EQ(modelMaterialCount(state), 1);
     EXPECT_EQ(editedMaterial(state).roughness, 0.9f);
     EXPECT_FALSE(state.dirty());
+    // Another model, whose material has the same index and name, starts as its file says; an
+    // undo brings the tuning back.
+    exportGltf(dir_ / "gold copy.glb", makeUvSphere(), gold);
+    ASSERT_TRUE(openFile(state, dir_ / "gold copy.glb")) << state.error;
+    EXPECT_TRUE(state.scene.modelMaterials.empty());
+    EXPECT_NEAR(editedMaterial(state).roughness, 0.3f, 1e-6f);
+    undo(state);
+    EXPECT_EQ(state.scene.modelMaterials.size(), 1u);
 }
 
 // File > Export as glTF writes the model as tuned, maps and all, and is no save; a built-in

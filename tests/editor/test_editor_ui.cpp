@@ -340,6 +340,17 @@ TEST_F(EditorUi, AModelReadOnAWorkerWaitsForAnOpenPrompt) {
     EXPECT_EQ(state_.modelLoad, nullptr);
 }
 
+// File > New by its shortcut replaces the document before the viewport draws in that frame:
+// the new scene's environment is looked up first, never reported as not prepared.
+TEST_F(EditorUi, NewByItsShortcutDrawsTheNewScenesEnvironmentAtOnce) {
+    ASSERT_GE(state_.environmentIndex(), 0);
+    frames(2);
+    press(kKeyN, true);
+    EXPECT_EQ(state_.status, "New scene");
+    EXPECT_EQ(state_.error, "");
+    ASSERT_NE(state_.environment, nullptr);
+}
+
 // Every texture the last rendered UI frame draws (the font atlas has none headlessly), with
 // its size as the GL has it now; -1 x -1 for a name that is no longer a texture.
 std::map<unsigned, std::pair<int, int>> drawnTextures() {
