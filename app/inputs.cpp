@@ -54,19 +54,29 @@ PreparedScene SceneInputs::prepare(const Scene& scene, AssetCache& assets) {
     return prepared;
 }
 
-void SceneInputs::putMaterialOnParts(Scene& scene, const Model* model) const {
-    if (!part.empty() && (materialPath.empty() || !model)) {
-        throw InputError("--part names a part of a glTF model and needs --material" +
-                         std::string(model ? "" : " and a scene or --mesh that is a model"));
-    }
-    if (materialPath.empty() || !model) {
+void putMaterialOnParts(Scene& scene, const Model* model, const Material& material, const std::string& part) {
+    if (!model) {
+        if (!part.empty()) {
+            throw InputError("--part names a part of a glTF model, and the scene's mesh is a built-in one");
+        }
         return;
     }
     try {
-        setPartMaterials(scene, *model, scene.material, part);
+        setPartMaterials(scene, *model, material, part);
     } catch (const std::invalid_argument& error) {
         throw InputError("--part: " + std::string(error.what()));
     }
+}
+
+void SceneInputs::putMaterialOnParts(Scene& scene, const Model* model) const {
+    if (materialPath.empty()) {
+        if (!part.empty()) {
+            throw InputError("--part names a part of a glTF model to put --material on, and needs --material");
+        }
+        return;
+    }
+    const Material material = scene.material;   // setPartMaterials adds to `scene`
+    cli::putMaterialOnParts(scene, model, material, part);
 }
 
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {

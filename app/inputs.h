@@ -32,6 +32,11 @@ struct SceneInputs {
     void putMaterialOnParts(Scene& scene, const Model* model) const;
 };
 
+// `material` on `model`'s parts as the scene's edits of them: every part, or the parts named
+// `part` (setPartMaterials). `model` null (a built-in mesh): nothing, or InputError for a
+// `part`; InputError for a `part` the model lacks, listing its parts.
+void putMaterialOnParts(Scene& scene, const Model* model, const Material& material, const std::string& part);
+
 // "warning: ..." on stderr, one a line.
 void printWarnings(const std::vector<std::string>& warnings);
 

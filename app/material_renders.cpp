@@ -3,7 +3,6 @@
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
 #include "inputs.h"
-#include "io/input_error.h"
 
 namespace patina::cli {
 
@@ -23,17 +22,7 @@ namespace {
 void putMaterial(Scene& scene, const PreparedScene& prepared, const Material& material, const std::string& part) {
     scene.material = material;
     scene.modelMaterials = prepared.scene.modelMaterials;
-    if (!prepared.model) {
-        if (!part.empty()) {
-            throw InputError("--part names a part of a glTF model, and the scene's mesh is a built-in one");
-        }
-        return;
-    }
-    try {
-        setPartMaterials(scene, *prepared.model, material, part);
-    } catch (const std::invalid_argument& error) {
-        throw InputError("--part: " + std::string(error.what()));
-    }
+    putMaterialOnParts(scene, prepared.model.get(), material, part);
 }
 }  // namespace
 

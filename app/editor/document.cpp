@@ -192,8 +192,10 @@ void setModelMaterial(const Document& document, Scene& scene, int index, Materia
 }
 
 namespace {
-ModelMaterialEdit* editOf(Scene& scene, int index) {
-    for (ModelMaterialEdit& edit : scene.modelMaterials) {
+// The scene's edit of the model's material `index`, or null (Scene or const Scene).
+template <typename SceneType>
+auto editOf(SceneType& scene, int index) -> decltype(&scene.modelMaterials.front()) {
+    for (auto& edit : scene.modelMaterials) {
         if (edit.index == index) {
             return &edit;
         }
@@ -203,12 +205,8 @@ ModelMaterialEdit* editOf(Scene& scene, int index) {
 }  // namespace
 
 bool mapShown(const Scene& scene, int index, const std::string& key) {
-    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
-        if (edit.index == index) {
-            return std::find(edit.mapsOff.begin(), edit.mapsOff.end(), key) == edit.mapsOff.end();
-        }
-    }
-    return true;
+    const ModelMaterialEdit* edit = editOf(scene, index);
+    return !edit || std::find(edit->mapsOff.begin(), edit->mapsOff.end(), key) == edit->mapsOff.end();
 }
 
 void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown) {

@@ -37,31 +37,29 @@ std::string modelSummary(const Model& model) {
 void applyMesh(EditorState& state, const std::filesystem::path& path, const ModelLoad::Result& loaded) {
     const std::shared_ptr<const GltfImport>& imported = loaded.imported;
     const std::shared_ptr<const Model>& model = loaded.model;
-    {
-        const BoundingSphere before = meshBounds(state);
-        const std::string file = std::filesystem::absolute(path).lexically_normal().string();
-        // The tuning belongs to the file it was made on: another model, even with a material
-        // of the same index and name, starts as its file says (reopening the same one keeps it).
-        const bool another = file != state.scene.meshFile;
-        state.scene.meshFile = file;
-        state.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
-        state.model = model;
-        state.selectedModelMaterial = 0;
-        frameMesh(state);
-        // The lights follow the model's size and place, an undoable step: a model of hundreds
-        // of units used to swallow every point light. Its materials are its own (the scene's
-        // material stays the built-in meshes').
-        const BoundingSphere after = meshBounds(state);
-        applyEdit(state, [&](Document& d) {
-            moveLightRig(d.scene.lights, before, after);
-            if (another) {
-                d.scene.modelMaterials.clear();
-            }
-        });
-        state.error.clear();
-        state.status = "Mesh " + path.filename().string() + modelSummary(*model);
-        rememberRecent(state, path);
-    }
+    const BoundingSphere before = meshBounds(state);
+    const std::string file = std::filesystem::absolute(path).lexically_normal().string();
+    // The tuning belongs to the file it was made on: another model, even with a material
+    // of the same index and name, starts as its file says (reopening the same one keeps it).
+    const bool another = file != state.scene.meshFile;
+    state.scene.meshFile = file;
+    state.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
+    state.model = model;
+    state.selectedModelMaterial = 0;
+    frameMesh(state);
+    // The lights follow the model's size and place, an undoable step: a model of hundreds
+    // of units used to swallow every point light. Its materials are its own (the scene's
+    // material stays the built-in meshes').
+    const BoundingSphere after = meshBounds(state);
+    applyEdit(state, [&](Document& d) {
+        moveLightRig(d.scene.lights, before, after);
+        if (another) {
+            d.scene.modelMaterials.clear();
+        }
+    });
+    state.error.clear();
+    state.status = "Mesh " + path.filename().string() + modelSummary(*model);
+    rememberRecent(state, path);
 }
 
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
@@ -98,11 +96,21 @@ bool finishModelLoad(EditorState& state, bool wait) {
     }
 }
 
+namespace {
+// The model under way, no longer wanted. Its worker cannot be stopped midway: it ends on its
+// own, its result unused, while the editor goes on (a future waits for its worker when
+// destroyed, so the load is kept until then). False when none was under way.
+bool dropModelLoad(EditorState& state) {
+    if (!state.modelLoad) {
+        return false;
+    }
+    state.droppedModelLoads.push_back(std::move(state.modelLoad));
+    return true;
+}
+}  // namespace
+
 void cancelModelLoad(EditorState& state) {
-    if (state.modelLoad) {
-        // Its worker cannot be stopped midway: it ends on its own, its result unused, while
-        // the editor goes on (a future waits for its worker when destroyed).
-        state.droppedModelLoads.push_back(std::move(state.modelLoad));
+    if (dropModelLoad(state)) {
         state.status = "Mesh left as it was";
     }
 }
@@ -126,9 +134,7 @@ void startDocument(EditorState& state, const Scene& scene, const std::filesystem
     state.draggedLight = -1;
     // An environment still being prepared was chosen for the last document.
     state.environmentLoad.reset();
-    if (state.modelLoad) {   // the last document's model does not land in this one
-        state.droppedModelLoads.push_back(std::move(state.modelLoad));
-    }
+    dropModelLoad(state);   // the last document's model does not land in this one
     state.environmentFailed.clear();
 }
 

@@ -43,6 +43,7 @@ bool pickPart(EditorState& state, glm::vec2 ndc, float aspect) {
 }
 
 const std::vector<Segment>& partOutline(EditorState& state) {
+    static const std::vector<DrawItem> kNoDraws;   // without a model (a reference: no copy of the draws)
     if (!state.partOutline) {
         state.partOutline = std::make_shared<PartOutlineCache>();
     }
@@ -51,7 +52,7 @@ const std::vector<Segment>& partOutline(EditorState& state) {
         cache = PartOutlineCache{};
         cache.model = state.model;
         cache.material = state.selectedModelMaterial;
-        for (const DrawItem& item : state.model ? state.model->draws : std::vector<DrawItem>{}) {
+        for (const DrawItem& item : state.model ? state.model->draws : kNoDraws) {
             if (item.material == cache.material && size_t(item.primitive) < state.model->primitives.size()) {
                 cache.draws.emplace_back(item.transform, edgeFaces(state.model->primitives[size_t(item.primitive)]));
             }
