@@ -11,7 +11,7 @@ namespace patina::cli {
 
 Command addCompareCommand(CLI::App& app) {
     struct Options {
-        std::string scenePath, a, b, out, part;
+        std::string scenePath, a, b, out, part, mesh;
         int width = 512, height = 512;
         bool diff = false;
     };
@@ -24,15 +24,17 @@ Command addCompareCommand(CLI::App& app) {
     command->add_option("--width", options->width, "Width of each panel")->check(CLI::Range(1, 4096));
     command->add_option("--height", options->height, "Height of each panel")->check(CLI::Range(1, 4096));
     command->add_option("--out", options->out, "Output PNG")->required();
+    addMeshOption(*command, options->mesh);
     command->add_option("--part", options->part,
                         "With a glTF model: A and B on the parts of this material name only (default: every part)");
     command->add_flag("--diff", options->diff, "Add a third panel: the difference as a heat map");
     return [options] {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
-        const Scene scene = inputs.load();
+        inputs.mesh = options->mesh;
+        Scene scene = inputs.load();
         AssetCache assets;
-        const PreparedScene prepared = SceneInputs::prepare(scene, assets);
+        const PreparedScene prepared = inputs.prepare(scene, assets);
         const std::vector<Material> materials = loadMaterials({options->a, options->b});
         std::vector<LdrImage> panels =
             renderMaterials(prepared, materials, {options->width, options->height, options->part});

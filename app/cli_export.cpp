@@ -12,15 +12,13 @@ namespace patina::cli {
 Command addExportCommand(CLI::App& app) {
     struct Options {
         SceneInputs inputs;
-        std::string mesh, out;
+        std::string out;
         bool binFile = false;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
         "export", "Write a mesh with a material, or a glTF model with its tuned materials, as glTF 2.0 (.gltf or .glb)");
     options->inputs.addOptions(*command, true, true);
-    command->add_option("--mesh", options->mesh,
-                        "sphere, torus, or a .gltf/.glb model (default: the scene's mesh)");
     command->add_option("--out", options->out, "Output .gltf or .glb")
         ->required()
         ->check(CLI::Validator(
@@ -31,12 +29,7 @@ Command addExportCommand(CLI::App& app) {
     command->add_flag("--bin", options->binFile, "With .gltf: the buffer in F.bin beside it, not a data: URI");
     return [options] {
         Scene scene = options->inputs.load();
-        if (const auto kind = meshKindFromName(options->mesh)) {
-            scene.mesh = *kind;
-            scene.meshFile.clear();
-        } else if (!options->mesh.empty()) {
-            scene.meshFile = options->mesh;
-        }
+        options->inputs.replaceMesh(scene);   // no camera nor lights in the file: nothing to fit
         const GltfBuffer buffer = options->binFile ? GltfBuffer::BinFile : GltfBuffer::Embedded;
         AssetCache assets;
         try {

@@ -95,7 +95,7 @@ Command addRenderCommand(CLI::App& app) {
         }
         Scene scene = options->inputs.load();
         AssetCache assets;
-        const PreparedScene prepared = SceneInputs::prepare(scene, assets);
+        const PreparedScene prepared = options->inputs.prepare(scene, assets);
         options->inputs.putMaterialOnParts(scene, prepared.model.get());   // `prepared` reads `scene`
         if (options->reference) {
             const RenderOutput output =

@@ -14,7 +14,7 @@ namespace patina::cli {
 
 Command addSheetCommand(CLI::App& app) {
     struct Options {
-        std::string scenePath, out, part;
+        std::string scenePath, out, part, mesh;
         std::vector<std::string> materials;
         int columns = 4, size = 256;
     };
@@ -27,14 +27,16 @@ Command addSheetCommand(CLI::App& app) {
     command->add_option("--size", options->size, "Width and height of each cell")
         ->check(CLI::Range(1, 4096));
     command->add_option("--scene", options->scenePath, "Scene JSON (default: the embedded scene)");
+    addMeshOption(*command, options->mesh);
     command->add_option("--part", options->part,
                         "With a glTF model: each material on the parts of this material name only (default: every part)");
     return [options] {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
-        const Scene scene = inputs.load();
+        inputs.mesh = options->mesh;
+        Scene scene = inputs.load();
         AssetCache assets;
-        const PreparedScene prepared = SceneInputs::prepare(scene, assets);
+        const PreparedScene prepared = inputs.prepare(scene, assets);
         const std::vector<Material> materials = loadMaterials(options->materials);
         std::vector<std::string> names;
         for (const Material& material : materials) {

@@ -5,9 +5,11 @@
 #include "shading/brdf_models.h"
 #include "assets/prepare_scene.h"
 #include "image/image.h"
+#include "io/file_kinds.h"
 #include "io/input_error.h"
 #include "io/scene_file.h"
 #include "io/file_bytes.h"
+#include "scene/light_rig.h"
 
 namespace patina::cli {
 
@@ -15,6 +17,12 @@ void printWarnings(const std::vector<std::string>& warnings) {
     for (const std::string& warning : warnings) {
         std::cerr << "warning: " << warning << "\n";
     }
+}
+
+void addMeshOption(CLI::App& command, std::string& mesh) {
+    command.add_option("--mesh", mesh,
+                       "sphere, torus, or a .gltf/.glb model instead of the scene's mesh, framed by the camera "
+                       "with the lights fitted to its size (default: the scene's mesh, camera and lights)");
 }
 
 void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
@@ -26,6 +34,9 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
         command.add_option("--part", part,
                            "With --material and a glTF model: the material on the parts of this name only "
                            "(default: every part)");
+    }
+    if (withPart) {
+        addMeshOption(command, mesh);
     }
     command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
 }
@@ -47,10 +58,34 @@ Scene SceneInputs::load() const {
     return scene;
 }
 
-PreparedScene SceneInputs::prepare(const Scene& scene, AssetCache& assets) {
+void SceneInputs::replaceMesh(Scene& scene) const {
+    if (mesh.empty()) {
+        return;
+    }
+    if (const auto kind = meshKindFromName(mesh)) {
+        scene.mesh = *kind;
+        scene.meshFile.clear();
+    } else if (!gltfExtension(mesh).empty()) {
+        scene.meshFile = std::filesystem::absolute(mesh).lexically_normal().string();
+    } else {
+        throw InputError("--mesh: \"" + mesh + "\" is neither sphere, torus nor a .gltf/.glb file");
+    }
+}
+
+PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets) const {
     std::vector<std::string> warnings;
+    if (mesh.empty()) {
+        PreparedScene prepared = prepareScene(scene, assets, warnings);
+        printWarnings(warnings);
+        return prepared;
+    }
+    // The rig was made for the scene's own shape: measured before it is replaced.
+    const bool ownFile = !scene.meshFile.empty();
+    const BoundingSphere before = shapeBounds(scene, ownFile ? assets.mesh(scene).get() : nullptr);
+    replaceMesh(scene);
     PreparedScene prepared = prepareScene(scene, assets, warnings);
     printWarnings(warnings);
+    fitSceneTo(scene, before, shapeBounds(scene, prepared.mesh.get()));   // `prepared` reads `scene`
     return prepared;
 }
 

@@ -15,22 +15,32 @@ struct SceneInputs {
     std::string materialPath;
     std::string model;   // empty: the material's own
     std::string part;    // --part: with --material over a model, only the parts of this name
+    std::string mesh;    // --mesh: sphere, torus or a glTF model instead of the scene's; empty: the scene's
 
-    // --scene (withScene), --material, --model, and --part for the commands that draw a model
-    // (withPart).
+    // --scene (withScene), --material, --model, and --mesh and --part for the commands that draw
+    // a model (withPart).
     void addOptions(CLI::App& command, bool withScene = true, bool withPart = false);
     // The scene file (or the embedded default) with --material over its material and --model
     // over the material's model: the document, nothing it names loaded. Warnings go to stderr;
     // errors throw InputError.
     Scene load() const;
-    // `scene` with its mesh and environment loaded through `assets` (assets/prepare_scene.h),
-    // for the commands that draw it. Warnings go to stderr; errors throw InputError.
-    static PreparedScene prepare(const Scene& scene, AssetCache& assets);
+    // --mesh as the scene's mesh (a file relative to the working folder); InputError for a
+    // name that is neither a built-in mesh nor a .gltf/.glb file.
+    void replaceMesh(Scene& scene) const;
+    // `scene` with --mesh as its mesh, and its mesh and environment loaded through `assets`
+    // (assets/prepare_scene.h), for the commands that draw it. --mesh is shown as the editor
+    // opens a model: the camera frames it and the positional lights follow its size
+    // (fitSceneTo); without --mesh the scene's camera and lights stay as its file says.
+    // Warnings go to stderr; errors throw InputError.
+    PreparedScene prepare(Scene& scene, AssetCache& assets) const;
     // --material over `model` (the scene's, null for a built-in mesh): its factors on every
     // part, or on --part's, as the scene's edits of them (setPartMaterials). InputError for a
     // --part the model lacks, or given without --material or without a model.
     void putMaterialOnParts(Scene& scene, const Model* model) const;
 };
+
+// --mesh (SceneInputs::mesh) for a command that sets up its own options.
+void addMeshOption(CLI::App& command, std::string& mesh);
 
 // `material` on `model`'s parts as the scene's edits of them: every part, or the parts named
 // `part` (setPartMaterials). `model` null (a built-in mesh): nothing, or InputError for a

@@ -127,12 +127,7 @@ void redo(EditorState& state) {
 }
 
 BoundingSphere meshBounds(const Document& document) {
-    const Scene& scene = document.scene;
-    if (scene.meshFile.empty() || !document.mesh) {
-        return {glm::vec3(0.0f), scene.mesh == MeshKind::Torus ? 1.05f : 1.0f};
-    }
-    const BoundingSphere bounds = boundingSphere(*document.mesh);
-    return {bounds.center, std::max(bounds.radius, 1e-3f)};
+    return shapeBounds(document.scene, document.mesh.get());
 }
 
 void frameMesh(Document& document) {

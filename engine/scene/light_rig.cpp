@@ -1,6 +1,9 @@
 #include "scene/light_rig.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "scene/camera_control.h"
 
 namespace patina {
 
@@ -28,6 +31,19 @@ void moveLightRig(std::vector<Light>& lights, const BoundingSphere& from, const 
         light.intensity *= s * s;
         light.attenuation *= glm::vec3(s * s, s, 1.0f);
     }
+}
+
+BoundingSphere shapeBounds(const Scene& scene, const Mesh* mesh) {
+    if (scene.meshFile.empty() || !mesh) {
+        return {glm::vec3(0.0f), scene.mesh == MeshKind::Torus ? 1.05f : 1.0f};
+    }
+    const BoundingSphere bounds = boundingSphere(*mesh);
+    return {bounds.center, std::max(bounds.radius, 1e-3f)};
+}
+
+void fitSceneTo(Scene& scene, const BoundingSphere& from, const BoundingSphere& to) {
+    frameCamera(scene.camera, to.center, to.radius);
+    moveLightRig(scene.lights, from, to);
 }
 
 }  // namespace patina

@@ -4,6 +4,7 @@
 
 #include "geometry/mesh.h"
 #include "scene/light.h"
+#include "scene/scene.h"
 
 namespace patina {
 
@@ -16,5 +17,14 @@ namespace patina {
 // hemisphere and environment lights have no position and are left alone. A radius that is not
 // positive and finite on either side leaves the rig as it is.
 void moveLightRig(std::vector<Light>& lights, const BoundingSphere& from, const BoundingSphere& to);
+
+// The sphere the camera frames and the rig is fitted to: `mesh` (the scene's model flattened,
+// radius at least 1e-3) where the scene names a model file, else the built-in mesh's (about the
+// origin, radius 1; the torus 1.05). `mesh` may be null: the built-in's.
+BoundingSphere shapeBounds(const Scene& scene, const Mesh* mesh);
+
+// The scene's shape replaced by one of `to`'s bounds, as opening a model does: the camera frames
+// it and the rig moves from `from` (the shape's before) onto it.
+void fitSceneTo(Scene& scene, const BoundingSphere& from, const BoundingSphere& to);
 
 }  // namespace patina

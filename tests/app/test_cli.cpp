@@ -7,10 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "cli_runner.h"
+#include "gltf/model_export.h"
 #include "image/image.h"
 #include "scratch_test.h"
 #include "io/file_bytes.h"
+#include "test_support.h"
 
 namespace patina {
 namespace {
@@ -132,6 +136,49 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     EXPECT_EQ(run("render --help").exitCode, 0);
     EXPECT_EQ(run("probe --help").exitCode, 0);
     EXPECT_EQ(run("lobe --help").exitCode, 0);
+}
+
+TEST_F(Cli, AModelByMeshIsFramedAndLitTheSameAtAnySize) {
+    // The two balls as made (about 3.4 units across) and 300 times larger, far from the origin:
+    // --mesh frames each and moves the default scene's point light onto it (the directional
+    // light and the studio have no size), so both render the same picture. Without the fit
+    // the large one fills the frame and swallows the light.
+    Model small = test::twoBalls();
+    Model large = small;
+    const glm::mat4 grow = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(500.0f, -200.0f, 40.0f)),
+                                      glm::vec3(300.0f));
+    for (DrawItem& draw : large.draws) {
+        draw.transform = grow * draw.transform;
+    }
+    exportGltfModel(path("small.glb"), small);
+    exportGltfModel(path("large.glb"), large);
+    for (const char* name : {"small", "large"}) {
+        const test::CliRun r = run(std::string("render --msaa 1 --width 64 --height 48 --mesh ") +
+                                   path(std::string(name) + ".glb").string() + " --out " +
+                                   path(std::string(name) + ".png").string() + " --hdr " +
+                                   path(std::string(name) + ".pfm").string());
+        ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    }
+    const HdrImage a = decodePfm(readFileBytes(path("small.pfm")));
+    const HdrImage b = decodePfm(readFileBytes(path("large.pfm")));
+    ASSERT_EQ(a.rgb.size(), b.rgb.size());
+    double lit = 0.0, difference = 0.0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        lit += a.rgb[i];
+        difference += std::abs(double(a.rgb[i]) - double(b.rgb[i]));
+    }
+    EXPECT_LT(difference / lit, 0.01);
+    // The centre of the frame is between the balls: the background, not a ball filling it.
+    EXPECT_EQ(test::pixel(a, 32, 24), test::pixel(a, 0, 0));
+    EXPECT_EQ(test::pixel(b, 32, 24), test::pixel(b, 0, 0));
+}
+
+TEST_F(Cli, AMeshThatIsNoMeshIsRefused) {
+    const test::CliRun r = run("render --mesh ball.obj --out " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("--mesh: \"ball.obj\" is neither sphere, torus nor a .gltf/.glb file"),
+              std::string::npos) << r.stderrText;
+    EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
 TEST_F(Cli, ProbeOnCpuAndGpuAgree) {
