@@ -11,7 +11,7 @@
 #include "accuracy/furnace.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "inputs.h"
 #include "accuracy/stability.h"
 

@@ -10,7 +10,7 @@
 #include "cli.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "inputs.h"
 #include "bench/render_bench.h"
 #include "io/scene_file.h"

@@ -4,7 +4,7 @@
 #include "gltf/export.h"
 #include "gltf/model_export.h"
 #include "io/file_kinds.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "inputs.h"
 
 namespace patina::cli {

@@ -5,7 +5,7 @@
 
 #include "cli.h"
 #include "image/compositing.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "inputs.h"
 #include "material_renders.h"
 #include "image/png_stream.h"

@@ -6,9 +6,9 @@
 #include "assets/prepare_scene.h"
 #include "image/image.h"
 #include "io/file_kinds.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "io/scene_file.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "scene/light_rig.h"
 
 namespace patina::cli {

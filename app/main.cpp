@@ -5,7 +5,7 @@
 
 #include "cli.h"
 #include "editor_app.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"Patina: a live editor for physically based materials (Karis 2013 shading)"};

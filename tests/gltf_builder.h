@@ -14,7 +14,7 @@
 #include "gltf/glb.h"
 #include "gltf/import.h"
 #include "gltf/model_import.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "io/json_reader.h"
 
 // `message` (an error) contains `part`; else the test fails, showing the message.

@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "editor_state.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "io/json_reader.h"
 #include "io/scene_file.h"
 #include "save_errors.h"

@@ -8,7 +8,7 @@
 #include "gltf/model_export.h"
 #include "image/png_text.h"
 #include "io/file_kinds.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "io/scene_file.h"
 #include "scene/light_rig.h"
 #include "save_errors.h"

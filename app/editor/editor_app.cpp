@@ -13,7 +13,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "gl/gpu_prefilter.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "editor_settings.h"
 #include "frame_stats.h"
 #include "panel_guard.h"

@@ -10,7 +10,7 @@
 #include "image/display_image.h"
 #include "image/png_text.h"
 #include "io/scene_file.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "preview_scene.h"
 #include "save_errors.h"
 #include "screenshot_comparison.h"

@@ -6,7 +6,7 @@
 #include "image/image.h"
 #include "io/json_writer.h"
 #include "io/scene_file.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "save_errors.h"
 
 namespace patina::editor {

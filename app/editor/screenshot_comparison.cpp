@@ -2,7 +2,7 @@
 
 #include "image/png_text.h"
 #include "io/json_reader.h"
-#include "io/regular_file.h"
+#include "files/regular_file.h"
 #include "io/scene_file.h"
 
 namespace patina::editor {

@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 
 namespace patina::editor {
 

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina {
 

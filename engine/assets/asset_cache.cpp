@@ -3,7 +3,7 @@
 #include "common/content_hash.h"
 #include "gltf/files.h"
 #include "gltf/model_import.h"
-#include "image/environment_source.h"
+#include "environment/environment_source.h"
 
 namespace patina {
 

@@ -46,7 +46,7 @@ public:
     std::shared_ptr<const Model> drawnModel(const std::filesystem::path& path);
     std::shared_ptr<const Mesh> mesh(const Scene& scene) { return shape(scene).mesh; }
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
-    // the disk cache of image/environment_source.h. A note about replaced pixels goes to
+    // the disk cache of environment/environment_source.h. A note about replaced pixels goes to
     // `warnings` each time. InputError naming the file when it cannot be read or decoded;
     // null when `progress` stopped it.
     std::shared_ptr<const Environment> environment(const std::string& source, std::vector<std::string>& warnings,

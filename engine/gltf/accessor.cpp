@@ -5,7 +5,7 @@
 #include <cstring>
 #include <limits>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

@@ -6,7 +6,7 @@
 #include "gltf/files.h"
 #include "gltf/glb.h"
 #include "gltf/json_check.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

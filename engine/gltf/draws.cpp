@@ -7,7 +7,7 @@
 #include "gltf/import.h"
 #include "gltf/nodes.h"
 #include "gltf/primitives.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "model/placement.h"
 
 namespace patina::gltf {

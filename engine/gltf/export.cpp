@@ -2,7 +2,7 @@
 
 #include "gltf/model_export.h"
 #include "io/file_kinds.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina {
 

@@ -5,8 +5,8 @@
 
 #include <fcntl.h>
 
-#include "io/input_error.h"
-#include "io/regular_file.h"
+#include "files/input_error.h"
+#include "files/regular_file.h"
 
 namespace patina::gltf {
 

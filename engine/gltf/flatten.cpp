@@ -4,7 +4,7 @@
 
 #include <glm/mat3x3.hpp>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "model/placement.h"
 
 namespace patina::gltf {

@@ -1,6 +1,6 @@
 #include "gltf/glb.h"
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gltf/json_rules.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

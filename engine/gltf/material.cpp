@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "gltf/values.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

@@ -16,7 +16,7 @@
 #include "gltf/material.h"
 #include "image/image.h"
 #include "io/file_kinds.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "model/placement.h"
 
 namespace patina {

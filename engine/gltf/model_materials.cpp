@@ -6,7 +6,7 @@
 
 #include "gltf/material.h"
 #include "gltf/values.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

@@ -6,7 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

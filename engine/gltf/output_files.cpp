@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 
 namespace patina {
 

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "gltf/import.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

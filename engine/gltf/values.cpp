@@ -1,6 +1,6 @@
 #include "gltf/values.h"
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina::gltf {
 

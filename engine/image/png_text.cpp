@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "io/json_reader.h"
 #include "image/png_chunks.h"
-#include "io/regular_file.h"
+#include "files/regular_file.h"
 #include "io/scene_file.h"
 
 namespace patina {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/regular_file.h"
+#include "files/regular_file.h"
 
 namespace patina {
 

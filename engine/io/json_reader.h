@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "scene/json_value.h"
 
 namespace patina {

@@ -7,7 +7,7 @@
 #include "environment/builtin_environments.h"
 #include "shading/brdf_models.h"
 #include "io/file_kinds.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "io/json_writer.h"
 #include "model/model.h"
 #include "shading/shading.h"

@@ -21,7 +21,7 @@
 #include "accuracy/stability.h"
 #include "environment/environment.h"
 #include "test_support.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 
 namespace patina {
 namespace {

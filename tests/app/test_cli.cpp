@@ -13,7 +13,7 @@
 #include "gltf/model_export.h"
 #include "image/image.h"
 #include "scratch_test.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "test_support.h"
 
 namespace patina {

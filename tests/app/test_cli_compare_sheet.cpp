@@ -11,7 +11,7 @@
 #include "image/compositing.h"
 #include "image/image.h"
 #include "scratch_test.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "io/json_writer.h"
 #include "io/scene_file.h"
 

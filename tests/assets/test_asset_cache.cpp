@@ -12,7 +12,7 @@
 #include "assets/asset_cache.h"
 #include "assets/prepare_scene.h"
 #include "gltf/export.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "gltf_builder.h"
 #include "scratch_test.h"
 #include "test_support.h"

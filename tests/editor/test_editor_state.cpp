@@ -30,7 +30,7 @@
 #include "io/json_writer.h"
 #include "scratch_test.h"
 #include "test_support.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "io/scene_file.h"
 
 namespace patina::editor {

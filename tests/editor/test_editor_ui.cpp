@@ -24,7 +24,7 @@
 #include "test_support.h"
 #include "ui_scale.h"
 #include "widgets.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 
 namespace patina::editor {
 namespace {

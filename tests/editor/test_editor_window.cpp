@@ -15,7 +15,7 @@
 #include "image/image.h"
 #include "image/png_text.h"
 #include "io/json_reader.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "io/scene_file.h"
 
 namespace patina {

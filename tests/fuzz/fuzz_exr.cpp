@@ -6,8 +6,8 @@
 #include <cstdlib>
 
 #include "environment/equirect.h"
-#include "image/environment_files.h"
-#include "io/input_error.h"
+#include "environment/environment_files.h"
+#include "files/input_error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace patina;

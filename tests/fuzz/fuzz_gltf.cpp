@@ -15,7 +15,7 @@
 #include "gltf/model_export.h"
 #include "gltf/model_import.h"
 #include "geometry/hidden_faces.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "scratch_folder.h"
 
 namespace {

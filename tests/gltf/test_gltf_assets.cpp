@@ -11,7 +11,7 @@
 #include "gltf/model_import.h"
 #include "gltf_builder.h"
 #include "image/image.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "io/json_reader.h"
 
 namespace patina {

@@ -12,7 +12,7 @@
 #include "gltf/import.h"
 #include "image/image.h"
 #include "scratch_test.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 
 namespace patina {
 namespace {

@@ -10,7 +10,7 @@
 #include "image/png_text.h"
 #include "io/scene_file.h"
 #include "scratch_test.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 #include "assets/asset_cache.h"
 
 namespace patina {

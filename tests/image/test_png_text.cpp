@@ -11,13 +11,13 @@
 #include "scratch_test.h"
 
 #include "image/image.h"
-#include "io/input_error.h"
+#include "files/input_error.h"
 #include "io/json_writer.h"
 #include "image/png_chunks.h"
 #include "image/png_stream.h"
 #include "image/png_text.h"
 #include "io/scene_file.h"
-#include "io/file_bytes.h"
+#include "files/file_bytes.h"
 
 namespace patina {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Whole files in and out: for outputs Patina writes and files it reads back whole (for a user's
-// input, io/regular_file.h checks type and size through one descriptor).
+// input, files/regular_file.h checks type and size through one descriptor).
 #include <cstdint>
 #include <filesystem>
 #include <vector>

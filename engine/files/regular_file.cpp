@@ -1,4 +1,4 @@
-#include "io/regular_file.h"
+#include "files/regular_file.h"
 
 #include <cerrno>
 #include <cstring>
@@ -7,7 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "io/input_error.h"
+#include "files/input_error.h"
 
 namespace patina {
 

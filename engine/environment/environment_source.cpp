@@ -1,4 +1,4 @@
-#include "image/environment_source.h"
+#include "environment/environment_source.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -7,10 +7,10 @@
 #include "common/content_hash.h"
 #include "environment/builtin_environments.h"
 #include "environment/equirect.h"
-#include "image/environment_files.h"
-#include "io/file_bytes.h"
-#include "io/input_error.h"
-#include "io/regular_file.h"
+#include "environment/environment_files.h"
+#include "files/file_bytes.h"
+#include "files/input_error.h"
+#include "files/regular_file.h"
 
 namespace patina {
 

@@ -1,4 +1,4 @@
-#include "image/environment_files.h"
+#include "environment/environment_files.h"
 
 #include <algorithm>
 #include <array>
@@ -22,8 +22,8 @@
 
 #include "common/one_line.h"
 #include "environment/equirect.h"
-#include "io/input_error.h"
-#include "io/regular_file.h"
+#include "files/input_error.h"
+#include "files/regular_file.h"
 
 namespace patina {
 

@@ -1,4 +1,4 @@
-// The environment-image readers (engine/image/environment_files.h): Radiance .hdr through
+// The environment-image readers (engine/environment/environment_files.h): Radiance .hdr through
 // stb_image and OpenEXR through OpenEXR 3.1. Files are made here (RGBE by hand, EXR with OpenEXR's
 // writers), read back and compared; damaged and hostile ones must end in an InputError that names
 // the file, never a hang (CVE-2021-42715), a crash or a huge allocation.
@@ -31,9 +31,9 @@
 
 #include "scratch_test.h"
 
-#include "image/environment_files.h"
-#include "io/file_bytes.h"
-#include "io/input_error.h"
+#include "environment/environment_files.h"
+#include "files/file_bytes.h"
+#include "files/input_error.h"
 
 namespace patina {
 namespace {
