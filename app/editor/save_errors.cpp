@@ -17,7 +17,11 @@ std::string couldNot(const std::string& action, const std::filesystem::path& fil
         case EACCES:
         case EPERM:
         case EROFS: why = "the folder " + folder + " is read-only"; break;
-        case ENOENT: why = "the folder " + folder + " does not exist"; break;
+        case ENOENT:
+            // A folder that is there may still make no files (/proc, /sys): not "does not exist".
+            why = std::filesystem::is_directory(folder, ignored) ? "the folder " + folder + " does not take new files"
+                                                                 : "the folder " + folder + " does not exist";
+            break;
         case ENOTDIR: why = "part of " + folder + " is a file, not a folder"; break;
         case EISDIR: why = absolute.string() + " is a folder"; break;
         case ENOSPC:

@@ -13,6 +13,7 @@
 #include "editor_settings.h"
 #include "editor_state.h"
 #include "panels/file_dialog.h"
+#include "panels/menu_actions.h"
 #include "lobe_plot.h"
 #include "open_folder.h"
 #include "panel_layout.h"
@@ -796,6 +797,19 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
     EXPECT_TRUE(state.scene.meshFile.empty());
 }
 
+// A scene never saved is offered under the name of what it shows: the model, or the material.
+TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
+    saveSceneAs(state);
+    EXPECT_EQ(state.pathDialogText, state.scene.material.name + "-scene.json");
+    exportGltfModel(dir_ / "two.glb", test::twoBalls());
+    ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
+    saveSceneAs(state);
+    EXPECT_EQ(state.pathDialogText, "two-scene.json");
+    ASSERT_TRUE(saveScene(state, dir_ / "mine.json")) << state.error;
+    saveSceneAs(state);
+    EXPECT_EQ(fs::path(state.pathDialogText).filename(), "mine.json");
+}
+
 // A click on a part selects its material for the Material panel; the selected part is
 // outlined, and its outline follows the eye.
 TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {
@@ -918,6 +932,9 @@ TEST(SaveErrors, SayWhatIsWrongInWords) {
     EXPECT_EQ(said(EACCES), "Could not save gold.json: the folder /x is read-only");
     EXPECT_EQ(said(EROFS), "Could not save gold.json: the folder /x is read-only");
     EXPECT_EQ(said(ENOENT), "Could not save gold.json: the folder /x does not exist");
+    // A folder that is there and makes no files (the kernel's /proc) is not said to be missing.
+    EXPECT_EQ(couldNotSave("/proc/gold.json", std::system_error(ENOENT, std::generic_category(), "cannot create")),
+              "Could not save gold.json: the folder /proc does not take new files");
     EXPECT_EQ(said(ENOSPC), "Could not save gold.json: the disk is full");
     EXPECT_EQ(said(EISDIR), "Could not save gold.json: /x/gold.json is a folder");
     // Anything else as the system put it.

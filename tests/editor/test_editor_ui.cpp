@@ -340,6 +340,30 @@ TEST_F(EditorUi, AModelReadOnAWorkerWaitsForAnOpenPrompt) {
     EXPECT_EQ(state_.modelLoad, nullptr);
 }
 
+// The model being read shows its name, seconds and Cancel last on the toolbar: no control moves
+// under the pointer when it appears or while its seconds count.
+TEST_F(EditorUi, AModelBeingReadMovesNoToolbarControl) {
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    frames(2);
+    ImVec2 exposureMin, exposureMax, clearMin, clearMax;
+    ASSERT_TRUE(itemRect("Exposure", &exposureMin, &exposureMax));
+    ASSERT_TRUE(itemRect("Clear A", &clearMin, &clearMax));
+    requestOpen(state_, path("torus.glb"));
+    state_.scene.material.roughness = 0.9f;   // unsaved, so that File > New asks and the load waits
+    state_.pendingNew = true;
+    frames(2);
+    ASSERT_NE(state_.modelLoad, nullptr);
+    ImVec2 min, max, cancelMin, cancelMax;
+    ASSERT_TRUE(itemRect("Exposure", &min, &max));
+    EXPECT_EQ(min.x, exposureMin.x);
+    EXPECT_EQ(min.y, exposureMin.y);
+    ASSERT_TRUE(itemRect("Clear A", &min, &max));
+    EXPECT_EQ(min.x, clearMin.x);
+    ASSERT_TRUE(itemRect("Model cancel", &cancelMin, &cancelMax));
+    EXPECT_TRUE(cancelMin.y > clearMin.y || cancelMin.x > clearMax.x) << "after every other control";
+    state_.pendingNew = false;
+}
+
 // File > New by its shortcut replaces the document before the viewport draws in that frame:
 // the new scene's environment is looked up first, never reported as not prepared.
 TEST_F(EditorUi, NewByItsShortcutDrawsTheNewScenesEnvironmentAtOnce) {

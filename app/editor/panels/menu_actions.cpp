@@ -14,9 +14,11 @@ void saveAs(EditorState& state) {
 }
 
 void saveSceneAs(EditorState& state) {
+    // A scene never saved is named for what it shows: the model opened, or the material.
+    const std::string shown = state.scene.meshFile.empty() ? state.scene.material.name
+                                                           : std::filesystem::path(state.scene.meshFile).stem().string();
     startPathDialog(state, EditorState::PathDialog::SaveSceneAs,
-                    state.scenePath.empty() ? std::filesystem::path(state.scene.material.name + "-scene.json")
-                                            : state.scenePath);
+                    state.scenePath.empty() ? std::filesystem::path(shown + "-scene.json") : state.scenePath);
 }
 
 void saveSceneDocument(EditorState& state) {

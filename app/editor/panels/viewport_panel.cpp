@@ -26,6 +26,26 @@ float gizmoRadius() {
     return px(7.0f);
 }
 
+// A model being read, last on the toolbar so that no control moves under the pointer while the
+// seconds count: the mesh shown stays until it is done, or for good if cancelled.
+void drawModelLoad(EditorState& state) {
+    const std::shared_ptr<ModelLoad> load = state.modelLoad;
+    if (!load) {
+        return;
+    }
+    char text[320];
+    std::snprintf(text, sizeof text, "Loading %s (%.0f s)", load->path().filename().string().c_str(), load->seconds());
+    const ImGuiStyle& style = ImGui::GetStyle();
+    sameLineIfFits(ImGui::CalcTextSize(text).x + style.ItemSpacing.x + ImGui::CalcTextSize("Cancel").x +
+                   style.FramePadding.x * 2);
+    ImGui::TextUnformatted(text);
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##model")) {
+        cancelModelLoad(state);
+    }
+    recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
+}
+
 // The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
 // being cut off at its edge.
 void drawToolbar(EditorState& state) {
@@ -46,16 +66,6 @@ void drawToolbar(EditorState& state) {
         ImGui::EndCombo();
     }
     recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
-    if (const std::shared_ptr<ModelLoad> load = state.modelLoad) {
-        // A model being read: the mesh shown stays until it is done, or for good if cancelled.
-        ImGui::SameLine();
-        ImGui::Text("Loading %s (%.1f s)", load->path().filename().string().c_str(), load->seconds());
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel##model")) {
-            cancelModelLoad(state);
-        }
-        recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
-    }
     sameLineIfFits(labelledWidth(px(110), "Exposure"));
     // A drag, not a slider: 16 stops across 110 pixels moved 8 EV in 60 of them. Fine steps
     // (0.02 EV a pixel) for a look; a big change is typed.
@@ -100,6 +110,7 @@ void drawToolbar(EditorState& state) {
     }
     recordItem("Clear A", "Forget A and show B alone");
     ImGui::EndDisabled();
+    drawModelLoad(state);
 }
 
 // The pixels on screen of a length `radius` across the view at `centre` (perspective: its
