@@ -116,7 +116,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     if (beginPanel("Material", at.material, true, &layout.leftWidth)) {
         ImGui::PushItemWidth(-labelRoom);
         drawGuarded(state, "The material panel", [&] {
-            drawMaterialPanel(state);
+            drawMaterialPanel(state, services);
             ImGui::Separator();
             ImGui::TextDisabled("Presets");
             drawPresetsPanel(state, services);

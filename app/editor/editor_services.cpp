@@ -122,6 +122,22 @@ const Texture* EditorServices::benchChart(const std::filesystem::path& png) {
     return benchChart_.texture.get();
 }
 
+const Texture* EditorServices::mapThumbnail(const std::shared_ptr<const Model>& model, int image) {
+    if (!model || image < 0 || size_t(image) >= model->images.size() || model->images[size_t(image)].rgba.empty()) {
+        return nullptr;
+    }
+    if (thumbnailModel_ != model) {
+        thumbnailModel_ = model;
+        mapThumbnails_.clear();
+    }
+    std::unique_ptr<Texture>& texture = mapThumbnails_[image];
+    if (!texture) {
+        const ModelImage& source = model->images[size_t(image)];
+        texture = std::make_unique<Texture>(shrunkToFit(source.width, source.height, source.rgba, 160));
+    }
+    return texture.get();
+}
+
 const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const Environment>& environment) {
     if (!environment) {
         return nullptr;

@@ -57,6 +57,10 @@ public:
     };
     const Preset* preset(const std::filesystem::path& material);
 
+    // Image `image` of `model` shrunk to a thumbnail (at most 160 pixels a side), made once per
+    // image while the model is the one asked about; null for an image the model lacks.
+    const Texture* mapThumbnail(const std::shared_ptr<const Model>& model, int image);
+
     // A panorama of the environment's image (equirectPreview), made once per environment.
     const Texture* environmentThumbnail(const std::shared_ptr<const Environment>& environment);
 
@@ -104,6 +108,8 @@ private:
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
     Thumbnail benchChart_;
     std::pair<std::shared_ptr<const Environment>, std::unique_ptr<Texture>> environmentThumbnail_;
+    std::shared_ptr<const Model> thumbnailModel_;   // held, so another model at its address is not taken for it
+    std::map<int, std::unique_ptr<Texture>> mapThumbnails_;   // thumbnailModel_'s, by image
 
     // A and B, each halfWidth x height, side by side with their captions.
     LdrImage comparisonImage(const EditorState& state, int halfWidth, int height);

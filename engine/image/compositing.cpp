@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -83,6 +84,35 @@ SheetLayout sheetLayout(int cellWidth, int cellHeight, int count, int columns) {
     layout.width = int(width);
     layout.height = int(height);
     return layout;
+}
+
+LdrImage shrunkToFit(int width, int height, const std::vector<uint8_t>& rgba, int maxSide) {
+    if (width <= 0 || height <= 0 || maxSide <= 0 || rgba.size() < size_t(width) * size_t(height) * 4) {
+        return {};
+    }
+    const double scale = std::min(1.0, double(maxSide) / double(std::max(width, height)));
+    LdrImage out;
+    out.width = std::max(1, int(std::lround(width * scale)));
+    out.height = std::max(1, int(std::lround(height * scale)));
+    out.rgba.resize(size_t(out.width) * size_t(out.height) * 4);
+    for (int y = 0; y < out.height; ++y) {
+        const int y0 = int(int64_t(y) * height / out.height), y1 = std::max(y0 + 1, int(int64_t(y + 1) * height / out.height));
+        for (int x = 0; x < out.width; ++x) {
+            const int x0 = int(int64_t(x) * width / out.width), x1 = std::max(x0 + 1, int(int64_t(x + 1) * width / out.width));
+            uint64_t sum[4] = {0, 0, 0, 0};
+            for (int sy = y0; sy < y1; ++sy) {
+                const uint8_t* row = &rgba[(size_t(sy) * size_t(width) + size_t(x0)) * 4];
+                for (int sx = 0; sx < (x1 - x0) * 4; ++sx) {
+                    sum[sx % 4] += row[sx];
+                }
+            }
+            const uint64_t count = uint64_t(x1 - x0) * uint64_t(y1 - y0);
+            for (int c = 0; c < 4; ++c) {
+                out.rgba[(size_t(y) * size_t(out.width) + size_t(x)) * 4 + size_t(c)] = uint8_t((sum[c] + count / 2) / count);
+            }
+        }
+    }
+    return out;
 }
 
 LdrImage contactSheet(const std::vector<LdrImage>& cells, const std::vector<std::string>& names,

@@ -15,6 +15,12 @@ inline constexpr Rgb8 kCaptionColour{230, 230, 230};
 inline constexpr int kCellGap = 4;            // pixels between neighbouring cells
 inline constexpr int kMaxSheetSide = 16384;   // pixels; larger sheets are refused
 
+// An RGBA8 image of width x height (rows top first) shrunk to fit maxSide x maxSide, its aspect
+// kept: each pixel the mean of the source pixels its box covers (the encoded values averaged: a
+// thumbnail to recognise a map by, not a mip level). An image that fits is copied as it is;
+// an empty one gives an empty image.
+LdrImage shrunkToFit(int width, int height, const std::vector<uint8_t>& rgba, int maxSide);
+
 // The caption scale for cells of this width: 1 below 800 pixels, 2 from 800, at most 4.
 int captionScale(int cellWidth);
 

@@ -399,6 +399,29 @@ std::map<unsigned, std::pair<int, int>> drawnTextures() {
     return textures;
 }
 
+// Each map of the selected part is shown as a thumbnail of its image beside its checkbox.
+TEST_F(EditorUi, EachMapIsShownAsAThumbnailOfItsImage) {
+    const std::filesystem::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!std::filesystem::exists(box)) {
+        GTEST_SKIP() << "needs Debian's assimp-testmodels";
+    }
+    frames(2);
+    const auto before = drawnTextures();
+    ASSERT_TRUE(openFile(state_, box)) << state_.error;
+    frames(2);
+    ImVec2 min, max, boxMin, boxMax;
+    ASSERT_TRUE(itemRect("map image: base colour", &min, &max));
+    ASSERT_TRUE(itemRect("map: base colour", &boxMin, &boxMax));
+    EXPECT_LT(max.x, boxMin.x + 1.0f) << "left of its checkbox";
+    EXPECT_NEAR(max.x - min.x, max.y - min.y, 1.0f) << "the logo is square";
+    // The thumbnail is a texture of its own: the 211 x 211 logo shrunk to 160 x 160.
+    int thumbnails = 0;
+    for (const auto& [name, size] : drawnTextures()) {
+        thumbnails += !before.count(name) && size == std::make_pair(160, 160);
+    }
+    EXPECT_EQ(thumbnails, 1);
+}
+
 // The PNGs in `folder`, oldest first.
 std::vector<std::filesystem::path> pngsIn(const std::filesystem::path& folder) {
     std::vector<std::filesystem::path> files;

@@ -41,6 +41,31 @@ int countColour(const LdrImage& image, Rgb8 colour, int x0, int y0, int x1, int 
 constexpr Rgb8 kBlack{0, 0, 0};
 constexpr Rgb8 kInk{200, 100, 50};
 
+// A thumbnail is the box mean of the pixels under each of its pixels, with the aspect kept.
+TEST(ShrunkToFit, AveragesEachBoxAndKeepsTheAspect) {
+    // 4 x 2: left half values 0 and 100 in alternate rows, right half all 200.
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < 2; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            const uint8_t v = x < 2 ? uint8_t(y == 0 ? 0 : 100) : 200;
+            rgba.insert(rgba.end(), {v, v, v, 255});
+        }
+    }
+    const LdrImage half = shrunkToFit(4, 2, rgba, 2);
+    ASSERT_EQ(half.width, 2);
+    ASSERT_EQ(half.height, 1);
+    EXPECT_TRUE(pixel(half, 0, 0) == (Rgb8{50, 50, 50}));
+    EXPECT_TRUE(pixel(half, 1, 0) == (Rgb8{200, 200, 200}));
+    EXPECT_EQ(half.rgba[3], 255);
+    const LdrImage same = shrunkToFit(4, 2, rgba, 16);   // fits: copied
+    EXPECT_EQ(same.width, 4);
+    EXPECT_EQ(same.rgba, rgba);
+    const LdrImage tall = shrunkToFit(3, 300, std::vector<uint8_t>(3 * 300 * 4, 9), 100);
+    EXPECT_EQ(tall.width, 1);
+    EXPECT_EQ(tall.height, 100);
+    EXPECT_TRUE(shrunkToFit(4, 2, {1, 2, 3}, 2).rgba.empty());   // too few bytes: nothing
+}
+
 TEST(Caption, DrawsOnlyInsideTheMeasuredBox) {
     const std::string text = "Hg|y 0.5";
     for (const int scale : {1, 3}) {

@@ -6,6 +6,7 @@
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
 #include "panels.h"
+#include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
@@ -140,18 +141,39 @@ void drawPartList(EditorState& state) {
                                  "in the viewport)");
 }
 
-// A checkbox for each map the file gives the part: unticked, the factor alone is drawn there
-// (an undoable edit, saved in the scene and kept by an export).
-void drawMapSwitches(EditorState& state, int index) {
-    int shownOnLine = 0;
+// The map's image, small; hovered, larger with its name and size. Greyed where it is not drawn.
+void drawMapThumbnail(EditorState& state, EditorServices& services, const char* name, int image, bool shown) {
+    const Texture* thumbnail = services.mapThumbnail(state.model, image);
+    if (!thumbnail) {
+        return;
+    }
+    const float side = ImGui::GetFrameHeight() * 1.6f;
+    auto fitted = [&](float box) {
+        const float scale = box / float(std::max(thumbnail->width(), thumbnail->height()));
+        return ImVec2(float(thumbnail->width()) * scale, float(thumbnail->height()) * scale);
+    };
+    const auto id = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumbnail->id()));
+    ImGui::Image(id, fitted(side), ImVec2(0, 0), ImVec2(1, 1), ImVec4(1, 1, 1, shown ? 1.0f : 0.35f));
+    recordItem("map image: " + std::string(name));
+    if (ImGui::IsItemHovered()) {
+        const ModelImage& source = state.model->images.at(size_t(image));
+        ImGui::BeginTooltip();
+        ImGui::Image(id, fitted(px(160)));
+        ImGui::Text("%s, %d x %d", source.name.c_str(), source.width, source.height);
+        ImGui::EndTooltip();
+    }
+    ImGui::SameLine();
+}
+
+// Each map the file gives the part, as a thumbnail and a checkbox: unticked, the factor alone
+// is drawn there (an undoable edit, saved in the scene and kept by an export).
+void drawMapSwitches(EditorState& state, EditorServices& services, int index) {
     for (const auto& map : mapsOf(state.model->materials.at(size_t(index)))) {
         if (!map.slot->present()) {
             continue;
         }
-        if (shownOnLine++ % 2 != 0) {
-            ImGui::SameLine();
-        }
         bool shown = mapShown(state.scene, index, map.key);
+        drawMapThumbnail(state, services, map.name, map.slot->image, shown);
         const std::string label = std::string(map.name) + "##map";
         if (ImGui::Checkbox(label.c_str(), &shown)) {
             setMapShown(state, state.scene, index, map.key, shown);
@@ -163,7 +185,7 @@ void drawMapSwitches(EditorState& state, int index) {
 }
 
 // The edited part of a model: its factors, each multiplying its map as glTF defines.
-void drawModelMaterial(EditorState& state) {
+void drawModelMaterial(EditorState& state, EditorServices& services) {
     drawPartList(state);
     const int selected = state.selectedModelMaterial;
     const std::string maps = mapNames(state, selected);
@@ -171,7 +193,7 @@ void drawModelMaterial(EditorState& state) {
     ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
                                            : ("Maps: " + maps + ". Each factor multiplies its map").c_str());
     ImGui::PopTextWrapPos();
-    drawMapSwitches(state, selected);
+    drawMapSwitches(state, services, selected);
     Material material = modelMaterial(state, state.scene, selected);
     const Material before = material;
     Scene untuned = state.scene;
@@ -183,9 +205,9 @@ void drawModelMaterial(EditorState& state) {
 }
 }  // namespace
 
-void drawMaterialPanel(EditorState& state) {
+void drawMaterialPanel(EditorState& state, EditorServices& services) {
     if (modelMaterialCount(state) > 0) {
-        drawModelMaterial(state);
+        drawModelMaterial(state, services);
     } else {
         Material& material = state.scene.material;
         inputString("Name", &material.name);

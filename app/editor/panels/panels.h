@@ -5,7 +5,7 @@
 
 namespace patina::editor {
 
-void drawMaterialPanel(EditorState& state);
+void drawMaterialPanel(EditorState& state, EditorServices& services);
 void drawLightsPanel(EditorState& state, EditorServices& services);
 void drawViewportPanel(EditorState& state, EditorServices& services);
 void drawLobePanel(EditorState& state);
