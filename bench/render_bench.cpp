@@ -276,7 +276,9 @@ Model texturedSphere(int side, int images) {
 
 // A textured asset's frame against the same asset untextured, each path: texturedSphere with
 // five 1024 x 1024 maps (base colour, metallic-roughness, normal, occlusion, emissive), drawn as
-// a one-item model; untextured, the same model whose material has no maps.
+// a one-item model; "base colour map", the same with its base colour map alone (where the
+// specialised path's program for that one map pays off); untextured, the same model whose
+// material has no maps.
 void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                      RenderBenchResult& result) {
     Model textured = texturedSphere(options.quick ? 256 : 1024, kMapCount);
@@ -284,15 +286,22 @@ void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options,
     plain.materials[0] = ModelMaterial{};
     plain.materials[0].factors = textured.materials[0].factors;
     plain.images.clear();
+    Model baseOnly = textured;
+    for (const auto& map : mapsOf(baseOnly.materials[0])) {
+        *map.slot = map.slot == &baseOnly.materials[0].baseColor ? *map.slot : TextureSlot{};
+    }
+    baseOnly.materials[0].emissiveFactor = glm::vec3(0.0f);
     const Scene scene = analyticDefaultScene();
     const auto texturedModel = std::make_shared<const Model>(std::move(textured));
+    const auto baseOnlyModel = std::make_shared<const Model>(std::move(baseOnly));
     const auto plainModel = std::make_shared<const Model>(std::move(plain));
     const auto mesh = std::make_shared<const Mesh>(texturedModel->primitives[0]);
     for (const RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
         RenderSettings variant = settings;
         variant.path = path;
         // One model a series: a model change uploads its images again, which is loading, not drawing.
-        for (const auto& [name, model] : {std::pair{"textured", texturedModel}, std::pair{"untextured", plainModel}}) {
+        for (const auto& [name, model] : {std::pair{"textured", texturedModel}, std::pair{"base colour map", baseOnlyModel},
+                                          std::pair{"untextured", plainModel}}) {
             const PreparedScene prepared{scene, mesh, nullptr, model};
             const std::vector<FrameTiming> times = interleavedMedians(renderer, prepared, {variant}, options.runs);
             result.scaleRows.push_back({name, settings.width, settings.height,

@@ -55,7 +55,8 @@ struct LightCountRow {
 
 struct ScaleRow {
     // "resolution", "triangles", "flat-lights", "culling", "environment", or "textured" and
-    // "untextured" (a sphere with five maps, and without, as a model; path by path)
+    // "untextured" (a sphere with five maps, and without, as a model; path by path), and "base
+    // colour map" between them (its base colour map alone)
     std::string axis;
     int width = 0, height = 0;
     size_t triangles = 0;

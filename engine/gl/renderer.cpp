@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -185,6 +186,10 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &state_->emptyVertexArray);
 }
 
+size_t Renderer::specialisedProgramCount() const {
+    return state_->shading.specialisedCount();
+}
+
 size_t Renderer::flatLightSlots() const {
     return state_->flatLightSlots;
 }
@@ -257,6 +262,9 @@ private:
     void drawStrip(int top);
     void drawItems() const;
     void drawSinglePass(Items opaque, Items blended) const;
+    // The shading program of `item`: the frame's, or in the specialised path with maps the one
+    // compiled for the item's map set.
+    const GlProgram& programOf(const DrawPlan& item) const;
     void drawMultiPass(Items opaque, Items blended) const;
     void lightPasses(GLint lightIndex, const DrawPlan& item) const;
     void useItem(const DrawUniforms& uniforms, const DrawPlan& item) const;
@@ -283,6 +291,7 @@ private:
     const GlImage* linear = nullptr;
     const GlProgram* displayPass = nullptr;
     const GlProgram* shading = nullptr;
+    std::map<int, const GlProgram*> shadingByMapSet;   // specialised with maps: by mapSetOf
     const GlProgram* backgroundPass = nullptr;
     int exposureTonemap = 0;
     glm::vec3 background{0.0f};
@@ -356,10 +365,21 @@ void Renderer::Frame::choosePrograms() {
         return key;
     };
     const ShadingPrograms::Surface surface = maps ? ShadingPrograms::Surface::Maps : ShadingPrograms::Surface::Factors;
+    s.shading.beginFrame();
+    if (settings.path == RenderPath::Specialised && maps) {
+        // A program for each set of maps the items have: a map an item lacks costs it nothing.
+        ShaderSpecialisation key = specialisation();
+        for (const SceneDraw& item : draws) {
+            key.mapSet = item.maps ? mapSetOf(*item.maps) : 0;
+            const GlProgram*& program = shadingByMapSet[key.mapSet];
+            program = program ? program : &s.shading.useSpecialised(model, key, output, surface);
+        }
+    }
     shading = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
               : settings.path == RenderPath::Multi
                   ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface)
-                  : &s.shading.useSpecialised(model, specialisation(), output, surface);
+              : shadingByMapSet.empty() ? &s.shading.useSpecialised(model, specialisation(), output, surface)
+                                        : shadingByMapSet.begin()->second;
     if (settings.path == RenderPath::Multi) {
         s.prepass(maps).get();
     }
@@ -491,19 +511,37 @@ void blendOver(float alpha) {
 
 // Single and specialised: each item in one pass of every light. Blended items test against
 // the opaque items' depth and write none, so each shows what lies behind it.
+const GlProgram& Renderer::Frame::programOf(const DrawPlan& item) const {
+    if (shadingByMapSet.empty()) {
+        return *shading;
+    }
+    const SceneDraw& draw = draws[item.item];
+    return *shadingByMapSet.at(draw.maps ? mapSetOf(*draw.maps) : 0);
+}
+
 void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
-    shading->use();
-    prepare(*shading);
-    const DrawUniforms uniforms(*shading, mapTextures());
-    for (const DrawPlan& item : opaque) {
-        useItem(uniforms, item);
+    // Items keep the plan's order (the same depth ties as one program); the program changes
+    // only where an item's map set does.
+    const GlProgram* current = nullptr;
+    std::optional<DrawUniforms> uniforms;
+    auto drawWithItsProgram = [&](const DrawPlan& item) {
+        const GlProgram& program = programOf(item);
+        if (&program != current) {
+            current = &program;
+            program.use();
+            prepare(program);
+            uniforms.emplace(program, mapTextures());
+        }
+        useItem(*uniforms, item);
         drawItem(item);
+    };
+    for (const DrawPlan& item : opaque) {
+        drawWithItsProgram(item);
     }
     glDepthMask(GL_FALSE);
     for (const DrawPlan& item : blended) {
         blendOver(draws[item.item].alpha);
-        useItem(uniforms, item);
-        drawItem(item);
+        drawWithItsProgram(item);
     }
 }
 

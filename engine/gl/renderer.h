@@ -95,6 +95,8 @@ public:
 
     // How many lights a specialised shader takes as flat inputs (shader_specialisation.h).
     size_t flatLightSlots() const;
+    // The specialised programs compiled and kept (for tests and benchmarks).
+    size_t specialisedProgramCount() const;
     // Renders into `target` and returns its display texture (RenderTarget::displayTexture).
     // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size],
     // or a prepared scene without the mesh or the environment its document names (or whose

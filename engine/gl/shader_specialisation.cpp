@@ -41,6 +41,9 @@ std::vector<std::string> ShaderSpecialisation::defines() const {
     if (environment) {
         result.push_back("PATINA_ENVIRONMENT");
     }
+    if (mapSet >= 0) {
+        result.push_back("PATINA_MAP_SET " + std::to_string(mapSet));
+    }
     return result;
 }
 

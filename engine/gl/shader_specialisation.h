@@ -25,6 +25,9 @@ struct ShaderSpecialisation {
     int flatLightCount = 0;   // lights 0 to flatLightCount - 1 are flat inputs
     bool noDiffuse = false;
     bool environment = false;   // PATINA_ENVIRONMENT: the scene's environment after the lights
+    // PATINA_MAP_SET (a textured program's): the maps the item drawn has (mapSetOf); the code of
+    // every other map is left out. -1: whichever maps the uniforms say.
+    int mapSet = -1;
 
     auto operator<=>(const ShaderSpecialisation&) const = default;
     std::vector<std::string> defines() const;

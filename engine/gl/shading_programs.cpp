@@ -173,12 +173,17 @@ const GlProgram& ShadingPrograms::useSpecialised(BrdfModelId model, const Shader
     }
     entry.lastUse = ++useCount_;
     const GlProgram& program = *entry.program;
-    if (specialised_.size() > kSpecialisedCapacity) {
-        auto oldest = specialised_.begin();
+    while (specialised_.size() > kSpecialisedCapacity) {
+        auto oldest = specialised_.end();
         for (auto it = specialised_.begin(); it != specialised_.end(); ++it) {
-            oldest = it->second.lastUse < oldest->second.lastUse ? it : oldest;
+            const bool older = oldest == specialised_.end() || it->second.lastUse < oldest->second.lastUse;
+            const bool evictable = it->second.lastUse < frameStart_ && &it->second != &entry;
+            oldest = evictable && older ? it : oldest;
         }
-        specialised_.erase(oldest);   // never `entry`: it was used last
+        if (oldest == specialised_.end()) {
+            break;   // every one is this frame's: kept until a later frame
+        }
+        specialised_.erase(oldest);
     }
     return bind(model, program, key.environment);
 }

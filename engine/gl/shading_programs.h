@@ -66,10 +66,13 @@ public:
                                Surface surface = Surface::Factors);
     // The single-pass program specialised to `key`, compiled on first use. The least recently
     // used of more than kSpecialisedCapacity is deleted: an artist adding and removing lights
-    // makes a new key each time.
+    // makes a new key each time. Never one used since beginFrame: a frame of items with many
+    // map sets holds a program for each while it draws.
     const GlProgram& useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
                                     Output output = Output::Linear, Surface surface = Surface::Factors);
     static constexpr size_t kSpecialisedCapacity = 16;
+    // From here on the programs useSpecialised returns are the frame's, and stay.
+    void beginFrame() { frameStart_ = useCount_ + 1; }
     size_t specialisedCount() const { return specialised_.size(); }
 
 private:
@@ -83,6 +86,7 @@ private:
     std::map<std::tuple<BrdfModelId, SinglePass, Output, Surface>, std::unique_ptr<GlProgram>> singles_;
     std::map<std::tuple<BrdfModelId, ShaderSpecialisation, Output, Surface>, Specialised> specialised_;
     unsigned long long useCount_ = 0;
+    unsigned long long frameStart_ = ~0ull;   // uses from here on are the current frame's (none before a frame)
     EnvironmentShading environmentShading_;
     std::map<BrdfModelId, unsigned> energyTextures_, environmentBrdfTextures_;
 

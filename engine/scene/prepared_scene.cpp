@@ -109,6 +109,16 @@ bool hasMaps(const ModelMaterial& material) {
            material.occlusion.present() || material.emissive.present() || material.emissiveFactor != glm::vec3(0.0f);
 }
 
+int mapSetOf(const ModelMaterial& material) {
+    int set = 0;
+    int bit = 1;
+    for (const auto& map : mapsOf(material)) {
+        set |= map.slot->present() ? bit : 0;
+        bit <<= 1;
+    }
+    return set;
+}
+
 MaterialParameters defaultModelMaterial() {
     MaterialParameters material;
     material.baseColor = glm::vec3(1.0f);

@@ -60,6 +60,10 @@ struct SceneDraw {
 // only where maps are read).
 bool hasMaps(const ModelMaterial& material);
 
+// Which maps `material` has, a bit each in mapsOf's order (bit 0 base colour, ..., bit 4
+// emissive): what a program specialised to the item compiles (PATINA_MAP_SET).
+int mapSetOf(const ModelMaterial& material);
+
 // glTF's default material (§3.9.6) in Patina's parameters: white, metallic 1, roughness 1, and
 // specular 0.5 (F0 0.04, a glTF dielectric's).
 MaterialParameters defaultModelMaterial();

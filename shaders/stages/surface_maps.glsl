@@ -25,7 +25,15 @@ uniform float uNormalScale;
 uniform float uOcclusionStrength;
 uniform vec3 uEmissive;            // emissiveFactor times KHR_materials_emissive_strength
 
+// PATINA_MAP_SET (the specialised path): the item's maps, a bit each in this order, known when
+// compiling, so that a map the item lacks costs nothing (on llvmpipe a branch every lane agrees
+// on still runs its body with the lanes off). The uniform still says whether an image is there.
 bool hasMap(int map) {
+#ifdef PATINA_MAP_SET
+    if (((PATINA_MAP_SET >> map) & 1) == 0) {
+        return false;
+    }
+#endif
     return uMapRotationSet[map].y >= 0.0f;
 }
 

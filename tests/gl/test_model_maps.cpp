@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "gl/renderer.h"
@@ -131,6 +132,44 @@ TEST_F(ModelMaps, TheBaseColourMapMultipliesTheFactorTexelByTexel) {
         const auto expected = oneQuad(quad(), factors(glm::vec3(0.5f, 1.0f, 1.0f) * texel));
         // GL's sRGB decode (llvmpipe's table) is within 0.6% of the exact one on these texels.
         expectSame(scene, model, expected, {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
+    }
+}
+
+// The specialised path compiles a program for each set of maps the items have (PATINA_MAP_SET),
+// so a map an item lacks costs it nothing, and draws the same picture as the single path, whose
+// one program asks the uniforms which maps there are.
+TEST_F(ModelMaps, TheSpecialisedPathCompilesAProgramForEachMapSet) {
+    const Scene scene = quadScene();
+    Model model;
+    model.primitives = {quad()};
+    ModelMaterial coloured = factors(glm::vec3(0.9f, 0.8f, 0.7f));
+    coloured.baseColor = nearestSlot();
+    ModelMaterial bumped = factors(glm::vec3(0.4f, 0.6f, 0.8f));
+    bumped.normal = nearestSlot();
+    bumped.normal.image = 1;
+    model.materials = {coloured, bumped, factors(glm::vec3(0.5f))};
+    model.images = {image(2, 2, {200, 40, 40, 255, 40, 200, 40, 255, 40, 40, 200, 255, 230, 230, 230, 255}),
+                    image(1, 1, {200, 90, 220, 255})};
+    // Three quads side by side, half size: a base colour map, a normal map, no map.
+    for (int i = 0; i < 3; ++i) {
+        const glm::mat4 placed = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(float(i - 1) * 1.1f, 0.0f, 0.0f)),
+                                            glm::vec3(0.5f));
+        model.draws.push_back({0, i, placed, "quad " + std::to_string(i)});
+    }
+    const auto shared = std::make_shared<const Model>(std::move(model));
+    Renderer fresh;
+    const PreparedScene prepared{scene, std::make_shared<const Mesh>(shared->primitives[0]), nullptr, shared};
+    const HdrImage specialised =
+        fresh.render(prepared, test::renderSettings(kWidth, kHeight, RenderPath::Specialised, 1)).hdr;
+    EXPECT_EQ(fresh.specialisedProgramCount(), 3u) << "base colour, normal, none";
+    const HdrImage single = fresh.render(prepared, test::renderSettings(kWidth, kHeight, RenderPath::Single, 1)).hdr;
+    for (int i = 0; i < 3; ++i) {
+        for (const glm::vec3& corner : {glm::vec3(-0.2f, 0.2f, 0.0f), glm::vec3(0.2f, -0.2f, 0.0f)}) {
+            const glm::ivec2 at = pixelOf(scene, corner + glm::vec3(float(i - 1) * 1.1f, 0.0f, 0.0f));
+            const glm::vec3 a = test::pixel(specialised, at.x, at.y), b = test::pixel(single, at.x, at.y);
+            EXPECT_GT(b.x + b.y + b.z, 0.05f) << "quad " << i << " is lit";
+            EXPECT_LE(largestRelativeError(a, b), 1e-3f) << "quad " << i << " at " << at.x << " " << at.y;
+        }
     }
 }
 

@@ -204,5 +204,25 @@ TEST(ShaderSpecialisation, CacheKeepsAtMostItsCapacity) {
     EXPECT_EQ(programs.specialisedCount(), ShadingPrograms::kSpecialisedCapacity);
 }
 
+// A frame holds every program it takes (a model with many map sets), however many: none is
+// deleted while the frame may still draw with it; the next frame's first use trims the rest.
+TEST(ShaderSpecialisation, AFramesProgramsAreKeptWhileItDraws) {
+    test::glContext();
+    ShadingPrograms programs;
+    const size_t count = ShadingPrograms::kSpecialisedCapacity + 4;
+    programs.beginFrame();
+    std::vector<GLuint> ids;
+    for (size_t i = 0; i < count; ++i) {
+        ids.push_back(programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(i, 0)).id());
+    }
+    EXPECT_EQ(programs.specialisedCount(), count);
+    for (GLuint id : ids) {
+        EXPECT_TRUE(glIsProgram(id)) << id;
+    }
+    programs.beginFrame();
+    programs.useSpecialised(BrdfModelId::Epic, brdfFloorFor(0, 0));
+    EXPECT_EQ(programs.specialisedCount(), ShadingPrograms::kSpecialisedCapacity);
+}
+
 }  // namespace
 }  // namespace patina
