@@ -23,6 +23,8 @@ Command addFurnaceCommand(CLI::App& app);
 Command addLightingAccuracyCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addAreaAccuracyCommand(CLI::App& app);
+// `patina validate`: exit 1 when a material is out of range (the lines say which).
+Command addValidateCommand(CLI::App& app);
 
 // The measurement commands (cli_accuracy.cpp) share their options, --out-dir (an existing
 // folder, default: the current one) and --quick, and their charts' files.

@@ -13,18 +13,22 @@ namespace patina::test {
 struct CliRun {
     int exitCode;
     std::string stderrText;
+    std::string stdoutText;
 };
 
-// stderr goes through a file in `scratch`; stdout is dropped.
+// stderr and stdout go through files in `scratch`.
 inline CliRun runPatina(const std::string& arguments, const std::filesystem::path& scratch) {
-    const std::filesystem::path errors = scratch / "stderr.txt";
+    const std::filesystem::path errors = scratch / "stderr.txt", output = scratch / "stdout.txt";
     const std::string command =
-        std::string(PATINA_EXECUTABLE) + " " + arguments + " 2> " + errors.string() + " > /dev/null";
+        std::string(PATINA_EXECUTABLE) + " " + arguments + " 2> " + errors.string() + " > " + output.string();
     const int status = std::system(command.c_str());
-    std::ifstream file(errors);
-    std::stringstream text;
-    text << file.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+    auto contents = [](const std::filesystem::path& path) {
+        std::ifstream file(path);
+        std::stringstream text;
+        text << file.rdbuf();
+        return text.str();
+    };
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, contents(errors), contents(output)};
 }
 
 }  // namespace patina::test

@@ -181,6 +181,65 @@ TEST_F(Cli, AMeshThatIsNoMeshIsRefused) {
     EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
+// `patina validate`: a line each, exit 0 when every material is in range, 1 when one is not,
+// 3 when a file cannot be read (the others still checked).
+TEST_F(Cli, ValidateSaysOfEachMaterialWhetherItIsInRange) {
+    const fs::path presets = fs::path(PATINA_SOURCE_DIR) / "presets";
+    std::string every;
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(presets)) {
+        every += " " + entry.path().string();
+        ++count;
+    }
+    test::CliRun r = run("validate" + every);
+    EXPECT_EQ(r.exitCode, 0) << r.stdoutText << r.stderrText;
+    int lines = 0;
+    for (std::istringstream in(r.stdoutText); std::getline(in, every);) {
+        EXPECT_NE(every.find(": ok: "), std::string::npos) << every;
+        ++lines;
+    }
+    EXPECT_EQ(lines, count);
+
+    write("coal.json", R"({"format": "patina-material", "version": 1, "name": "coal", "baseColor": [0.004, 0.004, 0.004]})");
+    write("lead.json", R"({"format": "patina-material", "version": 1, "name": "lead", "baseColor": [0.1, 0.1, 0.1],
+                           "metallic": 1.0})");
+    r = run("validate " + path("coal.json").string() + " " + (presets / "gold.json").string() + " " +
+            path("lead.json").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.stdoutText.find("coal.json: out of range: dielectric, albedo 13 sRGB, darker than any real dielectric"),
+              std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("gold.json: ok: metal, reflectance"), std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("lead.json: out of range: metal, reflectance 89 sRGB, below the darkest measured metal"),
+              std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stderrText.find("2 of 3 materials out of range"), std::string::npos) << r.stderrText;
+
+    // Strict ranges; a file that does not read is said and the rest checked.
+    r = run("validate --strict " + (presets / "titanium.json").string() + " " + path("missing.json").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stdoutText.find("titanium.json: out of range: metal, reflectance 171 sRGB"), std::string::npos)
+        << r.stdoutText;
+    EXPECT_NE(r.stderrText.find("missing.json"), std::string::npos) << r.stderrText;
+}
+
+// On a glTF model: each material, by its base colour map's texels where it has one.
+TEST_F(Cli, ValidateChecksAModelsMaterialsTexelByTexel) {
+    Model model = test::twoBalls();
+    model.images.push_back({"half black", 2, 1, {0, 0, 0, 255, 200, 200, 200, 255}});
+    model.materials[0].factors.metallic = 0.0f;
+    model.materials[0].factors.baseColor = glm::vec3(1.0f);
+    model.materials[0].baseColor.image = 0;
+    model.materials[1].factors.metallic = 0.0f;
+    model.materials[1].factors.baseColor = glm::vec3(0.5f);
+    exportGltfModel(path("two.glb"), model);
+    const test::CliRun r = run("validate " + path("two.glb").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.stdoutText.find("two.glb material 0 \"left\": out of range: base colour map, 50.0% of 2 texels flagged "
+                                "(dielectric below 30 sRGB 50.0%"),
+              std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("two.glb material 1 \"right\": ok: dielectric, albedo 188 sRGB (30-240)"), std::string::npos)
+        << r.stdoutText;
+}
+
 TEST_F(Cli, ProbeOnCpuAndGpuAgree) {
     write("in.csv",
           "px,py,pz,nx,ny,nz,vx,vy,vz\n"

@@ -1,0 +1,70 @@
+#include "model/pbr_validation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/luminance.h"
+#include "shading/shading.h"
+
+namespace patina {
+
+PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, const PbrRanges& ranges) {
+    PbrCheck check;
+    check.metal = metallic >= 0.5f;
+    const float lightness = std::clamp(luminance(linearBaseColor), 0.0f, 1.0f);
+    check.value = int(std::lround(255.0f * shader::srgbEncode(lightness)));
+    if (check.metal) {
+        check.verdict = check.value < ranges.metalMin ? PbrVerdict::MetalTooDark : PbrVerdict::Ok;
+    } else {
+        check.verdict = check.value < ranges.dielectricMin   ? PbrVerdict::DielectricTooDark
+                        : check.value > ranges.dielectricMax ? PbrVerdict::DielectricTooBright
+                                                             : PbrVerdict::Ok;
+    }
+    return check;
+}
+
+namespace {
+const ModelImage* imageOf(const Model& model, const TextureSlot& slot) {
+    if (!slot.present() || size_t(slot.image) >= model.images.size()) {
+        return nullptr;
+    }
+    const ModelImage& image = model.images[size_t(slot.image)];
+    const bool whole = image.width > 0 && image.height > 0 &&
+                       image.rgba.size() >= size_t(image.width) * size_t(image.height) * 4;
+    return whole ? &image : nullptr;
+}
+
+// The texel of `image` at the place of texel (x, y) of an image of width x height, nearest.
+const uint8_t* texelAt(const ModelImage& image, int x, int y, int width, int height) {
+    const int tx = std::min(image.width - 1, int((x + 0.5) * image.width / width));
+    const int ty = std::min(image.height - 1, int((y + 0.5) * image.height / height));
+    return &image.rgba[(size_t(ty) * size_t(image.width) + size_t(tx)) * 4];
+}
+}  // namespace
+
+PbrTally checkBaseColorTexels(const Model& model, const ModelMaterial& material, const PbrRanges& ranges) {
+    PbrTally tally;
+    const ModelImage* base = imageOf(model, material.baseColor);
+    if (!base) {
+        return tally;
+    }
+    const ModelImage* metallicRoughness = imageOf(model, material.metallicRoughness);
+    for (int y = 0; y < base->height; ++y) {
+        for (int x = 0; x < base->width; ++x) {
+            const uint8_t* texel = texelAt(*base, x, y, base->width, base->height);
+            const glm::vec3 decoded{shader::srgbDecode(texel[0] / 255.0f), shader::srgbDecode(texel[1] / 255.0f),
+                                    shader::srgbDecode(texel[2] / 255.0f)};
+            const float metallic =
+                material.factors.metallic *
+                (metallicRoughness ? texelAt(*metallicRoughness, x, y, base->width, base->height)[2] / 255.0f : 1.0f);
+            const PbrVerdict verdict = checkBaseColor(material.factors.baseColor * decoded, metallic, ranges).verdict;
+            ++tally.texels;
+            tally.dielectricDark += verdict == PbrVerdict::DielectricTooDark;
+            tally.dielectricBright += verdict == PbrVerdict::DielectricTooBright;
+            tally.metalDark += verdict == PbrVerdict::MetalTooDark;
+        }
+    }
+    return tally;
+}
+
+}  // namespace patina
