@@ -4,6 +4,8 @@ Run inside Blender (it needs Eevee's GL context, so a display: compare_blender.s
 
     blender -b --factory-startup --python scripts/blender_render.py -- \
         --hdri studio.exr --material presets/gold.json --out eevee.png [--reruns 5]
+    blender -b --factory-startup --python scripts/blender_render.py -- \
+        --hdri studio.exr --model BoxTextured.glb --out eevee.png [--reruns 5]
     blender -b --factory-startup --python scripts/blender_render.py -- --hdri studio.exr --probe
 
 The scene is Patina's default view converted to Blender's axes: Patina is +Y up, Blender +Z up,
@@ -12,6 +14,11 @@ and a Patina point (x, y, z) is the Blender point (x, -z, y). So the camera at P
 45 degrees; the UV sphere of radius 1 has Patina's tessellation (64 rings, 128 segments), smooth
 shaded. The world is the HDRI at strength 1, turned by --world-rotation degrees about +Z (see
 --probe), and the film uses the Standard view transform, as Patina's "none" tone map.
+
+With --model, a glTF model takes the sphere's place, imported by Blender's own glTF importer
+(which turns glTF's +Y up into Blender's +Z up as above) with its materials and texture maps; the
+re-renders change its first material's roughness, as the editor's Roughness slider changes the
+selected part's factor.
 
 Render mode times, in this one process, the first render (bpy.ops.render.render with
 write_still, so Eevee's shader compilation and the world's probe are in it) and then re-renders
@@ -48,7 +55,8 @@ def parse_arguments():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
     parser = argparse.ArgumentParser(prog="blender_render.py")
     parser.add_argument("--hdri", required=True, help="the equirect environment (.exr or .hdr)")
-    parser.add_argument("--material", help="a Patina material preset (JSON)")
+    parser.add_argument("--material", help="a Patina material preset (JSON) on the sphere")
+    parser.add_argument("--model", help="a glTF model (.gltf or .glb) instead of the sphere, with its own materials")
     parser.add_argument("--out", help="the first render's PNG")
     parser.add_argument("--scratch", help="the re-renders' PNG (default: beside --out)")
     parser.add_argument("--size", type=int, default=512)
@@ -58,8 +66,8 @@ def parse_arguments():
                         help="degrees about +Z applied to the world lookup (default: Patina's orientation)")
     parser.add_argument("--probe", action="store_true", help="check the orientation and exit")
     options = parser.parse_args(argv)
-    if not options.probe and not (options.material and options.out):
-        parser.error("--material and --out are needed unless --probe")
+    if not options.probe and not ((options.material or options.model) and options.out):
+        parser.error("--material or --model, and --out, are needed unless --probe")
     return options
 
 
@@ -171,10 +179,25 @@ def probe(options):
     return 0 if worst < 0.01 else 1
 
 
-def render(options):
+def import_model(path):
+    """The model through Blender's glTF importer; the first material's Principled BSDF."""
+    import numpy
+    if not hasattr(numpy, "bool"):
+        numpy.bool = bool   # Blender 3.4's importer still says numpy.bool, gone from numpy 1.24
+    before = set(bpy.data.materials)   # factory startup's own "Material" is not the model's
+    bpy.ops.import_scene.gltf(filepath=path)
+    for material in bpy.data.materials:
+        if material not in before and material.node_tree:
+            for node in material.node_tree.nodes:
+                if node.type == "BSDF_PRINCIPLED":
+                    return node
+    raise RuntimeError(f"{path}: the import made no Principled BSDF")
+
+
+def add_sphere(scene, options):
+    """Patina's sphere with the preset's material; its Principled BSDF."""
     with open(options.material, encoding="utf-8") as file:
         preset = json.load(file)
-    scene = empty_scene(options.size)
     # Patina's tessellation: 64 rings, 128 segments, smooth shaded.
     mesh_data = bpy.data.meshes.new("sphere")
     sphere = bpy.data.objects.new("sphere", mesh_data)
@@ -194,7 +217,12 @@ def render(options):
     bsdf.inputs["Specular"].default_value = preset["specular"]
     bsdf.inputs["Metallic"].default_value = preset["metallic"]
     mesh_data.materials.append(material)
+    return bsdf
 
+
+def render(options):
+    scene = empty_scene(options.size)
+    bsdf = import_model(options.model) if options.model else add_sphere(scene, options)
     add_camera(scene, patina_to_blender(0.0, 0.6, 3.4), Vector((0.0, 0.0, 0.0)), 45.0)
     image = bpy.data.images.load(options.hdri, check_existing=False)
     set_world(scene, image, options.world_rotation)

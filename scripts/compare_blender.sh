@@ -15,7 +15,12 @@
 #     Eevee first render / Patina cold render (5x).
 # It writes both images side by side, captioned, to docs/performance/blender_eevee_vs_patina.png.
 #
-# Usage: bash scripts/compare_blender.sh        (BUILD_DIR overrides build/, as in build.sh)
+# With --model FILE (issue 25) a glTF model with its own textured materials takes the sphere's
+# place in both, under the same HDRI and camera: Blender imports it with its own glTF importer,
+# Patina's scene names it as its mesh, the re-renders and the editor's drag change its first
+# material's roughness, and the picture is blender_eevee_vs_patina_STEM.png.
+#
+# Usage: bash scripts/compare_blender.sh [--model F.gltf|F.glb]   (BUILD_DIR overrides build/)
 #
 # Installs Debian's `blender` (3.4.1) with apt when it is missing (as root, else with sudo) and
 # builds Patina (scripts/build.sh) when build/app/patina is missing. Eevee needs an OpenGL context
@@ -32,6 +37,13 @@ patina="$root/$build_dir/app/patina"
 hdri=/usr/share/blender/datafiles/studiolights/world/studio.exr
 preset="$root/presets/gold.json"
 picture="$root/docs/performance/blender_eevee_vs_patina.png"
+model=''
+if [ "${1:-}" = --model ]; then
+  [ -f "${2:-}" ] || { echo "compare_blender: --model needs a .gltf or .glb file" >&2; exit 2; }
+  model=$(realpath "$2")
+  stem=$(basename "$model"); stem=${stem%.*}
+  picture="$root/docs/performance/blender_eevee_vs_patina_$stem.png"
+fi
 size=512
 warm_runs=5
 # Blender's Environment Texture puts the image's centre along its +X; Patina's lies along its -Z,
@@ -74,6 +86,14 @@ if ! command -v blender >/dev/null; then
   export DEBIAN_FRONTEND=noninteractive
   "${sudo_cmd[@]}" apt-get update -qq || die "apt-get update failed"
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends blender || die "installing blender failed"
+fi
+if [ -n "$model" ] && ! python3 -c 'import numpy' 2>/dev/null; then
+  # Blender's glTF importer needs numpy, which the package only recommends.
+  say "python3-numpy is missing (Blender's glTF importer needs it): installing Debian's package"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends python3-numpy ||
+    die "installing python3-numpy failed"
 fi
 blender_version=$(blender --factory-startup --version 2>/dev/null | awk '/^Blender [0-9]/ { print $2; exit }')
 [ -n "$blender_version" ] || die "'blender --version' printed no version: is $(command -v blender) Blender?"
@@ -122,7 +142,8 @@ grep '^probe:' "$work/probe.log" >&2 || true
 
 say "rendering with Blender $blender_version Eevee: the first image, then $warm_runs re-renders after a roughness change"
 blender_start=$EPOCHREALTIME
-run_blender "$work/blender.log" --hdri "$hdri" --material "$preset" --out "$work/eevee.png" \
+if [ -n "$model" ]; then shown=(--model "$model"); else shown=(--material "$preset"); fi
+run_blender "$work/blender.log" --hdri "$hdri" "${shown[@]}" --out "$work/eevee.png" \
   --scratch "$work/eevee_rerender.png" --size "$size" --reruns "$warm_runs" --world-rotation "$blender_world_rotation"
 [ -s "$work/eevee.png" ] || die "Blender wrote no image"
 eevee_first=$(value "$work/blender.log" first_render_s)
@@ -134,12 +155,12 @@ blender_to_image=$(elapsed "$blender_start" "$(value "$work/blender.log" first_i
 
 # --- 4. Patina -------------------------------------------------------------------------------
 scene="$work/scene.json"
-python3 - "$preset" "$hdri" "$patina_rotation" >"$scene" <<'PY'
+python3 - "$preset" "$hdri" "$patina_rotation" "$model" >"$scene" <<'PY'
 import json, sys
 preset = json.load(open(sys.argv[1], encoding="utf-8"))
 material = {key: preset[key] for key in ("format", "version", "name", "baseColor", "roughness", "specular", "metallic")}
 print(json.dumps({
-    "format": "patina-scene", "version": 2, "mesh": "sphere", "material": material,
+    "format": "patina-scene", "version": 2, "mesh": sys.argv[4] or "sphere", "material": material,
     "camera": {"position": [0.0, 0.6, 3.4], "target": [0.0, 0.0, 0.0], "fovYDegrees": 45.0},
     "lights": [{"type": "environment", "name": "studio", "enabled": True, "source": sys.argv[2],
                 "intensity": 1.0, "rotationDegrees": float(sys.argv[3])}],
@@ -221,6 +242,7 @@ ms() { awk -v s="$1" 'BEGIN { printf "%.0f ms", s * 1000 }'; }
 cat <<EOF
 
 Blender $blender_version Eevee against Patina ($(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "no git")), ${size}x${size}, $(nproc) cores, OpenGL: $gl_renderer
+Shown: ${model:-the UV sphere with presets/gold.json} under ${hdri##*/}
 Load average at the start (1, 5, 15 min): $load_at_start; at the end: $(cut -d' ' -f1-3 /proc/loadavg)
 Eevee: $eevee_settings
 Eevee re-renders (s): $eevee_rerenders; Patina warm renders (s): ${warm_times[*]}
