@@ -104,6 +104,7 @@ bool dropModelLoad(EditorState& state) {
     if (!state.modelLoad) {
         return false;
     }
+    state.modelLoad->cancel();   // its worker stops at the next image
     state.droppedModelLoads.push_back(std::move(state.modelLoad));
     return true;
 }

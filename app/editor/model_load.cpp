@@ -3,10 +3,14 @@
 namespace patina::editor {
 
 ModelLoad::ModelLoad(std::filesystem::path path, std::shared_ptr<AssetCache> assets) : path_(std::move(path)) {
-    // The worker holds the cache too: it may outlive the state that started it. The import has
-    // no point to stop at, so Cancel drops the result instead (ready() then is never asked).
-    result_ = std::async(std::launch::async, [path = path_, assets = std::move(assets)] {
-        return Result{assets->model(path), assets->drawnModel(path)};
+    // The worker holds the cache too: it may outlive the state that started it. Cancel stops the
+    // decoding at the next image; the UI drops the load and never asks for the result.
+    result_ = std::async(std::launch::async, [path = path_, assets = std::move(assets), shared = shared_] {
+        std::shared_ptr<const GltfImport> imported = assets->model(path, [&](float fraction) {
+            shared->fraction = fraction;
+            return !shared->cancelled;
+        });
+        return imported ? Result{imported, assets->drawnModel(path)} : Result{};   // drawn: from the entry held
     });
 }
 

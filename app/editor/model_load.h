@@ -2,6 +2,7 @@
 // A glTF model opened from the window (Open, Recent, a dropped file), read and decoded off the
 // UI thread: a model with several 4K maps takes seconds, and the editor keeps drawing the mesh
 // it has and can cancel meanwhile. Destroying it waits for the worker.
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <future>
@@ -22,19 +23,28 @@ public:
 
     const std::filesystem::path& path() const { return path_; }
     double seconds() const;   // since it started
+    // The share of its images decoded (0 until the decoding starts, and for a model without).
+    float fraction() const { return shared_->fraction; }
     bool ready() const;
+    // Stops the decoding at the next image: the worker ends soon, and take() gives nothing.
+    void cancel() { shared_->cancelled = true; }
 
     struct Result {
         std::shared_ptr<const GltfImport> imported;
         std::shared_ptr<const Model> model;
     };
     // Once ready (waits otherwise): the model, or the import's error rethrown (InputError for a
-    // file that cannot be read). Once only.
+    // file that cannot be read); both null when cancelled. Once only.
     Result take();
 
 private:
     std::filesystem::path path_;
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    struct Shared {   // with the worker, which may outlive nothing here: the destructor waits
+        std::atomic<float> fraction{0.0f};
+        std::atomic<bool> cancelled{false};
+    };
+    std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
     std::future<Result> result_;
 };
 

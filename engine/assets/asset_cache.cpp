@@ -20,7 +20,8 @@ struct AssetCache::LoadedModel {
     Model model;
 };
 
-std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::filesystem::path& path) {
+std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::filesystem::path& path,
+                                                                   const Progress& progress) {
     const std::vector<uint8_t> bytes = gltf::readModelFile(path);
     const Key key{std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
     {
@@ -31,9 +32,12 @@ std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::fil
             }
         }
     }
-    Model drawn = importGltfModel(path);
-    GltfImport imported = flattenedImport(drawn, path);
-    auto model = std::make_shared<const LoadedModel>(LoadedModel{std::move(imported), std::move(drawn)});
+    std::optional<Model> drawn = importGltfModel(path, progress);
+    if (!drawn) {
+        return nullptr;   // stopped: nothing kept
+    }
+    GltfImport imported = flattenedImport(*drawn, path);
+    auto model = std::make_shared<const LoadedModel>(LoadedModel{std::move(imported), std::move(*drawn)});
     std::lock_guard lock(mutex_);
     dropExpired(models_);
     models_[key] = model;
@@ -41,9 +45,9 @@ std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::fil
 }
 
 // Each part of a loaded model shares its owner, so any one held keeps the cache entry alive.
-std::shared_ptr<const GltfImport> AssetCache::model(const std::filesystem::path& path) {
-    std::shared_ptr<const LoadedModel> model = loaded(path);
-    return {model, &model->imported};
+std::shared_ptr<const GltfImport> AssetCache::model(const std::filesystem::path& path, const Progress& progress) {
+    std::shared_ptr<const LoadedModel> model = loaded(path, progress);
+    return model ? std::shared_ptr<const GltfImport>(model, &model->imported) : nullptr;
 }
 
 std::shared_ptr<const Model> AssetCache::drawnModel(const std::filesystem::path& path) {

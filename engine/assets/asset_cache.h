@@ -32,8 +32,9 @@ public:
     AssetCache(const AssetCache&) = delete;
     AssetCache& operator=(const AssetCache&) = delete;
 
-    // A glTF model (gltf/import.h); InputError naming the file when it cannot be loaded.
-    std::shared_ptr<const GltfImport> model(const std::filesystem::path& path);
+    // A glTF model (gltf/import.h); InputError naming the file when it cannot be loaded. A model
+    // loaded afresh tells `progress` how many of its images are decoded; null when it stops it.
+    std::shared_ptr<const GltfImport> model(const std::filesystem::path& path, const Progress& progress = {});
     // The shape `scene` shows, its file read once: the triangles (its glTF file's, flattened
     // into world space, else the built-in kind's) and what its glTF file draws
     // (gltf/model_import.h; null for a built-in mesh), each keeping the other's entry.
@@ -56,7 +57,7 @@ public:
 private:
     using Key = std::pair<std::string, uint64_t>;   // the path or source, the contents' hash
     struct LoadedModel;   // a file's import and its Model, loaded together
-    std::shared_ptr<const LoadedModel> loaded(const std::filesystem::path& path);
+    std::shared_ptr<const LoadedModel> loaded(const std::filesystem::path& path, const Progress& progress = {});
     std::mutex mutex_;
     std::map<Key, std::weak_ptr<const LoadedModel>> models_;
     std::map<Key, std::weak_ptr<const Environment>> environments_;

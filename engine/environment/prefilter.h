@@ -1,6 +1,5 @@
 #pragma once
-#include <functional>
-
+#include "common/progress.h"
 #include "environment/cube_map.h"
 
 namespace patina {
@@ -10,9 +9,6 @@ struct PrefilterSettings {
     unsigned samples = 128;  // GGX samples per texel, read with filtered importance sampling
     bool operator==(const PrefilterSettings&) const = default;
 };
-
-// Told the fraction done now and then, from any thread; false stops the work.
-using Progress = std::function<bool(float)>;
 
 // The prefiltered chain of Karis's split sum: level i holds LD for r = lodToRoughness(i, last)
 // (shaders/shared/ibl.glsl), level 0 the source's mip 0 itself (r = 0 is a mirror), each level

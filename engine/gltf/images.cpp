@@ -1,9 +1,11 @@
 #include "gltf/images.h"
 
 #include <algorithm>
+#include <atomic>
 #include <climits>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <span>
 
 #include <stb_image.h>
@@ -80,8 +82,8 @@ std::string decode(std::span<const uint8_t> bytes, uint64_t size, ModelImage& ou
 
 }  // namespace
 
-std::vector<int> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used, Model& model,
-                              const std::string& source) {
+std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used,
+                                             Model& model, const std::string& source, const Progress& progress) {
     struct Pending {
         size_t index;
         std::span<const uint8_t> bytes;
@@ -107,13 +109,27 @@ std::vector<int> decodeImages(const tinygltf::Model& document, const std::vector
                                                                : budget.admit(next.bytes, next.size);
         pending.push_back(std::move(next));
     }
-    // The decoding, a model's slowest step, on every core: an image a thread.
+    // The decoding, a model's slowest step, on every core: an image a thread. Asked after each
+    // image whether to go on: a cancelled model with 4K maps stops within an image a core.
     const bool decoding = std::any_of(pending.begin(), pending.end(), [](const Pending& p) { return p.problem.empty(); });
-    parallelFor(decoding ? pending.size() : 0, [&](size_t k) {
+    std::atomic<bool> stopped = progress && !progress(0.0f);
+    std::mutex telling;
+    size_t done = 0;
+    parallelFor(decoding && !stopped ? pending.size() : 0, [&](size_t k) {
+        if (stopped) {
+            return;
+        }
         if (pending[k].problem.empty()) {
             pending[k].problem = decode(pending[k].bytes, pending[k].size, pending[k].image);
         }
+        if (progress) {
+            std::lock_guard lock(telling);
+            stopped = stopped || !progress(float(++done) / float(pending.size()));
+        }
     });
+    if (stopped) {
+        return std::nullopt;
+    }
     std::vector<int> indices(document.images.size(), -1);
     for (Pending& image : pending) {
         if (!image.problem.empty()) {

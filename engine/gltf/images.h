@@ -2,11 +2,13 @@
 // The images a model's materials use, decoded (glTF 2.0 section 3.8.3): PNG and JPEG, from a
 // buffer view, a data: URI or a file in the model's folder, to 8-bit RGBA with the top row first.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <tiny_gltf.h>
 
+#include "common/progress.h"
 #include "model/model.h"
 
 namespace patina::gltf {
@@ -18,8 +20,10 @@ constexpr uint64_t kGltfMaxImageBytes = uint64_t(512) << 20;     // decoded, all
 // there, or -1. An image that cannot be had (a missing file, bytes that are not PNG or JPEG or
 // that do not decode, a side over kGltfMaxImageSide, or past kGltfMaxImageBytes with the images
 // before it) is -1 with a note in model.notes: the maps using it are left out, the model loads.
-// Throws InputError only for a buffer view that does not fit its buffer.
-std::vector<int> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used, Model& model,
-                              const std::string& source);
+// Throws InputError only for a buffer view that does not fit its buffer. `progress` is told the
+// share of the images decoded (from the decoding threads, one at a time); nothing when it stops
+// the decoding.
+std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used,
+                                             Model& model, const std::string& source, const Progress& progress = {});
 
 }  // namespace patina::gltf

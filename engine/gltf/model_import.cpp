@@ -14,7 +14,8 @@ namespace {
 
 // Only the images a material uses are decoded; the slots then point into Model::images (or
 // lose their map when the image could not be had).
-void attachImages(const tinygltf::Model& document, Model& model, const std::string& source) {
+// False when `progress` stopped the decoding.
+bool attachImages(const tinygltf::Model& document, Model& model, const std::string& source, const Progress& progress) {
     std::vector<bool> used(document.images.size(), false);
     for (ModelMaterial& material : model.materials) {
         for (const auto& map : mapsOf(material)) {
@@ -23,14 +24,18 @@ void attachImages(const tinygltf::Model& document, Model& model, const std::stri
             }
         }
     }
-    const std::vector<int> decoded = gltf::decodeImages(document, used, model, source);
+    const std::optional<std::vector<int>> decoded = gltf::decodeImages(document, used, model, source, progress);
+    if (!decoded) {
+        return false;
+    }
     for (ModelMaterial& material : model.materials) {
         for (const auto& map : mapsOf(material)) {
             if (map.slot->present()) {
-                map.slot->image = decoded[size_t(map.slot->image)];
+                map.slot->image = (*decoded)[size_t(map.slot->image)];
             }
         }
     }
+    return true;
 }
 
 // glTF 2.0 section 3.7.2.1: a normal-mapped primitive without TANGENT gets MikkTSpace
@@ -55,14 +60,20 @@ void addMissingTangents(Model& model) {
 
 }  // namespace
 
-Model importGltfModel(const std::filesystem::path& path) {
+std::optional<Model> importGltfModel(const std::filesystem::path& path, const Progress& progress) {
     const std::string source = path.string();
     const tinygltf::Model document = gltf::loadDocument(path, source);
     Model model = gltf::modelGeometry(document, source);
     model.materials = gltf::modelMaterials(document, source, model.notes);
-    attachImages(document, model, source);
+    if (!attachImages(document, model, source, progress)) {
+        return std::nullopt;
+    }
     addMissingTangents(model);
     return model;
+}
+
+Model importGltfModel(const std::filesystem::path& path) {
+    return *importGltfModel(path, Progress{});   // nothing stops it
 }
 
 }  // namespace patina

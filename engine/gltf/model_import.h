@@ -3,7 +3,9 @@
 // their UVs and tangents, all its materials with their texture maps, and the images they use,
 // decoded (docs/FORMATS.md, "glTF": what is read, the conventions, the limits).
 #include <filesystem>
+#include <optional>
 
+#include "common/progress.h"
 #include "model/model.h"
 
 namespace patina {
@@ -15,5 +17,8 @@ namespace patina {
 // is missing or cannot be decoded, an image format it does not read) is a line in
 // Model::notes; anything else it cannot use throws InputError naming the file and the place.
 Model importGltfModel(const std::filesystem::path& path);
+// The same, telling `progress` the share of its images decoded (the slowest step of a model
+// with large maps); nothing when `progress` stops it.
+std::optional<Model> importGltfModel(const std::filesystem::path& path, const Progress& progress);
 
 }  // namespace patina

@@ -12,6 +12,8 @@
 #include "assets/asset_cache.h"
 #include "assets/prepare_scene.h"
 #include "gltf/export.h"
+#include "gltf/model_export.h"
+#include "gltf/model_import.h"
 #include "files/input_error.h"
 #include "gltf_builder.h"
 #include "scratch_test.h"
@@ -81,6 +83,39 @@ TEST_F(Assets, TheSameFileIsLoadedOnce) {
     const Scene scene = sceneOf(path("torus.glb").string(), "builtin:white");
     EXPECT_EQ(cache.mesh(scene).get(), &model->mesh);
     EXPECT_EQ(cache.mesh(scene)->positions.size(), makeTorus().positions.size());
+}
+
+// A model's images decoded report their share done, and a stop leaves nothing loaded or kept:
+// what the editor's Cancel does to a model with large maps.
+TEST_F(Assets, AModelsImageDecodingReportsProgressAndStopsWhenAsked) {
+    Model model = test::twoBalls();
+    for (int i = 0; i < 4; ++i) {
+        model.images.push_back({"map " + std::to_string(i), 8, 8, std::vector<uint8_t>(8 * 8 * 4, uint8_t(40 * i + 30))});
+    }
+    model.materials[0].baseColor.image = 0;
+    model.materials[0].metallicRoughness.image = 1;
+    model.materials[1].baseColor.image = 2;
+    model.materials[1].occlusion.image = 3;
+    exportGltfModel(path("maps.glb"), model);
+
+    std::vector<float> told;
+    const std::optional<Model> read = importGltfModel(path("maps.glb"), [&](float fraction) {
+        told.push_back(fraction);
+        return true;
+    });
+    ASSERT_TRUE(read);
+    EXPECT_EQ(read->images.size(), 4u);
+    EXPECT_EQ(told, (std::vector<float>{0.0f, 0.25f, 0.5f, 0.75f, 1.0f}));   // one at a time, in order
+
+    int asked = 0;
+    EXPECT_FALSE(importGltfModel(path("maps.glb"), [&](float fraction) { return ++asked < 2 || fraction < 0.0f; }));
+    EXPECT_EQ(asked, 2) << "it stops at the first image done after the stop";
+
+    AssetCache assets;
+    EXPECT_EQ(assets.model(path("maps.glb"), [](float) { return false; }), nullptr);
+    const std::shared_ptr<const GltfImport> whole = assets.model(path("maps.glb"));   // nothing stale was kept
+    ASSERT_NE(whole, nullptr);
+    EXPECT_EQ(assets.drawnModel(path("maps.glb"))->images.size(), 4u);
 }
 
 TEST_F(Assets, AChangedFileIsLoadedAgain) {

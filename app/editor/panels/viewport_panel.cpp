@@ -34,7 +34,13 @@ void drawModelLoad(EditorState& state) {
         return;
     }
     char text[320];
-    std::snprintf(text, sizeof text, "Loading %s (%.0f s)", load->path().filename().string().c_str(), load->seconds());
+    const std::string name = load->path().filename().string();
+    if (load->fraction() > 0.0f) {
+        std::snprintf(text, sizeof text, "Loading %s (%.0f s, images %.0f%%)", name.c_str(), load->seconds(),
+                      100.0f * load->fraction());
+    } else {
+        std::snprintf(text, sizeof text, "Loading %s (%.0f s)", name.c_str(), load->seconds());
+    }
     const ImGuiStyle& style = ImGui::GetStyle();
     sameLineIfFits(ImGui::CalcTextSize(text).x + style.ItemSpacing.x + ImGui::CalcTextSize("Cancel").x +
                    style.FramePadding.x * 2);
