@@ -11,6 +11,9 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
     RenderInputs inputs;
     inputs.mesh = prepared.mesh;
     inputs.model = prepared.model;
+    if (prepared.model) {   // a built-in mesh draws none of them
+        inputs.modelMaterials = scene.modelMaterials;
+    }
     inputs.material = scene.material;
     inputs.cameraPosition = scene.camera.position;
     inputs.cameraTarget = scene.camera.target;
@@ -31,7 +34,8 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
 }
 
 bool RenderInputs::operator==(const RenderInputs& other) const {
-    return mesh == other.mesh && model == other.model && material == other.material &&
+    return mesh == other.mesh && model == other.model && modelMaterials == other.modelMaterials &&
+           material == other.material &&
            cameraPosition == other.cameraPosition && cameraTarget == other.cameraTarget &&
            fovYDegrees == other.fovYDegrees && exposure == other.exposure && tonemap == other.tonemap &&
            background == other.background && environment == other.environment &&

@@ -17,6 +17,7 @@ namespace patina {
 struct RenderInputs {
     std::shared_ptr<const Mesh> mesh;                 // the prepared one
     std::shared_ptr<const Model> model;               // the prepared one, with its draws' materials
+    std::vector<ModelMaterialEdit> modelMaterials;    // the scene's tuning of them: factors, maps left out
     MaterialParameters material;
     glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f};
     float fovYDegrees = 0.0f;

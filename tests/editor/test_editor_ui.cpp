@@ -320,6 +320,8 @@ TEST_F(EditorUi, AClickOnAPartSelectsItAndAMapsCheckboxLeavesTheMapOut) {
     EXPECT_GT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
     press(kKeyZ, true);
     EXPECT_TRUE(mapShown(state_.scene, 0, "baseColorTexture"));
+    frames(2);   // the undo draws the logo again, no widget held to force a render
+    EXPECT_LT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
 }
 
 // A model read on a worker is shown once read, but not behind a prompt: it waits for the

@@ -71,5 +71,24 @@ TEST(RenderInputs, EverythingDrawnChangesThem) {
     EXPECT_EQ(inputsOf(dark, nullptr, std::make_shared<const Environment>()), inputsOf(dark));
 }
 
+// A model's parts as the scene tunes them: an undo of a part's factors or of a map left out
+// changes nothing else, and must still draw again (the editor's viewport compares these).
+TEST(RenderInputs, APartsTuningChangesThemOnAModel) {
+    Scene scene = defaultScene();
+    scene.meshFile = "/models/two.glb";
+    const auto model = std::make_shared<const Model>();
+    const auto mesh = builtinMesh(MeshKind::Sphere);
+    auto inputs = [&](const Scene& s) { return renderInputs({s, mesh, nullptr, model}); };
+    const RenderInputs untuned = inputs(scene);
+    Scene tuned = scene;
+    tuned.modelMaterials.push_back({0, scene.material});
+    EXPECT_FALSE(inputs(tuned) == untuned) << "a part's factors";
+    Scene mapOff = tuned;
+    mapOff.modelMaterials[0].mapsOff = {"baseColorTexture"};
+    EXPECT_FALSE(inputs(mapOff) == inputs(tuned)) << "a map left out";
+    // Without a model nothing of it is drawn.
+    EXPECT_EQ(inputsOf(mapOff), inputsOf(scene));
+}
+
 }  // namespace
 }  // namespace patina
