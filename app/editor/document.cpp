@@ -92,6 +92,14 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.lights = snapshot.lights;
     state.scene.display = snapshot.display;
     state.scene.modelMaterials = snapshot.modelMaterials;
+    if (!(state.snapshot().shape == snapshot.shape)) {   // the shape it had, as it was framed
+        state.scene.mesh = snapshot.shape.kind;
+        state.scene.meshFile = snapshot.shape.file;
+        state.mesh = snapshot.shape.mesh;
+        state.model = snapshot.shape.model;
+        state.scene.camera = snapshot.shape.camera;
+        state.selectedModelMaterial = 0;
+    }
     state.committed = snapshot;
     const int count = int(state.scene.lights.size());
     state.selectedLight = std::clamp(state.selectedLight, count ? 0 : -1, count - 1);
@@ -136,16 +144,18 @@ void frameMesh(Document& document) {
 }
 
 void chooseBuiltinMesh(Document& document, MeshKind kind) {
-    const bool fromFile = !document.scene.meshFile.empty();
-    const BoundingSphere before = meshBounds(document);
-    document.scene.mesh = kind;
-    document.scene.meshFile.clear();
-    document.mesh.reset();   // the built-in kind's
-    document.model.reset();
-    if (fromFile) {   // back from a model: the camera and the lights return to the unit scale
-        frameMesh(document);
-        applyEdit(document, [&](Document& d) { moveLightRig(d.scene.lights, before, {glm::vec3(0.0f), 1.0f}); });
-    }
+    applyEdit(document, [&](Document& d) {   // one step, the lights' return with it
+        const bool fromFile = !d.scene.meshFile.empty();
+        const BoundingSphere before = meshBounds(d);
+        d.scene.mesh = kind;
+        d.scene.meshFile.clear();
+        d.mesh.reset();   // the built-in kind's
+        d.model.reset();
+        if (fromFile) {   // back from a model: the camera and the lights return to the unit scale
+            frameMesh(d);
+            moveLightRig(d.scene.lights, before, {glm::vec3(0.0f), 1.0f});
+        }
+    });
 }
 
 PreparedScene preparedScene(const Document& document, const Scene& shown) {

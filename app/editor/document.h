@@ -38,7 +38,10 @@ struct Document {
     bool materialChanged() const { return scene.material != savedMaterial; }
     bool sceneChanged() const;
     bool dirty() const { return materialChanged() || sceneChanged(); }
-    EditSnapshot snapshot() const { return {scene.material, scene.lights, scene.display, scene.modelMaterials}; }
+    EditSnapshot snapshot() const {
+        return {scene.material, scene.lights, scene.display, scene.modelMaterials,
+                {scene.mesh, scene.meshFile, mesh, model, scene.camera}};
+    }
     // Whether `index` is one of the scene's lights.
     bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
     // The scene's environment light's index, or -1.

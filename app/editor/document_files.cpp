@@ -37,26 +37,25 @@ std::string modelSummary(const Model& model) {
 void applyMesh(EditorState& state, const std::filesystem::path& path, const ModelLoad::Result& loaded) {
     const std::shared_ptr<const GltfImport>& imported = loaded.imported;
     const std::shared_ptr<const Model>& model = loaded.model;
-    const BoundingSphere before = meshBounds(state);
     const std::string file = std::filesystem::absolute(path).lexically_normal().string();
-    // The tuning belongs to the file it was made on: another model, even with a material
-    // of the same index and name, starts as its file says (reopening the same one keeps it).
-    const bool another = file != state.scene.meshFile;
-    state.scene.meshFile = file;
-    state.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
-    state.model = model;
-    state.selectedModelMaterial = 0;
-    frameMesh(state);
-    // The lights follow the model's size and place, an undoable step: a model of hundreds
-    // of units used to swallow every point light. Its materials are its own (the scene's
-    // material stays the built-in meshes').
-    const BoundingSphere after = meshBounds(state);
+    // One undoable step: the model shown, framed, and the lights following its size and place
+    // (a model of hundreds of units used to swallow every point light). Its materials are its
+    // own (the scene's material stays the built-in meshes'). The tuning belongs to the file it
+    // was made on: another model, even with a material of the same index and name, starts as
+    // its file says (reopening the same one keeps it).
     applyEdit(state, [&](Document& d) {
-        moveLightRig(d.scene.lights, before, after);
+        const BoundingSphere before = meshBounds(d);
+        const bool another = file != d.scene.meshFile;
+        d.scene.meshFile = file;
+        d.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
+        d.model = model;
+        frameMesh(d);
+        moveLightRig(d.scene.lights, before, meshBounds(d));
         if (another) {
             d.scene.modelMaterials.clear();
         }
     });
+    state.selectedModelMaterial = 0;
     state.error.clear();
     state.status = "Mesh " + path.filename().string() + modelSummary(*model);
     rememberRecent(state, path);

@@ -105,6 +105,13 @@ std::string describeChange(const EditSnapshot& before, const EditSnapshot& after
     if (before.modelMaterials != after.modelMaterials) {
         parts.push_back(modelMaterialsChange(before.modelMaterials, after.modelMaterials));
     }
+    if (before.shape != after.shape) {
+        const ShownShape& shown = after.shape.file.empty() && !before.shape.file.empty() ? before.shape : after.shape;
+        parts.insert(parts.begin(), "the mesh (" +
+                                        (shown.file.empty() ? std::string(meshKindName(shown.kind))
+                                                            : std::filesystem::path(shown.file).filename().string()) +
+                                        ")");
+    }
     std::string text;
     for (size_t i = 0; i < parts.size(); ++i) {
         text += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];

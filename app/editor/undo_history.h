@@ -1,21 +1,37 @@
 #pragma once
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "model/model.h"
 #include "scene/scene.h"
 
 namespace patina::editor {
 
+// The shape shown: a built-in kind or a glTF file, with what was loaded for it (held, so that
+// an undo reloads nothing) and the camera that showed it. Two are the same shape when kind and
+// file are: the camera is a view, not an edit to step back through, and is put back only with
+// the shape it framed.
+struct ShownShape {
+    MeshKind kind = MeshKind::Sphere;
+    std::string file;
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Model> model;
+    Camera camera;
+    bool operator==(const ShownShape& other) const { return kind == other.kind && file == other.file; }
+};
+
 // What undo restores: the material, the light list and the display settings (exposure, tone
-// map, background), each a choice an artist makes and may want back. The camera is a view, not
-// an edit to step back through.
+// map, background), each a choice an artist makes and may want back, the model's tuning, and
+// the shape shown (opening a model and fitting the lights to it is one step).
 struct EditSnapshot {
     Material material;
     std::vector<Light> lights;
     DisplaySettings display;
     std::vector<ModelMaterialEdit> modelMaterials;   // the scene's model's materials as tuned
+    ShownShape shape;
 
     bool operator==(const EditSnapshot&) const = default;
 };

@@ -881,6 +881,41 @@ TEST_F(EditorStateTest, TheLightsFollowAModelsSizeAndComeBackWithTheSphere) {
     EXPECT_LT(glm::length(state.scene.camera.position), 10.0f) << "framed on the unit sphere again";
 }
 
+// Opening a model is one undoable step: undo brings back the sphere, its camera and the lights
+// as they were together (a user once got the model with sphere-sized lights and no way back);
+// redo shows the model again as opened, nothing reloaded.
+TEST_F(EditorStateTest, OpeningAModelIsOneStepThatUndoTakesBackWhole) {
+    Mesh big = makeTorus();
+    for (glm::vec3& p : big.positions) {
+        p *= 50.0f;
+    }
+    exportGltf(dir_ / "big.glb", big, state.scene.material);
+    const Scene before = state.scene;
+    ASSERT_TRUE(openFile(state, dir_ / "big.glb")) << state.error;
+    const Scene opened = state.scene;
+    const std::shared_ptr<const Model> model = state.model;
+    ASSERT_NE(opened.lights, before.lights);
+    undo(state);
+    EXPECT_EQ(state.status, "Undid the mesh (big.glb) and the light warm key");
+    EXPECT_TRUE(state.scene.meshFile.empty());
+    EXPECT_EQ(state.model, nullptr);
+    EXPECT_EQ(state.scene.lights, before.lights);
+    EXPECT_EQ(state.scene.camera.position, before.camera.position);
+    EXPECT_EQ(meshBounds(state).radius, 1.0f);
+    redo(state);
+    EXPECT_EQ(state.scene.meshFile, opened.meshFile);
+    EXPECT_EQ(state.model, model) << "the same model, not read again";
+    EXPECT_EQ(state.scene.lights, opened.lights);
+    EXPECT_EQ(state.scene.camera.position, opened.camera.position);
+    // Orbiting is not an edit; the torus is, and undo returns to the model as framed.
+    orbitCamera(state.scene.camera, 0.3f, 0.1f);
+    commitEdits(state);
+    chooseBuiltinMesh(state, MeshKind::Torus);
+    commitEdits(state);
+    undo(state);
+    EXPECT_EQ(state.scene.meshFile, opened.meshFile);
+}
+
 }  // namespace
 }  // namespace patina::editor
 
