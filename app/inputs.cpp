@@ -1,10 +1,13 @@
 #include "inputs.h"
 
+#include <algorithm>
+#include <cctype>
 #include <iostream>
 
 #include "shading/brdf_models.h"
 #include "assets/prepare_scene.h"
 #include "image/image.h"
+#include "image/png_text.h"
 #include "io/file_kinds.h"
 #include "files/input_error.h"
 #include "io/scene_file.h"
@@ -27,7 +30,7 @@ void addMeshOption(CLI::App& command, std::string& mesh) {
 
 void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     if (withScene) {
-        command.add_option("--scene", scenePath, "Scene JSON (default: the embedded scene)");
+        command.add_option("--scene", scenePath, "Scene JSON, or a Patina screenshot (.png) (default: the embedded scene)");
     }
     command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
     if (withPart) {
@@ -41,9 +44,25 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
 }
 
+namespace {
+// A scene file, or the scene a Patina screenshot (.png) holds.
+Scene loadScene(const std::string& path, std::vector<std::string>& warnings) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".png") {
+        return loadSceneFile(path, warnings);
+    }
+    std::optional<Scene> scene = sceneFromPng(path, warnings);
+    if (!scene) {
+        throw InputError(path + ": this PNG holds no scene (only Patina's screenshots do)");
+    }
+    return std::move(*scene);
+}
+}  // namespace
+
 Scene SceneInputs::load() const {
     std::vector<std::string> warnings;
-    Scene scene = scenePath.empty() ? defaultScene() : loadSceneFile(scenePath, warnings);
+    Scene scene = scenePath.empty() ? defaultScene() : loadScene(scenePath, warnings);
     if (!materialPath.empty()) {
         scene.material = loadMaterialFile(materialPath, warnings);
     }

@@ -241,13 +241,18 @@ std::optional<Scene> sceneFromPngBytes(const std::vector<uint8_t>& bytes, const 
     }
     const std::string where = source + " (" + kSceneTextKeyword + ")";
     const Json json = parseJsonText(found->second, where);
-    // A path would make the PNG depend on, and read, files beside it.
+    // A relative path would make the PNG depend on, and read, files beside it. A model is
+    // named by the absolute path a screenshot of it writes (Scene::meshFile), and only a
+    // .gltf or .glb is read there, within its own folder, as any model is.
     if (json.is_object() && json.contains("material") && json["material"].is_string()) {
         failAt(where, "/material", "an embedded scene must hold its material inline");
     }
-    if (json.is_object() && json.contains("mesh") && json["mesh"].is_string() &&
-        !meshKindFromName(json["mesh"].get<std::string>())) {
-        failAt(where, "/mesh", "an embedded scene must use a built-in mesh (\"sphere\" or \"torus\")");
+    if (json.is_object() && json.contains("mesh") && json["mesh"].is_string()) {
+        const std::string mesh = json["mesh"].get<std::string>();
+        if (!meshKindFromName(mesh) && !std::filesystem::path(mesh).is_absolute()) {
+            failAt(where, "/mesh",
+                   "an embedded scene must use a built-in mesh (\"sphere\" or \"torus\") or a model's absolute path");
+        }
     }
     return sceneFromJson(json, where, {}, warnings);
 }

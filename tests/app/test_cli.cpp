@@ -12,6 +12,9 @@
 #include "cli_runner.h"
 #include "gltf/model_export.h"
 #include "image/image.h"
+#include "image/png_text.h"
+#include "io/json_writer.h"
+#include "io/scene_file.h"
 #include "scratch_test.h"
 #include "files/file_bytes.h"
 #include "test_support.h"
@@ -171,6 +174,22 @@ TEST_F(Cli, AModelByMeshIsFramedAndLitTheSameAtAnySize) {
     // The centre of the frame is between the balls: the background, not a ball filling it.
     EXPECT_EQ(test::pixel(a, 32, 24), test::pixel(a, 0, 0));
     EXPECT_EQ(test::pixel(b, 32, 24), test::pixel(b, 0, 0));
+}
+
+// A Patina screenshot is a scene for --scene, a model's too; a PNG without one is refused.
+TEST_F(Cli, AScreenshotIsASceneForRender) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    Scene scene = defaultScene();
+    scene.meshFile = path("two.glb").string();
+    writeFileAtomic(path("shot.png"), encodePngWithText(LdrImage{1, 1, {0, 0, 0, 255}},
+                                                        {{kSceneTextKeyword, sceneToJson(scene).dump()}}));
+    test::CliRun r = run("render --width 48 --height 32 --scene " + path("shot.png").string() + " --out " +
+                         path("again.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_EQ(decodePng(readFileBytes(path("again.png"))).width, 48);
+    r = run("render --scene " + path("again.png").string() + " --out " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("again.png: this PNG holds no scene"), std::string::npos) << r.stderrText;
 }
 
 TEST_F(Cli, AMeshThatIsNoMeshIsRefused) {

@@ -197,6 +197,32 @@ TEST_F(EditorUi, ScreenshotEmbedsTheSceneAndReopensIt) {
     EXPECT_EQ(reopened.scene.lights, state_.scene.lights);
 }
 
+// A screenshot of a model reopens as the model with its tuning (it used to be refused for
+// naming its mesh file).
+TEST_F(EditorUi, AScreenshotOfAModelReopensWithTheModel) {
+    const std::filesystem::path models = dir_ / "models";
+    std::filesystem::create_directories(models);
+    exportGltfModel(models / "two.glb", test::twoBalls());
+    ASSERT_TRUE(openFile(state_, models / "two.glb")) << state_.error;
+    Material gold = modelMaterial(state_, state_.scene, 1);
+    gold.baseColor = {1.0f, 0.7f, 0.3f};
+    setModelMaterial(state_, state_.scene, 1, gold);
+    frames(1);
+    press(kKeyF12);
+    std::vector<std::filesystem::path> shots;
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+        if (entry.path().extension() == ".png") {
+            shots.push_back(entry.path());
+        }
+    }
+    ASSERT_EQ(shots.size(), 1u) << state_.error;
+    EditorState reopened;
+    ASSERT_TRUE(openFile(reopened, shots[0])) << reopened.error;
+    EXPECT_EQ(reopened.scene.meshFile, state_.scene.meshFile);
+    EXPECT_EQ(reopened.scene.modelMaterials, state_.scene.modelMaterials);
+    ASSERT_NE(reopened.model, nullptr);
+}
+
 TEST_F(EditorUi, SetAThenSplitShowsBothMaterials) {
     click(centreOf("Set A"));
     ASSERT_TRUE(state_.compareA.has_value());

@@ -86,15 +86,22 @@ TEST_F(GltfScene, RenderDrawsTheFile) {
     EXPECT_FALSE(fs::exists(path("m.png")));
 }
 
-TEST_F(GltfScene, AScreenshotSceneMayNotNameAMeshFile) {
-    // Like a material path: opening a PNG must not make Patina read files beside it.
+TEST_F(GltfScene, AScreenshotSceneNamesItsModelByAbsolutePathOnly) {
+    // A screenshot of a model holds the model's absolute path (Scene::meshFile) and reopens
+    // with it. A relative one, like a material path, would make the PNG read files beside it.
     write("scene.json", scene("models/cube.glb"));
     std::vector<std::string> warnings;
-    const std::string json = sceneToJson(loadSceneFile(path("scene.json"), warnings)).dump();
-    writeFileAtomic(path("shot.png"), encodePngWithText(LdrImage{1, 1, {0, 0, 0, 255}}, {{kSceneTextKeyword, json}}));
+    const Scene shown = loadSceneFile(path("scene.json"), warnings);
+    auto shot = [&](const std::string& json) {
+        writeFileAtomic(path("shot.png"), encodePngWithText(LdrImage{1, 1, {0, 0, 0, 255}}, {{kSceneTextKeyword, json}}));
+        return sceneFromPng(path("shot.png"), warnings);
+    };
+    const std::optional<Scene> reopened = shot(sceneToJson(shown).dump());
+    ASSERT_TRUE(reopened);
+    EXPECT_EQ(reopened->meshFile, shown.meshFile);
     try {
-        sceneFromPng(path("shot.png"), warnings);
-        FAIL() << "a screenshot naming a mesh file was accepted";
+        shot(scene("models/cube.glb"));
+        FAIL() << "a screenshot naming a mesh file beside it was accepted";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("/mesh: an embedded scene must use a built-in mesh"),
                   std::string::npos)
