@@ -32,11 +32,13 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     if (withScene) {
         command.add_option("--scene", scenePath, "Scene JSON, or a Patina screenshot (.png) (default: the embedded scene)");
     }
-    command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
+    CLI::Option* material = command.add_option("--material", materialPath, "Material JSON, replacing the scene's");
     if (withPart) {
-        command.add_option("--part", part,
-                           "With --material and a glTF model: the material on the parts of this name only "
-                           "(default: every part)");
+        command
+            .add_option("--part", part,
+                        "With --material and a glTF model: the material on the parts of this name only "
+                        "(default: every part)")
+            ->needs(material);   // a usage mistake (exit 2), said before anything is read
     }
     if (withPart) {
         addMeshOption(command, mesh);

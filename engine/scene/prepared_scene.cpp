@@ -1,5 +1,6 @@
 #include "scene/prepared_scene.h"
 
+#include <set>
 #include <algorithm>
 #include <optional>
 #include <stdexcept>
@@ -86,10 +87,13 @@ Model tunedModel(const Model& model, const Scene& scene) {
 
 void setPartMaterials(Scene& scene, const Model& model, const Material& material, const std::string& part) {
     bool found = false;
-    std::string names;
+    std::string names;   // each name once, in the file's order: several materials may share one
+    std::set<std::string> named;
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const std::string& name = model.materials[i].name;
-        names += (i ? ", \"" : "\"") + name + "\"";
+        if (named.insert(name).second) {
+            names += (names.empty() ? "\"" : ", \"") + name + "\"";
+        }
         if (!part.empty() && name != part) {
             continue;
         }

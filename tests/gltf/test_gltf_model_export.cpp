@@ -279,7 +279,10 @@ TEST_F(GltfModelExport, TheCommandExportsTheTunedModelAndItRendersTheSame) {
         run("export --mesh " + box.string() + material + " --part nothing --out " + path("x.glb").string());
     EXPECT_EQ(wrongPart.exitCode, 3);
     EXPECT_NE(wrongPart.stderrText.find(model.materials[0].name), std::string::npos) << wrongPart.stderrText;
-    EXPECT_EQ(run("export --part " + model.materials[0].name + " --out " + path("y.glb").string()).exitCode, 3);
+    // --part without --material is a usage mistake (exit 2), told before anything is read.
+    const test::CliRun noMaterial = run("export --part " + model.materials[0].name + " --out " + path("y.glb").string());
+    EXPECT_EQ(noMaterial.exitCode, 2);
+    EXPECT_NE(noMaterial.stderrText.find("--part requires --material"), std::string::npos) << noMaterial.stderrText;
     EXPECT_FALSE(fs::exists(path("x.glb")));
     EXPECT_FALSE(fs::exists(path("y.glb")));
 }

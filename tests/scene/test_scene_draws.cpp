@@ -168,6 +168,31 @@ TEST(SceneDraws, AMaskBelowItsCutoffHidesTheItemWhole) {
     EXPECT_FALSE(drawn(model)[0].blend);
 }
 
+// A material named on the command line goes on every part of that name; a name the model lacks
+// is refused with the model's part names, each once (2CylinderEngine repeats its names).
+TEST(SceneDraws, PartMaterialsGoOnEveryPartOfTheNameAndAWrongNameListsEachOnce) {
+    Model model;
+    for (const char* name : {"metal", "rubber", "metal"}) {
+        ModelMaterial material;
+        material.name = name;
+        model.materials.push_back(material);
+    }
+    Scene scene = defaultScene();
+    Material gold = scene.material;
+    gold.roughness = 0.25f;
+    setPartMaterials(scene, model, gold, "metal");
+    ASSERT_EQ(scene.modelMaterials.size(), 2u);
+    EXPECT_EQ(scene.modelMaterials[0].index, 0);
+    EXPECT_EQ(scene.modelMaterials[1].index, 2);
+    EXPECT_EQ(scene.modelMaterials[1].material.roughness, 0.25f);
+    try {
+        setPartMaterials(scene, model, gold, "glass");
+        FAIL() << "a part the model lacks was taken";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_STREQ(error.what(), "the model has no part \"glass\" (its parts: \"metal\", \"rubber\")");
+    }
+}
+
 TEST(SceneDraws, AnItemNamingWhatTheModelLacksIsRefused) {
     const Scene scene = defaultScene();
     for (const auto& [primitive, material] : {std::pair{2, 0}, std::pair{-1, 0}, std::pair{0, 2}}) {
