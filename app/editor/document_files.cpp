@@ -178,7 +178,16 @@ DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& p
         }
         file.comparison = comparisonFromPng(path);
     } else {
-        const Json json = readJsonFile(path);
+        Json json;
+        try {
+            json = readJsonFile(path);
+        } catch (const InputError&) {
+            if (path.extension() == ".json") {
+                throw;   // a JSON file that is wrong: where and how
+            }
+            throw InputError(path.string() + ": Patina opens materials and scenes (.json), its screenshots (.png), "
+                                             "glTF models (.gltf, .glb) and environment images (.hdr, .exr)");
+        }
         if (json.is_object() && json.value("format", Json()) == "patina-scene") {
             file.scene = sceneFromJson(json, path.string(), path.parent_path(), file.warnings);
         } else {

@@ -41,6 +41,11 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
         return loader.LoadBinaryFromMemory(&model, &error, &warning, clean.data(), unsigned(clean.size()), baseDir);
     }
     const std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    const size_t first = json.find_first_not_of(" \t\r\n");
+    if (json.substr(0, 3) != "\xEF\xBB\xBF" && (first == std::string_view::npos || json[first] != '{')) {
+        throw InputError(source + ": neither a glTF binary (a .glb starts with \"glTF\") nor glTF JSON (a .gltf is "
+                                  "a JSON object)");
+    }
     checkGltfJson(json, false, source);
     return loader.LoadASCIIFromString(&model, &error, &warning, json.data(), unsigned(json.size()), baseDir);
 }

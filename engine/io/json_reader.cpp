@@ -84,7 +84,16 @@ Json readJsonFile(const std::filesystem::path& path) {
     const RegularFile file(path, 0, path.string());
     file.requireAtMost(kMaxJsonFileBytes, "Patina's JSON files");
     const std::vector<uint8_t> bytes = file.readAll();
-    return parseJsonText(std::string(bytes.begin(), bytes.end()), path.string());
+    // Another kind of file (a model, an image, an .obj) is named as such, not as a JSON syntax
+    // error at its first byte.
+    const std::string text(bytes.begin(), bytes.end());
+    const size_t first = text.find_first_not_of(" \t\r\n");
+    const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+    if (!bom && (first == std::string::npos || (text[first] != '{' && text[first] != '['))) {
+        throw InputError(path.string() + ": not a JSON file" + (first == std::string::npos ? " (it is empty)" : "") +
+                         ": Patina's materials and scenes are JSON");
+    }
+    return parseJsonText(text, path.string());
 }
 
 JsonObjectReader::JsonObjectReader(const Json& value, std::string pointer, std::string source)

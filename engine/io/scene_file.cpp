@@ -265,6 +265,9 @@ std::vector<std::filesystem::path> materialFilesIn(const std::filesystem::path& 
 }
 
 Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    if (!gltfExtension(path).empty()) {
+        throw InputError(path.string() + ": a glTF model, not a material (a model is a scene's \"mesh\", or --mesh)");
+    }
     return materialFromJson(readJsonFile(path), "", path.string(), true, warnings);
 }
 

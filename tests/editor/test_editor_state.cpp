@@ -797,6 +797,18 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
     EXPECT_TRUE(state.scene.meshFile.empty());
 }
 
+// A file the editor does not open says which ones it does; nothing changes.
+TEST_F(EditorStateTest, AFileOfAnotherKindSaysWhatTheEditorOpens) {
+    std::ofstream(dir_ / "ball.obj") << "v 0 0 0\n";
+    const Scene before = state.scene;
+    EXPECT_FALSE(openFile(state, dir_ / "ball.obj"));
+    EXPECT_NE(state.error.find("ball.obj: Patina opens materials and scenes (.json), its screenshots (.png), glTF "
+                               "models (.gltf, .glb) and environment images (.hdr, .exr)"),
+              std::string::npos)
+        << state.error;
+    EXPECT_EQ(state.scene, before);
+}
+
 // A scene never saved is offered under the name of what it shows: the model, or the material.
 TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
     saveSceneAs(state);

@@ -288,7 +288,12 @@ TEST_F(GltfHostile, JsonThatWouldExhaustTheParserIsRefused) {
     GltfBuilder::writeText(model("broken.gltf"), "{\"asset\": {\"version\": \"2.0\"},,}");
     EXPECT_ERROR(importError(model("broken.gltf")), "broken.gltf: invalid JSON: parse error at line 1, column 30");
     GltfBuilder::writeText(model("empty.gltf"), "");
-    EXPECT_ERROR(importError(model("empty.gltf")), "empty.gltf: invalid JSON");
+    EXPECT_ERROR(importError(model("empty.gltf")), "empty.gltf: neither a glTF binary");
+    // Bytes of another kind (a corrupt .glb, an image renamed) are said to be no glTF at all,
+    // not a JSON syntax error at their first byte.
+    GltfBuilder::writeText(model("noise.glb"), "JFIF\x01\x02 not a model");
+    EXPECT_ERROR(importError(model("noise.glb")),
+                 "noise.glb: neither a glTF binary (a .glb starts with \"glTF\") nor glTF JSON");
 }
 
 TEST_F(GltfHostile, AModelWithoutTrianglesIsRefused) {

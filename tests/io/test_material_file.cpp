@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "files/input_error.h"
 #include "io/scene_file.h"
 #include "scratch_test.h"
 
@@ -130,6 +131,28 @@ namespace patina {
 namespace {
 
 class MaterialFolder : public test::ScratchTest {};
+
+// A file of another kind given as a material is named as such, not as a JSON syntax error at
+// its first byte: an .obj, an empty file, a glTF model.
+TEST_F(MaterialFolder, AFileOfAnotherKindIsSaidToBeOne) {
+    std::vector<std::string> warnings;
+    auto error = [&](const std::string& name) {
+        try {
+            loadMaterialFile(path(name), warnings);
+        } catch (const InputError& thrown) {
+            return std::string(thrown.what());
+        }
+        return std::string("no error");
+    };
+    write("ball.obj", "v 0 0 0\nv 1 0 0\n");
+    EXPECT_EQ(error("ball.obj"), path("ball.obj").string() + ": not a JSON file: Patina's materials and scenes are JSON");
+    write("empty.json", "  \n");
+    EXPECT_NE(error("empty.json").find("not a JSON file (it is empty)"), std::string::npos) << error("empty.json");
+    write("box.gltf", R"({"asset": {"version": "2.0"}})");
+    EXPECT_NE(error("box.gltf").find("box.gltf: a glTF model, not a material"), std::string::npos) << error("box.gltf");
+    write("ok.json", R"({"format": "patina-material", "version": 1, "name": "ok"})");
+    EXPECT_EQ(error("ok.json"), "no error");
+}
 
 // The preset library's listing (editor presets panel, bench-render's batch): .json files only,
 // sorted; a missing folder lists nothing rather than throwing.
