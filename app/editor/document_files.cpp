@@ -21,8 +21,11 @@ namespace {
 std::string modelSummary(const Model& model) {
     const size_t materials = model.materials.size(), images = model.images.size();
     std::string text = ": " + std::to_string(materials) + " material" + (materials == 1 ? "" : "s");
-    if (materials > 0) {
-        text += " (\"" + model.materials[0].name + "\" edited; the Material panel picks another)";
+    if (materials == 1) {
+        text += " (\"" + model.materials[0].name + "\", in the Material panel)";
+    } else if (materials > 1) {
+        text += " (the Material panel shows \"" + model.materials[0].name +
+                "\"; pick another in Parts or click a part)";
     }
     if (images > 0) {
         text += ", " + std::to_string(images) + " texture image" + (images == 1 ? "" : "s");
