@@ -640,7 +640,7 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_TRUE(openFile(state, dir_ / "gold.glb")) << state.error;
     EXPECT_EQ(state.scene.material, before) << "the scene's own material is untouched";
     ASSERT_EQ(modelMaterialCount(state), 1);
-    EXPECT_NE(state.status.find("1 material (\"model gold\" edited"), std::string::npos) << state.status;
+    EXPECT_NE(state.status.find("1 material (\"model gold\", in the Material panel)"), std::string::npos) << state.status;
     Material edited = editedMaterial(state);
     EXPECT_EQ(edited.name, "model gold");
     EXPECT_NEAR(edited.roughness, 0.3f, 1e-6f);
