@@ -149,7 +149,10 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         ImGui::End();
     }
 
-    drawError(state, ImVec2(at.viewport.x + px(8), top + px(64)), at.viewport.width - px(16));
+    // Over the picture, below the toolbar however many rows it wraps to (its buttons stay free).
+    ImVec2 pictureMin, pictureMax;
+    const float errorTop = itemRect("viewport", &pictureMin, &pictureMax) ? pictureMin.y + px(8) : top + px(64);
+    drawError(state, ImVec2(at.viewport.x + px(8), errorTop), at.viewport.width - px(16));
     drawGuarded(state, "A dialog", [&] { drawDialogs(state, services); });
     // Whatever the widgets changed becomes one undo step once none of them is active.
     if (!ImGui::IsAnyItemActive()) {

@@ -392,6 +392,21 @@ TEST_F(EditorUi, AModelBeingReadMovesNoToolbarControl) {
     state_.pendingNew = false;
 }
 
+// An error floats over the picture, below every row of the toolbar, so Set A and the views
+// stay clickable while it is shown.
+TEST_F(EditorUi, AnErrorCoversNoToolbarControl) {
+    state_.error = "Could not save x.gltf: the folder /nowhere does not exist";
+    frames(2);
+    ImVec2 dismissMin, dismissMax, clearMin, clearMax, pictureMin, pictureMax;
+    ASSERT_TRUE(itemRect("error:dismiss", &dismissMin, &dismissMax));
+    ASSERT_TRUE(itemRect("Clear A", &clearMin, &clearMax));
+    ASSERT_TRUE(itemRect("viewport", &pictureMin, &pictureMax));
+    EXPECT_GT(dismissMin.y, clearMax.y);
+    EXPECT_GE(dismissMin.y, pictureMin.y);
+    click(centreOf("Set A"));
+    EXPECT_TRUE(state_.compareA.has_value()) << "Set A takes the click";
+}
+
 // File > New by its shortcut replaces the document before the viewport draws in that frame:
 // the new scene's environment is looked up first, never reported as not prepared.
 TEST_F(EditorUi, NewByItsShortcutDrawsTheNewScenesEnvironmentAtOnce) {
