@@ -46,6 +46,17 @@ void writeFileAtomic(const std::filesystem::path& path, const std::vector<uint8_
     std::string pattern = (directory / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
     const int fd = mkstemp(pattern.data());
     if (fd < 0) {
+        // The folder's absence is what a user can act on; the errno (ENOENT) is kept for callers.
+        const int code = errno;
+        std::error_code ignored;
+        if (code == ENOENT && !std::filesystem::is_directory(directory, ignored)) {
+            std::string message = "the folder '";
+            message += directory.string();
+            message += "' does not exist, so '";
+            message += path.string();
+            message += "' cannot be written";
+            throw std::system_error(code, std::generic_category(), message);
+        }
         throw systemError("cannot create a temporary file beside", path);
     }
     size_t written = 0;

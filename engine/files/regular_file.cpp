@@ -22,7 +22,7 @@ RegularFile::RegularFile(const std::filesystem::path& path, int flags, std::stri
     struct stat info {};
     if (::fstat(fd_, &info) != 0 || !S_ISREG(info.st_mode)) {
         ::close(fd_);
-        throw InputError(name_ + ": not a regular file");
+        throw InputError(name_ + (S_ISDIR(info.st_mode) ? ": a folder, not a file" : ": not a regular file"));
     }
     size_ = uint64_t(info.st_size);
 }

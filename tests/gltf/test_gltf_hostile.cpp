@@ -109,7 +109,7 @@ TEST_F(GltfHostile, MissingAndNonRegularFilesAreNamed) {
     EXPECT_ERROR(errorWithUri("nothing.bin"), "nothing.bin");
     fs::create_directory(model("folder.bin"));
     EXPECT_ERROR(errorWithUri("folder.bin"), "'folder.bin' is not a regular file");
-    EXPECT_ERROR(importError(model("folder.bin")), "not a regular file");
+    EXPECT_ERROR(importError(model("folder.bin")), "a folder, not a file");
     EXPECT_ERROR(importError(model("absent.gltf")), model("absent.gltf").string() + ": cannot open");
 }
 

@@ -159,10 +159,10 @@ TEST_F(HostileJson, NumbersBeyondADoubleAreInputErrors) {
 TEST_F(HostileJson, OnlyRegularFilesAreRead) {
     fs::create_directory(path("folder.json"));
     ASSERT_EQ(mkfifo(path("pipe.json").c_str(), 0600), 0);
-    for (const std::string& target : {path("folder.json").string(), path("pipe.json").string()}) {
-        EXPECT_ERROR(loadError(kSceneHead + R"("material": ")" + target + "\"}", true),
-                     target + ": not a regular file");
-    }
+    EXPECT_ERROR(loadError(kSceneHead + R"("material": ")" + path("folder.json").string() + "\"}", true),
+                 path("folder.json").string() + ": a folder, not a file");
+    EXPECT_ERROR(loadError(kSceneHead + R"("material": ")" + path("pipe.json").string() + "\"}", true),
+                 path("pipe.json").string() + ": not a regular file");
     std::vector<std::string> warnings;
     EXPECT_THROW(loadMaterialFile(path("pipe.json"), warnings), InputError);
 }

@@ -94,6 +94,22 @@ TEST_F(MaterialSave, AnUnwritableFolderFailsWithAMessageAndKeepsTheOldFile) {
     EXPECT_EQ(std::distance(fs::directory_iterator(path("locked")), fs::directory_iterator()), 1);
 }
 
+// A folder that is not there is what the message says, with the system's code kept (ENOENT)
+// for the editor's own wording.
+TEST_F(MaterialSave, AMissingFolderIsSaidToBeMissing) {
+    const fs::path file = path("gone") / "gold.json";
+    try {
+        saveMaterialFile(file, material(0.5f));
+        ADD_FAILURE() << "saving into a missing folder must fail";
+    } catch (const std::system_error& error) {
+        EXPECT_EQ(error.code().value(), ENOENT);
+        EXPECT_NE(std::string(error.what()).find("the folder '" + path("gone").string() + "' does not exist"),
+                  std::string::npos)
+            << error.what();
+    }
+    EXPECT_FALSE(fs::exists(path("gone")));
+}
+
 TEST_F(MaterialSave, AFullDiskFailsWithAMessageAndKeepsTheOldFile) {
     // RLIMIT_FSIZE makes writes past 4 KiB fail with EFBIG, as a full disk fails them with
     // ENOSPC, for root too. The child reports what it caught through a pipe.
