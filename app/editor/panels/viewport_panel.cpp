@@ -60,7 +60,10 @@ void drawToolbar(EditorState& state) {
     const std::string current = state.scene.meshFile.empty()
                                     ? std::string(meshKindName(state.scene.mesh))
                                     : std::filesystem::path(state.scene.meshFile).filename().string();
-    ImGui::SetNextItemWidth(px(110));
+    // Wide enough for a model's file name (up to a limit), so "BoxTextured.glb" is not cut.
+    const float nameWidth = ImGui::CalcTextSize(current.c_str()).x + ImGui::GetFrameHeight() +
+                            ImGui::GetStyle().FramePadding.x * 2.0f;
+    ImGui::SetNextItemWidth(std::clamp(nameWidth, px(110), px(240)));
     if (ImGui::BeginCombo("Mesh", current.c_str())) {
         for (MeshKind kind : {MeshKind::Sphere, MeshKind::Torus}) {
             if (ImGui::Selectable(std::string(meshKindName(kind)).c_str(),
