@@ -17,6 +17,15 @@
 
 namespace patina::editor {
 
+std::string recoverableSummary(const Scene& scene) {
+    const std::string lights = std::to_string(scene.lights.size()) + " light(s).";
+    if (scene.meshFile.empty()) {
+        return "Material \"" + scene.material.name + "\", " + lights;
+    }
+    return "Model " + std::filesystem::path(scene.meshFile).filename().string() + ", " +
+           std::to_string(scene.modelMaterials.size()) + " of its materials tuned, " + lights;
+}
+
 namespace {
 constexpr const char* kFormat = "patina-autosave";
 constexpr int kVersion = 1;

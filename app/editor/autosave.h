@@ -52,6 +52,10 @@ struct Recoverable {
     std::shared_ptr<FileLock> lock;       // held while offered: no other editor offers it too
 };
 
+// What the restore prompt says the work is: 'Material "gold", 4 light(s).', or for a model
+// 'Model engine.glb, 2 of its materials tuned, 4 light(s).'
+std::string recoverableSummary(const Scene& scene);
+
 struct Autosave {
     std::filesystem::path file;   // this editor's own; empty: no autosave (no config folder)
     std::shared_ptr<FileLock> lock;

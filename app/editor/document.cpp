@@ -25,9 +25,10 @@ int Document::environmentIndex() const {
 }
 
 std::string windowTitle(const Document& document) {
-    const std::string name = !document.scenePath.empty()      ? document.scenePath.filename().string()
-                             : !document.materialPath.empty() ? document.materialPath.filename().string()
-                                                              : document.scene.material.name;
+    const std::string name = !document.scenePath.empty()       ? document.scenePath.filename().string()
+                             : !document.scene.meshFile.empty() ? std::filesystem::path(document.scene.meshFile).filename().string()
+                             : !document.materialPath.empty()   ? document.materialPath.filename().string()
+                                                                : document.scene.material.name;
     return (document.dirty() ? "*" : "") + name + " - Patina";
 }
 

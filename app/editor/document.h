@@ -48,8 +48,8 @@ struct Document {
     int environmentIndex() const;
 };
 
-// The window title: the document's file name (the scene's, else the material's, else the
-// material's name), a '*' while anything is unsaved.
+// The window title: the document's file name (the scene's, else the model's shown, else the
+// material's, else the material's name), a '*' while anything is unsaved.
 std::string windowTitle(const Document& document);
 // "the material", "the lights and the camera", ...: what is unsaved, for the prompt.
 std::string unsavedParts(const Document& document);

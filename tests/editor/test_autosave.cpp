@@ -201,5 +201,16 @@ TEST_F(AutosaveTest, AnAutosaveFolderThatCannotBeMadeSaysAutosaveIsOff) {
     EXPECT_FALSE(updateAutosave(session, t0).has_value());
 }
 
+// The restore prompt names the work: a model's by its file and how many parts were tuned.
+TEST(RecoverableSummary, NamesTheMaterialOrTheModel) {
+    Scene scene = defaultScene();
+    scene.material.name = "gold";
+    EXPECT_EQ(recoverableSummary(scene), "Material \"gold\", " + std::to_string(scene.lights.size()) + " light(s).");
+    scene.meshFile = "/models/engine.glb";
+    scene.modelMaterials.push_back({0, scene.material});
+    EXPECT_EQ(recoverableSummary(scene),
+              "Model engine.glb, 1 of its materials tuned, " + std::to_string(scene.lights.size()) + " light(s).");
+}
+
 }  // namespace
 }  // namespace patina::editor

@@ -817,6 +817,7 @@ TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
     saveSceneAs(state);
     EXPECT_EQ(state.pathDialogText, "two-scene.json");
+    EXPECT_EQ(windowTitle(state), "*two.glb - Patina") << "named for the model shown, until saved";
     ASSERT_TRUE(saveScene(state, dir_ / "mine.json")) << state.error;
     saveSceneAs(state);
     EXPECT_EQ(fs::path(state.pathDialogText).filename(), "mine.json");

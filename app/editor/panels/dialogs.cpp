@@ -20,8 +20,7 @@ void drawRestorePrompt(EditorState& state) {
         } else {
             ImGui::Text("Patina did not close normally last time. Its working scene was kept%s%s.",
                         state.recoverable->savedAt.empty() ? "" : " at ", state.recoverable->savedAt.c_str());
-            ImGui::Text("Material \"%s\", %zu light(s).", state.recoverable->scene.material.name.c_str(),
-                        state.recoverable->scene.lights.size());
+            ImGui::TextUnformatted(recoverableSummary(state.recoverable->scene).c_str());
             if (ImGui::Button("Restore")) {
                 restoreRecoverable(state);
                 ImGui::CloseCurrentPopup();
