@@ -407,6 +407,20 @@ TEST_F(EditorUi, AnErrorCoversNoToolbarControl) {
     EXPECT_TRUE(state_.compareA.has_value()) << "Set A takes the click";
 }
 
+// The outer ring's value stays whole inside the plot, however long (a mirror's peak reads
+// "1.55e+03 /sr"; it used to run off the plot's right edge).
+TEST_F(EditorUi, TheLobesOuterValueIsNeverCut) {
+    state_.scene.material.roughness = 0.0f;
+    state_.scene.material.metallic = 1.0f;
+    frames(2);
+    ImVec2 valueMin, valueMax, plotMin, plotMax;
+    ASSERT_TRUE(itemRect("lobe:outer value", &valueMin, &valueMax));
+    ASSERT_TRUE(itemRect("lobe", &plotMin, &plotMax));
+    EXPECT_GT(valueMax.x - valueMin.x, 0.0f);
+    EXPECT_LE(valueMax.x, plotMax.x);
+    EXPECT_GE(valueMin.x, plotMin.x);
+}
+
 // File > New by its shortcut replaces the document before the viewport draws in that frame:
 // the new scene's environment is looked up first, never reported as not prepared.
 TEST_F(EditorUi, NewByItsShortcutDrawsTheNewScenesEnvironmentAtOnce) {

@@ -54,7 +54,11 @@ void drawPolar(const LobePlot& plot, const LobeSettings& lobe, ImVec2 size) {
     text(ImVec2(centre.x - ImGui::CalcTextSize("theta_out").x * 0.5f, centre.y + px(2)), "theta_out");
     char outer[64];
     std::snprintf(outer, sizeof outer, lobe.logScale ? "%.3g /sr (log, 3 decades)" : "%.3g /sr", double(plot.maxValue));
-    text(ImVec2(centre.x + radius * 0.71f + px(2), centre.y - radius * 0.71f - line), outer);
+    // By the outer ring's 45 degrees, moved left as far as a long value needs to stay inside.
+    const float outerX = std::min(centre.x + radius * 0.71f + px(2), origin.x + size.x - ImGui::CalcTextSize(outer).x - px(4));
+    const ImVec2 outerAt(outerX, centre.y - radius * 0.71f - line);
+    text(outerAt, outer);
+    recordArea("lobe:outer value", outerAt, ImVec2(outerAt.x + ImGui::CalcTextSize(outer).x, outerAt.y + line));
     const float inRadians = glm::radians(lobe.thetaInDegrees);
     draw->AddLine(centre, ImVec2(centre.x + radius * std::sin(inRadians), centre.y - radius * std::cos(inRadians)),
                   IM_COL32(255, 220, 90, 255), 1.5f);
