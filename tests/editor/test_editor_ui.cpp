@@ -1028,6 +1028,10 @@ TEST_F(EditorUi, SaveAsPresetShowsInTheBrowserAtOnce) {
     }
     frames(2);
     EXPECT_EQ(state_.pathDialogText, (state_.userPresetFolder / "warm clay.json").string()) << "written as typed";
+    ImVec2 folderMin, folderMax, listMin, listMax;
+    ASSERT_TRUE(itemRect("path:folder", &folderMin, &folderMax)) << "the folder listed is named";
+    ASSERT_TRUE(itemRect("path:up", &listMin, &listMax));
+    EXPECT_LT(folderMax.y, listMin.y + 1.0f) << "above its listing";
     click(centreOf("path:confirm"));
     ASSERT_TRUE(std::filesystem::exists(state_.userPresetFolder / "warm clay.json")) << state_.error;
     EXPECT_EQ(state_.scene.material.name, "warm clay");

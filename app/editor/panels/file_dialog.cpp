@@ -149,10 +149,16 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
         ImGui::SetKeyboardFocusHere(-1);
         cursorToEnd = true;
     }
-    // The folder's entries: a click on a folder enters it, on a file takes its path.
-    ImGui::BeginChild("listing", ImVec2(width, std::min(px(240), display.y * 0.4f)), true);
+    // The folder's entries, under its whole path (a relative one is the editor's working folder):
+    // a click on a folder enters it, on a file takes its path.
     std::error_code error;
     const std::filesystem::path folder = splitTyped(state.pathDialogText).first;
+    const std::string shown = std::filesystem::absolute(folder, error).lexically_normal().string();
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+    ImGui::TextDisabled("In %s", shown.c_str());
+    ImGui::PopTextWrapPos();
+    recordItem("path:folder", "The folder listed below, where a relative path is");
+    ImGui::BeginChild("listing", ImVec2(width, std::min(px(240), display.y * 0.4f)), true);
     if (ImGui::Selectable("../")) {
         state.pathDialogText = (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
     }

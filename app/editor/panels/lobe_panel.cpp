@@ -58,7 +58,8 @@ void drawPolar(const LobePlot& plot, const LobeSettings& lobe, ImVec2 size) {
     const float outerX = std::min(centre.x + radius * 0.71f + px(2), origin.x + size.x - ImGui::CalcTextSize(outer).x - px(4));
     const ImVec2 outerAt(outerX, centre.y - radius * 0.71f - line);
     text(outerAt, outer);
-    recordArea("lobe:outer value", outerAt, ImVec2(outerAt.x + ImGui::CalcTextSize(outer).x, outerAt.y + line));
+    recordArea("lobe:outer value", outerAt, ImVec2(outerAt.x + ImGui::CalcTextSize(outer).x, outerAt.y + line),
+               "The outer ring's value: the largest value plotted, in 1/sr");
     const float inRadians = glm::radians(lobe.thetaInDegrees);
     draw->AddLine(centre, ImVec2(centre.x + radius * std::sin(inRadians), centre.y - radius * std::cos(inRadians)),
                   IM_COL32(255, 220, 90, 255), 1.5f);
