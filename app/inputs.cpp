@@ -100,9 +100,19 @@ PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets) const {
         printWarnings(warnings);
         return prepared;
     }
-    // The rig was made for the scene's own shape: measured before it is replaced.
-    const bool ownFile = !scene.meshFile.empty();
-    const BoundingSphere before = shapeBounds(scene, ownFile ? assets.mesh(scene).get() : nullptr);
+    // The rig was made for the scene's own shape: measured before it is replaced. A model the
+    // scene names that cannot be read is being replaced anyway: its lights are taken as made
+    // for the unit sphere, and the warning says so.
+    std::shared_ptr<const Mesh> own;
+    if (!scene.meshFile.empty()) {
+        try {
+            own = assets.mesh(scene);
+        } catch (const InputError& error) {
+            warnings.push_back(std::string(error.what()) + "; --mesh replaces it, and the scene's lights are fitted "
+                                                           "as if made for the unit sphere");
+        }
+    }
+    const BoundingSphere before = shapeBounds(scene, own.get());
     replaceMesh(scene);
     PreparedScene prepared = prepareScene(scene, assets, warnings);
     printWarnings(warnings);

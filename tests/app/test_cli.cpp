@@ -192,6 +192,18 @@ TEST_F(Cli, AScreenshotIsASceneForRender) {
     EXPECT_NE(r.stderrText.find("again.png: this PNG holds no scene"), std::string::npos) << r.stderrText;
 }
 
+// --mesh replaces a scene's model that is gone: the render goes ahead and says so.
+TEST_F(Cli, MeshReplacesAModelTheSceneCannotRead) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    write("gone.json", R"({"format": "patina-scene", "version": 2, "mesh": "gone.glb"})");
+    const test::CliRun r = run("render --width 32 --height 24 --scene " + path("gone.json").string() + " --mesh " +
+                               path("two.glb").string() + " --out " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_NE(r.stderrText.find("gone.glb: cannot open"), std::string::npos) << r.stderrText;
+    EXPECT_NE(r.stderrText.find("--mesh replaces it"), std::string::npos) << r.stderrText;
+    EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
 TEST_F(Cli, AMeshThatIsNoMeshIsRefused) {
     const test::CliRun r = run("render --mesh ball.obj --out " + path("x.png").string());
     EXPECT_EQ(r.exitCode, 3);
