@@ -509,8 +509,6 @@ void blendOver(float alpha) {
 }
 }  // namespace
 
-// Single and specialised: each item in one pass of every light. Blended items test against
-// the opaque items' depth and write none, so each shows what lies behind it.
 const GlProgram& Renderer::Frame::programOf(const DrawPlan& item) const {
     if (shadingByMapSet.empty()) {
         return *shading;
@@ -519,6 +517,8 @@ const GlProgram& Renderer::Frame::programOf(const DrawPlan& item) const {
     return *shadingByMapSet.at(draw.maps ? mapSetOf(*draw.maps) : 0);
 }
 
+// Single and specialised: each item in one pass of every light. Blended items test against
+// the opaque items' depth and write none, so each shows what lies behind it.
 void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
     // Items keep the plan's order (the same depth ties as one program); the program changes
     // only where an item's map set does.
