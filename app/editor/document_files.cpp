@@ -99,9 +99,9 @@ bool finishModelLoad(EditorState& state, bool wait) {
 }
 
 namespace {
-// The model under way, no longer wanted. Its worker cannot be stopped midway: it ends on its
-// own, its result unused, while the editor goes on (a future waits for its worker when
-// destroyed, so the load is kept until then). False when none was under way.
+// The model under way, no longer wanted. Its worker is told to stop at the next image decoded
+// and ends on its own, its result unused, while the editor goes on (a future waits for its
+// worker when destroyed, so the load is kept until then). False when none was under way.
 bool dropModelLoad(EditorState& state) {
     if (!state.modelLoad) {
         return false;
