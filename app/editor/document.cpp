@@ -93,7 +93,7 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.lights = snapshot.lights;
     state.scene.display = snapshot.display;
     state.scene.modelMaterials = snapshot.modelMaterials;
-    if (!(state.snapshot().shape == snapshot.shape)) {   // the shape it had, as it was framed
+    if (!(state.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
         state.scene.mesh = snapshot.shape.kind;
         state.scene.meshFile = snapshot.shape.file;
         state.mesh = snapshot.shape.mesh;

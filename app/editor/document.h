@@ -38,9 +38,9 @@ struct Document {
     bool materialChanged() const { return scene.material != savedMaterial; }
     bool sceneChanged() const;
     bool dirty() const { return materialChanged() || sceneChanged(); }
+    ShownShape shownShape() const { return {scene.mesh, scene.meshFile, mesh, model, scene.camera}; }
     EditSnapshot snapshot() const {
-        return {scene.material, scene.lights, scene.display, scene.modelMaterials,
-                {scene.mesh, scene.meshFile, mesh, model, scene.camera}};
+        return {scene.material, scene.lights, scene.display, scene.modelMaterials, shownShape()};
     }
     // Whether `index` is one of the scene's lights.
     bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
