@@ -30,6 +30,14 @@ std::string describe(const PbrCheck& check, const PbrRanges& ranges) {
     return text;
 }
 
+// One line for a material judged by one colour; whether it is in range.
+bool reportColour(const std::string& where, glm::vec3 baseColor, float metallic, const PbrRanges& ranges) {
+    const PbrCheck check = checkBaseColor(baseColor, metallic, ranges);
+    std::cout << where << ": " << (check.verdict == PbrVerdict::Ok ? "ok: " : "out of range: ")
+              << describe(check, ranges) << "\n";
+    return check.verdict == PbrVerdict::Ok;
+}
+
 std::string percent(size_t part, size_t whole) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f%%", 100.0 * double(part) / double(whole));
@@ -42,10 +50,7 @@ bool reportModelMaterial(const std::string& where, const Model& model, const Mod
                          const PbrRanges& ranges) {
     const PbrTally tally = checkBaseColorTexels(model, material, ranges);
     if (tally.texels == 0) {
-        const PbrCheck check = checkBaseColor(material.factors.baseColor, material.factors.metallic, ranges);
-        std::cout << where << ": " << (check.verdict == PbrVerdict::Ok ? "ok: " : "out of range: ")
-                  << describe(check, ranges) << "\n";
-        return check.verdict == PbrVerdict::Ok;
+        return reportColour(where, material.factors.baseColor, material.factors.metallic, ranges);
     }
     std::cout << where << ": " << (tally.flagged() == 0 ? "ok: " : "out of range: ") << "base colour map, "
               << percent(tally.flagged(), tally.texels) << " of " << tally.texels << " texels flagged (dielectric below "
@@ -60,10 +65,7 @@ std::pair<int, int> validateFile(const std::string& path, const PbrRanges& range
     if (gltfExtension(path).empty()) {
         std::vector<std::string> warnings;
         const Material material = loadMaterialFile(path, warnings);
-        const PbrCheck check = checkBaseColor(material.baseColor, material.metallic, ranges);
-        std::cout << path << ": " << (check.verdict == PbrVerdict::Ok ? "ok: " : "out of range: ")
-                  << describe(check, ranges) << "\n";
-        return {check.verdict == PbrVerdict::Ok ? 0 : 1, 1};
+        return {reportColour(path, material.baseColor, material.metallic, ranges) ? 0 : 1, 1};
     }
     const std::shared_ptr<const Model> model = assets.drawnModel(path);
     int bad = 0;

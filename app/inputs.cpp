@@ -1,7 +1,5 @@
 #include "inputs.h"
 
-#include <algorithm>
-#include <cctype>
 #include <iostream>
 
 #include "shading/brdf_models.h"
@@ -46,25 +44,12 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
 }
 
-namespace {
-// A scene file, or the scene a Patina screenshot (.png) holds.
-Scene loadScene(const std::string& path, std::vector<std::string>& warnings) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (extension != ".png") {
-        return loadSceneFile(path, warnings);
-    }
-    std::optional<Scene> scene = sceneFromPng(path, warnings);
-    if (!scene) {
-        throw InputError(path + ": this PNG holds no scene (only Patina's screenshots do)");
-    }
-    return std::move(*scene);
-}
-}  // namespace
-
 Scene SceneInputs::load() const {
     std::vector<std::string> warnings;
-    Scene scene = scenePath.empty() ? defaultScene() : loadScene(scenePath, warnings);
+    // The embedded scene, a scene file, or the scene a Patina screenshot (.png) holds.
+    Scene scene = scenePath.empty()                       ? defaultScene()
+                  : lowerExtension(scenePath) == ".png" ? screenshotScene(scenePath, warnings)
+                                                          : loadSceneFile(scenePath, warnings);
     if (!materialPath.empty()) {
         scene.material = loadMaterialFile(materialPath, warnings);
     }
@@ -136,10 +121,7 @@ void putMaterialOnParts(Scene& scene, const Model* model, const Material& materi
 
 void SceneInputs::putMaterialOnParts(Scene& scene, const Model* model) const {
     if (materialPath.empty()) {
-        if (!part.empty()) {
-            throw InputError("--part names a part of a glTF model to put --material on, and needs --material");
-        }
-        return;
+        return;   // --part without --material is refused as a usage mistake (addOptions)
     }
     const Material material = scene.material;   // setPartMaterials adds to `scene`
     cli::putMaterialOnParts(scene, model, material, part);

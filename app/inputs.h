@@ -35,7 +35,8 @@ struct SceneInputs {
     PreparedScene prepare(Scene& scene, AssetCache& assets) const;
     // --material over `model` (the scene's, null for a built-in mesh): its factors on every
     // part, or on --part's, as the scene's edits of them (setPartMaterials). InputError for a
-    // --part the model lacks, or given without --material or without a model.
+    // --part the model lacks, or given without a model (without --material the command line
+    // refuses it).
     void putMaterialOnParts(Scene& scene, const Model* model) const;
 };
 

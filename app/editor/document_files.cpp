@@ -175,10 +175,7 @@ DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& p
     }
     DocumentFile file;
     if (path.extension() == ".png") {
-        file.scene = sceneFromPng(path, file.warnings);
-        if (!file.scene) {
-            throw InputError(path.string() + ": this PNG holds no Patina scene");
-        }
+        file.scene = screenshotScene(path, file.warnings);
         file.comparison = comparisonFromPng(path);
     } else {
         Json json;

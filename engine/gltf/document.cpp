@@ -6,6 +6,7 @@
 #include "gltf/files.h"
 #include "gltf/glb.h"
 #include "gltf/json_check.h"
+#include "io/json_reader.h"
 #include "files/input_error.h"
 
 namespace patina::gltf {
@@ -41,8 +42,7 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
         return loader.LoadBinaryFromMemory(&model, &error, &warning, clean.data(), unsigned(clean.size()), baseDir);
     }
     const std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    const size_t first = json.find_first_not_of(" \t\r\n");
-    if (json.substr(0, 3) != "\xEF\xBB\xBF" && (first == std::string_view::npos || json[first] != '{')) {
+    if (!opensLikeJson(json, "{")) {
         throw InputError(source + ": neither a glTF binary (a .glb starts with \"glTF\") nor glTF JSON (a .gltf is "
                                   "a JSON object)");
     }

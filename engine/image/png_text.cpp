@@ -264,4 +264,12 @@ std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
     return sceneFromPngBytes(file.readAll(), path.string(), warnings);
 }
 
+Scene screenshotScene(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    std::optional<Scene> scene = sceneFromPng(path, warnings);
+    if (!scene) {
+        throw InputError(path.string() + ": this PNG holds no scene (only Patina's screenshots do)");
+    }
+    return std::move(*scene);
+}
+
 }  // namespace patina

@@ -37,5 +37,7 @@ constexpr uint64_t kMaxPngBytes = uint64_t(512) << 20;
 // sceneFromPngBytes of a regular file of at most kMaxPngBytes, named by its path.
 std::optional<Scene> sceneFromPng(const std::filesystem::path& path,
                                   std::vector<std::string>& warnings);
+// The same for a PNG opened as a scene: InputError when it holds none.
+Scene screenshotScene(const std::filesystem::path& path, std::vector<std::string>& warnings);
 
 }  // namespace patina

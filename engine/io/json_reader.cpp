@@ -80,6 +80,12 @@ Json parseJsonText(const std::string& text, const std::string& source) {
     }
 }
 
+bool opensLikeJson(std::string_view text, std::string_view openers) {
+    const size_t first = text.find_first_not_of(" \t\r\n");
+    return text.substr(0, 3) == "\xEF\xBB\xBF" ||
+           (first != std::string_view::npos && openers.find(text[first]) != std::string_view::npos);
+}
+
 Json readJsonFile(const std::filesystem::path& path) {
     const RegularFile file(path, 0, path.string());
     file.requireAtMost(kMaxJsonFileBytes, "Patina's JSON files");
@@ -87,10 +93,9 @@ Json readJsonFile(const std::filesystem::path& path) {
     // Another kind of file (a model, an image, an .obj) is named as such, not as a JSON syntax
     // error at its first byte.
     const std::string text(bytes.begin(), bytes.end());
-    const size_t first = text.find_first_not_of(" \t\r\n");
-    const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
-    if (!bom && (first == std::string::npos || (text[first] != '{' && text[first] != '['))) {
-        throw InputError(path.string() + ": not a JSON file" + (first == std::string::npos ? " (it is empty)" : "") +
+    if (!opensLikeJson(text, "{[")) {
+        const bool empty = text.find_first_not_of(" \t\r\n") == std::string::npos;
+        throw InputError(path.string() + ": not a JSON file" + (empty ? " (it is empty)" : "") +
                          ": Patina's materials and scenes are JSON");
     }
     return parseJsonText(text, path.string());

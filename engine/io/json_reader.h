@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,6 +20,10 @@ constexpr int kMaxJsonNesting = 64;
 // Parses JSON text; a syntax error becomes an InputError "SOURCE:LINE:COLUMN: ...", text over
 // the limits an InputError "SOURCE: ...".
 Json parseJsonText(const std::string& text, const std::string& source);
+// Whether `text` opens as JSON with one of `openers` ("{", "{["): its first character past
+// white space is one of them, or it starts with a UTF-8 byte order mark (the parser's to judge).
+// False for a file of another kind (a model, an image, an .obj) and for an empty one.
+bool opensLikeJson(std::string_view text, std::string_view openers);
 // Reads and parses a regular file; a missing, unreadable or too large one is an InputError too.
 Json readJsonFile(const std::filesystem::path& path);
 
