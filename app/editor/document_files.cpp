@@ -52,8 +52,7 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
         d.scene.meshFile = file;
         d.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
         d.model = model;
-        frameMesh(d);
-        moveLightRig(d.scene.lights, before, meshBounds(d));
+        fitSceneTo(d.scene, before, meshBounds(d));   // as `render --mesh` fits it
         if (another) {
             d.scene.modelMaterials.clear();
         }
