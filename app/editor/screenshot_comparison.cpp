@@ -17,7 +17,12 @@ const char* viewName(CompareView view) {
 }  // namespace
 
 std::string comparisonLabel(char side, const Material& material) {
-    return std::string(1, side) + (material.name.empty() ? "" : ": " + material.name);
+    // Appended, not `string + (cond ? "" : ": " + name)`: GCC 12 warns falsely (-Wrestrict) on that.
+    std::string label(1, side);
+    if (!material.name.empty()) {
+        label += ": " + material.name;
+    }
+    return label;
 }
 
 std::string comparisonText(const EditorState& state) {

@@ -628,7 +628,7 @@ HdrImage decodeRadianceHdr(const std::vector<uint8_t>& bytes, const std::string&
     const std::unique_ptr<float, void (*)(void*)> pixels(
         stbi_loadf_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 3), stbi_image_free);
     if (!pixels) {
-        throw InputError(name + ": cannot be decoded: " + stbi_failure_reason());
+        throw InputError(name + ": cannot be decoded: " + decoderReason(stbi_failure_reason()));
     }
     if (width != layout.width || height != layout.height) {
         throw InputError(name + ": stb_image read a different size from the header");

@@ -11,6 +11,7 @@
 #include <stb_image.h>
 
 #include "common/parallel_for.h"
+#include "files/input_error.h"
 #include "gltf/accessor.h"
 
 namespace patina::gltf {
@@ -43,7 +44,7 @@ public:
         }
         int width = 0, height = 0, channels = 0;
         if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels)) {
-            return std::string("cannot be read: ") + stbi_failure_reason();
+            return std::string("cannot be read: ") + decoderReason(stbi_failure_reason());
         }
         if (width > kGltfMaxImageSide || height > kGltfMaxImageSide) {
             return "is " + std::to_string(width) + " x " + std::to_string(height) + " pixels, over Patina's limit of " +
@@ -71,7 +72,7 @@ std::string decode(std::span<const uint8_t> bytes, uint64_t size, ModelImage& ou
         stbi_load_from_memory(bytes.data(), int(bytes.size()), &out.width, &out.height, &channels, 4),
         stbi_image_free);
     if (!pixels) {
-        return std::string("cannot be decoded: ") + stbi_failure_reason();
+        return std::string("cannot be decoded: ") + decoderReason(stbi_failure_reason());
     }
     if (uint64_t(out.width) * uint64_t(out.height) * 4 != size) {
         return "decodes to another size than its header gives";

@@ -14,6 +14,8 @@
 
 #include <stb_image.h>
 
+#include "files/input_error.h"
+
 namespace patina {
 
 LdrImage decodePng(const std::vector<uint8_t>& bytes) {
@@ -21,7 +23,7 @@ LdrImage decodePng(const std::vector<uint8_t>& bytes) {
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height,
                                             &channels, 4);
     if (!pixels) {
-        throw std::runtime_error(std::string("not a readable PNG: ") + stbi_failure_reason());
+        throw std::runtime_error(std::string("not a readable PNG: ") + decoderReason(stbi_failure_reason()));
     }
     LdrImage image{width, height, std::vector<uint8_t>(pixels, pixels + size_t(width) * height * 4)};
     stbi_image_free(pixels);

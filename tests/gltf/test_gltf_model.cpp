@@ -4,6 +4,7 @@
 // assimp-testmodels are in test_gltf_assets.cpp.
 #include <array>
 #include <cmath>
+#include <thread>
 
 #include <glm/gtc/type_ptr.hpp>
 #include <gtest/gtest.h>
@@ -407,6 +408,44 @@ std::vector<uint8_t> pngHeader(uint32_t width, uint32_t height) {
     }
     bytes.insert(bytes.end(), {8, 6, 0, 0, 0, 0, 0, 0, 0});   // 8-bit RGBA, then the CRC (unchecked)
     return bytes;
+}
+
+// stb_image fails on a deflate block of the reserved type 3 without setting its per-thread reason,
+// so a fresh thread's first such failure has none: decodePng on one, and the glTF decoding workers
+// (five images, so that some reach them), still say why.
+TEST_F(GltfModel, AnImageStbImageFailsWithoutAReasonStillMakesANote) {
+    std::vector<uint8_t> png = pngHeader(1, 1);
+    // IDAT: a zlib header, then one final block of type 3 (bits 1, 11). The CRC is not checked.
+    png.insert(png.end(), {0, 0, 0, 3, 'I', 'D', 'A', 'T', 0x78, 0x01, 0x07, 0, 0, 0, 0});
+    png.insert(png.end(), {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82});
+    std::string message;
+    std::thread([&] {
+        try {
+            decodePng(png);
+        } catch (const std::runtime_error& error) {
+            message = error.what();
+        }
+    }).join();
+    EXPECT_EQ(message, "not a readable PNG: corrupt data");
+
+    GltfBuilder model = texturedCube({{"uri", "type3-0.png"}});
+    Json& material = model.json["materials"][0];
+    const char* slots[] = {"normalTexture", "occlusionTexture", "emissiveTexture", "metallicRoughnessTexture"};
+    for (int i = 1; i <= 4; ++i) {
+        model.add("images", {{"uri", "type3-" + std::to_string(i) + ".png"}});
+        model.add("textures", {{"source", i}});
+        Json& slot = i < 4 ? material[slots[i - 1]] : material["pbrMetallicRoughness"][slots[i - 1]];
+        slot = {{"index", i}};
+    }
+    for (int i = 0; i <= 4; ++i) {
+        GltfBuilder::writeBytes(path("type3-" + std::to_string(i) + ".png"), png);
+    }
+    const Model imported = load(model);
+    ASSERT_EQ(imported.notes.size(), 5u) << allNotes(imported);
+    for (const std::string& note : imported.notes) {
+        EXPECT_ERROR(note, ".png): cannot be decoded: ");
+    }
+    EXPECT_TRUE(imported.images.empty());
 }
 
 TEST_F(GltfModel, ImagesOverTheLimitsAreLeftOutWithANote) {
