@@ -13,6 +13,7 @@
 #include "image/display_image.h"
 #include "image/image.h"
 #include "inputs.h"
+#include "reference/channel_image.h"
 #include "reference/reference_render.h"
 
 namespace patina::cli {
@@ -50,6 +51,39 @@ RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int 
     }
     return {image.value, displayImage(image.value, scene.display, image.backdrop)};
 }
+
+// --channel: the GPU's channel render, or with --reference the CPU twin's (reference/
+// channel_image.h); the PNG as data, the PFM untouched.
+void renderChannel(const SceneInputs& inputs, const std::string& name, bool srgb, int width, int height,
+                   bool reference, const std::string& out, const std::string& hdr) {
+    const ChannelRequest request = *channelFromName(name);   // the option's check passed it
+    std::optional<HeadlessContext> context;
+    if (!reference) {
+        context.emplace();
+    }
+    Scene scene = inputs.load();
+    AssetCache assets;
+    const PreparedScene prepared = inputs.prepare(scene, assets);
+    inputs.putMaterialOnParts(scene, prepared.model.get());
+    channelLights(scene.lights, request);   // a light the scene lacks: said before anything is drawn
+    HdrImage image;
+    if (reference) {
+        image = channelImage(prepared, rasterizeSurfaces(prepared, width, height), request);
+    } else {
+        Renderer renderer;
+        RenderSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.channel = request;
+        settings.maxTargetBytes = kOneOffTargetBytes;
+        image = renderer.render(prepared, settings).hdr;
+    }
+    const std::vector<uint8_t> png = encodePng(channelDisplayImage(image, request.channel, srgb));
+    if (!hdr.empty()) {
+        writeOutput(hdr, encodePfm(image));
+    }
+    writeOutput(out, png);
+}
 }  // namespace
 
 Command addRenderCommand(CLI::App& app) {
@@ -61,6 +95,8 @@ Command addRenderCommand(CLI::App& app) {
         int referenceSamples = 256;
         std::string environmentMethod = "split-sum";
         int environmentSamples = 16;
+        std::string channel;
+        bool channelSrgb = false;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
@@ -86,7 +122,22 @@ Command addRenderCommand(CLI::App& app) {
     command->add_option("--reference-samples", options->referenceSamples,
                         "--reference: estimator iterations per pixel (3 directions each)")
         ->check(CLI::Range(1, 1 << 20));
+    command->add_option("--channel", options->channel,
+                        "A debug channel instead of the radiance, as data (no exposure or tone map; docs/INSPECTOR.md): " +
+                            channelNameList())
+        ->check(CLI::Validator(
+            [](std::string& name) {
+                return channelFromName(name) ? std::string() : "unknown channel \"" + name + "\" (known: " + channelNameList() + ")";
+            },
+            "CHANNEL"));
+    command->add_flag("--channel-srgb", options->channelSrgb,
+                      "--channel: the PNG sRGB-encoded, for colour channels (default: the values themselves)");
     return [options] {
+        if (!options->channel.empty()) {
+            renderChannel(options->inputs, options->channel, options->channelSrgb, options->width, options->height,
+                          options->reference, options->out, options->hdr);
+            return;
+        }
         // The context first when the GPU renders: an environment the scene names is then
         // prefiltered on it too.
         std::optional<HeadlessContext> context;

@@ -288,6 +288,7 @@ private:
     bool maps = false;                    // an item has texture maps: the programs read them
     FramePlan plan;
     std::vector<shader::PackedLight> packed;
+    ChannelLights channelLights;   // with a channel: its lights in `packed`
     const GlImage* linear = nullptr;
     const GlProgram* displayPass = nullptr;
     const GlProgram* shading = nullptr;
@@ -310,7 +311,7 @@ Renderer::Frame::Frame(State& state, const PreparedScene& prepared, const Render
     linear = plan.keepLinear ? &t.linear : nullptr;
     choosePrograms();
     exposureTonemap = tonemapShaderIndex(scene.display.tonemap);
-    background = scene.display.background;
+    background = settings.channel.channel < 0 ? scene.display.background : glm::vec3(0.0f);
 }
 
 // The environment shown, the frame plan, and the enabled lights uploaded.
@@ -318,7 +319,8 @@ void Renderer::Frame::planDraw() {
     environmentLight = enabledEnvironment(scene);
     environmentMap = environmentLight ? environmentShown(prepared.environment, environmentLight->source) : nullptr;
     environment = environmentLight != nullptr;
-    environmentBackground = environment && scene.display.backgroundFromEnvironment;
+    // A channel's background is no surface: 0, not a picture.
+    environmentBackground = environment && scene.display.backgroundFromEnvironment && settings.channel.channel < 0;
     RenderSettings planned = settings;
     planned.cropToMesh = settings.cropToMesh && !environmentBackground;   // nothing left to fill around the mesh
     std::vector<DrawFacts> facts;
@@ -334,6 +336,9 @@ void Renderer::Frame::planDraw() {
     const size_t flatSlots = maps ? s.flatLightSlots - std::min<size_t>(s.flatLightSlots, 2) : s.flatLightSlots;
     plan = planFrame(planned, scene.camera, facts, s.maxSamples, flatSlots);
     packed = packEnabledLights(scene.lights);
+    if (settings.channel.channel >= 0) {
+        channelLights = patina::channelLights(scene.lights, settings.channel);
+    }
     s.lights.upload(packed);
     s.lights.bind();
 }
@@ -351,6 +356,7 @@ void Renderer::Frame::choosePrograms() {
     s.shading.setEnvironmentShading(environmentShading);
     ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
     singlePass.environment = environment;
+    singlePass.channel = settings.channel.channel;
     // The specialised shader leaves out diffuse only where no item has any.
     // A metallic-roughness map can lower metallic below its factor's 1 (a base colour map can
     // only darken a black factor's nothing).
@@ -403,6 +409,10 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
     glUniform1f(program.uniform("uSampleStamp"), stamp);
     glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
     glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
+    if (settings.channel.channel >= 0) {
+        glUniform1i(program.uniform("uChannelLight"), channelLights.asked);
+        glUniform1i(program.uniform("uKeyLight"), channelLights.key);
+    }
     if (plan.displayInPass) {
         glUniform1f(program.uniform("uExposure"), scene.display.exposure);
         glUniform1i(program.uniform("uTonemap"), exposureTonemap);
@@ -703,7 +713,16 @@ unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& set
     }
     const FramebufferKept kept;
     RenderTargets& t = *target.images_;
-    Frame frame(s, prepared, settings, t);
+    // A channel is drawn by the single path, which has its code (PATINA_CHANNEL), one sample a
+    // pixel: data is the value at the pixel's centre, not an average across an edge.
+    const bool channel = settings.channel.channel >= 0;
+    RenderSettings channelSettings;
+    if (channel) {
+        channelSettings = settings;
+        channelSettings.path = RenderPath::Single;
+        channelSettings.samples = 1;
+    }
+    Frame frame(s, prepared, channel ? channelSettings : settings, t);
     // One pair of queries in flight: a draw while the last pair is unread goes untimed.
     lastGpuMilliseconds();
     const bool timed = !s.timerPending;

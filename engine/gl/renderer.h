@@ -9,6 +9,7 @@
 #include "gl/shader_specialisation.h"
 #include "image/image.h"
 #include "geometry/mesh.h"
+#include "scene/channel.h"
 #include "scene/prepared_scene.h"
 #include "shading/shading.h"
 
@@ -75,6 +76,10 @@ struct RenderSettings {
     // How the scene's environment is shaded: the split sum, or a variant docs/LIGHTING.md
     // measures against it.
     EnvironmentShading environment;
+    // The inspector: a debug channel (scene/channel.h) written instead of the radiance, by the
+    // single path whatever `path` says, the environment by the split sum. The display image then
+    // holds the channel clamped to [0, 1], with no exposure or tone map.
+    ChannelRequest channel;
 };
 
 struct RenderOutput {

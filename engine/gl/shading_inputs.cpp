@@ -16,6 +16,8 @@ extern const char* const brdf_glsl;
 extern const char* const environment_glsl;
 extern const char* const ibl_glsl;
 extern const char* const ibl_model_glsl;
+extern const char* const channels_glsl;
+extern const char* const channel_model_glsl;
 extern const char* const lights_glsl;
 extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
@@ -36,12 +38,19 @@ constexpr size_t kLightArraySize = sizeof(shader::PackedLight) * shader::MAX_LIG
 constexpr size_t kLightBlockSize = kLightArraySize + 2 * 16;
 }  // namespace
 
-std::vector<const char*> shadingFragmentParts() {
-    return {shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
-            shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::energy_texel_glsl,
-            shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
-            shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::texture_glsl,
-            shader_sources::surface_maps_glsl, shader_sources::shade_frag};
+std::vector<const char*> shadingFragmentParts(bool channels) {
+    std::vector<const char*> parts{
+        shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
+        shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::energy_texel_glsl,
+        shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
+        shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::texture_glsl,
+        shader_sources::surface_maps_glsl, shader_sources::shade_frag};
+    // The channels' parts only where asked for: every other program would compile them for nothing.
+    if (channels) {
+        parts.insert(parts.begin() + 1, shader_sources::channels_glsl);
+        parts.insert(parts.end() - 4, shader_sources::channel_model_glsl);   // after ibl_model
+    }
+    return parts;
 }
 
 LightBuffer::LightBuffer() {
@@ -107,7 +116,8 @@ void setMaterialUniforms(const GlProgram& program, const MaterialParameters& mat
 
 DrawUniforms::DrawUniforms(const GlProgram& program, ModelTextures* textures)
     : model_(program.uniform("uModel")), normalMatrix_(program.uniform("uNormalMatrix")),
-      reverseBackNormals_(program.uniform("uReverseBackNormals")), material_(program), textures_(textures) {
+      reverseBackNormals_(program.uniform("uReverseBackNormals")), channelAlpha_(program.uniform("uChannelAlpha")),
+      material_(program), textures_(textures) {
     if (textures_) {
         maps_.emplace(program, ShadingPrograms::kFirstMapUnit);
     }
@@ -117,6 +127,9 @@ void DrawUniforms::set(const SceneDraw& draw) const {
     glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(draw.transform));
     glUniformMatrix3fv(normalMatrix_, 1, GL_FALSE, glm::value_ptr(draw.normalTransform));
     glUniform1i(reverseBackNormals_, draw.reverseBackNormals ? 1 : 0);
+    if (channelAlpha_ >= 0) {   // only a channel program without maps has it
+        glUniform1f(channelAlpha_, draw.alpha);
+    }
     material_.set(draw.material);
     if (maps_) {
         maps_->set(draw, *textures_);

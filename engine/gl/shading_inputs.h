@@ -16,8 +16,8 @@ namespace patina {
 
 // Embedded GLSL parts of every program that shades: the terms, the lights, the energy table,
 // the model dispatch (its PATINA_* defines select the model), image-based lighting, the display
-// transform and shade.frag.
-std::vector<const char*> shadingFragmentParts();
+// transform and shade.frag; with `channels`, the inspector's channels (PATINA_CHANNEL) too.
+std::vector<const char*> shadingFragmentParts(bool channels = false);
 
 // The LightBlock uniform buffer of shaders/stages/shade.frag: MAX_LIGHTS packed lights and a count.
 class LightBuffer {
@@ -62,7 +62,7 @@ public:
     void set(const SceneDraw& draw) const;   // its program in use
 
 private:
-    GLint model_, normalMatrix_, reverseBackNormals_;
+    GLint model_, normalMatrix_, reverseBackNormals_, channelAlpha_;
     MaterialUniforms material_;
     ModelTextures* textures_;
     std::optional<SurfaceMapUniforms> maps_;

@@ -58,7 +58,9 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
             defines.push_back("PATINA_ENVIRONMENT_STOCHASTIC " + std::to_string(environmentShading_.samples));
         }
     }
-    auto program = std::make_unique<GlProgram>(vertexParts, shadingFragmentParts(), defines);
+    const bool channels = std::any_of(defines.begin(), defines.end(),
+                                      [](const std::string& define) { return define.starts_with("PATINA_CHANNEL "); });
+    auto program = std::make_unique<GlProgram>(vertexParts, shadingFragmentParts(channels), defines);
     LightBuffer::attach(*program);
     return program;
 }
@@ -120,6 +122,9 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
     }
     if (environment) {
         defines.push_back("PATINA_ENVIRONMENT");
+    }
+    if (channel >= 0) {
+        defines.push_back("PATINA_CHANNEL " + std::to_string(channel));
     }
     for (const auto& [present, define] : {std::pair{points, "PATINA_NO_POINT_LIGHTS"},
                                           std::pair{directionals, "PATINA_NO_DIRECTIONAL_LIGHTS"},

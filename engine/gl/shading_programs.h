@@ -27,6 +27,9 @@ public:
         // The scene's environment after the lights; the renderer sets it (singlePassFor sees
         // only packed lights, which hold no environment).
         bool environment = false;
+        // An inspector channel (shaders/shared/channels.glsl) written instead of the radiance;
+        // -1: the radiance.
+        int channel = -1;
         std::vector<std::string> defines() const;
         auto operator<=>(const SinglePass&) const = default;
     };

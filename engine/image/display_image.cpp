@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "environment/equirect.h"
+#include "scene/channel.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -20,6 +21,19 @@ LdrImage displayImage(const HdrImage& linear, const DisplaySettings& display, st
         for (int c = 0; c < 3; ++c) {
             image.rgba[pixel * 4 + size_t(c)] = uint8_t(std::lround(std::clamp(shown[c], 0.0f, 1.0f) * 255.0f));
         }
+    }
+    return image;
+}
+
+LdrImage channelDisplayImage(const HdrImage& channel, int channelId, bool srgb) {
+    LdrImage image{channel.width, channel.height,
+                   std::vector<uint8_t>(size_t(channel.width) * size_t(channel.height) * 4, 255)};
+    const bool signedValues = channelIsSigned(channelId);
+    for (size_t i = 0; i < channel.rgb.size(); ++i) {
+        float value = signedValues ? channel.rgb[i] * 0.5f + 0.5f : channel.rgb[i];
+        value = value >= 0.0f ? std::min(value, 1.0f) : 0.0f;   // NaN fails the test: 0
+        value = srgb ? shader::srgbEncode(value) : value;
+        image.rgba[i / 3 * 4 + i % 3] = uint8_t(std::lround(value * 255.0f));
     }
     return image;
 }

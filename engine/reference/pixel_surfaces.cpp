@@ -208,6 +208,8 @@ void mapSamples(PixelSurfaces& surfaces, const std::vector<SceneDraw>& draws, co
     surfaces.sampleMaterials.resize(count);
     surfaces.occlusion.assign(count, 1.0f);
     surfaces.emission.assign(count, glm::vec3(0.0f));
+    surfaces.alpha.assign(count, 1.0f);
+    surfaces.coordinates.assign(count, MapCoordinates{});
     for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
         const int32_t i = surfaces.sampleOfPixel[pixel];
         if (i < 0) {
@@ -220,6 +222,8 @@ void mapSamples(PixelSurfaces& surfaces, const std::vector<SceneDraw>& draws, co
         surfaces.sampleMaterials[size_t(i)] = mapped.material;
         surfaces.occlusion[size_t(i)] = mapped.occlusion;
         surfaces.emission[size_t(i)] = mapped.emission;
+        surfaces.alpha[size_t(i)] = mapped.alpha;
+        surfaces.coordinates[size_t(i)] = hit.maps;
         sample.normal = mapped.normal;
     }
 }
@@ -250,6 +254,7 @@ PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camer
             const Hit& hit = raster.hits[pixel];
             surfaces.samples.push_back({hit.position, hit.normal, shader::safeNormalize(camera.position - hit.position)});
             surfaces.drawOfSample.push_back(hit.draw);
+            surfaces.geometryNormals.push_back(shader::safeNormalize(hit.normal));
         }
     }
     if (textures) {

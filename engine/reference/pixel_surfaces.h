@@ -5,6 +5,7 @@
 #include <glm/vec3.hpp>
 
 #include "geometry/mesh.h"
+#include "reference/surface_maps.h"
 #include "scene/prepared_scene.h"
 #include "scene/probe.h"
 #include "scene/scene.h"
@@ -31,6 +32,11 @@ struct PixelSurfaces {
     std::vector<MaterialParameters> sampleMaterials;
     std::vector<float> occlusion;
     std::vector<glm::vec3> emission;
+    std::vector<float> alpha;                     // the maps' alpha (the inspector's channel)
+    std::vector<MapCoordinates> coordinates;      // UVs and tangent, as the maps read them
+    // Per sample, always: the unit normal before any normal map (reversed on a back face where
+    // the material says so), the inspector's geometry normal.
+    std::vector<glm::vec3> geometryNormals;
 };
 
 // `draws` seen by `camera` at width x height, with the renderer's rules: triangles clipped at

@@ -64,6 +64,7 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
     surface.material.baseColor = mapped.baseColor;
     surface.material.roughness = mapped.roughness;
     surface.material.metallic = mapped.metallic;
+    surface.alpha = mapped.alpha;
     if (maps->normal.present()) {
         const glm::vec4 n = texel(maps->normal, false, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
         surface.normal =

@@ -50,6 +50,7 @@ bool keptByMask(const SceneDraw& draw, const MapTextures& textures, const MapCoo
 // What the maps make of one point of a textured item (SceneDraw::maps).
 struct MappedSurface {
     MaterialParameters material;   // the factors times the maps (3.9.2)
+    float alpha = 1.0f;            // the base colour factor's alpha times its map's
     glm::vec3 normal;              // the normal map's, about the unit shading normal given (3.9.3)
     float occlusion = 1.0f;        // on the environment and hemisphere lights
     glm::vec3 emission{0.0f};      // linear radiance emitted

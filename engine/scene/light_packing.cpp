@@ -48,16 +48,24 @@ bool hasKarisAttenuation(const shader::PackedLight& light) {
            light.attenuation == shader::KARIS_ATTENUATION;
 }
 
-std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights) {
-    std::vector<shader::PackedLight> packed;
+std::vector<size_t> enabledLightOrder(const std::vector<Light>& lights) {
+    std::vector<size_t> order;
     // Area lights last, so a scene without them sums in the order it always did.
     for (int type : {shader::LIGHT_POINT, shader::LIGHT_DIRECTIONAL, shader::LIGHT_HEMISPHERE, shader::LIGHT_SPHERE,
                      shader::LIGHT_TUBE}) {
-        for (const Light& light : lights) {
-            if (light.enabled && shaderLightType(light) == type) {
-                packed.push_back(packLight(light));
+        for (size_t i = 0; i < lights.size(); ++i) {
+            if (lights[i].enabled && shaderLightType(lights[i]) == type) {
+                order.push_back(i);
             }
         }
+    }
+    return order;
+}
+
+std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights) {
+    std::vector<shader::PackedLight> packed;
+    for (size_t i : enabledLightOrder(lights)) {
+        packed.push_back(packLight(lights[i]));
     }
     return packed;
 }

@@ -12,6 +12,9 @@ namespace patina {
 // Grouped so the single pass loops over each type with no type branch per light (a branch
 // that software rasterisers pay for in every lane), and every path sums in this one order.
 std::vector<shader::PackedLight> packEnabledLights(const std::vector<Light>& lights);
+// Which of `lights` packEnabledLights packs, in its order: the packed list's i-th light is
+// lights[order[i]].
+std::vector<size_t> enabledLightOrder(const std::vector<Light>& lights);
 // uLightCount of shade.frag: (all, points, directionals, hemispheres) of a packed list.
 glm::ivec4 packedLightCounts(const std::vector<shader::PackedLight>& packed);
 // uAreaLightCount of shade.frag: (spheres, tubes, 0, 0).

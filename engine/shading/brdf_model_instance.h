@@ -21,6 +21,27 @@ inline vec2 environmentBrdfTexel(int x, int y) {
     return environmentBrdfTable(BrdfModelId::PATINA_INSTANCE)[size_t(y) * size_t(kEnvironmentBrdfSize) + size_t(x)];
 }
 #include "ibl_model.glsl"
+#include "channel_model.glsl"
+
+// shade.frag's inspectedChannel on the CPU (engine/shading/channel_inputs.h).
+inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vector<PackedLight>& lights, int asked,
+                                         int key, const ChannelEnvironment* environment) {
+    ChannelInputs c = channelSurface(p.baseColor, p.alpha, p.roughness, p.specular, p.metallic, p.occlusion,
+                                     p.emission, p.uv0, p.uv1, p.tangent, p.geometryNormal, p.N, p.V);
+    for (int i = 0; i < int(lights.size()); ++i) {
+        c = channelWithLight(c, lights[size_t(i)], i == asked, i == key, p.P, p.V);
+    }
+    if (environment) {
+        SurfaceMaterial material = deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic);
+        const vec2 rotation = environmentRotation(environment->rotationDegrees);
+        vec3 sh[9];
+        std::copy(std::begin(environment->sh), std::end(environment->sh), sh);
+        LightShares shares = environmentShares(environment->prefiltered, environment->maxLod, sh, rotation.x,
+                                               rotation.y, material, p.N, p.V, false);
+        c = channelWithEnvironment(c, shares, environment->intensity, asked == -2);
+    }
+    return channelFinished(c);
+}
 #endif
 
 // A sphere or tube light by a chosen variant (C++ only: the area-light measurements compare them).

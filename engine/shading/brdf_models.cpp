@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "shading/channel_inputs.h"
 #include "shading/energy_table.h"
 #include "shading/environment_brdf.h"
 #include "shading/shading_f16.h"
@@ -229,6 +230,18 @@ double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec
 #undef PATINA_LOBE
     }
     return 0.0;
+}
+
+shader::ChannelInputs gatherChannelInputs(BrdfModelId id, const ChannelPoint& point,
+                                          const std::vector<shader::PackedLight>& lights, int asked, int key,
+                                          const ChannelEnvironment* environment) {
+    switch (id) {
+#define PATINA_GATHER(model, name, summary) \
+    PATINA_CASE(shader, model, gatherChannelInputs(point, lights, asked, key, environment))
+        PATINA_BRDF_MODELS(PATINA_GATHER)
+#undef PATINA_GATHER
+    }
+    return shader::model_Epic::gatherChannelInputs(point, lights, asked, key, environment);
 }
 
 }  // namespace patina

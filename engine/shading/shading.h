@@ -12,6 +12,7 @@ using std::sqrt;
 using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
+#include "channels.glsl"
 #include "lights.glsl"
 #include "display.glsl"
 #include "texture.glsl"

@@ -127,6 +127,24 @@ PATINA_INLINE vec3 shadeFromDirection(vec3 radiance, vec3 L, SurfaceMaterial mat
     return NoL > 0.0f ? value : vec3(0.0f);
 }
 
+// A light's outgoing radiance split by lobe: what the inspector's channels show (shadeLight is
+// their sum, the area lights' exactly so).
+struct LightShares {
+    vec3 diffuse;
+    vec3 specular;
+};
+
+// shadeFromDirection's two lobes apart.
+PATINA_INLINE LightShares sharesFromDirection(vec3 radiance, vec3 L, SurfaceMaterial material, vec3 N, vec3 V) {
+    real NoL = dot(N, L);
+    BrdfValue f = evaluateBrdf(material, N, V, L);
+    vec3 arriving = radiance * min(NoL, 1.0f);
+    if (NoL > 0.0f) {
+        return LightShares(arriving * f.diffuse, arriving * f.specular);
+    }
+    return LightShares(vec3(0.0f), vec3(0.0f));
+}
+
 // Each light type on its own, so a shader specialised to a scene (shade.frag's
 // PATINA_SPECIALISED) compiles only the types it has; shadeLight picks one at run time.
 // `windowed` false skips the window's arithmetic: a constant, for a specialised shader whose
@@ -139,17 +157,31 @@ PATINA_INLINE real lightFalloff(PackedLight light, real t, bool windowed, bool k
     return pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f, karis ? KARIS_ATTENUATION : light.attenuation);
 }
 
-PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
-                                   vec3 P, vec3 N, vec3 V) {
+// What a point light sends to P: its radiance after the falloff, the unit direction to it, and
+// whether it has one (a light on the shaded point has none: no light).
+struct LightArrival {
+    vec3 radiance;
+    vec3 L;
+    bool present;
+};
+
+PATINA_INLINE LightArrival pointLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
     vec3 toLight = light.position - P;
     real distanceSquared = dot(toLight, toLight);
-    // Clamped so the light on the shaded point still gives finite numbers; selected away below.
+    // Clamped so the light on the shaded point still gives finite numbers; selected away by
+    // the callers.
     real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
     real t = distanceSquared * inverseDistance;
     real attenuation = lightFalloff(light, t, windowed, karis);
-    vec3 value = shadeFromDirection(light.radiance * attenuation, toLight * inverseDistance, material, N, V);
-    // A light on the shaded point has no direction: no light.
-    return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? value : vec3(0.0f);
+    return LightArrival(light.radiance * attenuation, toLight * inverseDistance,
+                        distanceSquared > MIN_LIGHT_DISTANCE_SQUARED);
+}
+
+PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
+                                   vec3 P, vec3 N, vec3 V) {
+    LightArrival arrival = pointLightArrival(light, windowed, karis, P);
+    vec3 value = shadeFromDirection(arrival.radiance, arrival.L, material, N, V);
+    return arrival.present ? value : vec3(0.0f);
 }
 
 PATINA_INLINE vec3 shadeDirectionalLight(PackedLight light, SurfaceMaterial material, vec3 N, vec3 V) {
@@ -183,8 +215,8 @@ PATINA_INLINE vec3 diffuseFromDirection(vec3 radiance, real illuminance, vec3 L,
 // of eq. 14; diffuse from the centre as a point light (exact while the sphere is above the
 // horizon), or with `method.exactSphereDiffuse` Frostbite's horizon-clipped illuminance.
 // `windowed` and `karis` as for shadePointLight. Source radius 0 gives the point light.
-PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
-                                        SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+PATINA_INLINE LightShares sphereLightSharesWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
+                                                SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
     vec3 toCentre = light.position - P;
     real distanceSquared = dot(toCentre, toCentre);
     // Clamped so the centre on the shaded point still gives finite numbers; selected away below.
@@ -205,7 +237,16 @@ PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool k
     real normalization = sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, t, method.widening));
     vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
     // The centre on the shaded point has no direction: no light, as for a point light.
-    return distanceSquared > MIN_LIGHT_DISTANCE_SQUARED ? diffuse + specular : vec3(0.0f);
+    if (distanceSquared > MIN_LIGHT_DISTANCE_SQUARED) {
+        return LightShares(diffuse, specular);
+    }
+    return LightShares(vec3(0.0f), vec3(0.0f));
+}
+
+PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
+                                        SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    LightShares shares = sphereLightSharesWith(light, windowed, karis, method, material, P, N, V);
+    return shares.diffuse + shares.specular;
 }
 
 // A tube light (Karis 2013, "Tube lights"): the capsule of radius s around the segment from
@@ -215,8 +256,8 @@ PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool k
 // around it, normalised by the line's alpha / alpha' (eq. 16) with the segment's length and the
 // sphere's (alpha / alpha')^2 (eq. 14), both at the distance of the tube's centre. Length 0 gives
 // the sphere light.
-PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
-                                      SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+PATINA_INLINE LightShares tubeLightSharesWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
+                                              SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
     vec3 L0 = light.position - P;
     vec3 L1 = light.tubeEnd - P;
     vec3 Ld = L1 - L0;
@@ -236,7 +277,13 @@ PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool kar
         lineNormalization(material.alpha, widenedAlpha(material.alpha, segmentLength, centreDistance, method.widening)) *
         sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, centreDistance, method.widening));
     vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
-    return diffuse + specular;
+    return LightShares(diffuse, specular);
+}
+
+PATINA_INLINE vec3 shadeTubeLightWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
+                                      SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    LightShares shares = tubeLightSharesWith(light, windowed, karis, method, material, P, N, V);
+    return shares.diffuse + shares.specular;
 }
 
 // The renderer's variant (defaultAreaLightMethod, lights.glsl).
@@ -265,4 +312,50 @@ PATINA_INLINE vec3 shadeLight(PackedLight light, SurfaceMaterial material, vec3 
         return shadeTubeLight(light, true, false, material, P, N, V);
     }
     return shadeDirectionalLight(light, material, N, V);
+}
+
+// One light's outgoing radiance by lobe (the inspector's channels: not on the product's paths,
+// which sum the lobes as they go). A hemisphere light is diffuse only.
+PATINA_INLINE LightShares lightShares(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    if (light.type == LIGHT_HEMISPHERE) {
+        return LightShares(shadeHemisphereLight(light, material, N, V), vec3(0.0f));
+    }
+    if (light.type == LIGHT_SPHERE) {
+        return sphereLightSharesWith(light, true, false, defaultAreaLightMethod(), material, P, N, V);
+    }
+    if (light.type == LIGHT_TUBE) {
+        return tubeLightSharesWith(light, true, false, defaultAreaLightMethod(), material, P, N, V);
+    }
+    if (light.type == LIGHT_POINT) {
+        LightArrival arrival = pointLightArrival(light, true, false, P);
+        LightShares shares = sharesFromDirection(arrival.radiance, arrival.L, material, N, V);
+        if (arrival.present) {
+            return shares;
+        }
+        return LightShares(vec3(0.0f), vec3(0.0f));
+    }
+    return sharesFromDirection(light.radiance, light.directionToLight, material, N, V);
+}
+
+// The specular lobe's D, G and F towards one light, for the inspector's channels: L is the unit
+// direction to the light's centre (a tube's midpoint, a directional light's direction), not the
+// representative point, so that the three read as the textbook terms. G = Vis 4 NoL NoV.
+struct InspectedTerms {
+    real D;
+    real G;
+    vec3 F;
+};
+
+PATINA_INLINE InspectedTerms inspectedTerms(PackedLight light, SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
+    vec3 toLight = light.type == LIGHT_DIRECTIONAL ? light.directionToLight
+                   : light.type == LIGHT_TUBE      ? real(0.5f) * (light.position + light.tubeEnd) - P
+                                                   : light.position - P;
+    vec3 L = safeNormalize(toLight);
+    vec3 H = safeNormalize(L + V);
+    real NoV = max(dot(N, V), MIN_N_DOT_V);
+    real NoL = clamp(dot(N, L), 0.0f, 1.0f);
+    real NoH = clamp(dot(N, H), 0.0f, 1.0f);
+    real Vis = visibility(NoV, NoL, material);
+    return InspectedTerms(distribution(NoH, cross(N, H), material.alpha), Vis * real(4.0f) * NoL * NoV,
+                          fresnel(material.f0, clamp(dot(V, H), 0.0f, 1.0f)));
 }

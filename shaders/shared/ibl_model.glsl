@@ -54,7 +54,8 @@ PATINA_INLINE vec2 environmentBrdfLookup(real NoV, real roughness) {
 // The split sum: LD (F0 A + B) for the specular (Karis 2013, eq. 8), with the model's Turquin
 // compensation taken from the same table (E = A + B), plus the Lambert diffuse c_diff / pi E(N)
 // from the spherical harmonics. Models with Burley's diffuse take Lambert's here.
-PATINA_INLINE vec3 splitSum(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
+// Its two lobes apart (the inspector's channels); splitSum is their sum.
+PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
     vec2 ab = environmentBrdfLookup(NoV, material.roughness);
     vec3 specular = prefiltered * (material.f0 * ab.x + vec3(ab.y));
 #if PATINA_MS == PATINA_MS_TURQUIN
@@ -62,23 +63,45 @@ PATINA_INLINE vec3 splitSum(SurfaceMaterial material, real NoV, vec3 prefiltered
     specular *= vec3(1.0f) + material.f0 * (1.0f / albedo - 1.0f);
 #endif
 #if defined(PATINA_NO_DIFFUSE)
-    return specular;
+    return LightShares(vec3(0.0f), specular);
 #else
-    return specular + Fd_Lambert(material.diffuseColor) * irradiance;
+    return LightShares(Fd_Lambert(material.diffuseColor) * irradiance, specular);
+#endif
+}
+
+PATINA_INLINE vec3 splitSum(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
+    LightShares shares = splitSumShares(material, NoV, prefiltered, irradiance);
+#if defined(PATINA_NO_DIFFUSE)
+    return shares.specular;
+#else
+    return shares.specular + shares.diffuse;
 #endif
 }
 
 // Outgoing radiance towards V from an environment of `intensity` turned by (cosRotation,
 // sinRotation) about +Y: the split sum, LD read from the prefiltered chain at roughnessToLod
 // and E from the coefficients, both in the environment's frame.
-PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, vec3 coefficients[9], real intensity,
-                                    real cosRotation, real sinRotation, SurfaceMaterial material, vec3 N, vec3 V,
-                                    bool dominant) {
+// The split sum's two lobes before the intensity (the inspector's channels).
+PATINA_INLINE LightShares environmentShares(EnvironmentSource prefiltered, real maxLod, vec3 coefficients[9],
+                                            real cosRotation, real sinRotation, SurfaceMaterial material, vec3 N,
+                                            vec3 V, bool dominant) {
     real NoV = max(dot(N, V), MIN_N_DOT_V);
     vec3 R = toEnvironmentFrame(environmentReflection(material, N, V, dominant), cosRotation, sinRotation);
     vec3 ld = sampleEnvironmentSource(prefiltered, R, roughnessToLod(material.roughness, maxLod));
     vec3 irradiance = irradianceSH(coefficients, toEnvironmentFrame(N, cosRotation, sinRotation));
-    return intensity * splitSum(material, NoV, ld, irradiance);
+    return splitSumShares(material, NoV, ld, irradiance);
+}
+
+PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, vec3 coefficients[9], real intensity,
+                                    real cosRotation, real sinRotation, SurfaceMaterial material, vec3 N, vec3 V,
+                                    bool dominant) {
+    LightShares shares =
+        environmentShares(prefiltered, maxLod, coefficients, cosRotation, sinRotation, material, N, V, dominant);
+#if defined(PATINA_NO_DIFFUSE)
+    return intensity * shares.specular;
+#else
+    return intensity * (shares.specular + shares.diffuse);
+#endif
 }
 
 // The stochastic alternative to the split sum: the specular integral itself at the real N and

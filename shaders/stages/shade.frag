@@ -101,6 +101,32 @@ vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
 }
 #endif
 
+#ifdef PATINA_CHANNEL
+// The inspector (channels.glsl, channel_model.glsl): the channel PATINA_CHANNEL written instead
+// of the radiance, from every light and the environment by the split sum. Indices into the block:
+uniform int uChannelLight;   // CHANNEL_LIGHT's light; -1 none, -2 the environment
+uniform int uKeyLight;       // the light D, G and F are read towards; -1 none
+#ifndef PATINA_TEXTURED
+uniform float uChannelAlpha;   // the item's alpha (BLEND's factor), which only maps otherwise read
+#endif
+
+vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metallic, float occlusion, vec3 emission,
+                      vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal, vec3 N, vec3 V) {
+    ChannelInputs c = channelSurface(baseColor, alpha, roughness, uSpecular, metallic, occlusion, emission, uv0, uv1,
+                                     tangent, geometryNormal, N, V);
+    for (int i = 0; i < uLightCount.x; ++i) {
+        c = channelWithLight(c, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
+    }
+#ifdef PATINA_ENVIRONMENT
+    SurfaceMaterial material = deriveSurfaceMaterial(baseColor, roughness, uSpecular, metallic);
+    LightShares shares = environmentShares(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentSH, uEnvironmentRotation.x,
+                                           uEnvironmentRotation.y, material, N, V, false);
+    c = channelWithEnvironment(c, shares, uEnvironmentIntensity, uChannelLight == -2);
+#endif
+    return channelValue(PATINA_CHANNEL, channelFinished(c));
+}
+#endif
+
 // Alpha: which strip wrote a sample (RenderTargets::SampleStamp). Only MSAA samples need it;
 // elsewhere it is not read, and a uniform costs llvmpipe a gather.
 #if !defined(PATINA_PROBE) && !defined(PATINA_DISPLAY_OUTPUT)
@@ -137,8 +163,30 @@ void main() {
     }
     vec3 V = safeNormalize(uCameraPosition - vPosition);
 #endif
+#ifdef PATINA_CHANNEL
+    vec3 geometryNormal = N;
+#endif
 #ifdef PATINA_TEXTURED
     N = mappedNormal(N);
+#endif
+#ifdef PATINA_CHANNEL
+#ifdef PATINA_TEXTURED
+    vec3 channel = inspectedChannel(mapped.baseColor, mapped.alpha, mapped.roughness, mapped.metallic, occlusion,
+                                    surfaceEmission(), vUv0, vUv1, vTangent, geometryNormal, N, V);
+#else
+    vec3 channel = inspectedChannel(uBaseColor, uChannelAlpha, uRoughness, uMetallic, 1.0f, vec3(0.0f), vec2(0.0f), vec2(0.0f),
+                                    vec4(0.0f), geometryNormal, N, V);
+#endif
+    // Data, not light: no exposure or tone map in the display value either.
+#ifdef PATINA_STAMPED
+    fragColor = vec4(channel, uSampleStamp);
+#else
+    fragColor = vec4(channel, 1.0f);
+#endif
+#ifdef PATINA_DISPLAY_OUTPUT
+    displayColor = vec4(clamp(channel, 0.0f, 1.0f), 1.0f);
+#endif
+    return;
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "gl/renderer.h"
+#include "reference/channel_image.h"
 #include "reference/pixel_surfaces.h"
 #include "reference/reference_render.h"
 #include "scene/view.h"
@@ -347,6 +348,61 @@ TEST_F(ModelMaps, TheGroundTruthShadesTheSameMapsAsTheGpu) {
         EXPECT_GT(covered, 1000);
         // Texel edges: where the two filters' arithmetic puts a pixel across a sharp step.
         EXPECT_GE(agreeing, covered * 97 / 100) << renderPathName(path) << ": " << agreeing << " of " << covered;
+    }
+}
+
+// The inspector's channels of a textured item (every map, a transform, MASK): the GPU's channel
+// render is the CPU twin's (reference/channel_image.h) wherever both see the quad, but for the
+// two filters' arithmetic at texel edges, as the shading above.
+TEST_F(ModelMaps, EveryChannelOfATexturedItemIsTheCpuTwins) {
+    const Scene scene = quadScene();
+    ModelMaterial mapped = factors(glm::vec3(0.9f, 0.8f, 0.7f));
+    mapped.factors.metallic = 0.6f;
+    mapped.factors.roughness = 0.9f;   // D is steep at low roughness: the filters' rounding would show
+    int image = 0;
+    for (TextureSlot* slot : {&mapped.baseColor, &mapped.metallicRoughness, &mapped.normal, &mapped.occlusion,
+                              &mapped.emissive}) {
+        slot->image = image++;
+    }
+    mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
+    mapped.occlusion.texCoord = 1;
+    mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
+    mapped.alphaMode = AlphaMode::Mask;
+    mapped.alphaCutoff = 0.4f;
+    std::vector<ModelImage> images;
+    for (int i = 0; i < 5; ++i) {
+        images.push_back(::patina::image(6, 5, pattern(6, 5, 3u + unsigned(i))));
+    }
+    // A normal map as they are: tilts within 30 degrees of the surface's normal (random texels
+    // would turn normals away from the viewer, where normalising magnifies the filters' rounding).
+    for (size_t i = 0; i < images[2].rgba.size(); i += 4) {
+        images[2].rgba[i] = uint8_t(96 + images[2].rgba[i] % 64);
+        images[2].rgba[i + 1] = uint8_t(96 + images[2].rgba[i + 1] % 64);
+        images[2].rgba[i + 2] = 255;
+    }
+    Mesh mirrored = quad(glm::vec3(0.1f, 0.0f, 1.0f), -1.0f);
+    mirrored.uv1 = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    const auto model = oneQuad(mirrored, mapped, images);
+    const PreparedScene prepared{scene, std::make_shared<const Mesh>(model->primitives[0]), nullptr, model};
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kWidth, kHeight);
+    for (const std::string& name : fixedChannelNames()) {
+        RenderSettings settings = test::renderSettings(kWidth, kHeight, RenderPath::Specialised, 4);
+        settings.channel = *channelFromName(name);
+        const HdrImage shown = renderer_.render(prepared, settings).hdr;
+        const HdrImage twin = channelImage(prepared, surfaces, settings.channel);
+        int covered = 0, agreeing = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                if (surfaces.sampleOfPixel[size_t(y * kWidth + x)] >= 0) {
+                    ++covered;
+                    const glm::vec3 a = test::pixel(shown, x, y), b = test::pixel(twin, x, y);
+                    // D and G magnify the normal's few-per-mille filtering differences several times.
+                    agreeing += glm::all(glm::lessThanEqual(glm::abs(a - b), 1e-2f + 4e-2f * glm::abs(b)));
+                }
+            }
+        }
+        EXPECT_GT(covered, 1000) << name;
+        EXPECT_GE(agreeing, covered * 97 / 100) << name << ": " << agreeing << " of " << covered;
     }
 }
 

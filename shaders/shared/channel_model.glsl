@@ -1,0 +1,60 @@
+// The inspector's channel inputs (channels.glsl) gathered for one BRDF model: the surface, then
+// each light, then the environment and the sum. Shared GLSL / C++; include after brdf_model.glsl
+// and ibl_model.glsl. shade.frag with PATINA_CHANNEL and the CPU twin (engine/reference/channels.h)
+// call these in the same order, each with its own list of lights.
+
+// The surface's fields: the material after its maps (deriveSurfaceMaterial's F0 and diffuse
+// colour from it), the occlusion and emission the maps give, the UVs, the tangent frame and the
+// normals. The lighting starts at 0. `tangent` as interpolated (w = 0: none).
+PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roughness, real specular, real metallic,
+                                           real occlusion, vec3 emission, vec2 uv0, vec2 uv1, vec4 tangent,
+                                           vec3 geometryNormal, vec3 N, vec3 V) {
+    SurfaceMaterial m = deriveSurfaceMaterial(baseColor, roughness, specular, metallic);
+    vec3 t = safeNormalize(vec3(tangent.x, tangent.y, tangent.z));
+    real handedness = tangent.w > 0.0f ? 1.0f : (tangent.w < 0.0f ? -1.0f : 0.0f);
+    return ChannelInputs(baseColor, alpha, metallic, roughness, specular, m.f0, m.diffuseColor, occlusion, emission,
+                         uv0, uv1, geometryNormal, N, vec4(t.x, t.y, t.z, handedness), max(dot(N, V), MIN_N_DOT_V),
+                         0.0f, 0.0f, vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f),
+                         vec3(0.0f));
+}
+
+// One light's lobes added at P (occlusion on a hemisphere light, as the renderer applies it).
+// `asked`: the light of CHANNEL_LIGHT; `key`: the light D, G and F are read towards.
+PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, PackedLight light, bool asked, bool key, vec3 P,
+                                             vec3 V) {
+    SurfaceMaterial m = deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic);
+    LightShares shares = lightShares(light, m, P, c.shadingNormal, V);
+    if (light.type == LIGHT_HEMISPHERE) {
+        shares.diffuse = c.occlusion * shares.diffuse;
+    }
+    c.diffuse = c.diffuse + shares.diffuse;
+    c.specularLighting = c.specularLighting + shares.specular;
+    if (asked) {
+        c.light = shares.diffuse + shares.specular;
+    }
+    if (key) {
+        InspectedTerms terms = inspectedTerms(light, m, P, c.shadingNormal, V);
+        c.D = terms.D;
+        c.G = terms.G;
+        c.F = terms.F;
+    }
+    return c;
+}
+
+// The environment's split-sum lobes (environmentShares, before the intensity) added, occluded.
+PATINA_INLINE ChannelInputs channelWithEnvironment(ChannelInputs c, LightShares shares, real intensity, bool asked) {
+    c.environmentDiffuse = c.occlusion * (intensity * shares.diffuse);
+    c.environmentSpecular = c.occlusion * (intensity * shares.specular);
+    c.diffuse = c.diffuse + c.environmentDiffuse;
+    c.specularLighting = c.specularLighting + c.environmentSpecular;
+    if (asked) {
+        c.light = c.environmentDiffuse + c.environmentSpecular;
+    }
+    return c;
+}
+
+// The pixel's radiance once every light is in: the lobes and the emission.
+PATINA_INLINE ChannelInputs channelFinished(ChannelInputs c) {
+    c.radiance = c.diffuse + c.specularLighting + c.emission;
+    return c;
+}

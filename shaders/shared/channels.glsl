@@ -1,0 +1,102 @@
+// The inspector's debug channels (docs/INSPECTOR.md): what the shader computed at a pixel, as
+// data. Shared GLSL / C++ like brdf.glsl (include after it): shade.frag with PATINA_CHANNEL
+// writes channelValue instead of the radiance, and the CPU twin (engine/reference/channels.h)
+// calls the same function on the same inputs, so the two cannot drift.
+
+// The channels, in docs/INSPECTOR.md's order (engine/shading/channels.h names them).
+const int CHANNEL_BASE_COLOR = 0;
+const int CHANNEL_ALPHA = 1;
+const int CHANNEL_METALLIC = 2;
+const int CHANNEL_ROUGHNESS = 3;
+const int CHANNEL_SPECULAR = 4;
+const int CHANNEL_F0 = 5;
+const int CHANNEL_DIFFUSE_COLOR = 6;
+const int CHANNEL_OCCLUSION = 7;
+const int CHANNEL_EMISSIVE = 8;
+const int CHANNEL_UV0 = 9;
+const int CHANNEL_UV1 = 10;
+const int CHANNEL_GEOMETRY_NORMAL = 11;
+const int CHANNEL_SHADING_NORMAL = 12;
+const int CHANNEL_TANGENT = 13;
+const int CHANNEL_BITANGENT_SIGN = 14;
+const int CHANNEL_NOV = 15;
+const int CHANNEL_D = 16;
+const int CHANNEL_G = 17;
+const int CHANNEL_F = 18;
+const int CHANNEL_DIFFUSE = 19;
+const int CHANNEL_SPECULAR_LIGHTING = 20;
+const int CHANNEL_ENVIRONMENT_DIFFUSE = 21;
+const int CHANNEL_ENVIRONMENT_SPECULAR = 22;
+const int CHANNEL_LIGHT = 23;
+const int CHANNEL_INVALID = 24;
+const int CHANNEL_COUNT = 25;
+
+// Everything a pixel's channels read. The material is after its maps (factor times texel) and
+// before the roughness floor; F0 and the diffuse colour are deriveSurfaceMaterial's. The lighting
+// is linear radiance towards the viewer: `diffuse` and `specularLighting` are every light's and
+// the environment's lobes (occlusion applied), so diffuse + specularLighting + emission is the
+// radiance the pixel shows.
+struct ChannelInputs {
+    vec3 baseColor;
+    real alpha;
+    real metallic;
+    real roughness;
+    real specular;
+    vec3 f0;
+    vec3 diffuseColor;
+    real occlusion;
+    vec3 emission;
+    vec2 uv0;
+    vec2 uv1;
+    vec3 geometryNormal;   // unit, interpolated, reversed on a double-sided back face
+    vec3 shadingNormal;    // after the normal map
+    vec4 tangent;          // xyz unit, w the bitangent's sign; 0 where there is none
+    real NoV;              // max(N.V, MIN_N_DOT_V) with the shading normal, as the BRDF reads it
+    real D;                // the key light's (inspectedTerms, brdf_model.glsl)
+    real G;
+    vec3 F;
+    vec3 diffuse;
+    vec3 specularLighting;
+    vec3 environmentDiffuse;
+    vec3 environmentSpecular;
+    vec3 light;            // the one light asked for, both lobes
+    vec3 radiance;         // what the pixel shows, before exposure
+};
+
+// 1 where any component of v is NaN, infinite or negative, respectively.
+PATINA_INLINE vec3 invalidRadiance(vec3 v) {
+    bool nan = isnan(v.x) || isnan(v.y) || isnan(v.z);
+    bool infinite = isinf(v.x) || isinf(v.y) || isinf(v.z);
+    bool negative = v.x < 0.0f || v.y < 0.0f || v.z < 0.0f;
+    return vec3(nan ? 1.0f : 0.0f, infinite ? 1.0f : 0.0f, negative ? 1.0f : 0.0f);
+}
+
+// The channel's value: a colour or vector as it is (normals in [-1, 1], UVs as (u, v, 0)), a
+// scalar in all three components.
+PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c) {
+    if (channel == CHANNEL_BASE_COLOR) return c.baseColor;
+    if (channel == CHANNEL_ALPHA) return vec3(c.alpha);
+    if (channel == CHANNEL_METALLIC) return vec3(c.metallic);
+    if (channel == CHANNEL_ROUGHNESS) return vec3(c.roughness);
+    if (channel == CHANNEL_SPECULAR) return vec3(c.specular);
+    if (channel == CHANNEL_F0) return c.f0;
+    if (channel == CHANNEL_DIFFUSE_COLOR) return c.diffuseColor;
+    if (channel == CHANNEL_OCCLUSION) return vec3(c.occlusion);
+    if (channel == CHANNEL_EMISSIVE) return c.emission;
+    if (channel == CHANNEL_UV0) return vec3(c.uv0.x, c.uv0.y, 0.0f);
+    if (channel == CHANNEL_UV1) return vec3(c.uv1.x, c.uv1.y, 0.0f);
+    if (channel == CHANNEL_GEOMETRY_NORMAL) return c.geometryNormal;
+    if (channel == CHANNEL_SHADING_NORMAL) return c.shadingNormal;
+    if (channel == CHANNEL_TANGENT) return vec3(c.tangent.x, c.tangent.y, c.tangent.z);
+    if (channel == CHANNEL_BITANGENT_SIGN) return vec3(c.tangent.w);
+    if (channel == CHANNEL_NOV) return vec3(c.NoV);
+    if (channel == CHANNEL_D) return vec3(c.D);
+    if (channel == CHANNEL_G) return vec3(c.G);
+    if (channel == CHANNEL_F) return c.F;
+    if (channel == CHANNEL_DIFFUSE) return c.diffuse;
+    if (channel == CHANNEL_SPECULAR_LIGHTING) return c.specularLighting;
+    if (channel == CHANNEL_ENVIRONMENT_DIFFUSE) return c.environmentDiffuse;
+    if (channel == CHANNEL_ENVIRONMENT_SPECULAR) return c.environmentSpecular;
+    if (channel == CHANNEL_LIGHT) return c.light;
+    return invalidRadiance(c.radiance);
+}

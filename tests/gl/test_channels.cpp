@@ -1,0 +1,184 @@
+// The inspector's debug channels (docs/INSPECTOR.md): the GPU's channel render (shade.frag with
+// PATINA_CHANNEL) against the CPU twin (reference/channel_image.h), which gathers the same
+// inputs through the same shared functions; and against what the channels must be by their
+// definition (the lobes add up to the rendered radiance, a sphere's normal is its position).
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "files/input_error.h"
+#include "gl/renderer.h"
+#include "reference/channel_image.h"
+#include "reference/pixel_surfaces.h"
+#include "scene/channel.h"
+#include "shading/shading.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+constexpr int kSize = 96;
+
+// |a - b| within an absolute floor plus a fraction of b, component by component.
+bool near(glm::vec3 a, glm::vec3 b, float fraction, float floor) {
+    for (int c = 0; c < 3; ++c) {
+        if (!(std::abs(a[c] - b[c]) <= floor + fraction * std::abs(b[c]))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Pixels whose whole 3 x 3 neighbourhood the surface covers: away from the silhouette, where
+// a pixel centre may fall either side of an edge by rounding.
+bool inside(const PixelSurfaces& surfaces, int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int u = x + dx, v = y + dy;
+            if (u < 0 || v < 0 || u >= surfaces.width || v >= surfaces.height ||
+                surfaces.sampleOfPixel[size_t(v * surfaces.width + u)] < 0) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+class Channels : public ::testing::Test {
+protected:
+    HdrImage gpu(const PreparedScene& prepared, const ChannelRequest& request, RenderPath path = RenderPath::Single) {
+        RenderSettings settings = test::renderSettings(kSize, kSize, path, 4);
+        settings.channel = request;
+        return renderer_.render(prepared, settings).hdr;
+    }
+
+    HeadlessContext& context_ = test::glContext();
+    Renderer renderer_;
+};
+
+// Every channel of the default scene (the sphere under two point lights, a hemisphere light and
+// the studio environment), and each light's own: the GPU's value is the CPU twin's at nearly
+// every pixel inside the silhouette. They differ by the environment's cube map filtering
+// (the GPU's seamless trilinear lookup against the CPU's) and fp32 rounding.
+TEST_F(Channels, EveryChannelOfTheDefaultSceneIsTheCpuTwins) {
+    const PreparedScene& prepared = test::preparedDefault();
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+    std::vector<std::string> names = fixedChannelNames();
+    for (const Light& light : prepared.scene.lights) {
+        names.push_back("light:" + light.name);
+    }
+    for (const std::string& name : names) {
+        const ChannelRequest request = *channelFromName(name);
+        const HdrImage a = gpu(prepared, request), b = channelImage(prepared, surfaces, request);
+        int covered = 0, agreeing = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (inside(surfaces, x, y)) {
+                    ++covered;
+                    agreeing += near(test::pixel(a, x, y), test::pixel(b, x, y), 1e-2f, 2e-3f);
+                }
+            }
+        }
+        EXPECT_GT(covered, 2000) << name;
+        EXPECT_GE(agreeing, covered * 99 / 100) << name << ": " << agreeing << " of " << covered;
+    }
+}
+
+// Off the surface a channel is 0 (no surface, no data), not the scene's background colour.
+TEST_F(Channels, TheBackgroundOfAChannelIsZero) {
+    const HdrImage image = gpu(test::preparedDefault(), *channelFromName("base-color"));
+    EXPECT_EQ(test::pixel(image, 0, 0), glm::vec3(0.0f));
+    EXPECT_EQ(test::pixel(image, kSize / 2, kSize / 2), test::preparedDefault().scene.material.baseColor);
+}
+
+// The lobes add up: diffuse + specular-lighting (every light and the environment, occlusion
+// applied) is the radiance the product's own render shows, on every path.
+TEST_F(Channels, TheDiffuseAndSpecularChannelsAddUpToTheRender) {
+    const PreparedScene& prepared = test::preparedDefault();
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+    const HdrImage diffuse = gpu(prepared, *channelFromName("diffuse"));
+    const HdrImage specular = gpu(prepared, *channelFromName("specular-lighting"));
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        const HdrImage shown = renderer_.render(prepared, test::renderSettings(kSize, kSize, path, 1)).hdr;
+        int covered = 0, agreeing = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (inside(surfaces, x, y)) {
+                    ++covered;
+                    const glm::vec3 sum = test::pixel(diffuse, x, y) + test::pixel(specular, x, y);
+                    agreeing += near(sum, test::pixel(shown, x, y), 1e-3f, 1e-5f);
+                }
+            }
+        }
+        EXPECT_GE(agreeing, covered * 999 / 1000) << renderPathName(path) << ": " << agreeing << " of " << covered;
+    }
+}
+
+// A unit sphere at the origin: its geometry and shading normal are its position, and N.V is
+// the cosine to the camera (built-in meshes have no maps: the two normals are one).
+TEST_F(Channels, ASpheresNormalIsItsPosition) {
+    const PreparedScene& prepared = test::preparedDefault();
+    ASSERT_EQ(prepared.scene.mesh, MeshKind::Sphere);
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+    const HdrImage geometry = gpu(prepared, *channelFromName("geometry-normal"));
+    const HdrImage shading = gpu(prepared, *channelFromName("shading-normal"));
+    const HdrImage nov = gpu(prepared, *channelFromName("nov"));
+    int checked = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (!inside(surfaces, x, y)) {
+                continue;
+            }
+            const ProbeSample& sample = surfaces.samples[size_t(surfaces.sampleOfPixel[size_t(y * kSize + x)])];
+            const glm::vec3 position = glm::normalize(sample.position);
+            // The sphere is a mesh: its interpolated normal is the position's within its facets.
+            EXPECT_TRUE(near(test::pixel(geometry, x, y), position, 0.0f, 1e-2f)) << x << " " << y;
+            EXPECT_EQ(test::pixel(shading, x, y), test::pixel(geometry, x, y)) << x << " " << y;
+            const float cosine = std::max(glm::dot(glm::normalize(test::pixel(shading, x, y)), sample.toViewer), 1e-4f);
+            EXPECT_NEAR(test::pixel(nov, x, y).x, cosine, 1e-3f) << x << " " << y;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 2000);
+}
+
+// The per-light channels split the lighting: the lights' own channels add up to the diffuse and
+// specular lighting together.
+TEST_F(Channels, TheLightsChannelsAddUpToTheLighting) {
+    const PreparedScene& prepared = test::preparedDefault();
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+    HdrImage sum{kSize, kSize, std::vector<float>(size_t(kSize * kSize * 3), 0.0f)};
+    for (const Light& light : prepared.scene.lights) {
+        const HdrImage own = channelImage(prepared, surfaces, *channelFromName("light:" + light.name));
+        for (size_t i = 0; i < sum.rgb.size(); ++i) {
+            sum.rgb[i] += light.enabled ? own.rgb[i] : 0.0f;
+        }
+    }
+    const HdrImage diffuse = channelImage(prepared, surfaces, *channelFromName("diffuse"));
+    const HdrImage specular = channelImage(prepared, surfaces, *channelFromName("specular-lighting"));
+    for (int y = 0; y < kSize; y += 3) {
+        for (int x = 0; x < kSize; x += 3) {
+            EXPECT_TRUE(near(test::pixel(sum, x, y), test::pixel(diffuse, x, y) + test::pixel(specular, x, y), 1e-5f,
+                             1e-6f))
+                << x << " " << y;
+        }
+    }
+}
+
+// A channel asked for by a name the scene's lights lack is refused with the names there are.
+TEST_F(Channels, AnUnknownLightIsRefusedWithTheLightsThereAre) {
+    EXPECT_THROW(
+        {
+            try {
+                gpu(test::preparedDefault(), *channelFromName("light:nobody"));
+            } catch (const InputError& error) {
+                EXPECT_NE(std::string(error.what()).find("\"warm key\""), std::string::npos) << error.what();
+                throw;
+            }
+        },
+        InputError);
+}
+
+}  // namespace
+}  // namespace patina
