@@ -23,6 +23,8 @@ Command addFurnaceCommand(CLI::App& app);
 Command addLightingAccuracyCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addAreaAccuracyCommand(CLI::App& app);
+// `patina inspect`: one pixel's story as JSON.
+Command addInspectCommand(CLI::App& app);
 // `patina validate`: exit 1 when a material is out of range (the lines say which).
 Command addValidateCommand(CLI::App& app);
 

@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
                      patina::cli::addBenchRenderCommand,
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
                      patina::cli::addLightingAccuracyCommand, patina::cli::addAreaAccuracyCommand,
-                     patina::cli::addExportCommand, patina::cli::addValidateCommand}) {
+                     patina::cli::addExportCommand, patina::cli::addValidateCommand,
+                     patina::cli::addInspectCommand}) {
         patina::cli::Command run = add(app);
         commands.emplace_back(app.get_subcommands({}).back(), std::move(run));
     }

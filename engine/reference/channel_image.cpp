@@ -65,6 +65,12 @@ std::optional<shader::ChannelInputs> pixelChannelInputs(const PreparedScene& pre
                                environment ? &*environment : nullptr);
 }
 
+shader::ChannelInputs sampleChannelInputs(const PreparedScene& prepared, const PixelSurfaces& surfaces, size_t i,
+                                          const std::vector<Light>& lights) {
+    return gatherChannelInputs(prepared.scene.material.model, channelPoint(surfaces, sceneDraws(prepared), i),
+                               packEnabledLights(lights), -1, -1, nullptr);
+}
+
 HdrImage channelImage(const PreparedScene& prepared, const PixelSurfaces& surfaces, const ChannelRequest& request) {
     const ChannelLights lights = channelLights(prepared.scene.lights, request);
     const std::vector<shader::PackedLight> packed = packEnabledLights(prepared.scene.lights);

@@ -18,6 +18,11 @@ namespace patina {
 std::optional<shader::ChannelInputs> pixelChannelInputs(const PreparedScene& prepared, const PixelSurfaces& surfaces,
                                                         const ChannelLights& lights, int x, int y);
 
+// Sample `i`'s inputs lit by `lights` alone (the enabled ones, packed), without the environment:
+// one light's own lobes, for the read-out.
+shader::ChannelInputs sampleChannelInputs(const PreparedScene& prepared, const PixelSurfaces& surfaces, size_t i,
+                                          const std::vector<Light>& lights);
+
 // The channel at every pixel, 0 where no item is. Throws InputError for a light it cannot find
 // (channelLights).
 HdrImage channelImage(const PreparedScene& prepared, const PixelSurfaces& surfaces, const ChannelRequest& request);

@@ -45,6 +45,7 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
     SceneDraw draw;
     draw.mesh = &model.primitives[size_t(item.primitive)];
     draw.primitive = item.primitive;
+    draw.item = int(i);
     draw.transform = item.transform;
     draw.normalTransform = normalTransform(item.transform);
     const ModelMaterialEdit* edit = item.material >= 0 ? editOf(scene, item.material, material) : nullptr;

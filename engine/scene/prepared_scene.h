@@ -35,6 +35,7 @@ struct PreparedScene {
 struct SceneDraw {
     const Mesh* mesh = nullptr;          // in its own space; the prepared scene holds it
     int primitive = 0;                   // its index in the model (0: the one mesh)
+    int item = -1;                       // its DrawItem in the model's draws; -1 for the one mesh
     glm::mat4 transform{1.0f};           // its space into the world
     glm::mat3 normalTransform{1.0f};     // model/placement.h
     MaterialParameters material;         // shaded by the document's BRDF model

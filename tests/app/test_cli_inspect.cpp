@@ -8,6 +8,7 @@
 #include "cli_runner.h"
 #include "files/file_bytes.h"
 #include "image/image.h"
+#include "scene/json_value.h"
 #include "scene/scene.h"
 #include "scratch_test.h"
 #include "shading/shading.h"
@@ -68,6 +69,55 @@ TEST_F(CliInspect, AnUnknownChannelIsAUsageErrorAndAMissingLightBadInput) {
     EXPECT_NE(light.stderrText.find("no enabled light of that name"), std::string::npos) << light.stderrText;
     EXPECT_FALSE(std::filesystem::exists(path("u.png")));
     EXPECT_FALSE(std::filesystem::exists(path("l.png")));
+}
+
+glm::vec3 vec3Of(const Json& values) {
+    return {values.at(0).get<float>(), values.at(1).get<float>(), values.at(2).get<float>()};
+}
+
+// `inspect` tells the pixel's story from the CPU twin, and it is the GPU's pixel: the radiance
+// the render wrote there (without MSAA), the display value its PNG holds; the lights' and the
+// environment's lobes add up to that radiance.
+TEST_F(CliInspect, InspectAgreesWithTheRenderedPixel) {
+    ASSERT_EQ(run("render --msaa 1 --width 120 --height 90 --out " + path("r.png").string() + " --hdr " +
+                  path("r.pfm").string())
+                  .exitCode,
+              0);
+    const HdrImage rendered = decodePfm(readFileBytes(path("r.pfm")));
+    const LdrImage shown = decodePng(readFileBytes(path("r.png")));
+    for (const auto& [x, y] : {std::pair{60, 45}, std::pair{45, 30}, std::pair{75, 60}}) {
+        const test::CliRun r = run("inspect --width 120 --height 90 --x " + std::to_string(x) + " --y " +
+                                   std::to_string(y));
+        ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+        const Json story = Json::parse(r.stdoutText);
+        ASSERT_TRUE(story.at("surface").get<bool>());
+        const glm::vec3 radiance = vec3Of(story.at("radiance")), expected = test::pixel(rendered, x, y);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(radiance[c], expected[c], 1e-3f + 1e-2f * expected[c]) << x << " " << y;
+            EXPECT_NEAR(story.at("display").at(c).get<int>(), shown.rgba[size_t(y * 120 + x) * 4 + size_t(c)], 1)
+                << x << " " << y;
+        }
+        glm::vec3 sum = vec3Of(story.at("emission"));
+        for (const Json& light : story.at("lights")) {
+            sum += vec3Of(light.at("diffuse")) + vec3Of(light.at("specular"));
+        }
+        sum += vec3Of(story.at("environment").at("diffuse")) + vec3Of(story.at("environment").at("specular"));
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(sum[c], radiance[c], 1e-5f + 1e-5f * radiance[c]);
+        }
+        EXPECT_EQ(vec3Of(story.at("baseColor")), defaultScene().material.baseColor);
+        EXPECT_EQ(story.at("keyLight"), "warm key");
+    }
+}
+
+TEST_F(CliInspect, APixelOutsideTheImageIsAUsageErrorAndTheBackgroundHasNoSurface) {
+    const test::CliRun outside = run("inspect --width 100 --height 50 --x 10 --y 50");
+    EXPECT_EQ(outside.exitCode, 2);
+    EXPECT_NE(outside.stderrText.find("pixel (10, 50) is outside the 100 x 50 image"), std::string::npos)
+        << outside.stderrText;
+    const test::CliRun corner = run("inspect --width 100 --height 50 --x 0 --y 0");
+    ASSERT_EQ(corner.exitCode, 0) << corner.stderrText;
+    EXPECT_FALSE(Json::parse(corner.stdoutText).at("surface").get<bool>());
 }
 
 }  // namespace
