@@ -299,10 +299,24 @@ private:
     float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
 };
 
+namespace {
+// What a frame draws: sceneDraws, and for a channel every item opaque (a channel is the front
+// surface's data, as the CPU twin's; blending data would mean nothing).
+std::vector<SceneDraw> drawnItems(const PreparedScene& prepared, const RenderSettings& settings) {
+    std::vector<SceneDraw> draws = sceneDraws(prepared);
+    if (settings.channel.channel >= 0) {
+        for (SceneDraw& draw : draws) {
+            draw.blend = false;
+        }
+    }
+    return draws;
+}
+}  // namespace
+
 Renderer::Frame::Frame(State& state, const PreparedScene& prepared, const RenderSettings& settings,
                        RenderTargets& targets)
     : s(state), prepared(prepared), scene(prepared.scene), settings(settings), t(targets), w(settings.width),
-      h(settings.height), draws(sceneDraws(prepared)) {
+      h(settings.height), draws(drawnItems(prepared, settings)) {
     uploadShape(s, prepared);
     planDraw();
     // Until this draw succeeds the target has nothing to read back.
@@ -412,6 +426,7 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
     if (settings.channel.channel >= 0) {
         glUniform1i(program.uniform("uChannelLight"), channelLights.asked);
         glUniform1i(program.uniform("uKeyLight"), channelLights.key);
+        glUniform1i(program.uniform("uChannelSrgb"), settings.channel.srgb ? 1 : 0);
     }
     if (plan.displayInPass) {
         glUniform1f(program.uniform("uExposure"), scene.display.exposure);
@@ -425,8 +440,11 @@ std::array<GLfloat, 4> clearLinearOf(glm::vec3 background) {
     return {background.r, background.g, background.b, 0.0f};
 }
 
-std::array<GLfloat, 4> clearDisplayOf(glm::vec3 background) {
-    const glm::vec3 shown = shader::srgbColor(background);
+// A channel's background is no surface, a value of 0 as the channel shows it (mid-grey for a
+// normal), as the CLI's PNG of its values shows it.
+std::array<GLfloat, 4> clearDisplayOf(glm::vec3 background, const ChannelRequest& channel) {
+    const glm::vec3 shown = channel.channel < 0 ? shader::srgbColor(background)
+                                                : shader::shownChannel(channel.channel, glm::vec3(0.0f), channel.srgb);
     return {shown.r, shown.g, shown.b, 1.0f};
 }
 }  // namespace
@@ -440,7 +458,7 @@ void Renderer::Frame::clearAroundMesh() const {
     if (linear) {
         glClearBufferfv(GL_COLOR, 0, clearLinearOf(background).data());
     }
-    glClearBufferfv(GL_COLOR, 1, clearDisplayOf(background).data());
+    glClearBufferfv(GL_COLOR, 1, clearDisplayOf(background, settings.channel).data());
 }
 
 void Renderer::Frame::draw() {
@@ -639,7 +657,7 @@ void Renderer::Frame::clearStrip(int top, const PixelRect& area) {
         glClearBufferfv(GL_COLOR, 0, clearLinearOf(background).data());
     }
     if (plan.displayInPass) {
-        glClearBufferfv(GL_COLOR, 1, clearDisplayOf(background).data());
+        glClearBufferfv(GL_COLOR, 1, clearDisplayOf(background, settings.channel).data());
     }
     if (plan.depthTest) {
         glEnable(GL_DEPTH_TEST);

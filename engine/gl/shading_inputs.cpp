@@ -47,8 +47,8 @@ std::vector<const char*> shadingFragmentParts(bool channels) {
         shader_sources::surface_maps_glsl, shader_sources::shade_frag};
     // The channels' parts only where asked for: every other program would compile them for nothing.
     if (channels) {
-        parts.insert(parts.begin() + 1, shader_sources::channels_glsl);
-        parts.insert(parts.end() - 4, shader_sources::channel_model_glsl);   // after ibl_model
+        // After display.glsl (channels.glsl encodes sRGB), before texture.glsl.
+        parts.insert(parts.end() - 3, {shader_sources::channels_glsl, shader_sources::channel_model_glsl});
     }
     return parts;
 }

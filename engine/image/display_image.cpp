@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "environment/equirect.h"
-#include "scene/channel.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -28,12 +27,12 @@ LdrImage displayImage(const HdrImage& linear, const DisplaySettings& display, st
 LdrImage channelDisplayImage(const HdrImage& channel, int channelId, bool srgb) {
     LdrImage image{channel.width, channel.height,
                    std::vector<uint8_t>(size_t(channel.width) * size_t(channel.height) * 4, 255)};
-    const bool signedValues = channelIsSigned(channelId);
-    for (size_t i = 0; i < channel.rgb.size(); ++i) {
-        float value = signedValues ? channel.rgb[i] * 0.5f + 0.5f : channel.rgb[i];
-        value = value >= 0.0f ? std::min(value, 1.0f) : 0.0f;   // NaN fails the test: 0
-        value = srgb ? shader::srgbEncode(value) : value;
-        image.rgba[i / 3 * 4 + i % 3] = uint8_t(std::lround(value * 255.0f));
+    for (size_t pixel = 0; pixel * 3 < channel.rgb.size(); ++pixel) {
+        const float* rgb = &channel.rgb[pixel * 3];
+        const glm::vec3 shown = shader::shownChannel(channelId, glm::vec3(rgb[0], rgb[1], rgb[2]), srgb);
+        for (int c = 0; c < 3; ++c) {
+            image.rgba[pixel * 4 + size_t(c)] = uint8_t(std::lround(shown[c] * 255.0f));
+        }
     }
     return image;
 }

@@ -15,9 +15,8 @@ namespace patina {
 // (srgbColor: no exposure, no tone map), as the renderer shows it.
 LdrImage displayImage(const HdrImage& linear, const DisplaySettings& display, std::span<const uint8_t> backdrop = {});
 
-// A debug channel's image (scene/channel.h) shown as data: no exposure, no tone map; signed
-// vectors (channelIsSigned) as v / 2 + 1/2; clamped to [0, 1] (NaN as 0, +inf as 1); with `srgb`
-// sRGB-encoded (for colours), else the value itself; rounded to bytes.
+// A debug channel's image (scene/channel.h) as the shared shownChannel shows it (data: no
+// exposure or tone map), rounded to bytes as the GPU's display image stores them.
 LdrImage channelDisplayImage(const HdrImage& channel, int channelId, bool srgb);
 
 // An equirect environment image shrunk to width x height for a thumbnail: each pixel the mean of

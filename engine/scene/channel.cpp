@@ -60,11 +60,6 @@ std::string channelNameList() {
     return list;
 }
 
-bool channelIsSigned(int channel) {
-    return channel == shader::CHANNEL_GEOMETRY_NORMAL || channel == shader::CHANNEL_SHADING_NORMAL ||
-           channel == shader::CHANNEL_TANGENT || channel == shader::CHANNEL_BITANGENT_SIGN;
-}
-
 ChannelLights channelLights(const std::vector<Light>& lights, const ChannelRequest& request) {
     ChannelLights found;
     const std::vector<size_t> order = enabledLightOrder(lights);

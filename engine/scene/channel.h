@@ -13,6 +13,7 @@ namespace patina {
 struct ChannelRequest {
     int channel = -1;    // CHANNEL_*; -1: the radiance, no channel
     std::string light;   // CHANNEL_LIGHT's light, by name
+    bool srgb = false;   // the display image sRGB-encoded (shownChannel), for colours
     bool operator==(const ChannelRequest&) const = default;
 };
 
@@ -24,9 +25,6 @@ std::string channelName(const ChannelRequest& request);
 std::string channelNameList();
 // The fixed names, in order, without light:NAME.
 std::vector<std::string> fixedChannelNames();
-// Whether the channel holds signed unit vectors (normals, tangent, handedness): a PNG shows
-// them as v / 2 + 1/2.
-bool channelIsSigned(int channel);
 
 // Where the channel's lights are in packEnabledLights(lights)' order: the one asked for (-1 none,
 // -2 the environment light of that name) and the key light D, G and F are read towards (the

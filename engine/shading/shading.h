@@ -12,9 +12,9 @@ using std::sqrt;
 using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
-#include "channels.glsl"
 #include "lights.glsl"
 #include "display.glsl"
+#include "channels.glsl"
 #include "texture.glsl"
 // The prefilter's source on the CPU (ibl.glsl): any trilinear lookup of (direction, mip).
 using EnvironmentSource = const std::function<vec3(vec3, real)>&;

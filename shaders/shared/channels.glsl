@@ -1,5 +1,5 @@
 // The inspector's debug channels (docs/INSPECTOR.md): what the shader computed at a pixel, as
-// data. Shared GLSL / C++ like brdf.glsl (include after it): shade.frag with PATINA_CHANNEL
+// data. Shared GLSL / C++ like brdf.glsl (include after it and display.glsl): shade.frag with PATINA_CHANNEL
 // writes channelValue instead of the radiance, and the CPU twin (engine/reference/channels.h)
 // calls the same function on the same inputs, so the two cannot drift.
 
@@ -62,6 +62,27 @@ struct ChannelInputs {
     vec3 light;            // the one light asked for, both lobes
     vec3 radiance;         // what the pixel shows, before exposure
 };
+
+// Whether the channel holds signed unit vectors (normals, tangent, handedness).
+PATINA_INLINE bool channelIsSigned(int channel) {
+    return channel == CHANNEL_GEOMETRY_NORMAL || channel == CHANNEL_SHADING_NORMAL || channel == CHANNEL_TANGENT ||
+           channel == CHANNEL_BITANGENT_SIGN;
+}
+
+// A channel's value as a display shows it, data not light: no exposure, no tone map; a signed
+// vector as v / 2 + 1/2; clamped to [0, 1] with NaN as 0; sRGB-encoded only when asked (for
+// looking at colours). The GPU's display image and `render --channel`'s PNG both.
+PATINA_INLINE real shownChannelComponent(real value, bool signedValue, bool srgb) {
+    real v = signedValue ? value * 0.5f + 0.5f : value;
+    v = v >= 0.0f ? min(v, 1.0f) : 0.0f;   // NaN fails the test
+    return srgb ? srgbEncode(v) : v;
+}
+
+PATINA_INLINE vec3 shownChannel(int channel, vec3 value, bool srgb) {
+    bool signedValue = channelIsSigned(channel);
+    return vec3(shownChannelComponent(value.x, signedValue, srgb), shownChannelComponent(value.y, signedValue, srgb),
+                shownChannelComponent(value.z, signedValue, srgb));
+}
 
 // 1 where any component of v is NaN, infinite or negative, respectively.
 PATINA_INLINE vec3 invalidRadiance(vec3 v) {

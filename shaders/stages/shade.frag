@@ -106,6 +106,7 @@ vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
 // of the radiance, from every light and the environment by the split sum. Indices into the block:
 uniform int uChannelLight;   // CHANNEL_LIGHT's light; -1 none, -2 the environment
 uniform int uKeyLight;       // the light D, G and F are read towards; -1 none
+uniform bool uChannelSrgb;   // the display value sRGB-encoded (shownChannel)
 #ifndef PATINA_TEXTURED
 uniform float uChannelAlpha;   // the item's alpha (BLEND's factor), which only maps otherwise read
 #endif
@@ -184,7 +185,7 @@ void main() {
     fragColor = vec4(channel, 1.0f);
 #endif
 #ifdef PATINA_DISPLAY_OUTPUT
-    displayColor = vec4(clamp(channel, 0.0f, 1.0f), 1.0f);
+    displayColor = vec4(shownChannel(PATINA_CHANNEL, channel, uChannelSrgb), 1.0f);
 #endif
     return;
 #endif

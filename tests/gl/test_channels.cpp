@@ -9,6 +9,7 @@
 
 #include "files/input_error.h"
 #include "gl/renderer.h"
+#include "image/display_image.h"
 #include "reference/channel_image.h"
 #include "reference/pixel_surfaces.h"
 #include "scene/channel.h"
@@ -90,6 +91,25 @@ TEST_F(Channels, TheBackgroundOfAChannelIsZero) {
     const HdrImage image = gpu(test::preparedDefault(), *channelFromName("base-color"));
     EXPECT_EQ(test::pixel(image, 0, 0), glm::vec3(0.0f));
     EXPECT_EQ(test::pixel(image, kSize / 2, kSize / 2), test::preparedDefault().scene.material.baseColor);
+}
+
+// The GPU's display image of a channel is the shared shownChannel of its values, as the CLI's
+// PNG is: signed normals around mid-grey, colours sRGB-encoded only when asked.
+TEST_F(Channels, TheDisplayImageShowsTheChannelAsTheClisPngDoes) {
+    for (const char* name : {"shading-normal", "base-color"}) {
+        for (bool srgb : {false, true}) {
+            RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Specialised, 4);
+            settings.channel = *channelFromName(name);
+            settings.channel.srgb = srgb;
+            const RenderOutput output = renderer_.render(test::preparedDefault(), settings);
+            const LdrImage expected = channelDisplayImage(output.hdr, settings.channel.channel, srgb);
+            int differing = 0;
+            for (size_t i = 0; i < expected.rgba.size(); ++i) {
+                differing += std::abs(int(expected.rgba[i]) - int(output.ldr.rgba[i])) > 1;
+            }
+            EXPECT_EQ(differing, 0) << name << (srgb ? " sRGB" : "");
+        }
+    }
 }
 
 // The lobes add up: diffuse + specular-lighting (every light and the environment, occlusion
