@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include "files/input_error.h"
 #include "panel_guard.h"
 #include "panel_layout.h"
 #include "panels/panels.h"
@@ -92,6 +93,18 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
     }
     ImGui::EndTabBar();
 }
+// The light a channel shows was renamed, removed or switched off: the picture again, and why.
+void keepChannelShowable(EditorState& state) {
+    if (state.channel.channel != shader::CHANNEL_LIGHT) {
+        return;
+    }
+    try {
+        channelLights(renderedScene(state).lights, state.channel);
+    } catch (const InputError&) {
+        state.status = "The viewport shows the picture again: no enabled light \"" + state.channel.light + "\" to show";
+        state.channel = {};
+    }
+}
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
@@ -100,6 +113,8 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         finishModelLoad(state);
     }
     services.environmentShading = state.environmentShading;
+    keepChannelShowable(state);
+    services.channel = state.channel;
     resolveEnvironmentShown(state);
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });

@@ -43,7 +43,7 @@ EditorServices::EditorServices(std::shared_ptr<AssetCache> assets)
 unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes,
                                          Shown shown, int samples) {
     ViewImage& image = view(shown);
-    ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading};
+    ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading, channel};
     if (image.drawn != key) {
         RenderSettings settings;
         settings.width = width;
@@ -51,6 +51,7 @@ unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, 
         settings.path = passes;
         settings.samples = samples;
         settings.environment = environmentShading;
+        settings.channel = channel;
         settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
         image.drawn.reset();   // until the draw succeeds

@@ -40,6 +40,7 @@ public:
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
     int viewportWidth = 0, viewportHeight = 0;   // set by the viewport panel
     EnvironmentShading environmentShading;        // EditorState's, set once a frame
+    ChannelRequest channel;                       // the viewport's (Interaction::channel), set once a frame
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
 
     // What the viewport shows for `shown`, read back (for tests and automation).
@@ -86,6 +87,7 @@ private:
         RenderPath path = RenderPath::Single;
         int samples = 4;
         EnvironmentShading environment;
+        ChannelRequest channel;
         bool operator==(const ViewKey&) const = default;
     };
     struct ViewImage {

@@ -4,6 +4,7 @@
 #include "gl/environment_method.h"
 #include "part_picking.h"
 #include "gl/render_path.h"
+#include "scene/channel.h"
 #include "scene/scene.h"
 
 namespace patina::editor {
@@ -44,6 +45,9 @@ struct Interaction {
     // How the environment is shaded in the viewport and screenshots (Advanced; not saved).
     EnvironmentShading environmentShading;
     LobeSettings lobe;
+    // View > Channel: a debug channel the viewport shows instead of the picture (scene/channel.h;
+    // channel -1: the picture). Screenshots stay the picture.
+    ChannelRequest channel;
 };
 
 void toggleSolo(Interaction& interaction, int index);

@@ -981,6 +981,56 @@ TEST_F(EditorUi, ResearchControlsAreBehindAdvanced) {
     }
 }
 
+// View > Channel shows a debug channel instead of the picture, labelled, in both comparison
+// views too; a light channel whose light goes away falls back to the picture and says so; Picture
+// goes back. Screenshots stay the picture.
+TEST_F(EditorUi, TheViewMenuShowsAChannelInsteadOfThePicture) {
+    const LdrImage picture = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:base-color"));
+    ASSERT_EQ(channelName(state_.channel), "base-color");
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("channel label"));
+    const LdrImage channel = services_->viewportPixels(EditorServices::Shown::Edited);
+    ASSERT_EQ(channel.width, picture.width);
+    // The sphere's middle shows the base colour as data: the linear value times 255.
+    const uint8_t* middle = &channel.rgba[(size_t(channel.height / 2) * size_t(channel.width) + size_t(channel.width / 2)) * 4];
+    EXPECT_NEAR(middle[0], std::lround(state_.scene.material.baseColor.r * 255.0f), 1);
+    EXPECT_NEAR(middle[1], std::lround(state_.scene.material.baseColor.g * 255.0f), 1);
+    EXPECT_GT(differingPixels(picture, channel), 1000);
+
+    click(centreOf("Set A"));
+    for (const char* view : {"Split", "Side by side"}) {
+        click(centreOf(view));
+        frames(2);
+        EXPECT_TRUE(itemsOfLastFrame().contains("channel label")) << view;
+    }
+    click(centreOf("Single"));
+
+    const std::string name = state_.scene.lights[0].name;
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:light:" + name));
+    EXPECT_EQ(state_.channel.light, name);
+    state_.scene.lights[0].enabled = false;
+    frames(2);
+    EXPECT_EQ(state_.channel.channel, -1);
+    EXPECT_NE(state_.status.find("picture again"), std::string::npos) << state_.status;
+    state_.scene.lights[0].enabled = true;
+
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:shading-normal"));
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:picture"));
+    frames(2);
+    EXPECT_EQ(state_.channel.channel, -1);
+    EXPECT_FALSE(itemsOfLastFrame().contains("channel label"));
+    EXPECT_EQ(differingPixels(picture, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
+}
+
 // With the gizmos hidden (View menu), a drag where a light's dot was orbits the camera.
 TEST_F(EditorUi, HiddenGizmosCannotBeGrabbed) {
     const Light lamp = onlyALamp();

@@ -125,6 +125,41 @@ void drawScreenshotSettings(EditorState& state) {
     recordItem("Screenshot folder", "Where F12 writes screenshots (made when missing)");
 }
 
+// View > Channel: the picture, a debug channel, or one light's share (docs/INSPECTOR.md).
+void drawChannelMenu(EditorState& state) {
+    const bool open = ImGui::BeginMenu("Channel");
+    recordItem("Channel", "Show the data behind the picture: a value the shader computed, per pixel");
+    if (!open) {
+        return;
+    }
+    if (ImGui::MenuItem("Picture", nullptr, state.channel.channel < 0)) {
+        state.channel = {};
+    }
+    recordItem("channel:picture", "The shaded picture, with exposure and tone map");
+    ImGui::Separator();
+    for (const std::string& name : fixedChannelNames()) {
+        const ChannelRequest request = *channelFromName(name);
+        if (ImGui::MenuItem(name.c_str(), nullptr, state.channel.channel == request.channel)) {
+            state.channel = {request.channel, "", state.channel.srgb};
+        }
+        recordItem("channel:" + name);
+    }
+    ImGui::Separator();
+    for (const Light& light : renderedScene(state).lights) {
+        const std::string label = "light: " + light.name;
+        const bool shown = state.channel.channel == shader::CHANNEL_LIGHT && state.channel.light == light.name;
+        if (ImGui::MenuItem(label.c_str(), nullptr, shown, light.enabled)) {
+            state.channel = {shader::CHANNEL_LIGHT, light.name, state.channel.srgb};
+        }
+        recordItem("channel:light:" + light.name, light.enabled ? "This light's share of the picture"
+                                                                : "Switched off (or soloed out): nothing to show");
+    }
+    ImGui::Separator();
+    ImGui::MenuItem("sRGB-encode channel", nullptr, &state.channel.srgb);
+    recordItem("sRGB-encode channel", "Show the channel's values sRGB-encoded (for colours); off: the values themselves");
+    ImGui::EndMenu();
+}
+
 void drawViewMenu(EditorState& state) {
     const bool viewMenu = ImGui::BeginMenu("View");
     if (!viewMenu) {
@@ -141,6 +176,7 @@ void drawViewMenu(EditorState& state) {
     recordItem("Lobe panel", "Show the BRDF lobe under the viewport; hidden, the viewport takes its room");
     ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
     recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
+    drawChannelMenu(state);
     drawUiSizeMenu(state);
     ImGui::Separator();
     drawScreenshotSettings(state);

@@ -545,6 +545,22 @@ void drawEnvironmentProgress(const EditorState& state, const ViewArea& area) {
 }
 
 // Overlay (Advanced): cost of the last render and what was drawn.
+// Which channel the viewport shows instead of the picture, at its top left: data, not light.
+void drawChannelLabel(const EditorState& state, const ViewArea& area) {
+    if (state.channel.channel < 0) {
+        return;
+    }
+    const std::string text = "Channel: " + channelName(state.channel) + (state.channel.srgb ? " (sRGB)" : " (values)") +
+                             "   View > Channel > Picture to go back";
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 at(area.origin.x + px(8), area.origin.y + px(8));
+    draw->AddRectFilled(ImVec2(at.x - px(4), at.y - px(3)),
+                        ImVec2(at.x + ImGui::CalcTextSize(text.c_str()).x + px(4), at.y + ImGui::GetTextLineHeight() + px(3)),
+                        IM_COL32(0, 0, 0, 170));
+    draw->AddText(at, IM_COL32(255, 220, 120, 255), text.c_str());
+    recordArea("channel label", at, ImVec2(at.x + ImGui::CalcTextSize(text.c_str()).x, at.y + ImGui::GetTextLineHeight()));
+}
+
 void drawRenderOverlay(const EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
     int enabled = 0;
     for (const Light& light : b.lights) {
@@ -582,6 +598,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
         drawSideLabels(state, area.origin, area.size);
     }
     drawEnvironmentProgress(state, area);
+    drawChannelLabel(state, area);
     if (state.showAdvanced) {
         drawRenderOverlay(state, services, b, area);
     }
