@@ -553,7 +553,9 @@ void drawChannelLabel(const EditorState& state, const ViewArea& area) {
     const std::string text = "Channel: " + channelName(state.channel) + (state.channel.srgb ? " (sRGB)" : " (values)") +
                              "   View > Channel > Picture to go back";
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 at(area.origin.x + px(8), area.origin.y + px(8));
+    // Under the comparison's side labels, which take the top corners.
+    const bool labelled = state.compareA && state.compareView != CompareView::Single;
+    const ImVec2 at(area.origin.x + px(8), area.origin.y + px(8) + (labelled ? ImGui::GetTextLineHeight() + px(10) : 0.0f));
     draw->AddRectFilled(ImVec2(at.x - px(4), at.y - px(3)),
                         ImVec2(at.x + ImGui::CalcTextSize(text.c_str()).x + px(4), at.y + ImGui::GetTextLineHeight() + px(3)),
                         IM_COL32(0, 0, 0, 170));
