@@ -64,6 +64,24 @@ unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, 
     return image.target.displayTexture();
 }
 
+const PixelStory* EditorServices::pixelStory(const PreparedScene& scene, int width, int height, int x, int y) {
+    if (x < 0 || y < 0 || x >= width || y >= height) {
+        return nullptr;
+    }
+    ViewKey key{renderInputs(scene), width, height};
+    if (readOut_.key != key) {
+        readOut_ = {};
+        readOut_.surfaces = rasterizeSurfaces(scene, width, height);
+        readOut_.key = std::move(key);
+    }
+    if (readOut_.x != x || readOut_.y != y) {
+        readOut_.story = patina::pixelStory(scene, *readOut_.surfaces, x, y);
+        readOut_.x = x;
+        readOut_.y = y;
+    }
+    return readOut_.story ? &*readOut_.story : nullptr;
+}
+
 RenderOutput EditorServices::renderImage(const PreparedScene& scene, int width, int height, RenderPath passes) {
     RenderSettings settings;
     settings.width = width;

@@ -8,6 +8,7 @@
 #include "accuracy/accuracy.h"
 #include "editor_state.h"
 #include "gl/texture.h"
+#include "reference/pixel_story.h"
 #include "scene/render_inputs.h"
 #include "keys.h"
 
@@ -42,6 +43,11 @@ public:
     EnvironmentShading environmentShading;        // EditorState's, set once a frame
     ChannelRequest channel;                       // the viewport's (Interaction::channel), set once a frame
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
+
+    // The inspector's read-out of pixel (x, y) of a width x height picture of `scene`
+    // (reference/pixel_story.h): null on the background or outside. The surfaces under the
+    // picture are rasterised on the CPU once per scene and size, so hovering costs nothing more.
+    const PixelStory* pixelStory(const PreparedScene& scene, int width, int height, int x, int y);
 
     // What the viewport shows for `shown`, read back (for tests and automation).
     LdrImage viewportPixels(Shown shown) const { return renderer_->readBack(view(shown).target, false).ldr; }
@@ -96,6 +102,12 @@ private:
     };
     std::shared_ptr<AssetCache> assets_;
     std::unique_ptr<Renderer> renderer_;
+    struct ReadOut {
+        std::optional<ViewKey> key;   // the scene and size the surfaces are of
+        std::optional<PixelSurfaces> surfaces;
+        int x = -1, y = -1;
+        std::optional<PixelStory> story;   // of (x, y)
+    } readOut_;
     ViewImage views_[2];   // by Shown
     double lastRenderMilliseconds_ = 0.0, lastGpuMilliseconds_ = 0.0;
     struct Thumbnail {

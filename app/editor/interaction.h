@@ -1,5 +1,8 @@
 #pragma once
 #include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "gl/environment_method.h"
 #include "part_picking.h"
@@ -48,6 +51,11 @@ struct Interaction {
     // View > Channel: a debug channel the viewport shows instead of the picture (scene/channel.h;
     // channel -1: the picture). Screenshots stay the picture.
     ChannelRequest channel;
+    // View > Pixel read-out: hovering the picture (Single view) tells the pixel's story; a
+    // Ctrl+click pins it, where in the picture as fractions of its size, so a pin stays on its
+    // spot when the viewport is resized.
+    bool pixelReadOut = false;
+    std::vector<glm::vec2> pins;
 };
 
 void toggleSolo(Interaction& interaction, int index);

@@ -1031,6 +1031,47 @@ TEST_F(EditorUi, TheViewMenuShowsAChannelInsteadOfThePicture) {
     EXPECT_EQ(differingPixels(picture, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
 
+// View > Pixel read-out: hovering tells the pixel's story, Ctrl+click pins it (picking no part),
+// the pin is listed, copied as CSV with the values the viewport shows there, and removable.
+TEST_F(EditorUi, PixelReadOutPinsAPixelWithTheValuesTheViewportShows) {
+    click(centreOf("menu:View"));
+    click(centreOf("Pixel read-out"));
+    ASSERT_TRUE(state_.pixelReadOut);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const ImVec2 middle((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f);
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = true;
+    click(middle);
+    io.KeyCtrl = false;
+    ASSERT_EQ(state_.pins.size(), 1u);
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("unpin:1"));
+    click(centreOf("Copy pins as CSV"));
+    const std::string csv = ImGui::GetClipboardText();
+    ASSERT_EQ(csv.rfind("pin,x,y,item,material,radiance_r", 0), 0u) << csv;
+    // The pin's line: its pixel and its displayed bytes, as the viewport (MSAA) shows them.
+    const std::string line = csv.substr(csv.find('\n') + 1);
+    std::vector<std::string> fields;
+    for (size_t start = 0, comma; start <= line.size(); start = comma + 1) {
+        comma = line.find_first_of(",\n", start);
+        fields.push_back(line.substr(start, comma - start));
+        if (comma == std::string::npos || line[comma] == '\n') {
+            break;
+        }
+    }
+    ASSERT_GE(fields.size(), 11u) << line;
+    const int x = std::stoi(fields[1]), y = std::stoi(fields[2]);
+    EXPECT_NEAR(x, int(middle.x - min.x), 1);
+    const LdrImage shown = services_->viewportPixels(EditorServices::Shown::Edited);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(std::stod(fields[size_t(8 + c)]), shown.rgba[(size_t(y) * size_t(shown.width) + size_t(x)) * 4 + size_t(c)], 2)
+            << line;
+    }
+    click(centreOf("unpin:1"));
+    EXPECT_TRUE(state_.pins.empty());
+}
+
 // With the gizmos hidden (View menu), a drag where a light's dot was orbits the camera.
 TEST_F(EditorUi, HiddenGizmosCannotBeGrabbed) {
     const Light lamp = onlyALamp();

@@ -177,6 +177,8 @@ void drawViewMenu(EditorState& state) {
     ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
     recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
     drawChannelMenu(state);
+    ImGui::MenuItem("Pixel read-out", nullptr, &state.pixelReadOut);
+    recordItem("Pixel read-out", "Hover the picture to see what gives a pixel its colour; Ctrl+click pins it");
     drawUiSizeMenu(state);
     ImGui::Separator();
     drawScreenshotSettings(state);

@@ -11,6 +11,10 @@ void drawViewportPanel(EditorState& state, EditorServices& services);
 void drawLobePanel(EditorState& state);
 void drawAccuracyPanel(EditorState& state, EditorServices& services);
 void drawPresetsPanel(EditorState& state, EditorServices& services);
+// View > Pixel read-out over the picture of `shown` (origin, size on screen): the hovered
+// pixel's story, Ctrl+click pins, and the Pinned pixels window.
+void drawPixelReadOut(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
+                      ImVec2 size, bool hovered);
 void drawMenuBar(EditorState& state, EditorServices& services);
 // Writes the screenshot F12 asked for in the frame before (EditorState::screenshotRequested).
 void takeRequestedScreenshot(EditorState& state, EditorServices& services);

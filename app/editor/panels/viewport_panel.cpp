@@ -490,7 +490,9 @@ void drawPartOutline(EditorState& state, const ViewArea& area) {
 // it, in the half it falls in when Side by side.
 void pickOnClick(EditorState& state, const ViewArea& area) {
     const ImGuiIO& io = ImGui::GetIO();
+    // Ctrl+click pins a pixel while the read-out is on, and picks nothing.
     if (!state.model || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.KeyShift ||
+        (io.KeyCtrl && state.pixelReadOut) ||
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] > px(3.0f) * px(3.0f)) {
         return;
     }
@@ -601,6 +603,12 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     }
     drawEnvironmentProgress(state, area);
     drawChannelLabel(state, area);
+    // The read-out tells the story of what Single shows (a comparison's halves are other pictures).
+    if (!state.compareA || state.compareView == CompareView::Single) {
+        const ImVec2 end(area.origin.x + area.size.x, area.origin.y + area.size.y);
+        drawPixelReadOut(state, services, preparedScene(state, b), area.origin, area.size,
+                         ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(area.origin, end));
+    }
     if (state.showAdvanced) {
         drawRenderOverlay(state, services, b, area);
     }

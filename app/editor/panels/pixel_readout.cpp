@@ -1,0 +1,169 @@
+// The inspector in the editor (docs/INSPECTOR.md): with View > Pixel read-out, the hovered
+// pixel's story (reference/pixel_story.h, the CPU twin of the shaders) as a tooltip, Ctrl+click
+// pins, each pin marked on the picture and listed in the Pinned pixels window (removable, copied
+// as CSV).
+#include <cstdio>
+#include <string>
+
+#include <imgui.h>
+
+#include "panels.h"
+#include "ui_scale.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+namespace {
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+    char text[128];
+    std::snprintf(text, sizeof text, pattern, a, b, c);
+    return text;
+}
+
+std::string vec3Text(glm::vec3 v) {
+    return format("%.4g  %.4g  %.4g", v.x, v.y, v.z);
+}
+
+// The story a line each, as the tooltip and the pins' window show it.
+std::vector<std::string> storyLines(const PixelStory& s) {
+    std::vector<std::string> lines{
+        "pixel " + std::to_string(s.x) + ", " + std::to_string(s.y) +
+            (s.item.empty() ? "" : "   " + s.item + " (" + s.material + ")"),
+        "radiance      " + vec3Text(s.radiance),
+        "shown (sRGB)  " + format("%.0f  %.0f  %.0f", s.display[0], s.display[1], s.display[2]),
+        "base colour   " + vec3Text(s.baseColor) + format("   alpha %.3g", s.alpha),
+        format("roughness %.3g  metallic %.3g  specular %.3g", s.roughness, s.metallic, s.specular),
+        "F0            " + vec3Text(s.f0),
+        "N             " + vec3Text(s.normal) + format("   N.V %.3g", s.NoV),
+        "UV0           " + format("%.4g  %.4g", s.uv0.x, s.uv0.y)};
+    if (!s.keyLight.empty()) {
+        lines.push_back(format("D %.4g  G %.4g  F ", s.D, s.G) + vec3Text(s.F) + "  (" + s.keyLight + ")");
+    }
+    for (const LightShare& light : s.lights) {
+        lines.push_back(light.name + ": diffuse " + vec3Text(light.diffuse) + ", specular " + vec3Text(light.specular));
+    }
+    if (s.environment) {
+        lines.push_back(s.environment->name + ": diffuse " + vec3Text(s.environment->diffuse) + ", specular " +
+                        vec3Text(s.environment->specular));
+    }
+    if (s.emission != glm::vec3(0.0f)) {
+        lines.push_back("emission      " + vec3Text(s.emission));
+    }
+    return lines;
+}
+
+std::string csvHeader() {
+    return "pin,x,y,item,material,radiance_r,radiance_g,radiance_b,shown_r,shown_g,shown_b,base_r,base_g,base_b,alpha,"
+           "roughness,metallic,specular,f0_r,f0_g,f0_b,n_x,n_y,n_z,nov,u0,v0,d,g,f_r,f_g,f_b\n";
+}
+
+std::string csvLine(size_t pin, const PixelStory& s) {
+    std::string line = std::to_string(pin + 1) + "," + std::to_string(s.x) + "," + std::to_string(s.y) + ",\"" +
+                       s.item + "\",\"" + s.material + "\"";
+    auto add = [&](double value) { line += format(",%.9g", value); };
+    for (float v : {s.radiance.x, s.radiance.y, s.radiance.z}) add(v);
+    for (uint8_t v : s.display) add(v);
+    for (float v : {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.alpha, s.roughness, s.metallic, s.specular,
+                    s.f0.x, s.f0.y, s.f0.z, s.normal.x, s.normal.y, s.normal.z, s.NoV, s.uv0.x, s.uv0.y, s.D, s.G,
+                    s.F.x, s.F.y, s.F.z}) {
+        add(v);
+    }
+    return line + "\n";
+}
+
+glm::ivec2 pinPixel(glm::vec2 pin, int width, int height) {
+    return {std::min(int(pin.x * float(width)), width - 1), std::min(int(pin.y * float(height)), height - 1)};
+}
+
+// Every pin's story, recomputed for the scene as it is now.
+void drawPinsWindow(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
+                    int width, int height) {
+    if (state.pins.empty()) {
+        return;
+    }
+    // First over the viewport's lower part, clear of the panels' sliders.
+    ImGui::SetNextWindowPos(ImVec2(origin.x + px(8), origin.y + float(height) * 0.55f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(px(520), px(300)), ImGuiCond_FirstUseEver);
+    bool open = true;
+    if (!ImGui::Begin("Pinned pixels", &open)) {
+        ImGui::End();
+        return;
+    }
+    std::string csv = csvHeader();
+    for (size_t i = 0; i < state.pins.size(); ++i) {
+        const glm::ivec2 at = pinPixel(state.pins[i], width, height);
+        ImGui::PushID(int(i));
+        const bool remove = ImGui::SmallButton("x");
+        recordItem("unpin:" + std::to_string(i + 1), "Remove this pin");
+        ImGui::SameLine();
+        if (const PixelStory* story = services.pixelStory(shown, width, height, at.x, at.y)) {
+            const std::vector<std::string> lines = storyLines(*story);
+            ImGui::Text("%zu  %s", i + 1, lines[0].c_str());
+            for (size_t l = 1; l < lines.size(); ++l) {
+                ImGui::TextUnformatted(("     " + lines[l]).c_str());
+            }
+            csv += csvLine(i, *story);
+        } else {
+            ImGui::Text("%zu  pixel %d, %d: no surface here now", i + 1, at.x, at.y);
+        }
+        ImGui::PopID();
+        if (remove) {
+            state.pins.erase(state.pins.begin() + long(i));
+            break;
+        }
+    }
+    ImGui::Separator();
+    if (ImGui::Button("Copy as CSV")) {
+        ImGui::SetClipboardText(csv.c_str());
+        state.status = "Copied " + std::to_string(state.pins.size()) + " pinned pixel(s) as CSV";
+    }
+    recordItem("Copy pins as CSV", "Every pin's values, a line each, for a spreadsheet");
+    ImGui::SameLine();
+    if (ImGui::Button("Clear pins")) {
+        state.pins.clear();
+    }
+    recordItem("Clear pins");
+    ImGui::End();
+    if (!open) {
+        state.pins.clear();
+    }
+}
+}  // namespace
+
+void drawPixelReadOut(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
+                      ImVec2 size, bool hovered) {
+    if (!state.pixelReadOut) {
+        return;
+    }
+    const int width = int(size.x), height = int(size.y);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (size_t i = 0; i < state.pins.size(); ++i) {
+        const ImVec2 at(origin.x + state.pins[i].x * size.x, origin.y + state.pins[i].y * size.y);
+        draw->AddCircle(at, px(5), IM_COL32(255, 220, 120, 255), 12, px(2));
+        draw->AddText(ImVec2(at.x + px(6), at.y - px(16)), IM_COL32(255, 220, 120, 255), std::to_string(i + 1).c_str());
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool busy = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
+                      ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+    if (hovered && !busy) {
+        const int x = int(io.MousePos.x - origin.x), y = int(io.MousePos.y - origin.y);
+        const PixelStory* story = services.pixelStory(shown, width, height, x, y);
+        ImGui::BeginTooltip();
+        if (story) {
+            for (const std::string& line : storyLines(*story)) {
+                ImGui::TextUnformatted(line.c_str());
+            }
+            ImGui::TextDisabled("Ctrl+click pins this pixel");
+        } else {
+            ImGui::Text("pixel %d, %d: background, no surface", x, y);
+        }
+        ImGui::EndTooltip();
+    }
+    if (hovered && io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= px(3.0f) * px(3.0f)) {
+        state.pins.push_back({(io.MousePos.x - origin.x) / size.x, (io.MousePos.y - origin.y) / size.y});
+    }
+    drawPinsWindow(state, services, shown, origin, width, height);
+}
+
+}  // namespace patina::editor
