@@ -299,29 +299,43 @@ std::vector<uint8_t> pattern(int width, int height, unsigned seed) {
     return rgba;
 }
 
+// A material with all five maps, on images 0 to 4 (patterns()), a normal map transform, emission
+// and MASK; roughness 0.9 (D is steep at low roughness, where the filters' rounding would show).
+ModelMaterial everyMap() {
+    ModelMaterial mapped = factors(glm::vec3(0.9f, 0.8f, 0.7f));
+    mapped.factors.metallic = 0.6f;
+    mapped.factors.roughness = 0.9f;
+    int image = 0;
+    for (const MapOf<TextureSlot>& map : mapsOf(mapped)) {
+        map.slot->image = image++;
+    }
+    mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
+    mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
+    mapped.alphaMode = AlphaMode::Mask;
+    mapped.alphaCutoff = 0.4f;
+    return mapped;
+}
+
+// Five 6 x 5 patterns from `seed` on.
+std::vector<ModelImage> patterns(unsigned seed) {
+    std::vector<ModelImage> images;
+    for (unsigned i = 0; i < 5; ++i) {
+        images.push_back(image(6, 5, pattern(6, 5, seed + i)));
+    }
+    return images;
+}
+
 // The CPU twin (reference/surface_maps.h) shades a textured item as the GPU does: every map at
 // once, bilinear, under the analytic lights (which the ground truth adds exactly), MASK's
 // cut-outs included. They differ by the GPU's filtering arithmetic (8-bit weights on llvmpipe)
 // and its sRGB decode.
 TEST_F(ModelMaps, TheGroundTruthShadesTheSameMapsAsTheGpu) {
     const Scene scene = quadScene();
-    ModelMaterial mapped = factors(glm::vec3(0.9f, 0.8f, 0.7f));
-    mapped.factors.metallic = 0.6f;
-    mapped.factors.roughness = 0.9f;
-    int image = 0;
-    for (TextureSlot* slot : {&mapped.baseColor, &mapped.metallicRoughness, &mapped.normal, &mapped.occlusion,
-                              &mapped.emissive}) {
-        slot->image = image++;
-        slot->sampler.wrapS = TextureWrap::MirroredRepeat;
+    ModelMaterial mapped = everyMap();
+    for (const MapOf<TextureSlot>& map : mapsOf(mapped)) {
+        map.slot->sampler.wrapS = TextureWrap::MirroredRepeat;
     }
-    mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
-    mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
-    mapped.alphaMode = AlphaMode::Mask;
-    mapped.alphaCutoff = 0.4f;
-    std::vector<ModelImage> images;
-    for (int i = 0; i < 5; ++i) {
-        images.push_back(::patina::image(6, 5, pattern(6, 5, 7u + unsigned(i))));
-    }
+    const std::vector<ModelImage> images = patterns(7u);
     const auto model = oneQuad(quad(glm::vec3(0.1f, 0.0f, 1.0f)), mapped, images);
     const PreparedScene prepared{scene, std::make_shared<const Mesh>(model->primitives[0]), nullptr, model};
     const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kWidth, kHeight);
@@ -356,23 +370,9 @@ TEST_F(ModelMaps, TheGroundTruthShadesTheSameMapsAsTheGpu) {
 // two filters' arithmetic at texel edges, as the shading above.
 TEST_F(ModelMaps, EveryChannelOfATexturedItemIsTheCpuTwins) {
     const Scene scene = quadScene();
-    ModelMaterial mapped = factors(glm::vec3(0.9f, 0.8f, 0.7f));
-    mapped.factors.metallic = 0.6f;
-    mapped.factors.roughness = 0.9f;   // D is steep at low roughness: the filters' rounding would show
-    int image = 0;
-    for (TextureSlot* slot : {&mapped.baseColor, &mapped.metallicRoughness, &mapped.normal, &mapped.occlusion,
-                              &mapped.emissive}) {
-        slot->image = image++;
-    }
-    mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
+    ModelMaterial mapped = everyMap();
     mapped.occlusion.texCoord = 1;
-    mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
-    mapped.alphaMode = AlphaMode::Mask;
-    mapped.alphaCutoff = 0.4f;
-    std::vector<ModelImage> images;
-    for (int i = 0; i < 5; ++i) {
-        images.push_back(::patina::image(6, 5, pattern(6, 5, 3u + unsigned(i))));
-    }
+    std::vector<ModelImage> images = patterns(3u);
     // A normal map as they are: tilts within 30 degrees of the surface's normal (random texels
     // would turn normals away from the viewer, where normalising magnifies the filters' rounding).
     for (size_t i = 0; i < images[2].rgba.size(); i += 4) {
