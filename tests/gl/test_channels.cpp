@@ -186,6 +186,33 @@ TEST_F(Channels, TheLightsChannelsAddUpToTheLighting) {
     }
 }
 
+// `invalid` flags what the renderer computed, on the GPU: a light of negative intensity (which a
+// script can set) makes negative radiance where it lights, blue; elsewhere the channel is 0.
+TEST_F(Channels, InvalidFlagsNegativeRadianceOnTheGpu) {
+    Scene scene = defaultScene();
+    scene.lights = {scene.lights.front()};   // the warm key alone, no environment
+    scene.lights[0].intensity = -5.0f;
+    const PreparedScene prepared = test::prepared(scene);
+    const HdrImage invalid = gpu(prepared, *channelFromName("invalid"));
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+    const HdrImage twin = channelImage(prepared, surfaces, *channelFromName("invalid"));
+    int flagged = 0, covered = 0, agreeing = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec3 value = test::pixel(invalid, x, y);
+            EXPECT_EQ(value.r, 0.0f);
+            EXPECT_EQ(value.g, 0.0f);
+            flagged += value.b == 1.0f;
+            if (inside(surfaces, x, y)) {
+                ++covered;
+                agreeing += value == test::pixel(twin, x, y);   // rounding may differ at the terminator
+            }
+        }
+    }
+    EXPECT_GT(flagged, 500);
+    EXPECT_GE(agreeing, covered * 99 / 100);
+}
+
 // A channel asked for by a name the scene's lights lack is refused with the names there are.
 TEST_F(Channels, AnUnknownLightIsRefusedWithTheLightsThereAre) {
     EXPECT_THROW(
