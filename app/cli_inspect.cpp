@@ -26,6 +26,7 @@ Json shareJson(const LightShare& share) {
 }
 
 Json storyJson(const PixelStory& s) {
+    const shader::ChannelInputs& c = s.inputs;
     Json lights = Json::array();
     for (const LightShare& share : s.lights) {
         lights.push_back(shareJson(share));
@@ -34,29 +35,29 @@ Json storyJson(const PixelStory& s) {
             {"item", s.item},
             {"material", s.material},
             {"position", array(s.position)},
-            {"geometryNormal", array(s.geometryNormal)},
-            {"normal", array(s.normal)},
+            {"geometryNormal", array(c.geometryNormal)},
+            {"normal", array(c.shadingNormal)},
             {"view", array(s.view)},
-            {"uv0", array(s.uv0)},
-            {"uv1", array(s.uv1)},
-            {"tangent", array(s.tangent)},
-            {"baseColor", array(s.baseColor)},
-            {"alpha", s.alpha},
-            {"roughness", s.roughness},
-            {"metallic", s.metallic},
-            {"specular", s.specular},
-            {"f0", array(s.f0)},
-            {"diffuseColor", array(s.diffuseColor)},
-            {"occlusion", s.occlusion},
-            {"emission", array(s.emission)},
-            {"NoV", s.NoV},
+            {"uv0", array(c.uv0)},
+            {"uv1", array(c.uv1)},
+            {"tangent", array(c.tangent)},
+            {"baseColor", array(c.baseColor)},
+            {"alpha", c.alpha},
+            {"roughness", c.roughness},
+            {"metallic", c.metallic},
+            {"specular", c.specular},
+            {"f0", array(c.f0)},
+            {"diffuseColor", array(c.diffuseColor)},
+            {"occlusion", c.occlusion},
+            {"emission", array(c.emission)},
+            {"NoV", c.NoV},
             {"keyLight", s.keyLight},
-            {"D", s.D},
-            {"G", s.G},
-            {"F", array(s.F)},
+            {"D", c.D},
+            {"G", c.G},
+            {"F", array(c.F)},
             {"lights", lights},
             {"environment", s.environment ? shareJson(*s.environment) : Json(nullptr)},
-            {"radiance", array(s.radiance)},
+            {"radiance", array(c.radiance)},
             {"display", {s.display[0], s.display[1], s.display[2]}}};
 }
 }  // namespace

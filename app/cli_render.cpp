@@ -54,9 +54,8 @@ RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int 
 
 // --channel: the GPU's channel render, or with --reference the CPU twin's (reference/
 // channel_image.h); the PNG as data, the PFM untouched.
-void renderChannel(const SceneInputs& inputs, const std::string& name, bool srgb, int width, int height,
-                   bool reference, const std::string& out, const std::string& hdr) {
-    const ChannelRequest request = *channelFromName(name);   // the option's check passed it
+void renderChannel(const SceneInputs& inputs, const ChannelRequest& request, int width, int height, bool reference,
+                   const std::string& out, const std::string& hdr) {
     std::optional<HeadlessContext> context;
     if (!reference) {
         context.emplace();
@@ -78,7 +77,7 @@ void renderChannel(const SceneInputs& inputs, const std::string& name, bool srgb
         settings.maxTargetBytes = kOneOffTargetBytes;
         image = renderer.render(prepared, settings).hdr;
     }
-    const std::vector<uint8_t> png = encodePng(channelDisplayImage(image, request.channel, srgb));
+    const std::vector<uint8_t> png = encodePng(channelDisplayImage(image, request.channel, request.srgb));
     if (!hdr.empty()) {
         writeOutput(hdr, encodePfm(image));
     }
@@ -134,8 +133,10 @@ Command addRenderCommand(CLI::App& app) {
                       "--channel: the PNG sRGB-encoded, for colour channels (default: the values themselves)");
     return [options] {
         if (!options->channel.empty()) {
-            renderChannel(options->inputs, options->channel, options->channelSrgb, options->width, options->height,
-                          options->reference, options->out, options->hdr);
+            ChannelRequest request = *channelFromName(options->channel);   // the option's check passed it
+            request.srgb = options->channelSrgb;
+            renderChannel(options->inputs, request, options->width, options->height, options->reference, options->out,
+                          options->hdr);
             return;
         }
         // The context first when the GPU renders: an environment the scene names is then

@@ -93,6 +93,7 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
     }
     ImGui::EndTabBar();
 }
+
 // The light a channel shows was renamed, removed or switched off: the picture again, and why.
 void keepChannelShowable(EditorState& state) {
     if (state.channel.channel != shader::CHANNEL_LIGHT) {

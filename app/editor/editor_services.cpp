@@ -68,7 +68,7 @@ const PixelStory* EditorServices::pixelStory(const PreparedScene& scene, int wid
     if (x < 0 || y < 0 || x >= width || y >= height) {
         return nullptr;
     }
-    ViewKey key{renderInputs(scene), width, height};
+    ReadOut::Key key{renderInputs(scene), width, height};
     if (readOut_.key != key) {
         readOut_ = {};
         readOut_.surfaces = rasterizeSurfaces(scene, width, height);

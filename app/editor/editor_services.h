@@ -103,7 +103,12 @@ private:
     std::shared_ptr<AssetCache> assets_;
     std::unique_ptr<Renderer> renderer_;
     struct ReadOut {
-        std::optional<ViewKey> key;   // the scene and size the surfaces are of
+        struct Key {
+            RenderInputs inputs;
+            int width = 0, height = 0;
+            bool operator==(const Key&) const = default;
+        };
+        std::optional<Key> key;   // the scene and size the surfaces are of
         std::optional<PixelSurfaces> surfaces;
         int x = -1, y = -1;
         std::optional<PixelStory> story;   // of (x, y)

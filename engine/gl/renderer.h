@@ -77,8 +77,9 @@ struct RenderSettings {
     // measures against it.
     EnvironmentShading environment;
     // The inspector: a debug channel (scene/channel.h) written instead of the radiance, by the
-    // single path whatever `path` says, the environment by the split sum. The display image then
-    // holds the channel clamped to [0, 1], with no exposure or tone map.
+    // single path with one sample a pixel whatever `path` and `samples` say, every item opaque, the
+    // environment by the split sum. The display image then holds the channel as channels.glsl's
+    // shownChannel shows it (no exposure or tone map), the background as a value of 0.
     ChannelRequest channel;
 };
 

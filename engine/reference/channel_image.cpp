@@ -4,14 +4,11 @@
 
 #include "environment/environment.h"
 #include "scene/light_packing.h"
-#include "shading/channel_inputs.h"
 
 namespace patina {
 
-namespace {
-// What shade.frag reads at sample `i`: the maps' material, alpha, occlusion, emission, UVs and
-// tangent where the frame has maps (the item's factors, alpha 1, where it has none), else the
-// item's factors and alpha.
+// The maps' material, alpha, occlusion, emission, UVs and tangent where the frame has maps (the
+// item's factors, alpha 1, where it has none), else the item's factors and alpha.
 ChannelPoint channelPoint(const PixelSurfaces& surfaces, const std::vector<SceneDraw>& draws, size_t i) {
     const ProbeSample& sample = surfaces.samples[i];
     const size_t draw = size_t(surfaces.drawOfSample[i]);
@@ -50,25 +47,6 @@ std::optional<ChannelEnvironment> channelEnvironment(const PreparedScene& prepar
     environment.intensity = light->intensity;
     environment.rotationDegrees = light->rotationDegrees;
     return environment;
-}
-}  // namespace
-
-std::optional<shader::ChannelInputs> pixelChannelInputs(const PreparedScene& prepared, const PixelSurfaces& surfaces,
-                                                        const ChannelLights& lights, int x, int y) {
-    const int32_t i = surfaces.sampleOfPixel[size_t(y) * size_t(surfaces.width) + size_t(x)];
-    if (i < 0) {
-        return std::nullopt;
-    }
-    const std::optional<ChannelEnvironment> environment = channelEnvironment(prepared);
-    return gatherChannelInputs(prepared.scene.material.model, channelPoint(surfaces, sceneDraws(prepared), size_t(i)),
-                               packEnabledLights(prepared.scene.lights), lights.asked, lights.key,
-                               environment ? &*environment : nullptr);
-}
-
-shader::ChannelInputs sampleChannelInputs(const PreparedScene& prepared, const PixelSurfaces& surfaces, size_t i,
-                                          const std::vector<Light>& lights) {
-    return gatherChannelInputs(prepared.scene.material.model, channelPoint(surfaces, sceneDraws(prepared), i),
-                               packEnabledLights(lights), -1, -1, nullptr);
 }
 
 HdrImage channelImage(const PreparedScene& prepared, const PixelSurfaces& surfaces, const ChannelRequest& request) {

@@ -14,6 +14,7 @@
 
 #include "reference/pixel_surfaces.h"
 #include "scene/prepared_scene.h"
+#include "shading/shading.h"
 
 namespace patina {
 
@@ -28,18 +29,14 @@ struct PixelStory {
     int x = 0, y = 0;
     std::string item;       // the draw item's name (a model's node and part), "" for a built-in mesh
     std::string material;   // its material's name, "" where it has none
-    glm::vec3 position{0.0f}, geometryNormal{0.0f}, normal{0.0f}, view{0.0f};
-    glm::vec2 uv0{0.0f}, uv1{0.0f};
-    glm::vec4 tangent{0.0f};
-    // The material after its maps: channels.glsl's ChannelInputs.
-    glm::vec3 baseColor{0.0f}, f0{0.0f}, diffuseColor{0.0f}, emission{0.0f};
-    float alpha = 1.0f, roughness = 0.0f, metallic = 0.0f, specular = 0.0f, occlusion = 1.0f;
-    float NoV = 0.0f, D = 0.0f, G = 0.0f;   // D, G and F towards the key light (none: 0)
-    glm::vec3 F{0.0f};
+    glm::vec3 position{0.0f}, view{0.0f};
+    // Every channel's input at the pixel, under every light and the environment (channels.glsl):
+    // the normals, UVs and tangent, the material after its maps, D, G and F towards the key
+    // light (0 without one), the radiance (linear, before exposure).
+    shader::ChannelInputs inputs{};
     std::string keyLight;   // its name, "" without one
     std::vector<LightShare> lights;            // each enabled light but the environment
     std::optional<LightShare> environment;     // the enabled environment light's split sum
-    glm::vec3 radiance{0.0f};                  // linear, before exposure
     std::array<uint8_t, 3> display{};          // after exposure, tone map and sRGB, as a PNG holds it
 };
 

@@ -26,18 +26,19 @@ std::string vec3Text(glm::vec3 v) {
 
 // The story a line each, as the tooltip and the pins' window show it.
 std::vector<std::string> storyLines(const PixelStory& s) {
+    const shader::ChannelInputs& c = s.inputs;
     std::vector<std::string> lines{
         "pixel " + std::to_string(s.x) + ", " + std::to_string(s.y) +
             (s.item.empty() ? "" : "   " + s.item + " (" + s.material + ")"),
-        "radiance      " + vec3Text(s.radiance),
+        "radiance      " + vec3Text(c.radiance),
         "shown (sRGB)  " + format("%.0f  %.0f  %.0f", s.display[0], s.display[1], s.display[2]),
-        "base colour   " + vec3Text(s.baseColor) + format("   alpha %.3g", s.alpha),
-        format("roughness %.3g  metallic %.3g  specular %.3g", s.roughness, s.metallic, s.specular),
-        "F0            " + vec3Text(s.f0),
-        "N             " + vec3Text(s.normal) + format("   N.V %.3g", s.NoV),
-        "UV0           " + format("%.4g  %.4g", s.uv0.x, s.uv0.y)};
+        "base colour   " + vec3Text(c.baseColor) + format("   alpha %.3g", c.alpha),
+        format("roughness %.3g  metallic %.3g  specular %.3g", c.roughness, c.metallic, c.specular),
+        "F0            " + vec3Text(c.f0),
+        "N             " + vec3Text(c.shadingNormal) + format("   N.V %.3g", c.NoV),
+        "UV0           " + format("%.4g  %.4g", c.uv0.x, c.uv0.y)};
     if (!s.keyLight.empty()) {
-        lines.push_back(format("D %.4g  G %.4g  F ", s.D, s.G) + vec3Text(s.F) + "  (" + s.keyLight + ")");
+        lines.push_back(format("D %.4g  G %.4g  F ", c.D, c.G) + vec3Text(c.F) + "  (" + s.keyLight + ")");
     }
     for (const LightShare& light : s.lights) {
         lines.push_back(light.name + ": diffuse " + vec3Text(light.diffuse) + ", specular " + vec3Text(light.specular));
@@ -46,8 +47,8 @@ std::vector<std::string> storyLines(const PixelStory& s) {
         lines.push_back(s.environment->name + ": diffuse " + vec3Text(s.environment->diffuse) + ", specular " +
                         vec3Text(s.environment->specular));
     }
-    if (s.emission != glm::vec3(0.0f)) {
-        lines.push_back("emission      " + vec3Text(s.emission));
+    if (c.emission != glm::vec3(0.0f)) {
+        lines.push_back("emission      " + vec3Text(c.emission));
     }
     return lines;
 }
@@ -58,14 +59,15 @@ std::string csvHeader() {
 }
 
 std::string csvLine(size_t pin, const PixelStory& s) {
+    const shader::ChannelInputs& c = s.inputs;
     std::string line = std::to_string(pin + 1) + "," + std::to_string(s.x) + "," + std::to_string(s.y) + ",\"" +
                        s.item + "\",\"" + s.material + "\"";
     auto add = [&](double value) { line += format(",%.9g", value); };
-    for (float v : {s.radiance.x, s.radiance.y, s.radiance.z}) add(v);
+    for (float v : {c.radiance.x, c.radiance.y, c.radiance.z}) add(v);
     for (uint8_t v : s.display) add(v);
-    for (float v : {s.baseColor.x, s.baseColor.y, s.baseColor.z, s.alpha, s.roughness, s.metallic, s.specular,
-                    s.f0.x, s.f0.y, s.f0.z, s.normal.x, s.normal.y, s.normal.z, s.NoV, s.uv0.x, s.uv0.y, s.D, s.G,
-                    s.F.x, s.F.y, s.F.z}) {
+    for (float v : {c.baseColor.x, c.baseColor.y, c.baseColor.z, c.alpha, c.roughness, c.metallic, c.specular, c.f0.x,
+                    c.f0.y, c.f0.z, c.shadingNormal.x, c.shadingNormal.y, c.shadingNormal.z, c.NoV, c.uv0.x, c.uv0.y,
+                    c.D, c.G, c.F.x, c.F.y, c.F.z}) {
         add(v);
     }
     return line + "\n";

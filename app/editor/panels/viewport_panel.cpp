@@ -546,7 +546,6 @@ void drawEnvironmentProgress(const EditorState& state, const ViewArea& area) {
     }
 }
 
-// Overlay (Advanced): cost of the last render and what was drawn.
 // Which channel the viewport shows instead of the picture, at its top left: data, not light.
 void drawChannelLabel(const EditorState& state, const ViewArea& area) {
     if (state.channel.channel < 0) {
@@ -565,6 +564,7 @@ void drawChannelLabel(const EditorState& state, const ViewArea& area) {
     recordArea("channel label", at, ImVec2(at.x + ImGui::CalcTextSize(text.c_str()).x, at.y + ImGui::GetTextLineHeight()));
 }
 
+// Overlay (Advanced): cost of the last render and what was drawn.
 void drawRenderOverlay(const EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
     int enabled = 0;
     for (const Light& light : b.lights) {
