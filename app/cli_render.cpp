@@ -12,6 +12,7 @@
 #include "gl/renderer.h"
 #include "image/display_image.h"
 #include "image/image.h"
+#include "image/pbr_tally.h"
 #include "inputs.h"
 #include "reference/channel_image.h"
 #include "reference/reference_render.h"
@@ -52,6 +53,15 @@ RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int 
     return {image.value, displayImage(image.value, scene.display, image.backdrop)};
 }
 
+// "pbr-validation: 812 of 31070 surface pixels flagged (2.6%): dielectric below 30 sRGB 812, ..."
+void reportPbrTally(const PbrTally& tally, const PbrRanges& ranges) {
+    std::printf("pbr-validation: %zu of %zu surface pixels flagged (%.1f%%): dielectric below %d sRGB %zu, above %d "
+                "%zu; metal below %d %zu\n",
+                tally.flagged(), tally.texels, tally.texels ? 100.0 * double(tally.flagged()) / double(tally.texels) : 0.0,
+                ranges.dielectricMin, tally.dielectricDark, ranges.dielectricMax, tally.dielectricBright,
+                ranges.metalMin, tally.metalDark);
+}
+
 // --channel: the GPU's channel render, or with --reference the CPU twin's (reference/
 // channel_image.h); the PNG as data, the PFM untouched.
 void renderChannel(const SceneInputs& inputs, const ChannelRequest& request, int width, int height, bool reference,
@@ -77,11 +87,15 @@ void renderChannel(const SceneInputs& inputs, const ChannelRequest& request, int
         settings.maxTargetBytes = kOneOffTargetBytes;
         image = renderer.render(prepared, settings).hdr;
     }
-    const std::vector<uint8_t> png = encodePng(channelDisplayImage(image, request.channel, request.srgb));
+    const LdrImage shown = channelDisplayImage(image, request.channel, request.srgb);
+    const std::vector<uint8_t> png = encodePng(shown);
     if (!hdr.empty()) {
         writeOutput(hdr, encodePfm(image));
     }
     writeOutput(out, png);
+    if (request.channel == shader::CHANNEL_PBR_VALIDATION) {
+        reportPbrTally(tallyPbrChannel(shown), request.strictPbr ? PbrRanges::strict() : PbrRanges{});
+    }
 }
 }  // namespace
 
@@ -96,6 +110,7 @@ Command addRenderCommand(CLI::App& app) {
         int environmentSamples = 16;
         std::string channel;
         bool channelSrgb = false;
+        bool pbrStrict = false;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
@@ -131,10 +146,13 @@ Command addRenderCommand(CLI::App& app) {
             "CHANNEL"));
     command->add_flag("--channel-srgb", options->channelSrgb,
                       "--channel: the PNG sRGB-encoded, for colour channels (default: the values themselves)");
+    command->add_flag("--pbr-strict", options->pbrStrict,
+                      "--channel pbr-validation: the strict ranges (dielectric 50-240 sRGB, metal from 180)");
     return [options] {
         if (!options->channel.empty()) {
             ChannelRequest request = *channelFromName(options->channel);   // the option's check passed it
             request.srgb = options->channelSrgb;
+            request.strictPbr = options->pbrStrict;
             renderChannel(options->inputs, request, options->width, options->height, options->reference, options->out,
                           options->hdr);
             return;

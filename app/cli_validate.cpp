@@ -99,10 +99,12 @@ Command addValidateCommand(CLI::App& app) {
                 bad += out;
                 total += all;
             } catch (const std::exception& error) {   // the others are still checked
+                std::cout.flush();   // the lines so far before this one, where both go to one place
                 std::cerr << "error: " << error.what() << "\n";
                 ++unreadable;
             }
         }
+        std::cout.flush();   // every line before the summary on stderr
         if (unreadable > 0) {
             throw InputError(std::to_string(unreadable) + " of " + std::to_string(options->files.size()) +
                              " files could not be read");

@@ -427,6 +427,7 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
         glUniform1i(program.uniform("uChannelLight"), channelLights.asked);
         glUniform1i(program.uniform("uKeyLight"), channelLights.key);
         glUniform1i(program.uniform("uChannelSrgb"), settings.channel.srgb ? 1 : 0);
+        glUniform3fv(program.uniform("uPbrRanges"), 1, glm::value_ptr(channelPbrRanges(settings.channel)));
     }
     if (plan.displayInPass) {
         glUniform1f(program.uniform("uExposure"), scene.display.exposure);

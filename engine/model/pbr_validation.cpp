@@ -3,22 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/luminance.h"
 #include "shading/shading.h"
 
 namespace patina {
 
 PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, const PbrRanges& ranges) {
+    // The channel's own functions (channels.glsl), so the batch check and the picture agree.
     PbrCheck check;
     check.metal = metallic >= 0.5f;
-    const float lightness = std::clamp(luminance(linearBaseColor), 0.0f, 1.0f);
-    check.value = int(std::lround(255.0f * shader::srgbEncode(lightness)));
-    if (check.metal) {
-        check.verdict = check.value < ranges.metalMin ? PbrVerdict::MetalTooDark : PbrVerdict::Ok;
-    } else {
-        check.verdict = check.value < ranges.dielectricMin   ? PbrVerdict::DielectricTooDark
-                        : check.value > ranges.dielectricMax ? PbrVerdict::DielectricTooBright
-                                                             : PbrVerdict::Ok;
+    const float lightness = shader::pbrLightness(linearBaseColor);
+    check.value = int(lightness);
+    switch (shader::pbrVerdict(lightness, check.metal, ranges.asVector())) {
+        case shader::PBR_DIELECTRIC_TOO_DARK: check.verdict = PbrVerdict::DielectricTooDark; break;
+        case shader::PBR_DIELECTRIC_TOO_BRIGHT: check.verdict = PbrVerdict::DielectricTooBright; break;
+        case shader::PBR_METAL_TOO_DARK: check.verdict = PbrVerdict::MetalTooDark; break;
+        default: check.verdict = PbrVerdict::Ok;
     }
     return check;
 }

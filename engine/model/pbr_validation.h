@@ -4,6 +4,8 @@
 // darker than charcoal or brighter than fresh snow, or a metal reflecting less than any measured
 // metal, is not a material light meets in the world. The value checked is the base colour's
 // luminance (Rec. 709, of the linear colour) in sRGB 0-255: the lightness the ranges are given in.
+// The verdict is shaders/shared/channels.glsl's pbrVerdict, which the pbr-validation channel
+// draws with.
 #include <cstddef>
 
 #include <glm/vec3.hpp>
@@ -17,6 +19,8 @@ struct PbrRanges {
     int dielectricMax = 240;
     int metalMin = 155;        // reflectance, sRGB: 60% (strict: 180, 70%)
     static PbrRanges strict() { return {50, 240, 180}; }
+    // As the shaders take them (channels.glsl's pbrVerdict).
+    glm::vec3 asVector() const { return glm::vec3(float(dielectricMin), float(dielectricMax), float(metalMin)); }
 };
 
 enum class PbrVerdict { Ok, DielectricTooDark, DielectricTooBright, MetalTooDark };

@@ -64,7 +64,7 @@ HdrImage channelImage(const PreparedScene& prepared, const PixelSurfaces& surfac
         const shader::ChannelInputs inputs =
             gatherChannelInputs(prepared.scene.material.model, channelPoint(surfaces, draws, size_t(i)), packed,
                                 lights.asked, lights.key, environment ? &*environment : nullptr);
-        const glm::vec3 value = shader::channelValue(request.channel, inputs);
+        const glm::vec3 value = shader::channelValue(request.channel, inputs, channelPbrRanges(request));
         std::copy(&value.x, &value.x + 3, &image.rgb[pixel * 3]);
     }
     return image;

@@ -3,6 +3,7 @@
 #include <iterator>
 
 #include "files/input_error.h"
+#include "model/pbr_validation.h"
 #include "scene/light_packing.h"
 #include "shading/shading.h"
 
@@ -15,10 +16,15 @@ constexpr std::string_view kNames[] = {
     "f0",         "diffuse-color",   "occlusion", "emissive",          "uv0",
     "uv1",        "geometry-normal", "shading-normal", "tangent",      "bitangent-sign",
     "nov",        "D",               "G",         "F",                 "diffuse",
-    "specular-lighting", "environment-diffuse", "environment-specular", "light:", "invalid"};
+    "specular-lighting", "environment-diffuse", "environment-specular", "light:", "invalid",
+    "pbr-validation"};
 static_assert(std::size(kNames) == size_t(shader::CHANNEL_COUNT), "a name for each channel of channels.glsl");
 constexpr std::string_view kLightPrefix = "light:";
 }  // namespace
+
+glm::vec3 channelPbrRanges(const ChannelRequest& request) {
+    return (request.strictPbr ? PbrRanges::strict() : PbrRanges{}).asVector();
+}
 
 std::optional<ChannelRequest> channelFromName(std::string_view name) {
     if (name.starts_with(kLightPrefix)) {

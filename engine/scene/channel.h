@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "scene/light.h"
 
 namespace patina {
@@ -14,10 +16,15 @@ struct ChannelRequest {
     int channel = -1;    // CHANNEL_*; -1: the radiance, no channel
     std::string light;   // CHANNEL_LIGHT's light, by name
     bool srgb = false;   // the display image sRGB-encoded (shownChannel), for colours
+    bool strictPbr = false;   // pbr-validation with the strict ranges (PbrRanges::strict)
     bool operator==(const ChannelRequest&) const = default;
 };
 
-// "base-color", ..., "light:NAME", "invalid"; nullopt for any other name.
+// CHANNEL_PBR_VALIDATION's ranges as the shaders take them (channels.glsl's pbrVerdict):
+// Substance's, or the strict ones.
+glm::vec3 channelPbrRanges(const ChannelRequest& request);
+
+// "base-color", ..., "light:NAME", "invalid", "pbr-validation"; nullopt for any other name.
 std::optional<ChannelRequest> channelFromName(std::string_view name);
 // The request's name, as channelFromName reads it ("" for no channel).
 std::string channelName(const ChannelRequest& request);

@@ -29,7 +29,8 @@ const int CHANNEL_ENVIRONMENT_DIFFUSE = 21;
 const int CHANNEL_ENVIRONMENT_SPECULAR = 22;
 const int CHANNEL_LIGHT = 23;
 const int CHANNEL_INVALID = 24;
-const int CHANNEL_COUNT = 25;
+const int CHANNEL_PBR_VALIDATION = 25;
+const int CHANNEL_COUNT = 26;
 
 // Everything a pixel's channels read. The material is after its maps (factor times texel) and
 // before the roughness floor; F0 and the diffuse colour are deriveSurfaceMaterial's. The lighting
@@ -92,9 +93,47 @@ PATINA_INLINE vec3 invalidRadiance(vec3 v) {
     return vec3(nan ? 1.0f : 0.0f, infinite ? 1.0f : 0.0f, negative ? 1.0f : 0.0f);
 }
 
+// PBR validation, as Substance's PBR Validate judges a base colour (Allegorithmic, "The PBR
+// Guide" vol. 2, "Base Color" and "Metal Reflectance"; model/pbr_validation.h has the ranges and
+// the batch check, which calls these): the colour's luminance, sRGB-encoded to 0-255, against a
+// dielectric's range (charcoal to fresh snow) or the darkest measured metal's reflectance. A
+// surface is a metal from metallic 0.5 up. `ranges`: (dielectric min, dielectric max, metal min).
+const int PBR_OK = 0;
+const int PBR_DIELECTRIC_TOO_DARK = 1;
+const int PBR_DIELECTRIC_TOO_BRIGHT = 2;
+const int PBR_METAL_TOO_DARK = 3;
+
+// The lightness the ranges are given in: 255 sRGB(Y), rounded to a whole step.
+PATINA_INLINE real pbrLightness(vec3 linearBaseColor) {
+    return floor(255.0f * srgbEncode(clamp(rec709Luminance(linearBaseColor), 0.0f, 1.0f)) + 0.5f);
+}
+
+PATINA_INLINE int pbrVerdict(real lightness, bool metal, vec3 ranges) {
+    if (metal) {
+        return lightness < ranges.z ? PBR_METAL_TOO_DARK : PBR_OK;
+    }
+    return lightness < ranges.x ? PBR_DIELECTRIC_TOO_DARK : (lightness > ranges.y ? PBR_DIELECTRIC_TOO_BRIGHT : PBR_OK);
+}
+
+// The channel's flag colours: only 0s and 1s, so they survive sRGB encoding and 8 bits exactly
+// and no grey (an accepted pixel) is one of them.
+PATINA_INLINE vec3 pbrVerdictColour(int verdict) {
+    if (verdict == PBR_DIELECTRIC_TOO_DARK) return vec3(0.0f, 0.0f, 1.0f);     // blue: darker than charcoal
+    if (verdict == PBR_DIELECTRIC_TOO_BRIGHT) return vec3(1.0f, 0.0f, 0.0f);   // red: brighter than snow
+    return vec3(1.0f, 1.0f, 0.0f);                                              // yellow: too dark a metal
+}
+
+// CHANNEL_PBR_VALIDATION: a flagged pixel in its verdict's colour; an accepted one grey, the
+// lightness the check read (lightness / 255, so the PNG's byte is the number).
+PATINA_INLINE vec3 pbrValidationValue(vec3 baseColor, real metallic, vec3 ranges) {
+    real lightness = pbrLightness(baseColor);
+    int verdict = pbrVerdict(lightness, metallic >= 0.5f, ranges);
+    return verdict == PBR_OK ? vec3(lightness / 255.0f) : pbrVerdictColour(verdict);
+}
+
 // The channel's value: a colour or vector as it is (normals in [-1, 1], UVs as (u, v, 0)), a
-// scalar in all three components.
-PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c) {
+// scalar in all three components. `pbrRanges`: CHANNEL_PBR_VALIDATION's (pbrVerdict).
+PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c, vec3 pbrRanges) {
     if (channel == CHANNEL_BASE_COLOR) return c.baseColor;
     if (channel == CHANNEL_ALPHA) return vec3(c.alpha);
     if (channel == CHANNEL_METALLIC) return vec3(c.metallic);
@@ -119,5 +158,6 @@ PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c) {
     if (channel == CHANNEL_ENVIRONMENT_DIFFUSE) return c.environmentDiffuse;
     if (channel == CHANNEL_ENVIRONMENT_SPECULAR) return c.environmentSpecular;
     if (channel == CHANNEL_LIGHT) return c.light;
+    if (channel == CHANNEL_PBR_VALIDATION) return pbrValidationValue(c.baseColor, c.metallic, pbrRanges);
     return invalidRadiance(c.radiance);
 }

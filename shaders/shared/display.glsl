@@ -39,6 +39,12 @@ PATINA_INLINE vec3 tonemapPbrNeutral(vec3 color) {
     return mix(color, vec3(newPeak), g);
 }
 
+// Luminance of a linear colour with the Rec. 709 primaries (ITU-R BT.709-6, part 1, item 3.2):
+// the shaders' copy of common/luminance.h, which a test holds it to.
+PATINA_INLINE real rec709Luminance(vec3 linear) {
+    return 0.2126f * linear.x + 0.7152f * linear.y + 0.0722f * linear.z;
+}
+
 // IEC 61966-2-1 sRGB encoding of one channel in [0, 1].
 PATINA_INLINE real srgbEncode(real linear) {
     if (linear <= 0.0031308f) {

@@ -107,6 +107,7 @@ vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
 uniform int uChannelLight;   // CHANNEL_LIGHT's light; -1 none, -2 the environment
 uniform int uKeyLight;       // the light D, G and F are read towards; -1 none
 uniform bool uChannelSrgb;   // the display value sRGB-encoded (shownChannel)
+uniform vec3 uPbrRanges;     // CHANNEL_PBR_VALIDATION's (pbrVerdict)
 #ifndef PATINA_TEXTURED
 uniform float uChannelAlpha;   // the item's alpha (BLEND's factor), which only maps otherwise read
 #endif
@@ -124,7 +125,7 @@ vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metall
                                            uEnvironmentRotation.y, material, N, V, false);
     c = channelWithEnvironment(c, shares, uEnvironmentIntensity, uChannelLight == -2);
 #endif
-    return channelValue(PATINA_CHANNEL, channelFinished(c));
+    return channelValue(PATINA_CHANNEL, channelFinished(c), uPbrRanges);
 }
 #endif
 

@@ -2,6 +2,7 @@
 // data (the PFM untouched, the PNG without exposure or tone map), on the GPU or with
 // --reference the CPU twin, and refuses what it cannot show with exit 2 or 3.
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -69,6 +70,44 @@ TEST_F(CliInspect, AnUnknownChannelIsAUsageErrorAndAMissingLightBadInput) {
     EXPECT_NE(light.stderrText.find("no enabled light of that name"), std::string::npos) << light.stderrText;
     EXPECT_FALSE(std::filesystem::exists(path("u.png")));
     EXPECT_FALSE(std::filesystem::exists(path("l.png")));
+}
+
+// "pbr-validation: N of M surface pixels flagged ..." on stdout: N and M.
+std::pair<long, long> flaggedOf(const std::string& out) {
+    long flagged = -1, surface = -1;
+    std::sscanf(out.c_str(), "pbr-validation: %ld of %ld surface pixels flagged", &flagged, &surface);
+    return {flagged, surface};
+}
+
+// `render --channel pbr-validation` counts what it flags: none of the rubber preset's pixels
+// by the default ranges (albedo 42 sRGB), all of them by the strict ones (from 50); on a real
+// textured model (BoxTextured, 8.7% of whose texels are brighter than snow: `patina validate`)
+// some of the pixels, the same number within 2% on the GPU and the CPU twin.
+TEST_F(CliInspect, PbrValidationCountsTheFlaggedPixels) {
+    const std::string rubber = " --material " + (std::filesystem::path(PATINA_SOURCE_DIR) / "presets/rubber.json").string();
+    const test::CliRun lenient = run("render --channel pbr-validation --width 64 --height 64 --out " +
+                                     path("r.png").string() + rubber);
+    ASSERT_EQ(lenient.exitCode, 0) << lenient.stderrText;
+    const test::CliRun strict = run("render --channel pbr-validation --pbr-strict --width 64 --height 64 --out " +
+                                    path("s.png").string() + rubber);
+    ASSERT_EQ(strict.exitCode, 0) << strict.stderrText;
+    EXPECT_EQ(flaggedOf(lenient.stdoutText).first, 0) << lenient.stdoutText;
+    EXPECT_GT(flaggedOf(lenient.stdoutText).second, 1000) << lenient.stdoutText;
+    EXPECT_EQ(flaggedOf(strict.stdoutText).first, flaggedOf(strict.stdoutText).second) << strict.stdoutText;
+    EXPECT_NE(strict.stdoutText.find("dielectric below 50 sRGB"), std::string::npos) << strict.stdoutText;
+
+    const std::string box = " --mesh /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    long counts[2];
+    for (int reference = 0; reference < 2; ++reference) {
+        const test::CliRun r = run("render --channel pbr-validation --width 128 --height 128 --out " +
+                                   path("b.png").string() + box + (reference ? " --reference" : ""));
+        ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+        const auto [flagged, surface] = flaggedOf(r.stdoutText);
+        EXPECT_GT(flagged, surface / 50) << r.stdoutText;
+        EXPECT_LT(flagged, surface / 4) << r.stdoutText;
+        counts[reference] = flagged;
+    }
+    EXPECT_NEAR(double(counts[0]), double(counts[1]), 0.02 * double(counts[1]));
 }
 
 glm::vec3 vec3Of(const Json& values) {

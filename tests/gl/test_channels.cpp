@@ -10,6 +10,8 @@
 #include "files/input_error.h"
 #include "gl/renderer.h"
 #include "image/display_image.h"
+#include "image/pbr_tally.h"
+#include "model/pbr_validation.h"
 #include "reference/channel_image.h"
 #include "reference/pixel_surfaces.h"
 #include "scene/channel.h"
@@ -225,6 +227,54 @@ TEST_F(Channels, AnUnknownLightIsRefusedWithTheLightsThereAre) {
             }
         },
         InputError);
+}
+
+// pbr-validation flags every pixel of a uniform material exactly as the batch check
+// (checkBaseColor, `patina validate`) judges its base colour: each verdict in its colour, the
+// accepted ones grey at the lightness read; with sRGB encoding the flags stay exact; the strict
+// ranges flag what the default ones let pass.
+TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
+    struct Case {
+        glm::vec3 baseColor;
+        float metallic;
+        bool strict;
+    };
+    const Case cases[] = {
+        {glm::vec3(0.004f), 0.0f, false},                 // darker than charcoal
+        {glm::vec3(0.95f, 0.9f, 0.9f), 0.0f, false},      // brighter than snow
+        {glm::vec3(0.2f, 0.15f, 0.1f), 1.0f, false},      // a metal too dark
+        {glm::vec3(0.9f, 0.6f, 0.3f), 1.0f, false},       // copper-like: accepted
+        {glm::vec3(0.025f), 0.0f, false},                 // lightness 44: accepted
+        {glm::vec3(0.025f), 0.0f, true},                  // ... below the strict 50
+    };
+    for (const Case& c : cases) {
+        Scene scene = test::preparedDefault().scene;
+        scene.material.baseColor = c.baseColor;
+        scene.material.metallic = c.metallic;
+        const PreparedScene prepared = test::prepared(scene);
+        const PbrCheck check = checkBaseColor(c.baseColor, c.metallic, c.strict ? PbrRanges::strict() : PbrRanges{});
+        ChannelRequest request = *channelFromName("pbr-validation");
+        request.strictPbr = c.strict;
+        for (bool srgb : {false, true}) {
+            request.srgb = srgb;
+            RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Single, 1);
+            settings.channel = request;
+            const RenderOutput output = renderer_.render(prepared, settings);
+            const PbrTally tally = tallyPbrChannel(output.ldr);
+            EXPECT_GT(tally.texels, 2000u);
+            const size_t expected = check.verdict == PbrVerdict::Ok ? 0 : tally.texels;
+            EXPECT_EQ(tally.flagged(), expected) << c.baseColor.r << " metallic " << c.metallic;
+            EXPECT_EQ(tally.dielectricDark, check.verdict == PbrVerdict::DielectricTooDark ? tally.texels : 0u);
+            EXPECT_EQ(tally.dielectricBright, check.verdict == PbrVerdict::DielectricTooBright ? tally.texels : 0u);
+            EXPECT_EQ(tally.metalDark, check.verdict == PbrVerdict::MetalTooDark ? tally.texels : 0u);
+            if (check.verdict == PbrVerdict::Ok && !srgb) {
+                // The grey's byte is the lightness the check read.
+                const uint8_t* centre = &output.ldr.rgba[(size_t(kSize / 2) * kSize + kSize / 2) * 4];
+                EXPECT_EQ(int(centre[0]), check.value);
+                EXPECT_EQ(int(centre[1]), check.value);
+            }
+        }
+    }
 }
 
 }  // namespace

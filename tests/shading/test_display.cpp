@@ -2,6 +2,7 @@
 // against values worked through its published steps by hand (in double precision).
 #include <gtest/gtest.h>
 
+#include "common/luminance.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -39,4 +40,12 @@ TEST(PbrNeutral, TheDisplayTransformOffersIt) {
 }
 
 }  // namespace
+// The shaders' Rec. 709 luminance (pbr-validation reads it) is common/luminance.h's.
+TEST(Rec709Luminance, TheShadersIsCommons) {
+    for (const glm::vec3 colour : {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f),
+                                   glm::vec3(0.3f, 0.6f, 0.9f)}) {
+        EXPECT_EQ(shader::rec709Luminance(colour), luminance(colour));
+    }
+}
+
 }  // namespace patina
