@@ -103,7 +103,7 @@ void keepChannelShowable(EditorState& state) {
         channelLights(renderedScene(state).lights, state.channel);
     } catch (const InputError&) {
         state.status = "The viewport shows the picture again: no enabled light \"" + state.channel.light + "\" to show";
-        state.channel = {};
+        state.channel = {-1, "", state.channel.srgb, state.channel.strictPbr};   // the picture; the options stay
     }
 }
 }  // namespace

@@ -43,7 +43,9 @@ EditorServices::EditorServices(std::shared_ptr<AssetCache> assets)
 unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes,
                                          Shown shown, int samples) {
     ViewImage& image = view(shown);
-    ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading, channel};
+    // The picture is the same whatever options a channel would be shown with.
+    const ChannelRequest request = channel.channel < 0 ? ChannelRequest{} : channel;
+    ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading, request};
     if (image.drawn != key) {
         RenderSettings settings;
         settings.width = width;
@@ -51,17 +53,60 @@ unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, 
         settings.path = passes;
         settings.samples = samples;
         settings.environment = environmentShading;
-        settings.channel = channel;
+        settings.channel = request;
         settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
         image.drawn.reset();   // until the draw succeeds
         renderer_->draw(scene, settings, image.target);
         lastRenderMilliseconds_ =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        image.pbrTally.reset();
+        if (channel.channel == shader::CHANNEL_PBR_VALIDATION) {
+            image.pbrTally = tallyPbrChannel(renderer_->readBack(image.target, false).ldr);
+        }
         image.drawn = std::move(key);
     }
     lastGpuMilliseconds_ = renderer_->lastGpuMilliseconds();
     return image.target.displayTexture();
+}
+
+namespace {
+// The overlay's pixels: a flagged pixel in its verdict's colour, on diagonal stripes of two
+// strengths so the picture shows through and the flag reads on any colour; the rest clear.
+LdrImage stripedFlags(const LdrImage& shown) {
+    LdrImage overlay{shown.width, shown.height, std::vector<uint8_t>(shown.rgba.size(), 0)};
+    for (int y = 0; y < shown.height; ++y) {
+        for (int x = 0; x < shown.width; ++x) {
+            const size_t i = (size_t(y) * size_t(shown.width) + size_t(x)) * 4;
+            if (pbrVerdictOfShown(&shown.rgba[i]) != PbrVerdict::Ok) {
+                std::copy_n(&shown.rgba[i], 3, &overlay.rgba[i]);
+                overlay.rgba[i + 3] = (x + y) / 4 % 2 == 0 ? 230 : 110;
+            }
+        }
+    }
+    return overlay;
+}
+}  // namespace
+
+const EditorServices::PbrOverlay& EditorServices::pbrOverlay(const PreparedScene& scene, int width, int height,
+                                                             Shown shown) {
+    OverlayImage& image = overlays_[shown == Shown::A ? 1 : 0];
+    ChannelRequest request{shader::CHANNEL_PBR_VALIDATION, "", false, channel.strictPbr};
+    // A channel is drawn by the single path at one sample a pixel (RenderSettings::channel).
+    ViewKey key{renderInputs(scene), width, height, RenderPath::Single, 1, environmentShading, request};
+    if (image.channel.drawn != key) {
+        RenderSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.channel = request;
+        settings.readHdr = false;
+        image.channel.drawn.reset();   // until the draw succeeds
+        renderer_->draw(scene, settings, image.channel.target);
+        const LdrImage flags = renderer_->readBack(image.channel.target, false).ldr;
+        image.overlay = {std::make_unique<Texture>(stripedFlags(flags)), tallyPbrChannel(flags)};
+        image.channel.drawn = std::move(key);
+    }
+    return image.overlay;
 }
 
 const PixelStory* EditorServices::pixelStory(const PreparedScene& scene, int width, int height, int x, int y) {

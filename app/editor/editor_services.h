@@ -8,6 +8,7 @@
 #include "accuracy/accuracy.h"
 #include "editor_state.h"
 #include "gl/texture.h"
+#include "image/pbr_tally.h"
 #include "reference/pixel_story.h"
 #include "scene/render_inputs.h"
 #include "keys.h"
@@ -37,6 +38,22 @@ public:
     // size, pass mode or MSAA samples changed since its last render. Returns the GL texture.
     unsigned viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes, Shown shown,
                              int samples = 4);
+    // View > PBR validation overlay over what viewportTexture(..., shown) shows: the pbr-validation
+    // channel of `scene` (ranges as `channel.strictPbr` says) as a texture, rows top-down, its
+    // flagged pixels striped in their verdict's colour and the rest clear, and its tally;
+    // rendered only when the scene or size changed.
+    struct PbrOverlay {
+        std::unique_ptr<Texture> texture;
+        PbrTally tally;
+    };
+    const PbrOverlay& pbrOverlay(const PreparedScene& scene, int width, int height, Shown shown);
+    // What the status line counts: the edited picture's pbr-validation tally while the overlay or
+    // the channel shows it (the viewport sets it each frame), else nothing.
+    std::optional<PbrTally> pbrTally;
+    // The pbr-validation tally of what viewportTexture last drew for `shown`, when that was
+    // the channel.
+    std::optional<PbrTally> channelPbrTally(Shown shown) const { return view(shown).pbrTally; }
+
     double lastRenderMilliseconds() const { return lastRenderMilliseconds_; }
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
     int viewportWidth = 0, viewportHeight = 0;   // set by the viewport panel
@@ -99,7 +116,13 @@ private:
     struct ViewImage {
         RenderTarget target;
         std::optional<ViewKey> drawn;   // what the target holds
+        std::optional<PbrTally> pbrTally;   // when it holds the pbr-validation channel
     };
+    struct OverlayImage {
+        ViewImage channel;   // the pbr-validation channel, drawn
+        PbrOverlay overlay;  // made from it
+    };
+    OverlayImage overlays_[2];   // by Shown
     std::shared_ptr<AssetCache> assets_;
     std::unique_ptr<Renderer> renderer_;
     struct ReadOut {

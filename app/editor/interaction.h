@@ -51,6 +51,9 @@ struct Interaction {
     // View > Channel: a debug channel the viewport shows instead of the picture (scene/channel.h;
     // channel -1: the picture). Screenshots stay the picture.
     ChannelRequest channel;
+    // View > PBR validation overlay: the picture with the pbr-validation channel's flagged pixels
+    // striped over it (channel.strictPbr: which ranges); the status line counts them.
+    bool pbrOverlay = false;
     // View > Pixel read-out: hovering the picture (Single view) tells the pixel's story; a
     // Ctrl+click pins it, where in the picture as fractions of its size, so a pin stays on its
     // spot when the viewport is resized.

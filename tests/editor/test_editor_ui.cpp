@@ -1031,6 +1031,64 @@ TEST_F(EditorUi, TheViewMenuShowsAChannelInsteadOfThePicture) {
     EXPECT_EQ(differingPixels(picture, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
 
+// View > PBR validation overlay: the status line counts the flagged pixels of the picture (all
+// of them for a base colour darker than charcoal, none for a plausible one), the strict ranges
+// flag what the default ones pass, the count holds in every view, the pbr-validation channel
+// counts the same, and turning the overlay off takes the count away.
+TEST_F(EditorUi, ThePbrOverlayCountsTheFlaggedPixelsInTheStatusLine) {
+    state_.scene.material.baseColor = glm::vec3(0.004f);
+    state_.scene.material.metallic = 0.0f;
+    click(centreOf("menu:View"));
+    click(centreOf("PBR validation overlay"));
+    ASSERT_TRUE(state_.pbrOverlay);
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().contains("PBR tally"));
+    ASSERT_TRUE(services_->pbrTally);
+    const PbrTally dark = *services_->pbrTally;
+    EXPECT_GT(dark.texels, 1000u);
+    EXPECT_EQ(dark.dielectricDark, dark.texels);
+    // The overlay goes over the picture; it is not the picture.
+    EXPECT_EQ(tallyPbrChannel(services_->viewportPixels(EditorServices::Shown::Edited)).flagged(), 0u);
+
+    state_.scene.material.baseColor = glm::vec3(0.025f);   // lightness 44: between 30 and 50
+    frames(2);
+    EXPECT_EQ(services_->pbrTally->flagged(), 0u);
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("Strict PBR ranges"));
+    ASSERT_TRUE(state_.channel.strictPbr);
+    frames(2);
+    EXPECT_EQ(services_->pbrTally->dielectricDark, services_->pbrTally->texels);
+
+    click(centreOf("Set A"));
+    for (const char* view : {"Split", "Side by side"}) {
+        click(centreOf(view));
+        frames(2);
+        ASSERT_TRUE(services_->pbrTally) << view;
+        EXPECT_GT(services_->pbrTally->flagged(), 500u) << view;
+    }
+    click(centreOf("Single"));
+    frames(2);
+    const PbrTally overlay = *services_->pbrTally;
+
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:pbr-validation"));
+    frames(2);
+    ASSERT_TRUE(services_->pbrTally);
+    EXPECT_EQ(services_->pbrTally->flagged(), overlay.flagged());
+    EXPECT_EQ(tallyPbrChannel(services_->viewportPixels(EditorServices::Shown::Edited)).flagged(), overlay.flagged());
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:picture"));
+    click(centreOf("menu:View"));
+    click(centreOf("PBR validation overlay"));
+    frames(2);
+    EXPECT_FALSE(state_.pbrOverlay);
+    EXPECT_FALSE(services_->pbrTally);
+    EXPECT_FALSE(itemsOfLastFrame().contains("PBR tally"));
+}
+
 // View > Pixel read-out: hovering tells the pixel's story, Ctrl+click pins it (picking no part),
 // the pin is listed, copied as CSV with the values the viewport shows there, and removable.
 TEST_F(EditorUi, PixelReadOutPinsAPixelWithTheValuesTheViewportShows) {

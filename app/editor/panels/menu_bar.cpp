@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <imgui.h>
 
@@ -133,14 +134,14 @@ void drawChannelMenu(EditorState& state) {
         return;
     }
     if (ImGui::MenuItem("Picture", nullptr, state.channel.channel < 0)) {
-        state.channel = {};
+        state.channel = {-1, "", state.channel.srgb, state.channel.strictPbr};   // the picture; the options stay
     }
     recordItem("channel:picture", "The shaded picture, with exposure and tone map");
     ImGui::Separator();
     for (const std::string& name : fixedChannelNames()) {
         const ChannelRequest request = *channelFromName(name);
         if (ImGui::MenuItem(name.c_str(), nullptr, state.channel.channel == request.channel)) {
-            state.channel = {request.channel, "", state.channel.srgb};
+            state.channel = {request.channel, "", state.channel.srgb, state.channel.strictPbr};
         }
         recordItem("channel:" + name);
     }
@@ -149,7 +150,7 @@ void drawChannelMenu(EditorState& state) {
         const std::string label = "light: " + light.name;
         const bool shown = state.channel.channel == shader::CHANNEL_LIGHT && state.channel.light == light.name;
         if (ImGui::MenuItem(label.c_str(), nullptr, shown, light.enabled)) {
-            state.channel = {shader::CHANNEL_LIGHT, light.name, state.channel.srgb};
+            state.channel = {shader::CHANNEL_LIGHT, light.name, state.channel.srgb, state.channel.strictPbr};
         }
         recordItem("channel:light:" + light.name, light.enabled ? "This light's share of the picture"
                                                                 : "Switched off (or soloed out): nothing to show");
@@ -157,6 +158,9 @@ void drawChannelMenu(EditorState& state) {
     ImGui::Separator();
     ImGui::MenuItem("sRGB-encode channel", nullptr, &state.channel.srgb);
     recordItem("sRGB-encode channel", "Show the channel's values sRGB-encoded (for colours); off: the values themselves");
+    ImGui::MenuItem("Strict PBR ranges", nullptr, &state.channel.strictPbr);
+    recordItem("Strict PBR ranges", "pbr-validation and the overlay: dielectrics 50-240 sRGB and metals from 180 "
+                                    "(off: 30-240 and 155, Substance's defaults)");
     ImGui::EndMenu();
 }
 
@@ -177,6 +181,9 @@ void drawViewMenu(EditorState& state) {
     ImGui::MenuItem("Advanced controls", nullptr, &state.showAdvanced);
     recordItem("Advanced controls", "The BRDF model, render path, timings, derived values and the Accuracy tab");
     drawChannelMenu(state);
+    ImGui::MenuItem("PBR validation overlay", nullptr, &state.pbrOverlay);
+    recordItem("PBR validation overlay", "Stripe the pixels whose base colour no real material has: blue darker "
+                                         "than charcoal, red brighter than snow, yellow a metal too dark");
     ImGui::MenuItem("Pixel read-out", nullptr, &state.pixelReadOut);
     recordItem("Pixel read-out", "Hover the picture to see what gives a pixel its colour; Ctrl+click pins it");
     drawUiSizeMenu(state);
@@ -192,6 +199,21 @@ void drawHelpMenu(EditorState& state) {
         }
         ImGui::EndMenu();
     }
+}
+
+// "PBR: 812 of 31070 pixels flagged (2.6%)", while the overlay or the channel shows them, the
+// breakdown in its tooltip.
+void drawPbrTally(const EditorState& state, const PbrTally& tally) {
+    const PbrRanges ranges = state.channel.strictPbr ? PbrRanges::strict() : PbrRanges{};
+    const double percent = tally.texels ? 100.0 * double(tally.flagged()) / double(tally.texels) : 0.0;
+    ImGui::SameLine(0.0f, px(24));
+    const ImVec4 colour = tally.flagged() ? ImVec4(1.0f, 0.75f, 0.3f, 1.0f) : ImVec4(0.55f, 0.85f, 0.55f, 1.0f);
+    ImGui::TextColored(colour, "PBR: %zu of %zu pixels flagged (%.1f%%)", tally.flagged(), tally.texels, percent);
+    char detail[200];
+    std::snprintf(detail, sizeof detail, "Dielectric below %d sRGB: %zu (blue)\nDielectric above %d: %zu (red)\n"
+                  "Metal below %d: %zu (yellow)", ranges.dielectricMin, tally.dielectricDark, ranges.dielectricMax,
+                  tally.dielectricBright, ranges.metalMin, tally.metalDark);
+    recordItem("PBR tally", detail);
 }
 
 // The last completed action, on one line where it moves nothing; after a screenshot, a
@@ -218,6 +240,9 @@ void drawMenuBar(EditorState& state, EditorServices& services) {
     drawEditMenu(state);
     drawViewMenu(state);
     drawHelpMenu(state);
+    if (services.pbrTally) {
+        drawPbrTally(state, *services.pbrTally);
+    }
     drawStatus(state);
     ImGui::EndMainMenuBar();
 }

@@ -407,33 +407,57 @@ struct ViewArea {
     int width, height;
 };
 
-// The picture: B, or A and B side by side, or A over B's left part up to the divider.
+// View > PBR validation overlay over one picture on screen (at, size; u1: how much of it shows
+// from the left), the picture only: a channel is what was asked to be seen. The edited side's
+// tally goes to the status line.
+void overlayFlags(const EditorState& state, EditorServices& services, const PreparedScene& scene, int width,
+                  int height, EditorServices::Shown shown, ImVec2 at, ImVec2 size, float u1 = 1.0f) {
+    if (!state.pbrOverlay || state.channel.channel >= 0) {
+        return;
+    }
+    const EditorServices::PbrOverlay& overlay = services.pbrOverlay(scene, width, height, shown);
+    ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(overlay.texture->id())),
+                                         at, ImVec2(at.x + size.x, at.y + size.y), ImVec2(0.0f, 0.0f),
+                                         ImVec2(u1, 1.0f));
+    if (shown == EditorServices::Shown::Edited) {
+        services.pbrTally = overlay.tally;
+    }
+}
+
+// The picture: B, or A and B side by side, or A over B's left part up to the divider; with
+// the PBR validation overlay over each when asked.
 void drawPictures(EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
+    using Shown = EditorServices::Shown;
     // While a widget is held (a slider drag), skip MSAA so the preview keeps up; the full
     // quality frame follows on release.
     const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
     const int width = area.width, height = area.height;
+    const PreparedScene& preparedB = preparedScene(state, b);
     if (state.compareA && state.compareView == CompareView::SideBySide) {
         const int half = std::max(width / 2, 8);
         const ImVec2 halfSize(float(half), area.size.y);
         const Scene a = withMaterial(state, *state.compareA);
-        image(services.viewportTexture(preparedScene(state, a), half, height, state.renderPath,
-                                       EditorServices::Shown::A, samples), halfSize);
+        const PreparedScene& preparedA = preparedScene(state, a);
+        image(services.viewportTexture(preparedA, half, height, state.renderPath, Shown::A, samples), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
-        image(services.viewportTexture(preparedScene(state, b), half, height, state.renderPath,
-                                       EditorServices::Shown::Edited, samples), halfSize);
+        image(services.viewportTexture(preparedB, half, height, state.renderPath, Shown::Edited, samples), halfSize);
+        overlayFlags(state, services, preparedA, half, height, Shown::A, area.origin, halfSize);
+        overlayFlags(state, services, preparedB, half, height, Shown::Edited,
+                     ImVec2(area.origin.x + float(half), area.origin.y), halfSize);
         return;
     }
-    image(services.viewportTexture(preparedScene(state, b), width, height, state.renderPath,
-                                   EditorServices::Shown::Edited, samples), area.size);
+    image(services.viewportTexture(preparedB, width, height, state.renderPath, Shown::Edited, samples), area.size);
+    overlayFlags(state, services, preparedB, width, height, Shown::Edited, area.origin, area.size);
     if (state.compareA && state.compareView == CompareView::Split) {
         // A left of the divider, B right, one camera: A's image drawn over B's left part.
         const Scene sceneA = withMaterial(state, *state.compareA);
-        const unsigned a = services.viewportTexture(preparedScene(state, sceneA), width, height,
-                                                    state.renderPath, EditorServices::Shown::A, samples);
+        const PreparedScene& preparedA = preparedScene(state, sceneA);
+        const unsigned a = services.viewportTexture(preparedA, width, height, state.renderPath, Shown::A, samples);
         const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
+        const ImVec2 sizeA(area.size.x * split, area.size.y);
         ImGui::SetCursorScreenPos(area.origin);
-        image(a, ImVec2(area.size.x * split, area.size.y), 0.0f, split);
+        image(a, sizeA, 0.0f, split);
+        overlayFlags(state, services, preparedA, width, height, Shown::A, area.origin, sizeA, split);
     }
 }
 
@@ -595,7 +619,11 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     services.viewportWidth = area.width;
     services.viewportHeight = area.height;
     const Scene b = renderedScene(state);
+    services.pbrTally.reset();   // set again below while the overlay or the channel shows it
     drawPictures(state, services, b, area);
+    if (state.channel.channel == shader::CHANNEL_PBR_VALIDATION) {
+        services.pbrTally = services.channelPbrTally(EditorServices::Shown::Edited);
+    }
     drawPartOutline(state, area);
     handlePointer(state, services, area);
     if (state.compareA && state.compareView != CompareView::Single) {
