@@ -114,14 +114,15 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         finishModelLoad(state);
     }
     services.environmentShading = state.environmentShading;
-    keepChannelShowable(state);
-    services.channel = state.channel;
     resolveEnvironmentShown(state);
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
     // keys, within the frames drawn after the key press.
     drawGuarded(state, "A shortcut", [&] { handleShortcuts(state, services); });
+    // After the menu, so a channel chosen there is drawn, and counted, in this frame.
+    keepChannelShowable(state);
+    services.channel = state.channel;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();
     PanelLayout& layout = state.layout;
