@@ -1,0 +1,50 @@
+#include "accuracy/albedo_curve.h"
+
+#include <cmath>
+#include <memory>
+
+#include <glm/trigonometric.hpp>
+
+#include "common/parallel_for.h"
+#include "environment/builtin_environments.h"
+#include "environment/environment.h"
+#include "reference/radiance.h"
+#include "shading/cpu_shading.h"
+
+namespace patina {
+
+namespace {
+// The white furnace, prepared once for the process (its chain and SH for the split sum, its
+// image for the ground truth).
+const Environment& whiteFurnace() {
+    static const std::shared_ptr<const Environment> white =
+        prepareEnvironment(*builtinEnvironment("white"), "builtin:white");
+    return *white;
+}
+}  // namespace
+
+std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int points, int samples) {
+    const Environment& white = whiteFurnace();
+    static const EnvironmentDistribution distribution(white.image);
+    const ReferenceEnvironment reference{&white, &distribution, 1.0f, 0.0f};
+    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    std::vector<AlbedoPoint> curve(size_t(std::max(points, 2)));
+    parallelFor(curve.size(), [&](size_t i) {
+        AlbedoPoint& point = curve[i];
+        point.thetaVDegrees = 88.5f * float(i) / float(curve.size() - 1);
+        const float theta = glm::radians(point.thetaVDegrees);
+        const glm::vec3 V(std::sin(theta), 0.0f, std::cos(theta));
+        point.product = shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
+        ReferenceOptions options;
+        options.samples = samples;
+        options.seed = 0x9E3779B97F4A7C15ull * (i + 1);
+        const ReferenceEstimate truth = referenceRadiance(material.model, surface, reference, {}, glm::vec3(0.0f), N, V,
+                                                          options);
+        point.truth = truth.value;
+        point.standardError = truth.standardError;
+    });
+    return curve;
+}
+
+}  // namespace patina

@@ -1,0 +1,26 @@
+#pragma once
+// BRDF Explorer's albedo view for one material: the directional albedo
+// E(theta_v) = integral over the hemisphere of f(L, V) NoL dL (the white furnace: an environment
+// of radiance 1 everywhere), as the product computes it, by the split sum's tables
+// (environment BRDF and irradiance, ibl_model.glsl), against the ground truth's Monte Carlo
+// estimate of the same integral (reference/radiance.h) with its standard error.
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "shading/material_parameters.h"
+
+namespace patina {
+
+struct AlbedoPoint {
+    float thetaVDegrees = 0.0f;
+    glm::vec3 product{0.0f};        // the split sum under the white furnace
+    glm::vec3 truth{0.0f};          // the exact integral, estimated
+    glm::vec3 standardError{0.0f};  // of `truth`
+};
+
+// `points` angles from 0 to 88.5 degrees (where NoV stays clear of the floor 1e-4), the truth
+// by `samples` MIS iterations at each (deterministic).
+std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int points, int samples);
+
+}  // namespace patina

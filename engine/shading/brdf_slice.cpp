@@ -1,0 +1,48 @@
+#include "shading/brdf_slice.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "shading/brdf_models.h"
+#include "shading/cpu_shading.h"
+
+namespace patina {
+
+DirectionPair halfDifferenceDirections(float thetaH, float thetaD, float phiD) {
+    // The difference vector in H's frame, then turned by theta_h about y into N's
+    // (Rusinkiewicz 1998, section 3.1: rotate by -phi_h about N, then -theta_h about the binormal).
+    const glm::vec3 d(std::sin(thetaD) * std::cos(phiD), std::sin(thetaD) * std::sin(phiD), std::cos(thetaD));
+    const float c = std::cos(thetaH), s = std::sin(thetaH);
+    const glm::vec3 L(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+    const glm::vec3 H(s, 0.0f, c);
+    return {L, 2.0f * glm::dot(H, L) * H - L};
+}
+
+glm::vec2 sliceAngles(int x, int y, int size) {
+    return {90.0f * (float(x) + 0.5f) / float(size), 90.0f * (float(size - 1 - y) + 0.5f) / float(size)};
+}
+
+BrdfSlice brdfSlice(const MaterialParameters& material, float phiDDegrees, int size, SliceLobe lobe) {
+    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    BrdfSlice slice{size, std::vector<glm::vec3>(size_t(size) * size_t(size), glm::vec3(-1.0f))};
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const glm::vec2 angles = glm::radians(sliceAngles(x, y, size));
+            const DirectionPair pair = halfDifferenceDirections(angles.x, angles.y, glm::radians(phiDDegrees));
+            if (pair.L.z <= 0.0f || pair.V.z <= 0.0f) {
+                continue;   // no light arrives from below the surface, none leaves below it
+            }
+            const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, glm::normalize(pair.V),
+                                                     glm::normalize(pair.L));
+            slice.values[size_t(y) * size_t(size) + size_t(x)] =
+                lobe == SliceLobe::Diffuse ? f.diffuse : lobe == SliceLobe::Specular ? f.specular : f.diffuse + f.specular;
+        }
+    }
+    return slice;
+}
+
+}  // namespace patina
