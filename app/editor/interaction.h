@@ -19,12 +19,24 @@ enum class CompareView { Single, Split, SideBySide };
 // moving both ends), or one end of a tube.
 enum class LightHandle { Position, TubeStart, TubeEnd };
 
+// The lobe panel's views: the polar plot in the plane of incidence, and BRDF Explorer's (Burley
+// 2012) image slice, albedo against theta_v and 3D lobe.
+enum class LobeView { Polar, Slice, Albedo, Lobe3d };
+
 struct LobeSettings {
+    LobeView view = LobeView::Polar;
     float thetaInDegrees = 45.0f;
     bool followFirstDirectional = false;
     bool luminance = false;       // else per channel
     bool logScale = false;
     bool multiplyByCosine = false;
+    // The slice: phi_d (Burley's default 90), exposure in stops, log scale, which lobe.
+    float phiDDegrees = 90.0f;
+    float sliceExposure = 0.0f;
+    bool sliceLog = true;
+    int sliceLobe = 0;   // SliceLobe: total, diffuse, specular
+    // The 3D lobe's orbit, degrees.
+    float yawDegrees = 35.0f, pitchDegrees = 25.0f;
 };
 
 // The interaction: what the user is looking at and holding, which is no part of the document

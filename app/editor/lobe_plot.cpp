@@ -6,7 +6,10 @@
 #include <glm/glm.hpp>
 
 #include "common/luminance.h"
+#include "shading/brdf_models.h"
+#include "shading/cpu_shading.h"
 #include "shading/lobe.h"
+#include "shading/shading.h"
 
 namespace patina::editor {
 
@@ -67,6 +70,56 @@ LobePlot lobePlot(const EditorState& state) {
         }
     }
     return plot;
+}
+
+glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale) {
+    glm::vec3 shown(0.0f);
+    for (int c = 0; c < 3; ++c) {
+        if (!(value[c] >= 0.0f)) {
+            continue;   // below the horizon
+        }
+        const float v = value[c] * std::exp2(exposureStops);
+        const float fraction = logScale ? (std::log10(std::max(v, 1e-12f)) + 2.0f) / 4.0f : v;
+        shown[c] = shader::srgbEncode(std::clamp(fraction, 0.0f, 1.0f));
+    }
+    return shown;
+}
+
+std::vector<Lobe3d> lobes3d(const EditorState& state) {
+    const LobeSettings& lobe = state.lobe;
+    const float cosine = lobe.multiplyByCosine ? std::cos(glm::radians(lobe.thetaInDegrees)) : 1.0f;
+    const float thetaIn = glm::radians(lobe.thetaInDegrees);
+    const glm::vec3 N(0.0f, 0.0f, 1.0f), L(std::sin(thetaIn), 0.0f, std::cos(thetaIn));
+    std::vector<Material> materials{editedMaterial(state)};
+    if (state.compareA) {
+        materials.push_back(*state.compareA);
+    }
+    std::vector<Lobe3d> lobes;
+    std::vector<std::vector<float>> values;
+    float maxValue = 1e-6f;
+    for (const Material& material : materials) {
+        const shader::SurfaceMaterial surface = surfaceMaterial(material);
+        Lobe3d& lobe3d = lobes.emplace_back();
+        std::vector<float>& v = values.emplace_back();
+        for (int ring = 0; ring < kLobeRings; ++ring) {
+            const float theta = glm::radians(90.0f * float(ring) / float(kLobeRings - 1));
+            for (int meridian = 0; meridian < kLobeMeridians; ++meridian) {
+                const float phi = glm::radians(360.0f * float(meridian) / float(kLobeMeridians));
+                const glm::vec3 V(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+                const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
+                v.push_back(luminance(f.diffuse + f.specular) * cosine);
+                lobe3d.points.push_back(V);
+                maxValue = std::max(maxValue, v.back());
+            }
+        }
+    }
+    for (size_t i = 0; i < lobes.size(); ++i) {
+        lobes[i].maxValue = maxValue;
+        for (size_t p = 0; p < lobes[i].points.size(); ++p) {
+            lobes[i].points[p] *= lobeRadius(values[i][p], maxValue, lobe.logScale);
+        }
+    }
+    return lobes;
 }
 
 float lobeRadius(float value, float maxValue, bool logScale) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "editor_state.h"
 
 namespace patina::editor {
@@ -29,5 +31,21 @@ LobePlot lobePlot(const EditorState& state);
 // A value's distance from the centre as a fraction of the plot's radius: linear, or in log
 // scale 3 decades below the maximum to the maximum.
 float lobeRadius(float value, float maxValue, bool logScale);
+
+// A slice pixel's value (1/sr) as shown, sRGB in [0, 1]: times 2^exposure, then linear
+// (clamped at 1) or in log scale four decades, 0.01 to 100 1/sr, so a Lambert lobe (c / pi) and
+// a sharp specular peak both read; no value (below the horizon, -1) is 0.
+glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale);
+
+// The 3D lobe's surface for theta_in (Lobe3d): luminance of f (times cos theta_in with "x cos")
+// over outgoing directions, kLobeRings rings of theta_out from 0 to 90 degrees by kLobeMeridians
+// of phi_out; the points' distance from the centre is lobeRadius of the value.
+constexpr int kLobeRings = 16, kLobeMeridians = 36;
+struct Lobe3d {
+    std::vector<glm::vec3> points;   // ring-major, (ring, meridian); unit-sphere directions times their radius
+    float maxValue = 0.0f;
+};
+// The lobes of B and, when set, A, scaled together (one maxValue for both).
+std::vector<Lobe3d> lobes3d(const EditorState& state);
 
 }  // namespace patina::editor

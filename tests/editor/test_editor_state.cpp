@@ -1058,6 +1058,40 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-1f, plot.maxValue, true), 2.0f / 3.0f, 1e-5f);
 }
 
+// The slice's display: a Lambert lobe's c / pi reads mid-scale in log (four decades from 0.01),
+// exposure doubles per stop, and no value (below the horizon) is black.
+TEST_F(EditorStateTest, TheSliceShowsValuesByExposureAndLogScale) {
+    const glm::vec3 lambert(0.1f);
+    EXPECT_NEAR(sliceShown(lambert, 0.0f, true).x, shader::srgbEncode(0.25f), 1e-6f);   // log10(0.1) = -1
+    EXPECT_NEAR(sliceShown(lambert, 0.0f, false).x, shader::srgbEncode(0.1f), 1e-6f);
+    EXPECT_NEAR(sliceShown(lambert, 1.0f, false).x, shader::srgbEncode(0.2f), 1e-6f);
+    EXPECT_NEAR(sliceShown(glm::vec3(1000.0f), 0.0f, true).x, 1.0f, 1e-6f);   // clamped at the top
+    EXPECT_EQ(sliceShown(glm::vec3(-1.0f), 0.0f, true), glm::vec3(0.0f));
+}
+
+// The 3D lobe: B and A on one scale, and a sharp metal's lobe reaches furthest towards the
+// mirror direction of theta_in (phi_out = 180 degrees in the plane of incidence).
+TEST_F(EditorStateTest, TheThreeDLobePeaksAtTheMirrorDirection) {
+    state.scene.material.metallic = 1.0f;
+    state.scene.material.roughness = 0.2f;
+    state.lobe.thetaInDegrees = 45.0f;
+    Material rough = state.scene.material;
+    rough.roughness = 0.9f;
+    state.compareA = rough;
+    const std::vector<Lobe3d> lobes = lobes3d(state);
+    ASSERT_EQ(lobes.size(), 2u);
+    EXPECT_EQ(lobes[0].maxValue, lobes[1].maxValue);
+    ASSERT_EQ(lobes[0].points.size(), size_t(kLobeRings * kLobeMeridians));
+    const auto furthest = std::max_element(lobes[0].points.begin(), lobes[0].points.end(),
+                                           [](glm::vec3 a, glm::vec3 b) { return glm::length(a) < glm::length(b); });
+    EXPECT_NEAR(glm::length(*furthest), 1.0f, 1e-5f);   // the sharp B holds the maximum
+    const glm::vec3 mirror(-std::sin(glm::radians(45.0f)), 0.0f, std::cos(glm::radians(45.0f)));
+    EXPECT_GT(glm::dot(glm::normalize(*furthest), mirror), 0.97f);
+    for (const glm::vec3& p : lobes[1].points) {
+        EXPECT_LT(glm::length(p), 0.8f);   // the rough A is lower everywhere on the shared scale
+    }
+}
+
 // Issue 23: the legend said "B total" with no A, and the reference model's curve was drawn
 // under the default model too, though the docs said only when another model is chosen.
 TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {

@@ -1031,6 +1031,29 @@ TEST_F(EditorUi, TheViewMenuShowsAChannelInsteadOfThePicture) {
     EXPECT_EQ(differingPixels(picture, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
 
+// The lobe panel's BRDF Explorer views: each draws (with A beside B), the slice's hover tells a
+// cell's angles, and dragging the 3D lobe turns it.
+TEST_F(EditorUi, TheLobePanelShowsTheSliceTheAlbedoAndTheThreeDLobe) {
+    click(centreOf("Set A"));
+    click(centreOf("lobe view:Slice"));
+    EXPECT_EQ(state_.lobe.view, LobeView::Slice);
+    EXPECT_TRUE(itemsOfLastFrame().contains("slice"));
+    EXPECT_TRUE(itemsOfLastFrame().contains("phi_d"));
+    click(centreOf("lobe view:Albedo"));
+    EXPECT_EQ(state_.lobe.view, LobeView::Albedo);
+    EXPECT_TRUE(itemsOfLastFrame().contains("albedo"));
+    click(centreOf("lobe view:3D"));
+    EXPECT_EQ(state_.lobe.view, LobeView::Lobe3d);
+    ASSERT_TRUE(itemsOfLastFrame().contains("lobe 3d"));
+    const float yaw = state_.lobe.yawDegrees;
+    const ImVec2 middle = centreOf("lobe 3d");
+    drag(middle, ImVec2(middle.x + 40.0f, middle.y));
+    EXPECT_NEAR(state_.lobe.yawDegrees, yaw + 20.0f, 0.5f);
+    click(centreOf("lobe view:Polar"));
+    EXPECT_TRUE(itemsOfLastFrame().contains("lobe"));
+    EXPECT_FALSE(itemsOfLastFrame().contains("lobe 3d"));
+}
+
 // View > PBR validation overlay: the status line counts the flagged pixels of the picture (all
 // of them for a base colour darker than charcoal, none for a plausible one), the strict ranges
 // flag what the default ones pass, the count holds in every view, the pbr-validation channel

@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <string>
 #include <numbers>
 
 #include <glm/glm.hpp>
@@ -10,6 +12,7 @@
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "lobe_plot.h"
+#include "lobe_views.h"
 #include "panels.h"
 #include "ui_scale.h"
 #include "widgets.h"
@@ -90,8 +93,57 @@ void drawPolar(const LobePlot& plot, const LobeSettings& lobe, ImVec2 size) {
 }
 }  // namespace
 
+namespace {
+// Which of the panel's views shows: the polar plot or one of BRDF Explorer's.
+void drawViewChoice(LobeSettings& lobe) {
+    const std::pair<LobeView, const char*> views[] = {
+        {LobeView::Polar, "Polar"}, {LobeView::Slice, "Slice"}, {LobeView::Albedo, "Albedo"}, {LobeView::Lobe3d, "3D"}};
+    const char* tips[] = {"The BRDF in the plane of incidence, and D, G, F",
+                          "BRDF Explorer's image slice: theta_h across, theta_d up, at phi_d (Burley 2012)",
+                          "Directional albedo against theta_v: the split sum against the ground truth",
+                          "The lobe over every outgoing direction; drag to turn it"};
+    for (size_t i = 0; i < std::size(views); ++i) {
+        if (i > 0) {
+            ImGui::SameLine();
+        }
+        if (ImGui::RadioButton(views[i].second, lobe.view == views[i].first)) {
+            lobe.view = views[i].first;
+        }
+        recordItem(std::string("lobe view:") + views[i].second, tips[i]);
+    }
+}
+
+// The slice's settings: phi_d, exposure, log scale, which lobe.
+void drawSliceControls(LobeSettings& lobe) {
+    ImGui::SetNextItemWidth(px(130));
+    ImGui::SliderFloat("phi_d", &lobe.phiDDegrees, 0.0f, 180.0f, "%.0f deg");
+    recordItem("phi_d", "The difference angle's azimuth about H; 90 keeps both directions above the horizon");
+    sameLineIfFits(labelledWidth(px(110), "Exposure"));
+    ImGui::SetNextItemWidth(px(110));
+    ImGui::SliderFloat("Exposure", &lobe.sliceExposure, -8.0f, 8.0f, "%+.1f EV");
+    recordItem("slice exposure", "Scale the values by 2^EV before they are shown");
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Log"));
+    ImGui::Checkbox("Log##slice", &lobe.sliceLog);
+    recordItem("slice log", "Log scale: four decades, 0.01 to 100 1/sr");
+    sameLineIfFits(labelledWidth(px(100), "Lobe"));
+    ImGui::SetNextItemWidth(px(100));
+    ImGui::Combo("Lobe", &lobe.sliceLobe, "total\0diffuse\0specular\0");
+    recordItem("slice lobe", "Which part of f the slice shows");
+}
+}  // namespace
+
 void drawLobePanel(EditorState& state) {
     LobeSettings& lobe = state.lobe;
+    drawViewChoice(lobe);
+    if (lobe.view == LobeView::Slice) {
+        drawSliceControls(lobe);
+        drawSliceView(state, ImGui::GetContentRegionAvail());
+        return;
+    }
+    if (lobe.view == LobeView::Albedo) {
+        drawAlbedoView(state, ImGui::GetContentRegionAvail());
+        return;
+    }
     const ImGuiStyle& style = ImGui::GetStyle();
     auto checkboxWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };
     ImGui::Checkbox("Follow first directional light", &lobe.followFirstDirectional);
@@ -106,9 +158,11 @@ void drawLobePanel(EditorState& state) {
     ImGui::SliderFloat("theta_in", &lobe.thetaInDegrees, 0.0f, 89.9f, "%.1f deg");
     recordItem("theta_in", "The angle the light comes in at, from the normal");
     ImGui::EndDisabled();
-    sameLineIfFits(checkboxWidth("Luminance"));
-    ImGui::Checkbox("Luminance", &lobe.luminance);
-    recordItem("Luminance", "Diffuse, specular and total as luminance, instead of per colour channel");
+    if (lobe.view == LobeView::Polar) {   // the 3D lobe is luminance
+        sameLineIfFits(checkboxWidth("Luminance"));
+        ImGui::Checkbox("Luminance", &lobe.luminance);
+        recordItem("Luminance", "Diffuse, specular and total as luminance, instead of per colour channel");
+    }
     sameLineIfFits(checkboxWidth("Log"));
     ImGui::Checkbox("Log", &lobe.logScale);
     recordItem("Log", "Log scale: three decades below the peak, to see the tails");
@@ -116,6 +170,10 @@ void drawLobePanel(EditorState& state) {
     ImGui::Checkbox("x cos", &lobe.multiplyByCosine);
     recordItem("x cos", "Multiply by cos(theta_in): the light the surface actually reflects");
 
+    if (lobe.view == LobeView::Lobe3d) {
+        drawLobe3dView(state, ImGui::GetContentRegionAvail());
+        return;
+    }
     const LobePlot plot = lobePlot(state);
     const float termsWidth = px(220);
     const ImVec2 available = ImGui::GetContentRegionAvail();

@@ -1,0 +1,235 @@
+#include "lobe_views.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <list>
+
+#include <glm/glm.hpp>
+
+#include "accuracy/albedo_curve.h"
+#include "common/luminance.h"
+#include "lobe_plot.h"
+#include "shading/brdf_slice.h"
+#include "ui_scale.h"
+#include "widgets.h"
+
+namespace patina::editor {
+
+namespace {
+constexpr int kSliceSize = 48;   // cells a side: a rectangle each, so no texture to keep
+const ImU32 kLabel = IM_COL32(170, 170, 180, 255);
+
+ImU32 colourOf(glm::vec3 shown) {
+    return IM_COL32(int(shown.r * 255.0f + 0.5f), int(shown.g * 255.0f + 0.5f), int(shown.b * 255.0f + 0.5f), 255);
+}
+
+// One slice at `at`, `side` pixels square, its caption above, axes labelled; the hovered cell's
+// angles and f in a tooltip.
+void drawSlice(const BrdfSlice& slice, const LobeSettings& lobe, ImVec2 at, float side, const char* caption) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float cell = side / float(slice.size), line = ImGui::GetTextLineHeight();
+    draw->AddText(ImVec2(at.x, at.y - line - px(2)), kLabel, caption);
+    for (int y = 0; y < slice.size; ++y) {
+        for (int x = 0; x < slice.size; ++x) {
+            const glm::vec3 f = slice.at(x, y);
+            const ImU32 colour = f.x < 0.0f ? IM_COL32(30, 30, 40, 255)
+                                            : colourOf(sliceShown(f, lobe.sliceExposure, lobe.sliceLog));
+            const ImVec2 min(at.x + float(x) * cell, at.y + float(y) * cell);
+            draw->AddRectFilled(min, ImVec2(min.x + cell + 0.5f, min.y + cell + 0.5f), colour);
+        }
+    }
+    draw->AddText(ImVec2(at.x, at.y + side + px(1)), kLabel, "0");
+    const char* across = "theta_h ->";
+    draw->AddText(ImVec2(at.x + (side - ImGui::CalcTextSize(across).x) * 0.5f, at.y + side + px(1)), kLabel, across);
+    draw->AddText(ImVec2(at.x + side - ImGui::CalcTextSize("90").x, at.y + side + px(1)), kLabel, "90");
+    draw->AddText(ImVec2(at.x - ImGui::CalcTextSize("90").x - px(3), at.y), kLabel, "90");
+    draw->AddText(ImVec2(at.x - ImGui::CalcTextSize("td").x - px(3), at.y + side * 0.5f - line * 0.5f), kLabel, "td");
+    if (ImGui::IsMouseHoveringRect(at, ImVec2(at.x + side, at.y + side))) {
+        const ImVec2 mouse = ImGui::GetIO().MousePos;
+        const int x = std::clamp(int((mouse.x - at.x) / cell), 0, slice.size - 1);
+        const int y = std::clamp(int((mouse.y - at.y) / cell), 0, slice.size - 1);
+        const glm::vec2 angles = sliceAngles(x, y, slice.size);
+        const glm::vec3 f = slice.at(x, y);
+        if (f.x < 0.0f) {
+            ImGui::SetTooltip("theta_h %.1f  theta_d %.1f deg\nL or V below the horizon", double(angles.x),
+                              double(angles.y));
+        } else {
+            ImGui::SetTooltip("theta_h %.1f  theta_d %.1f deg\nf = (%.4g, %.4g, %.4g) /sr", double(angles.x),
+                              double(angles.y), double(f.r), double(f.g), double(f.b));
+        }
+    }
+}
+
+// The albedo curves of the last few materials asked about: the ground truth takes milliseconds,
+// too long to redo every frame of a slider drag for a material that did not change.
+const std::vector<AlbedoPoint>& albedoOf(const MaterialParameters& material) {
+    static std::list<std::pair<MaterialParameters, std::vector<AlbedoPoint>>> cache;
+    for (auto it = cache.begin(); it != cache.end(); ++it) {
+        if (it->first == material) {
+            cache.splice(cache.begin(), cache, it);
+            return cache.front().second;
+        }
+    }
+    cache.emplace_front(material, albedoCurve(material, 19, 256));
+    if (cache.size() > 4) {
+        cache.pop_back();
+    }
+    return cache.front().second;
+}
+}  // namespace
+
+void drawSliceView(EditorState& state, ImVec2 size) {
+    const LobeSettings& lobe = state.lobe;
+    const SliceLobe which = SliceLobe(std::clamp(lobe.sliceLobe, 0, 2));
+    const float line = ImGui::GetTextLineHeight();
+    const int count = state.compareA ? 2 : 1;
+    const float margin = ImGui::CalcTextSize("90").x + px(8);
+    const float side = std::max(std::min((size.x - margin * float(count)) / float(count) - px(8), size.y - 2.0f * line - px(8)),
+                                px(32));
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::GetWindowDrawList()->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
+    ImVec2 at(origin.x + margin, origin.y + line + px(4));
+    if (state.compareA) {
+        drawSlice(brdfSlice(*state.compareA, lobe.phiDDegrees, kSliceSize, which), lobe, at, side, "A");
+        at.x += side + margin + px(8);
+    }
+    drawSlice(brdfSlice(editedMaterial(state), lobe.phiDDegrees, kSliceSize, which), lobe, at, side,
+              state.compareA ? "B" : "theta_h across, theta_d up (degrees)");
+    ImGui::Dummy(size);
+    recordItem("slice", "BRDF Explorer's image slice: f over theta_h (across) and theta_d (up) at phi_d; hover for values");
+}
+
+void drawAlbedoView(const EditorState& state, ImVec2 size) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float line = ImGui::GetTextLineHeight();
+    draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
+    struct Shown {
+        const std::vector<AlbedoPoint>* curve;
+        ImU32 colour;
+        const char* name;
+    };
+    std::vector<Shown> shown;
+    if (state.compareA) {
+        shown.push_back({&albedoOf(*state.compareA), IM_COL32(170, 170, 170, 255), "A"});
+    }
+    shown.push_back({&albedoOf(editedMaterial(state)), IM_COL32(255, 170, 80, 255), state.compareA ? "B" : ""});
+    // Luminance; a bar is the luminance of the channels' standard errors, which bounds its own.
+    float top = 1.0f;
+    for (const Shown& s : shown) {
+        for (const AlbedoPoint& p : *s.curve) {
+            top = std::max({top, luminance(p.product), luminance(p.truth) + luminance(p.standardError)});
+        }
+    }
+    top *= 1.05f;
+    const ImVec2 plotMin(origin.x + ImGui::CalcTextSize("0.00").x + px(10), origin.y + px(6));
+    const ImVec2 plotMax(origin.x + size.x - px(8), origin.y + size.y - line - px(6));
+    auto toScreen = [&](float thetaV, float value) {
+        return ImVec2(plotMin.x + (plotMax.x - plotMin.x) * thetaV / 90.0f,
+                      plotMax.y - (plotMax.y - plotMin.y) * value / top);
+    };
+    for (float tick : {0.0f, 0.5f, 1.0f}) {
+        const ImVec2 at = toScreen(0.0f, tick);
+        draw->AddLine(at, ImVec2(plotMax.x, at.y), IM_COL32(60, 60, 70, 255));
+        char text[16];
+        std::snprintf(text, sizeof text, "%.2f", double(tick));
+        draw->AddText(ImVec2(origin.x + px(4), at.y - line * 0.5f), kLabel, text);
+    }
+    draw->AddText(ImVec2(plotMin.x, plotMax.y + px(2)), kLabel, "0");
+    const char* axis = "theta_v (degrees)";
+    draw->AddText(ImVec2((plotMin.x + plotMax.x - ImGui::CalcTextSize(axis).x) * 0.5f, plotMax.y + px(2)), kLabel, axis);
+    draw->AddText(ImVec2(plotMax.x - ImGui::CalcTextSize("90").x, plotMax.y + px(2)), kLabel, "90");
+    for (const Shown& s : shown) {
+        for (const AlbedoPoint& p : *s.curve) {
+            draw->PathLineTo(toScreen(p.thetaVDegrees, luminance(p.product)));
+        }
+        draw->PathStroke(s.colour, 0, 2.0f);
+        for (const AlbedoPoint& p : *s.curve) {
+            const float value = luminance(p.truth), error = luminance(p.standardError);
+            const ImVec2 low = toScreen(p.thetaVDegrees, value - error), high = toScreen(p.thetaVDegrees, value + error);
+            draw->AddLine(low, high, IM_COL32(255, 255, 255, 220), 1.0f);
+            draw->AddLine(ImVec2(low.x - px(3), low.y), ImVec2(low.x + px(3), low.y), IM_COL32(255, 255, 255, 220));
+            draw->AddLine(ImVec2(high.x - px(3), high.y), ImVec2(high.x + px(3), high.y), IM_COL32(255, 255, 255, 220));
+            draw->AddCircle(toScreen(p.thetaVDegrees, value), px(3), s.colour, 8, 1.5f);
+        }
+    }
+    ImVec2 legend(plotMin.x + px(8), plotMin.y + px(4));
+    for (const Shown& s : shown) {
+        char text[96];
+        std::snprintf(text, sizeof text, "%s%ssplit sum (line), ground truth +- 1 s.e. (circles)", s.name, *s.name ? ": " : "");
+        draw->AddLine(ImVec2(legend.x, legend.y + line * 0.5f), ImVec2(legend.x + px(16), legend.y + line * 0.5f), s.colour, 2.0f);
+        draw->AddText(ImVec2(legend.x + px(20), legend.y), kLabel, text);
+        legend.y += line;
+    }
+    ImGui::Dummy(size);
+    recordItem("albedo", "Directional albedo (luminance) against theta_v under a white furnace: the split sum's tables "
+                         "against the ground truth's Monte Carlo estimate");
+    if (ImGui::IsItemHovered()) {
+        const std::vector<AlbedoPoint>& curve = *shown.back().curve;
+        const float thetaV = std::clamp((ImGui::GetIO().MousePos.x - plotMin.x) / (plotMax.x - plotMin.x), 0.0f, 1.0f) * 90.0f;
+        const AlbedoPoint& p = *std::min_element(curve.begin(), curve.end(), [&](const AlbedoPoint& a, const AlbedoPoint& b) {
+            return std::abs(a.thetaVDegrees - thetaV) < std::abs(b.thetaVDegrees - thetaV);
+        });
+        ImGui::SetTooltip("theta_v %.1f deg\nsplit sum %.4f\nground truth %.4f +- %.4f", double(p.thetaVDegrees),
+                          double(luminance(p.product)), double(luminance(p.truth)), double(luminance(p.standardError)));
+    }
+}
+
+void drawLobe3dView(EditorState& state, ImVec2 size) {
+    LobeSettings& lobe = state.lobe;
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("lobe3d", size);
+    recordItem("lobe 3d", "The lobe over every outgoing direction for theta_in; drag to turn it");
+    if (ImGui::IsItemActive()) {
+        const ImVec2 delta = ImGui::GetIO().MouseDelta;
+        lobe.yawDegrees = std::fmod(lobe.yawDegrees + delta.x * 0.5f, 360.0f);
+        lobe.pitchDegrees = std::clamp(lobe.pitchDegrees + delta.y * 0.5f, -10.0f, 89.0f);
+    }
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
+    draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+    const float yaw = glm::radians(lobe.yawDegrees), pitch = glm::radians(lobe.pitchDegrees);
+    const float scale = std::min(size.x * 0.45f, size.y * 0.8f);
+    const ImVec2 centre(origin.x + size.x * 0.5f, origin.y + size.y * 0.85f);
+    // Orthographic, turned by yaw about the normal and tilted by pitch towards the viewer.
+    auto project = [&](glm::vec3 p) {
+        const float x = p.x * std::cos(yaw) - p.y * std::sin(yaw), depth = p.x * std::sin(yaw) + p.y * std::cos(yaw);
+        return ImVec2(centre.x + scale * x, centre.y - scale * (p.z * std::cos(pitch) + depth * std::sin(pitch)));
+    };
+    for (int i = 0; i <= 48; ++i) {   // the horizon
+        const float a = glm::radians(7.5f * float(i));
+        draw->PathLineTo(project(glm::vec3(std::cos(a), std::sin(a), 0.0f)));
+    }
+    draw->PathStroke(IM_COL32(70, 70, 80, 255), 0, 1.0f);
+    draw->AddLine(project(glm::vec3(0.0f)), project(glm::vec3(0.0f, 0.0f, 1.0f)), IM_COL32(120, 120, 130, 255));
+    const float thetaIn = glm::radians(lobe.thetaInDegrees);
+    draw->AddLine(project(glm::vec3(0.0f)), project(glm::vec3(std::sin(thetaIn), 0.0f, std::cos(thetaIn))),
+                  IM_COL32(255, 220, 90, 255), 1.5f);
+    const std::vector<Lobe3d> lobes = lobes3d(state);
+    for (size_t l = lobes.size(); l-- > 0;) {   // B last, on top
+        const ImU32 colour = l == 0 ? IM_COL32(255, 170, 80, 220) : IM_COL32(170, 170, 170, 150);
+        auto at = [&](int ring, int meridian) {
+            return project(lobes[l].points[size_t(ring * kLobeMeridians + meridian % kLobeMeridians)]);
+        };
+        for (int ring = 1; ring < kLobeRings; ++ring) {
+            for (int m = 0; m <= kLobeMeridians; ++m) {
+                draw->PathLineTo(at(ring, m));
+            }
+            draw->PathStroke(colour, 0, 1.0f);
+        }
+        for (int m = 0; m < kLobeMeridians; m += 2) {
+            for (int ring = 0; ring < kLobeRings; ++ring) {
+                draw->PathLineTo(at(ring, m));
+            }
+            draw->PathStroke(colour, 0, 1.0f);
+        }
+    }
+    char text[96];
+    std::snprintf(text, sizeof text, "%s%.3g /sr at the largest%s", state.compareA ? "B orange, A grey; " : "",
+                  double(lobes.front().maxValue), lobe.logScale ? " (log, 3 decades)" : "");
+    draw->AddText(ImVec2(origin.x + px(6), origin.y + px(4)), kLabel, text);
+    draw->PopClipRect();
+}
+
+}  // namespace patina::editor
