@@ -140,6 +140,16 @@ void stopImGui() {
     ImGui::DestroyContext();
 }
 
+// What the status line says, which a frame drawn after the change must show: the messages, and
+// the PBR count the viewport sets after the menu bar has drawn the last one.
+std::string shownText(const EditorState& state, const EditorServices& services) {
+    std::string text = state.status + '\n' + state.error;
+    if (services.pbrTally) {
+        text += '\n' + std::to_string(services.pbrTally->flagged()) + '/' + std::to_string(services.pbrTally->texels);
+    }
+    return text;
+}
+
 // What the loop carries from one frame to the next.
 struct Loop {
     GLFWwindow* window;
@@ -157,7 +167,7 @@ struct Loop {
     int framesLeft = kFramesAfterInput;
     float appliedScale = 0.0f;   // none yet
     std::optional<std::chrono::milliseconds> autosaveDue{}, settingsDue{};
-    std::string shownMessages = state.status + '\n' + state.error;
+    std::string shownMessages = shownText(state, services);
 };
 
 // A few frames after input, then asleep until input, or until a change waiting to be written
@@ -263,7 +273,7 @@ void afterFrame(Loop& loop) {
     loop.settingsDue = loop.settingsWriter.update(state, loop.geometry, SettingsWriter::Clock::now());
     // A message set during this frame (a failed screenshot, an autosave error) is drawn now,
     // not when the next input happens to wake the loop.
-    if (std::string messages = state.status + '\n' + state.error; messages != loop.shownMessages) {
+    if (std::string messages = shownText(state, loop.services); messages != loop.shownMessages) {
         loop.shownMessages = std::move(messages);
         loop.framesLeft = std::max(loop.framesLeft, kFramesAfterInput);
     }

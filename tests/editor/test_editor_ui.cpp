@@ -1031,6 +1031,39 @@ TEST_F(EditorUi, TheViewMenuShowsAChannelInsteadOfThePicture) {
     EXPECT_EQ(differingPixels(picture, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }
 
+// The read-out in a comparison: the tooltip tells the story of the picture under the mouse (A's
+// half or B's side by side, either side of the divider in Split), and a pin placed on A's half
+// marks the same place in B's.
+TEST_F(EditorUi, PixelReadOutTellsAOrBInEveryView) {
+    click(centreOf("menu:View"));
+    click(centreOf("Pixel read-out"));
+    click(centreOf("Set A"));
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const float w = max.x - min.x, y = (min.y + max.y) * 0.5f;
+    ImGuiIO& io = ImGui::GetIO();
+    for (const char* view : {"Side by side", "Split"}) {
+        click(centreOf(view));
+        // Side by side: the halves' middles; Split (divider in the middle): a quarter in from each side.
+        const float left = min.x + w * 0.25f, right = min.x + w * 0.75f;
+        io.MousePos = ImVec2(left, y);
+        frames(2);
+        EXPECT_TRUE(itemsOfLastFrame().contains("pixel story A")) << view;
+        io.MousePos = ImVec2(right, y);
+        frames(2);
+        EXPECT_TRUE(itemsOfLastFrame().contains("pixel story B")) << view;
+        EXPECT_FALSE(itemsOfLastFrame().contains("pixel story A")) << view;
+    }
+    click(centreOf("Side by side"));
+    io.KeyCtrl = true;
+    click(ImVec2(min.x + w * 0.25f, y));   // the middle of A's half
+    io.KeyCtrl = false;
+    ASSERT_EQ(state_.pins.size(), 1u);
+    EXPECT_NEAR(state_.pins[0].x, 0.5f, 0.02f);
+    EXPECT_NEAR(state_.pins[0].y, 0.5f, 0.02f);
+    EXPECT_TRUE(itemsOfLastFrame().contains("unpin:1"));
+}
+
 // The lobe panel's BRDF Explorer views: each draws (with A beside B), the slice's hover tells a
 // cell's angles, and dragging the 3D lobe turns it.
 TEST_F(EditorUi, TheLobePanelShowsTheSliceTheAlbedoAndTheThreeDLobe) {

@@ -551,6 +551,53 @@ TEST_F(EditorWindow, PanelsGrowBackAfterTheWindowShrinks) {
     EXPECT_EQ(file["rightPanelWidth"].get<float>(), 340.0f);
 }
 
+// The inspector driven as a user drives it, in every view: a channel from View > Channel, the
+// PBR overlay, hovering with the read-out (the tooltip for the side under the mouse), Ctrl+click
+// to pin, and F12, which writes the picture and leaves the editor running.
+TEST_F(EditorWindow, TheInspectorWorksInEveryView) {
+    auto menu = [&](const std::vector<std::string>& path) {
+        for (const std::string& item : path) {
+            ASSERT_TRUE(waitFor([&] { return rect(item).size() == 4; }, 10s)) << item << " is not shown";
+            ASSERT_TRUE(clickOn(item)) << item;
+        }
+    };
+    auto hover = [&](float fraction) {
+        const std::vector<float> view = rect("viewport");
+        const int before = frameDrawn();
+        xdotool("mousemove --window " + window_ + " " + std::to_string(int(view[0] + (view[2] - view[0]) * fraction)) +
+                " " + std::to_string(int((view[1] + view[3]) / 2)));
+        std::this_thread::sleep_for(300ms);
+        waitUntilDrawn(before);
+    };
+    menu({"menu:View", "Pixel read-out"});
+    menu({"menu:View", "PBR validation overlay"});
+    ASSERT_TRUE(waitFor([&] { return rect("PBR tally").size() == 4; }, 10s)) << "no PBR count in the status line";
+    ASSERT_TRUE(clickOn("Set A"));
+    size_t pins = 0;
+    for (const char* view : {"Single", "Split", "Side by side"}) {
+        ASSERT_TRUE(clickOn(view));
+        menu({"menu:View", "Channel", "channel:nov"});
+        EXPECT_TRUE(waitFor([&] { return rect("channel label").size() == 4; }, 10s)) << view;
+        hover(0.25f);
+        const std::string left = std::string(view) == "Single" ? "pixel story" : "pixel story A";
+        EXPECT_TRUE(waitFor([&] { return rect(left).size() == 4; }, 10s)) << view << ": no read-out on the left";
+        hover(0.75f);
+        const std::string right = std::string(view) == "Single" ? "pixel story" : "pixel story B";
+        EXPECT_TRUE(waitFor([&] { return rect(right).size() == 4; }, 10s)) << view << ": no read-out on the right";
+        const int before = frameDrawn();
+        xdotool("keydown ctrl click 1 keyup ctrl");
+        std::this_thread::sleep_for(300ms);
+        waitUntilDrawn(before);
+        ++pins;
+        EXPECT_TRUE(waitFor([&] { return rect("unpin:" + std::to_string(pins)).size() == 4; }, 10s))
+            << view << ": Ctrl+click pinned nothing";
+        menu({"menu:View", "Channel", "channel:picture"});
+        const fs::path shot = screenshotOfViewport();
+        ASSERT_FALSE(shot.empty()) << view;
+        EXPECT_TRUE(editor_->running()) << view;
+    }
+}
+
 TEST_F(EditorWindow, IdleEditorUsesUnderTwoPercentOfACore) {
     std::this_thread::sleep_for(2s);   // let start-up work and the first frames finish
     const long start = cpuTicks(editor_->pid());

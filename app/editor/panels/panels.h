@@ -1,4 +1,7 @@
 #pragma once
+#include <vector>
+
+#include <imgui.h>
 // One function per panel: each reads EditorState, draws its widgets and writes the state back.
 #include "editor_services.h"
 #include "editor_state.h"
@@ -11,10 +14,20 @@ void drawViewportPanel(EditorState& state, EditorServices& services);
 void drawLobePanel(EditorState& state);
 void drawAccuracyPanel(EditorState& state, EditorServices& services);
 void drawPresetsPanel(EditorState& state, EditorServices& services);
-// View > Pixel read-out over the picture of `shown` (origin, size on screen): the hovered
-// pixel's story, Ctrl+click pins, and the Pinned pixels window.
-void drawPixelReadOut(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
-                      ImVec2 size, bool hovered);
+// One picture the viewport shows, for the read-out: its scene, where the whole picture is on
+// screen (origin, size), the part of it that shows (hoverMin to hoverMax: Split shows A's left
+// part) and which side it is ("A", "B"; "" alone).
+struct ReadOutPicture {
+    const PreparedScene* scene;
+    ImVec2 origin, size, hoverMin, hoverMax;
+    const char* side;
+};
+// View > Pixel read-out over the viewport's pictures, B's last: the hovered pixel's story, told
+// by the picture under the mouse; Ctrl+click pins a place (fractions of the picture, so a pin
+// marks the same place in each picture of a comparison); the Pinned pixels window tells B's
+// story at each pin.
+void drawPixelReadOut(EditorState& state, EditorServices& services, const std::vector<ReadOutPicture>& pictures,
+                      bool hovered);
 void drawMenuBar(EditorState& state, EditorServices& services);
 // Writes the screenshot F12 asked for in the frame before (EditorState::screenshotRequested).
 void takeRequestedScreenshot(EditorState& state, EditorServices& services);

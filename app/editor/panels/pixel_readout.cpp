@@ -132,25 +132,38 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
 }
 }  // namespace
 
-void drawPixelReadOut(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
-                      ImVec2 size, bool hovered) {
-    if (!state.pixelReadOut) {
+void drawPixelReadOut(EditorState& state, EditorServices& services, const std::vector<ReadOutPicture>& pictures,
+                      bool hovered) {
+    if (!state.pixelReadOut || pictures.empty()) {
         return;
     }
-    const int width = int(size.x), height = int(size.y);
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    for (size_t i = 0; i < state.pins.size(); ++i) {
-        const ImVec2 at(origin.x + state.pins[i].x * size.x, origin.y + state.pins[i].y * size.y);
-        draw->AddCircle(at, px(5), IM_COL32(255, 220, 120, 255), 12, px(2));
-        draw->AddText(ImVec2(at.x + px(6), at.y - px(16)), IM_COL32(255, 220, 120, 255), std::to_string(i + 1).c_str());
+    for (const ReadOutPicture& picture : pictures) {
+        draw->PushClipRect(picture.hoverMin, picture.hoverMax, true);
+        for (size_t i = 0; i < state.pins.size(); ++i) {
+            const ImVec2 at(picture.origin.x + state.pins[i].x * picture.size.x,
+                            picture.origin.y + state.pins[i].y * picture.size.y);
+            draw->AddCircle(at, px(5), IM_COL32(255, 220, 120, 255), 12, px(2));
+            draw->AddText(ImVec2(at.x + px(6), at.y - px(16)), IM_COL32(255, 220, 120, 255), std::to_string(i + 1).c_str());
+        }
+        draw->PopClipRect();
     }
     const ImGuiIO& io = ImGui::GetIO();
     const bool busy = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
                       ImGui::IsMouseDown(ImGuiMouseButton_Middle);
-    if (hovered && !busy) {
-        const int x = int(io.MousePos.x - origin.x), y = int(io.MousePos.y - origin.y);
-        const PixelStory* story = services.pixelStory(shown, width, height, x, y);
+    // The picture under the mouse: the last that holds it (Split's A is over B's left part).
+    const ReadOutPicture* under = nullptr;
+    for (const ReadOutPicture& picture : pictures) {
+        under = hovered && ImGui::IsMouseHoveringRect(picture.hoverMin, picture.hoverMax) ? &picture : under;
+    }
+    if (under && !busy) {
+        const int width = int(under->size.x), height = int(under->size.y);
+        const int x = int(io.MousePos.x - under->origin.x), y = int(io.MousePos.y - under->origin.y);
+        const PixelStory* story = services.pixelStory(*under->scene, width, height, x, y);
         ImGui::BeginTooltip();
+        if (*under->side) {
+            ImGui::Text("%s", under->side);
+        }
         if (story) {
             for (const std::string& line : storyLines(*story)) {
                 ImGui::TextUnformatted(line.c_str());
@@ -160,12 +173,16 @@ void drawPixelReadOut(EditorState& state, EditorServices& services, const Prepar
             ImGui::Text("pixel %d, %d: background, no surface", x, y);
         }
         ImGui::EndTooltip();
+        recordArea(std::string("pixel story") + (*under->side ? std::string(" ") + under->side : std::string()),
+                   under->hoverMin, under->hoverMax);
     }
-    if (hovered && io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+    if (under && io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= px(3.0f) * px(3.0f)) {
-        state.pins.push_back({(io.MousePos.x - origin.x) / size.x, (io.MousePos.y - origin.y) / size.y});
+        state.pins.push_back({(io.MousePos.x - under->origin.x) / under->size.x,
+                              (io.MousePos.y - under->origin.y) / under->size.y});
     }
-    drawPinsWindow(state, services, shown, origin, width, height);
+    const ReadOutPicture& b = pictures.back();
+    drawPinsWindow(state, services, *b.scene, b.origin, int(b.size.x), int(b.size.y));
 }
 
 }  // namespace patina::editor

@@ -631,12 +631,31 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     }
     drawEnvironmentProgress(state, area);
     drawChannelLabel(state, area);
-    // The read-out tells the story of what Single shows (a comparison's halves are other pictures).
-    if (!state.compareA || state.compareView == CompareView::Single) {
-        const ImVec2 end(area.origin.x + area.size.x, area.origin.y + area.size.y);
-        drawPixelReadOut(state, services, preparedScene(state, b), area.origin, area.size,
-                         ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(area.origin, end));
+    // The read-out tells the story of the picture under the mouse: B, or A and B.
+    const PreparedScene preparedB = preparedScene(state, b);
+    std::optional<Scene> sceneA;   // outlives preparedA, which refers to it
+    std::optional<PreparedScene> preparedA;
+    std::vector<ReadOutPicture> pictures;
+    const ImVec2 end(area.origin.x + area.size.x, area.origin.y + area.size.y);
+    if (state.pixelReadOut && state.compareA && state.compareView != CompareView::Single) {
+        sceneA = withMaterial(state, *state.compareA);
+        preparedA.emplace(preparedScene(state, *sceneA));
+        if (state.compareView == CompareView::SideBySide) {
+            const float half = float(std::max(area.width / 2, 8));
+            const ImVec2 size(half, area.size.y), middle(area.origin.x + half, area.origin.y);
+            pictures.push_back({&*preparedA, area.origin, size, area.origin, ImVec2(middle.x, end.y), "A"});
+            pictures.push_back({&preparedB, middle, size, middle, ImVec2(middle.x + half, end.y), "B"});
+        } else {
+            const float split = area.origin.x + area.size.x * std::clamp(state.splitPosition, 0.0f, 1.0f);
+            pictures.push_back({&preparedB, area.origin, area.size, area.origin, end, "B"});
+            pictures.push_back({&*preparedA, area.origin, area.size, area.origin, ImVec2(split, end.y), "A"});
+            std::swap(pictures[0], pictures[1]);   // B last: the pins' window tells B's story
+            pictures[1].hoverMin.x = split;        // B shows right of the divider
+        }
+    } else {
+        pictures.push_back({&preparedB, area.origin, area.size, area.origin, end, ""});
     }
+    drawPixelReadOut(state, services, pictures, ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(area.origin, end));
     if (state.showAdvanced) {
         drawRenderOverlay(state, services, b, area);
     }
