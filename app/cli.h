@@ -14,6 +14,8 @@ using Command = std::function<void()>;
 Command addRenderCommand(CLI::App& app);
 Command addProbeCommand(CLI::App& app);
 Command addLobeCommand(CLI::App& app);
+Command addSliceCommand(CLI::App& app);
+Command addAlbedoCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addSheetCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);

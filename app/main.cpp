@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
                                           "memory to stderr");
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
     for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
-                     patina::cli::addLobeCommand, patina::cli::addCompareCommand,
+                     patina::cli::addLobeCommand, patina::cli::addSliceCommand,
+                     patina::cli::addAlbedoCommand, patina::cli::addCompareCommand,
                      patina::cli::addSheetCommand, patina::cli::addBenchCommand,
                      patina::cli::addBenchRenderCommand,
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,

@@ -72,19 +72,6 @@ LobePlot lobePlot(const EditorState& state) {
     return plot;
 }
 
-glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale) {
-    glm::vec3 shown(0.0f);
-    for (int c = 0; c < 3; ++c) {
-        if (!(value[c] >= 0.0f)) {
-            continue;   // below the horizon
-        }
-        const float v = value[c] * std::exp2(exposureStops);
-        const float fraction = logScale ? (std::log10(std::max(v, 1e-12f)) + 2.0f) / 4.0f : v;
-        shown[c] = shader::srgbEncode(std::clamp(fraction, 0.0f, 1.0f));
-    }
-    return shown;
-}
-
 std::vector<Lobe3d> lobes3d(const EditorState& state) {
     const LobeSettings& lobe = state.lobe;
     const float cosine = lobe.multiplyByCosine ? std::cos(glm::radians(lobe.thetaInDegrees)) : 1.0f;

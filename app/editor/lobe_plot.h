@@ -32,11 +32,6 @@ LobePlot lobePlot(const EditorState& state);
 // scale 3 decades below the maximum to the maximum.
 float lobeRadius(float value, float maxValue, bool logScale);
 
-// A slice pixel's value (1/sr) as shown, sRGB in [0, 1]: times 2^exposure, then linear
-// (clamped at 1) or in log scale four decades, 0.01 to 100 1/sr, so a Lambert lobe (c / pi) and
-// a sharp specular peak both read; no value (below the horizon, -1) is 0.
-glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale);
-
 // The 3D lobe's surface for theta_in (Lobe3d): luminance of f (times cos theta_in with "x cos")
 // over outgoing directions, kLobeRings rings of theta_out from 0 to 90 degrees by kLobeMeridians
 // of phi_out; the points' distance from the centre is lobeRadius of the value.

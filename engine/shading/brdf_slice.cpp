@@ -1,5 +1,6 @@
 #include "shading/brdf_slice.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -8,6 +9,7 @@
 
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
+#include "shading/shading.h"
 
 namespace patina {
 
@@ -23,6 +25,19 @@ DirectionPair halfDifferenceDirections(float thetaH, float thetaD, float phiD) {
 
 glm::vec2 sliceAngles(int x, int y, int size) {
     return {90.0f * (float(x) + 0.5f) / float(size), 90.0f * (float(size - 1 - y) + 0.5f) / float(size)};
+}
+
+glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale) {
+    glm::vec3 shown(0.0f);
+    for (int c = 0; c < 3; ++c) {
+        if (!(value[c] >= 0.0f)) {
+            continue;   // below the horizon
+        }
+        const float v = value[c] * std::exp2(exposureStops);
+        const float fraction = logScale ? (std::log10(std::max(v, 1e-12f)) + 2.0f) / 4.0f : v;
+        shown[c] = shader::srgbEncode(std::clamp(fraction, 0.0f, 1.0f));
+    }
+    return shown;
 }
 
 BrdfSlice brdfSlice(const MaterialParameters& material, float phiDDegrees, int size, SliceLobe lobe) {

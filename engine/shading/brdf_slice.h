@@ -33,6 +33,11 @@ struct BrdfSlice {
 };
 BrdfSlice brdfSlice(const MaterialParameters& material, float phiDDegrees, int size, SliceLobe lobe);
 
+// A slice value (1/sr) as shown, sRGB in [0, 1]: times 2^exposure, then linear (clamped at 1)
+// or in log scale four decades, 0.01 to 100 1/sr, so a Lambert lobe (c / pi) and a sharp
+// specular peak both read; no value (below the horizon, -1) is 0.
+glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale);
+
 // The angles at pixel (x, y)'s centre, degrees: (theta_h, theta_d).
 glm::vec2 sliceAngles(int x, int y, int size);
 

@@ -1,6 +1,7 @@
 // The inspector on the command line (docs/INSPECTOR.md): `render --channel` writes a channel as
 // data (the PFM untouched, the PNG without exposure or tone map), on the GPU or with
 // --reference the CPU twin, and refuses what it cannot show with exit 2 or 3.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -108,6 +109,48 @@ TEST_F(CliInspect, PbrValidationCountsTheFlaggedPixels) {
         counts[reference] = flagged;
     }
     EXPECT_NEAR(double(counts[0]), double(counts[1]), 0.02 * double(counts[1]));
+}
+
+// `slice` writes BRDF Explorer's slice: the diffuse lobe's values are c_diff / pi at every pixel
+// above the horizon (the default material is a dielectric: c_diff is its base colour), the PNG
+// the size asked; `albedo` writes the split sum beside the ground truth with its error, a row an
+// angle; a lobe it does not know is a usage error.
+TEST_F(CliInspect, SliceAndAlbedoWriteBrdfExplorersViews) {
+    const test::CliRun slice = run("slice --lobe diffuse --phi-d 0 --size 32 --out " + path("s.png").string() +
+                                   " --hdr " + path("s.pfm").string());
+    ASSERT_EQ(slice.exitCode, 0) << slice.stderrText;
+    const HdrImage values = decodePfm(readFileBytes(path("s.pfm")));
+    ASSERT_EQ(values.width, 32);
+    const glm::vec3 expected = defaultScene().material.baseColor / 3.14159265f;
+    int above = 0, below = 0;
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 32; ++x) {
+            const glm::vec3 f = test::pixel(values, x, y);
+            if (f.x < 0.0f) {
+                ++below;
+                continue;
+            }
+            ++above;
+            EXPECT_NEAR(f.g, expected.g, 1e-5f);
+        }
+    }
+    EXPECT_GT(above, 400);
+    EXPECT_GT(below, 400);   // phi_d = 0: theta_h + theta_d past 90 degrees
+    EXPECT_EQ(decodePng(readFileBytes(path("s.png"))).width, 32);
+
+    const test::CliRun albedo = run("albedo --points 5 --samples 256 --out " + path("a.csv").string());
+    ASSERT_EQ(albedo.exitCode, 0) << albedo.stderrText;
+    const std::string csv(reinterpret_cast<const char*>(readFileBytes(path("a.csv")).data()),
+                          readFileBytes(path("a.csv")).size());
+    EXPECT_EQ(csv.rfind("theta_v_deg,split_sum_r,", 0), 0u) << csv;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 6);
+    float theta = -1, product = -1, truth = -1;
+    ASSERT_EQ(std::sscanf(csv.c_str() + csv.find('\n') + 1, "%f,%f,%*f,%*f,%f", &theta, &product, &truth), 3);
+    EXPECT_EQ(theta, 0.0f);
+    EXPECT_NEAR(product, truth, 0.05f);
+
+    EXPECT_EQ(run("slice --lobe shiny --out " + path("x.png").string()).exitCode, 2);
+    EXPECT_FALSE(std::filesystem::exists(path("x.png")));
 }
 
 glm::vec3 vec3Of(const Json& values) {

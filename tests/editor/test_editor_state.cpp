@@ -1058,17 +1058,6 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     EXPECT_NEAR(lobeRadius(plot.maxValue * 1e-1f, plot.maxValue, true), 2.0f / 3.0f, 1e-5f);
 }
 
-// The slice's display: a Lambert lobe's c / pi reads mid-scale in log (four decades from 0.01),
-// exposure doubles per stop, and no value (below the horizon) is black.
-TEST_F(EditorStateTest, TheSliceShowsValuesByExposureAndLogScale) {
-    const glm::vec3 lambert(0.1f);
-    EXPECT_NEAR(sliceShown(lambert, 0.0f, true).x, shader::srgbEncode(0.25f), 1e-6f);   // log10(0.1) = -1
-    EXPECT_NEAR(sliceShown(lambert, 0.0f, false).x, shader::srgbEncode(0.1f), 1e-6f);
-    EXPECT_NEAR(sliceShown(lambert, 1.0f, false).x, shader::srgbEncode(0.2f), 1e-6f);
-    EXPECT_NEAR(sliceShown(glm::vec3(1000.0f), 0.0f, true).x, 1.0f, 1e-6f);   // clamped at the top
-    EXPECT_EQ(sliceShown(glm::vec3(-1.0f), 0.0f, true), glm::vec3(0.0f));
-}
-
 // The 3D lobe: B and A on one scale, and a sharp metal's lobe reaches furthest towards the
 // mirror direction of theta_in (phi_out = 180 degrees in the plane of incidence).
 TEST_F(EditorStateTest, TheThreeDLobePeaksAtTheMirrorDirection) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "shading/brdf_slice.h"
+#include "shading/shading.h"
 
 namespace patina {
 namespace {
@@ -75,6 +76,17 @@ TEST(BrdfSlice, ALambertLobeIsConstantAndTheSpecularPeakIsAtThetaHZero) {
     const BrdfSlice total = brdfSlice(material, 0.0f, size, SliceLobe::Total);
     const BrdfSlice specular0 = brdfSlice(material, 0.0f, size, SliceLobe::Specular);
     EXPECT_NEAR(total.at(3, size - 5).x, diffuse.at(3, size - 5).x + specular0.at(3, size - 5).x, 1e-5f);
+}
+
+// The slice's display: a Lambert lobe's c / pi reads mid-scale in log (four decades from 0.01),
+// exposure doubles per stop, and no value (below the horizon) is black.
+TEST(BrdfSlice, TheSliceShowsValuesByExposureAndLogScale) {
+    const glm::vec3 lambert(0.1f);
+    EXPECT_NEAR(sliceShown(lambert, 0.0f, true).x, shader::srgbEncode(0.25f), 1e-6f);   // log10(0.1) = -1
+    EXPECT_NEAR(sliceShown(lambert, 0.0f, false).x, shader::srgbEncode(0.1f), 1e-6f);
+    EXPECT_NEAR(sliceShown(lambert, 1.0f, false).x, shader::srgbEncode(0.2f), 1e-6f);
+    EXPECT_NEAR(sliceShown(glm::vec3(1000.0f), 0.0f, true).x, 1.0f, 1e-6f);   // clamped at the top
+    EXPECT_EQ(sliceShown(glm::vec3(-1.0f), 0.0f, true), glm::vec3(0.0f));
 }
 
 }  // namespace
