@@ -32,8 +32,8 @@ Command addValidateCommand(CLI::App& app);
 // folder, default: the current one) and --quick, and their charts' files.
 using Measurement = std::function<void(const std::filesystem::path& folder, bool quick)>;
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure);
-// STEM.png, and with `svg` STEM.svg.
-void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg);
+// STEM.png, and with `vector` STEM.svg and STEM.pdf: the same drawing on each surface.
+void writeChart(const std::filesystem::path& stem, const Chart& chart, bool vector);
 // area-accuracy's outputs into `folder` (lighting-accuracy writes them beside its own).
 void writeAreaAccuracy(const std::filesystem::path& folder, bool quick);
 

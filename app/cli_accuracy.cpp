@@ -17,9 +17,10 @@
 
 namespace patina::cli {
 
-void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg) {
-    if (svg) {
+void writeChart(const std::filesystem::path& stem, const Chart& chart, bool vector) {
+    if (vector) {
         writeOutputText(stem.string() + ".svg", chartToSvg(chart));
+        writeOutputText(stem.string() + ".pdf", chartToPdf(chart));
     }
     writeOutput(stem.string() + ".png", encodePng(chartToImage(chart)));
 }

@@ -150,7 +150,7 @@ Chart benchChart(const BenchResult& result) {
     Chart chart;
     auto panel = [&](const char* title, const char* xLabel, auto cost) {
         ChartPanel p{title, xLabel, "physical error: relative RMSE of f*NoL vs reference", true, true, {}};
-        ChartSeries points{"models", {}, chartColour(0), false, true, false, {}};
+        ChartSeries points{"models", {}, 0, false, true, false, {}, {}};
         for (const BenchRow& r : result.rows) {
             points.points.emplace_back(std::max(cost(r), 1e-3), std::max(r.physical.relativeRmse, kErrorFloor));
             points.pointLabels.push_back(r.physical.relativeRmse < kErrorFloor ? r.model + " (error 0)" : r.model);
@@ -158,7 +158,7 @@ Chart benchChart(const BenchResult& result) {
         // Pareto front: sorted by cost, keep each point cheaper-or-equal and more accurate than all before.
         std::vector<glm::dvec2> sorted = points.points;
         std::sort(sorted.begin(), sorted.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-        ChartSeries front{"Pareto front", {}, chartColour(3), true, false, true, {}};
+        ChartSeries front{"Pareto front", {}, 1, true, false, true, {}, {}};
         double best = INFINITY;
         for (const glm::dvec2& point : sorted) {
             if (point.y < best) {

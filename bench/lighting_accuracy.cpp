@@ -146,7 +146,7 @@ Chart lightingAccuracyChart(const LightingAccuracyResult& result) {
     ChartPanel cost{"Cost against error", "frame time, ms (" + std::to_string(result.width) + "^2, llvmpipe)",
                     "mean relative error against the ground truth", true, true, {}};
     for (size_t e = 0; e < environments.size(); ++e) {
-        ChartSeries series{environments[e], {}, chartColour(e), false, true, false, {}};
+        ChartSeries series{environments[e], {}, e, false, true, false, {}, {}};
         for (const LightingCostRow& row : result.costs) {
             series.points.emplace_back(row.frameMs, std::max(meanError(rows, row.method, environments[e]), 1e-5));
             series.pointLabels.push_back(e == 0 ? row.method : "");
@@ -163,17 +163,25 @@ Chart lightingAccuracyChart(const LightingAccuracyResult& result) {
             if (method.starts_with("stochastic") && method != "stochastic, 16 samples") {
                 continue;   // one of them stands for the rest here
             }
-            std::map<float, std::pair<double, int>> sums;
+            struct Sum {
+                double error = 0.0, truthVariance = 0.0;
+                int count = 0;
+            };
+            std::map<float, Sum> sums;
             for (const SplitSumErrorRow& row : rows) {
                 if (row.method == method) {
-                    auto& [sum, count] = sums[value(row)];
-                    sum += row.relativeError;
-                    ++count;
+                    Sum& sum = sums[value(row)];
+                    sum.error += row.relativeError;
+                    sum.truthVariance += row.truthRelativeStandardError * row.truthRelativeStandardError;
+                    ++sum.count;
                 }
             }
-            ChartSeries series{method, {}, chartColour(colour++), true, true, false, {}};
+            // The bars: the ground truth's standard error carried into the mean (to first order,
+            // a relative error moves by the truth's relative error; the rows' truths are independent).
+            ChartSeries series{method, {}, colour++, true, true, false, {}, {}};
             for (const auto& [x, sum] : sums) {
-                series.points.emplace_back(x, std::max(sum.first / sum.second, 1e-6));
+                series.points.emplace_back(x, std::max(sum.error / sum.count, 1e-6));
+                series.errors.push_back(std::sqrt(sum.truthVariance) / sum.count);
             }
             panel.series.push_back(series);
         }

@@ -658,7 +658,7 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
                      : added == AddedLights::Tubes      ? ", tubes"
                                                         : ", other coeffs");
         }
-        ChartSeries series{label, {}, chartColour(colour++), true, true, path == BenchPath::BrdfFloor, {}};
+        ChartSeries series{label, {}, colour++, true, true, path == BenchPath::BrdfFloor, {}, {}};
         for (const LightCountRow& row : result.lightRows) {
             if (row.path == path && row.added == added) {
                 series.points.emplace_back(row.lights, row.time.frame);
@@ -676,7 +676,7 @@ Chart renderBenchScaleChart(const RenderBenchResult& result) {
         ChartPanel panel{pixels ? "Frame time against resolution (3 lights, single)"
                                 : "Frame time against triangles (3 lights, single)",
                          pixels ? "megapixels" : "triangles", "frame time to glFinish (ms, median)", !pixels, !pixels, {}};
-        ChartSeries series{"single", {}, chartColour(1), true, true, false, {}};
+        ChartSeries series{"single", {}, 1, true, true, false, {}, {}};
         for (const ScaleRow& row : result.scaleRows) {
             if (row.axis == axis) {
                 series.points.emplace_back(pixels ? double(row.width) * row.height * 1e-6 : double(row.triangles),
