@@ -10,6 +10,7 @@
 
 #include "bench/timing.h"
 #include "common/luminance.h"
+#include "files/input_error.h"
 #include "gl/renderer.h"
 #include "image/compositing.h"
 #include "image/display_image.h"
@@ -31,6 +32,20 @@ std::optional<EnvironmentShading> shadingOf(const std::string& method) {
         return EnvironmentShading{EnvironmentMethod::Stochastic, std::stoi(method.substr(12))};
     }
     return std::nullopt;
+}
+
+// lighting_cost.csv's last row, the baseline without an environment.
+constexpr const char* kDirectionalRow = "one directional light (no environment)";
+
+std::vector<SplitSumErrorRow> parseSplitSumRows(const CsvFile& csv) {
+    std::vector<SplitSumErrorRow> rows;
+    for (const CsvLine& line : csvBody(csv, "environment,method,NoV,roughness,f0,relative_error,truth_relative_se")) {
+        expectCells(line, 7, csv.source);
+        auto number = [&](size_t column) { return csvNumber(line, column, csv.source); };
+        rows.push_back({line.cells[0], line.cells[1], float(number(2)), float(number(3)), float(number(4)), number(5),
+                        number(6)});
+    }
+    return rows;
 }
 
 // The sphere of sphereUnder's scenes, which are prepared with the environment already made.
@@ -78,7 +93,7 @@ LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& 
     result.accuracy = measureSplitSum(environments, options);
 
     // Frame time: a sphere filling most of the image, lit by the first environment alone.
-    result.width = result.height = quick ? 128 : 512;
+    result.width = result.height = lightingFrameSize(quick);
     RenderSettings settings;
     settings.width = result.width;
     settings.height = result.height;
@@ -106,6 +121,10 @@ LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& 
     return result;
 }
 
+int lightingFrameSize(bool quick) {
+    return quick ? 128 : 512;
+}
+
 std::string lightingCostCsv(const LightingAccuracyResult& result) {
     std::vector<std::string> names;
     for (const SplitSumErrorRow& row : result.accuracy.rows) {
@@ -127,8 +146,26 @@ std::string lightingCostCsv(const LightingAccuracyResult& result) {
         }
         csv << "\n";
     }
-    csv << "\"one directional light (no environment)\"," << result.directionalFrameMs << ",\n";
+    csv << "\"" << kDirectionalRow << "\"," << result.directionalFrameMs << ",\n";
     return csv.str();
+}
+
+LightingAccuracyResult parseLightingAccuracy(const CsvFile& splitSum, const CsvFile& cost, bool quick) {
+    LightingAccuracyResult result;
+    result.accuracy.rows = parseSplitSumRows(splitSum);
+    result.width = result.height = lightingFrameSize(quick);
+    for (const CsvLine& line : csvBody(cost, "method,frame_ms,mean_relative_error")) {
+        const std::string& method = line.cells[0];
+        const double frameMs = csvNumber(line, 1, cost.source);
+        if (method == kDirectionalRow) {
+            result.directionalFrameMs = frameMs;
+        } else if (const std::optional<EnvironmentShading> shading = shadingOf(method)) {
+            result.costs.push_back({method, *shading, frameMs});
+        } else {
+            throw InputError(cost.source + ":" + std::to_string(line.number) + ": no such method: " + method);
+        }
+    }
+    return result;
 }
 
 Chart lightingAccuracyChart(const LightingAccuracyResult& result) {
