@@ -37,6 +37,14 @@ std::filesystem::path outputFolder(const std::string& folder) {
     return path;
 }
 
+void writeBenchChart(const std::filesystem::path& folder, const BenchResult& result) {
+    writeChart(folder / "speed_accuracy", benchChart(result), true);
+}
+
+void writeLightingChart(const std::filesystem::path& folder, const LightingAccuracyResult& result) {
+    writeChart(folder / "lighting_accuracy", lightingAccuracyChart(result), true);
+}
+
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure) {
     struct Options {
         std::string outDir;
@@ -58,7 +66,7 @@ Command addBenchCommand(CLI::App& app) {
             options.quick = quick;
             const BenchResult result = runBench(options);
             writeOutputText((folder / "bench.csv").string(), benchCsv(result));
-            writeChart(folder / "speed_accuracy", benchChart(result), true);
+            writeBenchChart(folder, result);
             std::cout << result.rows.size() << " models, " << result.samples << " samples, on " << result.renderer
                       << "\n";
         });
@@ -147,7 +155,7 @@ Command addLightingAccuracyCommand(CLI::App& app) {
         writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
         writeOutputText((folder / "sh.csv").string(), shCsv(result.accuracy.sh));
         writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
-        writeChart(folder / "lighting_accuracy", lightingAccuracyChart(result), true);
+        writeLightingChart(folder, result);
         for (const NamedEnvironment& environment : environments) {
             writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
                         encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));
