@@ -708,7 +708,9 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
                 series.points.emplace_back(row.lights, row.time.frame);
             }
         }
-        panel.series.push_back(series);
+        if (!series.points.empty()) {   // a run from before a series existed: no legend entry for nothing
+            panel.series.push_back(series);
+        }
     }
     return Chart{{panel}};
 }

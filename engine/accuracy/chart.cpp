@@ -1,9 +1,12 @@
 #include "accuracy/chart.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
@@ -17,6 +20,7 @@ namespace patina {
 namespace {
 
 constexpr double kMarkerRadius = 4.5;
+constexpr double kPointLabelPixels = 10.0;
 constexpr double kCap = 4.0;   // half an error bar's cap
 
 void setColour(cairo_t* cr, Rgb8 c) {
@@ -42,6 +46,7 @@ void drawText(cairo_t* cr, const ChartText& text) {
 
 // A marker's outline around the origin; filled except the cross and the plus, which are strokes.
 void markerPath(cairo_t* cr, ChartMarker marker, double r) {
+    cairo_new_path(cr);   // a text drawn before leaves a current point, which a polygon's first line_to would join
     auto polygon = [cr](int corners, double radius, double turn) {
         for (int k = 0; k < corners; ++k) {
             const double a = turn + 2 * std::numbers::pi * k / corners;
@@ -143,13 +148,44 @@ void drawSeries(cairo_t* cr, const ChartPanelLayout& panel, const ChartSeries& s
     }
 }
 
-void drawPointLabels(cairo_t* cr, const ChartPanelLayout& panel, const ChartSeries& series) {
+// Where a point's label goes: the first of these places beside it that stays inside the plot
+// and clear of the labels placed before, else the first inside the plot (the old right-above).
+ChartBox placeLabel(const ChartPanelLayout& panel, glm::dvec2 q, double width, const std::vector<ChartBox>& placed) {
+    const FontLine line = fontLine(kPointLabelPixels);
+    const double height = line.ascent + line.descent;
+    const double left = q.x - 7 - width, right = q.x + 7, above = q.y - 6 - line.ascent, below = q.y + 6;
+    const glm::dvec2 corners[] = {{right, above}, {right, below}, {left, above}, {left, below},
+                                  {right, above - height}, {left, above - height}, {right, below + height},
+                                  {left, below + height}};
+    const ChartBox& plot = panel.plot;
+    auto inside = [&](const ChartBox& box) {
+        return box.x >= plot.x && box.x + box.width <= plot.x + plot.width && box.y >= plot.y &&
+               box.y + box.height <= plot.y + plot.height;
+    };
+    std::optional<ChartBox> fallback;
+    for (const glm::dvec2 corner : corners) {
+        const ChartBox box{corner.x, corner.y, width, height};
+        if (!inside(box)) {
+            continue;
+        }
+        if (std::none_of(placed.begin(), placed.end(), [&](const ChartBox& other) { return box.overlaps(other); })) {
+            return box;
+        }
+        fallback = fallback.value_or(box);
+    }
+    return fallback.value_or(ChartBox{right, above, width, height});
+}
+
+void drawPointLabels(cairo_t* cr, const ChartPanelLayout& panel, const ChartSeries& series, std::vector<ChartBox>& placed) {
     setGrey(cr, 0.2);
+    const double ascent = fontLine(kPointLabelPixels).ascent;
     for (size_t i = 0; i < series.points.size() && i < series.pointLabels.size(); ++i) {
         if (drawable(panel, series.points[i]) && !series.pointLabels[i].empty()) {
-            const glm::dvec2 q = panel.toPixel(series.points[i]);
-            cairo_move_to(cr, q.x + 7, q.y - 6);
-            showText(cr, series.pointLabels[i], 10.0);
+            const double width = textAdvance(series.pointLabels[i], kPointLabelPixels);
+            const ChartBox box = placeLabel(panel, panel.toPixel(series.points[i]), width, placed);
+            placed.push_back(box);
+            cairo_move_to(cr, box.x, box.y + ascent);
+            showText(cr, series.pointLabels[i], kPointLabelPixels);
         }
     }
 }
@@ -218,8 +254,9 @@ void drawChart(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
         for (const ChartSeries& series : chart.panels[p].series) {
             drawSeries(cr, panel, series);
         }
+        std::vector<ChartBox> placed;   // labels kept apart across the panel's series
         for (const ChartSeries& series : chart.panels[p].series) {
-            drawPointLabels(cr, panel, series);
+            drawPointLabels(cr, panel, series, placed);
         }
         cairo_restore(cr);
         drawLegend(cr, panel, chart.panels[p]);
