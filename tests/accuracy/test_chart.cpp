@@ -5,6 +5,7 @@
 #include <regex>
 #include <set>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -217,6 +218,71 @@ TEST(Chart, SvgAndPdfAreTheSameDrawing) {
               std::string::npos);
     EXPECT_NE(pdf.find("DejaVuSans"), std::string::npos) << "the font embedded";
     EXPECT_FALSE(wellFormedSvg("<svg><g></svg></g>"));
+}
+
+// A marker-only series' legend marker stays in its sample (a polygon's path once began at the
+// end of the text drawn before it, and filled a wedge from there).
+TEST(Chart, ALegendMarkerStaysInItsSample) {
+    Chart chart;
+    ChartPanel panel{"", "", "", false, false, {}};
+    panel.series.push_back({"a first series with a long name", {{0.0, 0.0}}, 0, false, true, false, {}, {}});
+    panel.series.push_back({"triangles", {{1.0, 1.0}}, 2, false, true, false, {}, {}});
+    chart.panels = {panel};
+    ASSERT_EQ(chartMarker(2), ChartMarker::Triangle);
+    const ChartPanelLayout layout = chartLayout(chart).panels[0];
+    ASSERT_EQ(layout.legend.size(), 2u);
+    const ChartBox& sample = layout.legend[1].sample;
+    const LdrImage image = chartToImage(chart);
+    const Rgb8 c = chartColour(2);
+    int outside = 0;
+    for (int y = int(layout.plot.y + layout.plot.height) + 2; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const uint8_t* p = &image.rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
+            const bool coloured = std::abs(p[0] - c.r) + std::abs(p[1] - c.g) + std::abs(p[2] - c.b) < 60;
+            const bool inSample = x >= sample.x - 2 && x <= sample.x + sample.width + 2 && y >= sample.y - 2 &&
+                                  y <= sample.y + sample.height + 2;
+            outside += coloured && !inSample;
+        }
+    }
+    EXPECT_EQ(outside, 0);
+}
+
+// Rows of the plot (inside its frame) that hold dark grey, the point labels' colour, and how
+// many such pixels there are.
+std::pair<int, int> labelInk(const LdrImage& image, const ChartBox& plot) {
+    int rows = 0, pixels = 0;
+    for (int y = int(plot.y) + 3; y < int(plot.y + plot.height) - 3; ++y) {
+        int inRow = 0;
+        for (int x = int(plot.x) + 3; x < int(plot.x + plot.width) - 3; ++x) {
+            const uint8_t* p = &image.rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
+            inRow += p[0] == p[1] && p[1] == p[2] && p[0] < 150;
+        }
+        rows += inRow > 0;
+        pixels += inRow;
+    }
+    return {rows, pixels};
+}
+
+// Labels of points at the plot's right edge show whole (they were cut off by the plot's edge),
+// and two of one spot are drawn one above the other, not over each other.
+TEST(Chart, PointLabelsStayInThePlotAndApart) {
+    auto chartOf = [](double x, std::vector<std::string> labels) {
+        Chart chart;
+        ChartPanel panel{"", "", "", false, false, {}};
+        panel.series.push_back({"range", {{0.0, 0.0}, {1.0, 1.0}}, 1, false, false, false, {}, {}});
+        ChartSeries spot{"spot", std::vector<glm::dvec2>(labels.size(), glm::dvec2(x, 0.5)), 0, false, true, false,
+                         labels, {}};
+        panel.series.push_back(spot);
+        chart.panels = {panel};
+        return chart;
+    };
+    auto ink = [](const Chart& chart) { return labelInk(chartToImage(chart), chartLayout(chart).panels[0].plot); };
+    const std::string label = "a label longer than any margin right of its point";
+    const auto [middleRows, middlePixels] = ink(chartOf(0.5, {label}));
+    const auto [edgeRows, edgePixels] = ink(chartOf(1.0, {label}));
+    EXPECT_GT(middlePixels, 50);
+    EXPECT_NEAR(edgePixels, middlePixels, 0.1 * middlePixels);
+    EXPECT_GE(ink(chartOf(1.0, {label, label})).first, 2 * edgeRows - 1);
 }
 
 }  // namespace
