@@ -5,6 +5,12 @@
 
 #include "accuracy/chart.h"
 
+namespace patina {
+struct BenchResult;
+struct LightingAccuracyResult;
+struct RenderBenchResult;
+}  // namespace patina
+
 namespace patina::cli {
 
 // Each subcommand registers its options on `app` and returns the callback that runs it once
@@ -27,6 +33,8 @@ Command addExportCommand(CLI::App& app);
 Command addAreaAccuracyCommand(CLI::App& app);
 // `patina inspect`: one pixel's story as JSON.
 Command addInspectCommand(CLI::App& app);
+// `patina chart`: a measurement's charts redrawn from the CSVs it wrote, measuring nothing.
+Command addChartCommand(CLI::App& app);
 // `patina validate`: exit 1 when a material is out of range (the lines say which).
 Command addValidateCommand(CLI::App& app);
 
@@ -34,8 +42,15 @@ Command addValidateCommand(CLI::App& app);
 // folder, default: the current one) and --quick, and their charts' files.
 using Measurement = std::function<void(const std::filesystem::path& folder, bool quick)>;
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure);
-// STEM.png, and with `svg` STEM.svg.
-void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg);
+// STEM.png, and with `vector` STEM.svg and STEM.pdf: the same drawing on each surface.
+void writeChart(const std::filesystem::path& stem, const Chart& chart, bool vector);
+// `folder` as given (empty: the current one); InputError when it is no folder.
+std::filesystem::path outputFolder(const std::string& folder);
+// Each measurement's charts into `folder` under the names its command gives them, from a run
+// or from its CSVs (`patina chart`): one definition for both.
+void writeBenchChart(const std::filesystem::path& folder, const BenchResult& result);
+void writeLightingChart(const std::filesystem::path& folder, const LightingAccuracyResult& result);
+void writeRenderBenchCharts(const std::filesystem::path& folder, const RenderBenchResult& result);
 // area-accuracy's outputs into `folder` (lighting-accuracy writes them beside its own).
 void writeAreaAccuracy(const std::filesystem::path& folder, bool quick);
 

@@ -17,9 +17,10 @@
 
 namespace patina::cli {
 
-void writeChart(const std::filesystem::path& stem, const Chart& chart, bool svg) {
-    if (svg) {
+void writeChart(const std::filesystem::path& stem, const Chart& chart, bool vector) {
+    if (vector) {
         writeOutputText(stem.string() + ".svg", chartToSvg(chart));
+        writeOutputText(stem.string() + ".pdf", chartToPdf(chart));
     }
     writeOutput(stem.string() + ".png", encodePng(chartToImage(chart)));
 }
@@ -34,6 +35,14 @@ std::filesystem::path outputFolder(const std::string& folder) {
         throw InputError(path.string() + ": not a folder");
     }
     return path;
+}
+
+void writeBenchChart(const std::filesystem::path& folder, const BenchResult& result) {
+    writeChart(folder / "speed_accuracy", benchChart(result), true);
+}
+
+void writeLightingChart(const std::filesystem::path& folder, const LightingAccuracyResult& result) {
+    writeChart(folder / "lighting_accuracy", lightingAccuracyChart(result), true);
 }
 
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure) {
@@ -57,7 +66,7 @@ Command addBenchCommand(CLI::App& app) {
             options.quick = quick;
             const BenchResult result = runBench(options);
             writeOutputText((folder / "bench.csv").string(), benchCsv(result));
-            writeChart(folder / "speed_accuracy", benchChart(result), true);
+            writeBenchChart(folder, result);
             std::cout << result.rows.size() << " models, " << result.samples << " samples, on " << result.renderer
                       << "\n";
         });
@@ -146,7 +155,7 @@ Command addLightingAccuracyCommand(CLI::App& app) {
         writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
         writeOutputText((folder / "sh.csv").string(), shCsv(result.accuracy.sh));
         writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
-        writeChart(folder / "lighting_accuracy", lightingAccuracyChart(result), true);
+        writeLightingChart(folder, result);
         for (const NamedEnvironment& environment : environments) {
             writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
                         encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));

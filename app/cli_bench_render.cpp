@@ -82,6 +82,11 @@ double renderPeakRssMb(const std::filesystem::path& scratch) {
 
 }  // namespace
 
+void writeRenderBenchCharts(const std::filesystem::path& folder, const RenderBenchResult& result) {
+    writeChart(folder / "render_lights", renderBenchLightChart(result), false);
+    writeChart(folder / "render_scale", renderBenchScaleChart(result), false);
+}
+
 Command addBenchRenderCommand(CLI::App& app) {
     struct Options {
         std::string outDir = ".";
@@ -131,8 +136,7 @@ Command addBenchRenderCommand(CLI::App& app) {
 
         writeOutputText((folder / "render_bench.csv").string(), renderBenchCsv(result));
         writeOutputText((folder / "render_targets.csv").string(), targetsCsv(targets));
-        writeOutput((folder / "render_lights.png").string(), encodePng(chartToImage(renderBenchLightChart(result))));
-        writeOutput((folder / "render_scale.png").string(), encodePng(chartToImage(renderBenchScaleChart(result))));
+        writeRenderBenchCharts(folder, result);
 
         std::cout << "on " << result.renderer << ", " << result.width << "x" << result.height << ", "
                   << result.samples << "x MSAA, medians of " << bench.runs << " runs; specialised takes up to "

@@ -20,6 +20,9 @@ namespace {
 constexpr int kBenchLights = 16;
 // The reference has no error against itself: on the log axis it sits at this floor.
 constexpr double kErrorFloor = 1e-3;
+constexpr const char* kBenchHeader =
+    "model,gpu_ns_per_fragment_light,cpu_ns_per_evaluation,cpu_fp32_rel_rmse,cpu_fp32_max_rel,"
+    "gpu_fp32_rel_rmse,gpu_fp32_max_rel,physical_rel_rmse,physical_max_rel,image_rel_rmse";
 
 // The sphere fills the frame: every pixel shades, every light is in front.
 Scene workloadScene(BrdfModelId model, int lights) {
@@ -131,9 +134,7 @@ BenchResult runBench(const BenchOptions& options) {
 }
 
 std::string benchCsv(const BenchResult& result) {
-    std::string csv =
-        "model,gpu_ns_per_fragment_light,cpu_ns_per_evaluation,cpu_fp32_rel_rmse,cpu_fp32_max_rel,"
-        "gpu_fp32_rel_rmse,gpu_fp32_max_rel,physical_rel_rmse,physical_max_rel,image_rel_rmse\n";
+    std::string csv = std::string(kBenchHeader) + "\n";
     char line[512];
     for (const BenchRow& r : result.rows) {
         std::snprintf(line, sizeof line, "%s,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n", r.model.c_str(),
@@ -146,11 +147,33 @@ std::string benchCsv(const BenchResult& result) {
     return csv;
 }
 
+BenchResult parseBenchCsv(const CsvFile& csv) {
+    const std::string& source = csv.source;
+    BenchResult result;
+    for (const CsvLine& line : csvBody(csv, kBenchHeader)) {
+        expectCells(line, 10, source);
+        auto number = [&](size_t column) { return csvNumber(line, column, source); };
+        BenchRow row;
+        row.model = line.cells[0];
+        row.gpuNsPerFragmentLight = number(1);
+        row.cpuNsPerEvaluation = number(2);
+        row.cpuImplementation.relativeRmse = number(3);
+        row.cpuImplementation.maxRelative = number(4);
+        row.gpuImplementation.relativeRmse = number(5);
+        row.gpuImplementation.maxRelative = number(6);
+        row.physical.relativeRmse = number(7);
+        row.physical.maxRelative = number(8);
+        row.imageRelativeRmse = number(9);
+        result.rows.push_back(row);
+    }
+    return result;
+}
+
 Chart benchChart(const BenchResult& result) {
     Chart chart;
     auto panel = [&](const char* title, const char* xLabel, auto cost) {
         ChartPanel p{title, xLabel, "physical error: relative RMSE of f*NoL vs reference", true, true, {}};
-        ChartSeries points{"models", {}, chartColour(0), false, true, false, {}};
+        ChartSeries points{"models", {}, 0, false, true, false, {}, {}};
         for (const BenchRow& r : result.rows) {
             points.points.emplace_back(std::max(cost(r), 1e-3), std::max(r.physical.relativeRmse, kErrorFloor));
             points.pointLabels.push_back(r.physical.relativeRmse < kErrorFloor ? r.model + " (error 0)" : r.model);
@@ -158,7 +181,7 @@ Chart benchChart(const BenchResult& result) {
         // Pareto front: sorted by cost, keep each point cheaper-or-equal and more accurate than all before.
         std::vector<glm::dvec2> sorted = points.points;
         std::sort(sorted.begin(), sorted.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-        ChartSeries front{"Pareto front", {}, chartColour(3), true, false, true, {}};
+        ChartSeries front{"Pareto front", {}, 1, true, false, true, {}, {}};
         double best = INFINITY;
         for (const glm::dvec2& point : sorted) {
             if (point.y < best) {

@@ -6,6 +6,7 @@
 
 #include "accuracy/accuracy.h"
 #include "accuracy/chart.h"
+#include "bench/csv_read.h"
 
 namespace patina {
 
@@ -32,6 +33,9 @@ struct BenchResult {
 
 BenchResult runBench(const BenchOptions& options);
 std::string benchCsv(const BenchResult& result);
+// benchCsv's rows back (samples and renderer are not in it): what `patina chart bench` redraws
+// benchChart from. Throws InputError naming the file.
+BenchResult parseBenchCsv(const CsvFile& csv);
 // x = cost (GPU, and CPU in a second panel), y = physical relative RMSE, log scales, points
 // labelled, the Pareto front drawn.
 Chart benchChart(const BenchResult& result);

@@ -10,6 +10,7 @@
 
 #include "bench/timing.h"
 #include "common/luminance.h"
+#include "files/input_error.h"
 #include "gl/renderer.h"
 #include "image/compositing.h"
 #include "image/display_image.h"
@@ -31,6 +32,20 @@ std::optional<EnvironmentShading> shadingOf(const std::string& method) {
         return EnvironmentShading{EnvironmentMethod::Stochastic, std::stoi(method.substr(12))};
     }
     return std::nullopt;
+}
+
+// lighting_cost.csv's last row, the baseline without an environment.
+constexpr const char* kDirectionalRow = "one directional light (no environment)";
+
+std::vector<SplitSumErrorRow> parseSplitSumRows(const CsvFile& csv) {
+    std::vector<SplitSumErrorRow> rows;
+    for (const CsvLine& line : csvBody(csv, "environment,method,NoV,roughness,f0,relative_error,truth_relative_se")) {
+        expectCells(line, 7, csv.source);
+        auto number = [&](size_t column) { return csvNumber(line, column, csv.source); };
+        rows.push_back({line.cells[0], line.cells[1], float(number(2)), float(number(3)), float(number(4)), number(5),
+                        number(6)});
+    }
+    return rows;
 }
 
 // The sphere of sphereUnder's scenes, which are prepared with the environment already made.
@@ -78,7 +93,7 @@ LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& 
     result.accuracy = measureSplitSum(environments, options);
 
     // Frame time: a sphere filling most of the image, lit by the first environment alone.
-    result.width = result.height = quick ? 128 : 512;
+    result.width = result.height = lightingFrameSize(quick);
     RenderSettings settings;
     settings.width = result.width;
     settings.height = result.height;
@@ -106,6 +121,10 @@ LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& 
     return result;
 }
 
+int lightingFrameSize(bool quick) {
+    return quick ? 128 : 512;
+}
+
 std::string lightingCostCsv(const LightingAccuracyResult& result) {
     std::vector<std::string> names;
     for (const SplitSumErrorRow& row : result.accuracy.rows) {
@@ -127,8 +146,26 @@ std::string lightingCostCsv(const LightingAccuracyResult& result) {
         }
         csv << "\n";
     }
-    csv << "\"one directional light (no environment)\"," << result.directionalFrameMs << ",\n";
+    csv << "\"" << kDirectionalRow << "\"," << result.directionalFrameMs << ",\n";
     return csv.str();
+}
+
+LightingAccuracyResult parseLightingAccuracy(const CsvFile& splitSum, const CsvFile& cost, bool quick) {
+    LightingAccuracyResult result;
+    result.accuracy.rows = parseSplitSumRows(splitSum);
+    result.width = result.height = lightingFrameSize(quick);
+    for (const CsvLine& line : csvBody(cost, "method,frame_ms,mean_relative_error")) {
+        const std::string& method = line.cells[0];
+        const double frameMs = csvNumber(line, 1, cost.source);
+        if (method == kDirectionalRow) {
+            result.directionalFrameMs = frameMs;
+        } else if (const std::optional<EnvironmentShading> shading = shadingOf(method)) {
+            result.costs.push_back({method, *shading, frameMs});
+        } else {
+            throw InputError(cost.source + ":" + std::to_string(line.number) + ": no such method: " + method);
+        }
+    }
+    return result;
 }
 
 Chart lightingAccuracyChart(const LightingAccuracyResult& result) {
@@ -146,7 +183,7 @@ Chart lightingAccuracyChart(const LightingAccuracyResult& result) {
     ChartPanel cost{"Cost against error", "frame time, ms (" + std::to_string(result.width) + "^2, llvmpipe)",
                     "mean relative error against the ground truth", true, true, {}};
     for (size_t e = 0; e < environments.size(); ++e) {
-        ChartSeries series{environments[e], {}, chartColour(e), false, true, false, {}};
+        ChartSeries series{environments[e], {}, e, false, true, false, {}, {}};
         for (const LightingCostRow& row : result.costs) {
             series.points.emplace_back(row.frameMs, std::max(meanError(rows, row.method, environments[e]), 1e-5));
             series.pointLabels.push_back(e == 0 ? row.method : "");
@@ -163,17 +200,25 @@ Chart lightingAccuracyChart(const LightingAccuracyResult& result) {
             if (method.starts_with("stochastic") && method != "stochastic, 16 samples") {
                 continue;   // one of them stands for the rest here
             }
-            std::map<float, std::pair<double, int>> sums;
+            struct Sum {
+                double error = 0.0, truthVariance = 0.0;
+                int count = 0;
+            };
+            std::map<float, Sum> sums;
             for (const SplitSumErrorRow& row : rows) {
                 if (row.method == method) {
-                    auto& [sum, count] = sums[value(row)];
-                    sum += row.relativeError;
-                    ++count;
+                    Sum& sum = sums[value(row)];
+                    sum.error += row.relativeError;
+                    sum.truthVariance += row.truthRelativeStandardError * row.truthRelativeStandardError;
+                    ++sum.count;
                 }
             }
-            ChartSeries series{method, {}, chartColour(colour++), true, true, false, {}};
+            // The bars: the ground truth's standard error carried into the mean (to first order,
+            // a relative error moves by the truth's relative error; the rows' truths are independent).
+            ChartSeries series{method, {}, colour++, true, true, false, {}, {}};
             for (const auto& [x, sum] : sums) {
-                series.points.emplace_back(x, std::max(sum.first / sum.second, 1e-6));
+                series.points.emplace_back(x, std::max(sum.error / sum.count, 1e-6));
+                series.errors.push_back(std::sqrt(sum.truthVariance) / sum.count);
             }
             panel.series.push_back(series);
         }

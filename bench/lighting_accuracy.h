@@ -10,6 +10,7 @@
 
 #include "accuracy/chart.h"
 #include "accuracy/split_sum_accuracy.h"
+#include "bench/csv_read.h"
 #include "gl/environment_method.h"
 #include "image/image.h"
 
@@ -30,6 +31,8 @@ struct LightingAccuracyResult {
 };
 
 LightingAccuracyResult runLightingAccuracy(const std::vector<NamedEnvironment>& environments, bool quick);
+// The side of the frames timed (smaller for --quick), which the chart's cost axis names.
+int lightingFrameSize(bool quick);
 
 // CSV: method,frame_ms,mean_relative_error (over every environment and grid point), then one
 // column of mean error per environment.
@@ -37,6 +40,11 @@ std::string lightingCostCsv(const LightingAccuracyResult& result);
 // Cost against error (each environment a series), and the split sum's error by source against
 // roughness and against NoV.
 Chart lightingAccuracyChart(const LightingAccuracyResult& result);
+// What lightingAccuracyChart draws, back from split_sum.csv (splitSumCsv) and lighting_cost.csv
+// (its methods' frame times; the per-environment means are recomputed from the rows): what
+// `patina chart lighting` redraws it from. sh.csv is not charted. `quick`: the CSVs are from a
+// --quick run (the frame size is not in them). Throws InputError naming the file.
+LightingAccuracyResult parseLightingAccuracy(const CsvFile& splitSum, const CsvFile& cost, bool quick);
 
 // The grid of spheres under `environment` (roughness across, metallic 0 then 1 down): the split
 // sum, the ground truth, and |split - truth| / truth through the heat ramp (black 0, pale yellow

@@ -21,6 +21,7 @@
 #include "environment/environment_files.h"
 #include "assets/prepare_scene.h"
 #include "files/file_bytes.h"
+#include "files/input_error.h"
 #include "gltf/import.h"
 #include "geometry/hidden_faces.h"
 #include "geometry/mesh.h"
@@ -611,8 +612,26 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
     return targets;
 }
 
+namespace {
+constexpr const char* kRenderBenchHeader =
+    "section,path,added,lights,width,height,triangles,gpu_ms,cpu_ms,frame_ms,read_back_ms";
+
+// The enumerator whose name is `name`, by the names the CSV writes.
+template <typename Enum, size_t N>
+Enum named(const Enum (&values)[N], std::string_view (*nameOf)(Enum), const CsvLine& line, size_t column,
+           const std::string& source) {
+    for (const Enum value : values) {
+        if (nameOf(value) == line.cells[column]) {
+            return value;
+        }
+    }
+    throw InputError(source + ":" + std::to_string(line.number) + ": unknown '" + line.cells[column] + "' in column " +
+                     std::to_string(column + 1));
+}
+}  // namespace
+
 std::string renderBenchCsv(const RenderBenchResult& result) {
-    std::string csv = "section,path,added,lights,width,height,triangles,gpu_ms,cpu_ms,frame_ms,read_back_ms\n";
+    std::string csv = std::string(kRenderBenchHeader) + "\n";
     char line[256];
     for (const LightCountRow& row : result.lightRows) {
         std::snprintf(line, sizeof line, "lights,%s,%s,%d,%d,%d,%zu,%.4f,%.4f,%.4f,%.4f\n",
@@ -628,6 +647,31 @@ std::string renderBenchCsv(const RenderBenchResult& result) {
         csv += line;
     }
     return csv;
+}
+
+RenderBenchResult parseRenderBenchCsv(const CsvFile& csv, int samples) {
+    constexpr BenchPath kPaths[] = {BenchPath::Single, BenchPath::Multi, BenchPath::Specialised, BenchPath::BrdfFloor};
+    constexpr AddedLights kAdded[] = {AddedLights::Points, AddedLights::PointsOtherCoefficients,
+                                      AddedLights::Directionals, AddedLights::Spheres, AddedLights::Tubes};
+    RenderBenchResult result;
+    result.samples = samples;
+    for (const CsvLine& line : csvBody(csv, kRenderBenchHeader)) {
+        expectCells(line, 11, csv.source);
+        auto number = [&](size_t column) { return csvNumber(line, column, csv.source); };
+        const FrameTiming time{number(7), number(8), number(9), number(10)};
+        const int lights = int(number(3)), width = int(number(4)), height = int(number(5));
+        const size_t triangles = size_t(number(6));
+        if (line.cells[0] == "lights") {
+            result.lightRows.push_back({named(kPaths, benchPathName, line, 1, csv.source),
+                                        named(kAdded, addedLightsName, line, 2, csv.source), lights, time});
+            result.width = width;   // every light row draws the same frame and mesh
+            result.height = height;
+            result.triangles = triangles;
+        } else {
+            result.scaleRows.push_back({line.cells[0], width, height, triangles, time, line.cells[1], lights});
+        }
+    }
+    return result;
 }
 
 std::string targetsCsv(const std::vector<TargetCheck>& targets) {
@@ -658,13 +702,15 @@ Chart renderBenchLightChart(const RenderBenchResult& result) {
                      : added == AddedLights::Tubes      ? ", tubes"
                                                         : ", other coeffs");
         }
-        ChartSeries series{label, {}, chartColour(colour++), true, true, path == BenchPath::BrdfFloor, {}};
+        ChartSeries series{label, {}, colour++, true, true, path == BenchPath::BrdfFloor, {}, {}};
         for (const LightCountRow& row : result.lightRows) {
             if (row.path == path && row.added == added) {
                 series.points.emplace_back(row.lights, row.time.frame);
             }
         }
-        panel.series.push_back(series);
+        if (!series.points.empty()) {   // a run from before a series existed: no legend entry for nothing
+            panel.series.push_back(series);
+        }
     }
     return Chart{{panel}};
 }
@@ -676,7 +722,7 @@ Chart renderBenchScaleChart(const RenderBenchResult& result) {
         ChartPanel panel{pixels ? "Frame time against resolution (3 lights, single)"
                                 : "Frame time against triangles (3 lights, single)",
                          pixels ? "megapixels" : "triangles", "frame time to glFinish (ms, median)", !pixels, !pixels, {}};
-        ChartSeries series{"single", {}, chartColour(1), true, true, false, {}};
+        ChartSeries series{"single", {}, 1, true, true, false, {}, {}};
         for (const ScaleRow& row : result.scaleRows) {
             if (row.axis == axis) {
                 series.points.emplace_back(pixels ? double(row.width) * row.height * 1e-6 : double(row.triangles),

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "accuracy/chart.h"
+#include "bench/csv_read.h"
 #include "gl/renderer.h"
 #include "scene/scene.h"
 
@@ -116,6 +117,10 @@ struct TargetCheck {
 std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result);
 
 std::string renderBenchCsv(const RenderBenchResult& result);
+// renderBenchCsv's rows back, with the frame size and triangles of its light rows: what
+// `patina chart render` redraws the two charts from. The CSV does not record the MSAA samples:
+// the caller says them. Throws InputError naming the file.
+RenderBenchResult parseRenderBenchCsv(const CsvFile& csv, int samples);
 std::string targetsCsv(const std::vector<TargetCheck>& targets);
 // Frame time against light count, a line per path and the floor dashed.
 Chart renderBenchLightChart(const RenderBenchResult& result);

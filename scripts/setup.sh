@@ -8,10 +8,13 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev nlohmann-json3-dev zlib1g-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgles-dev
   libcli11-dev libgtest-dev libbenchmark-dev libopenexr-dev
+  # Cairo (with fontconfig) draws the charts and the captions in DejaVu Sans below.
+  libcairo2-dev
   xvfb xdotool
-  # The editor's UI font (DejaVu Sans, read at run time) and xdg-open, which shows the
-  # screenshots' folder in the desktop's file manager.
-  fonts-dejavu-core xdg-utils
+  # The editor's UI font, the captions' and the charts' (DejaVu Sans, read at run time), Droid
+  # Sans Fallback for the CJK characters DejaVu lacks (fontconfig finds it for a caption), and
+  # xdg-open, which shows the screenshots' folder in the desktop's file manager.
+  fonts-dejavu-core fonts-droid-fallback xdg-utils
   # Blender's eight CC0 HDRIs (/usr/share/blender/datafiles/studiolights/world/*.exr), which the
   # environment tests read: real files from a real writer.
   blender-data

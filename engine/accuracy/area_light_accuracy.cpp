@@ -246,16 +246,18 @@ Chart areaAccuracyChart(const AreaAccuracyResult& result) {
                 sizes.push_back(row.size);
             }
         }
+        size_t style = 0;
         for (size_t k = 0; k < sizes.size(); ++k) {
             for (const Method& method : kSpecularMethods) {
                 const bool third = method.method.widening == shader::WIDENING_THIRD;
                 char label[64];
                 std::snprintf(label, sizeof label, "s/d %.2g, %s", sizes[k], third ? "s/(3d)" : "s/(2d)");
-                ChartSeries series{label, {}, chartColour(k), true, false, third, {}};
+                ChartSeries series{label, {}, style++, true, true, third, {}, {}};
                 for (const AreaAccuracyRow& row : result.rows) {
                     if (row.light == light && row.lobe == "specular" && row.method == method.name &&
                         row.size == sizes[k] && std::abs(row.elevationDegrees - 30.0) < 1e-6) {
                         series.points.emplace_back(row.roughness, std::max(row.error, 1e-5));
+                        series.errors.push_back(row.truthError);
                     }
                 }
                 panel.series.push_back(series);
@@ -263,7 +265,8 @@ Chart areaAccuracyChart(const AreaAccuracyResult& result) {
         }
         chart.panels.push_back(panel);
     }
-    // Diffuse: a colour per size, Karis's line solid and Frostbite's dashed.
+    // Diffuse: a colour and marker per size and method, Karis's line solid and Frostbite's dashed;
+    // each bar is the ground truth's standard error.
     for (const char* light : {"sphere", "tube"}) {
         ChartPanel diffuse{std::string(light) + " diffuse across the horizon", "elevation of the centre (deg)",
                            "|approx - truth| / (I / d^2)", false, true, {}};
@@ -274,14 +277,16 @@ Chart areaAccuracyChart(const AreaAccuracyResult& result) {
                 sizes.push_back(row.size);
             }
         }
+        size_t style = 0;
         for (size_t k = 0; k < sizes.size(); ++k) {
             for (const Method& method : kDiffuseMethods) {
                 char label[64];
                 std::snprintf(label, sizeof label, "s/d %.2g, %s", sizes[k], method.name);
-                ChartSeries series{label, {}, chartColour(k), true, true, method.method.exactSphereDiffuse, {}};
+                ChartSeries series{label, {}, style++, true, true, method.method.exactSphereDiffuse, {}, {}};
                 for (const AreaAccuracyRow& row : result.rows) {
                     if (row.light == light && row.lobe == "diffuse" && row.method == method.name && row.size == sizes[k]) {
                         series.points.emplace_back(row.elevationDegrees, std::max(row.error, 1e-5));
+                        series.errors.push_back(row.truthError);
                     }
                 }
                 if (!series.points.empty()) {

@@ -2,289 +2,328 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+
+#include "accuracy/chart_layout.h"
+#include "image/cairo_image.h"
+#include "image/text.h"
 
 namespace patina {
 
 namespace {
-constexpr int kMarginLeft = 70, kMarginRight = 150, kMarginTop = 48, kMarginBottom = 45;
 
-// Data range of a panel, padded; in log10 space for log axes.
-struct Axes {
-    double x0, x1, y0, y1;
-    bool logX, logY;
-    int left, top, width, height;   // plot area in pixels
+constexpr double kMarkerRadius = 4.5;
+constexpr double kPointLabelPixels = 10.0;
+constexpr double kCap = 4.0;   // half an error bar's cap
 
-    double fx(double x) const { return logX ? std::log10(std::max(x, 1e-300)) : x; }
-    double fy(double y) const { return logY ? std::log10(std::max(y, 1e-300)) : y; }
-    glm::dvec2 toPixel(glm::dvec2 p) const {
-        return {left + (fx(p.x) - x0) / (x1 - x0) * width, top + height - (fy(p.y) - y0) / (y1 - y0) * height};
+void setColour(cairo_t* cr, Rgb8 c) {
+    cairo_set_source_rgb(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0);
+}
+
+void setGrey(cairo_t* cr, double v) {
+    cairo_set_source_rgb(cr, v, v, v);
+}
+
+void drawText(cairo_t* cr, const ChartText& text) {
+    const FontLine line = fontLine(text.pixels);
+    cairo_save(cr);
+    if (text.vertical) {   // reads bottom to top: its baseline runs up the box's right side
+        cairo_move_to(cr, text.box.x + line.ascent, text.box.y + text.box.height);
+        cairo_rotate(cr, -std::numbers::pi / 2);
+    } else {
+        cairo_move_to(cr, text.box.x, text.box.y + line.ascent);
     }
-};
+    showText(cr, text.text, text.pixels);
+    cairo_restore(cr);
+}
 
-Axes axesFor(const ChartPanel& panel, int originX, int panelWidth, int panelHeight) {
-    Axes axes{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-              std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-              panel.logX, panel.logY, originX + kMarginLeft, kMarginTop,
-              panelWidth - kMarginLeft - kMarginRight, panelHeight - kMarginTop - kMarginBottom};
-    for (const ChartSeries& series : panel.series) {
-        for (const glm::dvec2& p : series.points) {
-            if ((panel.logX && p.x <= 0) || (panel.logY && p.y <= 0) || !std::isfinite(p.x) || !std::isfinite(p.y)) {
-                continue;
-            }
-            axes.x0 = std::min(axes.x0, axes.fx(p.x));
-            axes.x1 = std::max(axes.x1, axes.fx(p.x));
-            axes.y0 = std::min(axes.y0, axes.fy(p.y));
-            axes.y1 = std::max(axes.y1, axes.fy(p.y));
+// A marker's outline around the origin; filled except the cross and the plus, which are strokes.
+void markerPath(cairo_t* cr, ChartMarker marker, double r) {
+    cairo_new_path(cr);   // a text drawn before leaves a current point, which a polygon's first line_to would join
+    auto polygon = [cr](int corners, double radius, double turn) {
+        for (int k = 0; k < corners; ++k) {
+            const double a = turn + 2 * std::numbers::pi * k / corners;
+            cairo_line_to(cr, radius * std::sin(a), -radius * std::cos(a));
         }
-    }
-    if (axes.x0 > axes.x1) {
-        axes.x0 = 0, axes.x1 = 1, axes.y0 = 0, axes.y1 = 1;
-    }
-    auto pad = [](double& lo, double& hi, bool log) {
-        const double span = hi - lo;
-        const double margin = span > 0 ? span * 0.08 : (log ? 0.5 : std::max(std::abs(lo) * 0.1, 0.5));
-        lo -= margin;
-        hi += margin;
+        cairo_close_path(cr);
     };
-    pad(axes.x0, axes.x1, axes.logX);
-    pad(axes.y0, axes.y1, axes.logY);
-    return axes;
-}
-
-std::string tickText(double value, bool log) {
-    char text[32];
-    if (log) {
-        const double v = std::pow(10.0, value);
-        std::snprintf(text, sizeof text, v >= 0.01 && v < 10000 ? "%.3g" : "%.0e", v);
-    } else {
-        std::snprintf(text, sizeof text, "%.3g", value);
+    switch (marker) {
+    case ChartMarker::Circle: cairo_arc(cr, 0, 0, r, 0, 2 * std::numbers::pi); break;
+    case ChartMarker::Square: cairo_rectangle(cr, -0.85 * r, -0.85 * r, 1.7 * r, 1.7 * r); break;
+    case ChartMarker::Triangle: polygon(3, 1.2 * r, 0.0); break;
+    case ChartMarker::Diamond: polygon(4, 1.2 * r, 0.0); break;
+    case ChartMarker::InvertedTriangle: polygon(3, 1.2 * r, std::numbers::pi); break;
+    case ChartMarker::Cross:
+    case ChartMarker::Plus: {
+        const double a = marker == ChartMarker::Cross ? std::numbers::pi / 4 : 0.0;
+        for (int k = 0; k < 2; ++k) {
+            const double c = std::cos(a + k * std::numbers::pi / 2) * r, s = std::sin(a + k * std::numbers::pi / 2) * r;
+            cairo_move_to(cr, -c, -s);
+            cairo_line_to(cr, c, s);
+        }
+        break;
     }
-    return text;
+    case ChartMarker::Star:
+        for (int k = 0; k < 10; ++k) {
+            const double a = std::numbers::pi * k / 5, radius = k % 2 ? 0.5 * r : 1.3 * r;
+            cairo_line_to(cr, radius * std::sin(a), -radius * std::cos(a));
+        }
+        cairo_close_path(cr);
+        break;
+    }
 }
 
-// Tick positions in axis space: decades for log axes (with 2 and 5 between them when the axis
-// spans less than two decades), 5 steps otherwise.
-std::vector<double> ticks(double lo, double hi, bool log) {
-    std::vector<double> result;
-    if (log) {
-        const bool fine = hi - lo < 2.0;
-        for (double d = std::floor(lo); d <= hi; d += 1.0) {
-            for (double m : {1.0, 2.0, 5.0}) {
-                const double t = d + std::log10(m);
-                if (t >= lo && t <= hi && (fine || m == 1.0)) {
-                    result.push_back(t);
-                }
+void drawMarker(cairo_t* cr, glm::dvec2 at, ChartMarker marker) {
+    cairo_save(cr);
+    cairo_translate(cr, at.x, at.y);
+    markerPath(cr, marker, kMarkerRadius);
+    if (marker == ChartMarker::Cross || marker == ChartMarker::Plus) {
+        cairo_set_line_width(cr, 2.0);
+        cairo_stroke(cr);
+    } else {
+        cairo_fill(cr);
+    }
+    cairo_restore(cr);
+}
+
+void setLine(cairo_t* cr, bool dashed) {
+    const double dash[] = {6.0, 4.0};
+    cairo_set_dash(cr, dash, dashed ? 2 : 0, 0.0);
+    cairo_set_line_width(cr, 2.0);
+}
+
+// The bar from y - se to y + se with a cap at each end; on a log axis an end at or below zero
+// runs to the plot's bottom without a cap.
+void drawErrorBar(cairo_t* cr, const ChartPanelLayout& panel, glm::dvec2 point, double error) {
+    const glm::dvec2 top = panel.toPixel({point.x, point.y + error});
+    const bool lowShown = !panel.logY || point.y - error > 0;
+    const glm::dvec2 low = lowShown ? panel.toPixel({point.x, point.y - error})
+                                    : glm::dvec2(top.x, panel.plot.y + panel.plot.height);
+    cairo_set_line_width(cr, 1.5);
+    cairo_move_to(cr, top.x, top.y);
+    cairo_line_to(cr, low.x, low.y);
+    cairo_move_to(cr, top.x - kCap, top.y);
+    cairo_line_to(cr, top.x + kCap, top.y);
+    if (lowShown) {
+        cairo_move_to(cr, low.x - kCap, low.y);
+        cairo_line_to(cr, low.x + kCap, low.y);
+    }
+    cairo_stroke(cr);
+}
+
+bool drawable(const ChartPanelLayout& panel, glm::dvec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && (!panel.logX || p.x > 0) && (!panel.logY || p.y > 0);
+}
+
+void drawSeries(cairo_t* cr, const ChartPanelLayout& panel, const ChartSeries& series) {
+    setColour(cr, chartColour(series.style));
+    if (series.line) {
+        setLine(cr, series.dashed);
+        for (const glm::dvec2& p : series.points) {
+            if (drawable(panel, p)) {
+                const glm::dvec2 q = panel.toPixel(p);
+                cairo_line_to(cr, q.x, q.y);
             }
         }
-    } else {
-        for (int i = 0; i <= 5; ++i) {
-            result.push_back(lo + (hi - lo) * i / 5.0);
-        }
+        cairo_stroke(cr);
     }
-    return result;
-}
-
-std::string svgColour(Rgb8 c) {
-    char text[16];
-    std::snprintf(text, sizeof text, "#%02x%02x%02x", c.r, c.g, c.b);
-    return text;
-}
-
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
-
-// --- raster drawing -----------------------------------------------------------------------
-void plot(LdrImage& image, int x, int y, Rgb8 c) {
-    if (x < 0 || y < 0 || x >= image.width || y >= image.height) {
-        return;
-    }
-    uint8_t* p = &image.rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
-    p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 255;
-}
-
-void line(LdrImage& image, glm::dvec2 a, glm::dvec2 b, Rgb8 c, int thickness, bool dashed) {
-    const double length = std::max(std::abs(b.x - a.x), std::abs(b.y - a.y));
-    const int steps = std::max(1, int(std::ceil(length)));
-    for (int i = 0; i <= steps; ++i) {
-        if (dashed && (i / 6) % 2 == 1) {
+    setLine(cr, false);
+    for (size_t i = 0; i < series.points.size(); ++i) {
+        if (!drawable(panel, series.points[i])) {
             continue;
         }
-        const glm::dvec2 p = a + (b - a) * (double(i) / steps);
-        for (int dy = 0; dy < thickness; ++dy) {
-            for (int dx = 0; dx < thickness; ++dx) {
-                plot(image, int(std::lround(p.x)) + dx - thickness / 2, int(std::lround(p.y)) + dy - thickness / 2, c);
-            }
+        if (i < series.errors.size() && series.errors[i] > 0 && std::isfinite(series.errors[i])) {
+            drawErrorBar(cr, panel, series.points[i], series.errors[i]);
+        }
+        if (series.markers) {
+            drawMarker(cr, panel.toPixel(series.points[i]), chartMarker(series.style));
         }
     }
 }
 
-void disc(LdrImage& image, glm::dvec2 centre, double radius, Rgb8 c) {
-    for (int y = int(centre.y - radius); y <= int(centre.y + radius) + 1; ++y) {
-        for (int x = int(centre.x - radius); x <= int(centre.x + radius) + 1; ++x) {
-            if ((x - centre.x) * (x - centre.x) + (y - centre.y) * (y - centre.y) <= radius * radius) {
-                plot(image, x, y, c);
-            }
+// Where a point's label goes: the first of these places beside it that stays inside the plot
+// and clear of the labels placed before, else the first inside the plot (the old right-above).
+ChartBox placeLabel(const ChartPanelLayout& panel, glm::dvec2 q, double width, const std::vector<ChartBox>& placed) {
+    const FontLine line = fontLine(kPointLabelPixels);
+    const double height = line.ascent + line.descent;
+    const double left = q.x - 7 - width, right = q.x + 7, above = q.y - 6 - line.ascent, below = q.y + 6;
+    const glm::dvec2 corners[] = {{right, above}, {right, below}, {left, above}, {left, below},
+                                  {right, above - height}, {left, above - height}, {right, below + height},
+                                  {left, below + height}};
+    const ChartBox& plot = panel.plot;
+    auto inside = [&](const ChartBox& box) {
+        return box.x >= plot.x && box.x + box.width <= plot.x + plot.width && box.y >= plot.y &&
+               box.y + box.height <= plot.y + plot.height;
+    };
+    std::optional<ChartBox> fallback;
+    for (const glm::dvec2 corner : corners) {
+        const ChartBox box{corner.x, corner.y, width, height};
+        if (!inside(box)) {
+            continue;
+        }
+        if (std::none_of(placed.begin(), placed.end(), [&](const ChartBox& other) { return box.overlaps(other); })) {
+            return box;
+        }
+        fallback = fallback.value_or(box);
+    }
+    return fallback.value_or(ChartBox{right, above, width, height});
+}
+
+void drawPointLabels(cairo_t* cr, const ChartPanelLayout& panel, const ChartSeries& series, std::vector<ChartBox>& placed) {
+    setGrey(cr, 0.2);
+    const double ascent = fontLine(kPointLabelPixels).ascent;
+    for (size_t i = 0; i < series.points.size() && i < series.pointLabels.size(); ++i) {
+        if (drawable(panel, series.points[i]) && !series.pointLabels[i].empty()) {
+            const double width = textAdvance(series.pointLabels[i], kPointLabelPixels);
+            const ChartBox box = placeLabel(panel, panel.toPixel(series.points[i]), width, placed);
+            placed.push_back(box);
+            cairo_move_to(cr, box.x, box.y + ascent);
+            showText(cr, series.pointLabels[i], kPointLabelPixels);
         }
     }
 }
 
-bool clipped(const Axes& axes, glm::dvec2 p) {
-    return p.x < axes.left - 1 || p.x > axes.left + axes.width + 1 || p.y < axes.top - 1 ||
-           p.y > axes.top + axes.height + 1;
+void drawAxes(cairo_t* cr, const ChartPanelLayout& panel) {
+    const ChartBox& plot = panel.plot;
+    setLine(cr, false);
+    cairo_set_line_width(cr, 1.0);
+    setGrey(cr, 0.88);
+    for (double t : panel.xTicks) {
+        const double x = std::round(plot.x + (t - panel.x0) / (panel.x1 - panel.x0) * plot.width) + 0.5;
+        cairo_move_to(cr, x, plot.y);
+        cairo_line_to(cr, x, plot.y + plot.height + 4.0);
+    }
+    for (double t : panel.yTicks) {
+        const double y = std::round(plot.y + plot.height - (t - panel.y0) / (panel.y1 - panel.y0) * plot.height) + 0.5;
+        cairo_move_to(cr, plot.x - 4.0, y);
+        cairo_line_to(cr, plot.x + plot.width, y);
+    }
+    cairo_stroke(cr);
+    setGrey(cr, 0.12);
+    cairo_rectangle(cr, std::round(plot.x) + 0.5, std::round(plot.y) + 0.5, std::round(plot.width),
+                    std::round(plot.height));
+    cairo_stroke(cr);
+    for (const auto* labels : {&panel.xTickLabels, &panel.yTickLabels}) {
+        for (const ChartText& label : *labels) {
+            drawText(cr, label);
+        }
+    }
+    drawText(cr, panel.title);
+    drawText(cr, panel.xLabel);
+    drawText(cr, panel.yLabel);
 }
 
-constexpr Rgb8 kInk{30, 30, 30}, kGrid{225, 225, 225};
+void drawLegend(cairo_t* cr, const ChartPanelLayout& panel, const ChartPanel& source) {
+    for (const ChartLegendEntry& entry : panel.legend) {
+        const ChartSeries& series = source.series[entry.series];
+        const double y = entry.sample.y + entry.sample.height / 2;
+        setColour(cr, chartColour(series.style));
+        if (series.line || !series.markers) {
+            setLine(cr, series.dashed);
+            cairo_move_to(cr, entry.sample.x + 1, y);
+            cairo_line_to(cr, entry.sample.x + entry.sample.width - 1, y);
+            cairo_stroke(cr);
+        }
+        if (series.markers) {
+            drawMarker(cr, {entry.sample.x + entry.sample.width / 2, y}, chartMarker(series.style));
+        }
+        setGrey(cr, 0.12);
+        drawText(cr, entry.label);
+    }
+}
+
+// The one drawing of a chart, whatever the surface.
+void drawChart(cairo_t* cr, const Chart& chart, const ChartLayout& layout) {
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    for (size_t p = 0; p < chart.panels.size(); ++p) {
+        const ChartPanelLayout& panel = layout.panels[p];
+        drawAxes(cr, panel);
+        cairo_save(cr);
+        cairo_rectangle(cr, panel.plot.x, panel.plot.y, panel.plot.width, panel.plot.height);
+        cairo_clip(cr);
+        for (const ChartSeries& series : chart.panels[p].series) {
+            drawSeries(cr, panel, series);
+        }
+        std::vector<ChartBox> placed;   // labels kept apart across the panel's series
+        for (const ChartSeries& series : chart.panels[p].series) {
+            drawPointLabels(cr, panel, series, placed);
+        }
+        cairo_restore(cr);
+        drawLegend(cr, panel, chart.panels[p]);
+    }
+}
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+
+// The chart drawn onto a vector surface that `create` makes, writing into the returned bytes.
+template <typename Create>
+std::string vectorChart(const Chart& chart, Create create) {
+    const ChartLayout layout = chartLayout(chart);
+    std::string bytes;
+    cairo_surface_t* surface = create(&bytes, layout.width, layout.height);
+    cairo_t* cr = cairo_create(surface);
+    drawChart(cr, chart, layout);
+    cairo_destroy(cr);
+    cairo_surface_finish(surface);
+    const cairo_status_t status = cairo_surface_status(surface);
+    cairo_surface_destroy(surface);
+    if (status != CAIRO_STATUS_SUCCESS) {
+        throw std::runtime_error(std::string("cannot draw the chart: ") + cairo_status_to_string(status));
+    }
+    return bytes;
+}
+
 }  // namespace
 
-Rgb8 chartColour(size_t index) {
-    static const Rgb8 palette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
-                                   {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127},
-                                   {188, 189, 34},  {23, 190, 207}, {0, 0, 0},     {174, 199, 232}};
-    return palette[index % (sizeof palette / sizeof palette[0])];
+Rgb8 chartColour(size_t style) {
+    // Okabe and Ito's colours for colour-blind readers ("Color Universal Design", 2008) without
+    // their yellow, which is faint on white, then a dark yellow, grey and brown.
+    static const Rgb8 palette[] = {{0, 114, 178},   {213, 94, 0},    {0, 158, 115},  {204, 121, 167},
+                                   {230, 159, 0},   {86, 180, 233},  {0, 0, 0},      {170, 150, 0},
+                                   {128, 128, 128}, {140, 80, 40}};
+    return palette[style % (sizeof palette / sizeof palette[0])];
 }
 
-std::string chartToSvg(const Chart& chart) {
-    const int width = chart.panelWidth * int(chart.panels.size()), height = chart.panelHeight;
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) +
-                      "\" height=\"" + std::to_string(height) + "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-    svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    char buffer[512];
-    for (size_t p = 0; p < chart.panels.size(); ++p) {
-        const ChartPanel& panel = chart.panels[p];
-        const Axes axes = axesFor(panel, int(p) * chart.panelWidth, chart.panelWidth, chart.panelHeight);
-        for (double t : ticks(axes.x0, axes.x1, axes.logX)) {
-            const double x = axes.left + (t - axes.x0) / (axes.x1 - axes.x0) * axes.width;
-            std::snprintf(buffer, sizeof buffer,
-                          "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"#e1e1e1\"/>"
-                          "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">%s</text>\n",
-                          x, axes.top, x, axes.top + axes.height, x, axes.top + axes.height + 14,
-                          tickText(t, axes.logX).c_str());
-            svg += buffer;
-        }
-        for (double t : ticks(axes.y0, axes.y1, axes.logY)) {
-            const double y = axes.top + axes.height - (t - axes.y0) / (axes.y1 - axes.y0) * axes.height;
-            std::snprintf(buffer, sizeof buffer,
-                          "<line x1=\"%d\" y1=\"%.1f\" x2=\"%d\" y2=\"%.1f\" stroke=\"#e1e1e1\"/>"
-                          "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n",
-                          axes.left, y, axes.left + axes.width, y, axes.left - 4, y + 4, tickText(t, axes.logY).c_str());
-            svg += buffer;
-        }
-        std::snprintf(buffer, sizeof buffer,
-                      "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" stroke=\"#1e1e1e\"/>\n"
-                      "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\" font-size=\"13\">%s</text>\n"
-                      "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">%s</text>\n"
-                      "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\" transform=\"rotate(-90 %d %d)\">%s</text>\n",
-                      axes.left, axes.top, axes.width, axes.height, axes.left + axes.width / 2, axes.top - 26,
-                      escapeXml(panel.title).c_str(), axes.left + axes.width / 2, axes.top + axes.height + 34,
-                      escapeXml(panel.xLabel).c_str(), axes.left - 50, axes.top + axes.height / 2, axes.left - 50,
-                      axes.top + axes.height / 2, escapeXml(panel.yLabel).c_str());
-        svg += buffer;
-        for (size_t s = 0; s < panel.series.size(); ++s) {
-            const ChartSeries& series = panel.series[s];
-            const std::string colour = svgColour(series.colour);
-            if (series.line && series.points.size() > 1) {
-                svg += "<polyline fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\"" +
-                       (series.dashed ? " stroke-dasharray=\"6 4\"" : "") + " points=\"";
-                for (const glm::dvec2& point : series.points) {
-                    const glm::dvec2 q = axes.toPixel(point);
-                    std::snprintf(buffer, sizeof buffer, "%.1f,%.1f ", q.x, q.y);
-                    svg += buffer;
-                }
-                svg += "\"/>\n";
-            }
-            for (size_t i = 0; i < series.points.size(); ++i) {
-                const glm::dvec2 q = axes.toPixel(series.points[i]);
-                if (series.markers) {
-                    std::snprintf(buffer, sizeof buffer, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n", q.x,
-                                  q.y, colour.c_str());
-                    svg += buffer;
-                }
-                if (i < series.pointLabels.size()) {
-                    std::snprintf(buffer, sizeof buffer, "<text x=\"%.1f\" y=\"%.1f\">%s</text>\n", q.x + 6, q.y - 5,
-                                  escapeXml(series.pointLabels[i]).c_str());
-                    svg += buffer;
-                }
-            }
-            std::snprintf(buffer, sizeof buffer,
-                          "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"3\" fill=\"%s\"/>"
-                          "<text x=\"%d\" y=\"%d\">%s</text>\n",
-                          axes.left + axes.width + 10, axes.top + 10 + int(s) * 16, colour.c_str(),
-                          axes.left + axes.width + 26, axes.top + 14 + int(s) * 16, escapeXml(series.label).c_str());
-            svg += buffer;
-        }
-    }
-    return svg + "</svg>\n";
+ChartMarker chartMarker(size_t style) {
+    return ChartMarker(style % 8);
 }
 
 LdrImage chartToImage(const Chart& chart) {
-    LdrImage image{chart.panelWidth * int(chart.panels.size()), chart.panelHeight, {}};
-    image.rgba.assign(size_t(image.width) * size_t(image.height) * 4, 255);
-    for (size_t p = 0; p < chart.panels.size(); ++p) {
-        const ChartPanel& panel = chart.panels[p];
-        const Axes axes = axesFor(panel, int(p) * chart.panelWidth, chart.panelWidth, chart.panelHeight);
-        for (double t : ticks(axes.x0, axes.x1, axes.logX)) {
-            const double x = axes.left + (t - axes.x0) / (axes.x1 - axes.x0) * axes.width;
-            line(image, {x, double(axes.top)}, {x, double(axes.top + axes.height)}, kGrid, 1, false);
-            const std::string text = tickText(t, axes.logX);
-            drawText(image, int(x) - textWidth(text, 1) / 2, axes.top + axes.height + 6, text, 1, kInk);
-        }
-        for (double t : ticks(axes.y0, axes.y1, axes.logY)) {
-            const double y = axes.top + axes.height - (t - axes.y0) / (axes.y1 - axes.y0) * axes.height;
-            line(image, {double(axes.left), y}, {double(axes.left + axes.width), y}, kGrid, 1, false);
-            const std::string text = tickText(t, axes.logY);
-            drawText(image, axes.left - 6 - textWidth(text, 1), int(y) - 4, text, 1, kInk);
-        }
-        const glm::dvec2 corners[4] = {{double(axes.left), double(axes.top)},
-                                       {double(axes.left + axes.width), double(axes.top)},
-                                       {double(axes.left + axes.width), double(axes.top + axes.height)},
-                                       {double(axes.left), double(axes.top + axes.height)}};
-        for (int i = 0; i < 4; ++i) {
-            line(image, corners[i], corners[(i + 1) % 4], kInk, 1, false);
-        }
-        drawText(image, axes.left + axes.width / 2 - textWidth(panel.title, 2) / 2, 6, panel.title, 2, kInk);
-        drawText(image, axes.left + axes.width / 2 - textWidth(panel.xLabel, 1) / 2, axes.top + axes.height + 24,
-                 panel.xLabel, 1, kInk);
-        drawText(image, int(p) * chart.panelWidth + 4, axes.top - 14, panel.yLabel, 1, kInk);
-        for (size_t s = 0; s < panel.series.size(); ++s) {
-            const ChartSeries& series = panel.series[s];
-            for (size_t i = 0; series.line && i + 1 < series.points.size(); ++i) {
-                const glm::dvec2 a = axes.toPixel(series.points[i]), b = axes.toPixel(series.points[i + 1]);
-                if (!clipped(axes, a) && !clipped(axes, b)) {
-                    line(image, a, b, series.colour, 2, series.dashed);
-                }
-            }
-            for (size_t i = 0; i < series.points.size(); ++i) {
-                const glm::dvec2 q = axes.toPixel(series.points[i]);
-                if (clipped(axes, q)) {
-                    continue;
-                }
-                if (series.markers) {
-                    disc(image, q, 4.0, series.colour);
-                }
-                if (i < series.pointLabels.size()) {
-                    drawText(image, int(q.x) + 6, int(q.y) - 12, series.pointLabels[i], 1, kInk);
-                }
-            }
-            const int legendY = axes.top + 6 + int(s) * 16;
-            line(image, {double(axes.left + axes.width + 10), double(legendY + 4)},
-                 {double(axes.left + axes.width + 22), double(legendY + 4)}, series.colour, 3, false);
-            drawText(image, axes.left + axes.width + 26, legendY, fitText(series.label, kMarginRight - 30, 1), 1, kInk);
-        }
-    }
+    const ChartLayout layout = chartLayout(chart);
+    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, layout.width, layout.height);
+    cairo_t* cr = cairo_create(surface);
+    drawChart(cr, chart, layout);
+    cairo_destroy(cr);
+    LdrImage image = imageFromSurface(surface);
+    cairo_surface_destroy(surface);
     return image;
+}
+
+std::string chartToSvg(const Chart& chart) {
+    return vectorChart(chart, [](std::string* bytes, int width, int height) {
+        cairo_surface_t* surface = cairo_svg_surface_create_for_stream(append, bytes, width, height);
+        cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
+        return surface;
+    });
+}
+
+std::string chartToPdf(const Chart& chart) {
+    return vectorChart(chart, [](std::string* bytes, int width, int height) {
+        return cairo_pdf_surface_create_for_stream(append, bytes, width, height);
+    });
 }
 
 }  // namespace patina

@@ -1,6 +1,8 @@
 #pragma once
-// Small scatter/line charts drawn two ways from one description: SVG text and a raster image
-// (for PNG), so bench, stability and furnace charts need no plotting package.
+// Scatter and line charts as an engineer puts them in a paper, drawn through Cairo by one
+// function onto a PNG's image, an SVG or a PDF (chart.cpp), from a layout that measures
+// every text first (chart_layout.h): tick labels thinned until none overlap, each series named
+// in full in a legend under the plot, which grows the canvas instead of cutting a name.
 #include <string>
 #include <vector>
 
@@ -11,14 +13,17 @@
 
 namespace patina {
 
+enum class ChartMarker { Circle, Square, Triangle, Diamond, InvertedTriangle, Cross, Plus, Star };
+
 struct ChartSeries {
     std::string label;
     std::vector<glm::dvec2> points;   // data coordinates
-    Rgb8 colour;
+    size_t style = 0;                 // its colour and marker: chartColour(style), chartMarker(style)
     bool line = true;
     bool markers = false;
     bool dashed = false;
     std::vector<std::string> pointLabels;   // one per point, or empty
+    std::vector<double> errors;             // the standard error of each point's y, or empty
 };
 
 struct ChartPanel {
@@ -29,13 +34,16 @@ struct ChartPanel {
 
 struct Chart {
     std::vector<ChartPanel> panels;   // side by side
-    int panelWidth = 640, panelHeight = 480;
+    int panelWidth = 640, panelHeight = 480;   // without the legend; wider where a text needs it
 };
 
-std::string chartToSvg(const Chart& chart);
 LdrImage chartToImage(const Chart& chart);
+std::string chartToSvg(const Chart& chart);
+std::string chartToPdf(const Chart& chart);
 
-// A colour per index that stays apart from its neighbours.
-Rgb8 chartColour(size_t index);
+// Ten colours apart for the colour-blind too, and eight marker shapes: a style's pair repeats
+// only after 40 series.
+Rgb8 chartColour(size_t style);
+ChartMarker chartMarker(size_t style);
 
 }  // namespace patina

@@ -62,7 +62,7 @@ Chart furnaceChart(const std::vector<FurnaceCurve>& curves) {
             if (merged) {
                 continue;
             }
-            ChartSeries series{curve.model, {}, chartColour(drawn.size()), true, false, false, {}};
+            ChartSeries series{curve.model, {}, drawn.size(), true, false, false, {}, {}};
             for (size_t i = 0; i < curve.roughness.size(); ++i) {
                 series.points.emplace_back(curve.roughness[i], curve.albedo[i]);
             }

@@ -1,115 +1,76 @@
 #include "image/caption.h"
 
 #include <algorithm>
+#include <cmath>
 
-// stb_easy_font is header-only with static functions; this file uses only some of them.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#include <stb_easy_font.h>
-#pragma GCC diagnostic pop
+#include "image/cairo_image.h"
+#include "image/text.h"
 
 namespace patina {
 
 namespace {
 
-constexpr int kMaxQuadsPerGlyph = 16;   // the busiest glyph of stb_easy_font has 11
-constexpr int kFloatsPerQuad = 16;      // 4 vertices of x, y, z and 4 colour bytes
+constexpr char kEllipsis[] = "\xE2\x80\xA6";   // U+2026
 
-bool isDrawable(char c) {
-    return c >= ' ' && c <= '~';
-}
-
-// Font pixels from one glyph's origin to the next; c must be drawable.
-int advance(char c) {
-    char glyph[2] = {c, '\0'};
-    return stb_easy_font_width(glyph);
-}
-
-void fillBlock(LdrImage& image, int x0, int y0, int x1, int y1, Rgb8 colour) {
-    for (int y = std::max(y0, 0); y < std::min(y1, image.height); ++y) {
-        for (int x = std::max(x0, 0); x < std::min(x1, image.width); ++x) {
-            uint8_t* pixel = &image.rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
-            pixel[0] = colour.r;
-            pixel[1] = colour.g;
-            pixel[2] = colour.b;
-            pixel[3] = 255;
-        }
-    }
+double pixels(int scale) {
+    return kCaptionPixels * scale;
 }
 
 }  // namespace
 
+int textHeight(int scale) {
+    const FontLine line = fontLine(pixels(scale));
+    return int(std::ceil(line.ascent + line.descent));
+}
+
 int captionHeight(int scale) {
-    return (kGlyphHeight + 2 * kCaptionPadding) * scale;
+    return textHeight(scale) + 2 * kCaptionPadding * scale;
 }
 
 int textWidth(std::string_view text, int scale) {
-    int width = 0;
-    for (const char c : drawableText(text)) {
-        width += advance(c);
-    }
-    return width * scale;
-}
-
-std::string drawableText(std::string_view text) {
-    std::string out;
-    for (const char c : text) {
-        const auto byte = uint8_t(c);
-        if (isDrawable(c)) {
-            out.push_back(c);
-        } else if (c == '\t' || c == '\n' || c == '\r') {
-            out.push_back(' ');
-        } else if (byte < 0x80 || byte >= 0xC0) {   // a control or the lead byte of UTF-8
-            out.push_back('?');
-        }
-    }
-    return out;
+    return int(std::ceil(textAdvance(text, pixels(scale)) - 1e-9));
 }
 
 std::string fitText(std::string_view text, int maxWidth, int scale) {
-    const std::string drawable = drawableText(text);
-    if (textWidth(drawable, scale) <= maxWidth) {
-        return drawable;
+    const std::string line = oneLineText(text);
+    if (textWidth(line, scale) <= maxWidth) {
+        return line;
     }
-    const std::string ellipsis = "...";
-    const int room = maxWidth - textWidth(ellipsis, scale);
+    const int room = maxWidth - textWidth(kEllipsis, scale);
     if (room < 0) {
-        std::string dots;
-        while (dots.size() < ellipsis.size() && textWidth(dots + '.', scale) <= maxWidth) {
-            dots.push_back('.');
-        }
-        return dots;
+        return "";
     }
+    // The longest run of whole characters that fits before the ellipsis.
     size_t kept = 0;
-    for (int width = 0; kept < drawable.size(); ++kept) {
-        width += advance(drawable[kept]) * scale;
-        if (width > room) {
+    for (size_t next = 0; next < line.size();) {
+        next += characterLength(line, next);
+        if (textWidth(std::string_view(line).substr(0, next), scale) > room) {
             break;
         }
+        kept = next;
     }
-    std::string cut = drawable.substr(0, kept);
-    cut.erase(cut.find_last_not_of(' ') + 1);   // "gold ..." reads worse than "gold..."
-    return cut + ellipsis;
+    std::string cut = line.substr(0, kept);
+    cut.erase(cut.find_last_not_of(' ') + 1);   // "gold …" reads worse than "gold…"
+    return cut + kEllipsis;
 }
 
 void drawText(LdrImage& image, int x, int y, std::string_view text, int scale, Rgb8 colour) {
-    int pen = x;
-    for (char c : drawableText(text)) {
-        if (pen >= image.width) {
-            break;
-        }
-        char glyph[2] = {c, '\0'};
-        float vertices[kMaxQuadsPerGlyph * kFloatsPerQuad];
-        const int quads = stb_easy_font_print(0.0f, 0.0f, glyph, nullptr, vertices, sizeof vertices);
-        for (int q = 0; q < quads; ++q) {
-            // Vertices 0 and 2 of a quad are opposite corners, on whole font pixels.
-            const float* first = &vertices[q * kFloatsPerQuad];
-            const float* third = first + kFloatsPerQuad / 2;
-            fillBlock(image, pen + int(first[0]) * scale, y + int(first[1]) * scale,
-                      pen + int(third[0]) * scale, y + int(third[1]) * scale, colour);
-        }
-        pen += advance(c) * scale;
+    // Only the text's box, with a pixel of room for anti-aliasing, goes through Cairo.
+    const int slack = 2 * scale;
+    const int x0 = std::max(x - slack, 0), y0 = std::max(y - slack, 0);
+    const int x1 = int(std::min<int64_t>(int64_t(x) + textWidth(text, scale) + slack, image.width));
+    const int y1 = int(std::min<int64_t>(int64_t(y) + textHeight(scale) + slack, image.height));
+    if (x0 >= x1 || y0 >= y1) {
+        return;
     }
+    cairo_surface_t* surface = surfaceFromImage(image, x0, y0, x1 - x0, y1 - y0);
+    cairo_t* cr = cairo_create(surface);
+    cairo_set_source_rgb(cr, colour.r / 255.0, colour.g / 255.0, colour.b / 255.0);
+    cairo_move_to(cr, x - x0, y - y0 + fontLine(pixels(scale)).ascent);
+    showText(cr, text, pixels(scale));
+    cairo_destroy(cr);
+    copySurfaceToImage(surface, image, x0, y0);
+    cairo_surface_destroy(surface);
 }
 
 }  // namespace patina

@@ -4,6 +4,7 @@
 #include "common/luminance.h"
 #include "image/caption.h"
 #include "image/compositing.h"
+#include "image/text.h"
 
 namespace patina {
 namespace {
@@ -38,6 +39,11 @@ int countColour(const LdrImage& image, Rgb8 colour, int x0, int y0, int x1, int 
     return count;
 }
 
+// Pixels not of `background` in [x0, x1) x [y0, y1): text's ink, anti-aliased edges included.
+int countInk(const LdrImage& image, Rgb8 background, int x0, int y0, int x1, int y1) {
+    return (x1 - x0) * (y1 - y0) - countColour(image, background, x0, y0, x1, y1);
+}
+
 constexpr Rgb8 kBlack{0, 0, 0};
 constexpr Rgb8 kInk{200, 100, 50};
 
@@ -69,31 +75,23 @@ TEST(ShrunkToFit, AveragesEachBoxAndKeepsTheAspect) {
 TEST(Caption, DrawsOnlyInsideTheMeasuredBox) {
     const std::string text = "Hg|y 0.5";
     for (const int scale : {1, 3}) {
-        LdrImage image = solid(200, 50, kBlack);
+        LdrImage image = solid(200, 80, kBlack);
         drawText(image, 5, 7, text, scale, kInk);
-        const int right = 5 + textWidth(text, scale);
-        const int bottom = 7 + kGlyphHeight * scale;
+        // A pixel of room for anti-aliasing at the edges of the box.
+        const int right = 5 + textWidth(text, scale) + 1, bottom = 7 + textHeight(scale) + 1;
         ASSERT_LE(right, image.width);
-        const int inside = countColour(image, kInk, 5, 7, right, bottom);
+        const int inside = countInk(image, kBlack, 4, 6, right, bottom);
         EXPECT_GT(inside, 20 * scale * scale);
-        EXPECT_EQ(countColour(image, kInk, 0, 0, image.width, image.height), inside);
-        EXPECT_EQ(countColour(image, kBlack, 0, 0, image.width, image.height) + inside,
-                  image.width * image.height);
+        EXPECT_EQ(countInk(image, kBlack, 0, 0, image.width, image.height), inside);
+        EXPECT_GT(countColour(image, kInk, 0, 0, image.width, image.height), 0) << "stems in the ink itself";
     }
 }
 
-TEST(Caption, ScalesByWholeBlocks) {
-    LdrImage one = solid(60, 20, kBlack), two = solid(120, 40, kBlack);
-    drawText(one, 0, 0, "Ab3", 1, kInk);
-    drawText(two, 0, 0, "Ab3", 2, kInk);
-    for (int y = 0; y < two.height; ++y) {
-        for (int x = 0; x < two.width; ++x) {
-            ASSERT_EQ(pixel(two, x, y) == kInk, pixel(one, x / 2, y / 2) == kInk) << x << "," << y;
-        }
-    }
-    EXPECT_EQ(textWidth("Ab3", 2), 2 * textWidth("Ab3", 1));
-    EXPECT_EQ(captionHeight(2), 2 * captionHeight(1));
-    EXPECT_GT(captionHeight(1), kGlyphHeight);
+TEST(Caption, GrowsWithTheScale) {
+    EXPECT_NEAR(textWidth("Ab3 caption", 2), 2 * textWidth("Ab3 caption", 1), 2);
+    EXPECT_NEAR(textHeight(2), 2 * textHeight(1), 2);
+    EXPECT_EQ(captionHeight(2), textHeight(2) + 4 * kCaptionPadding);
+    EXPECT_GT(captionHeight(1), textHeight(1));
 }
 
 TEST(Caption, ClipsAtTheImageEdges) {
@@ -102,7 +100,7 @@ TEST(Caption, ClipsAtTheImageEdges) {
     drawText(shifted, -3, -2, "W#", 1, kInk);
     for (int y = 0; y + 2 < 20; ++y) {
         for (int x = 0; x + 3 < 30; ++x) {
-            ASSERT_EQ(pixel(shifted, x, y) == kInk, pixel(whole, x + 3, y + 2) == kInk);
+            ASSERT_TRUE(pixel(shifted, x, y) == pixel(whole, x + 3, y + 2)) << x << "," << y;
         }
     }
     drawText(shifted, 28, 15, "far past the right and bottom edges", 4, kInk);
@@ -110,26 +108,65 @@ TEST(Caption, ClipsAtTheImageEdges) {
     EXPECT_EQ(shifted.rgba.size(), 30u * 20u * 4u);
 }
 
-TEST(Caption, ReplacesWhatTheFontCannotDraw) {
-    EXPECT_EQ(drawableText("caf\xc3\xa9\tok\x01~ \xe2\x9c\x93!"), "caf? ok?~ ?!");
-    EXPECT_EQ(textWidth("\xc3\xa9", 1), textWidth("?", 1));
+// A name in any script shows: not as '?', the old font's stand-in for every non-ASCII character.
+TEST(Caption, DrawsUtf8AsItsOwnCharacters) {
+    const std::string text = "Kupfer \xE2\x80\x93 Messing \xE2\x9C\x93 \xE9\x8A\x85";   // "Kupfer – Messing ✓ 銅"
+    LdrImage utf8 = solid(300, 30, kBlack), asked = solid(300, 30, kBlack);
+    drawText(utf8, 2, 2, text, 1, kInk);
+    drawText(asked, 2, 2, "Kupfer ? Messing ? ?", 1, kInk);
+    EXPECT_NE(utf8.rgba, asked.rgba);
+    // Each of the three draws ink of its own, unlike '?' and unlike an empty box (DejaVu lacks 銅).
+    for (const char* character : {"\xE2\x80\x93", "\xE2\x9C\x93", "\xE9\x8A\x85"}) {
+        LdrImage one = solid(40, 30, kBlack), question = solid(40, 30, kBlack);
+        drawText(one, 2, 2, character, 1, kInk);
+        drawText(question, 2, 2, "?", 1, kInk);
+        EXPECT_GT(countInk(one, kBlack, 0, 0, 40, 30), 0) << character;
+        EXPECT_NE(one.rgba, question.rgba) << character;
+    }
+    EXPECT_GT(textWidth("\xE9\x8A\x85", 1), textWidth("?", 1)) << "a CJK character is wide: a font that has it";
+}
+
+TEST(Caption, KeepsOneLineOfValidUtf8) {
+    EXPECT_EQ(oneLineText("caf\xc3\xa9\tok\x01~ \xe2\x9c\x93!"), "caf\xc3\xa9 ok~ \xe2\x9c\x93!");
+    EXPECT_EQ(oneLineText("a\xff" "b\xe2\x9c"), "a\xEF\xBF\xBD" "b\xEF\xBF\xBD\xEF\xBF\xBD");   // U+FFFD
+    EXPECT_EQ(oneLineText("\xc0\xaf"), "\xEF\xBF\xBD\xEF\xBF\xBD") << "an overlong '/' is no character";
     EXPECT_EQ(textWidth("", 3), 0);
 }
 
 TEST(Caption, CutsLongTextWithAnEllipsis) {
+    const std::string ellipsis = "\xE2\x80\xA6";
     const std::string name = "a very long material name that goes on";
     EXPECT_EQ(fitText(name, textWidth(name, 1), 1), name);
     for (const int width : {30, 61, 100, 150}) {
         const std::string cut = fitText(name, width, 1);
         EXPECT_LE(textWidth(cut, 1), width) << cut;
         ASSERT_GE(cut.size(), 4u) << cut;
-        EXPECT_EQ(cut.substr(cut.size() - 3), "...");
+        EXPECT_EQ(cut.substr(cut.size() - 3), ellipsis);
         EXPECT_EQ(name.rfind(cut.substr(0, cut.size() - 3), 0), 0u) << cut;
         EXPECT_NE(cut[cut.size() - 4], ' ') << cut;
     }
-    EXPECT_EQ(fitText(name, textWidth("..", 2), 2), "..");
+    EXPECT_EQ(fitText(name, textWidth(ellipsis, 2), 2), ellipsis);
     EXPECT_EQ(fitText(name, 0, 1), "");
     EXPECT_EQ(fitText(name, -5, 1), "");
+}
+
+// Every cut of a name of two-, three- and four-byte characters ends between characters.
+TEST(Caption, CutsBetweenUtf8CharactersNeverInside) {
+    const std::string name = "\xC3\xA9t\xC3\xA9 \xE9\x8A\x85\xE9\x8A\x85 Messing \xF0\x9F\x99\x82 \xE2\x9C\x93\xE2\x9C\x93 Kupfer";
+    const std::string ellipsis = "\xE2\x80\xA6";
+    for (int width = 0; width <= textWidth(name, 1); ++width) {
+        const std::string cut = fitText(name, width, 1);
+        EXPECT_LE(textWidth(cut, 1), width) << cut;
+        if (cut.empty() || cut == name) {
+            continue;
+        }
+        ASSERT_EQ(cut.substr(cut.size() - 3), ellipsis) << width;
+        const std::string kept = cut.substr(0, cut.size() - 3);
+        ASSERT_EQ(name.rfind(kept, 0), 0u) << width;
+        EXPECT_EQ(oneLineText(kept), kept) << "a character split at " << width << ": " << kept;
+        // The next byte of the name starts a character: not a continuation byte (10xxxxxx).
+        EXPECT_TRUE(kept.size() == name.size() || (uint8_t(name[kept.size()]) & 0xC0) != 0x80) << width;
+    }
 }
 
 // One convention for colours: a caption shows the base colour in sRGB, as the editor's field
@@ -149,12 +186,13 @@ TEST(Compositing, ANarrowCaptionKeepsTheNameBeforeTheNumbers) {
     material.name = "A: terracotta";
     const std::string full = materialCaption(material, 1000);
     EXPECT_EQ(full.rfind("A: terracotta  r 0.40 s 0.50 m 0.00  base sRGB", 0), 0u) << full;
-    const int withoutBase = textWidth("A: terracotta  r 0.40 s 0.50 m 0.00", 1) + 2 * kCaptionPadding;
+    // The name and the numbers are measured apart, each rounded up to whole pixels.
+    const int withoutBase = textWidth("A: terracotta", 1) + textWidth("  r 0.40 s 0.50 m 0.00", 1) + 2 * kCaptionPadding;
     EXPECT_EQ(materialCaption(material, withoutBase), "A: terracotta  r 0.40 s 0.50 m 0.00");
     EXPECT_EQ(materialCaption(material, withoutBase - 30), "A: terracotta");
     material.name = std::string(40, 'W');
     const std::string cut = materialCaption(material, 200);
-    EXPECT_EQ(cut.substr(cut.size() - 3), "...");
+    EXPECT_EQ(cut.substr(cut.size() - 3), "\xE2\x80\xA6");   // "…"
     EXPECT_LE(textWidth(cut, 1), 200 - 2 * kCaptionPadding);
 }
 
@@ -185,7 +223,7 @@ TEST(Compositing, ContactSheetPlacesAndCaptionsEveryCell) {
         const int x = layout.cellX(i), y = layout.cellY(i);
         EXPECT_TRUE(pixel(sheet, x + 25, y + 20) == pixel(cells[size_t(i)], 0, 0)) << i;
         EXPECT_EQ(countColour(sheet, pixel(cells[size_t(i)], 0, 0), x, y, x + 50, y + 40), 50 * 40);
-        const int ink = countColour(sheet, kCaptionColour, x, y + 40, x + 50, y + 40 + layout.captionHeight);
+        const int ink = countInk(sheet, kSheetBackground, x, y + 40, x + 50, y + 40 + layout.captionHeight);
         EXPECT_EQ(ink > 0, i != 1) << i;   // the second cell has no name
     }
     EXPECT_TRUE(pixel(sheet, 50, 10) == kSheetBackground);                  // the gap
@@ -197,10 +235,10 @@ TEST(Compositing, LongCaptionsStayInTheirCell) {
     const LdrImage sheet =
         contactSheet({solid(40, 30, kBlack), solid(40, 30, kBlack)}, {longName, longName}, 2);
     const SheetLayout layout = sheetLayout(40, 30, 2, 2);
-    EXPECT_GT(countColour(sheet, kCaptionColour, 0, 30, 40, sheet.height), 0);
-    EXPECT_EQ(countColour(sheet, kCaptionColour, 40, 0, 40 + kCellGap, sheet.height), 0);
-    EXPECT_EQ(countColour(sheet, kCaptionColour, 0, 30, 1, sheet.height), 0);
-    EXPECT_EQ(countColour(sheet, kCaptionColour, layout.width - 1, 30, layout.width, sheet.height), 0);
+    EXPECT_GT(countInk(sheet, kSheetBackground, 0, 30, 40, sheet.height), 0);
+    EXPECT_EQ(countInk(sheet, kSheetBackground, 40, 0, 40 + kCellGap, sheet.height), 0);
+    EXPECT_EQ(countInk(sheet, kSheetBackground, 0, 30, 1, sheet.height), 0);
+    EXPECT_EQ(countInk(sheet, kSheetBackground, layout.width - 1, 30, layout.width, sheet.height), 0);
 }
 
 TEST(Compositing, CentresSmallerCells) {
