@@ -70,8 +70,12 @@ public:
         const Frame& frame = frames_.back();
         pointer_.resize(frame.pointerBase);
         pattern_.resize(frame.patternBase);
-        pointer_ += "/" + escaped(key);
-        pattern_ += "/" + escaped(key);
+        // Appended in steps: GCC 12 warns falsely (-Wrestrict) on "/" + std::string here.
+        const std::string step = escaped(key);
+        pointer_ += '/';
+        pointer_ += step;
+        pattern_ += '/';
+        pattern_ += step;
     }
     // Before each value: an array's element takes its index. Returns what is wrong, or "".
     std::string check(const Found& found) {
@@ -79,7 +83,8 @@ public:
             Frame& frame = frames_.back();
             pointer_.resize(frame.pointerBase);
             pattern_.resize(frame.patternBase);
-            pointer_ += "/" + std::to_string(frame.index++);
+            pointer_ += '/';
+            pointer_ += std::to_string(frame.index++);
             pattern_ += "/*";
         }
         const JsonRule* rule = this->rule();
