@@ -27,7 +27,7 @@ Command addAlbedoCommand(CLI::App& app) {
     struct Options {
         SceneInputs inputs;
         int points = 19, samples = 1024;
-        std::string out;
+        std::string out, chart;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -38,10 +38,16 @@ Command addAlbedoCommand(CLI::App& app) {
     command->add_option("--samples", options->samples, "Ground-truth MIS iterations per angle (3 directions each)")
         ->check(CLI::Range(1, 1 << 20));
     command->add_option("--out", options->out, "Output CSV")->required();
+    command->add_option("--chart", options->chart,
+                        "Also a chart of the luminance with the truth's error bars: STEM.png, STEM.svg and STEM.pdf");
     return [options] {
         const Scene scene = options->inputs.load();
-        const std::string csv = albedoCsv(albedoCurve(scene.material, options->points, options->samples));
+        const std::vector<AlbedoPoint> curve = albedoCurve(scene.material, options->points, options->samples);
+        const std::string csv = albedoCsv(curve);
         writeOutput(options->out, std::vector<uint8_t>(csv.begin(), csv.end()));
+        if (!options->chart.empty()) {
+            writeChart(options->chart, albedoChart({{scene.material.name, curve}}), true);
+        }
     };
 }
 

@@ -5,6 +5,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "common/luminance.h"
 #include "common/parallel_for.h"
 #include "environment/builtin_environments.h"
 #include "environment/environment.h"
@@ -45,6 +46,25 @@ std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int poi
         point.standardError = truth.standardError;
     });
     return curve;
+}
+
+Chart albedoChart(const std::vector<std::pair<std::string, std::vector<AlbedoPoint>>>& curves) {
+    ChartPanel panel{"Directional albedo under a white furnace", "theta_v (degrees)", "albedo (luminance)", false,
+                     false, {}};
+    for (size_t i = 0; i < curves.size(); ++i) {
+        ChartSeries product{curves[i].first + ": split sum", {}, i, true, false, false, {}, {}};
+        ChartSeries truth{curves[i].first + ": ground truth, 1 s.e.", {}, i, false, true, false, {}, {}};
+        for (const AlbedoPoint& p : curves[i].second) {
+            product.points.emplace_back(p.thetaVDegrees, luminance(p.product));
+            truth.points.emplace_back(p.thetaVDegrees, luminance(p.truth));
+            truth.errors.push_back(luminance(p.standardError));
+        }
+        panel.series.push_back(std::move(product));
+        panel.series.push_back(std::move(truth));
+    }
+    Chart chart;
+    chart.panels.push_back(std::move(panel));
+    return chart;
 }
 
 }  // namespace patina

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "accuracy/chart.h"
 #include "shading/material_parameters.h"
 
 namespace patina {
@@ -22,5 +23,10 @@ struct AlbedoPoint {
 // `points` angles from 0 to 88.5 degrees (where NoV stays clear of the floor 1e-4), the truth
 // by `samples` MIS iterations at each (deterministic).
 std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int points, int samples);
+
+// The curves of named materials on one chart, as luminance: each material's split sum as a
+// line, its ground truth as markers with one standard error's bars (the luminance of the
+// channels' errors, which bounds the luminance's own).
+Chart albedoChart(const std::vector<std::pair<std::string, std::vector<AlbedoPoint>>>& curves);
 
 }  // namespace patina

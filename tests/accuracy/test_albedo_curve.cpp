@@ -46,5 +46,25 @@ TEST(AlbedoCurve, TheSplitSumFollowsTheTruthUnderTheWhiteFurnace) {
     EXPECT_LT(normal.truth.x, 0.6f);
 }
 
+// The chart names each material's two series in full and carries the truth's errors as bars.
+TEST(AlbedoCurve, TheChartCarriesTheTruthsErrorBars) {
+    MaterialParameters gold;
+    gold.baseColor = glm::vec3(1.0f, 0.78f, 0.34f);
+    gold.metallic = 1.0f;
+    const std::vector<AlbedoPoint> curve = albedoCurve(gold, 5, 128);
+    const Chart chart = albedoChart({{"gold", curve}});
+    ASSERT_EQ(chart.panels.size(), 1u);
+    ASSERT_EQ(chart.panels[0].series.size(), 2u);
+    EXPECT_EQ(chart.panels[0].series[0].label, "gold: split sum");
+    EXPECT_TRUE(chart.panels[0].series[0].errors.empty());
+    const ChartSeries& truth = chart.panels[0].series[1];
+    ASSERT_EQ(truth.errors.size(), curve.size());
+    for (size_t i = 0; i < curve.size(); ++i) {
+        EXPECT_GT(truth.errors[i], 0.0);
+        EXPECT_NEAR(truth.points[i].y, 0.2126 * curve[i].truth.r + 0.7152 * curve[i].truth.g + 0.0722 * curve[i].truth.b,
+                    1e-5);
+    }
+}
+
 }  // namespace
 }  // namespace patina

@@ -138,7 +138,8 @@ TEST_F(CliInspect, SliceAndAlbedoWriteBrdfExplorersViews) {
     EXPECT_GT(below, 400);   // phi_d = 0: theta_h + theta_d past 90 degrees
     EXPECT_EQ(decodePng(readFileBytes(path("s.png"))).width, 32);
 
-    const test::CliRun albedo = run("albedo --points 5 --samples 256 --out " + path("a.csv").string());
+    const test::CliRun albedo =
+        run("albedo --points 5 --samples 256 --out " + path("a.csv").string() + " --chart " + path("a").string());
     ASSERT_EQ(albedo.exitCode, 0) << albedo.stderrText;
     const std::string csv(reinterpret_cast<const char*>(readFileBytes(path("a.csv")).data()),
                           readFileBytes(path("a.csv")).size());
@@ -148,6 +149,9 @@ TEST_F(CliInspect, SliceAndAlbedoWriteBrdfExplorersViews) {
     ASSERT_EQ(std::sscanf(csv.c_str() + csv.find('\n') + 1, "%f,%f,%*f,%*f,%f", &theta, &product, &truth), 3);
     EXPECT_EQ(theta, 0.0f);
     EXPECT_NEAR(product, truth, 0.05f);
+    for (const char* extension : {".png", ".svg", ".pdf"}) {
+        EXPECT_TRUE(std::filesystem::exists(path(std::string("a") + extension))) << extension;
+    }
 
     EXPECT_EQ(run("slice --lobe shiny --out " + path("x.png").string()).exitCode, 2);
     EXPECT_FALSE(std::filesystem::exists(path("x.png")));
