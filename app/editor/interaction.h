@@ -66,8 +66,8 @@ struct Interaction {
     // View > PBR validation overlay: the picture with the pbr-validation channel's flagged pixels
     // striped over it (channel.strictPbr: which ranges); the status line counts them.
     bool pbrOverlay = false;
-    // View > Pixel read-out: hovering the picture (Single view) tells the pixel's story; a
-    // Ctrl+click pins it, where in the picture as fractions of its size, so a pin stays on its
+    // View > Pixel read-out: hovering the picture (either side of a comparison) tells the pixel's story; a
+    // click pins it, where in the picture as fractions of its size, so a pin stays on its
     // spot when the viewport is resized.
     bool pixelReadOut = false;
     std::vector<glm::vec2> pins;

@@ -1063,6 +1063,35 @@ TEST_F(EditorUi, PixelReadOutTellsAOrBInEveryView) {
     EXPECT_NEAR(state_.pins[0].x, 0.5f, 0.02f);
     EXPECT_NEAR(state_.pins[0].y, 0.5f, 0.02f);
     EXPECT_TRUE(itemsOfLastFrame().contains("unpin:1"));
+    // A plain click pins too; a drag (the camera turning) pins nothing.
+    click(ImVec2(min.x + w * 0.7f, y));
+    EXPECT_EQ(state_.pins.size(), 2u);
+    drag(ImVec2(min.x + w * 0.6f, y), ImVec2(min.x + w * 0.6f + 60.0f, y + 20.0f));
+    EXPECT_EQ(state_.pins.size(), 2u);
+}
+
+// Every channel in every view: the label shows, nothing fails, and Picture gives the picture back.
+TEST_F(EditorUi, EveryChannelShowsInEveryView) {
+    click(centreOf("Set A"));
+    for (const char* view : {"Single", "Split", "Side by side"}) {
+        click(centreOf(view));
+        std::vector<std::string> names = fixedChannelNames();
+        names.push_back("light:" + state_.scene.lights[0].name);
+        for (const std::string& name : names) {
+            click(centreOf("menu:View"));
+            click(centreOf("Channel"));
+            click(centreOf("channel:" + name));
+            ASSERT_EQ(channelName(state_.channel), name) << view;
+            frames(1);
+            EXPECT_TRUE(itemsOfLastFrame().contains("channel label")) << view << " " << name;
+            EXPECT_TRUE(state_.error.empty()) << view << " " << name << ": " << state_.error;
+        }
+        click(centreOf("menu:View"));
+        click(centreOf("Channel"));
+        click(centreOf("channel:picture"));
+        frames(1);
+        EXPECT_FALSE(itemsOfLastFrame().contains("channel label")) << view;
+    }
 }
 
 // The lobe panel's BRDF Explorer views: each draws (with A beside B), the slice's hover tells a

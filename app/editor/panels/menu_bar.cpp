@@ -185,7 +185,7 @@ void drawViewMenu(EditorState& state) {
     recordItem("PBR validation overlay", "Stripe the pixels whose base colour no real material has: blue darker "
                                          "than charcoal, red brighter than snow, yellow a metal too dark");
     ImGui::MenuItem("Pixel read-out", nullptr, &state.pixelReadOut);
-    recordItem("Pixel read-out", "Hover the picture to see what gives a pixel its colour; Ctrl+click pins it");
+    recordItem("Pixel read-out", "Hover the picture to see what gives a pixel its colour; a click pins it");
     drawUiSizeMenu(state);
     ImGui::Separator();
     drawScreenshotSettings(state);

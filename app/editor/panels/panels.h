@@ -23,7 +23,7 @@ struct ReadOutPicture {
     const char* side;
 };
 // View > Pixel read-out over the viewport's pictures, B's last: the hovered pixel's story, told
-// by the picture under the mouse; Ctrl+click pins a place (fractions of the picture, so a pin
+// by the picture under the mouse; a click pins a place (fractions of the picture, so a pin
 // marks the same place in each picture of a comparison); the Pinned pixels window tells B's
 // story at each pin.
 void drawPixelReadOut(EditorState& state, EditorServices& services, const std::vector<ReadOutPicture>& pictures,

@@ -1,5 +1,5 @@
 // The inspector in the editor (docs/INSPECTOR.md): with View > Pixel read-out, the hovered
-// pixel's story (reference/pixel_story.h, the CPU twin of the shaders) as a tooltip, Ctrl+click
+// pixel's story (reference/pixel_story.h, the CPU twin of the shaders) as a tooltip, a click
 // pins, each pin marked on the picture and listed in the Pinned pixels window (removable, copied
 // as CSV).
 #include <cstdio>
@@ -168,7 +168,7 @@ void drawPixelReadOut(EditorState& state, EditorServices& services, const std::v
             for (const std::string& line : storyLines(*story)) {
                 ImGui::TextUnformatted(line.c_str());
             }
-            ImGui::TextDisabled("Ctrl+click pins this pixel");
+            ImGui::TextDisabled("Click pins this pixel (Ctrl+click: without picking its part)");
         } else {
             ImGui::Text("pixel %d, %d: background, no surface", x, y);
         }
@@ -176,7 +176,8 @@ void drawPixelReadOut(EditorState& state, EditorServices& services, const std::v
         recordArea(std::string("pixel story") + (*under->side ? std::string(" ") + under->side : std::string()),
                    under->hoverMin, under->hoverMax);
     }
-    if (under && io.KeyCtrl && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+    // A click pins (a drag turns the camera and pins nothing).
+    if (under && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= px(3.0f) * px(3.0f)) {
         state.pins.push_back({(io.MousePos.x - under->origin.x) / under->size.x,
                               (io.MousePos.y - under->origin.y) / under->size.y});

@@ -514,7 +514,7 @@ void drawPartOutline(EditorState& state, const ViewArea& area) {
 // it, in the half it falls in when Side by side.
 void pickOnClick(EditorState& state, const ViewArea& area) {
     const ImGuiIO& io = ImGui::GetIO();
-    // Ctrl+click pins a pixel while the read-out is on, and picks nothing.
+    // While the read-out is on a click also pins a pixel; Ctrl+click only pins it.
     if (!state.model || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.KeyShift ||
         (io.KeyCtrl && state.pixelReadOut) ||
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] > px(3.0f) * px(3.0f)) {
