@@ -94,18 +94,6 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
     ImGui::EndTabBar();
 }
 
-// The light a channel shows was renamed, removed or switched off: the picture again, and why.
-void keepChannelShowable(EditorState& state) {
-    if (state.channel.channel != shader::CHANNEL_LIGHT) {
-        return;
-    }
-    try {
-        channelLights(renderedScene(state).lights, state.channel);
-    } catch (const InputError&) {
-        state.status = "The viewport shows the picture again: no enabled light \"" + state.channel.light + "\" to show";
-        state.channel = {-1, "", state.channel.srgb, state.channel.strictPbr};   // the picture; the options stay
-    }
-}
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
@@ -120,9 +108,6 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
     // keys, within the frames drawn after the key press.
     drawGuarded(state, "A shortcut", [&] { handleShortcuts(state, services); });
-    // After the menu, so a channel chosen there is drawn, and counted, in this frame.
-    keepChannelShowable(state);
-    services.channel = state.channel;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();
     PanelLayout& layout = state.layout;

@@ -58,7 +58,7 @@ public:
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
     int viewportWidth = 0, viewportHeight = 0;   // set by the viewport panel
     EnvironmentShading environmentShading;        // EditorState's, set once a frame
-    ChannelRequest channel;                       // the viewport's (Interaction::channel), set once a frame
+    ChannelRequest channel;                       // the viewport's (Interaction::channel), set before it draws
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
 
     // The inspector's read-out of pixel (x, y) of a width x height picture of `scene`

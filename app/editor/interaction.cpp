@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "editor_state.h"
+#include "files/input_error.h"
+#include "shading/shading.h"
 
 namespace patina::editor {
 
@@ -44,6 +46,18 @@ Scene withMaterial(const EditorState& state, const Material& material) {
     Scene scene = renderedScene(state);
     setEditedMaterial(state, scene, material);
     return scene;
+}
+
+void keepChannelShowable(EditorState& state) {
+    if (state.channel.channel != shader::CHANNEL_LIGHT) {
+        return;
+    }
+    try {
+        channelLights(renderedScene(state).lights, state.channel);
+    } catch (const InputError&) {
+        state.status = "The viewport shows the picture again: no enabled light \"" + state.channel.light + "\" to show";
+        state.channel = {-1, "", state.channel.srgb, state.channel.strictPbr};   // the picture; the options stay
+    }
 }
 
 }  // namespace patina::editor

@@ -74,6 +74,9 @@ struct Interaction {
 };
 
 void toggleSolo(Interaction& interaction, int index);
+// The light a channel shows was renamed, removed or switched off: the picture again, and the
+// status says why. The viewport calls it before it draws, after every panel that changes lights.
+void keepChannelShowable(EditorState& state);
 // Whether solo leaves this light out of the picture (the list and the gizmos grey it out).
 bool soloedOut(const EditorState& state, int index);
 // The scene as rendered: solo applied.

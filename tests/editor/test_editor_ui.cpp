@@ -1094,6 +1094,22 @@ TEST_F(EditorUi, EveryChannelShowsInEveryView) {
     }
 }
 
+// A light whose channel shows, switched off in the lights panel (drawn before the viewport in
+// the same frame): the picture comes back and the status says why; no panel fails.
+TEST_F(EditorUi, SwitchingOffTheShownLightInThePanelGivesThePictureBack) {
+    const std::string name = state_.scene.lights[1].name;
+    click(centreOf("menu:View"));
+    click(centreOf("Channel"));
+    click(centreOf("channel:light:" + name));
+    ASSERT_EQ(state_.channel.light, name);
+    click(centreOf("light:1 enabled"));
+    ASSERT_FALSE(state_.scene.lights[1].enabled);
+    frames(2);
+    EXPECT_EQ(state_.channel.channel, -1);
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+    EXPECT_NE(state_.status.find("picture again"), std::string::npos) << state_.status;
+}
+
 // The lobe panel's BRDF Explorer views: each draws (with A beside B), the slice's hover tells a
 // cell's angles, and dragging the 3D lobe turns it.
 TEST_F(EditorUi, TheLobePanelShowsTheSliceTheAlbedoAndTheThreeDLobe) {
@@ -1194,6 +1210,10 @@ TEST_F(EditorUi, PixelReadOutPinsAPixelWithTheValuesTheViewportShows) {
     click(centreOf("Copy pins as CSV"));
     const std::string csv = ImGui::GetClipboardText();
     ASSERT_EQ(csv.rfind("pin,x,y,item,material,radiance_r", 0), 0u) << csv;
+    // Each light's share has its columns, named after the light.
+    std::string stem = state_.scene.lights[0].name;
+    std::replace(stem.begin(), stem.end(), ' ', '_');
+    EXPECT_NE(csv.substr(0, csv.find('\n')).find("," + stem + "_diffuse_r,"), std::string::npos) << csv;
     // The pin's line: its pixel and its displayed bytes, as the viewport (MSAA) shows them.
     const std::string line = csv.substr(csv.find('\n') + 1);
     std::vector<std::string> fields;

@@ -97,7 +97,7 @@ void drawSliceView(EditorState& state, ImVec2 size) {
     drawSlice(brdfSlice(editedMaterial(state), lobe.phiDDegrees, kSliceSize, which), lobe, at, side,
               state.compareA ? "B" : "theta_h across, theta_d up (degrees)");
     ImGui::Dummy(size);
-    recordItem("slice", "BRDF Explorer's image slice: f over theta_h (across) and theta_d (up) at phi_d; hover for values");
+    recordItem("slice");   // no tooltip of its own: the hovered cell's values are the tooltip
 }
 
 void drawAlbedoView(const EditorState& state, ImVec2 size) {
@@ -123,8 +123,10 @@ void drawAlbedoView(const EditorState& state, ImVec2 size) {
         }
     }
     top *= 1.05f;
-    const ImVec2 plotMin(origin.x + ImGui::CalcTextSize("0.00").x + px(10), origin.y + px(6));
-    const ImVec2 plotMax(origin.x + size.x - px(8), origin.y + size.y - line - px(6));
+    // The legend in its own rows above the plot, so it never covers a curve.
+    const float legendHeight = float(shown.size()) * line + px(4);
+    const ImVec2 plotMin(origin.x + ImGui::CalcTextSize("0.00").x + px(10), origin.y + legendHeight + line * 0.5f + px(4));
+    const ImVec2 plotMax(origin.x + size.x - px(8), origin.y + size.y - line - px(8));
     auto toScreen = [&](float thetaV, float value) {
         return ImVec2(plotMin.x + (plotMax.x - plotMin.x) * thetaV / 90.0f,
                       plotMax.y - (plotMax.y - plotMin.y) * value / top);
@@ -136,10 +138,10 @@ void drawAlbedoView(const EditorState& state, ImVec2 size) {
         std::snprintf(text, sizeof text, "%.2f", double(tick));
         draw->AddText(ImVec2(origin.x + px(4), at.y - line * 0.5f), kLabel, text);
     }
-    draw->AddText(ImVec2(plotMin.x, plotMax.y + px(2)), kLabel, "0");
+    draw->AddText(ImVec2(plotMin.x, plotMax.y + px(4)), kLabel, "0");
     const char* axis = "theta_v (degrees)";
-    draw->AddText(ImVec2((plotMin.x + plotMax.x - ImGui::CalcTextSize(axis).x) * 0.5f, plotMax.y + px(2)), kLabel, axis);
-    draw->AddText(ImVec2(plotMax.x - ImGui::CalcTextSize("90").x, plotMax.y + px(2)), kLabel, "90");
+    draw->AddText(ImVec2((plotMin.x + plotMax.x - ImGui::CalcTextSize(axis).x) * 0.5f, plotMax.y + px(4)), kLabel, axis);
+    draw->AddText(ImVec2(plotMax.x - ImGui::CalcTextSize("90").x, plotMax.y + px(4)), kLabel, "90");
     for (const Shown& s : shown) {
         for (const AlbedoPoint& p : *s.curve) {
             draw->PathLineTo(toScreen(p.thetaVDegrees, luminance(p.product)));
@@ -154,7 +156,7 @@ void drawAlbedoView(const EditorState& state, ImVec2 size) {
             draw->AddCircle(toScreen(p.thetaVDegrees, value), px(3), s.colour, 8, 1.5f);
         }
     }
-    ImVec2 legend(plotMin.x + px(8), plotMin.y + px(4));
+    ImVec2 legend(plotMin.x, origin.y + px(4));
     for (const Shown& s : shown) {
         char text[96];
         std::snprintf(text, sizeof text, "%s%ssplit sum (line), ground truth +- 1 s.e. (circles)", s.name, *s.name ? ": " : "");
@@ -190,8 +192,12 @@ void drawLobe3dView(EditorState& state, ImVec2 size) {
     draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     const float yaw = glm::radians(lobe.yawDegrees), pitch = glm::radians(lobe.pitchDegrees);
-    const float scale = std::min(size.x * 0.45f, size.y * 0.8f);
-    const ImVec2 centre(origin.x + size.x * 0.5f, origin.y + size.y * 0.85f);
+    // Fit the unit hemisphere seen at this pitch: up to cos + |sin| above the centre (the
+    // normal's tip leaning back), |sin| below it (the horizon's near edge); a text line on top.
+    const float line = ImGui::GetTextLineHeight();
+    const float above = std::cos(pitch) + std::abs(std::sin(pitch)), below = std::abs(std::sin(pitch));
+    const float scale = std::max(std::min(size.x * 0.45f, (size.y - line - px(12)) / (above + below)), px(8));
+    const ImVec2 centre(origin.x + size.x * 0.5f, origin.y + line + px(6) + scale * above);
     // Orthographic, turned by yaw about the normal and tilted by pitch towards the viewer.
     auto project = [&](glm::vec3 p) {
         const float x = p.x * std::cos(yaw) - p.y * std::sin(yaw), depth = p.x * std::sin(yaw) + p.y * std::cos(yaw);

@@ -159,7 +159,7 @@ void drawChannelMenu(EditorState& state) {
     ImGui::MenuItem("sRGB-encode channel", nullptr, &state.channel.srgb);
     recordItem("sRGB-encode channel", "Show the channel's values sRGB-encoded (for colours); off: the values themselves");
     ImGui::MenuItem("Strict PBR ranges", nullptr, &state.channel.strictPbr);
-    recordItem("Strict PBR ranges", "pbr-validation and the overlay: dielectrics 50-240 sRGB and metals from 180 "
+    recordItem("Strict PBR ranges", "PBR validation: dielectrics 50-240 sRGB, metals from 180\n"
                                     "(off: 30-240 and 155, Substance's defaults)");
     ImGui::EndMenu();
 }

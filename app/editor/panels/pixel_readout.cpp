@@ -2,6 +2,7 @@
 // pixel's story (reference/pixel_story.h, the CPU twin of the shaders) as a tooltip, a click
 // pins, each pin marked on the picture and listed in the Pinned pixels window (removable, copied
 // as CSV).
+#include <cctype>
 #include <cstdio>
 #include <string>
 
@@ -53,9 +54,38 @@ std::vector<std::string> storyLines(const PixelStory& s) {
     return lines;
 }
 
-std::string csvHeader() {
-    return "pin,x,y,item,material,radiance_r,radiance_g,radiance_b,shown_r,shown_g,shown_b,base_r,base_g,base_b,alpha,"
-           "roughness,metallic,specular,f0_r,f0_g,f0_b,n_x,n_y,n_z,nov,u0,v0,d,g,f_r,f_g,f_b\n";
+// A light's name as a column name's stem: letters, digits and underscores.
+std::string columnStem(const std::string& name) {
+    std::string stem;
+    for (char c : name) {
+        stem += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    }
+    return stem;
+}
+
+// The columns, then each light's and the environment's diffuse and specular share, by the first
+// pin's story (every pin's scene is the same one).
+std::string csvHeader(const PixelStory* first) {
+    std::string header = "pin,x,y,item,material,radiance_r,radiance_g,radiance_b,shown_r,shown_g,shown_b,base_r,"
+                         "base_g,base_b,alpha,roughness,metallic,specular,f0_r,f0_g,f0_b,n_x,n_y,n_z,nov,u0,v0,d,g,"
+                         "f_r,f_g,f_b";
+    std::vector<std::string> shares;
+    if (first) {
+        for (const LightShare& light : first->lights) {
+            shares.push_back(columnStem(light.name));
+        }
+        if (first->environment) {
+            shares.push_back(columnStem(first->environment->name));
+        }
+    }
+    for (const std::string& stem : shares) {
+        for (const char* lobe : {"diffuse", "specular"}) {
+            for (const char* c : {"r", "g", "b"}) {
+                header += "," + stem + "_" + lobe + "_" + c;
+            }
+        }
+    }
+    return header + "\n";
 }
 
 std::string csvLine(size_t pin, const PixelStory& s) {
@@ -69,6 +99,15 @@ std::string csvLine(size_t pin, const PixelStory& s) {
                     c.f0.y, c.f0.z, c.shadingNormal.x, c.shadingNormal.y, c.shadingNormal.z, c.NoV, c.uv0.x, c.uv0.y,
                     c.D, c.G, c.F.x, c.F.y, c.F.z}) {
         add(v);
+    }
+    auto share = [&](glm::vec3 diffuse, glm::vec3 specular) {
+        for (float v : {diffuse.x, diffuse.y, diffuse.z, specular.x, specular.y, specular.z}) add(v);
+    };
+    for (const LightShare& light : s.lights) {
+        share(light.diffuse, light.specular);
+    }
+    if (s.environment) {
+        share(s.environment->diffuse, s.environment->specular);
     }
     return line + "\n";
 }
@@ -91,7 +130,7 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
         ImGui::End();
         return;
     }
-    std::string csv = csvHeader();
+    std::string header, rows;   // the header by the first story (each pin's lights are the scene's)
     for (size_t i = 0; i < state.pins.size(); ++i) {
         const glm::ivec2 at = pinPixel(state.pins[i], width, height);
         ImGui::PushID(int(i));
@@ -104,7 +143,8 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
             for (size_t l = 1; l < lines.size(); ++l) {
                 ImGui::TextUnformatted(("     " + lines[l]).c_str());
             }
-            csv += csvLine(i, *story);
+            header = header.empty() ? csvHeader(story) : header;
+            rows += csvLine(i, *story);
         } else {
             ImGui::Text("%zu  pixel %d, %d: no surface here now", i + 1, at.x, at.y);
         }
@@ -114,6 +154,7 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
             break;
         }
     }
+    const std::string csv = (header.empty() ? csvHeader(nullptr) : header) + rows;
     ImGui::Separator();
     if (ImGui::Button("Copy as CSV")) {
         ImGui::SetClipboardText(csv.c_str());

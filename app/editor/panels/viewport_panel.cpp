@@ -618,6 +618,10 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     area.size = ImVec2(float(area.width), float(area.height));
     services.viewportWidth = area.width;
     services.viewportHeight = area.height;
+    // Here, not at the frame's start: the menu may have chosen a channel, the lights panel (drawn
+    // before the viewport) switched its light off, in this frame.
+    keepChannelShowable(state);
+    services.channel = state.channel;
     const Scene b = renderedScene(state);
     services.pbrTally.reset();   // set again below while the overlay or the channel shows it
     drawPictures(state, services, b, area);
