@@ -38,7 +38,7 @@ Command addExportCommand(CLI::App& app) {
                 exportGltf(options->out, *assets.mesh(scene), scene.material, buffer);
             } else {
                 // The whole model: every part with its maps, as the scene tunes it.
-                const std::shared_ptr<const Model> model = assets.drawnModel(scene.meshFile);
+                const std::shared_ptr<const Model> model = assets.shape(scene).model;   // its maps replaced
                 printWarnings(model->notes);   // what the import left out stays out of the export
                 options->inputs.putMaterialOnParts(scene, model.get());
                 exportGltfModel(options->out, tunedModel(*model, scene), buffer);

@@ -93,6 +93,7 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.lights = snapshot.lights;
     state.scene.display = snapshot.display;
     state.scene.modelMaterials = snapshot.modelMaterials;
+    state.model = snapshot.shape.model;   // the same file with the maps it had replaced, or another
     if (!(state.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
         state.scene.mesh = snapshot.shape.kind;
         state.scene.meshFile = snapshot.shape.file;
@@ -227,6 +228,28 @@ void setMapShown(const Document& document, Scene& scene, int index, const std::s
         std::erase(off, key);
     } else {
         off.push_back(key);
+    }
+}
+
+std::string mapReplacement(const Scene& scene, int index, const std::string& key) {
+    const ModelMaterialEdit* edit = editOf(scene, index);
+    const auto found = edit ? edit->mapsReplaced.find(key) : decltype(edit->mapsReplaced.end()){};
+    return edit && found != edit->mapsReplaced.end() ? found->second : "";
+}
+
+void setMapReplacement(const Document& document, Scene& scene, int index, const std::string& key,
+                       const std::string& path) {
+    if (mapReplacement(scene, index, key) == path) {
+        return;
+    }
+    if (!editOf(scene, index)) {
+        setModelMaterial(document, scene, index, modelMaterial(document, scene, index));
+    }
+    std::map<std::string, std::string>& replaced = editOf(scene, index)->mapsReplaced;
+    if (path.empty()) {
+        replaced.erase(key);
+    } else {
+        replaced[key] = path;
     }
 }
 

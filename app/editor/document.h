@@ -99,5 +99,11 @@ bool mapShown(const Scene& scene, int index, const std::string& key);
 // where the scene has none).
 void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown);
 std::string mapNames(const Document& document, int index);
+// The image the scene puts in place of map `key` of the model's material `index`, or "".
+std::string mapReplacement(const Scene& scene, int index, const std::string& key);
+// Puts the image at `path` there (empty: the file's map again), an edit of the material as
+// setMapShown makes one; the model drawn is retextured apart (document_files.h replaceMap).
+void setMapReplacement(const Document& document, Scene& scene, int index, const std::string& key,
+                       const std::string& path);
 
 }  // namespace patina::editor

@@ -51,11 +51,11 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
         const bool another = file != d.scene.meshFile;
         d.scene.meshFile = file;
         d.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
-        d.model = model;
         fitSceneTo(d.scene, before, meshBounds(d));   // as `render --mesh` fits it
         if (another) {
             d.scene.modelMaterials.clear();
         }
+        d.model = state.assets->retextured(model, d.scene);   // the same file keeps its maps replaced
     });
     state.selectedModelMaterial = 0;
     state.error.clear();
@@ -337,6 +337,62 @@ bool exportGltfFile(EditorState& state, std::filesystem::path path) {
     state.error.clear();
     state.status = "Exported " + path.filename().string();
     return true;
+}
+
+namespace {
+// The model's material `index` as a phrase: "the base colour map of \"Texture\"".
+std::string mapOfMaterial(const EditorState& state, int index, const std::string& key) {
+    for (const auto& map : mapsOf(state.model->materials.at(size_t(index)))) {
+        if (map.key == key) {
+            return "the " + std::string(map.name) + " map of \"" + state.model->materials[size_t(index)].name + "\"";
+        }
+    }
+    return key;
+}
+
+// The edit of the maps `index` has that `change` makes, with the model retextured to match, as
+// one undoable step.
+template <typename Change>
+void changeMaps(EditorState& state, Change&& change) {
+    Scene scene = state.scene;
+    change(scene);
+    std::shared_ptr<const Model> model = state.assets->retextured(state.model, scene);
+    applyEdit(state, [&](Document& d) {
+        d.scene.modelMaterials = scene.modelMaterials;
+        d.model = std::move(model);
+    });
+}
+}  // namespace
+
+bool replaceMap(EditorState& state, int index, const std::string& key, const std::filesystem::path& path) {
+    if (!state.model || index < 0 || index >= modelMaterialCount(state)) {
+        return false;
+    }
+    const std::string what = mapOfMaterial(state, index, key);
+    const std::string file = std::filesystem::absolute(path).lexically_normal().string();
+    try {
+        const std::shared_ptr<const ModelImage> image = state.assets->image(file);   // held: decoded once
+        changeMaps(state, [&](Scene& scene) { setMapReplacement(state, scene, index, key, file); });
+        state.error.clear();
+        state.status = "Replaced " + what + " with " + path.filename().string() + ", " +
+                       std::to_string(image->width) + " x " + std::to_string(image->height) + " (Ctrl+Z undoes it)";
+        return true;
+    } catch (const std::exception& error) {
+        state.error = "Could not replace " + what + ": " + error.what();
+        return false;
+    }
+}
+
+void restoreMap(EditorState& state, int index, const std::string& key) {
+    if (!state.model || index < 0 || index >= modelMaterialCount(state)) {
+        return;
+    }
+    try {
+        changeMaps(state, [&](Scene& scene) { setMapReplacement(state, scene, index, key, ""); });
+        state.status = "The file's own " + mapOfMaterial(state, index, key).substr(4) + " is drawn again";
+    } catch (const std::exception& error) {
+        state.error = "Could not restore " + mapOfMaterial(state, index, key) + ": " + error.what();
+    }
 }
 
 bool saveMaterial(EditorState& state, const std::filesystem::path& path) {

@@ -64,4 +64,11 @@ void cancelModelLoad(EditorState& state);
 // On failure sets state.error and leaves no file behind.
 bool exportGltfFile(EditorState& state, std::filesystem::path path);
 
+// Puts the image at `path` (PNG or JPEG) in place of map `key` of the model's material `index`:
+// an undoable edit of the material, saved with the scene and kept by an export; the map keeps
+// its UV set, sampler and transform. An image that cannot be read changes nothing and says why.
+bool replaceMap(EditorState& state, int index, const std::string& key, const std::filesystem::path& path);
+// Draws the file's own map there again (an undoable edit).
+void restoreMap(EditorState& state, int index, const std::string& key);
+
 }  // namespace patina::editor

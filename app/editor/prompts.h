@@ -26,8 +26,13 @@ struct Prompts {
         std::string newName;                        // typed in the Rename prompt
         std::string problem;                        // why the last try failed, said in its prompt
     } presets;
-    enum class PathDialog { None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison, ExportGltf } pathDialog = PathDialog::None;
+    enum class PathDialog {
+        None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison, ExportGltf, ReplaceMap
+    } pathDialog = PathDialog::None;
     std::string pathDialogText;
+    // What ReplaceMap replaces: the model's material and the map's key (model/model.h mapsOf).
+    int replacedMaterial = -1;
+    std::string replacedMap;
 };
 
 // Whether a prompt is up (restore, unsaved changes, a path): nothing edits the document behind

@@ -78,9 +78,10 @@ std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const 
             const ModelMaterialEdit* after = find(b, edit.index);
             if (!before || !after || *before != *after) {
                 if (!before || !after) {   // made or removed: by a map switch when it leaves maps out
-                    return (edit.mapsOff.empty() ? "the tuning of " : "the maps of ") + edit.material.name;
+                    return (edit.mapsOff.empty() && edit.mapsReplaced.empty() ? "the tuning of " : "the maps of ") +
+                           edit.material.name;
                 }
-                if (before->mapsOff != after->mapsOff) {
+                if (before->mapsOff != after->mapsOff || before->mapsReplaced != after->mapsReplaced) {
                     return "the maps of " + edit.material.name;
                 }
                 return materialChange(before->material, after->material) + " of " + edit.material.name;

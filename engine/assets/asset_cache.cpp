@@ -1,7 +1,11 @@
 #include "assets/asset_cache.h"
 
+#include <cstdio>
+
 #include "common/content_hash.h"
+#include "files/input_error.h"
 #include "gltf/files.h"
+#include "gltf/images.h"
 #include "gltf/model_import.h"
 #include "environment/environment_source.h"
 
@@ -60,7 +64,159 @@ AssetCache::Shape AssetCache::shape(const Scene& scene) {
         return {builtinMesh(scene.mesh), nullptr};
     }
     std::shared_ptr<const LoadedModel> model = loaded(scene.meshFile);
-    return {{model, &model->imported.mesh}, {model, &model->model}};
+    return {{model, &model->imported.mesh}, retextured({model, &model->model}, scene)};
+}
+
+std::shared_ptr<const ModelImage> AssetCache::image(const std::filesystem::path& path) {
+    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
+    const Key key{std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
+    {
+        std::lock_guard lock(mutex_);
+        if (const auto found = images_.find(key); found != images_.end()) {
+            if (std::shared_ptr<const ModelImage> image = found->second.lock()) {
+                return image;
+            }
+        }
+    }
+    auto image = std::make_shared<const ModelImage>(gltf::readImageFile(path));
+    std::lock_guard lock(mutex_);
+    dropExpired(images_);
+    images_[key] = image;
+    return image;
+}
+
+namespace {
+// One map of the model's material `material` the scene puts an image in place of: the image,
+// or why it cannot be used.
+struct Replacement {
+    int material = 0;
+    const char* key = nullptr;
+    std::string path;
+    std::shared_ptr<const ModelImage> image;
+    std::string problem;
+};
+
+// Each replacement `scene` makes on `model` (an edit matched by index and name), its image read
+// through `read`, in the materials' order and each material's maps' order.
+template <typename Read>
+std::vector<Replacement> replacementsOf(const Model& model, const Scene& scene, Read&& read) {
+    std::vector<Replacement> found;
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        const ModelMaterial& material = model.materials[i];
+        for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+            if (edit.index != int(i) || edit.material.name != material.name) {
+                continue;
+            }
+            for (const auto& map : mapsOf(material)) {
+                const auto path = edit.mapsReplaced.find(map.key);
+                if (path == edit.mapsReplaced.end()) {
+                    continue;
+                }
+                Replacement replacement{int(i), map.key, path->second, nullptr, ""};
+                if (!map.slot->present()) {
+                    replacement.problem = "the material has no " + std::string(map.key) + " to replace";
+                } else {
+                    try {
+                        replacement.image = read(path->second);
+                    } catch (const InputError& error) {
+                        replacement.problem = error.what();
+                    }
+                }
+                found.push_back(std::move(replacement));
+            }
+        }
+    }
+    return found;
+}
+
+// What tells two sets of replacements on one model apart: each map, file and image.
+std::string replacementsKey(const Model& model, const std::vector<Replacement>& replacements) {
+    char address[32];
+    std::snprintf(address, sizeof address, "%p", static_cast<const void*>(&model));
+    std::string key = address;
+    for (const Replacement& replacement : replacements) {
+        std::snprintf(address, sizeof address, "%p", static_cast<const void*>(replacement.image.get()));
+        key.append("|").append(std::to_string(replacement.material)).append(":").append(replacement.key);
+        key.append(":").append(replacement.path).append(":").append(address);
+    }
+    return key;
+}
+
+// `model` with each usable replacement's image added and its map pointing at it.
+Model withReplacements(const Model& model, const std::vector<Replacement>& replacements) {
+    Model retextured = model;
+    uint64_t decoded = 0;
+    for (const ModelImage& image : model.images) {
+        decoded += image.rgba.size();
+    }
+    for (const Replacement& replacement : replacements) {
+        const std::string what = "material " + std::to_string(replacement.material) + " (\"" +
+                                 model.materials[size_t(replacement.material)].name + "\"): the image for its " +
+                                 replacement.key;
+        std::string problem = replacement.problem;
+        if (problem.empty() && replacement.image->rgba.size() > gltf::kGltfMaxImageBytes - decoded) {
+            problem = replacement.path + " would take the model's decoded images past Patina's limit of " +
+                      std::to_string(gltf::kGltfMaxImageBytes >> 20) + " MiB";
+        }
+        if (!problem.empty()) {
+            retextured.notes.push_back(what + " is not used: " + problem + "; the file's map is drawn");
+            continue;
+        }
+        decoded += replacement.image->rgba.size();
+        for (const auto& map : mapsOf(retextured.materials[size_t(replacement.material)])) {
+            if (map.key == std::string_view(replacement.key)) {
+                map.slot->image = int(retextured.images.size());
+            }
+        }
+        retextured.images.push_back(*replacement.image);
+    }
+    return retextured;
+}
+}  // namespace
+
+// The model and images it was made from are held: their addresses are part of its key, and the
+// images' cache entries (made again each call otherwise) keep theirs.
+struct AssetCache::RetexturedModel {
+    std::shared_ptr<const Model> from;
+    std::vector<std::shared_ptr<const ModelImage>> images;
+    Model model;
+};
+
+std::shared_ptr<const Model> AssetCache::retextured(std::shared_ptr<const Model> model, const Scene& scene) {
+    {
+        std::lock_guard lock(mutex_);   // one this made: from the file's model again
+        for (const auto& [key, entry] : retextured_) {
+            const std::shared_ptr<const RetexturedModel> made = entry.lock();
+            if (made && &made->model == model.get()) {
+                model = made->from;
+                break;
+            }
+        }
+    }
+    const std::vector<Replacement> replacements =
+        replacementsOf(*model, scene, [&](const std::string& path) { return image(path); });
+    if (replacements.empty()) {
+        return model;
+    }
+    const std::string key = replacementsKey(*model, replacements);
+    {
+        std::lock_guard lock(mutex_);
+        if (const auto found = retextured_.find(key); found != retextured_.end()) {
+            if (std::shared_ptr<const RetexturedModel> made = found->second.lock()) {
+                return {made, &made->model};
+            }
+        }
+    }
+    std::vector<std::shared_ptr<const ModelImage>> images;
+    for (const Replacement& replacement : replacements) {
+        images.push_back(replacement.image);
+    }
+    auto made = std::make_shared<const RetexturedModel>(
+        RetexturedModel{model, std::move(images), withReplacements(*model, replacements)});
+    std::lock_guard lock(mutex_);
+    dropExpired(retextured_);
+    retextured_[key] = made;
+    return {made, &made->model};
 }
 
 std::shared_ptr<const Environment> AssetCache::environment(const std::string& source,

@@ -37,7 +37,9 @@ public:
     std::shared_ptr<const GltfImport> model(const std::filesystem::path& path, const Progress& progress = {});
     // The shape `scene` shows, its file read once: the triangles (its glTF file's, flattened
     // into world space, else the built-in kind's) and what its glTF file draws
-    // (gltf/model_import.h; null for a built-in mesh), each keeping the other's entry.
+    // (gltf/model_import.h; null for a built-in mesh), each keeping the other's entry. Where the
+    // scene replaces maps (ModelMaterialEdit::mapsReplaced), the model is the file's with those
+    // images in their place (retextured, below).
     struct Shape {
         std::shared_ptr<const Mesh> mesh;
         std::shared_ptr<const Model> model;
@@ -46,6 +48,17 @@ public:
     // The model the glTF file at `path` draws (shares its entry with model(path)).
     std::shared_ptr<const Model> drawnModel(const std::filesystem::path& path);
     std::shared_ptr<const Mesh> mesh(const Scene& scene) { return shape(scene).mesh; }
+    // An image file put in place of a map (gltf/images.h readImageFile), decoded once while
+    // someone holds it; InputError naming the file when it cannot be had.
+    std::shared_ptr<const ModelImage> image(const std::filesystem::path& path);
+    // `model` (the file's, as drawnModel gives it) with the images `scene` puts in place of its
+    // maps, each edit matched by index and name as sceneDraws matches them: the image is added
+    // and the map points at it, keeping its UV set, sampler and transform. `model` itself where
+    // the scene replaces none. A replacement that cannot be used (a map the material lacks, an
+    // image that cannot be read, one past kGltfMaxImageBytes) leaves the file's map drawn, with
+    // a note in the result's notes. The same replacements give the same object while it is held.
+    // A model this made counts as the one it was made from: retexturing it again starts over.
+    std::shared_ptr<const Model> retextured(std::shared_ptr<const Model> model, const Scene& scene);
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
     // the disk cache of environment/environment_source.h. A note about replaced pixels goes to
     // `warnings` each time. InputError naming the file when it cannot be read or decoded;
@@ -62,6 +75,9 @@ private:
     std::map<Key, std::weak_ptr<const LoadedModel>> models_;
     std::map<Key, std::weak_ptr<const Environment>> environments_;
     std::map<Key, std::shared_ptr<const Environment>> builtins_;
+    std::map<Key, std::weak_ptr<const ModelImage>> images_;
+    struct RetexturedModel;   // a retextured copy, holding the model it was made from
+    std::map<std::string, std::weak_ptr<const RetexturedModel>> retextured_;   // by model and replacements
 };
 
 }  // namespace patina

@@ -6,6 +6,9 @@ PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<st
     const Light* light = enabledEnvironment(scene);
     std::shared_ptr<const Environment> environment = light ? cache.environment(light->source, warnings) : nullptr;
     AssetCache::Shape shape = cache.shape(scene);
+    if (shape.model) {   // what its file left out (a map whose image is missing, ...), and its replacements
+        warnings.insert(warnings.end(), shape.model->notes.begin(), shape.model->notes.end());
+    }
     return {scene, std::move(shape.mesh), std::move(environment), std::move(shape.model)};
 }
 

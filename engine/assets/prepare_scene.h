@@ -10,7 +10,8 @@ namespace patina {
 // `scene` with what it names loaded through `cache`: its mesh (and for a glTF file the model
 // it draws), and its enabled environment light's environment (none without one). Throws
 // InputError naming the file for a mesh or an environment that cannot be read; notes (replaced
-// pixels) go to `warnings`. The result refers to `scene`, which must outlive it.
+// pixels, what the model's file left out, a replaced map that cannot be used) go to
+// `warnings`. The result refers to `scene`, which must outlive it.
 PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings);
 PreparedScene prepareScene(Scene&& scene, AssetCache& cache, std::vector<std::string>& warnings) = delete;
 

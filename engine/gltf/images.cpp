@@ -13,6 +13,7 @@
 #include "common/parallel_for.h"
 #include "files/input_error.h"
 #include "gltf/accessor.h"
+#include "gltf/files.h"
 
 namespace patina::gltf {
 
@@ -142,6 +143,21 @@ std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, co
         model.images.push_back(std::move(image.image));
     }
     return indices;
+}
+
+ModelImage readImageFile(const std::filesystem::path& path) {
+    const std::vector<uint8_t> bytes = readModelFile(path);
+    ModelImage image;
+    image.name = path.string();
+    uint64_t size = 0;
+    std::string problem = ImageBudget().admit(bytes, size);
+    if (problem.empty()) {
+        problem = decode(bytes, size, image);
+    }
+    if (!problem.empty()) {
+        throw InputError(path.string() + ": the image " + problem);
+    }
+    return image;
 }
 
 }  // namespace patina::gltf

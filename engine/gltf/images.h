@@ -2,6 +2,7 @@
 // The images a model's materials use, decoded (glTF 2.0 section 3.8.3): PNG and JPEG, from a
 // buffer view, a data: URI or a file in the model's folder, to 8-bit RGBA with the top row first.
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,5 +26,10 @@ constexpr uint64_t kGltfMaxImageBytes = uint64_t(512) << 20;     // decoded, all
 // the decoding.
 std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, const std::vector<bool>& used,
                                              Model& model, const std::string& source, const Progress& progress = {});
+
+// An image file a scene puts in place of one of a model's maps (Scene's mapsReplaced): PNG or
+// JPEG by its signature, at most kGltfMaxImageSide a side, decoded as a model's images are. Its
+// name is the file's path. Throws InputError naming the file and why it cannot be had.
+ModelImage readImageFile(const std::filesystem::path& path);
 
 }  // namespace patina::gltf

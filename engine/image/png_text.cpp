@@ -243,7 +243,8 @@ std::optional<Scene> sceneFromPngBytes(const std::vector<uint8_t>& bytes, const 
     const Json json = parseJsonText(found->second, where);
     // A relative path would make the PNG depend on, and read, files beside it. A model is
     // named by the absolute path a screenshot of it writes (Scene::meshFile), and only a
-    // .gltf or .glb is read there, within its own folder, as any model is.
+    // .gltf or .glb is read there, within its own folder, as any model is; an image replacing
+    // one of its maps likewise, and only a PNG or JPEG is decoded there.
     if (json.is_object() && json.contains("material") && json["material"].is_string()) {
         failAt(where, "/material", "an embedded scene must hold its material inline");
     }
@@ -252,6 +253,19 @@ std::optional<Scene> sceneFromPngBytes(const std::vector<uint8_t>& bytes, const 
         if (!meshKindFromName(mesh) && !std::filesystem::path(mesh).is_absolute()) {
             failAt(where, "/mesh",
                    "an embedded scene must use a built-in mesh (\"sphere\" or \"torus\") or a model's absolute path");
+        }
+    }
+    const Json* edits = json.is_object() && json.contains("modelMaterials") ? &json["modelMaterials"] : nullptr;
+    for (size_t i = 0; edits && edits->is_array() && i < edits->size(); ++i) {
+        const Json& edit = (*edits)[i];
+        if (!edit.is_object() || !edit.contains("mapsReplaced") || !edit["mapsReplaced"].is_object()) {
+            continue;
+        }
+        for (const auto& [key, image] : edit["mapsReplaced"].items()) {
+            if (image.is_string() && !std::filesystem::path(image.get<std::string>()).is_absolute()) {
+                failAt(where, "/modelMaterials/" + std::to_string(i) + "/mapsReplaced/" + key,
+                       "an embedded scene must name a replacing image by its absolute path");
+            }
         }
     }
     return sceneFromJson(json, where, {}, warnings);

@@ -272,25 +272,29 @@ Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::st
 }
 
 namespace {
-// "mapsOff": ["normalTexture", ...]: each a map's key (model/model.h mapsOf), once.
-std::vector<std::string> mapKeysFromJson(const Json& json, const std::string& pointer, const std::string& source) {
-    std::vector<std::string> known;
+// Fails unless `name` is a map's key (model/model.h mapsOf).
+void checkMapKey(const std::string& name, const std::string& at, const std::string& source) {
     std::string keys;
     const ModelMaterial none;
     for (const auto& map : mapsOf(none)) {
-        known.emplace_back(map.key);
-        keys += (keys.empty() ? "" : ", ") + known.back();
+        if (name == map.key) {
+            return;
+        }
+        keys += (keys.empty() ? "" : ", ") + std::string(map.key);
     }
+    failAt(source, at, "expected the name of a map (" + keys + ")");
+}
+
+// "mapsOff": ["normalTexture", ...]: each a map's key, once.
+std::vector<std::string> mapKeysFromJson(const Json& json, const std::string& pointer, const std::string& source) {
     if (!json.is_array()) {
-        failAt(source, pointer, "expected an array of map names (" + keys + ")");
+        failAt(source, pointer, "expected an array of map names (baseColorTexture, normalTexture, ...)");
     }
     std::vector<std::string> names;
     for (size_t i = 0; i < json.size(); ++i) {
         const std::string at = pointer + "/" + std::to_string(i);
         const std::string name = json[i].is_string() ? json[i].get<std::string>() : "";
-        if (std::find(known.begin(), known.end(), name) == known.end()) {
-            failAt(source, at, "expected the name of a map (" + keys + ")");
-        }
+        checkMapKey(name, at, source);
         if (std::find(names.begin(), names.end(), name) != names.end()) {
             failAt(source, at, "\"" + name + "\" is named twice");
         }
@@ -299,9 +303,30 @@ std::vector<std::string> mapKeysFromJson(const Json& json, const std::string& po
     return names;
 }
 
-// "modelMaterials": [{"index": N, "material": {a material, its name the key}, "mapsOff": [...]}, ...],
-// one per index.
+// "mapsReplaced": {"baseColorTexture": "textures/worn.png", ...}: a map's key and the image put in
+// its place, made absolute against the scene's folder.
+std::map<std::string, std::string> replacedMapsFromJson(const Json& json, const std::string& pointer,
+                                                        const std::string& source,
+                                                        const std::filesystem::path& baseDirectory) {
+    if (!json.is_object()) {
+        failAt(source, pointer, "expected an object from a map's name to an image file (\"baseColorTexture\": "
+                                "\"worn.png\")");
+    }
+    std::map<std::string, std::string> replaced;
+    for (const auto& [key, value] : json.items()) {
+        checkMapKey(key, pointer + "/" + key, source);
+        if (!value.is_string() || value.get<std::string>().empty()) {
+            failAt(source, pointer + "/" + key, "expected the path of a PNG or JPEG image");
+        }
+        replaced[key] = std::filesystem::absolute(baseDirectory / value.get<std::string>()).lexically_normal().string();
+    }
+    return replaced;
+}
+
+// "modelMaterials": [{"index": N, "material": {a material, its name the key}, "mapsOff": [...],
+// "mapsReplaced": {...}}, ...], one per index.
 std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const std::string& source,
+                                                      const std::filesystem::path& baseDirectory,
                                                       std::vector<std::string>& warnings) {
     if (!json.is_array()) {
         throw InputError(source + ": /modelMaterials: expected an array of edited model materials");
@@ -316,6 +341,9 @@ std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const st
         edit.material = materialFromJson(reader.required("material"), pointer + "/material", source, false, warnings);
         if (const Json* off = reader.child("mapsOff")) {
             edit.mapsOff = mapKeysFromJson(*off, reader.pointerOf("mapsOff"), source);
+        }
+        if (const Json* replaced = reader.child("mapsReplaced")) {
+            edit.mapsReplaced = replacedMapsFromJson(*replaced, reader.pointerOf("mapsReplaced"), source, baseDirectory);
         }
         for (const ModelMaterialEdit& earlier : edits) {
             if (earlier.index == edit.index) {
@@ -353,7 +381,7 @@ Scene sceneFromJson(const Json& json, const std::string& source,
         }
     }
     if (const Json* edits = reader.child("modelMaterials")) {
-        scene.modelMaterials = modelMaterialsFromJson(*edits, source, warnings);
+        scene.modelMaterials = modelMaterialsFromJson(*edits, source, baseDirectory, warnings);
     }
     if (const Json* camera = reader.child("camera")) {
         scene.camera = cameraFromJson(*camera, "/camera", source, warnings);
@@ -466,6 +494,9 @@ Json sceneToJson(const Scene& scene) {
             Json entry{{"index", edit.index}, {"material", materialToJson(edit.material)}};
             if (!edit.mapsOff.empty()) {   // written only where a map is left out
                 entry["mapsOff"] = edit.mapsOff;
+            }
+            if (!edit.mapsReplaced.empty()) {
+                entry["mapsReplaced"] = edit.mapsReplaced;
             }
             edits.push_back(withExtras(entry, edit.extras));
         }

@@ -99,10 +99,17 @@ void setPartMaterials(Scene& scene, const Model& model, const Material& material
             continue;
         }
         found = true;
-        ModelMaterialEdit edit{int(i), material, Json::object()};
-        edit.material.name = name;
+        Material named = material;
+        named.name = name;
+        // An edit there keeps its maps left out and replaced: the factors are what is named.
+        const auto same = std::find_if(scene.modelMaterials.begin(), scene.modelMaterials.end(),
+                                       [&](const ModelMaterialEdit& old) { return old.index == int(i); });
+        if (same != scene.modelMaterials.end() && same->material.name == name) {
+            same->material = std::move(named);
+            continue;
+        }
         std::erase_if(scene.modelMaterials, [&](const ModelMaterialEdit& old) { return old.index == int(i); });
-        scene.modelMaterials.push_back(std::move(edit));
+        scene.modelMaterials.push_back({int(i), std::move(named), Json::object()});
     }
     if (!found && !model.materials.empty()) {
         throw std::invalid_argument("the model has no part \"" + part + "\" (its parts: " + names + ")");

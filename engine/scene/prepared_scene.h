@@ -90,7 +90,7 @@ Model tunedModel(const Model& model, const Scene& scene);
 
 // `material`'s factors (not its name) on the parts of `model` whose material is named `part`,
 // or on every part when `part` is empty, as the scene's edits of them (Scene::modelMaterials;
-// each part keeps its name and maps): what a material named on the command line does to a
+// each part keeps its name and maps, and an edit's maps left out or replaced): what a material named on the command line does to a
 // model. Throws std::invalid_argument listing the parts when none is named `part`.
 void setPartMaterials(Scene& scene, const Model& model, const Material& material, const std::string& part = {});
 

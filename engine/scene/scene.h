@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 #include <string>
 #include <string_view>
 #include <optional>
@@ -52,6 +53,10 @@ struct ModelMaterialEdit {
     // The maps left out (glTF's keys: "baseColorTexture", "normalTexture", ...; model/model.h
     // mapsOf): the factor alone is drawn where each was.
     std::vector<std::string> mapsOff = {};
+    // Images put in place of the file's maps, by key: an absolute path each (a scene file's
+    // relative one is resolved against its folder when read). The map keeps its UV set,
+    // sampler and transform; a map left out above stays out. assets/ loads them.
+    std::map<std::string, std::string> mapsReplaced = {};
     bool operator==(const ModelMaterialEdit&) const = default;
 };
 

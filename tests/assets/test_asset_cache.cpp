@@ -5,6 +5,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "gltf/export.h"
 #include "gltf/model_export.h"
 #include "gltf/model_import.h"
+#include "image/image.h"
 #include "files/input_error.h"
 #include "gltf_builder.h"
 #include "scratch_test.h"
@@ -237,6 +239,132 @@ TEST_F(Assets, AGltfSceneIsPreparedWithTheModelItDraws) {
 
     scene.meshFile.clear();
     EXPECT_FALSE(prepareScene(scene, cache, warnings).model);
+}
+
+// The image a scene puts in place of a model's map: drawn there (the same picture as a file
+// with that image as the map), only for that material (another sharing the file's image keeps
+// it), with the map's UV set, sampler and transform; the same object while held; exported.
+TEST_F(Assets, AReplacedMapIsDrawnInPlaceOfTheFilesForThatMaterialOnly) {
+    test::glContext();
+    Model file = test::twoBalls();
+    file.images.push_back({"grey", 4, 4, std::vector<uint8_t>(4 * 4 * 4, 90)});
+    for (ModelMaterial& material : file.materials) {
+        material.baseColor.image = 0;   // shared
+        material.baseColor.sampler.wrapS = TextureWrap::MirroredRepeat;
+        material.baseColor.transform.scale = {2.0f, 3.0f};
+    }
+    exportGltfModel(path("grey.glb"), file);
+    const LdrImage red{2, 2, {200, 20, 10, 255, 190, 30, 10, 255, 210, 10, 20, 255, 200, 25, 15, 255}};
+    test::GltfBuilder::writeBytes(path("red.png"), encodePng(red));
+    Model redLeft = file;   // what the replacement should draw: the left ball's map red
+    redLeft.images.push_back({"red", 2, 2, red.rgba});
+    redLeft.materials[0].baseColor.image = 1;
+    exportGltfModel(path("red-left.glb"), redLeft);
+
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    Scene scene = defaultScene();   // lit: a scene without lights draws every map black
+    scene.meshFile = path("grey.glb").string();
+    Material left;
+    left.name = "left";
+    scene.modelMaterials = {{0, left}};
+    scene.modelMaterials[0].material.baseColor = glm::vec3(1.0f);
+    scene.modelMaterials[0].mapsReplaced = {{"baseColorTexture", path("red.png").string()}};
+    const PreparedScene prepared = prepareScene(scene, cache, warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.at(0);
+    const std::shared_ptr<const Model> fromFile = cache.drawnModel(scene.meshFile);
+    ASSERT_NE(prepared.model, fromFile);
+    const Model& model = *prepared.model;
+    ASSERT_EQ(model.images.size(), 2u);
+    EXPECT_EQ(model.images[1].rgba, red.rgba);
+    EXPECT_EQ(model.images[1].name, path("red.png").string());
+    EXPECT_EQ(model.materials[0].baseColor.image, 1);
+    EXPECT_EQ(model.materials[1].baseColor.image, 0) << "the right ball shares the file's image and keeps it";
+    EXPECT_EQ(model.materials[0].baseColor.sampler, fromFile->materials[0].baseColor.sampler);
+    EXPECT_EQ(model.materials[0].baseColor.transform, fromFile->materials[0].baseColor.transform);
+    EXPECT_EQ(model.primitives.at(0).positions, fromFile->primitives.at(0).positions);
+    EXPECT_EQ(cache.shape(scene).model, prepared.model) << "made once while held";
+    Scene untouched = scene;
+    untouched.modelMaterials[0].mapsReplaced.clear();
+    EXPECT_EQ(cache.retextured(prepared.model, untouched), fromFile) << "retexturing starts from the file's model";
+
+    Scene expected = scene;
+    expected.meshFile = path("red-left.glb").string();
+    expected.modelMaterials[0].mapsReplaced.clear();
+    const PreparedScene drawn = prepareScene(expected, cache, warnings);
+    Renderer renderer;
+    const RenderSettings settings = test::renderSettings(64, 48, RenderPath::Single, 1);
+    const LdrImage want = renderer.render(drawn, settings).ldr;
+    EXPECT_EQ(renderer.render(prepared, settings).ldr.rgba, want.rgba);
+    const glm::ivec2 ball = test::pixelOf(scene.camera, glm::vec3(-1.2f, 0.0f, 1.0f), 64, 48);
+    const uint8_t* shown = &want.rgba[(size_t(ball.y) * 64 + size_t(ball.x)) * 4];
+    EXPECT_GT(shown[0], 2 * shown[1]) << "the left ball is red";
+    scene.modelMaterials[0].mapsReplaced.clear();
+    EXPECT_NE(renderer.render(prepareScene(scene, cache, warnings), settings).ldr.rgba, want.rgba);
+
+    // The export writes the replacement as the map.
+    exportGltfModel(path("export.glb"), tunedModel(model, expected));
+    const Model exported = importGltfModel(path("export.glb"));
+    ASSERT_GE(exported.materials.at(0).baseColor.image, 0);
+    EXPECT_EQ(exported.images.at(size_t(exported.materials[0].baseColor.image)).rgba, red.rgba);
+}
+
+// A replacement that cannot be used leaves the file's map drawn and says why: an image that
+// is missing or is not PNG nor JPEG, a map the material lacks, an edit of another material.
+TEST_F(Assets, AReplacementThatCannotBeUsedKeepsTheFilesMapWithANote) {
+    Model file = test::twoBalls();
+    file.images.push_back({"grey", 4, 4, std::vector<uint8_t>(4 * 4 * 4, 90)});
+    file.materials[0].baseColor.image = 0;
+    exportGltfModel(path("grey.glb"), file);
+    test::GltfBuilder::writeBytes(path("text.png"), std::vector<uint8_t>{'n', 'o', 't', ' ', 'a', 'n', ' ', 'i'});
+    AssetCache cache;
+    Scene scene;
+    scene.meshFile = path("grey.glb").string();
+    Material left;
+    left.name = "left";
+    Material other;
+    other.name = "not right";   // index 1 is "right": this edit is of another file's material
+    scene.modelMaterials = {{0, left}, {1, other}};
+    for (const auto& [key, file, note] :
+         {std::tuple{"baseColorTexture", "missing.png", "missing.png: cannot open"},
+          std::tuple{"baseColorTexture", "text.png", "text.png: the image is neither PNG nor JPEG"},
+          std::tuple{"normalTexture", "text.png", "the material has no normalTexture to replace"}}) {
+        scene.modelMaterials[0].mapsReplaced = {{key, path(file).string()}};
+        scene.modelMaterials[1].mapsReplaced = {{"baseColorTexture", path(file).string()}};
+        std::vector<std::string> warnings;
+        const PreparedScene prepared = prepareScene(scene, cache, warnings);
+        ASSERT_EQ(warnings.size(), 1u) << key << " " << file;
+        EXPECT_NE(warnings[0].find("material 0 (\"left\"): the image for its " + std::string(key) + " is not used"),
+                  std::string::npos)
+            << warnings[0];
+        EXPECT_NE(warnings[0].find(note), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("the file's map is drawn"), std::string::npos) << warnings[0];
+        EXPECT_EQ(prepared.model->images.size(), 1u);
+        EXPECT_EQ(prepared.model->materials, cache.drawnModel(scene.meshFile)->materials);
+    }
+    EXPECT_NE(inputErrorOf([&] { cache.image(path("text.png")); }).find("text.png: the image is neither PNG nor JPEG"),
+              std::string::npos);
+}
+
+// A material named on the command line changes a part's factors, not its maps.
+TEST_F(Assets, AMaterialPutOnThePartsKeepsTheirMapsReplacedAndLeftOut) {
+    const Model file = test::twoBalls();
+    Scene scene;
+    Material left;
+    left.name = "left";
+    scene.modelMaterials = {{0, left}};
+    scene.modelMaterials[0].mapsOff = {"normalTexture"};
+    scene.modelMaterials[0].mapsReplaced = {{"baseColorTexture", "/maps/red.png"}};
+    Material gold;
+    gold.name = "gold";
+    gold.metallic = 1.0f;
+    setPartMaterials(scene, file, gold);
+    ASSERT_EQ(scene.modelMaterials.size(), 2u);
+    EXPECT_EQ(scene.modelMaterials[0].material.metallic, 1.0f);
+    EXPECT_EQ(scene.modelMaterials[0].material.name, "left");
+    EXPECT_EQ(scene.modelMaterials[0].mapsOff, std::vector<std::string>{"normalTexture"});
+    EXPECT_EQ(scene.modelMaterials[0].mapsReplaced.at("baseColorTexture"), "/maps/red.png");
+    EXPECT_EQ(scene.modelMaterials[1].material.name, "right");
 }
 
 TEST_F(Assets, TheRendererDrawsAPreparedSceneWithoutLoading) {

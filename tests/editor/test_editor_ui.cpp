@@ -351,6 +351,82 @@ TEST_F(EditorUi, AClickOnAPartSelectsItAndAMapsCheckboxLeavesTheMapOut) {
     EXPECT_LT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
 }
 
+// Replace... puts an image file in place of a map: drawn at once, one undoable step, saved in
+// the scene and back when it is opened again; Restore draws the file's own map; an image that
+// cannot be read changes nothing and says why.
+TEST_F(EditorUi, AMapIsReplacedByAnImageFileAndRestored) {
+    const std::filesystem::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!std::filesystem::exists(box)) {
+        GTEST_SKIP() << "needs Debian's assimp-testmodels";
+    }
+    ASSERT_TRUE(openFile(state_, box)) << state_.error;
+    frames(2);
+    const std::shared_ptr<const Model> file = state_.model;
+    const LdrImage logo = services_->viewportPixels(EditorServices::Shown::Edited);
+    ImVec2 min, max;
+    EXPECT_FALSE(itemRect("map restore: base colour", &min, &max)) << "nothing to restore yet";
+    const LdrImage red{2, 2, std::vector<uint8_t>{200, 20, 10, 255, 200, 20, 10, 255, 200, 20, 10, 255, 200, 20, 10, 255}};
+    writeFileAtomic(path("red.png"), encodePng(red));
+
+    click(centreOf("map replace: base colour"));
+    frames(1);
+    ASSERT_EQ(state_.pathDialog, EditorState::PathDialog::ReplaceMap);
+    EXPECT_EQ(state_.pathDialogText, box.parent_path().string() + "/") << "the model's folder";
+    ImGuiIO& io = ImGui::GetIO();   // typed over, as a user does: Ctrl+A, then the path
+    io.KeyMap[ImGuiKey_A] = 'A';
+    io.KeyCtrl = io.KeysDown[int('A')] = true;
+    frames(1);
+    io.KeyCtrl = io.KeysDown[int('A')] = false;
+    for (char c : path("red.png").string()) {
+        io.AddInputCharacter(static_cast<unsigned>(c));
+    }
+    frames(2);
+    click(centreOf("path:confirm"));
+    frames(2);
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+    EXPECT_EQ(mapReplacement(state_.scene, 0, "baseColorTexture"), path("red.png").string());
+    ASSERT_NE(state_.model, file);
+    const int image = state_.model->materials.at(0).baseColor.image;
+    EXPECT_EQ(state_.model->images.at(size_t(image)).rgba, red.rgba);
+    EXPECT_NE(state_.status.find("Replaced the base colour map of \"Texture\" with red.png"), std::string::npos)
+        << state_.status;
+    const LdrImage replaced = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(differingPixels(logo, replaced), 1000);
+    EXPECT_TRUE(itemRect("map restore: base colour", &min, &max));
+
+    press(kKeyZ, true);
+    frames(2);
+    EXPECT_EQ(state_.model, file);
+    EXPECT_EQ(mapReplacement(state_.scene, 0, "baseColorTexture"), "");
+    EXPECT_LT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    press(kKeyY, true);
+    frames(2);
+    EXPECT_NE(state_.model, file);
+    EXPECT_LT(differingPixels(replaced, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+
+    // Saved with the scene, and drawn again when it is opened.
+    ASSERT_TRUE(saveScene(state_, path("replaced.json"))) << state_.error;
+    newDocument(state_);
+    ASSERT_TRUE(openFile(state_, path("replaced.json"))) << state_.error;
+    frames(2);
+    EXPECT_EQ(mapReplacement(state_.scene, 0, "baseColorTexture"), path("red.png").string());
+    EXPECT_LT(differingPixels(replaced, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+
+    click(centreOf("map restore: base colour"));
+    frames(2);
+    EXPECT_EQ(mapReplacement(state_.scene, 0, "baseColorTexture"), "");
+    EXPECT_LT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    EXPECT_TRUE(state_.dirty());
+
+    // Not an image: nothing changes, and the error says which file and why.
+    write("notes.png", "not a picture");
+    const EditSnapshot before = state_.snapshot();
+    EXPECT_FALSE(replaceMap(state_, 0, "baseColorTexture", path("notes.png")));
+    EXPECT_NE(state_.error.find("notes.png: the image is neither PNG nor JPEG"), std::string::npos) << state_.error;
+    EXPECT_EQ(state_.snapshot(), before);
+    frames(1);
+}
+
 // A model read on a worker is shown once read, but not behind a prompt: it waits for the
 // answer, as every edit does.
 TEST_F(EditorUi, AModelReadOnAWorkerWaitsForAnOpenPrompt) {

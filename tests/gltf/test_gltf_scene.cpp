@@ -107,6 +107,26 @@ TEST_F(GltfScene, AScreenshotSceneNamesItsModelByAbsolutePathOnly) {
                   std::string::npos)
             << error.what();
     }
+    // An image replacing one of its maps likewise: absolute, as a screenshot writes it.
+    Scene replaced = shown;
+    Material edited;
+    edited.name = "cube";
+    replaced.modelMaterials = {{0, edited}};
+    replaced.modelMaterials[0].mapsReplaced = {{"baseColorTexture", path("worn.png").string()}};
+    const std::optional<Scene> withImage = shot(sceneToJson(replaced).dump());
+    ASSERT_TRUE(withImage);
+    EXPECT_EQ(withImage->modelMaterials, replaced.modelMaterials);
+    Json relative = sceneToJson(replaced);
+    relative["modelMaterials"][0]["mapsReplaced"]["baseColorTexture"] = "worn.png";
+    try {
+        shot(relative.dump());
+        FAIL() << "a screenshot naming an image beside it was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("/modelMaterials/0/mapsReplaced/baseColorTexture: an embedded scene "
+                                                 "must name a replacing image by its absolute path"),
+                  std::string::npos)
+            << error.what();
+    }
 }
 
 }  // namespace

@@ -119,6 +119,43 @@ TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {
     }
 }
 
+// The images a scene puts in place of a model's maps: by glTF's name of the map, a path
+// resolved against the scene's folder when read and written whole; only where there are some.
+TEST(SceneFile, ReplacedMapsRoundTripWithTheirPathsResolved) {
+    std::vector<std::string> warnings;
+    Scene scene = defaultScene();
+    scene.meshFile = "/models/box.glb";
+    Material edited;
+    edited.name = "Texture";
+    scene.modelMaterials = {{0, edited}};
+    EXPECT_FALSE(sceneToJson(scene)["modelMaterials"][0].contains("mapsReplaced"));
+    Json json = sceneToJson(scene);
+    json["modelMaterials"][0]["mapsReplaced"] = {{"baseColorTexture", "maps/worn.png"},
+                                                 {"normalTexture", "/elsewhere/bumps.jpg"}};
+    const Scene read = sceneFromJson(json, "x", "/scenes/mine", warnings);
+    EXPECT_TRUE(warnings.empty());
+    const std::map<std::string, std::string> expected{{"baseColorTexture", "/scenes/mine/maps/worn.png"},
+                                                      {"normalTexture", "/elsewhere/bumps.jpg"}};
+    EXPECT_EQ(read.modelMaterials.at(0).mapsReplaced, expected);
+    const Json written = sceneToJson(read);
+    EXPECT_EQ(written["modelMaterials"][0]["mapsReplaced"]["baseColorTexture"], "/scenes/mine/maps/worn.png");
+    EXPECT_EQ(sceneFromJson(written, "y", "/anywhere", warnings), read) << "written whole, read back the same";
+    for (const auto& [replaced, message] :
+         {std::pair{Json{{"normal", "a.png"}}, "/modelMaterials/0/mapsReplaced/normal: expected the name of a map ("},
+          std::pair{Json{{"normalTexture", 3}}, "/modelMaterials/0/mapsReplaced/normalTexture: expected the path of a PNG"},
+          std::pair{Json{{"normalTexture", ""}}, "/modelMaterials/0/mapsReplaced/normalTexture: expected the path of a PNG"},
+          std::pair{Json::array({"a.png"}), "/modelMaterials/0/mapsReplaced: expected an object from a map's name"}}) {
+        Json bad = json;
+        bad["modelMaterials"][0]["mapsReplaced"] = replaced;
+        try {
+            sceneFromJson(bad, "x.json", ".", warnings);
+            ADD_FAILURE() << replaced.dump() << " was read";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+        }
+    }
+}
+
 // Version 2 renamed a point light's "radius" (its attenuation window) to "range": a version 1
 // file still loads with the same light, and saving writes version 2.
 TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {

@@ -33,6 +33,7 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
     case EditorState::PathDialog::SavePreset: saveAsPreset(state, path); break;
     case EditorState::PathDialog::ExportComparison: services.exportComparison(state, path); break;
     case EditorState::PathDialog::ExportGltf: exportGltfFile(state, path); break;
+    case EditorState::PathDialog::ReplaceMap: replaceMap(state, state.replacedMaterial, state.replacedMap, path); break;
     case EditorState::PathDialog::None: break;
     }
 }
@@ -56,7 +57,13 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
         "Export the model with its materials as tuned and its maps (or the built-in mesh with the material) as "
         ".glb, or as .gltf with its images beside it:",
         "Export", {".glb", ".gltf"}};
+    static const PathDialogKind replaceMap{
+        "Replace map",
+        "Draw an image (.png, .jpg) in place of the map: it keeps the map's UV set, sampling and transform, and "
+        "is saved with the scene and exported with the model:",
+        "Replace", {".png", ".jpg", ".jpeg"}, true};
     switch (dialog) {
+    case EditorState::PathDialog::ReplaceMap: return replaceMap;
     case EditorState::PathDialog::ExportGltf: return exportGltf;
     case EditorState::PathDialog::SaveAs: return saveMaterial;
     case EditorState::PathDialog::SaveSceneAs: return saveScene;

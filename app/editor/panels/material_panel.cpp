@@ -5,6 +5,8 @@
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
+#include "document_files.h"
+#include "file_dialog.h"
 #include "panels.h"
 #include "ui_scale.h"
 #include "widgets.h"
@@ -165,6 +167,36 @@ void drawMapThumbnail(EditorState& state, EditorServices& services, const char* 
     ImGui::SameLine();
 }
 
+// Replace... puts an image file in place of the map (a path dialog); Restore, shown once it is
+// replaced, draws the file's own again. Both undoable, saved in the scene.
+void drawMapReplace(EditorState& state, int index, const char* key, const char* name) {
+    const std::string replaced = mapReplacement(state.scene, index, key);
+    ImGui::SameLine();
+    ImGui::PushID(key);
+    if (ImGui::SmallButton("Replace...")) {
+        state.replacedMaterial = index;
+        state.replacedMap = key;
+        const std::filesystem::path near = std::filesystem::path(replaced.empty() ? state.scene.meshFile : replaced);
+        startPathDialog(state, EditorState::PathDialog::ReplaceMap, near.parent_path() / "");
+    }
+    recordItem("map replace: " + std::string(name),
+               ("Draw an image file (PNG or JPEG) in place of the " + std::string(name) +
+                " map, with its UV set, sampling and transform" +
+                (replaced.empty() ? std::string() : "; now " + replaced))
+                   .c_str());
+    if (!replaced.empty()) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Restore")) {
+            restoreMap(state, index, key);
+        }
+        recordItem("map restore: " + std::string(name),
+                   ("Draw the file's own " + std::string(name) + " map again, not " +
+                    std::filesystem::path(replaced).filename().string())
+                       .c_str());
+    }
+    ImGui::PopID();
+}
+
 // Each map the file gives the part, as a thumbnail and a checkbox: unticked, the factor alone
 // is drawn there (an undoable edit, saved in the scene and kept by an export).
 void drawMapSwitches(EditorState& state, EditorServices& services, int index) {
@@ -181,6 +213,7 @@ void drawMapSwitches(EditorState& state, EditorServices& services, int index) {
         recordItem("map: " + std::string(map.name), ("Draw the " + std::string(map.name) +
                                    " map; unticked, its factor alone is drawn (the map stays in the file)")
                                       .c_str());
+        drawMapReplace(state, index, map.key, map.name);
     }
 }
 
