@@ -91,7 +91,9 @@ bool finishModelLoad(EditorState& state, bool wait) {
         applyMesh(state, load->path(), load->take());
         return true;
     } catch (const std::exception& error) {
-        state.error = error.what();   // the previous mesh stays
+        // The previous mesh stays. An error shown already (another file's of the command line)
+        // stays too: this one arrives later and would hide it.
+        state.error = state.error.empty() ? error.what() : state.error + "\n" + error.what();
         state.status.clear();
         return false;
     }
@@ -275,6 +277,18 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
     }
     state.error = errors;
     return errors.empty();
+}
+
+void openStartupFiles(EditorState& state, std::vector<std::filesystem::path> paths) {
+    std::optional<std::filesystem::path> model;
+    if (!paths.empty() && !gltfExtension(paths.back()).empty()) {
+        model = paths.back();
+        paths.pop_back();
+    }
+    openFiles(state, paths);
+    if (model) {
+        startModelLoad(state, *model);   // its error, if any, joins the others once it is read
+    }
 }
 
 void requestOpen(EditorState& state, const std::filesystem::path& path) {

@@ -40,6 +40,10 @@ void requestOpen(EditorState& state, const std::filesystem::path& path);
 // Opens each in turn (the command line's files): every file's error is kept, one a line, in
 // state.error, so a later file does not hide an earlier one's. False when any failed.
 bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths);
+// The command line's files as the window opens: as openFiles, but a glTF model named last is
+// read on a worker (startModelLoad), so the window shows at once with its progress and Cancel.
+// A model named before other files is read at once: they may act on it (a preset on its part).
+void openStartupFiles(EditorState& state, std::vector<std::filesystem::path> paths);
 // Writes the material (saveMaterialFile: atomically, the old file kept as .bak); on failure
 // sets state.error, stays dirty and leaves the file on disk as it was.
 bool saveMaterial(EditorState& state, const std::filesystem::path& path);

@@ -328,7 +328,7 @@ int runEditor(const EditorOptions& options) {
     glfwSetKeyCallback(window, onKeyForImGui);
     {
         EditorServices services(state.assets);
-        openFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
+        openStartupFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
         startAutosave(state, configFolder() / "autosave");
         Loop loop{window, input, state, services, geometry, SettingsWriter(state, geometry, settingsFile),
                   FrameStats(options.stats ? &std::cerr : nullptr, options.start)};

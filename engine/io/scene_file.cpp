@@ -304,17 +304,26 @@ std::vector<std::string> mapKeysFromJson(const Json& json, const std::string& po
 }
 
 // "mapsReplaced": {"baseColorTexture": "textures/worn.png", ...}: a map's key and the image put in
-// its place, made absolute against the scene's folder.
+// its place, made absolute against the scene's folder. A key that names no map is warned about
+// and kept in `extras`, as unknown keys are elsewhere.
 std::map<std::string, std::string> replacedMapsFromJson(const Json& json, const std::string& pointer,
                                                         const std::string& source,
-                                                        const std::filesystem::path& baseDirectory) {
+                                                        const std::filesystem::path& baseDirectory,
+                                                        Json& extras, std::vector<std::string>& warnings) {
     if (!json.is_object()) {
         failAt(source, pointer, "expected an object from a map's name to an image file (\"baseColorTexture\": "
                                 "\"worn.png\")");
     }
     std::map<std::string, std::string> replaced;
+    const ModelMaterial none;
     for (const auto& [key, value] : json.items()) {
-        checkMapKey(key, pointer + "/" + key, source);
+        const auto maps = mapsOf(none);
+        if (std::none_of(maps.begin(), maps.end(), [&](const auto& map) { return key == map.key; })) {
+            warnings.push_back(source + ": " + pointer + "/" + key + ": unknown key '" + key +
+                               "' (kept, not used: it names no map)");
+            extras[key] = value;
+            continue;
+        }
         if (!value.is_string() || value.get<std::string>().empty()) {
             failAt(source, pointer + "/" + key, "expected the path of a PNG or JPEG image");
         }
@@ -343,7 +352,9 @@ std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const st
             edit.mapsOff = mapKeysFromJson(*off, reader.pointerOf("mapsOff"), source);
         }
         if (const Json* replaced = reader.child("mapsReplaced")) {
-            edit.mapsReplaced = replacedMapsFromJson(*replaced, reader.pointerOf("mapsReplaced"), source, baseDirectory);
+            edit.mapsReplaced =
+                replacedMapsFromJson(*replaced, reader.pointerOf("mapsReplaced"), source, baseDirectory,
+                                     edit.mapsReplacedExtras, warnings);
         }
         for (const ModelMaterialEdit& earlier : edits) {
             if (earlier.index == edit.index) {
@@ -495,8 +506,8 @@ Json sceneToJson(const Scene& scene) {
             if (!edit.mapsOff.empty()) {   // written only where a map is left out
                 entry["mapsOff"] = edit.mapsOff;
             }
-            if (!edit.mapsReplaced.empty()) {
-                entry["mapsReplaced"] = edit.mapsReplaced;
+            if (!edit.mapsReplaced.empty() || !edit.mapsReplacedExtras.empty()) {
+                entry["mapsReplaced"] = withExtras(Json(edit.mapsReplaced), edit.mapsReplacedExtras);
             }
             edits.push_back(withExtras(entry, edit.extras));
         }

@@ -57,6 +57,7 @@ struct ModelMaterialEdit {
     // relative one is resolved against its folder when read). The map keeps its UV set,
     // sampler and transform; a map left out above stays out. assets/ loads them.
     std::map<std::string, std::string> mapsReplaced = {};
+    Json mapsReplacedExtras = Json::object();   // keys there that name no map, kept as extras are
     bool operator==(const ModelMaterialEdit&) const = default;
 };
 

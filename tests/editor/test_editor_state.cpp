@@ -617,6 +617,26 @@ TEST_F(EditorStateTest, EveryFilesErrorIsShownAndAFolderIsCalledAFolder) {
     }
     EXPECT_FALSE(finishEnvironmentLoad(state, true));
     EXPECT_NE(state.error.find("missing.json"), std::string::npos) << "nothing arrives later to replace them";
+
+    // A model named last is read on a worker, the window showing meanwhile; its error joins the
+    // others when it arrives. One named before other files is read at once, for them to act on.
+    state.error.clear();
+    openStartupFiles(state, {dir_ / "missing.json", dir_ / "broken.glb"});
+    ASSERT_NE(state.modelLoad, nullptr);
+    EXPECT_FALSE(finishModelLoad(state, true));
+    EXPECT_NE(state.error.find("missing.json"), std::string::npos) << state.error;
+    EXPECT_NE(state.error.find("broken.glb"), std::string::npos) << state.error;
+    exportGltf(dir_ / "torus.glb", makeTorus(), Material{});
+    openStartupFiles(state, {dir_ / "torus.glb"});
+    ASSERT_NE(state.modelLoad, nullptr);
+    EXPECT_TRUE(state.scene.meshFile.empty()) << "not shown before it is read";
+    EXPECT_NE(state.status.find("Loading torus.glb"), std::string::npos) << state.status;
+    EXPECT_TRUE(finishModelLoad(state, true));
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
+    state.scene.meshFile.clear();
+    openStartupFiles(state, {dir_ / "torus.glb", good});
+    EXPECT_EQ(state.modelLoad, nullptr);
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb") << "read at once, before the material";
 }
 
 }  // namespace

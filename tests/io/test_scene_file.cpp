@@ -140,9 +140,18 @@ TEST(SceneFile, ReplacedMapsRoundTripWithTheirPathsResolved) {
     const Json written = sceneToJson(read);
     EXPECT_EQ(written["modelMaterials"][0]["mapsReplaced"]["baseColorTexture"], "/scenes/mine/maps/worn.png");
     EXPECT_EQ(sceneFromJson(written, "y", "/anywhere", warnings), read) << "written whole, read back the same";
+    EXPECT_TRUE(warnings.empty());
+    Json unknown = json;
+    unknown["modelMaterials"][0]["mapsReplaced"]["normal"] = "a.png";
+    const Scene withUnknown = sceneFromJson(unknown, "x.json", "/scenes/mine", warnings);
+    EXPECT_EQ(withUnknown.modelMaterials.at(0).mapsReplaced, expected) << "a key naming no map replaces none";
+    EXPECT_EQ(sceneToJson(withUnknown)["modelMaterials"][0]["mapsReplaced"]["normal"], "a.png") << "and is kept";
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("x.json: /modelMaterials/0/mapsReplaced/normal: unknown key 'normal'"),
+              std::string::npos)
+        << warnings[0];
     for (const auto& [replaced, message] :
-         {std::pair{Json{{"normal", "a.png"}}, "/modelMaterials/0/mapsReplaced/normal: expected the name of a map ("},
-          std::pair{Json{{"normalTexture", 3}}, "/modelMaterials/0/mapsReplaced/normalTexture: expected the path of a PNG"},
+         {std::pair{Json{{"normalTexture", 3}}, "/modelMaterials/0/mapsReplaced/normalTexture: expected the path of a PNG"},
           std::pair{Json{{"normalTexture", ""}}, "/modelMaterials/0/mapsReplaced/normalTexture: expected the path of a PNG"},
           std::pair{Json::array({"a.png"}), "/modelMaterials/0/mapsReplaced: expected an object from a map's name"}}) {
         Json bad = json;
