@@ -89,15 +89,32 @@ TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
     }
 }
 
-// The maps a scene leaves out of a model's material: written only where there are some, each
-// one of the five by glTF's name, once.
-TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {
-    std::vector<std::string> warnings;
+// A scene showing a model, its material 0 ("Texture") edited.
+Scene boxWithItsMaterialEdited() {
     Scene scene = defaultScene();
     scene.meshFile = "/models/box.glb";
     Material edited;
     edited.name = "Texture";
     scene.modelMaterials = {{0, edited}};
+    return scene;
+}
+
+// Reading `bad` fails with `message` in the error.
+void expectRefused(const Json& bad, const std::string& message) {
+    std::vector<std::string> warnings;
+    try {
+        sceneFromJson(bad, "x.json", ".", warnings);
+        ADD_FAILURE() << bad.dump() << " was read";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+    }
+}
+
+// The maps a scene leaves out of a model's material: written only where there are some, each
+// one of the five by glTF's name, once.
+TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {
+    std::vector<std::string> warnings;
+    Scene scene = boxWithItsMaterialEdited();
     EXPECT_FALSE(sceneToJson(scene)["modelMaterials"][0].contains("mapsOff"));
     scene.modelMaterials[0].mapsOff = {"normalTexture", "baseColorTexture"};
     const Json json = sceneToJson(scene);
@@ -110,12 +127,7 @@ TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {
           std::pair{Json("normalTexture"), "/modelMaterials/0/mapsOff: expected an array"}}) {
         Json bad = json;
         bad["modelMaterials"][0]["mapsOff"] = names;
-        try {
-            sceneFromJson(bad, "x.json", ".", warnings);
-            ADD_FAILURE() << names.dump() << " was read";
-        } catch (const InputError& error) {
-            EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
-        }
+        expectRefused(bad, message);
     }
 }
 
@@ -123,11 +135,7 @@ TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {
 // resolved against the scene's folder when read and written whole; only where there are some.
 TEST(SceneFile, ReplacedMapsRoundTripWithTheirPathsResolved) {
     std::vector<std::string> warnings;
-    Scene scene = defaultScene();
-    scene.meshFile = "/models/box.glb";
-    Material edited;
-    edited.name = "Texture";
-    scene.modelMaterials = {{0, edited}};
+    Scene scene = boxWithItsMaterialEdited();
     EXPECT_FALSE(sceneToJson(scene)["modelMaterials"][0].contains("mapsReplaced"));
     Json json = sceneToJson(scene);
     json["modelMaterials"][0]["mapsReplaced"] = {{"baseColorTexture", "maps/worn.png"},
@@ -156,12 +164,7 @@ TEST(SceneFile, ReplacedMapsRoundTripWithTheirPathsResolved) {
           std::pair{Json::array({"a.png"}), "/modelMaterials/0/mapsReplaced: expected an object from a map's name"}}) {
         Json bad = json;
         bad["modelMaterials"][0]["mapsReplaced"] = replaced;
-        try {
-            sceneFromJson(bad, "x.json", ".", warnings);
-            ADD_FAILURE() << replaced.dump() << " was read";
-        } catch (const InputError& error) {
-            EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
-        }
+        expectRefused(bad, message);
     }
 }
 
