@@ -172,12 +172,10 @@ int modelMaterialCount(const Document& document) {
 
 Material modelMaterial(const Document& document, const Scene& scene, int index) {
     const ModelMaterial& file = document.model->materials.at(size_t(index));
-    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
-        if (edit.index == index && edit.material.name == file.name) {
-            Material material = edit.material;
-            material.model = scene.material.model;
-            return material;
-        }
+    if (const ModelMaterialEdit* edit = patina::editOf(scene, index, file)) {
+        Material material = edit->material;
+        material.model = scene.material.model;
+        return material;
     }
     Material material;
     static_cast<MaterialParameters&>(material) = file.factors;

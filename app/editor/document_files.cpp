@@ -354,14 +354,11 @@ bool exportGltfFile(EditorState& state, std::filesystem::path path) {
 }
 
 namespace {
-// The model's material `index` as a phrase: "the base colour map of \"Texture\"".
+// Map `key` of the model's material `index` as a phrase: "base colour map of \"Texture\"".
 std::string mapOfMaterial(const EditorState& state, int index, const std::string& key) {
-    for (const auto& map : mapsOf(state.model->materials.at(size_t(index)))) {
-        if (map.key == key) {
-            return "the " + std::string(map.name) + " map of \"" + state.model->materials[size_t(index)].name + "\"";
-        }
-    }
-    return key;
+    const ModelMaterial& material = state.model->materials.at(size_t(index));
+    const auto map = mapWithKey(material, key);
+    return (map ? std::string(map->name) + " map" : key) + " of \"" + material.name + "\"";
 }
 
 // The edit of the maps `index` has that `change` makes, with the model retextured to match, as
@@ -382,7 +379,7 @@ bool replaceMap(EditorState& state, int index, const std::string& key, const std
     if (!state.model || index < 0 || index >= modelMaterialCount(state)) {
         return false;
     }
-    const std::string what = mapOfMaterial(state, index, key);
+    const std::string what = "the " + mapOfMaterial(state, index, key);
     const std::string file = std::filesystem::absolute(path).lexically_normal().string();
     try {
         const std::shared_ptr<const ModelImage> image = state.assets->image(file);   // held: decoded once
@@ -403,9 +400,9 @@ void restoreMap(EditorState& state, int index, const std::string& key) {
     }
     try {
         changeMaps(state, [&](Scene& scene) { setMapReplacement(state, scene, index, key, ""); });
-        state.status = "The file's own " + mapOfMaterial(state, index, key).substr(4) + " is drawn again";
+        state.status = "The file's own " + mapOfMaterial(state, index, key) + " is drawn again";
     } catch (const std::exception& error) {
-        state.error = "Could not restore " + mapOfMaterial(state, index, key) + ": " + error.what();
+        state.error = "Could not restore the " + mapOfMaterial(state, index, key) + ": " + error.what();
     }
 }
 

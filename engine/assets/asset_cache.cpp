@@ -7,6 +7,7 @@
 #include "gltf/files.h"
 #include "gltf/images.h"
 #include "gltf/model_import.h"
+#include "scene/prepared_scene.h"
 #include "environment/environment_source.h"
 
 namespace patina {
@@ -17,6 +18,26 @@ template <typename Map>
 void dropExpired(Map& entries) {
     std::erase_if(entries, [](const auto& entry) { return entry.second.expired(); });
 }
+
+// A file known by its path and contents (its size bounded as a model's files are).
+std::pair<std::string, uint64_t> fileKey(const std::filesystem::path& path) {
+    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
+    return {std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
+}
+
+// The object `entries` has under `key` while someone still holds it, else null.
+template <typename Map>
+auto heldEntry(const Map& entries, const typename Map::key_type& key) {
+    const auto found = entries.find(key);
+    return found != entries.end() ? found->second.lock() : decltype(found->second.lock())();
+}
+
+// `object` entered under `key`, the entries nobody holds dropped.
+template <typename Map, typename Object>
+void keepEntry(Map& entries, const typename Map::key_type& key, const Object& object) {
+    dropExpired(entries);
+    entries[key] = object;
+}
 }  // namespace
 
 struct AssetCache::LoadedModel {
@@ -26,14 +47,11 @@ struct AssetCache::LoadedModel {
 
 std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::filesystem::path& path,
                                                                    const Progress& progress) {
-    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
-    const Key key{std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
+    const Key key = fileKey(path);
     {
         std::lock_guard lock(mutex_);
-        if (const auto found = models_.find(key); found != models_.end()) {
-            if (std::shared_ptr<const LoadedModel> model = found->second.lock()) {
-                return model;
-            }
+        if (std::shared_ptr<const LoadedModel> model = heldEntry(models_, key)) {
+            return model;
         }
     }
     std::optional<Model> drawn = importGltfModel(path, progress);
@@ -43,8 +61,7 @@ std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::fil
     GltfImport imported = flattenedImport(*drawn, path);
     auto model = std::make_shared<const LoadedModel>(LoadedModel{std::move(imported), std::move(*drawn)});
     std::lock_guard lock(mutex_);
-    dropExpired(models_);
-    models_[key] = model;
+    keepEntry(models_, key, model);
     return model;
 }
 
@@ -68,20 +85,16 @@ AssetCache::Shape AssetCache::shape(const Scene& scene) {
 }
 
 std::shared_ptr<const ModelImage> AssetCache::image(const std::filesystem::path& path) {
-    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
-    const Key key{std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
+    const Key key = fileKey(path);
     {
         std::lock_guard lock(mutex_);
-        if (const auto found = images_.find(key); found != images_.end()) {
-            if (std::shared_ptr<const ModelImage> image = found->second.lock()) {
-                return image;
-            }
+        if (std::shared_ptr<const ModelImage> image = heldEntry(images_, key)) {
+            return image;
         }
     }
     auto image = std::make_shared<const ModelImage>(gltf::readImageFile(path));
     std::lock_guard lock(mutex_);
-    dropExpired(images_);
-    images_[key] = image;
+    keepEntry(images_, key, image);
     return image;
 }
 
@@ -103,27 +116,23 @@ std::vector<Replacement> replacementsOf(const Model& model, const Scene& scene, 
     std::vector<Replacement> found;
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const ModelMaterial& material = model.materials[i];
-        for (const ModelMaterialEdit& edit : scene.modelMaterials) {
-            if (edit.index != int(i) || edit.material.name != material.name) {
+        const ModelMaterialEdit* edit = editOf(scene, int(i), material);
+        for (const auto& map : mapsOf(material)) {
+            const auto path = edit ? edit->mapsReplaced.find(map.key) : decltype(edit->mapsReplaced.end()){};
+            if (!edit || path == edit->mapsReplaced.end()) {
                 continue;
             }
-            for (const auto& map : mapsOf(material)) {
-                const auto path = edit.mapsReplaced.find(map.key);
-                if (path == edit.mapsReplaced.end()) {
-                    continue;
+            Replacement replacement{int(i), map.key, path->second, nullptr, ""};
+            if (!map.slot->present()) {
+                replacement.problem = "the material has no " + std::string(map.key) + " to replace";
+            } else {
+                try {
+                    replacement.image = read(path->second);
+                } catch (const InputError& error) {
+                    replacement.problem = error.what();
                 }
-                Replacement replacement{int(i), map.key, path->second, nullptr, ""};
-                if (!map.slot->present()) {
-                    replacement.problem = "the material has no " + std::string(map.key) + " to replace";
-                } else {
-                    try {
-                        replacement.image = read(path->second);
-                    } catch (const InputError& error) {
-                        replacement.problem = error.what();
-                    }
-                }
-                found.push_back(std::move(replacement));
             }
+            found.push_back(std::move(replacement));
         }
     }
     return found;
@@ -163,11 +172,8 @@ Model withReplacements(const Model& model, const std::vector<Replacement>& repla
             continue;
         }
         decoded += replacement.image->rgba.size();
-        for (const auto& map : mapsOf(retextured.materials[size_t(replacement.material)])) {
-            if (map.key == std::string_view(replacement.key)) {
-                map.slot->image = int(retextured.images.size());
-            }
-        }
+        mapWithKey(retextured.materials[size_t(replacement.material)], replacement.key)->slot->image =
+            int(retextured.images.size());
         retextured.images.push_back(*replacement.image);
     }
     return retextured;
@@ -201,10 +207,8 @@ std::shared_ptr<const Model> AssetCache::retextured(std::shared_ptr<const Model>
     const std::string key = replacementsKey(*model, replacements);
     {
         std::lock_guard lock(mutex_);
-        if (const auto found = retextured_.find(key); found != retextured_.end()) {
-            if (std::shared_ptr<const RetexturedModel> made = found->second.lock()) {
-                return {made, &made->model};
-            }
+        if (std::shared_ptr<const RetexturedModel> made = heldEntry(retextured_, key)) {
+            return {made, &made->model};
         }
     }
     std::vector<std::shared_ptr<const ModelImage>> images;
@@ -214,8 +218,7 @@ std::shared_ptr<const Model> AssetCache::retextured(std::shared_ptr<const Model>
     auto made = std::make_shared<const RetexturedModel>(
         RetexturedModel{model, std::move(images), withReplacements(*model, replacements)});
     std::lock_guard lock(mutex_);
-    dropExpired(retextured_);
-    retextured_[key] = made;
+    keepEntry(retextured_, key, made);
     return {made, &made->model};
 }
 
@@ -233,8 +236,8 @@ std::shared_ptr<const Environment> AssetCache::environment(const std::string& so
             if (const auto found = builtins_.find(key); found != builtins_.end()) {
                 environment = found->second;
             }
-        } else if (const auto found = environments_.find(key); found != environments_.end()) {
-            environment = found->second.lock();
+        } else {
+            environment = heldEntry(environments_, key);
         }
     }
     if (!environment) {
@@ -246,8 +249,7 @@ std::shared_ptr<const Environment> AssetCache::environment(const std::string& so
         if (builtin) {
             builtins_.try_emplace(key, environment);
         } else {
-            dropExpired(environments_);
-            environments_[key] = environment;
+            keepEntry(environments_, key, environment);
         }
     }
     if (environment->replacedPixels > 0) {

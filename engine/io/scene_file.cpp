@@ -272,29 +272,32 @@ Material loadMaterialFile(const std::filesystem::path& path, std::vector<std::st
 }
 
 namespace {
-// Fails unless `name` is a map's key (model/model.h mapsOf).
-void checkMapKey(const std::string& name, const std::string& at, const std::string& source) {
+// Whether `name` is a map's key (model/model.h mapsOf), and the keys for a message.
+bool isMapKey(const std::string& name) {
+    const ModelMaterial none;
+    return mapWithKey(none, name).has_value();
+}
+std::string mapKeys() {
     std::string keys;
     const ModelMaterial none;
     for (const auto& map : mapsOf(none)) {
-        if (name == map.key) {
-            return;
-        }
         keys += (keys.empty() ? "" : ", ") + std::string(map.key);
     }
-    failAt(source, at, "expected the name of a map (" + keys + ")");
+    return keys;
 }
 
 // "mapsOff": ["normalTexture", ...]: each a map's key, once.
 std::vector<std::string> mapKeysFromJson(const Json& json, const std::string& pointer, const std::string& source) {
     if (!json.is_array()) {
-        failAt(source, pointer, "expected an array of map names (baseColorTexture, normalTexture, ...)");
+        failAt(source, pointer, "expected an array of map names (" + mapKeys() + ")");
     }
     std::vector<std::string> names;
     for (size_t i = 0; i < json.size(); ++i) {
         const std::string at = pointer + "/" + std::to_string(i);
         const std::string name = json[i].is_string() ? json[i].get<std::string>() : "";
-        checkMapKey(name, at, source);
+        if (!isMapKey(name)) {
+            failAt(source, at, "expected the name of a map (" + mapKeys() + ")");
+        }
         if (std::find(names.begin(), names.end(), name) != names.end()) {
             failAt(source, at, "\"" + name + "\" is named twice");
         }
@@ -315,10 +318,8 @@ std::map<std::string, std::string> replacedMapsFromJson(const Json& json, const 
                                 "\"worn.png\")");
     }
     std::map<std::string, std::string> replaced;
-    const ModelMaterial none;
     for (const auto& [key, value] : json.items()) {
-        const auto maps = mapsOf(none);
-        if (std::none_of(maps.begin(), maps.end(), [&](const auto& map) { return key == map.key; })) {
+        if (!isMapKey(key)) {
             warnings.push_back(source + ": " + pointer + "/" + key + ": unknown key '" + key +
                                "' (kept, not used: it names no map)");
             extras[key] = value;

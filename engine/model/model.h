@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -81,6 +82,16 @@ auto mapsOf(Material& material) {
          {&material.normal, false, "normal", "normalTexture"},
          {&material.occlusion, false, "occlusion", "occlusionTexture"},
          {&material.emissive, true, "emissive", "emissiveTexture"}}};
+}
+// The map of `material` whose key is `key`, or nothing: what a scene file's key names.
+template <typename Material>
+auto mapWithKey(Material& material, std::string_view key) -> std::optional<typename decltype(mapsOf(material))::value_type> {
+    for (const auto& map : mapsOf(material)) {
+        if (key == map.key) {
+            return map;
+        }
+    }
+    return std::nullopt;
 }
 
 // One primitive placed once: glTF node world matrix times the mesh's primitive. `material` < 0

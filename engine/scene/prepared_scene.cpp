@@ -16,16 +16,6 @@ namespace {
                                 " of " + std::to_string(count));
 }
 
-// The scene's edit of material `index` of the model, where one has its index and name.
-const ModelMaterialEdit* editOf(const Scene& scene, int index, const ModelMaterial& material) {
-    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
-        if (edit.index == index && edit.material.name == material.name) {
-            return &edit;
-        }
-    }
-    return nullptr;
-}
-
 // Item `i` of `model` as drawn, or nothing when its MASK cutoff hides it whole.
 std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_t i) {
     const BrdfModelId brdf = scene.material.model;
@@ -64,6 +54,15 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
     return draw;
 }
 }  // namespace
+
+const ModelMaterialEdit* editOf(const Scene& scene, int index, const ModelMaterial& material) {
+    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+        if (edit.index == index && edit.material.name == material.name) {
+            return &edit;
+        }
+    }
+    return nullptr;
+}
 
 ModelMaterial tunedMaterial(const Scene& scene, int index, const ModelMaterial& material) {
     ModelMaterial tuned = material;

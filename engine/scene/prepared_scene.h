@@ -78,6 +78,10 @@ MaterialParameters defaultModelMaterial();
 // material the model lacks.
 std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared);
 
+// The scene's edit of material `index` of a model (`material`, the file's), where one has its
+// index and name (Scene::modelMaterials); null otherwise.
+const ModelMaterialEdit* editOf(const Scene& scene, int index, const ModelMaterial& material);
+
 // Material `index` of a model (`material`, the file's) as the scene tunes it: the factors of
 // the scene's edit of it (matched by index and name), without the maps the edit leaves out.
 ModelMaterial tunedMaterial(const Scene& scene, int index, const ModelMaterial& material);
