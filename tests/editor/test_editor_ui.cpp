@@ -17,6 +17,7 @@
 #include "gltf/export.h"
 #include "gltf/model_export.h"
 #include "keys.h"
+#include "panels/file_dialog.h"
 #include "panels/panels.h"
 #include "preview_scene.h"
 #include "image/png_text.h"
@@ -425,6 +426,23 @@ TEST_F(EditorUi, AMapIsReplacedByAnImageFileAndRestored) {
     EXPECT_NE(state_.error.find("notes.png: the image is neither PNG nor JPEG"), std::string::npos) << state_.error;
     EXPECT_EQ(state_.snapshot(), before);
     frames(1);
+}
+
+// Each opening of a path dialog selects its whole path, so that what is typed replaces it: the
+// field used to keep the last opening's cursor, and typing went into the middle of the path.
+TEST_F(EditorUi, APathDialogOpenedAgainTakesTheTypedPathWhole) {
+    ImGuiIO& io = ImGui::GetIO();
+    for (const std::string& typed : {path("first.png").string(), path("second.png").string()}) {
+        startPathDialog(state_, EditorState::PathDialog::ReplaceMap, "/usr/share/assimp/models/glTF2/");
+        frames(2);
+        for (char c : typed) {
+            io.AddInputCharacter(static_cast<unsigned>(c));
+        }
+        frames(2);
+        EXPECT_EQ(state_.pathDialogText, typed);
+        click(centreOf("path:cancel"));
+        EXPECT_EQ(state_.pathDialog, EditorState::PathDialog::None);
+    }
 }
 
 // A model read on a worker is shown once read, but not behind a prompt: it waits for the

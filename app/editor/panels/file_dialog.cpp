@@ -116,8 +116,12 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     const PathDialogKind& kind = pathDialogKind(state.pathDialog);
     // One popup whatever the action ("###path"), titled by it.
     const std::string title = std::string(kind.title) + "###path";
+    // Each opening's path field is a new widget: ImGui keeps a field's cursor and selection by
+    // its ID, and the last opening's cursor, inside the new text, took what was typed there.
+    static int openings = 0;
     if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
         ImGui::OpenPopup(title.c_str());
+        ++openings;
     }
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float width = std::min(px(560), display.x - px(40));
@@ -145,9 +149,11 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
         }
         return 0;
     };
+    ImGui::PushID(openings);
     if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor, &cursorToEnd)) {
         state.pathDialogText = buffer;
     }
+    ImGui::PopID();
     bool entered = ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
                                                   ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
     recordItem("path:text", "The file's path; Enter on a folder opens it, the list below follows what you type");
