@@ -41,7 +41,8 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     if (withPart) {
         addMeshOption(command, mesh);
     }
-    command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
+    command.add_option("--model", model,
+                       "BRDF model, replacing the material's and every model part's: " + brdfModelNames());
 }
 
 Scene SceneInputs::load() const {
@@ -59,6 +60,7 @@ Scene SceneInputs::load() const {
             throw InputError("--model: unknown BRDF model \"" + model + "\" (known: " + brdfModelNames() + ")");
         }
         scene.material.model = *id;
+        scene.modelBrdf = *id;   // a glTF model's parts too (each has its own otherwise)
     }
     printWarnings(warnings);
     return scene;

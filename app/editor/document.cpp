@@ -12,7 +12,8 @@ namespace patina::editor {
 bool Document::sceneChanged() const {
     return scene.lights != savedScene.lights || scene.camera != savedScene.camera ||
            scene.display != savedScene.display || scene.mesh != savedScene.mesh ||
-           scene.meshFile != savedScene.meshFile || scene.modelMaterials != savedScene.modelMaterials;
+           scene.meshFile != savedScene.meshFile || scene.modelMaterials != savedScene.modelMaterials ||
+           scene.modelBrdf != savedScene.modelBrdf;
 }
 
 int Document::environmentIndex() const {
@@ -51,7 +52,7 @@ std::string unsavedParts(const Document& document) {
     if (now.mesh != saved.mesh || now.meshFile != saved.meshFile) {
         parts.push_back("the mesh");
     }
-    if (now.modelMaterials != saved.modelMaterials) {
+    if (now.modelMaterials != saved.modelMaterials || now.modelBrdf != saved.modelBrdf) {
         parts.push_back("the model's materials");
     }
     std::string text;
@@ -93,6 +94,7 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.lights = snapshot.lights;
     state.scene.display = snapshot.display;
     state.scene.modelMaterials = snapshot.modelMaterials;
+    state.scene.modelBrdf = snapshot.modelBrdf;
     state.model = snapshot.shape.model;   // the same file with the maps it had replaced, or another
     if (!(state.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
         state.scene.mesh = snapshot.shape.kind;
@@ -170,23 +172,32 @@ int modelMaterialCount(const Document& document) {
     return document.model && !document.scene.meshFile.empty() ? int(document.model->materials.size()) : 0;
 }
 
-Material modelMaterial(const Document& document, const Scene& scene, int index) {
+namespace {
+// Part `index` as the scene has it, its own BRDF model kept (Scene::modelBrdf not applied).
+Material ownModelMaterial(const Document& document, const Scene& scene, int index) {
     const ModelMaterial& file = document.model->materials.at(size_t(index));
     if (const ModelMaterialEdit* edit = patina::editOf(scene, index, file)) {
-        Material material = edit->material;
-        material.model = scene.material.model;
-        return material;
+        return edit->material;
     }
     Material material;
     static_cast<MaterialParameters&>(material) = file.factors;
     material.name = file.name;
-    material.model = scene.material.model;
+    return material;
+}
+}  // namespace
+
+Material modelMaterial(const Document& document, const Scene& scene, int index) {
+    Material material = ownModelMaterial(document, scene, index);
+    material.model = scene.modelBrdf.value_or(material.model);   // as sceneDraws shades it
     return material;
 }
 
 void setModelMaterial(const Document& document, Scene& scene, int index, Material material) {
     material.name = document.model->materials.at(size_t(index)).name;
-    material.model = scene.material.model;   // the document's: one program shades a frame
+    if (scene.modelBrdf) {
+        // One model shades every part (Scene::modelBrdf): the part keeps its own beneath it.
+        material.model = ownModelMaterial(document, scene, index).model;
+    }
     for (ModelMaterialEdit& edit : scene.modelMaterials) {
         if (edit.index == index) {
             edit.material = std::move(material);

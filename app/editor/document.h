@@ -40,7 +40,7 @@ struct Document {
     bool dirty() const { return materialChanged() || sceneChanged(); }
     ShownShape shownShape() const { return {scene.mesh, scene.meshFile, mesh, model, scene.camera}; }
     EditSnapshot snapshot() const {
-        return {scene.material, scene.lights, scene.display, scene.modelMaterials, shownShape()};
+        return {scene.material, scene.lights, scene.display, scene.modelMaterials, scene.modelBrdf, shownShape()};
     }
     // Whether `index` is one of the scene's lights.
     bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
@@ -86,10 +86,11 @@ PreparedScene preparedScene(const Document& document, const Scene& shown);
 // How many materials the shown model has (0 for a built-in mesh).
 int modelMaterialCount(const Document& document);
 // Material `index` of the model as `scene` draws it: its edit (Scene::modelMaterials) or the
-// file's factors, under the file's name, with the document's BRDF model.
+// file's factors, under the file's name, with its BRDF model (the part's own: the file's are
+// `gltf`; Scene::modelBrdf where the scene shades every part with one).
 Material modelMaterial(const Document& document, const Scene& scene, int index);
 // Writes `material`'s values as the edit of material `index` in `scene` (its name stays the
-// file's: the key), made or replaced.
+// file's: the key), made or replaced; under Scene::modelBrdf the part keeps its own model.
 void setModelMaterial(const Document& document, Scene& scene, int index, Material material);
 // "base colour, normal": the maps material `index` of the model uses; empty for none.
 // Whether `scene` draws map `key` (model/model.h mapsOf) of the model's material `index`: false

@@ -54,6 +54,7 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
         fitSceneTo(d.scene, before, meshBounds(d));   // as `render --mesh` fits it
         if (another) {
             d.scene.modelMaterials.clear();
+            d.scene.modelBrdf.reset();   // shaded as its file says (glTF's BRDF), whatever the last one chose
         }
         d.model = state.assets->retextured(model, d.scene);   // the same file keeps its maps replaced
     });
@@ -232,8 +233,13 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
     } else if (isPreset(state, path)) {
         // A preset is a template: an undoable edit of the material; Save never writes into it
         // (Save as preset does, when asked to).
-        // On a model, onto the material the panel edits.
-        applyEdit(state, [&](Document& d) { setEditedMaterial(state, d.scene, *file.material); });
+        // On a model, onto the material the panel edits: its factors, the part keeping its BRDF
+        // model (a preset's is for the built-in meshes; a glTF part stays glTF's).
+        Material preset = *file.material;
+        if (modelMaterialCount(state) > 0) {
+            preset.model = editedMaterial(state).model;
+        }
+        applyEdit(state, [&](Document& d) { setEditedMaterial(state, d.scene, preset); });
     } else {
         Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
         scene.material = *file.material;

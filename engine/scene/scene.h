@@ -70,6 +70,10 @@ struct Scene {
     std::string meshFile;
     Material material;   // the built-in meshes'
     std::vector<ModelMaterialEdit> modelMaterials;   // the model's materials as tuned, by index
+    // The BRDF model every part of the model is shaded with, in place of each part's own (the
+    // file's materials are glTF's, `gltf`; an edit names its own): set by `render --model`, and
+    // by a scene written before version 3, which shaded the whole model with `material`'s model.
+    std::optional<BrdfModelId> modelBrdf;
     Camera camera;
     std::vector<Light> lights;
     DisplaySettings display;

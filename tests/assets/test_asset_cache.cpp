@@ -233,9 +233,7 @@ TEST_F(Assets, AGltfSceneIsPreparedWithTheModelItDraws) {
     const PreparedScene plain = prepareScene(scene, cache, warnings);
     ASSERT_TRUE(plain.model);
     EXPECT_EQ(plain.model->draws.at(0).material, -1);
-    MaterialParameters defaults = defaultModelMaterial();
-    defaults.model = scene.material.model;
-    EXPECT_EQ(sceneDraws(plain).at(0).material, defaults);
+    EXPECT_EQ(sceneDraws(plain).at(0).material, defaultModelMaterial());   // shaded as glTF's
 
     scene.meshFile.clear();
     EXPECT_FALSE(prepareScene(scene, cache, warnings).model);

@@ -703,6 +703,7 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_TRUE(openFile(state, dir_ / "presets" / "brick.json")) << state.error;
     EXPECT_EQ(editedMaterial(state).baseColor, brick.baseColor);
     EXPECT_EQ(editedMaterial(state).name, "model gold");
+    EXPECT_EQ(editedMaterial(state).model, BrdfModelId::Gltf) << "a preset's model is for the built-in meshes";
     EXPECT_EQ(state.scene.material, before);
     // Saved and reopened, the tuning is there.
     ASSERT_TRUE(saveScene(state, dir_ / "tuned.json")) << state.error;
@@ -845,6 +846,56 @@ TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
 
 // A click on a part selects its material for the Material panel; the selected part is
 // outlined, and its outline follows the eye.
+// A glTF model's parts are shaded with glTF's BRDF; the Model combo (the edited material's
+// model) switches the selected part alone, undoably, and the scene keeps it. A scene written
+// before each part had its own (version 2) shades every part with one model: the combo then
+// switches them all, and "Each part its own" (modelBrdf cleared) gives each its own back.
+TEST_F(EditorStateTest, EachPartHasItsOwnBrdfModelAndAnOldSceneKeepsItsOne) {
+    exportGltfModel(dir_ / "two.glb", test::twoBalls());
+    ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
+    auto shaded = [&] {
+        std::vector<BrdfModelId> models;
+        for (const SceneDraw& draw : sceneDraws(preparedScene(state, renderedScene(state)))) {
+            models.push_back(draw.material.model);
+        }
+        return models;
+    };
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
+    state.selectedModelMaterial = 1;
+    Material right = editedMaterial(state);
+    right.model = BrdfModelId::Epic;
+    setEditedMaterial(state, state.scene, right);
+    commitEdits(state);
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
+    ASSERT_TRUE(saveScene(state, dir_ / "mixed.json")) << state.error;
+    undo(state);
+    EXPECT_NE(state.status.find("Undid the tuning of right"), std::string::npos) << state.status;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
+    ASSERT_TRUE(openFile(state, dir_ / "mixed.json")) << state.error;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
+
+    // The same scene as version 2 wrote it: the whole model under the scene material's model.
+    Json old = readJsonFile(dir_ / "mixed.json");
+    old["version"] = 2;
+    old["material"]["model"] = "burley";
+    const std::string text = old.dump();
+    writeFileAtomic(dir_ / "old.json", std::vector<uint8_t>(text.begin(), text.end()));
+    ASSERT_TRUE(openFile(state, dir_ / "old.json")) << state.error;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Burley, BrdfModelId::Burley}));
+    state.selectedModelMaterial = 0;
+    Material left = editedMaterial(state);
+    EXPECT_EQ(left.model, BrdfModelId::Burley);
+    left.roughness = 0.2f;   // tuning a part under one model keeps the part's own model beneath
+    setEditedMaterial(state, state.scene, left);
+    state.scene.modelBrdf.reset();   // "Each part its own model"
+    commitEdits(state);
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
+    EXPECT_EQ(editedMaterial(state).roughness, 0.2f);
+    undo(state);
+    EXPECT_NE(state.status.find("the BRDF model of every part"), std::string::npos) << state.status;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Burley, BrdfModelId::Burley}));
+}
+
 TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {
     const glm::vec3 right(1.2f, 0.0f, 0.0f);
     exportGltfModel(dir_ / "two.glb", test::twoBalls());

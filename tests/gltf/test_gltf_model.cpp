@@ -556,6 +556,7 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
     EXPECT_EQ(m.factors.metallic, 0.3f);
     EXPECT_EQ(m.factors.roughness, 0.6f);
     EXPECT_NEAR(m.factors.specular, 0.25f, 1e-6f);   // material.h's mapping: 0.5 * 0.04 / 0.08
+    EXPECT_EQ(m.factors.model, BrdfModelId::Gltf);   // shaded as glTF 2.0's Appendix B defines
     EXPECT_TRUE(m.normal.present());
     EXPECT_EQ(m.normalScale, 0.7f);
     EXPECT_TRUE(m.occlusion.present());
@@ -567,7 +568,7 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
     // glTF's defaults (section 3.9), and a name for a material without one.
     ModelMaterial defaults;
     defaults.name = "material 1";
-    defaults.factors = MaterialParameters{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f};
+    defaults.factors = MaterialParameters{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f, BrdfModelId::Gltf};
     EXPECT_EQ(imported.materials[1], defaults);
 
     model.json["materials"][0]["alphaMode"] = "GLASS";

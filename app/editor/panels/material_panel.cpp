@@ -14,13 +14,17 @@
 namespace patina::editor {
 
 namespace {
-// The research controls: which BRDF model and render path, and what the shader derives.
-void drawAdvanced(EditorState& state) {
-    Material& material = state.scene.material;
-    if (ImGui::BeginCombo("Model", std::string(brdfModel(material.model).name).c_str())) {
+// The BRDF model of what the panel edits: the built-in mesh's material, the selected part of a
+// model, or every part where the scene shades them all with one (Scene::modelBrdf).
+void drawModelChoice(EditorState& state) {
+    const bool parts = modelMaterialCount(state) > 0;
+    const bool everyPart = parts && state.scene.modelBrdf.has_value();
+    Material edited = editedMaterial(state);
+    BrdfModelId chosen = edited.model;
+    if (ImGui::BeginCombo("Model", std::string(brdfModel(chosen).name).c_str())) {
         for (const BrdfModelInfo& model : brdfModels()) {
-            if (ImGui::Selectable(std::string(model.name).c_str(), model.id == material.model)) {
-                material.model = model.id;
+            if (ImGui::Selectable(std::string(model.name).c_str(), model.id == chosen)) {
+                chosen = model.id;
             }
             if (ImGui::IsItemHovered()) {
                 ImGui::SetTooltip("%s", std::string(model.summary).c_str());
@@ -28,7 +32,37 @@ void drawAdvanced(EditorState& state) {
         }
         ImGui::EndCombo();
     }
-    recordItem("Model", "The BRDF model the renderer shades with (saved with the material)");
+    recordItem("Model", !parts      ? "The BRDF model the renderer shades with (saved with the material)"
+                        : everyPart ? "The BRDF model every part of the model is shaded with (saved in the scene)"
+                                    : "The BRDF model this part is shaded with: glTF's own (gltf) as the file "
+                                      "defines it, or another to compare (saved in the scene)");
+    if (chosen != edited.model) {
+        if (!parts) {
+            state.scene.material.model = chosen;
+        } else if (everyPart) {
+            state.scene.modelBrdf = chosen;
+        } else {
+            edited.model = chosen;
+            setEditedMaterial(state, state.scene, edited);
+        }
+    }
+    if (everyPart) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("Every part is shaded with %s: the scene chose one model for all (a scene saved "
+                            "before each part had its own, or --model).",
+                            std::string(brdfModel(chosen).name).c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::SmallButton("Each part its own model")) {
+            state.scene.modelBrdf.reset();
+        }
+        recordItem("Each part its own model",
+                   "Shade each part with its own BRDF model again: glTF's (gltf) for the file's materials");
+    }
+}
+
+// The research controls: which BRDF model and render path, and what the shader derives.
+void drawAdvanced(EditorState& state) {
+    drawModelChoice(state);
     int path = int(state.renderPath);
     ImGui::TextUnformatted("Render path");
     ImGui::RadioButton("single", &path, int(RenderPath::Single));

@@ -30,7 +30,7 @@ std::vector<std::string> storyLines(const PixelStory& s) {
     const shader::ChannelInputs& c = s.inputs;
     std::vector<std::string> lines{
         "pixel " + std::to_string(s.x) + ", " + std::to_string(s.y) +
-            (s.item.empty() ? "" : "   " + s.item + " (" + s.material + ")"),
+            (s.item.empty() ? "   " + s.model : "   " + s.item + " (" + s.material + ", " + s.model + ")"),
         "radiance      " + vec3Text(c.radiance),
         "shown (sRGB)  " + format("%.0f  %.0f  %.0f", s.display[0], s.display[1], s.display[2]),
         "base colour   " + vec3Text(c.baseColor) + format("   alpha %.3g", c.alpha),
