@@ -34,6 +34,7 @@ Json storyJson(const PixelStory& s) {
     return {{"surface", true},
             {"item", s.item},
             {"material", s.material},
+            {"model", s.model},
             {"position", array(s.position)},
             {"geometryNormal", array(c.geometryNormal)},
             {"normal", array(c.shadingNormal)},

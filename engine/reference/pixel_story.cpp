@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "reference/channel_image.h"
+#include "shading/brdf_models.h"
 #include "scene/channel.h"
 #include "scene/light_packing.h"
 
@@ -29,7 +30,8 @@ std::optional<PixelStory> pixelStory(const PreparedScene& prepared, const PixelS
     story.x = x;
     story.y = y;
     const std::vector<SceneDraw> draws = sceneDraws(prepared);
-    nameItem(story, prepared, draws[size_t(surfaces.drawOfSample[size_t(sample)])]);
+    const SceneDraw& draw = draws[size_t(surfaces.drawOfSample[size_t(sample)])];
+    nameItem(story, prepared, draw);
     const ProbeSample& surface = surfaces.samples[size_t(sample)];
     story.position = surface.position;
     story.view = surface.toViewer;
@@ -39,7 +41,8 @@ std::optional<PixelStory> pixelStory(const PreparedScene& prepared, const PixelS
     const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
     const ChannelLights channel = channelLights(lights, {});
     const ChannelPoint point = channelPoint(surfaces, draws, size_t(sample));
-    const BrdfModelId model = prepared.scene.material.model;
+    const BrdfModelId model = draw.material.model;
+    story.model = std::string(brdfModel(model).name);
     const std::optional<ChannelEnvironment> environment = channelEnvironment(prepared);
     story.inputs = gatherChannelInputs(model, point, packed, -1, channel.key, environment ? &*environment : nullptr);
     if (channel.key >= 0) {
