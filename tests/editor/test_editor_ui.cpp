@@ -1607,6 +1607,23 @@ TEST_F(EditorUi, ExposureDragsInFineSteps) {
     EXPECT_EQ(state_.scene.display.exposure, 0.0f);
 }
 
+// The tone map list offers every view transform under the names scene files and render
+// --tonemap use; a choice changes the picture, and undo takes it back.
+TEST_F(EditorUi, TheToneMapListOffersEveryViewTransform) {
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Tone map"));
+    ImVec2 min, max;
+    for (const Tonemap tonemap : kTonemaps) {
+        EXPECT_TRUE(itemRect("tonemap:" + std::string(tonemapName(tonemap)), &min, &max)) << tonemapName(tonemap);
+    }
+    click(centreOf("tonemap:agx"));
+    EXPECT_EQ(state_.scene.display.tonemap, Tonemap::Agx);
+    frames(2);
+    EXPECT_GT(differingPixels(before, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.display.tonemap, Tonemap::PbrNeutral);
+}
+
 // Issue 23: Escape did not close the F1 help; it does, as any help window.
 TEST_F(EditorUi, EscapeClosesTheShortcuts) {
     press(kKeyF1);

@@ -52,6 +52,22 @@ void drawModelLoad(EditorState& state) {
     recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
 }
 
+// What each tone map is, for its entry's tooltip (docs/FORMATS.md, display.tonemap).
+const char* tonemapSummary(Tonemap tonemap) {
+    switch (tonemap) {
+    case Tonemap::None: return "None: clamped at white, no curve";
+    case Tonemap::PbrNeutral: return "Khronos PBR Neutral: colours up to 0.8 kept as they are, highlights compressed "
+                                     "towards white (model-viewer's default)";
+    case Tonemap::AcesHill: return "ACES as three.js and the Khronos glTF viewer show it: Hill's fit of the RRT + ODT, "
+                                   "exposure boosted by 1/0.6";
+    case Tonemap::Agx: return "AgX, Blender 4's default view, with its base look, as three.js applies it";
+    case Tonemap::AcesNarkowicz: return "ACES by Narkowicz's fit, what Patina called \"aces\": brighter "
+                                        "shadows, no colour matrices";
+    case Tonemap::Reinhard: return "Reinhard: x / (1 + x)";
+    }
+    return "";
+}
+
 // The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
 // being cut off at its edge.
 void drawToolbar(EditorState& state) {
@@ -82,12 +98,20 @@ void drawToolbar(EditorState& state) {
     ImGui::DragFloat("Exposure", &display.exposure, 0.02f, -8.0f, 8.0f, "%.2f EV", ImGuiSliderFlags_AlwaysClamp);
     recordItem("Exposure", "Brightness of the picture in stops (EV): +1 doubles it. Drag for fine steps (0.02 EV a "
                            "pixel); Ctrl+click or double-click to type");
-    sameLineIfFits(labelledWidth(px(100), "Tone map"));
-    int tonemap = int(display.tonemap);
-    ImGui::SetNextItemWidth(px(100));
-    ImGui::Combo("Tone map", &tonemap, "none\0aces\0reinhard\0pbr neutral\0");
-    recordItem("Tone map", "How light above white is brought into the screen's range; PBR Neutral keeps colours true");
-    display.tonemap = Tonemap(tonemap);
+    sameLineIfFits(labelledWidth(px(120), "Tone map"));
+    ImGui::SetNextItemWidth(px(120));
+    if (ImGui::BeginCombo("Tone map", std::string(tonemapName(display.tonemap)).c_str())) {
+        for (const Tonemap tonemap : kTonemaps) {
+            const std::string name(tonemapName(tonemap));
+            if (ImGui::Selectable(name.c_str(), tonemap == display.tonemap)) {
+                display.tonemap = tonemap;
+            }
+            recordItem("tonemap:" + name, tonemapSummary(tonemap));
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Tone map", "How light above white is brought into the screen's range, as the engines that show the "
+                           "asset do (the same names as render --tonemap)");
     sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Background"));
     colorEditLinear("Background", "The colour behind the mesh", &display.background, false,
                     ImGuiColorEditFlags_NoInputs);
