@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include "camera_choice.h"
 #include "scene/camera_control.h"
 #include "scene/view.h"
 #include "part_picking.h"
@@ -68,6 +69,43 @@ const char* tonemapSummary(Tonemap tonemap) {
     return "";
 }
 
+// The Camera list (model-viewer's framing, then the model's own cameras; the view is made when
+// one is chosen, so no frame measures the mesh) and the field of view.
+void drawCameraControls(EditorState& state) {
+    const std::string current = currentCameraName(state);
+    // Wide enough for the name shown (up to a limit), as the mesh's.
+    const float width = std::clamp(ImGui::CalcTextSize(current.c_str()).x + ImGui::GetFrameHeight() +
+                                       ImGui::GetStyle().FramePadding.x * 2.0f,
+                                   px(90), px(200));
+    sameLineIfFits(labelledWidth(width, "Camera"));
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("Camera", current.c_str())) {
+        const std::vector<CameraChoice> choices = cameraChoices(state);
+        for (size_t i = 0; i < choices.size(); ++i) {
+            const CameraChoice& choice = choices[i];
+            ImGui::BeginDisabled(!choice.usable);
+            const std::string label = choice.name + "##camera" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str(), choice.usable && choice.name == current)) {
+                chooseCamera(state, choice);
+            }
+            recordItem("camera:" + std::to_string(i), choice.detail.c_str());   // dimmed when not usable
+            ImGui::EndDisabled();
+        }
+        if (choices.size() == 1) {
+            ImGui::TextDisabled("a glTF model's own cameras are listed here");
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Camera", "Look from model-viewer's framing (the front, the whole shape in view) or from one of the "
+                         "glTF file's own cameras (render --camera takes the same)");
+    sameLineIfFits(labelledWidth(px(80), "FOV"));
+    ImGui::SetNextItemWidth(px(80));
+    ImGui::DragFloat("FOV", &state.scene.camera.fovYDegrees, 0.2f, 1.0f, 179.0f, "%.1f deg",
+                     ImGuiSliderFlags_AlwaysClamp);
+    recordItem("FOV", "The camera's vertical field of view in degrees (model-viewer's field-of-view; saved with the "
+                      "scene): a wider lens from the same place. Ctrl+click or double-click to type");
+}
+
 // The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
 // being cut off at its edge.
 void drawToolbar(EditorState& state) {
@@ -91,6 +129,7 @@ void drawToolbar(EditorState& state) {
         ImGui::EndCombo();
     }
     recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
+    drawCameraControls(state);
     sameLineIfFits(labelledWidth(px(110), "Exposure"));
     // A drag, not a slider: 16 stops across 110 pixels moved 8 EV in 60 of them. Fine steps
     // (0.02 EV a pixel) for a look; a big change is typed.
