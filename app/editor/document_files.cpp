@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "camera_choice.h"
 #include "editor_state.h"
 #include "assets/prepare_scene.h"
 #include "gltf/import.h"
@@ -59,6 +60,7 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
         d.model = state.assets->retextured(model, d.scene);   // the same file keeps its maps replaced
     });
     state.selectedModelMaterial = 0;
+    rememberCamera(state, kFrontCamera);
     state.error.clear();
     state.status = "Mesh " + path.filename().string() + modelSummary(*model);
     rememberRecent(state, path);

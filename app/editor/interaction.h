@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -47,6 +48,10 @@ struct Interaction {
     int selectedModelMaterial = 0;           // of the shown model: the one the Material panel edits
     PartOutlineCachePtr partOutline;         // its outline, kept while the eye stays (part_picking.h)
     int soloLight = -1;                      // -1: all enabled lights
+    // The toolbar's Camera list: the view last chosen there (or framing a model just opened),
+    // named while the scene's camera stays on it; a drag leaves it "free".
+    std::string cameraName;
+    Camera cameraView;
     RenderPath renderPath = RenderPath::Single;
 
     std::optional<Material> compareA;        // "Set A"; B is the current material

@@ -164,8 +164,7 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     const std::string tonemap = reader.string("tonemap", "none");
     const auto parsed = tonemapFromName(tonemap);
     if (!parsed) {
-        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) +
-                                   " (expected \"none\", \"aces\", \"reinhard\" or \"pbr-neutral\")");
+        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) + " (known: " + tonemapNames() + ")");
     }
     display.tonemap = *parsed;
     // The scene's environment itself behind the mesh, blurred to a roughness (the colour stays

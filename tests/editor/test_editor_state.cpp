@@ -336,7 +336,7 @@ TEST_F(EditorStateTest, DisplaySettingsAreUndoneInTurn) {
     state.scene.display.exposure = 8.0f;
     commitEdits(state);
     state.scene.display.backgroundFromEnvironment = true;
-    state.scene.display.tonemap = Tonemap::Aces;
+    state.scene.display.tonemap = Tonemap::AcesNarkowicz;
     commitEdits(state);
     undo(state);
     EXPECT_FALSE(state.scene.display.backgroundFromEnvironment);

@@ -13,6 +13,9 @@
 
 #include "image/compositing.h"
 #include "scene/camera_control.h"
+#include "scene/camera_placement.h"
+#include "camera_choice.h"
+#include "gltf_builder.h"
 #include "image/image.h"
 #include "gltf/export.h"
 #include "gltf/model_export.h"
@@ -1605,6 +1608,72 @@ TEST_F(EditorUi, ExposureDragsInFineSteps) {
     EXPECT_LT(state_.scene.display.exposure, 2.0f);
     press(kKeyZ, true);
     EXPECT_EQ(state_.scene.display.exposure, 0.0f);
+}
+
+// The tone map list offers every view transform under the names scene files and render
+// --tonemap use; a choice changes the picture, and undo takes it back.
+TEST_F(EditorUi, TheToneMapListOffersEveryViewTransform) {
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Tone map"));
+    ImVec2 min, max;
+    for (const Tonemap tonemap : kTonemaps) {
+        EXPECT_TRUE(itemRect("tonemap:" + std::string(tonemapName(tonemap)), &min, &max)) << tonemapName(tonemap);
+    }
+    click(centreOf("tonemap:agx"));
+    EXPECT_EQ(state_.scene.display.tonemap, Tonemap::Agx);
+    frames(2);
+    EXPECT_GT(differingPixels(before, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.display.tonemap, Tonemap::PbrNeutral);
+}
+
+// A model opened is framed as model-viewer frames it, wherever the camera looked before; the
+// Camera list offers that framing and the file's own cameras (an orthographic one listed,
+// dimmed, not taken), and the field of view drags.
+TEST_F(EditorUi, TheCameraListTakesTheModelsCamerasAndTheFieldOfViewDrags) {
+    test::GltfBuilder model = test::twoQuadsAndTheirCameras();
+    model.writeGltf(path("quads.gltf"));
+    EXPECT_EQ(currentCameraName(state_), "the scene's");
+    orbitCamera(state_.scene.camera, 1.2f, 0.4f);   // from the side and above
+    EXPECT_EQ(currentCameraName(state_), "free");
+    ASSERT_TRUE(openFile(state_, path("quads.gltf"))) << state_.error;
+    frames(2);
+    Camera expected = state_.scene.camera;
+    frameAsModelViewer(expected, meshBounds(state_));
+    EXPECT_EQ(state_.scene.camera, expected) << "framed from the front";
+    EXPECT_EQ(currentCameraName(state_), kFrontCamera);
+    const LdrImage framed = services_->viewportPixels(EditorServices::Shown::Edited);
+
+    click(centreOf("Camera"));
+    ASSERT_TRUE(itemsOfLastFrame().count("camera:3"));
+    EXPECT_TRUE(itemsOfLastFrame().at("camera:3").dimmed) << "the orthographic camera";
+    EXPECT_FALSE(itemsOfLastFrame().at("camera:2").dimmed);
+    click(centreOf("camera:2"));   // "right", the file's camera 1
+    ASSERT_TRUE(state_.model);
+    expected = state_.scene.camera;
+    placeModelCamera(expected, state_.model->cameras[1], meshBounds(state_));
+    EXPECT_EQ(state_.scene.camera, expected);
+    EXPECT_EQ(currentCameraName(state_), "right");
+    EXPECT_EQ(state_.status, "Camera: right");
+    frames(2);
+    const LdrImage right = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(differingPixels(framed, right), 1000);
+    const size_t centre = (size_t(right.height / 2) * size_t(right.width) + size_t(right.width / 2)) * 4;
+    EXPECT_GT(right.rgba[centre + 1], right.rgba[centre]) << "the green quad fills the middle";
+
+    const float fov = state_.scene.camera.fovYDegrees;
+    const ImVec2 from = centreOf("FOV");
+    drag(from, ImVec2(from.x + 50.0f, from.y));
+    EXPECT_NEAR(state_.scene.camera.fovYDegrees, fov + 10.0f, 2.0f) << "0.2 degrees a pixel";
+    EXPECT_EQ(currentCameraName(state_), "free");
+    frames(2);
+    EXPECT_GT(differingPixels(right, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+
+    click(centreOf("Camera"));
+    click(centreOf("camera:0"));
+    expected = state_.scene.camera;
+    frameAsModelViewer(expected, meshBounds(state_));
+    EXPECT_EQ(state_.scene.camera, expected) << "the front again, at the field of view now set";
 }
 
 // Issue 23: Escape did not close the F1 help; it does, as any help window.

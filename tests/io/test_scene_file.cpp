@@ -9,6 +9,7 @@
 #include "io/json_writer.h"
 #include "io/scene_file.h"
 #include "scene/camera_control.h"
+#include "shading/shading.h"
 
 namespace patina {
 namespace {
@@ -223,6 +224,31 @@ TEST(SceneFile, AVersion2SceneOfAModelKeepsItsOneModelAndVersion3ChoosesPerPart)
     const std::string unknown = errorOf(R"({"format": "patina-scene", "version": 3, "modelBrdf": "phong"})");
     EXPECT_NE(unknown.find("/modelBrdf: unknown BRDF model \"phong\""), std::string::npos) << unknown;
     EXPECT_NE(unknown.find("gltf"), std::string::npos) << unknown;   // the known ones listed
+}
+
+// "aces" was Narkowicz's fit before Hill's came: a file that says so still shows it, and is
+// written back under the name that says which; every tone map's name round-trips.
+TEST(SceneFile, TheOldAcesNameReadsAsNarkowiczAndEveryToneMapRoundTrips) {
+    std::vector<std::string> warnings;
+    const Scene old = sceneFromJson(
+        parseJsonText(R"({"format": "patina-scene", "version": 1, "display": {"tonemap": "aces"}})", "old.json"),
+        "old.json", ".", warnings);
+    EXPECT_EQ(old.display.tonemap, Tonemap::AcesNarkowicz);
+    EXPECT_EQ(tonemapShaderIndex(old.display.tonemap), shader::TONEMAP_ACES_NARKOWICZ);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(sceneToJson(old)["display"]["tonemap"], "aces-narkowicz");
+    for (const Tonemap tonemap : kTonemaps) {
+        Scene scene = defaultScene();
+        scene.display.tonemap = tonemap;
+        const Json saved = sceneToJson(scene);
+        EXPECT_EQ(saved["display"]["tonemap"], std::string(tonemapName(tonemap)));
+        EXPECT_EQ(sceneFromJson(saved, "saved.json", ".", warnings).display.tonemap, tonemap);
+    }
+    const std::string refused = errorOf(R"({"format": "patina-scene", "version": 2, "display": {"tonemap": "aces2"}})");
+    EXPECT_NE(refused.find("/display/tonemap: unknown tone map \"aces2\" (known: none, pbr-neutral, aces-hill, agx, "
+                           "aces-narkowicz, reinhard)"),
+              std::string::npos)
+        << refused;
 }
 
 // A version 1 file with a "range" key (unknown there) must not turn it into the window when
