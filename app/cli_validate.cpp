@@ -68,6 +68,7 @@ std::pair<int, int> validateFile(const std::string& path, const PbrRanges& range
         return {reportColour(path, material.baseColor, material.metallic, ranges) ? 0 : 1, 1};
     }
     const std::shared_ptr<const Model> model = assets.drawnModel(path);
+    printWarnings(model->notes);   // what the picture lacks of the file, as render and the editor say
     int bad = 0;
     for (size_t i = 0; i < model->materials.size(); ++i) {
         const std::string where = path + " material " + std::to_string(i) + " \"" + model->materials[i].name + "\"";

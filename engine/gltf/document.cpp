@@ -3,6 +3,7 @@
 #include <new>
 
 #include "common/one_line.h"
+#include "gltf/extensions.h"
 #include "gltf/files.h"
 #include "gltf/glb.h"
 #include "gltf/json_check.h"
@@ -12,12 +13,6 @@
 namespace patina::gltf {
 
 namespace {
-
-// Extensions a file may require (section 3.12): Patina reads them all.
-bool canRequire(const std::string& extension) {
-    return extension == "KHR_materials_specular" || extension == "KHR_materials_ior" ||
-           extension == "KHR_texture_transform" || extension == "KHR_materials_emissive_strength";
-}
 
 // tinygltf's image callback: the encoded bytes are kept for images.cpp, which decodes only
 // what a material uses. A buffer view's bytes are left where they are: images.cpp reads them
@@ -35,7 +30,7 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
            const std::string& baseDir, std::string& error, std::string& warning, const std::string& source) {
     if (looksLikeGlb(bytes)) {
         const GlbChunks glb = splitGlb(bytes, source);
-        checkGltfJson(glb.json, true, source);
+        refuseUndrawnRequired(checkGltfJson(glb.json, true, source), source);
         // tinygltf reads the layout again from the header: give it one without other chunks.
         const std::vector<uint8_t> joined = glb.onlyJsonAndBin ? std::vector<uint8_t>() : joinGlb(glb.json, glb.bin, glb.binSize);
         const std::vector<uint8_t>& clean = glb.onlyJsonAndBin ? bytes : joined;
@@ -46,7 +41,7 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
         throw InputError(source + ": neither a glTF binary (a .glb starts with \"glTF\") nor glTF JSON (a .gltf is "
                                   "a JSON object)");
     }
-    checkGltfJson(json, false, source);
+    refuseUndrawnRequired(checkGltfJson(json, false, source), source);
     return loader.LoadASCIIFromString(&model, &error, &warning, json.data(), unsigned(json.size()), baseDir);
 }
 
@@ -76,11 +71,6 @@ tinygltf::Model loadDocument(const std::filesystem::path& path, const std::strin
         // tinygltf collects messages line by line: one line, its lines apart by ';'.
         const std::string message = oneLine(error.empty() ? warning : error, ';');
         throw InputError(source + ": " + (message.empty() ? "cannot be loaded" : message));
-    }
-    for (const std::string& extension : model.extensionsRequired) {
-        if (!canRequire(extension)) {
-            throw InputError(source + ": requires the extension " + extension + ", which Patina does not support");
-        }
     }
     return model;
 }

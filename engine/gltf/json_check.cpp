@@ -104,7 +104,7 @@ private:
         bool array;
         size_t index, pointerBase, patternBase;
     };
-    static constexpr size_t kDeepestRule = 8;   // segments of the longest pattern in json_rules.cpp
+    static constexpr size_t kDeepestRule = 9;   // segments of the longest pattern in json_rules.cpp
 
     const JsonRule* rule() const {
         if (frames_.empty() || frames_.size() > kDeepestRule) {
@@ -135,7 +135,12 @@ public:
         return value({Found::Unsigned, std::to_string(n), double(n)});
     }
     bool number_float(number_float_t n, const string_t& text) override { return value({Found::Float, text, n}); }
-    bool string(string_t&) override { return value({Found::String, "a string"}); }
+    bool string(string_t& text) override {
+        if (depth_ == 2 && rootKey_ == "extensionsRequired") {   // its array's names
+            required_.push_back(text);
+        }
+        return value({Found::String, "a string"});
+    }
     bool binary(binary_t&) override { return value({Found::String, "binary data"}); }
 
     bool start_object(std::size_t) override {
@@ -199,6 +204,7 @@ public:
     }
 
     const std::string& problem() const { return problem_; }
+    const std::vector<std::string>& required() const { return required_; }
 
 private:
     bool value(const Found& found) {
@@ -230,15 +236,17 @@ private:
     size_t buffer_ = 0;
     TypedPath path_;
     std::string problem_;
+    std::vector<std::string> required_;   // /extensionsRequired's names
 };
 
 }  // namespace
 
-void checkGltfJson(std::string_view json, bool glb, const std::string& source) {
+std::vector<std::string> checkGltfJson(std::string_view json, bool glb, const std::string& source) {
     Checker checker(glb);
     if (!SaxJson::sax_parse(json.begin(), json.end(), &checker)) {
         throw InputError(source + ": " + (checker.problem().empty() ? "invalid JSON" : checker.problem()));
     }
+    return checker.required();
 }
 
 }  // namespace patina::gltf

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace patina::gltf {
 
@@ -14,7 +15,9 @@ constexpr size_t kMaxJsonDepth = 64;
 constexpr size_t kMaxJsonValues = size_t(4) << 20;
 constexpr size_t kMaxJsonObjects = size_t(256) << 10;
 
-// Throws InputError("SOURCE: ...") for the first rule broken.
-void checkGltfJson(std::string_view json, bool glb, const std::string& source);
+// Throws InputError("SOURCE: ...") for the first rule broken. Returns the file's
+// extensionsRequired, so that a file Patina cannot draw is refused by name before tinygltf
+// trips on what the extension changed (a Draco mesh's accessors have no bufferView).
+std::vector<std::string> checkGltfJson(std::string_view json, bool glb, const std::string& source);
 
 }  // namespace patina::gltf

@@ -61,6 +61,13 @@ void materials(Rules& rules) {
     arrayOf(rules, extensions + "/KHR_materials_specular/specularColorFactor", kNumber);
     rules[extensions + "/KHR_materials_ior"] = kObject;
     rules[extensions + "/KHR_materials_ior/ior"] = kNumber;
+    const std::string specGloss = extensions + "/KHR_materials_pbrSpecularGlossiness";
+    rules[specGloss] = kObject;
+    arrayOf(rules, specGloss + "/diffuseFactor", kNumber);
+    arrayOf(rules, specGloss + "/specularFactor", kNumber);
+    rules[specGloss + "/glossinessFactor"] = kNumber;
+    textureInfo(rules, specGloss + "/diffuseTexture");
+    textureInfo(rules, specGloss + "/specularGlossinessTexture");
 }
 
 void textures(Rules& rules) {

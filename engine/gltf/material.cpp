@@ -48,8 +48,10 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     const double largestColor = color.empty() ? 1.0 : *std::max_element(color.begin(), color.end());
     const std::string iorAt = what + "/extensions/" + kIor;
     const double ior = numberField(extensionOf(material.extensions, kIor), "ior", kExportIor, iorAt, source);
-    if (ior < 1.0) {
-        throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1");
+    // 0 is allowed beside 1 and above: KHR_materials_ior's schema keeps it for converting
+    // specular-glossiness materials (F0 = 1, the specular colour then F0 itself).
+    if (ior < 1.0 && ior != 0.0) {
+        throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1 (and not 0)");
     }
     const double f0 = std::min(f0FromIor(ior) * largestColor, 1.0) * specularFactor;
     result.specular = unit(f0 / kF0PerSpecular);

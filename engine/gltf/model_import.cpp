@@ -4,6 +4,7 @@
 
 #include "gltf/document.h"
 #include "gltf/draws.h"
+#include "gltf/extensions.h"
 #include "gltf/images.h"
 #include "gltf/model_materials.h"
 #include "geometry/tangents.h"
@@ -58,16 +59,33 @@ void addMissingTangents(Model& model) {
     }
 }
 
+// Every extension the file uses, and a note for each whose effect the picture lacks.
+void tellExtensions(const tinygltf::Model& document, Model& model) {
+    model.extensions = gltf::modelExtensions(document.extensionsUsed, document.extensionsRequired);
+    for (const ModelExtension& extension : model.extensions) {
+        if (extension.support == ExtensionSupport::NotDrawn || extension.support == ExtensionSupport::Unknown) {
+            model.notes.push_back("uses " + gltf::extensionLine(extension));
+        }
+    }
+}
+
 }  // namespace
 
 std::optional<Model> importGltfModel(const std::filesystem::path& path, const Progress& progress) {
     const std::string source = path.string();
     const tinygltf::Model document = gltf::loadDocument(path, source);
     Model model = gltf::modelGeometry(document, source);
-    model.materials = gltf::modelMaterials(document, source, model.notes);
+    tellExtensions(document, model);
+    std::vector<gltf::SpecGlossMaterial> specGloss;
+    model.materials = gltf::modelMaterials(document, source, model.notes, &specGloss);
     if (!attachImages(document, model, source, progress)) {
         return std::nullopt;
     }
+    for (gltf::SpecGlossMaterial& material : specGloss) {   // its maps' images, decoded (or gone)
+        material.diffuse.image = model.materials[size_t(material.material)].baseColor.image;
+        material.specularGlossiness.image = model.materials[size_t(material.material)].metallicRoughness.image;
+    }
+    gltf::convertSpecularGlossiness(model, specGloss);
     addMissingTangents(model);
     return model;
 }

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "gltf/material.h"
+#include "gltf/spec_gloss.h"
 #include "gltf/values.h"
 #include "files/input_error.h"
 
@@ -68,6 +70,9 @@ public:
         : document_(document), source_(source), notes_(notes), noted_(document.textures.size(), false) {}
 
     ModelMaterial read(int index);
+    // KHR_materials_pbrSpecularGlossiness of material `index`, if it has one: its factors and
+    // maps, which `result`'s base colour and metallic-roughness slots take until converted.
+    std::optional<SpecGlossMaterial> specularGlossiness(int index, ModelMaterial& result);
 
 private:
     template <typename Info>
@@ -177,6 +182,61 @@ glm::vec3 emissionOf(const tinygltf::Material& material, const std::string& wher
     return glm::vec3(unit(e[0]), unit(e[1]), unit(e[2])) * float(strength);
 }
 
+// A textureInfo inside an extension, where tinygltf leaves it as an untyped value.
+tinygltf::TextureInfo textureInfoOf(const tinygltf::Value* object, const char* key, const std::string& where,
+                                    const std::string& source) {
+    tinygltf::TextureInfo info;
+    if (!object || !object->Has(key)) {
+        return info;   // index -1: no map
+    }
+    const tinygltf::Value& value = object->Get(key);
+    info.index = int(numberField(&value, "index", -1.0, where + "/" + key, source));
+    info.texCoord = int(numberField(&value, "texCoord", 0.0, where + "/" + key, source));
+    if (value.Has("extensions") && value.Get("extensions").IsObject()) {
+        const tinygltf::Value& extensions = value.Get("extensions");
+        for (const std::string& name : extensions.Keys()) {
+            info.extensions[name] = extensions.Get(name);
+        }
+    }
+    return info;
+}
+
+// Factors of the extension (its README's defaults: white diffuse and specular, glossiness 1),
+// the colours linear as the file holds them.
+SpecularGlossiness specGlossFactors(const tinygltf::Value* object, const std::string& where, const std::string& source) {
+    SpecularGlossiness factors;
+    const std::vector<double> diffuse = numbersField(object, "diffuseFactor", 4, where, source);
+    if (!diffuse.empty()) {
+        factors.diffuse = glm::vec3(unit(diffuse[0]), unit(diffuse[1]), unit(diffuse[2]));
+        factors.alpha = unit(diffuse[3]);
+    }
+    const std::vector<double> specular = numbersField(object, "specularFactor", 3, where, source);
+    if (!specular.empty()) {
+        factors.specular = glm::vec3(unit(specular[0]), unit(specular[1]), unit(specular[2]));
+    }
+    factors.glossiness = unit(numberField(object, "glossinessFactor", 1.0, where, source));
+    return factors;
+}
+
+std::optional<SpecGlossMaterial> MaterialReader::specularGlossiness(int index, ModelMaterial& result) {
+    const char* name = "KHR_materials_pbrSpecularGlossiness";
+    const tinygltf::Value* object = extensionOf(document_.materials[size_t(index)].extensions, name);
+    if (!object) {
+        return std::nullopt;
+    }
+    const std::string where = at("materials", index) + "/extensions/" + name;
+    SpecGlossMaterial found;
+    found.material = index;
+    found.factors = specGlossFactors(object, where, source_);
+    found.diffuse = slot(textureInfoOf(object, "diffuseTexture", where, source_), where + "/diffuseTexture");
+    found.specularGlossiness = slot(textureInfoOf(object, "specularGlossinessTexture", where, source_),
+                                    where + "/specularGlossinessTexture");
+    // Decoded with the other maps (model_import.cpp), then converted (spec_gloss.h).
+    result.baseColor = found.diffuse;
+    result.metallicRoughness = found.specularGlossiness;
+    return found;
+}
+
 ModelMaterial MaterialReader::read(int index) {
     const tinygltf::Material& material = document_.materials[size_t(index)];
     const std::string where = at("materials", index), pbrAt = where + "/pbrMetallicRoughness";
@@ -209,12 +269,17 @@ ModelMaterial MaterialReader::read(int index) {
 }  // namespace
 
 std::vector<ModelMaterial> modelMaterials(const tinygltf::Model& document, const std::string& source,
-                                          std::vector<std::string>& notes) {
+                                          std::vector<std::string>& notes, std::vector<SpecGlossMaterial>* specGloss) {
     MaterialReader reader(document, source, notes);
     std::vector<ModelMaterial> materials;
     materials.reserve(document.materials.size());
     for (size_t m = 0; m < document.materials.size(); ++m) {
         materials.push_back(reader.read(int(m)));
+        if (specGloss) {
+            if (std::optional<SpecGlossMaterial> found = reader.specularGlossiness(int(m), materials.back())) {
+                specGloss->push_back(*found);
+            }
+        }
     }
     return materials;
 }

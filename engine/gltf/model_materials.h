@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include "gltf/spec_gloss.h"
 #include "model/model.h"
 
 namespace patina::gltf {
@@ -15,7 +16,10 @@ namespace patina::gltf {
 // KHR_texture_basisu, EXT_texture_webp or MSFT_texture_dds adds a note to `notes` and leaves its
 // slot empty (the factor alone). Throws InputError for an index out of range, a texCoord other
 // than 0 or 1, a sampler value or alpha mode glTF does not define, or a value of the wrong type.
+// `specGloss`, where given, gets each material with KHR_materials_pbrSpecularGlossiness, whose
+// slots then hold its diffuse and specular-glossiness maps until convertSpecularGlossiness.
 std::vector<ModelMaterial> modelMaterials(const tinygltf::Model& document, const std::string& source,
-                                          std::vector<std::string>& notes);
+                                          std::vector<std::string>& notes,
+                                          std::vector<SpecGlossMaterial>* specGloss = nullptr);
 
 }  // namespace patina::gltf

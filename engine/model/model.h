@@ -124,12 +124,28 @@ struct ModelCamera {
     bool operator==(const ModelCamera&) const = default;
 };
 
+// An extension the file uses (glTF 2.0 section 3.12) and what Patina draws of it.
+enum class ExtensionSupport {
+    Drawn,      // shaded or read as its specification says
+    Metadata,   // nothing in it changes the picture (a licence, a document's history)
+    NotDrawn,   // known, but what it adds is left out: the picture differs from the file's
+    Unknown,    // not known to Patina: whatever it adds is left out
+};
+struct ModelExtension {
+    std::string name;
+    bool required = false;   // in extensionsRequired
+    ExtensionSupport support = ExtensionSupport::Unknown;
+    std::string effect;      // what Patina shows of it, for people
+    bool operator==(const ModelExtension&) const = default;
+};
+
 struct Model {
     std::vector<Mesh> primitives;        // each in its own (the mesh's) space
     std::vector<ModelMaterial> materials;
     std::vector<ModelImage> images;
     std::vector<DrawItem> draws;         // the default scene's node instances, in node order
     std::vector<ModelCamera> cameras;    // the default scene's camera nodes, in node order
+    std::vector<ModelExtension> extensions;   // every extension the file uses, in its order
     std::vector<std::string> notes;      // what was skipped or left out, a line each
 };
 

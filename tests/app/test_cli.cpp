@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "cli_runner.h"
+#include "gltf_builder.h"
 #include "gltf/model_export.h"
 #include "image/image.h"
 #include "image/png_text.h"
@@ -269,6 +270,32 @@ TEST_F(Cli, ValidateChecksAModelsMaterialsTexelByTexel) {
               std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stdoutText.find("two.glb material 1 \"right\": ok: dielectric, albedo 188 sRGB (30-240)"), std::string::npos)
         << r.stdoutText;
+}
+
+// Every file told: render and validate print what the picture lacks of a file's extensions, the
+// same lines; a file that requires one Patina cannot draw exits 3 naming it.
+TEST_F(Cli, RenderAndValidateNameTheExtensionsPatinaDoesNotDraw) {
+    test::GltfBuilder coated = test::cubeModel();
+    coated.json["extensionsUsed"] = {"KHR_materials_clearcoat"};
+    coated.json["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+    coated.writeGlb(path("coated.glb"));
+    const std::string line =
+        "warning: uses KHR_materials_clearcoat (not drawn): the clear coat is left out; the base layer shows bare";
+    const test::CliRun rendered = run("render --mesh " + path("coated.glb").string() + " --width 32 --height 24 --out " +
+                                      path("coated.png").string());
+    EXPECT_EQ(rendered.exitCode, 0) << rendered.stderrText;
+    EXPECT_NE(rendered.stderrText.find(line), std::string::npos) << rendered.stderrText;
+    const test::CliRun validated = run("validate " + path("coated.glb").string());
+    EXPECT_NE(validated.stderrText.find(line), std::string::npos) << validated.stderrText;
+
+    coated.json["extensionsRequired"] = {"KHR_materials_clearcoat"};
+    coated.writeGlb(path("required.glb"));
+    const test::CliRun refused = run("render --mesh " + path("required.glb").string() + " --out " +
+                                     path("required.png").string());
+    EXPECT_EQ(refused.exitCode, 3);
+    EXPECT_NE(refused.stderrText.find("requires the extension KHR_materials_clearcoat, which Patina does not draw"),
+              std::string::npos) << refused.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(path("required.png")));
 }
 
 TEST_F(Cli, ProbeOnCpuAndGpuAgree) {

@@ -1,6 +1,7 @@
 // Whole glTF models (engine/gltf/model_import.h) from real files: the glTF 2.0 test models of
 // Debian's assimp-testmodels (scripts/setup.sh installs it), written by other tools. Skipped,
 // naming the package, where it is not installed.
+#include <algorithm>
 #include <map>
 #include <optional>
 
@@ -191,7 +192,9 @@ TEST_F(GltfAssets, ClearCoatReadsNormalMapsFromPngAndJpegAndMakesTheirTangents) 
             EXPECT_EQ(std::abs(tangent.w), 1.0f);
         }
     }
-    EXPECT_TRUE(model.notes.empty());
+    // Nothing left out but the coat, which Patina does not draw, and says so.
+    EXPECT_EQ(model.notes, std::vector<std::string>{"uses KHR_materials_clearcoat (not drawn): the clear coat is left "
+                                                    "out; the base layer shows bare"});
 }
 
 // A node's own matrix: this file gives a matrix or nothing.
@@ -242,6 +245,20 @@ TEST_F(GltfAssets, TwoCylinderEngineHasEveryMaterialAndTheHierarchysTransforms) 
     EXPECT_GT(nested, 0u);   // some transforms come from parents too
 }
 
+// Files written by other tools with extensions Patina does not draw say so when they open.
+TEST_F(GltfAssets, ClearCoatTestAndTheSpecGlossBoxSayWhatIsNotDrawn) {
+    const Model coat = importGltfModel(kModels / "ClearCoat-glTF/ClearCoatTest.gltf");
+    ASSERT_EQ(coat.extensions.size(), 1u);
+    EXPECT_EQ(coat.extensions[0].name, "KHR_materials_clearcoat");
+    EXPECT_NE(std::find(coat.notes.begin(), coat.notes.end(),
+                        "uses KHR_materials_clearcoat (not drawn): the clear coat is left out; the base layer shows bare"),
+              coat.notes.end());
+    const Model box = importGltfModel(kModels / "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf");
+    ASSERT_EQ(box.extensions.size(), 1u);
+    EXPECT_EQ(box.extensions[0].name, "KHR_materials_pbrSpecularGlossiness");
+    EXPECT_FALSE(box.notes.empty());
+}
+
 TEST_F(GltfAssets, BrokenFilesAreRefusedWithClearErrors) {
     const std::pair<std::string, std::string> cases[] = {
         {"RecursiveNodes/RecursiveNodes.gltf", "/nodes/0: is its own ancestor (a cycle in the node hierarchy)"},
@@ -257,6 +274,8 @@ TEST_F(GltfAssets, BrokenFilesAreRefusedWithClearErrors) {
         {"wrongTypes/badString.gltf", "/scenes/0/name: must be a string, not 42"},
         {"wrongTypes/badUint.gltf", "/materials/0/pbrMetallicRoughness/baseColorTexture/index: texture -1 does not "
                                     "exist"},
+        // Named by its extension, not by what tinygltf trips on ("accessor[0] invalid bufferView").
+        {"draco/2CylinderEngine.gltf", "requires the extension KHR_draco_mesh_compression, which Patina does not draw"},
     };
     for (const auto& [name, message] : cases) {
         const fs::path file = kModels / name;

@@ -253,7 +253,7 @@ TEST_F(GltfHostile, WrongTypesAreRefusedWithThePlace) {
         {"/materials/0/extensions", {{"KHR_materials_specular", {{"specularFactor", "1"}}}},
          "/specularFactor: must be a number"},
         {"/extensionsRequired", {"KHR_draco_mesh_compression"},
-         "requires the extension KHR_draco_mesh_compression, which Patina does not support"},
+         "requires the extension KHR_draco_mesh_compression, which Patina does not draw"},
         {"/asset", nullptr, "asset"},
         {"/nodes/0/translation", {1e308, 0, 0}, "/nodes/0: its world transform is not finite in single precision"},
     };
@@ -263,6 +263,8 @@ TEST_F(GltfHostile, WrongTypesAreRefusedWithThePlace) {
         EXPECT_ERROR(error, c.message) << c.pointer << " = " << c.value.dump();
     }
     EXPECT_EQ(errorWith("/extensionsRequired", {"KHR_materials_specular"}), "(loaded)");
+    // ior 0: the schema's value for a converted specular-glossiness material (F0 1).
+    EXPECT_EQ(errorWith("/materials/0/extensions", {{"KHR_materials_ior", {{"ior", 0}}}}), "(loaded)");
 }
 
 TEST_F(GltfHostile, NonFiniteBinaryValuesAreRefused) {

@@ -667,7 +667,52 @@ TEST_F(GltfModel, ExtensionsPatinaDoesNotReadAreNotedOrRefused) {
                                        "KHR_materials_specular", "KHR_materials_ior"};
     EXPECT_EQ(errorOf(webp), "(loaded)");
     webp.json["extensionsRequired"] = {"KHR_texture_basisu"};
-    EXPECT_ERROR(errorOf(webp), "requires the extension KHR_texture_basisu, which Patina does not support");
+    EXPECT_ERROR(errorOf(webp), "requires the extension KHR_texture_basisu, which Patina does not draw (KTX2 images "
+                                "are not decoded); the file cannot be shown without it");
+}
+
+// Every extension a file uses is listed with what Patina draws of it, and each whose effect the
+// picture lacks is a note (the editor's status line, render and validate print them).
+TEST_F(GltfModel, EveryExtensionTheFileUsesIsToldWithWhatIsDrawnOfIt) {
+    GltfBuilder model = cubeModel();
+    model.json["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_clearcoat", "EXT_made_up",
+                                    "KHR_xmp_json_ld"};
+    model.json["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+    const Model loaded = load(model);
+    ASSERT_EQ(loaded.extensions.size(), 4u);
+    EXPECT_EQ(loaded.extensions[0].name, "KHR_texture_transform");
+    EXPECT_EQ(loaded.extensions[0].support, ExtensionSupport::Drawn);
+    EXPECT_EQ(loaded.extensions[1].support, ExtensionSupport::NotDrawn);
+    EXPECT_EQ(loaded.extensions[2].support, ExtensionSupport::Unknown);
+    EXPECT_EQ(loaded.extensions[3].support, ExtensionSupport::Metadata);
+    EXPECT_FALSE(loaded.extensions[1].required);
+    EXPECT_EQ(loaded.notes,
+              (std::vector<std::string>{
+                  "uses KHR_materials_clearcoat (not drawn): the clear coat is left out; the base layer shows bare",
+                  "uses EXT_made_up (unknown to Patina): whatever it adds is left out"}))
+        << allNotes(loaded);
+    // A required extension the file forgot to list as used is listed all the same.
+    model.json["extensionsRequired"] = {"KHR_texture_transform"};
+    model.json["extensionsUsed"] = Json::array();
+    const Model required = load(model);
+    ASSERT_EQ(required.extensions.size(), 1u);
+    EXPECT_TRUE(required.extensions[0].required);
+    EXPECT_TRUE(required.notes.empty()) << allNotes(required);
+}
+
+// A required extension Patina cannot draw is named before the parser trips on what it changed:
+// a Draco mesh's accessors have no bufferView, which tinygltf called "accessor[0] invalid bufferView".
+TEST_F(GltfModel, ARequiredDracoFileIsRefusedByItsExtensionsName) {
+    GltfBuilder model = cubeModel();
+    model.json["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    model.json["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    model.json["accessors"][0].erase("bufferView");
+    EXPECT_ERROR(errorOf(model), "requires the extension KHR_draco_mesh_compression, which Patina does not draw "
+                                 "(Draco-compressed meshes are not decoded); the file cannot be shown without it");
+    model.json["extensionsRequired"] = {"KHR_xmp_json_ld"};   // metadata: nothing to draw, nothing missing
+    model.json["extensionsUsed"] = {"KHR_xmp_json_ld"};
+    model.json["accessors"][0]["bufferView"] = 0;
+    EXPECT_EQ(errorOf(model), "(loaded)");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include "gltf/extensions.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
@@ -301,6 +302,32 @@ void drawMapSwitches(EditorState& state, EditorServices& services, int index) {
     }
 }
 
+// Every extension the model's file uses and what Patina draws of it: what the picture lacks
+// of the file is said here as in the status line when it opened.
+void drawModelExtensions(const Model& model) {
+    const std::string title = "File extensions (" + std::to_string(model.extensions.size()) + ")###File extensions";
+    const bool open = ImGui::CollapsingHeader(title.c_str());
+    recordItem("File extensions", "The glTF extensions the model's file uses, each with what Patina draws of it");
+    if (!open) {
+        return;
+    }
+    ImGui::PushTextWrapPos(0.0f);
+    if (model.extensions.empty()) {
+        ImGui::TextDisabled("None: the file is core glTF 2.0");
+    }
+    for (const ModelExtension& extension : model.extensions) {
+        const bool lacking =
+            extension.support == ExtensionSupport::NotDrawn || extension.support == ExtensionSupport::Unknown;
+        const std::string line = gltf::extensionLine(extension);
+        if (lacking) {
+            ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", line.c_str());   // the PBR tally's amber
+        } else {
+            ImGui::TextDisabled("%s", line.c_str());
+        }
+    }
+    ImGui::PopTextWrapPos();
+}
+
 // The edited part of a model: its factors, each multiplying its map as glTF defines.
 void drawModelMaterial(EditorState& state, EditorServices& services) {
     drawPartList(state);
@@ -318,6 +345,9 @@ void drawModelMaterial(EditorState& state, EditorServices& services) {
     drawFactors(material, modelMaterial(state, state.savedScene, selected), modelMaterial(state, untuned, selected));
     if (material != before) {
         setModelMaterial(state, state.scene, selected, material);
+    }
+    if (state.model) {
+        drawModelExtensions(*state.model);
     }
 }
 }  // namespace
