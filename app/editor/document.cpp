@@ -6,6 +6,7 @@
 #include "geometry/mesh.h"
 #include "scene/camera_control.h"
 #include "scene/light_rig.h"
+#include "text_match.h"
 
 namespace patina::editor {
 
@@ -142,6 +143,15 @@ BoundingSphere meshBounds(const Document& document) {
     return shapeBounds(document.scene, document.mesh.get());
 }
 
+float intensityScale(const Document& document, const Light& light) {
+    const bool scaled = light.type == LightType::Point || light.type == LightType::Sphere || light.type == LightType::Tube;
+    if (!scaled || document.scene.meshFile.empty()) {
+        return 1.0f;
+    }
+    const float radius = meshBounds(document).radius;
+    return radius * radius;
+}
+
 void frameMesh(Document& document) {
     const BoundingSphere bounds = meshBounds(document);
     frameCamera(document.scene.camera, bounds.center, bounds.radius);
@@ -166,6 +176,28 @@ PreparedScene preparedScene(const Document& document, const Scene& shown) {
     const bool file = !shown.meshFile.empty();
     return {shown, file ? document.mesh : builtinMesh(shown.mesh), document.environment,
             file ? document.model : nullptr};
+}
+
+std::vector<std::string> partNodes(const Document& document, int index) {
+    std::vector<std::string> nodes;
+    if (index < 0 || index >= modelMaterialCount(document)) {
+        return nodes;
+    }
+    for (const DrawItem& draw : document.model->draws) {
+        if (draw.material == index && std::find(nodes.begin(), nodes.end(), draw.node) == nodes.end()) {
+            nodes.push_back(draw.node);
+        }
+    }
+    return nodes;
+}
+
+bool partMatches(const Document& document, int index, const std::string& filter) {
+    if (filter.empty()) {
+        return true;
+    }
+    const std::vector<std::string> nodes = partNodes(document, index);
+    return containsAnyCase(document.model->materials.at(size_t(index)).name, filter) ||
+           std::any_of(nodes.begin(), nodes.end(), [&](const std::string& node) { return containsAnyCase(node, filter); });
 }
 
 int modelMaterialCount(const Document& document) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "reference/channel_image.h"
 #include "shading/brdf_models.h"
@@ -48,8 +49,12 @@ std::optional<PixelStory> pixelStory(const PreparedScene& prepared, const PixelS
     if (channel.key >= 0) {
         story.keyLight = lights[order[size_t(channel.key)]].name;
     }
-    // Each enabled light's lobes: the same gather over that light alone.
-    for (size_t i = 0; i < packed.size(); ++i) {
+    // Each enabled light's lobes: the same gather over that light alone, in the scene's order
+    // (the lights panel's), not the packing's (area lights last).
+    std::vector<size_t> byScene(packed.size());
+    std::iota(byScene.begin(), byScene.end(), size_t(0));
+    std::sort(byScene.begin(), byScene.end(), [&](size_t a, size_t b) { return order[a] < order[b]; });
+    for (size_t i : byScene) {
         const shader::ChannelInputs alone = gatherChannelInputs(model, point, {packed[i]}, -1, -1, nullptr);
         const Light& light = lights[order[i]];
         story.lights.push_back({light.name, std::string(lightTypeName(light.type)), alone.diffuse,

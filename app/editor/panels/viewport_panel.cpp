@@ -158,7 +158,7 @@ void drawToolbar(EditorState& state) {
     const ImGuiStyle& style = ImGui::GetStyle();
     auto radioWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };
     if (ImGui::Button("Set A")) {
-        state.compareA = editedMaterial(state);
+        state.compareA = labelledMaterial(state);
         if (state.compareView == CompareView::Single) {
             state.compareView = CompareView::Split;
         }
@@ -450,10 +450,10 @@ void drawSideLabels(const EditorState& state, ImVec2 origin, ImVec2 size) {
                                                             : std::floor(size.x / 2.0f);
     sideLabel('A', *state.compareA, origin.x + margin, origin.y + margin, a - 2.0f * margin, false);
     if (state.compareView == CompareView::Split) {
-        sideLabel('B', editedMaterial(state), origin.x + size.x - margin, origin.y + margin,
+        sideLabel('B', labelledMaterial(state), origin.x + size.x - margin, origin.y + margin,
                   size.x - a - 2.0f * margin, true);
     } else {
-        sideLabel('B', editedMaterial(state), origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
+        sideLabel('B', labelledMaterial(state), origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
                   false);
     }
 }
