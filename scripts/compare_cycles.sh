@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Patina side by side with Blender 3.4's Cycles and with its own ground truth, as a user would
-# check a glTF asset (issue 35, item 6; docs/LIGHTING.md, "Side by side with Cycles"). The truth is glTF 2.0's BRDF (Appendix
-# B) integrated by Patina's reference (`render --reference --model gltf`); Cycles, whose
-# Principled BSDF v1 is not glTF's model either, is a second opinion.
+# check a glTF asset (issue 35, item 6; docs/LIGHTING.md, "5. Side by side with Cycles"). The
+# truth is glTF 2.0's BRDF (Appendix B, single scattering) integrated by Patina's reference
+# (`render --reference --model gltf`); Cycles, whose Principled BSDF v1 is not glTF's model
+# either, is a second opinion.
 #
 # Three scenes, each under one HDRI (Blender's studio.exr, as compare_blender.sh's; HDRI=F
 # another) from one camera: BoxTextured and 2CylinderEngine (assimp's glTF 2.0 samples) and a
@@ -32,18 +33,20 @@
 #   - cycles.png/.svg/.pdf (`patina chart cycles OUT_DIR`): each model's distance to the truth
 #     against its distance to Cycles;
 #   - cycles_SCENE.png: the images as displayed and, under each, where it differs from the truth;
-# and prints the tables docs/LIGHTING.md, "Side by side with Cycles" quotes, with each renderer's noise (two estimates of one
-# image at N and N/4 samples differ by about sqrt(5) times the mean |noise| at N).
+# and prints the tables docs/LIGHTING.md quotes, with each renderer's noise (two estimates of one
+# image at N and N/4 samples differ by about sqrt(5) times the mean |noise| at N), and the sphere
+# grid sphere by sphere (scripts/sphere_grid_cells.py).
 #
 # Usage: bash scripts/compare_cycles.sh [--quick] [--out-dir D] [--work-dir W]
 #   --out-dir: default docs/lighting/cycles (with --quick a temporary folder);
-#   --quick: a sixteenth of the samples, to check the pipeline (its numbers are noise-bound);
+#   --quick: a quarter of the samples, to check the pipeline (its numbers are noise-bound);
 #   --work-dir: keep the renders there (default: a temporary folder, removed on exit).
-# BUILD_DIR overrides build/; REFERENCE_SAMPLES (default 1024) and CYCLES_SAMPLES (default 512)
-# the sample counts. Installs Debian's `blender` and python3-numpy when missing
-# (scripts/blender_setup.sh) and builds Patina (scripts/build.sh) when build/app/patina is
-# missing. Cycles and the ground truth run on the CPU: on two shared cores the whole run takes
-# about an hour (--quick: 5 minutes).
+# BUILD_DIR overrides build/; REFERENCE_SAMPLES (default 256) and CYCLES_SAMPLES (default 32)
+# the sample counts, small so that the whole run fits in minutes: more lower the noise floors
+# the script prints (1-6 levels at the defaults). Installs Debian's `blender` and python3-numpy
+# when missing (scripts/blender_setup.sh) and builds Patina (scripts/build.sh) when
+# build/app/patina is missing. Cycles and the ground truth run on the CPU: on two cores shared with other work the
+# whole run takes about 7 minutes (--quick: about 4, most of it Blender starting).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -51,8 +54,8 @@ build_dir=${BUILD_DIR:-build}
 patina="$root/$build_dir/app/patina"
 hdri=${HDRI:-/usr/share/blender/datafiles/studiolights/world/studio.exr}
 assimp=/usr/share/assimp/models/glTF2
-reference_samples=${REFERENCE_SAMPLES:-1024}
-cycles_samples=${CYCLES_SAMPLES:-512}
+reference_samples=${REFERENCE_SAMPLES:-256}
+cycles_samples=${CYCLES_SAMPLES:-32}
 tonemap=pbr-neutral
 exposure=0
 factor=2        # rendered at factor x the compared size, shrunk by a box
@@ -76,8 +79,8 @@ while [ $# -gt 0 ]; do
   shift
 done
 if [ "$quick" = 1 ]; then
-  reference_samples=$(( (reference_samples + 15) / 16 ))
-  cycles_samples=$(( (cycles_samples + 15) / 16 ))
+  reference_samples=$(( (reference_samples + 3) / 4 ))
+  cycles_samples=$(( (cycles_samples + 3) / 4 ))
 fi
 (( reference_samples >= 4 && cycles_samples >= 4 )) || die "REFERENCE_SAMPLES and CYCLES_SAMPLES must be at least 4 (a quarter is taken)"
 
@@ -109,9 +112,9 @@ python3 "$root/scripts/sphere_grid.py" "$work/sphere_grid.gltf"
 # model-viewer's camera-orbit (theta, phi in degrees) and its distance in units of the one that
 # fits the bounding sphere in the view.
 scenes=(
-  "spheres $work/sphere_grid.gltf 320 192 0 90 0.59"
-  "BoxTextured $assimp/BoxTextured-glTF/BoxTextured.gltf 256 256 35 60 1.05"
-  "2CylinderEngine $assimp/2CylinderEngine-glTF-Binary/2CylinderEngine.glb 256 256 30 65 0.8"
+  "spheres $work/sphere_grid.gltf 240 144 0 90 0.59"
+  "BoxTextured $assimp/BoxTextured-glTF/BoxTextured.gltf 160 160 35 60 1.05"
+  "2CylinderEngine $assimp/2CylinderEngine-glTF-Binary/2CylinderEngine.glb 192 192 30 65 0.8"
 )
 
 # camera BOUNDS THETA PHI ZOOM: "EX EY EZ TX TY TZ" for the box "X0 Y0 Z0 X1 Y1 Z1" (Patina's
@@ -217,5 +220,8 @@ awk -F, -v rs="$reference_samples" -v cs="$cycles_samples" 'NR > 1 {
              v[order[i] ",cycles-quarter,cycles"] / sqrt(5), cell(order[i] ",cycles-base-color,base-color")
     }
   }' "$csv"
+echo
+python3 "$root/scripts/sphere_grid_cells.py" "$patina" "$work/spheres" --tonemap "$tonemap" --downsample "$factor" \
+  --erode "$erode" || die "sphere_grid_cells.py failed"
 echo
 echo "CSV: ${csv#"$root"/}; chart: ${out_dir#"$root"/}/cycles.png; pictures: ${out_dir#"$root"/}/cycles_*.png"
