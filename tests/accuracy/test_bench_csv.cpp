@@ -166,6 +166,11 @@ TEST(BenchCsv, TheDocsCsvsReadBackToThemselves) {
     const LightingAccuracyResult lighting = parseLightingAccuracy({splitSum, "split_sum.csv"}, {cost, "lighting_cost.csv"}, false);
     EXPECT_EQ(splitSumCsv(lighting.accuracy.rows), splitSum);
     EXPECT_EQ(lighting.costs.size() + 2, size_t(std::count(cost.begin(), cost.end(), '\n')));   // header, directional
+    // scripts/compare_cycles.sh's, which docs/LIGHTING.md quotes and its chart is drawn from.
+    const std::string cycles = readText(docs / "lighting/cycles/cycles.csv");
+    const std::vector<RendererDifference> comparison = parseRendererComparison({cycles, "cycles.csv"});
+    EXPECT_EQ(rendererComparisonCsv(comparison), cycles);
+    EXPECT_FALSE(rendererComparisonChart(comparison, "reference").panels.empty());
 }
 
 TEST(BenchCsv, BadRowsAreBadInputNamingFileAndLine) {
