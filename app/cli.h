@@ -35,6 +35,8 @@ Command addAreaAccuracyCommand(CLI::App& app);
 Command addInspectCommand(CLI::App& app);
 // `patina chart`: a measurement's charts redrawn from the CSVs it wrote, measuring nothing.
 Command addChartCommand(CLI::App& app);
+// `patina difference`: linear images of one view compared as displayed, as CSV.
+Command addDifferenceCommand(CLI::App& app);
 // `patina validate`: exit 1 when a material is out of range (the lines say which).
 Command addValidateCommand(CLI::App& app);
 

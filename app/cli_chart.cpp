@@ -8,6 +8,7 @@
 #include "bench/csv_read.h"
 #include "bench/lighting_accuracy.h"
 #include "bench/render_bench.h"
+#include "bench/renderer_comparison.h"
 #include "cli.h"
 #include "files/file_bytes.h"
 #include "files/input_error.h"
@@ -33,10 +34,11 @@ Command addChartCommand(CLI::App& app) {
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
         "chart", "Redraw a measurement's charts from the CSVs it wrote, measuring nothing: bench (bench.csv), "
-                 "lighting (split_sum.csv and lighting_cost.csv) or render (render_bench.csv; needs --msaa)");
-    command->add_option("kind", options->kind, "bench, lighting or render")
+                 "lighting (split_sum.csv and lighting_cost.csv), render (render_bench.csv; needs --msaa) or cycles "
+                 "(cycles.csv, scripts/compare_cycles.sh's)");
+    command->add_option("kind", options->kind, "bench, lighting, render or cycles")
         ->required()
-        ->check(CLI::IsMember({"bench", "lighting", "render"}));
+        ->check(CLI::IsMember({"bench", "lighting", "render", "cycles"}));
     command->add_option("folder", options->folder, "The folder with the CSVs; the charts are written beside them")
         ->required();
     command->add_flag("--quick", options->quick, "lighting: the CSVs are from a --quick run (smaller frames timed)");
@@ -50,6 +52,10 @@ Command addChartCommand(CLI::App& app) {
         } else if (options->kind == "lighting") {
             writeLightingChart(folder, parseLightingAccuracy(readCsv(folder / "split_sum.csv"),
                                                              readCsv(folder / "lighting_cost.csv"), options->quick));
+        } else if (options->kind == "cycles") {
+            writeChart(folder / "cycles",
+                       rendererComparisonChart(parseRendererComparison(readCsv(folder / "cycles.csv")), "reference"),
+                       true);
         } else if (options->samples == 0) {
             throw InputError("chart render: give --msaa, the samples per pixel of the run (its title says them)");
         } else {

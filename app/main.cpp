@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
                      patina::cli::addLightingAccuracyCommand, patina::cli::addAreaAccuracyCommand,
                      patina::cli::addExportCommand, patina::cli::addValidateCommand,
-                     patina::cli::addInspectCommand, patina::cli::addChartCommand}) {
+                     patina::cli::addInspectCommand, patina::cli::addChartCommand,
+                     patina::cli::addDifferenceCommand}) {
         patina::cli::Command run = add(app);
         commands.emplace_back(app.get_subcommands({}).back(), std::move(run));
     }

@@ -1,19 +1,25 @@
-"""Blender's half of scripts/compare_blender.sh: Patina's default view of a sphere, rendered by Eevee.
+"""Blender's half of scripts/compare_blender.sh (Patina's default view of a sphere, rendered by
+Eevee) and of scripts/compare_cycles.sh (a glTF model rendered by Cycles to a linear image).
 
-Run inside Blender (it needs Eevee's GL context, so a display: compare_blender.sh starts an Xvfb):
+Run inside Blender (Eevee needs a GL context, so a display: compare_blender.sh starts an Xvfb):
 
     blender -b --factory-startup --python scripts/blender_render.py -- \
         --hdri studio.exr --material presets/gold.json --out eevee.png [--reruns 5]
     blender -b --factory-startup --python scripts/blender_render.py -- \
         --hdri studio.exr --model BoxTextured.glb --out eevee.png [--reruns 5]
     blender -b --factory-startup --python scripts/blender_render.py -- --hdri studio.exr --probe
+    blender -b --factory-startup --python scripts/blender_render.py -- --hdri studio.exr \
+        --model BoxTextured.gltf --render-cycles [--local] [--base-color] [--samples 512] [--seed 0] \
+        --width 512 --height 512 --camera EX EY EZ TX TY TZ FOV --out cycles.exr
+    blender -b --factory-startup --python scripts/blender_render.py -- --hdri x --model F.gltf --bounds
 
 The scene is Patina's default view converted to Blender's axes: Patina is +Y up, Blender +Z up,
 and a Patina point (x, y, z) is the Blender point (x, -z, y). So the camera at Patina's
 (0, 0.6, 3.4) stands at (0, -3.4, 0.6), looking at the origin with a vertical field of view of
-45 degrees; the UV sphere of radius 1 has Patina's tessellation (64 rings, 128 segments), smooth
+45 degrees (--camera gives another eye, target and field of view, in Patina's axes); the UV sphere of radius 1 has Patina's tessellation (64 rings, 128 segments), smooth
 shaded. The world is the HDRI at strength 1, turned by --world-rotation degrees about +Z (see
---probe), and the film uses the Standard view transform, as Patina's "none" tone map.
+--probe), with the pixels Patina sets to 0 (a NaN, infinite or negative value) set to 0 here
+too, and the film uses the Standard view transform, as Patina's "none" tone map.
 
 With --model, a glTF model takes the sphere's place, imported by Blender's own glTF importer
 (which turns glTF's +Y up into Blender's +Z up as above) with its materials and texture maps; the
@@ -25,6 +31,15 @@ write_still, so Eevee's shader compilation and the world's probe are in it) and 
 after a roughness change (every one to another value, so each is a change; the median is what
 compare_blender.sh reports). The first image is rendered at the preset's roughness and is the
 one compared; the re-renders go to a scratch file.
+
+Cycles mode (--render-cycles) renders once, on the CPU, without denoising or adaptive sampling,
+each pixel at its centre (a box filter 0.01 pixels wide, as Patina's ground truth samples it),
+to a 32-bit float OpenEXR of scene-linear Rec. 709 (no view transform). --local hides the model
+from every ray but the camera's (diffuse, glossy, transmission, volume and shadow rays), so each
+point is lit by the whole environment, unshadowed, as Patina shades it. --base-color shows each
+Principled BSDF's Base Color input (its map times its factor) as emission instead, to hold
+against Patina's `--channel base-color`. Bounds mode (--bounds) prints the imported model's
+world-space bounding box in Patina's axes, from which compare_cycles.sh places its cameras.
 
 Probe mode checks the orientation instead of assuming it: the world becomes an image whose
 pixels hold their own (u, v), a 2-degree camera looks along a few of Patina's directions, and the
@@ -61,13 +76,35 @@ def parse_arguments():
     parser.add_argument("--scratch", help="the re-renders' PNG (default: beside --out)")
     parser.add_argument("--size", type=int, default=512)
     parser.add_argument("--reruns", type=int, default=5)
-    parser.add_argument("--samples", type=int, help="Eevee's render samples (default: Blender's, 64)")
+    parser.add_argument("--samples", type=int, help="Eevee's render samples (default: Blender's, 64); "
+                        "with --render-cycles, Cycles' samples per pixel (default 256)")
     parser.add_argument("--world-rotation", type=float, default=-90.0,
                         help="degrees about +Z applied to the world lookup (default: Patina's orientation)")
     parser.add_argument("--probe", action="store_true", help="check the orientation and exit")
+    # compare_cycles.sh: a linear image by Cycles from a camera of its choosing.
+    parser.add_argument("--render-cycles", action="store_true",
+                        help="one Cycles render to --out as a linear OpenEXR (no timing, no re-renders)")
+    parser.add_argument("--local", action="store_true",
+                        help="--render-cycles: the model hidden from every ray but the camera's (no shadow, no "
+                             "interreflection: each point lit by the whole environment, as Patina shades it)")
+    parser.add_argument("--seed", type=int, default=0, help="--render-cycles: the sampling pattern's seed")
+    parser.add_argument("--base-color", action="store_true",
+                        help="--render-cycles: each material's base colour (its map times its factor) as emission "
+                             "instead of its BSDF, to hold against Patina's --channel base-color: where the two "
+                             "differ, the view, the UVs or the texture filtering do")
+    parser.add_argument("--width", type=int, help="the image's width (default --size)")
+    parser.add_argument("--height", type=int, help="the image's height (default --size)")
+    parser.add_argument("--camera", type=float, nargs=7, metavar=("EX", "EY", "EZ", "TX", "TY", "TZ", "FOV"),
+                        default=[0.0, 0.6, 3.4, 0.0, 0.0, 0.0, 45.0],
+                        help="eye, target (Patina's axes, +Y up) and vertical field of view in degrees "
+                             "(default Patina's default view)")
+    parser.add_argument("--bounds", action="store_true",
+                        help="print the --model's bounding box in Patina's axes and exit")
     options = parser.parse_args(argv)
-    if not options.probe and not ((options.material or options.model) and options.out):
-        parser.error("--material or --model, and --out, are needed unless --probe")
+    if options.bounds and not options.model:
+        parser.error("--bounds needs --model")
+    if not (options.probe or options.bounds) and not ((options.material or options.model) and options.out):
+        parser.error("--material or --model, and --out, are needed unless --probe or --bounds")
     return options
 
 
@@ -75,13 +112,13 @@ def patina_to_blender(x, y, z):
     return Vector((x, -z, y))
 
 
-def empty_scene(size):
+def empty_scene(width, height):
     scene = bpy.context.scene
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj)
     scene.render.engine = "BLENDER_EEVEE"
-    scene.render.resolution_x = size
-    scene.render.resolution_y = size
+    scene.render.resolution_x = width
+    scene.render.resolution_y = height
     scene.render.resolution_percentage = 100
     scene.render.film_transparent = False
     scene.display_settings.display_device = "sRGB"
@@ -105,7 +142,8 @@ def add_camera(scene, position, target, fov_y_degrees):
     camera.data.sensor_fit = "VERTICAL"
     camera.data.angle_y = math.radians(fov_y_degrees)
     camera.data.clip_start = 0.05
-    camera.data.clip_end = 100.0
+    # A model hundreds of units across (2CylinderEngine) is framed from as far away.
+    camera.data.clip_end = max(100.0, 10.0 * (target - position).length)
     return camera
 
 
@@ -143,7 +181,7 @@ def patina_uv(direction):
 
 
 def probe(options):
-    scene = empty_scene(8)
+    scene = empty_scene(8, 8)
     width, height = 512, 256
     image = bpy.data.images.new("uv probe", width, height, float_buffer=True)
     pixels = []
@@ -220,12 +258,37 @@ def add_sphere(scene, options):
     return bsdf
 
 
+def image_size(options):
+    return options.width or options.size, options.height or options.size
+
+
+def add_view(scene, options):
+    """The camera of --camera (Patina's axes) and the world of --hdri, turned by --world-rotation."""
+    eye, target, fov = options.camera[0:3], options.camera[3:6], options.camera[6]
+    add_camera(scene, patina_to_blender(*eye), patina_to_blender(*target), fov)
+    set_world(scene, load_environment(options.hdri), options.world_rotation)
+
+
+def load_environment(path):
+    """The HDRI as Patina reads it: a pixel with a NaN, infinite or negative value is set to 0
+    (environment/equirect.h, replaceInvalidPixels), so both renderers are lit by the same image."""
+    import numpy
+    image = bpy.data.images.load(path, check_existing=False)
+    pixels = numpy.empty(len(image.pixels), dtype=numpy.float32)
+    image.pixels.foreach_get(pixels)
+    rgba = pixels.reshape(-1, 4)
+    bad = ~numpy.isfinite(rgba[:, :3]).all(axis=1) | (numpy.nan_to_num(rgba[:, :3]) < 0.0).any(axis=1)
+    report("environment_invalid_pixels", int(bad.sum()))
+    if bad.any():
+        rgba[:, :3] = numpy.where(numpy.isfinite(rgba[:, :3]) & (rgba[:, :3] >= 0.0), rgba[:, :3], 0.0)
+        image.pixels.foreach_set(pixels)   # the buffer in memory, which the render reads
+    return image
+
+
 def render(options):
-    scene = empty_scene(options.size)
+    scene = empty_scene(*image_size(options))
     bsdf = import_model(options.model) if options.model else add_sphere(scene, options)
-    add_camera(scene, patina_to_blender(0.0, 0.6, 3.4), Vector((0.0, 0.0, 0.0)), 45.0)
-    image = bpy.data.images.load(options.hdri, check_existing=False)
-    set_world(scene, image, options.world_rotation)
+    add_view(scene, options)
 
     eevee = scene.eevee
     if options.samples:
@@ -257,10 +320,96 @@ def render(options):
     return 0
 
 
+def model_objects():
+    return [obj for obj in bpy.data.objects if obj.type == "MESH"]
+
+
+def bounds(options):
+    """The imported model's world-space bounding box, in Patina's axes."""
+    empty_scene(8, 8)
+    import_model(options.model)
+    corners = [obj.matrix_world @ Vector(corner) for obj in model_objects() for corner in obj.bound_box]
+    # Blender (x, y, z) is Patina (x, z, -y).
+    patina = [(c.x, c.z, -c.y) for c in corners]
+    low = [min(p[i] for p in patina) for i in range(3)]
+    high = [max(p[i] for p in patina) for i in range(3)]
+    report("bounds", " ".join(f"{v:.6g}" for v in low + high))
+    return 0
+
+
+def show_base_color():
+    """Every Principled BSDF's output replaced by an Emission of what feeds its Base Color."""
+    for material in bpy.data.materials:
+        if not material.node_tree:
+            continue
+        nodes, links = material.node_tree.nodes, material.node_tree.links
+        for bsdf in [node for node in nodes if node.type == "BSDF_PRINCIPLED"]:
+            emission = nodes.new("ShaderNodeEmission")
+            base = bsdf.inputs["Base Color"]
+            if base.is_linked:
+                links.new(base.links[0].from_socket, emission.inputs["Color"])
+            else:
+                emission.inputs["Color"].default_value = base.default_value
+            for link in list(bsdf.outputs["BSDF"].links):
+                links.new(emission.outputs["Emission"], link.to_socket)
+
+
+def cycles(options):
+    """One Cycles render of the model to --out, linear (scene-referred Rec. 709) OpenEXR."""
+    width, height = image_size(options)
+    scene = empty_scene(width, height)
+    if options.model:
+        import_model(options.model)
+    else:
+        add_sphere(scene, options)
+    add_view(scene, options)
+    scene.render.engine = "CYCLES"
+    settings = scene.cycles
+    settings.device = "CPU"
+    settings.samples = options.samples or 256
+    settings.use_adaptive_sampling = False   # the same samples everywhere: noise measured once holds
+    settings.use_denoising = False
+    settings.seed = options.seed
+    # Each pixel at its centre, as Patina's ground truth (and its GPU's texture reads) take it:
+    # compare_cycles.sh renders everything at twice the size and shrinks it by a box, which is
+    # then the one pixel filter of all three renderers.
+    settings.pixel_filter_type = "BOX"
+    settings.filter_width = 0.01
+    if options.base_color:
+        show_base_color()
+    if options.local:
+        for obj in model_objects():
+            obj.visible_diffuse = obj.visible_glossy = obj.visible_transmission = False
+            obj.visible_volume_scatter = obj.visible_shadow = False
+    distributions = sorted({node.distribution for material in bpy.data.materials if material.node_tree
+                            for node in material.node_tree.nodes if node.type == "BSDF_PRINCIPLED"})
+    report("cycles_settings", f"samples={settings.samples} max_bounces={settings.max_bounces} "
+           f"clamp_direct={settings.sample_clamp_direct:g} clamp_indirect={settings.sample_clamp_indirect:g} "
+           f"filter={settings.pixel_filter_type} width={settings.filter_width:g}px seed={settings.seed} "
+           f"local={options.local} base_color={options.base_color} "
+           f"principled_distribution={','.join(distributions)}")
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_mode = "RGB"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.image_settings.exr_codec = "ZIP"
+    scene.render.filepath = options.out
+    start = time.perf_counter()
+    bpy.ops.render.render(write_still=True)
+    report("cycles_render_s", f"{time.perf_counter() - start:.2f}")
+    return 0
+
+
 def main():
     options = parse_arguments()
     try:
-        status = probe(options) if options.probe else render(options)
+        if options.probe:
+            status = probe(options)
+        elif options.bounds:
+            status = bounds(options)
+        elif options.render_cycles:
+            status = cycles(options)
+        else:
+            status = render(options)
     except Exception as error:   # Blender keeps running after a script's exception: exit non-zero
         import traceback
         traceback.print_exc()

@@ -22,9 +22,11 @@
 #
 # Usage: bash scripts/compare_blender.sh [--model F.gltf|F.glb]   (BUILD_DIR overrides build/)
 #
-# Installs Debian's `blender` (3.4.1) with apt when it is missing (as root, else with sudo) and
-# builds Patina (scripts/build.sh) when build/app/patina is missing. Eevee needs an OpenGL context
-# even with `blender -b`, and the editor a window, so both run on an Xvfb of the script's own
+# Installs Debian's `blender` (3.4.1) and python3-numpy (blender_render.py cleans the HDRI with
+# it, and Blender's glTF importer needs it) with apt when they are missing (as root, else with
+# sudo; scripts/blender_setup.sh, shared with compare_cycles.sh) and builds Patina
+# (scripts/build.sh) when build/app/patina is missing. Eevee needs an OpenGL context even with
+# `blender -b`, and the editor a window, so both run on an Xvfb of the script's own
 # (xvfb and xdotool come with scripts/setup.sh); nothing is shown on your display. Everything
 # shares one fresh Mesa shader cache (MESA_SHADER_CACHE_DIR), so the first Blender render and
 # the cold Patina render compile their shaders from nothing. Temporary files, the Xvfb and the
@@ -76,31 +78,9 @@ median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { printf "%.3f
 load_at_start=$(cut -d' ' -f1-3 /proc/loadavg)   # other work on the machine slows both sides
 
 # --- 1. Blender ----------------------------------------------------------------------------
-if ! command -v blender >/dev/null; then
-  say "blender is missing: installing Debian's package"
-  sudo_cmd=()
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null || die "blender is missing and this is not root and there is no sudo: install it with 'apt-get install --no-install-recommends blender'"
-    sudo_cmd=(sudo)
-  fi
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq || die "apt-get update failed"
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends blender || die "installing blender failed"
-fi
-if [ -n "$model" ] && ! python3 -c 'import numpy' 2>/dev/null; then
-  # Blender's glTF importer needs numpy, which the package only recommends.
-  say "python3-numpy is missing (Blender's glTF importer needs it): installing Debian's package"
-  sudo_cmd=()
-  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends python3-numpy ||
-    die "installing python3-numpy failed"
-fi
-blender_version=$(blender --factory-startup --version 2>/dev/null | awk '/^Blender [0-9]/ { print $2; exit }')
-[ -n "$blender_version" ] || die "'blender --version' printed no version: is $(command -v blender) Blender?"
-case $blender_version in
-  3.4.*) ;;
-  *) say "warning: Blender $blender_version, not the 3.4 this comparison was written for (Debian 12's)" ;;
-esac
+# shellcheck source=scripts/blender_setup.sh
+source "$root/scripts/blender_setup.sh"
+ensure_blender numpy
 [ -f "$hdri" ] || die "$hdri is missing (Debian's blender-data package ships it)"
 
 # --- 2. Patina -----------------------------------------------------------------------------
@@ -124,16 +104,6 @@ DISPLAY=":$(head -1 "$work/display")"
 export DISPLAY
 export MESA_SHADER_CACHE_DIR="$work/mesa-cache"
 mkdir -p "$MESA_SHADER_CACHE_DIR"
-
-run_blender() {   # LOG ARGS...: blender_render.py's arguments; its output goes to LOG
-  local log=$1
-  shift
-  if ! blender -b --factory-startup --python "$root/scripts/blender_render.py" -- "$@" >"$log" 2>&1; then
-    tail -25 "$log" >&2
-    die "blender failed (its log's end is above)"
-  fi
-}
-value() { awk -v key="$2" '$1 == "PATINA_COMPARE" && $2 == key { $1 = ""; $2 = ""; sub(/^ +/, ""); print; exit }' "$1"; }
 
 # --- 3. Eevee --------------------------------------------------------------------------------
 say "checking the environment's orientation in Blender (a probe render)"

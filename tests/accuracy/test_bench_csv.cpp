@@ -10,6 +10,7 @@
 #include "bench/bench.h"
 #include "bench/lighting_accuracy.h"
 #include "bench/render_bench.h"
+#include "bench/renderer_comparison.h"
 #include "cli_runner.h"
 #include "files/input_error.h"
 #include "image/image.h"
@@ -107,6 +108,50 @@ TEST(BenchCsv, RenderBenchReadsBackToTheSameCsvAndCharts) {
     expectSameChart(renderBenchScaleChart(read), renderBenchScaleChart(written));
 }
 
+// compare_cycles.sh's rows: two scenes, each model held to the truth and to Cycles, and the
+// noise rows (an image held to itself at fewer samples), which are no series.
+std::vector<RendererDifference> sampleComparison() {
+    std::vector<RendererDifference> rows;
+    for (const char* scene : {"spheres", "BoxTextured"}) {
+        const double s = scene[0] == 's' ? 1.0 : 2.0;
+        rows.push_back({scene, "gltf", "reference", 3.25 * s, 1.5, 21120});
+        rows.push_back({scene, "epic", "reference", 6.5 * s, 4.125, 21120});
+        rows.push_back({scene, "cycles", "reference", 9.0, -7.75, 21120});
+        rows.push_back({scene, "reference-quarter", "reference", 2.236, 0.0, 21120});
+        rows.push_back({scene, "gltf", "cycles", 10.0 * s, 8.0, 21120});
+        rows.push_back({scene, "epic", "cycles", 12.0 * s, 9.5, 21120});
+        rows.push_back({scene, "cycles-quarter", "cycles", 1.5, 0.001, 21120});
+    }
+    return rows;
+}
+
+TEST(BenchCsv, RendererComparisonReadsBackToTheSameCsvAndChart) {
+    const std::vector<RendererDifference> written = sampleComparison();
+    const std::string csv = rendererComparisonCsv(written);
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "scene,image,against,mean_abs_srgb,mean_signed_srgb,pixels");
+    const std::vector<RendererDifference> read = parseRendererComparison({csv, "cycles.csv"});
+    ASSERT_EQ(read.size(), written.size());
+    EXPECT_EQ(read[1].image, "epic");
+    EXPECT_EQ(read[1].meanSigned, 4.125);
+    EXPECT_EQ(read[13].pixels, 21120u);
+    EXPECT_EQ(rendererComparisonCsv(read), csv);
+    const Chart chart = rendererComparisonChart(read, "reference");
+    expectSameChart(chart, rendererComparisonChart(written, "reference"));
+    // One panel, held to Cycles: gltf and epic (cycles is held to the truth alone, the quarters
+    // to their own image), then the diagonal from 0 to the largest distance.
+    ASSERT_EQ(chart.panels.size(), 1u);
+    const ChartPanel& panel = chart.panels[0];
+    ASSERT_EQ(panel.series.size(), 3u);
+    EXPECT_EQ(panel.series[0].label, "gltf");
+    EXPECT_EQ(panel.series[1].label, "epic");
+    ASSERT_EQ(panel.series[1].points.size(), 2u);
+    EXPECT_EQ(panel.series[1].points[1], glm::dvec2(13.0, 24.0));   // BoxTextured: to the truth, to Cycles
+    EXPECT_EQ(panel.series[1].pointLabels[1], "BoxTextured");
+    EXPECT_EQ(panel.series[2].points.back(), glm::dvec2(24.0, 24.0));
+    std::vector<RendererDifference> truthOnly(written.begin(), written.begin() + 4);
+    EXPECT_THROW(rendererComparisonChart(truthOnly, "reference"), InputError);
+}
+
 // What the docs' charts are redrawn from: each CSV the writer wrote reads back to itself.
 TEST(BenchCsv, TheDocsCsvsReadBackToThemselves) {
     const std::filesystem::path docs = std::filesystem::path(PATINA_SOURCE_DIR) / "docs";
@@ -121,6 +166,11 @@ TEST(BenchCsv, TheDocsCsvsReadBackToThemselves) {
     const LightingAccuracyResult lighting = parseLightingAccuracy({splitSum, "split_sum.csv"}, {cost, "lighting_cost.csv"}, false);
     EXPECT_EQ(splitSumCsv(lighting.accuracy.rows), splitSum);
     EXPECT_EQ(lighting.costs.size() + 2, size_t(std::count(cost.begin(), cost.end(), '\n')));   // header, directional
+    // scripts/compare_cycles.sh's, which docs/LIGHTING.md quotes and its chart is drawn from.
+    const std::string cycles = readText(docs / "lighting/cycles/cycles.csv");
+    const std::vector<RendererDifference> comparison = parseRendererComparison({cycles, "cycles.csv"});
+    EXPECT_EQ(rendererComparisonCsv(comparison), cycles);
+    EXPECT_FALSE(rendererComparisonChart(comparison, "reference").panels.empty());
 }
 
 TEST(BenchCsv, BadRowsAreBadInputNamingFileAndLine) {
@@ -135,6 +185,15 @@ TEST(BenchCsv, BadRowsAreBadInputNamingFileAndLine) {
     EXPECT_THROW(parseBenchCsv({header + "epic,1,2\n", "bench.csv"}), InputError);
     const std::string render = renderBenchCsv({});
     EXPECT_THROW(parseRenderBenchCsv({render + "lights,single,laser,3,1,1,1,1,1,1,1\n", "r.csv"}, 1), InputError);
+    const std::string comparison = rendererComparisonCsv({});
+    try {
+        parseRendererComparison({comparison + "spheres,gltf,reference,1.5,0.5,12\nspheres,epic,,1,1,1\n", "cycles.csv"});
+        FAIL() << "an empty name";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("cycles.csv:3:"), std::string::npos) << error.what();
+    }
+    EXPECT_THROW(parseRendererComparison({comparison + "spheres,gltf,reference,1.5,0.5,12.5\n", "c.csv"}), InputError);
+    EXPECT_THROW(parseRendererComparison({comparison + "spheres,gltf,reference,1.5,0.5\n", "c.csv"}), InputError);
 }
 
 class ChartCommand : public test::ScratchTest {};
@@ -152,6 +211,11 @@ TEST_F(ChartCommand, RedrawsTheChartsFromTheCsvsBesideThem) {
     for (const char* file : {"render_lights.png", "render_scale.png"}) {
         EXPECT_GT(decodePng(readFileBytes(path(file))).width, 0) << file;
     }
+    write("cycles.csv", rendererComparisonCsv(sampleComparison()));
+    run = test::runPatina("chart cycles " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    EXPECT_GT(decodePng(readFileBytes(path("cycles.png"))).width, 0);
+    EXPECT_TRUE(std::filesystem::exists(path("cycles.svg")));
     // The samples are not in the CSV, and a folder without the CSVs has nothing to draw.
     EXPECT_EQ(test::runPatina("chart render " + dir_.string(), dir_).exitCode, 3);
     EXPECT_EQ(test::runPatina("chart lighting " + dir_.string(), dir_).exitCode, 3);

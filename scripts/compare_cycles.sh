@@ -1,0 +1,227 @@
+#!/usr/bin/env bash
+# Patina side by side with Blender 3.4's Cycles and with its own ground truth, as a user would
+# check a glTF asset (issue 35, item 6; docs/LIGHTING.md, "5. Side by side with Cycles"). The
+# truth is glTF 2.0's BRDF (Appendix B, single scattering) integrated by Patina's reference
+# (`render --reference --model gltf`); Cycles, whose Principled BSDF v1 is not glTF's model
+# either, is a second opinion.
+#
+# Three scenes, each under one HDRI (Blender's studio.exr, as compare_blender.sh's; HDRI=F
+# another) from one camera: BoxTextured and 2CylinderEngine (assimp's glTF 2.0 samples) and a
+# grid of spheres, roughness 0 to 1 across and metallic 0, 0.5, 1 down, of one base colour
+# (scripts/sphere_grid.py). The cameras orbit each model's bounding box as model-viewer's
+# camera-orbit does (its centre the target; Blender reports the box, blender_render.py
+# --bounds) and both renderers are given the same eye, target and field of view. Each scene is
+# rendered at twice the compared size by
+#   - Patina with `--model epic` (the seed's UE4 model), `gltf` (glTF's, the default of a glTF
+#     file's materials) and `gltf-single` (glTF's without the split sum's multiple scattering);
+#   - Patina's ground truth of `gltf` at REFERENCE_SAMPLES, and at a quarter of them (its noise);
+#   - Cycles at CYCLES_SAMPLES as a user renders (shadows and interreflection, Blender's
+#     defaults but for the pixel filter), at a quarter of them with another seed (its noise), and
+#     with the model hidden from every ray but the camera's ("cycles-local": each point lit by
+#     the whole sky, as Patina and its ground truth light it, so that only the materials differ);
+#   - both renderers' base colours alone (`--channel base-color --reference`; Cycles with each
+#     material's base colour as emission), which must agree where the view, the UVs and the
+#     texture filtering do: the check that the two see the same thing;
+# all linear (Patina's PFMs, Cycles' OpenEXRs), every pixel sampled at its centre (Cycles' pixel
+# filter 0.01 pixels wide). `patina difference` then shrinks each by 2 (a box over the pixels:
+# the one pixel filter of all), puts every one through one exposure (0) and one tone curve
+# (Khronos PBR Neutral, shaders/shared/display.glsl) and sRGB, and takes the mean |difference|
+# over R, G, B, in levels of 255, over the pixels that show the model (Patina's coverage, its
+# silhouette eroded by one pixel, which each renderer antialiases its own way). Into OUT_DIR:
+#   - cycles.csv: scene, image, against, mean |difference|, mean difference (positive: the image
+#     is brighter), pixels compared;
+#   - cycles.png/.svg/.pdf (`patina chart cycles OUT_DIR`): each model's distance to the truth
+#     against its distance to Cycles;
+#   - cycles_SCENE.png: the images as displayed and, under each, where it differs from the truth;
+# and prints the tables docs/LIGHTING.md quotes, with each renderer's noise (two estimates of one
+# image at N and N/4 samples differ by about sqrt(5) times the mean |noise| at N), and the sphere
+# grid sphere by sphere (scripts/sphere_grid_cells.py).
+#
+# Usage: bash scripts/compare_cycles.sh [--quick] [--out-dir D] [--work-dir W]
+#   --out-dir: default docs/lighting/cycles (with --quick a temporary folder);
+#   --quick: a quarter of the samples, to check the pipeline (its numbers are noise-bound);
+#   --work-dir: keep the renders there (default: a temporary folder, removed on exit).
+# BUILD_DIR overrides build/; REFERENCE_SAMPLES (default 256) and CYCLES_SAMPLES (default 32)
+# the sample counts, small so that the whole run fits in minutes: more lower the noise floors
+# the script prints (1-6 levels at the defaults). Installs Debian's `blender` and python3-numpy
+# when missing (scripts/blender_setup.sh) and builds Patina (scripts/build.sh) when
+# build/app/patina is missing. Cycles and the ground truth run on the CPU: on two cores shared with other work the
+# whole run takes about 7 minutes (--quick: about 4, most of it Blender starting).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+build_dir=${BUILD_DIR:-build}
+patina="$root/$build_dir/app/patina"
+hdri=${HDRI:-/usr/share/blender/datafiles/studiolights/world/studio.exr}
+assimp=/usr/share/assimp/models/glTF2
+reference_samples=${REFERENCE_SAMPLES:-256}
+cycles_samples=${CYCLES_SAMPLES:-32}
+tonemap=pbr-neutral
+exposure=0
+factor=2        # rendered at factor x the compared size, shrunk by a box
+erode=1         # pixels of the silhouette left out
+fov=30          # every camera's vertical field of view, degrees
+# Blender's Environment Texture turned by -90 degrees about +Z matches Patina's equirect
+# orientation (compare_blender.sh; blender_render.py --probe checks it).
+blender_world_rotation=-90
+
+say() { echo "compare_cycles: $*" >&2; }
+die() { say "error: $*"; exit 1; }
+
+out_dir='' quick=0 work=''
+while [ $# -gt 0 ]; do
+  case $1 in
+    --quick) quick=1 ;;
+    --out-dir) [ -n "${2:-}" ] || die "--out-dir needs a folder"; out_dir=$2; shift ;;
+    --work-dir) [ -n "${2:-}" ] || die "--work-dir needs a folder"; work=$(realpath -m "$2"); shift ;;
+    *) die "unknown argument '$1' (usage: compare_cycles.sh [--quick] [--out-dir D] [--work-dir W])" ;;
+  esac
+  shift
+done
+if [ "$quick" = 1 ]; then
+  reference_samples=$(( (reference_samples + 3) / 4 ))
+  cycles_samples=$(( (cycles_samples + 3) / 4 ))
+fi
+(( reference_samples >= 4 && cycles_samples >= 4 )) || die "REFERENCE_SAMPLES and CYCLES_SAMPLES must be at least 4 (a quarter is taken)"
+
+if [ -n "$work" ]; then
+  mkdir -p "$work"
+else
+  work=$(mktemp -d "${TMPDIR:-/tmp}/patina-cycles.XXXXXX")
+  trap 'rm -rf "$work"' EXIT
+fi
+trap 'exit 130' INT TERM
+if [ -z "$out_dir" ]; then
+  if [ "$quick" = 1 ]; then out_dir="$work/out"; else out_dir="$root/docs/lighting/cycles"; fi
+fi
+mkdir -p "$out_dir"
+
+# shellcheck source=scripts/blender_setup.sh
+source "$root/scripts/blender_setup.sh"
+ensure_blender numpy
+[ -f "$hdri" ] || die "$hdri is missing (Debian's blender-data package ships it)"
+[ -d "$assimp" ] || die "$assimp is missing (Debian's assimp-testmodels package ships it)"
+if [ ! -x "$patina" ]; then
+  say "$patina is missing: building (scripts/build.sh, 10-20 minutes the first time)"
+  BUILD_DIR="$build_dir" bash scripts/build.sh || die "the build failed"
+fi
+export PATINA_CACHE_DIR="$work/patina-cache"
+
+python3 "$root/scripts/sphere_grid.py" "$work/sphere_grid.gltf"
+# name, file, compared width and height, the camera's orbit about the bounding box's centre as
+# model-viewer's camera-orbit (theta, phi in degrees) and its distance in units of the one that
+# fits the bounding sphere in the view.
+scenes=(
+  "spheres $work/sphere_grid.gltf 240 144 0 90 0.59"
+  "BoxTextured $assimp/BoxTextured-glTF/BoxTextured.gltf 160 160 35 60 1.05"
+  "2CylinderEngine $assimp/2CylinderEngine-glTF-Binary/2CylinderEngine.glb 192 192 30 65 0.8"
+)
+
+# camera BOUNDS THETA PHI ZOOM: "EX EY EZ TX TY TZ" for the box "X0 Y0 Z0 X1 Y1 Z1" (Patina's
+# axes), eye = target + d (sin phi sin theta, cos phi, sin phi cos theta) as model-viewer's
+# camera-orbit, d = ZOOM * radius / sin(fov / 2).
+camera() {
+  awk -v b="$1" -v theta="$2" -v phi="$3" -v zoom="$4" -v fov="$fov" 'BEGIN {
+    split(b, v, " "); pi = atan2(0, -1)
+    cx = (v[1] + v[4]) / 2; cy = (v[2] + v[5]) / 2; cz = (v[3] + v[6]) / 2
+    r = sqrt((v[4] - v[1])^2 + (v[5] - v[2])^2 + (v[6] - v[3])^2) / 2
+    d = zoom * r / sin(fov * pi / 360); t = theta * pi / 180; p = phi * pi / 180
+    printf "%.6g %.6g %.6g %.6g %.6g %.6g", cx + d * sin(p) * sin(t), cy + d * cos(p), cz + d * sin(p) * cos(t), cx, cy, cz
+  }'
+}
+
+sheet=()
+csv="$out_dir/cycles.csv"
+echo "scene,image,against,mean_abs_srgb,mean_signed_srgb,pixels" >"$csv"
+compare() {   # SCENE_DIR SCENE IMAGE... : patina difference's rows, the scene's name first
+  local dir=$1 name=$2
+  shift 2
+  local paths=() names=() image
+  for image in "$@"; do
+    names+=("$image")
+    if [ -f "$dir/$image.pfm" ]; then paths+=("$dir/$image.pfm"); else paths+=("$dir/$image.exr"); fi
+  done
+  "$patina" difference "${paths[@]}" --names "${names[@]}" --coverage "$dir/coverage.pfm" --downsample "$factor" \
+    --erode "$erode" --exposure "$exposure" --tonemap "$tonemap" --scene "$name" "${sheet[@]}" | tail -n +2 >>"$csv"
+}
+
+for line in "${scenes[@]}"; do
+  read -r name file width height theta phi zoom <<<"$line"
+  dir="$work/$name"
+  mkdir -p "$dir"
+  [ -f "$file" ] || die "$file is missing"
+  run_blender "$dir/bounds.log" --hdri "$hdri" --model "$file" --bounds
+  bounds=$(value "$dir/bounds.log" bounds)
+  [ -n "$bounds" ] || die "Blender reported no bounding box for $file"
+  read -r ex ey ez tx ty tz <<<"$(camera "$bounds" "$theta" "$phi" "$zoom")"
+  w=$((width * factor)) h=$((height * factor))
+  cat >"$dir/scene.json" <<EOF
+{"format": "patina-scene", "version": 3, "mesh": "$file",
+ "camera": {"position": [$ex, $ey, $ez], "target": [$tx, $ty, $tz], "fovYDegrees": $fov},
+ "lights": [{"type": "environment", "name": "hdri", "source": "$hdri", "intensity": 1.0, "rotationDegrees": 0}],
+ "display": {"exposure": $exposure, "tonemap": "$tonemap", "backgroundEnvironment": true}}
+EOF
+  render() {   # OUT_STEM ARGS...: one patina render of the scene at the rendered size
+    local stem=$1
+    shift
+    "$patina" render --scene "$dir/scene.json" --width "$w" --height "$h" --out "$dir/$stem.png" --hdr "$dir/$stem.pfm" \
+      "$@" 2>"$dir/$stem.log" || { cat "$dir/$stem.log" >&2; die "patina render $stem of $name failed"; }
+  }
+  say "$name: Patina (coverage, base colour, epic, gltf, gltf-single; ground truth at $reference_samples and $((reference_samples / 4)) samples)"
+  render coverage --channel geometry-normal --reference
+  render base-color --channel base-color --reference
+  for model in epic gltf gltf-single; do render "$model" --model "$model"; done
+  render reference --model gltf --reference --reference-samples "$reference_samples"
+  render reference-quarter --model gltf --reference --reference-samples $((reference_samples / 4))
+
+  say "$name: Cycles at $cycles_samples samples (as rendered, and local), and at $((cycles_samples / 4)) with another seed"
+  cycles=(--hdri "$hdri" --model "$file" --render-cycles --width "$w" --height "$h" --world-rotation "$blender_world_rotation"
+          --camera "$ex" "$ey" "$ez" "$tx" "$ty" "$tz" "$fov")
+  run_blender "$dir/cycles.log" "${cycles[@]}" --samples "$cycles_samples" --out "$dir/cycles.exr"
+  run_blender "$dir/cycles-local.log" "${cycles[@]}" --samples "$cycles_samples" --local --out "$dir/cycles-local.exr"
+  run_blender "$dir/cycles-quarter.log" "${cycles[@]}" --samples $((cycles_samples / 4)) --seed 1 --out "$dir/cycles-quarter.exr"
+  run_blender "$dir/cycles-base-color.log" "${cycles[@]}" --samples 4 --base-color --out "$dir/cycles-base-color.exr"
+  say "$name: $(value "$dir/cycles.log" cycles_settings), $(value "$dir/cycles.log" cycles_render_s) s"
+
+  sheet=(--sheet "$out_dir/cycles_$name.png")
+  compare "$dir" "$name" reference gltf epic gltf-single cycles-local cycles
+  sheet=()
+  compare "$dir" "$name" reference reference-quarter
+  compare "$dir" "$name" cycles-local gltf epic gltf-single
+  compare "$dir" "$name" cycles gltf epic gltf-single cycles-quarter
+  compare "$dir" "$name" base-color cycles-base-color
+done
+
+"$patina" chart cycles "$out_dir"
+
+# The table: each model against the truth and Cycles, and each renderer's noise.
+awk -F, -v rs="$reference_samples" -v cs="$cycles_samples" 'NR > 1 {
+    v[$1 "," $2 "," $3] = $4; s[$1 "," $2 "," $3] = $5
+    if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 }
+  }
+  function cell(key) { return (key in v) ? sprintf("%.1f (%+.1f)", v[key], s[key]) : "" }
+  END {
+    printf "\nmean |sRGB difference| (mean signed difference), levels of 255\n\n"
+    print "| scene | image | to the reference | to Cycles, local | to Cycles |"
+    print "|---|---|---:|---:|---:|"
+    for (i = 1; i <= n; ++i) {
+      split("epic gltf gltf-single cycles-local cycles", images, " ")
+      for (j = 1; j <= 5; ++j) {
+        m = images[j]
+        printf "| %s | %s | %s | %s | %s |\n", order[i], m, cell(order[i] "," m ",reference"),
+               cell(order[i] "," m ",cycles-local"), cell(order[i] "," m ",cycles")
+      }
+    }
+    printf "\nnoise, the mean |noise| of one image (its two estimates differ by sqrt(5) times it), and the base colours:\n\n"
+    print "| scene | reference, " rs " samples | Cycles, " cs " samples | base colour, Cycles to Patina |"
+    print "|---|---:|---:|---:|"
+    for (i = 1; i <= n; ++i) {
+      printf "| %s | %.2f | %.2f | %s |\n", order[i], v[order[i] ",reference-quarter,reference"] / sqrt(5),
+             v[order[i] ",cycles-quarter,cycles"] / sqrt(5), cell(order[i] ",cycles-base-color,base-color")
+    }
+  }' "$csv"
+echo
+python3 "$root/scripts/sphere_grid_cells.py" "$patina" "$work/spheres" --tonemap "$tonemap" --downsample "$factor" \
+  --erode "$erode" || die "sphere_grid_cells.py failed"
+echo
+echo "CSV: ${csv#"$root"/}; chart: ${out_dir#"$root"/}/cycles.png; pictures: ${out_dir#"$root"/}/cycles_*.png"
