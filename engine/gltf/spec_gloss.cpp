@@ -56,7 +56,7 @@ void bakeMaps(Model& model, const SpecGlossMaterial& source, ModelMaterial& mate
             const glm::vec3 encoded = shader::srgbColor(converted.baseColor);
             b[0] = unorm8(encoded.r), b[1] = unorm8(encoded.g), b[2] = unorm8(encoded.b), b[3] = unorm8(converted.alpha);
             uint8_t* m = &metalRough.rgba[(size_t(y) * size_t(width) + size_t(x)) * 4];
-            m[0] = 255, m[1] = unorm8(converted.roughness), m[2] = unorm8(converted.metallic), m[3] = 255;
+            m[0] = 0, m[1] = unorm8(converted.roughness), m[2] = unorm8(converted.metallic), m[3] = 255;
         }
     }
     // The maps keep the sampling of the one they came from (the diffuse's first).

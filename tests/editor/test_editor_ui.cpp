@@ -393,6 +393,32 @@ TEST_F(EditorUi, ThePartsListTellsPartsApartSearchesAndGrows) {
     EXPECT_EQ(state_.selectedModelMaterial, 33);
 }
 
+// Every file told (issue 36): a model whose file has an extension Patina does not draw says so
+// in amber beside the status line, and the File extensions section lists it.
+TEST_F(EditorUi, AnExtensionNotDrawnIsCountedInTheStatusAndListed) {
+    test::GltfBuilder coated = test::cubeModel();
+    coated.json["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
+    coated.json["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+    coated.writeGlb(path("coated.glb"));
+    ASSERT_TRUE(openFile(state_, path("coated.glb"))) << state_.error;
+    frames(3);
+    std::map<std::string, RecordedItem> items = itemsOfLastFrame();
+    ASSERT_TRUE(items.count("status notes")) << state_.status;
+    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_clearcoat (not drawn)"), std::string::npos);
+    ASSERT_TRUE(items.count("File extensions"));
+    ASSERT_EQ(state_.model->extensions.size(), 2u);
+    click(centreOf("File extensions"));
+    frames(2);
+    EXPECT_TRUE(ImGui::FindWindowByName("Material")) << "the panel draws the open section without failing";
+
+    // A file with nothing left out has no count.
+    coated.json.erase("extensionsUsed");
+    coated.writeGlb(path("plain.glb"));
+    ASSERT_TRUE(openFile(state_, path("plain.glb"))) << state_.error;
+    frames(3);
+    EXPECT_FALSE(itemsOfLastFrame().count("status notes")) << state_.status;
+}
+
 // Issue 34: a preset put on a model's part kept the part's name, and the comparison's halves
 // both read "A: left" / "B: left". They say which preset, while the part holds it unchanged.
 TEST_F(EditorUi, APresetOnAPartIsNamedInTheComparisonsLabels) {

@@ -228,9 +228,20 @@ void drawStatus(EditorState& state) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float button =
         screenshot ? ImGui::CalcTextSize("Open folder").x + 2.0f * style.FramePadding.x + style.ItemSpacing.x : 0.0f;
-    const std::string shown = fittedText(status, std::max(ImGui::GetContentRegionAvail().x - button, px(60)));
+    // The lines under the first are notes (what a model's file has that is not drawn): their
+    // count in amber, so that they are not missed behind the tooltip.
+    const auto notes = std::count(state.status.begin(), state.status.end(), '\n');
+    const std::string count = notes == 0 ? "" : "+" + std::to_string(notes) + (notes == 1 ? " note" : " notes");
+    const float counted = notes == 0 ? 0.0f : ImGui::CalcTextSize(count.c_str()).x + style.ItemSpacing.x;
+    const std::string shown =
+        fittedText(status, std::max(ImGui::GetContentRegionAvail().x - button - counted, px(60)));
     ImGui::TextDisabled("%s", shown.c_str());
     recordItem("status", state.status.empty() ? "What the editor did last shows here" : state.status.c_str());
+    if (notes > 0) {
+        ImGui::SameLine();
+        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", count.c_str());   // the PBR tally's amber
+        recordItem("status notes", state.status.c_str());
+    }
     if (screenshot) {
         ImGui::SameLine();
         if (ImGui::SmallButton("Open folder")) {
