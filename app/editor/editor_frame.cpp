@@ -73,7 +73,7 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 // The lobe; with Advanced on, the accuracy numbers beside it, a research tool, in a tab of their own.
 void drawBottomPanel(EditorState& state, EditorServices& services) {
     if (!state.showAdvanced) {
-        drawLobePanel(state);
+        drawLobePanel(state, services);
         return;
     }
     if (!ImGui::BeginTabBar("bottom")) {
@@ -82,7 +82,7 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
     const bool lobeTab = ImGui::BeginTabItem("Lobe");
     recordItem("Lobe tab", "The BRDF in the plane of incidence");
     if (lobeTab) {
-        drawLobePanel(state);
+        drawLobePanel(state, services);
         ImGui::EndTabItem();
     }
     const bool accuracyTab = ImGui::BeginTabItem("Accuracy");

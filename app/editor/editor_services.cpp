@@ -170,6 +170,20 @@ const AccuracyNumbers& EditorServices::accuracy(const Material& material) {
     return accuracy_->second;
 }
 
+const std::vector<AlbedoPoint>& EditorServices::albedo(const MaterialParameters& material) {
+    for (auto it = albedoCurves_.begin(); it != albedoCurves_.end(); ++it) {
+        if (it->first == material) {
+            albedoCurves_.splice(albedoCurves_.begin(), albedoCurves_, it);
+            return albedoCurves_.front().second;
+        }
+    }
+    albedoCurves_.emplace_front(material, albedoCurve(material, 19, 256));
+    if (albedoCurves_.size() > 4) {
+        albedoCurves_.pop_back();
+    }
+    return albedoCurves_.front().second;
+}
+
 const Texture* EditorServices::benchChart(const std::filesystem::path& png) {
     std::error_code error;
     const auto modified = std::filesystem::last_write_time(png, error);

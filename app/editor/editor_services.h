@@ -1,11 +1,13 @@
 #pragma once
 #include <filesystem>
+#include <list>
 #include <map>
 #include <memory>
 #include <optional>
 
 #include "gl/renderer.h"
 #include "accuracy/accuracy.h"
+#include "accuracy/albedo_curve.h"
 #include "editor_state.h"
 #include "gl/texture.h"
 #include "image/pbr_tally.h"
@@ -90,6 +92,11 @@ public:
 
     // accuracyOf(material), recomputed only when the material changes.
     const AccuracyNumbers& accuracy(const Material& material);
+    // The lobe panel's directional albedo of `material` against theta_v beside its ground truth
+    // (accuracy/albedo_curve.h), kept for the last few materials asked about: the ground truth
+    // takes milliseconds, too long to redo every frame of a slider drag for a material that did
+    // not change. A curve stays where it is while it is kept (A's and B's are drawn together).
+    const std::vector<AlbedoPoint>& albedo(const MaterialParameters& material);
     // The bench chart PNG as a texture, reloaded when the file changes; null when there is none.
     const Texture* benchChart(const std::filesystem::path& png);
 
@@ -148,6 +155,7 @@ private:
     };
     std::map<std::filesystem::path, PresetEntry> presets_;
     std::optional<std::pair<Material, AccuracyNumbers>> accuracy_;
+    std::list<std::pair<MaterialParameters, std::vector<AlbedoPoint>>> albedoCurves_;   // the latest first
     Thumbnail benchChart_;
     std::pair<std::shared_ptr<const Environment>, std::unique_ptr<Texture>> environmentThumbnail_;
     std::shared_ptr<const Model> thumbnailModel_;   // held, so another model at its address is not taken for it

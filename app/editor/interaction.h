@@ -49,6 +49,7 @@ struct Interaction {
     int selectedModelMaterial = 0;           // of the shown model: the one the Material panel edits
     PartOutlineCachePtr partOutline;         // its outline, kept while the eye stays (part_picking.h)
     std::string partFilter;                  // the Parts list's search box
+    int partScrolledTo = -1;                 // the selection the Parts list last scrolled into view
     // The preset last applied to each part of the shown model, and the part's material as it
     // made it (labelledMaterial names a part with it while its values are still those).
     std::map<int, std::pair<std::string, Material>> partPresets;

@@ -8,13 +8,15 @@
 #include "autosave.h"
 #include "environment_load.h"
 #include "model_load.h"
+#include "open_folder.h"
 
 namespace patina::editor {
 
 struct EditorState;
 
-// Jobs: the work the editor does beside the user's, over many frames: an environment being
-// made ready, the autosave, and the last session's work offered back.
+// Jobs: the work the editor does beside the user's, over many frames: an environment or a model
+// being made ready, the autosave, the last session's work offered back, the screenshot asked
+// for, and the file managers it started.
 struct Jobs {
     // The cache of loaded files the editor owns; the environment's worker shares it.
     std::shared_ptr<AssetCache> assets = std::make_shared<AssetCache>();
@@ -36,6 +38,9 @@ struct Jobs {
     // F12's size, taken at the start of the next frame: the frame asking shows "Rendering..."
     // first, as a large screenshot keeps the window waiting for seconds.
     std::optional<std::pair<int, int>> screenshotRequested;
+    // File managers opened on the screenshots' folder that were still running after their
+    // moment, reaped by the next opening (open_folder.h).
+    RunningOpeners folderOpeners;
 };
 
 // Makes `source` ("builtin:NAME", an .hdr or .exr path) the scene's environment, adding one if

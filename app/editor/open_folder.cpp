@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstring>
 #include <thread>
-#include <vector>
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -12,17 +11,8 @@ extern char** environ;
 
 namespace patina::editor {
 
-namespace {
-// Openers still running after their moment (a file manager kept in the foreground): reaped on
-// later calls, so none stays a zombie for long.
-std::vector<pid_t>& stillRunning() {
-    static std::vector<pid_t> children;
-    return children;
-}
-}  // namespace
-
-std::string showFolder(const std::filesystem::path& folder, const std::string& opener) {
-    std::erase_if(stillRunning(), [](pid_t child) { return waitpid(child, nullptr, WNOHANG) != 0; });
+std::string showFolder(const std::filesystem::path& folder, const std::string& opener, RunningOpeners& running) {
+    std::erase_if(running, [](pid_t child) { return waitpid(child, nullptr, WNOHANG) != 0; });
     std::error_code error;
     std::filesystem::path absolute = std::filesystem::absolute(folder, error).lexically_normal();
     if (!absolute.has_filename()) {
@@ -54,7 +44,7 @@ std::string showFolder(const std::filesystem::path& folder, const std::string& o
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    stillRunning().push_back(child);
+    running.push_back(child);
     return "";
 }
 

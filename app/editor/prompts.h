@@ -33,6 +33,12 @@ struct Prompts {
     // Whether the path field has had the keys since the dialog opened, and whether keys typed
     // before it did were taken into pathDialogText (file_dialog.cpp takeEarlyKeys).
     bool pathFieldTaken = false, pathTypedEarly = false;
+    // How many times the dialog has opened: each opening's path field is a new widget (ImGui
+    // keeps a field's cursor by its ID, and the last opening's, inside the new text, took what
+    // was typed there). And whether the field's cursor goes to the end of its text when it next
+    // has the keys (after early keys, or Enter on a folder).
+    int pathDialogOpenings = 0;
+    bool pathCursorToEnd = false;
     // What ReplaceMap replaces: the model's material and the map's key (model/model.h mapsOf).
     int replacedMaterial = -1;
     std::string replacedMap;

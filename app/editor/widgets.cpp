@@ -18,9 +18,27 @@ glm::vec3 toLinear(glm::vec3 srgb) {
     return {shader::srgbDecode(srgb.r), shader::srgbDecode(srgb.g), shader::srgbDecode(srgb.b)};
 }
 
-std::map<std::string, RecordedItem>& recorded() {
-    static std::map<std::string, RecordedItem> items;
-    return items;
+using RecordedItems = std::map<std::string, RecordedItem>;
+
+// Which of an ImGui context's hooks holds its recorded items.
+const ImGuiID kRecordedItemsHook = ImHashStr("patina recorded items");
+
+// The current ImGui context's items, made with its first and freed as it shuts down: they are
+// of its frames, which a new context (tests make many) counts from 0 again.
+RecordedItems& recorded() {
+    ImGuiContext& context = *ImGui::GetCurrentContext();
+    for (const ImGuiContextHook& hook : context.Hooks) {
+        if (hook.Owner == kRecordedItemsHook) {
+            return *static_cast<RecordedItems*>(hook.UserData);
+        }
+    }
+    ImGuiContextHook hook;
+    hook.Type = ImGuiContextHookType_Shutdown;
+    hook.Owner = kRecordedItemsHook;
+    hook.UserData = new RecordedItems;
+    hook.Callback = [](ImGuiContext*, ImGuiContextHook* self) { delete static_cast<RecordedItems*>(self->UserData); };
+    ImGui::AddContextHook(&context, &hook);
+    return *static_cast<RecordedItems*>(hook.UserData);
 }
 }  // namespace
 
@@ -151,10 +169,6 @@ bool itemRect(const std::string& name, ImVec2* min, ImVec2* max) {
     *min = it->second.min;
     *max = it->second.max;
     return true;
-}
-
-void forgetRecordedItems() {
-    recorded().clear();
 }
 
 std::map<std::string, RecordedItem> itemsOfLastFrame() {

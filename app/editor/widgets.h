@@ -45,10 +45,9 @@ struct RecordedItem {
     std::string tooltip;
     int frame = 0;                   // ImGui's frame count when it was last drawn
 };
-// The items drawn in the current (or last rendered) frame, by name.
+// The items drawn in the current (or last rendered) frame, by name. Each ImGui context keeps
+// its own, from its first frame until it is destroyed.
 std::map<std::string, RecordedItem> itemsOfLastFrame();
-// Forgets every item: a new ImGui context counts its frames from 0 again (tests make many).
-void forgetRecordedItems();
 // Whether an item is cut by the edge of its window or of the display.
 bool clipped(const RecordedItem& item);
 // `text` cut with "..." to fit `width` pixels in the current font.

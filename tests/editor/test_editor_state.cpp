@@ -1341,16 +1341,17 @@ TEST_F(EditorStateTest, ShowingAFolderRunsTheOpenerAndSaysWhenItFails) {
     std::ofstream(script) << "#!/bin/sh\necho \"$1\" > '" << (dir_ / "opened.txt").string() << "'\n";
     fs::permissions(script, fs::perms::owner_all);
     fs::create_directories(dir_ / "shots");
-    EXPECT_EQ(showFolder(dir_ / "shots", script.string()), "");
+    RunningOpeners running;
+    EXPECT_EQ(showFolder(dir_ / "shots", script.string(), running), "");
     std::ifstream opened(dir_ / "opened.txt");
     std::string line;
     std::getline(opened, line);
     EXPECT_EQ(line, (dir_ / "shots").string());
 
-    const std::string missing = showFolder(dir_ / "shots", "patina-no-such-opener");
+    const std::string missing = showFolder(dir_ / "shots", "patina-no-such-opener", running);
     EXPECT_NE(missing.find("is not installed"), std::string::npos) << missing;
     EXPECT_NE(missing.find((dir_ / "shots").string()), std::string::npos) << missing;
-    const std::string failing = showFolder(dir_ / "shots", "false");
+    const std::string failing = showFolder(dir_ / "shots", "false", running);
     EXPECT_NE(failing.find("failed"), std::string::npos) << failing;
 }
 

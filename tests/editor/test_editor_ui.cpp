@@ -40,7 +40,6 @@ protected:
         ScratchTest::SetUp();
         test::glContext();
         ImGui::CreateContext();
-        forgetRecordedItems();   // the last test's context's
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.DisplaySize = ImVec2(1280, 800);

@@ -182,12 +182,10 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     const PathDialogKind& kind = pathDialogKind(state.pathDialog);
     // One popup whatever the action ("###path"), titled by it.
     const std::string title = std::string(kind.title) + "###path";
-    // Each opening's path field is a new widget: ImGui keeps a field's cursor and selection by
-    // its ID, and the last opening's cursor, inside the new text, took what was typed there.
-    static int openings = 0;
+    // Each opening's path field is a new widget (Prompts::pathDialogOpenings).
     if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
         ImGui::OpenPopup(title.c_str());
-        ++openings;
+        ++state.pathDialogOpenings;
     }
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float width = std::min(px(560), display.x - px(40));
@@ -204,8 +202,7 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     }
     // Written as typed, so the list follows; Enter lets go of the field (single-line fields do).
     // After Enter on a folder the field takes the keys again, its cursor after the new '/'.
-    static bool cursorToEnd = false;
-    cursorToEnd = takeEarlyKeys(state) || cursorToEnd;
+    state.pathCursorToEnd = takeEarlyKeys(state) || state.pathCursorToEnd;
     char buffer[1024];
     std::snprintf(buffer, sizeof buffer, "%s", state.pathDialogText.c_str());
     const auto moveCursor = [](ImGuiInputTextCallbackData* data) {
@@ -216,8 +213,9 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
         }
         return 0;
     };
-    ImGui::PushID(openings);
-    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor, &cursorToEnd)) {
+    ImGui::PushID(state.pathDialogOpenings);
+    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor,
+                         &state.pathCursorToEnd)) {
         state.pathDialogText = buffer;
     }
     ImGui::PopID();
@@ -232,7 +230,7 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     if (entered && enterFolder(&state.pathDialogText, base)) {
         entered = false;   // into the folder, the dialog stays
         ImGui::SetKeyboardFocusHere(-1);
-        cursorToEnd = true;
+        state.pathCursorToEnd = true;
     }
     drawListing(state, base, ImVec2(width, std::min(px(240), display.y * 0.4f)));
     const bool confirmed = ImGui::Button(kind.verb);

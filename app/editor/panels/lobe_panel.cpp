@@ -132,7 +132,7 @@ void drawSliceControls(LobeSettings& lobe) {
 }
 }  // namespace
 
-void drawLobePanel(EditorState& state) {
+void drawLobePanel(EditorState& state, EditorServices& services) {
     LobeSettings& lobe = state.lobe;
     drawViewChoice(lobe);
     if (lobe.view == LobeView::Slice) {
@@ -141,7 +141,7 @@ void drawLobePanel(EditorState& state) {
         return;
     }
     if (lobe.view == LobeView::Albedo) {
-        drawAlbedoView(state, ImGui::GetContentRegionAvail());
+        drawAlbedoView(state, services, ImGui::GetContentRegionAvail());
         return;
     }
     const ImGuiStyle& style = ImGui::GetStyle();

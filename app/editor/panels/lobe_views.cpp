@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <list>
 
 #include <glm/glm.hpp>
 
-#include "accuracy/albedo_curve.h"
 #include "common/luminance.h"
 #include "lobe_plot.h"
 #include "shading/brdf_slice.h"
@@ -61,22 +59,6 @@ void drawSlice(const BrdfSlice& slice, const LobeSettings& lobe, ImVec2 at, floa
     }
 }
 
-// The albedo curves of the last few materials asked about: the ground truth takes milliseconds,
-// too long to redo every frame of a slider drag for a material that did not change.
-const std::vector<AlbedoPoint>& albedoOf(const MaterialParameters& material) {
-    static std::list<std::pair<MaterialParameters, std::vector<AlbedoPoint>>> cache;
-    for (auto it = cache.begin(); it != cache.end(); ++it) {
-        if (it->first == material) {
-            cache.splice(cache.begin(), cache, it);
-            return cache.front().second;
-        }
-    }
-    cache.emplace_front(material, albedoCurve(material, 19, 256));
-    if (cache.size() > 4) {
-        cache.pop_back();
-    }
-    return cache.front().second;
-}
 }  // namespace
 
 void drawSliceView(EditorState& state, ImVec2 size) {
@@ -100,7 +82,7 @@ void drawSliceView(EditorState& state, ImVec2 size) {
     recordItem("slice");   // no tooltip of its own: the hovered cell's values are the tooltip
 }
 
-void drawAlbedoView(const EditorState& state, ImVec2 size) {
+void drawAlbedoView(const EditorState& state, EditorServices& services, ImVec2 size) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float line = ImGui::GetTextLineHeight();
@@ -112,9 +94,9 @@ void drawAlbedoView(const EditorState& state, ImVec2 size) {
     };
     std::vector<Shown> shown;
     if (state.compareA) {
-        shown.push_back({&albedoOf(*state.compareA), IM_COL32(170, 170, 170, 255), "A"});
+        shown.push_back({&services.albedo(*state.compareA), IM_COL32(170, 170, 170, 255), "A"});
     }
-    shown.push_back({&albedoOf(editedMaterial(state)), IM_COL32(255, 170, 80, 255), state.compareA ? "B" : ""});
+    shown.push_back({&services.albedo(editedMaterial(state)), IM_COL32(255, 170, 80, 255), state.compareA ? "B" : ""});
     // Luminance; a bar is the luminance of the channels' standard errors, which bounds its own.
     float top = 1.0f;
     for (const Shown& s : shown) {

@@ -4,12 +4,13 @@
 // shows B, and A beside or over it when set, as the polar plot does.
 #include <imgui.h>
 
+#include "editor_services.h"
 #include "editor_state.h"
 
 namespace patina::editor {
 
 void drawSliceView(EditorState& state, ImVec2 size);
-void drawAlbedoView(const EditorState& state, ImVec2 size);
+void drawAlbedoView(const EditorState& state, EditorServices& services, ImVec2 size);
 void drawLobe3dView(EditorState& state, ImVec2 size);
 
 }  // namespace patina::editor

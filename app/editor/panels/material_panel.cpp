@@ -187,7 +187,6 @@ void drawPartList(EditorState& state) {
     const int count = modelMaterialCount(state);
     int& selected = state.selectedModelMaterial;
     selected = std::clamp(selected, 0, count - 1);
-    static int shown = -1;   // the selection the list last scrolled to
     const float line = ImGui::GetTextLineHeightWithSpacing();
     ImGui::TextUnformatted("Parts");
     if (count > 6) {
@@ -211,9 +210,9 @@ void drawPartList(EditorState& state) {
             if (drawPartRow(state, i, i == selected)) {
                 selected = i;
             }
-            if (i == selected && shown != selected) {
+            if (i == selected && state.partScrolledTo != selected) {
                 ImGui::SetScrollHereY();
-                shown = selected;
+                state.partScrolledTo = selected;
             }
             ImGui::PopID();
         }

@@ -56,7 +56,8 @@ void takeRequestedScreenshot(EditorState& state, EditorServices& services) {
 }
 
 void openScreenshotFolder(EditorState& state) {
-    if (const std::string failed = showFolder(state.screenshotFolder, state.folderOpener); !failed.empty()) {
+    if (const std::string failed = showFolder(state.screenshotFolder, state.folderOpener, state.folderOpeners);
+        !failed.empty()) {
         state.error = failed;
     }
 }

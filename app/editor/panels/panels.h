@@ -11,7 +11,7 @@ namespace patina::editor {
 void drawMaterialPanel(EditorState& state, EditorServices& services);
 void drawLightsPanel(EditorState& state, EditorServices& services);
 void drawViewportPanel(EditorState& state, EditorServices& services);
-void drawLobePanel(EditorState& state);
+void drawLobePanel(EditorState& state, EditorServices& services);
 void drawAccuracyPanel(EditorState& state, EditorServices& services);
 void drawPresetsPanel(EditorState& state, EditorServices& services);
 // One picture the viewport shows, for the read-out: its scene, where the whole picture is on
