@@ -101,7 +101,6 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         finishEnvironmentLoad(state);
         finishModelLoad(state);
     }
-    services.environmentShading = state.environmentShading;
     resolveEnvironmentShown(state);
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });

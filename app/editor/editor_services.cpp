@@ -41,20 +41,21 @@ std::filesystem::path screenshotPath(const std::filesystem::path& folder, const 
 EditorServices::EditorServices(std::shared_ptr<AssetCache> assets)
     : assets_(std::move(assets)), renderer_(std::make_unique<Renderer>()) {}
 
-unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes,
-                                         Shown shown, int samples) {
+unsigned EditorServices::viewportTexture(const PreparedScene& scene, const PictureRequest& request, Shown shown) {
     ViewImage& image = view(shown);
+    ViewKey key{renderInputs(scene), request};
     // The picture is the same whatever options a channel would be shown with.
-    const ChannelRequest request = channel.channel < 0 ? ChannelRequest{} : channel;
-    ViewKey key{renderInputs(scene), width, height, passes, samples, environmentShading, request};
+    if (request.channel.channel < 0) {
+        key.request.channel = {};
+    }
     if (image.drawn != key) {
         RenderSettings settings;
-        settings.width = width;
-        settings.height = height;
-        settings.path = passes;
-        settings.samples = samples;
-        settings.environment = environmentShading;
-        settings.channel = request;
+        settings.width = request.width;
+        settings.height = request.height;
+        settings.path = request.path;
+        settings.samples = request.samples;
+        settings.environment = request.environment;
+        settings.channel = key.request.channel;
         settings.readHdr = false;   // the viewport shows and saves the display image only
         const auto start = std::chrono::steady_clock::now();
         image.drawn.reset();   // until the draw succeeds
@@ -62,7 +63,7 @@ unsigned EditorServices::viewportTexture(const PreparedScene& scene, int width, 
         lastRenderMilliseconds_ =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         image.pbrTally.reset();
-        if (channel.channel == shader::CHANNEL_PBR_VALIDATION) {
+        if (request.channel.channel == shader::CHANNEL_PBR_VALIDATION) {
             image.pbrTally = tallyPbrChannel(renderer_->readBack(image.target, false).ldr);
         }
         image.drawn = std::move(key);
@@ -89,17 +90,18 @@ LdrImage stripedFlags(const LdrImage& shown) {
 }
 }  // namespace
 
-const EditorServices::PbrOverlay& EditorServices::pbrOverlay(const PreparedScene& scene, int width, int height,
-                                                             Shown shown) {
+const EditorServices::PbrOverlay& EditorServices::pbrOverlay(const PreparedScene& scene,
+                                                             const PictureRequest& request, Shown shown) {
     OverlayImage& image = overlays_[shown == Shown::A ? 1 : 0];
-    ChannelRequest request{shader::CHANNEL_PBR_VALIDATION, "", false, channel.strictPbr};
+    const ChannelRequest channel{shader::CHANNEL_PBR_VALIDATION, "", false, request.channel.strictPbr};
     // A channel is drawn by the single path at one sample a pixel (RenderSettings::channel).
-    ViewKey key{renderInputs(scene), width, height, RenderPath::Single, 1, environmentShading, request};
+    ViewKey key{renderInputs(scene),
+                {request.width, request.height, RenderPath::Single, 1, request.environment, channel}};
     if (image.channel.drawn != key) {
         RenderSettings settings;
-        settings.width = width;
-        settings.height = height;
-        settings.channel = request;
+        settings.width = request.width;
+        settings.height = request.height;
+        settings.channel = channel;
         settings.readHdr = false;
         image.channel.drawn.reset();   // until the draw succeeds
         renderer_->draw(scene, settings, image.channel.target);
@@ -128,12 +130,13 @@ const PixelStory* EditorServices::pixelStory(const PreparedScene& scene, int wid
     return readOut_.story ? &*readOut_.story : nullptr;
 }
 
-RenderOutput EditorServices::renderImage(const PreparedScene& scene, int width, int height, RenderPath passes) {
+RenderOutput EditorServices::renderImage(const PreparedScene& scene, int width, int height, RenderPath passes,
+                                         const EnvironmentShading& environment) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
     settings.path = passes;
-    settings.environment = environmentShading;
+    settings.environment = environment;
     settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
     settings.maxTargetBytes = kOneOffTargetBytes;   // any size `patina render` takes
     return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
@@ -154,7 +157,7 @@ const EditorServices::Preset* EditorServices::preset(const std::filesystem::path
             const Material loaded = loadMaterialFile(material, warnings);
             const Scene preview = previewScene(loaded);
             const PreparedScene prepared = prepareScene(preview, *assets_, warnings);   // its built-in studio, once
-            entry.preset = Preset{std::make_unique<Texture>(renderImage(prepared, 64, 64, RenderPath::Single).ldr),
+            entry.preset = Preset{std::make_unique<Texture>(renderImage(prepared, 64, 64, RenderPath::Single, EnvironmentShading{}).ldr),
                                   loaded.name};
         } catch (const std::exception&) {
             // the browser shows the file without a picture
@@ -229,8 +232,8 @@ const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const 
 
 LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {
     const Scene sceneA = withMaterial(state, *state.compareA), sceneB = renderedScene(state);
-    const LdrImage a = renderImage(preparedScene(state, sceneA), halfWidth, height, state.renderPath).ldr;
-    const LdrImage b = renderImage(preparedScene(state, sceneB), halfWidth, height, state.renderPath).ldr;
+    const LdrImage a = renderImage(preparedScene(state, sceneA), halfWidth, height, state.renderPath, state.environmentShading).ldr;
+    const LdrImage b = renderImage(preparedScene(state, sceneB), halfWidth, height, state.renderPath, state.environmentShading).ldr;
     // Captioned "A: name  r ..." and "B: ...", as the viewport labels them.
     auto caption = [&](char side, Material material) {
         material.name = comparisonLabel(side, material);
@@ -242,15 +245,15 @@ LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth
 LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
     if (!state.compareA || state.compareView == CompareView::Single) {
         const Scene shown = renderedScene(state);
-        return renderImage(preparedScene(state, shown), width, height, state.renderPath).ldr;
+        return renderImage(preparedScene(state, shown), width, height, state.renderPath, state.environmentShading).ldr;
     }
     if (state.compareView == CompareView::SideBySide) {
         return comparisonImage(state, std::max(width / 2, 1), height);
     }
     // Split: A's columns left of the divider over B's, the divider and the labels as drawn.
     const Scene sceneA = withMaterial(state, *state.compareA), sceneB = renderedScene(state);
-    const LdrImage a = renderImage(preparedScene(state, sceneA), width, height, state.renderPath).ldr;
-    LdrImage shown = renderImage(preparedScene(state, sceneB), width, height, state.renderPath).ldr;
+    const LdrImage a = renderImage(preparedScene(state, sceneA), width, height, state.renderPath, state.environmentShading).ldr;
+    LdrImage shown = renderImage(preparedScene(state, sceneB), width, height, state.renderPath, state.environmentShading).ldr;
     const int split = std::clamp(int(std::lround(std::clamp(state.splitPosition, 0.0f, 1.0f) * float(width))), 0, width);
     for (int y = 0; y < height; ++y) {
         const size_t row = size_t(y) * size_t(width) * 4;

@@ -24,6 +24,18 @@ struct AccuracyNumbers {
 };
 AccuracyNumbers accuracyOf(const Material& material);
 
+// How a picture of the viewport is drawn: its size, the render path and MSAA samples, and the
+// Interaction's choices of how the environment is shaded and which debug channel shows. Handed
+// over with each draw, so that what the services draw is never a copy left from another frame.
+struct PictureRequest {
+    int width = 0, height = 0;
+    RenderPath path = RenderPath::Single;
+    int samples = 4;
+    EnvironmentShading environment;
+    ChannelRequest channel;   // channel -1: the picture
+    bool operator==(const PictureRequest&) const = default;
+};
+
 // What panels need beyond EditorState: the renderer (a current GL context is assumed) and its
 // caches. Rendering happens here only when what it shows changed; what it draws comes
 // prepared (EditorState's mesh and environment), and its own preview scenes are prepared
@@ -36,19 +48,18 @@ public:
     // own render target, and offscreen renders (screenshots, thumbnails, exports) another, so
     // none of them replaces a texture the current UI frame already shows.
     enum class Shown { Edited, A };
-    // The display texture of `scene` at `size` for `shown`, re-rendered only when the scene,
-    // size, pass mode or MSAA samples changed since its last render. Returns the GL texture.
-    unsigned viewportTexture(const PreparedScene& scene, int width, int height, RenderPath passes, Shown shown,
-                             int samples = 4);
+    // The display texture of `scene` as `request` asks for it for `shown`, re-rendered only when
+    // the scene or the request changed since its last render. Returns the GL texture.
+    unsigned viewportTexture(const PreparedScene& scene, const PictureRequest& request, Shown shown);
     // View > PBR validation overlay over what viewportTexture(..., shown) shows: the pbr-validation
-    // channel of `scene` (ranges as `channel.strictPbr` says) as a texture, rows top-down, its
-    // flagged pixels striped in their verdict's colour and the rest clear, and its tally;
-    // rendered only when the scene or size changed.
+    // channel of `scene` at the request's size (ranges as its `channel.strictPbr` says) as a
+    // texture, rows top-down, its flagged pixels striped in their verdict's colour and the rest
+    // clear, and its tally; rendered only when the scene or size changed.
     struct PbrOverlay {
         std::unique_ptr<Texture> texture;
         PbrTally tally;
     };
-    const PbrOverlay& pbrOverlay(const PreparedScene& scene, int width, int height, Shown shown);
+    const PbrOverlay& pbrOverlay(const PreparedScene& scene, const PictureRequest& request, Shown shown);
     // What the status line counts: the edited picture's pbr-validation tally while the overlay or
     // the channel shows it (the viewport sets it each frame), else nothing.
     std::optional<PbrTally> pbrTally;
@@ -59,8 +70,6 @@ public:
     double lastRenderMilliseconds() const { return lastRenderMilliseconds_; }
     double lastGpuMilliseconds() const { return lastGpuMilliseconds_; }
     int viewportWidth = 0, viewportHeight = 0;   // set by the viewport panel
-    EnvironmentShading environmentShading;        // EditorState's, set once a frame
-    ChannelRequest channel;                       // the viewport's (Interaction::channel), set before it draws
     KeyPresses keyPresses;                        // this frame's, filled by the app (or a test)
 
     // The inspector's read-out of pixel (x, y) of a width x height picture of `scene`
@@ -71,12 +80,15 @@ public:
     // What the viewport shows for `shown`, read back (for tests and automation).
     LdrImage viewportPixels(Shown shown) const { return renderer_->readBack(view(shown).target, false).ldr; }
 
-    // Renders `scene` at the given size offscreen and returns the image (for screenshots,
-    // thumbnails and exports); what the viewport shows is untouched.
-    RenderOutput renderImage(const PreparedScene& scene, int width, int height, RenderPath passes);
+    // Renders `scene` at the given size offscreen, the environment shaded as `environment` says,
+    // and returns the image (for screenshots, thumbnails and exports); what the viewport shows
+    // is untouched.
+    RenderOutput renderImage(const PreparedScene& scene, int width, int height, RenderPath passes,
+                             const EnvironmentShading& environment);
 
-    // A material file's thumbnail, rendered in the fixed preview scene (preview_scene.h) once
-    // per file modification time, and its material's name; null for a file that does not read.
+    // A material file's thumbnail, rendered in the fixed preview scene (preview_scene.h, its
+    // environment shaded by the split sum) once per file modification time, and its material's
+    // name; null for a file that does not read.
     struct Preset {
         std::unique_ptr<Texture> texture;
         std::string name;
@@ -113,11 +125,7 @@ public:
 private:
     struct ViewKey {
         RenderInputs inputs;   // what the image depends on: no names or unknown keys compared
-        int width = 0, height = 0;
-        RenderPath path = RenderPath::Single;
-        int samples = 4;
-        EnvironmentShading environment;
-        ChannelRequest channel;
+        PictureRequest request;
         bool operator==(const ViewKey&) const = default;
     };
     struct ViewImage {

@@ -473,12 +473,12 @@ struct ViewArea {
 // View > PBR validation overlay over one picture on screen (at, size; u1: how much of it shows
 // from the left), the picture only: a channel is what was asked to be seen. The edited side's
 // tally goes to the status line.
-void overlayFlags(const EditorState& state, EditorServices& services, const PreparedScene& scene, int width,
-                  int height, EditorServices::Shown shown, ImVec2 at, ImVec2 size, float u1 = 1.0f) {
-    if (!state.pbrOverlay || state.channel.channel >= 0) {
+void overlayFlags(const EditorState& state, EditorServices& services, const PreparedScene& scene,
+                  const PictureRequest& request, EditorServices::Shown shown, ImVec2 at, ImVec2 size, float u1 = 1.0f) {
+    if (!state.pbrOverlay || request.channel.channel >= 0) {
         return;
     }
-    const EditorServices::PbrOverlay& overlay = services.pbrOverlay(scene, width, height, shown);
+    const EditorServices::PbrOverlay& overlay = services.pbrOverlay(scene, request, shown);
     ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(overlay.texture->id())),
                                          at, ImVec2(at.x + size.x, at.y + size.y), ImVec2(0.0f, 0.0f),
                                          ImVec2(u1, 1.0f));
@@ -494,33 +494,35 @@ void drawPictures(EditorState& state, EditorServices& services, const Scene& b, 
     // While a widget is held (a slider drag), skip MSAA so the preview keeps up; the full
     // quality frame follows on release.
     const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
-    const int width = area.width, height = area.height;
+    const PictureRequest request{area.width, area.height, state.renderPath, samples, state.environmentShading,
+                                 state.channel};
     const PreparedScene& preparedB = preparedScene(state, b);
     if (state.compareA && state.compareView == CompareView::SideBySide) {
-        const int half = std::max(width / 2, 8);
-        const ImVec2 halfSize(float(half), area.size.y);
+        PictureRequest half = request;
+        half.width = std::max(area.width / 2, 8);
+        const ImVec2 halfSize(float(half.width), area.size.y);
         const Scene a = withMaterial(state, *state.compareA);
         const PreparedScene& preparedA = preparedScene(state, a);
-        image(services.viewportTexture(preparedA, half, height, state.renderPath, Shown::A, samples), halfSize);
+        image(services.viewportTexture(preparedA, half, Shown::A), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
-        image(services.viewportTexture(preparedB, half, height, state.renderPath, Shown::Edited, samples), halfSize);
-        overlayFlags(state, services, preparedA, half, height, Shown::A, area.origin, halfSize);
-        overlayFlags(state, services, preparedB, half, height, Shown::Edited,
-                     ImVec2(area.origin.x + float(half), area.origin.y), halfSize);
+        image(services.viewportTexture(preparedB, half, Shown::Edited), halfSize);
+        overlayFlags(state, services, preparedA, half, Shown::A, area.origin, halfSize);
+        overlayFlags(state, services, preparedB, half, Shown::Edited,
+                     ImVec2(area.origin.x + float(half.width), area.origin.y), halfSize);
         return;
     }
-    image(services.viewportTexture(preparedB, width, height, state.renderPath, Shown::Edited, samples), area.size);
-    overlayFlags(state, services, preparedB, width, height, Shown::Edited, area.origin, area.size);
+    image(services.viewportTexture(preparedB, request, Shown::Edited), area.size);
+    overlayFlags(state, services, preparedB, request, Shown::Edited, area.origin, area.size);
     if (state.compareA && state.compareView == CompareView::Split) {
         // A left of the divider, B right, one camera: A's image drawn over B's left part.
         const Scene sceneA = withMaterial(state, *state.compareA);
         const PreparedScene& preparedA = preparedScene(state, sceneA);
-        const unsigned a = services.viewportTexture(preparedA, width, height, state.renderPath, Shown::A, samples);
+        const unsigned a = services.viewportTexture(preparedA, request, Shown::A);
         const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
         const ImVec2 sizeA(area.size.x * split, area.size.y);
         ImGui::SetCursorScreenPos(area.origin);
         image(a, sizeA, 0.0f, split);
-        overlayFlags(state, services, preparedA, width, height, Shown::A, area.origin, sizeA, split);
+        overlayFlags(state, services, preparedA, request, Shown::A, area.origin, sizeA, split);
     }
 }
 
@@ -684,7 +686,6 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     // Here, not at the frame's start: the menu may have chosen a channel, the lights panel (drawn
     // before the viewport) switched its light off, in this frame.
     keepChannelShowable(state);
-    services.channel = state.channel;
     const Scene b = renderedScene(state);
     services.pbrTally.reset();   // set again below while the overlay or the channel shows it
     drawPictures(state, services, b, area);
