@@ -31,12 +31,12 @@ constexpr const char* kFormat = "patina-autosave";
 constexpr int kVersion = 1;
 
 // The state's scene and where its material lives, without the time: equal text, no change.
-Json autosaveJson(const EditorState& state) {
+Json autosaveJson(const Document& document) {
     return Json{{"format", kFormat},
                 {"version", kVersion},
-                {"materialPath", state.materialPath.string()},
-                {"scenePath", state.scenePath.string()},
-                {"scene", sceneToJson(state.scene)}};
+                {"materialPath", document.materialPath.string()},
+                {"scenePath", document.scenePath.string()},
+                {"scene", sceneToJson(document.scene)}};
 }
 
 std::string localTime() {
@@ -46,22 +46,22 @@ std::string localTime() {
     return text;
 }
 
-void write(EditorState& state, const std::string& text) {
+void write(Autosave& autosave, Prompts& prompts, const std::string& text) {
     Json json = Json::parse(text);
     json["savedAt"] = localTime();
     const std::string stamped = json.dump(2);
     try {
-        std::filesystem::create_directories(state.autosave.file.parent_path());
-        writeFileAtomic(state.autosave.file, std::vector<uint8_t>(stamped.begin(), stamped.end()));
-        state.autosave.failed = false;
+        std::filesystem::create_directories(autosave.file.parent_path());
+        writeFileAtomic(autosave.file, std::vector<uint8_t>(stamped.begin(), stamped.end()));
+        autosave.failed = false;
     } catch (const std::exception& error) {
-        if (!state.autosave.failed) {   // once, not every few seconds
-            state.error = "Autosave failed (your work is not being kept for crash recovery): " +
+        if (!autosave.failed) {   // once, not every few seconds
+            prompts.error = "Autosave failed (your work is not being kept for crash recovery): " +
                           std::string(error.what());
         }
-        state.autosave.failed = true;
+        autosave.failed = true;
     }
-    state.autosave.written = text;
+    autosave.written = text;
 }
 }  // namespace
 
@@ -81,8 +81,8 @@ FileLock::~FileLock() {
     ::close(fd_);   // lets the lock go
 }
 
-std::string autosaveText(const EditorState& state) {
-    return autosaveJson(state).dump();
+std::string autosaveText(const Document& document) {
+    return autosaveJson(document).dump();
 }
 
 namespace {
@@ -122,11 +122,11 @@ Recoverable readRecoverable(const std::filesystem::path& file, AssetCache& asset
 
 // The files in `folder` whose editor is gone, each under its lock, oldest first; errors go to
 // state.error and the file stays where it is.
-std::vector<Recoverable> findLeftBehind(EditorState& state, const std::filesystem::path& folder) {
+std::vector<Recoverable> findLeftBehind(const Jobs& jobs, Prompts& prompts, const std::filesystem::path& folder) {
     std::vector<std::filesystem::path> files;
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-        if (entry.path().extension() == ".json" && entry.path() != state.autosave.file) {
+        if (entry.path().extension() == ".json" && entry.path() != jobs.autosave.file) {
             files.push_back(entry.path());
         }
     }
@@ -138,11 +138,11 @@ std::vector<Recoverable> findLeftBehind(EditorState& state, const std::filesyste
             if (!lock) {
                 continue;   // its editor is running: its work is its own
             }
-            Recoverable recoverable = readRecoverable(file, *state.assets);
+            Recoverable recoverable = readRecoverable(file, *jobs.assets);
             recoverable.lock = std::move(lock);
             found.push_back(std::move(recoverable));
         } catch (const std::exception& error) {
-            state.error += (state.error.empty() ? "" : "\n") +
+            prompts.error += (prompts.error.empty() ? "" : "\n") +
                            ("An autosave left by an earlier session could not be read; it is kept as " +
                             file.string() + ": " + error.what());
         }
@@ -169,11 +169,11 @@ void removeStrayLocks(const std::filesystem::path& folder) {
     }
 }
 
-void offerNext(EditorState& state) {
-    std::vector<Recoverable>& waiting = state.autosave.waiting;
-    state.recoverable.reset();
+void offerNext(Jobs& jobs) {
+    std::vector<Recoverable>& waiting = jobs.autosave.waiting;
+    jobs.recoverable.reset();
     if (!waiting.empty()) {
-        state.recoverable = std::move(waiting.front());
+        jobs.recoverable = std::move(waiting.front());
         waiting.erase(waiting.begin());
     }
 }
@@ -190,15 +190,15 @@ std::filesystem::path ownFile(const std::filesystem::path& folder) {
 }
 }  // namespace
 
-void startAutosave(EditorState& state, const std::filesystem::path& folder) {
-    state.autosave = Autosave{};
-    state.recoverable.reset();
+void startAutosave(const Document& document, Jobs& jobs, Prompts& prompts, const std::filesystem::path& folder) {
+    jobs.autosave = Autosave{};
+    jobs.recoverable.reset();
     try {
         std::filesystem::create_directories(folder);
-        state.autosave.file = ownFile(folder);
-        state.autosave.lock = FileLock::tryLock(lockFileOf(state.autosave.file));
-        if (!state.autosave.lock) {
-            throw std::runtime_error(state.autosave.file.string() + " is locked by another editor");
+        jobs.autosave.file = ownFile(folder);
+        jobs.autosave.lock = FileLock::tryLock(lockFileOf(jobs.autosave.file));
+        if (!jobs.autosave.lock) {
+            throw std::runtime_error(jobs.autosave.file.string() + " is locked by another editor");
         }
         // The one file that editors before per-editor files shared: offered like any other.
         std::error_code ignored;
@@ -207,22 +207,22 @@ void startAutosave(EditorState& state, const std::filesystem::path& folder) {
             std::filesystem::rename(shared, folder / "editor-shared.json", ignored);
         }
     } catch (const std::exception& error) {
-        state.autosave.file.clear();
-        state.error += (state.error.empty() ? "" : "\n") +
+        jobs.autosave.file.clear();
+        prompts.error += (prompts.error.empty() ? "" : "\n") +
                        ("Autosave is off (your work is not being kept for crash recovery): " + std::string(error.what()));
     }
-    state.autosave.written = autosaveText(state);
+    jobs.autosave.written = autosaveText(document);
     removeStrayLocks(folder);
-    state.autosave.waiting = findLeftBehind(state, folder);
-    offerNext(state);
+    jobs.autosave.waiting = findLeftBehind(jobs, prompts, folder);
+    offerNext(jobs);
 }
 
-std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, AutosaveClock::time_point now) {
-    Autosave& autosave = state.autosave;
+std::optional<std::chrono::milliseconds> updateAutosave(const Document& document, Autosave& autosave,
+                                                        Prompts& prompts, AutosaveClock::time_point now) {
     if (autosave.file.empty()) {
         return std::nullopt;
     }
-    std::string text = autosaveText(state);
+    std::string text = autosaveText(document);
     if (text == autosave.written) {
         autosave.pending.clear();
         return std::nullopt;
@@ -235,7 +235,7 @@ std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, Auto
     if (now < due) {
         return std::chrono::ceil<std::chrono::milliseconds>(due - now);
     }
-    write(state, autosave.pending);
+    write(autosave, prompts, autosave.pending);
     autosave.pending.clear();
     return std::nullopt;
 }
@@ -243,19 +243,19 @@ std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, Auto
 namespace {
 // What is on disk of the restored work's files, against which it is unsaved; a new document's
 // scene where it had none.
-void compareWithItsFiles(EditorState& state, const Recoverable& found) {
+void compareWithItsFiles(Document& document, const Recoverable& found) {
     std::vector<std::string> warnings;
-    state.savedScene = defaultScene();
+    document.savedScene = defaultScene();
     if (!found.scenePath.empty()) {
         try {
-            state.savedScene = loadSceneFile(found.scenePath, warnings);
+            document.savedScene = loadSceneFile(found.scenePath, warnings);
         } catch (const std::exception&) {
         }
     }
-    state.savedMaterial = state.savedScene.material;
+    document.savedMaterial = document.savedScene.material;
     if (!found.materialPath.empty()) {
         try {
-            state.savedMaterial = loadMaterialFile(found.materialPath, warnings);
+            document.savedMaterial = loadMaterialFile(found.materialPath, warnings);
         } catch (const std::exception&) {
         }
     }
@@ -272,7 +272,7 @@ void restoreRecoverable(EditorState& state) {
     state.status = "Restored the work autosaved " + found.savedAt;
     // Kept in this editor's own file before the old one goes, so a crash now loses nothing.
     if (!state.autosave.file.empty()) {
-        write(state, autosaveText(state));
+        write(state.autosave, state, autosaveText(state));
         state.autosave.pending.clear();
     }
     if (!state.autosave.failed) {
@@ -281,16 +281,16 @@ void restoreRecoverable(EditorState& state) {
     offerNext(state);
 }
 
-void discardRecoverable(EditorState& state) {
-    if (state.recoverable) {
-        removeLocked(state.recoverable->file, state.recoverable->lock);
+void discardRecoverable(Jobs& jobs) {
+    if (jobs.recoverable) {
+        removeLocked(jobs.recoverable->file, jobs.recoverable->lock);
     }
-    offerNext(state);
+    offerNext(jobs);
 }
 
-void removeAutosave(EditorState& state) {
-    if (!state.autosave.file.empty()) {
-        removeLocked(state.autosave.file, state.autosave.lock);
+void removeAutosave(Autosave& autosave) {
+    if (!autosave.file.empty()) {
+        removeLocked(autosave.file, autosave.lock);
     }
 }
 

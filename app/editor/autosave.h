@@ -17,7 +17,10 @@
 
 namespace patina::editor {
 
+struct Document;
 struct EditorState;
+struct Jobs;
+struct Prompts;
 
 using AutosaveClock = std::chrono::steady_clock;
 // How long the scene must hold still before it is written: a slider drag writes once, after.
@@ -62,28 +65,30 @@ struct Autosave {
     std::string written;          // the text the file holds, or the state's at start
     std::string pending;          // a change not yet written
     AutosaveClock::time_point changedAt{};
-    bool failed = false;          // the last write failed (said once in EditorState::error)
-    std::vector<Recoverable> waiting;   // found at start, offered after EditorState::recoverable
+    bool failed = false;          // the last write failed (said once in Prompts::error)
+    std::vector<Recoverable> waiting;   // found at start, offered after Jobs::recoverable
 };
 
 // The autosave document: {"format": "patina-autosave", "version": 1, "savedAt", "materialPath",
 // "scenePath", "scene": a scene file's object}.
-std::string autosaveText(const EditorState& state);
+std::string autosaveText(const Document& document);
 
 // At start, before any edit: takes a file of its own in `folder` (made when missing) under its
-// lock, remembers the state as it is (nothing to write yet) and offers each file there whose
-// editor is gone (EditorState::recoverable, one at a time). A file that cannot be read is
-// reported in EditorState::error and left for the user; a file of a running editor is left alone.
-void startAutosave(EditorState& state, const std::filesystem::path& folder);
-// Once a frame: notes a change and writes it when it has held still kAutosaveDelay. Returns how
-// long until that write, or nothing when none waits (for the event loop's timeout).
-std::optional<std::chrono::milliseconds> updateAutosave(EditorState& state, AutosaveClock::time_point now);
+// lock (Jobs::autosave), remembers the document as it is (nothing to write yet) and offers each
+// file there whose editor is gone (Jobs::recoverable, one at a time). A file that cannot be read
+// is reported in Prompts::error and left for the user; a file of a running editor is left alone.
+void startAutosave(const Document& document, Jobs& jobs, Prompts& prompts, const std::filesystem::path& folder);
+// Once a frame: notes a change of the document and writes it when it has held still
+// kAutosaveDelay (a failed write said once in prompts.error). Returns how long until that
+// write, or nothing when none waits (for the event loop's timeout).
+std::optional<std::chrono::milliseconds> updateAutosave(const Document& document, Autosave& autosave,
+                                                        Prompts& prompts, AutosaveClock::time_point now);
 // The offered work becomes the edited document (its own paths and history), kept at once in
 // this editor's file; its old file is then deleted. Discard deletes that file. Either way the
 // next file found is offered.
 void restoreRecoverable(EditorState& state);
-void discardRecoverable(EditorState& state);
+void discardRecoverable(Jobs& jobs);
 // A clean quit: this editor's file and lock are removed; nothing is left to recover.
-void removeAutosave(EditorState& state);
+void removeAutosave(Autosave& autosave);
 
 }  // namespace patina::editor

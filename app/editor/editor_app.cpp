@@ -197,7 +197,7 @@ void takeInput(Loop& loop) {
     }
     // A file dropped while a prompt is up waits for it: nothing edits the document behind one.
     std::vector<std::filesystem::path>& dropped = loop.input.droppedFiles;
-    while (!dropped.empty() && !promptOpen(state)) {
+    while (!dropped.empty() && !promptOpen(state, state)) {
         requestOpen(state, dropped.front());
         dropped.erase(dropped.begin());
     }
@@ -268,9 +268,9 @@ void afterFrame(Loop& loop) {
     if (loop.layoutDump) {
         dumpLayout(loop.layoutDump);
     }
-    loop.autosaveDue = updateAutosave(state, AutosaveClock::now());
+    loop.autosaveDue = updateAutosave(state, state.autosave, state, AutosaveClock::now());
     glfwGetWindowSize(loop.window, &loop.geometry.width, &loop.geometry.height);
-    loop.settingsDue = loop.settingsWriter.update(state, loop.geometry, SettingsWriter::Clock::now());
+    loop.settingsDue = loop.settingsWriter.update(state, state, state, loop.geometry, SettingsWriter::Clock::now());
     // A message set during this frame (a failed screenshot, an autosave error) is drawn now,
     // not when the next input happens to wake the loop.
     if (std::string messages = shownText(state, loop.services); messages != loop.shownMessages) {
@@ -308,7 +308,7 @@ int runEditor(const EditorOptions& options) {
     EditorState state;
     WindowGeometry geometry;
     const std::filesystem::path settingsFile = configFolder() / "settings.json";
-    loadSettings(state, geometry, settingsFile);
+    loadSettings(state, state, state, geometry, settingsFile);
     state.userPresetFolder = configFolder() / "presets";
     state.presetFolders = {PATINA_PRESETS_DIR, state.userPresetFolder};
     GLFWwindow* window = openWindow(geometry);
@@ -329,13 +329,13 @@ int runEditor(const EditorOptions& options) {
     {
         EditorServices services(state.assets);
         openStartupFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
-        startAutosave(state, configFolder() / "autosave");
+        startAutosave(state, state, state, configFolder() / "autosave");
         Loop loop{window, input, state, services, geometry, SettingsWriter(state, geometry, settingsFile),
                   FrameStats(options.stats ? &std::cerr : nullptr, options.start)};
         runSession(loop);
-        removeAutosave(state);   // a clean quit: nothing to recover
+        removeAutosave(state.autosave);   // a clean quit: nothing to recover
         loop.stats.finish();
-        if (!saveSettings(state, geometry, settingsFile)) {
+        if (!saveSettings(state, state, state, geometry, settingsFile)) {
             std::cerr << "warning: " << state.error << "\n";
         }
     }

@@ -97,7 +97,7 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
-    if (!promptOpen(state)) {   // a load that ends behind a prompt waits for its answer
+    if (!promptOpen(state, state)) {   // a load that ends behind a prompt waits for its answer
         finishEnvironmentLoad(state);
         finishModelLoad(state);
     }

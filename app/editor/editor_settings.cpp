@@ -31,7 +31,8 @@ WindowGeometry windowSizeFor(const WindowGeometry& saved, int workWidth, int wor
     return {std::max(std::min(size.width, roomWidth), 640), std::max(std::min(size.height, roomHeight), 400)};
 }
 
-void loadSettings(EditorState& state, WindowGeometry& window, const std::filesystem::path& file) {
+void loadSettings(Document& document, Preferences& preferences, Prompts& prompts, WindowGeometry& window,
+                  const std::filesystem::path& file) {
     if (!std::filesystem::exists(file)) {
         return;
     }
@@ -41,92 +42,94 @@ void loadSettings(EditorState& state, WindowGeometry& window, const std::filesys
         JsonObjectReader reader(json, "", file.string());
         window.width = reader.integer("windowWidth", window.width, {320, 16384});
         window.height = reader.integer("windowHeight", window.height, {240, 16384});
-        state.layout.leftWidth = reader.number("leftPanelWidth", state.layout.leftWidth, {100, 4000});
-        state.layout.rightWidth = reader.number("rightPanelWidth", state.layout.rightWidth, {100, 4000});
-        state.layout.lobeHeight = reader.number("lobePanelHeight", state.layout.lobeHeight, {60, 4000});
-        state.layout.showLobe = reader.boolean("showLobe", state.layout.showLobe);
-        state.uiScaleSetting = reader.number("uiScale", state.uiScaleSetting, {0.5, 3.0});
-        state.showGizmos = reader.boolean("showLightGizmos", state.showGizmos);
-        state.showAdvanced = reader.boolean("showAdvanced", state.showAdvanced);
-        state.screenshotFolder = reader.string("screenshotFolder", state.screenshotFolder.string());
-        state.screenshotWidth = reader.integer("screenshotWidth", state.screenshotWidth, {0, kLargestScreenshot});
-        state.screenshotHeight = reader.integer("screenshotHeight", state.screenshotHeight, {0, kLargestScreenshot});
+        preferences.layout.leftWidth = reader.number("leftPanelWidth", preferences.layout.leftWidth, {100, 4000});
+        preferences.layout.rightWidth = reader.number("rightPanelWidth", preferences.layout.rightWidth, {100, 4000});
+        preferences.layout.lobeHeight = reader.number("lobePanelHeight", preferences.layout.lobeHeight, {60, 4000});
+        preferences.layout.showLobe = reader.boolean("showLobe", preferences.layout.showLobe);
+        preferences.uiScaleSetting = reader.number("uiScale", preferences.uiScaleSetting, {0.5, 3.0});
+        preferences.showGizmos = reader.boolean("showLightGizmos", preferences.showGizmos);
+        preferences.showAdvanced = reader.boolean("showAdvanced", preferences.showAdvanced);
+        preferences.screenshotFolder = reader.string("screenshotFolder", preferences.screenshotFolder.string());
+        preferences.screenshotWidth =
+            reader.integer("screenshotWidth", preferences.screenshotWidth, {0, kLargestScreenshot});
+        preferences.screenshotHeight =
+            reader.integer("screenshotHeight", preferences.screenshotHeight, {0, kLargestScreenshot});
         if (const Json* recent = reader.child("recentFiles"); recent && recent->is_array()) {
-            state.recentFiles.clear();
+            preferences.recentFiles.clear();
             for (const Json& entry : *recent) {
                 if (entry.is_string()) {
-                    state.recentFiles.emplace_back(entry.get<std::string>());
+                    preferences.recentFiles.emplace_back(entry.get<std::string>());
                 }
             }
         }
         if (const Json* material = reader.child("lastMaterial")) {
-            state.scene.material = materialFromJson(*material, "/lastMaterial", file.string(), true, warnings);
-            state.savedMaterial = state.scene.material;
-            state.committed = state.snapshot();
+            document.scene.material = materialFromJson(*material, "/lastMaterial", file.string(), true, warnings);
+            document.savedMaterial = document.scene.material;
+            document.committed = document.snapshot();
         }
         if (reader.has("lastMaterialPath")) {
-            state.materialPath = reader.string("lastMaterialPath", "");
+            document.materialPath = reader.string("lastMaterialPath", "");
         }
     } catch (const std::exception& error) {
-        state.error = "Settings ignored: " + std::string(error.what());
+        prompts.error = "Settings ignored: " + std::string(error.what());
     }
 }
 
 namespace {
-// The preferences (what a change of writes the file at once) and, with `session`, the material
-// a new session resumes with.
-Json settingsJson(const EditorState& state, const WindowGeometry& window, bool session) {
+// The preferences: what a change of writes the file at once.
+Json preferencesJson(const Preferences& preferences, const WindowGeometry& window) {
     Json recent = Json::array();
-    for (const std::filesystem::path& path : state.recentFiles) {
+    for (const std::filesystem::path& path : preferences.recentFiles) {
         recent.push_back(path.string());
     }
-    Json json{{"windowWidth", window.width},
-              {"windowHeight", window.height},
-              {"leftPanelWidth", state.layout.leftWidth},
-              {"rightPanelWidth", state.layout.rightWidth},
-              {"lobePanelHeight", state.layout.lobeHeight},
-              {"showLobe", state.layout.showLobe},
-              {"uiScale", state.uiScaleSetting},
-              {"showLightGizmos", state.showGizmos},
-              {"showAdvanced", state.showAdvanced},
-              {"screenshotFolder", state.screenshotFolder.string()},
-              {"screenshotWidth", state.screenshotWidth},
-              {"screenshotHeight", state.screenshotHeight},
-              {"recentFiles", recent}};
-    if (session) {
-        // The material as it is now (saved or not), and where it was saved, so a new session
-        // resumes; "dirty" is not restored: the file on disk decides.
-        json["lastMaterial"] = materialToJson(state.scene.material);
-        json["lastMaterialPath"] = state.materialPath.string();
-    }
-    return json;
+    return Json{{"windowWidth", window.width},
+                {"windowHeight", window.height},
+                {"leftPanelWidth", preferences.layout.leftWidth},
+                {"rightPanelWidth", preferences.layout.rightWidth},
+                {"lobePanelHeight", preferences.layout.lobeHeight},
+                {"showLobe", preferences.layout.showLobe},
+                {"uiScale", preferences.uiScaleSetting},
+                {"showLightGizmos", preferences.showGizmos},
+                {"showAdvanced", preferences.showAdvanced},
+                {"screenshotFolder", preferences.screenshotFolder.string()},
+                {"screenshotWidth", preferences.screenshotWidth},
+                {"screenshotHeight", preferences.screenshotHeight},
+                {"recentFiles", recent}};
 }
 
-// Atomically: a crash while writing leaves the old file.
-
-void writeSettings(const EditorState& state, const WindowGeometry& window, const std::filesystem::path& file) {
+// The preferences and the material a new session resumes with, atomically: a crash while
+// writing leaves the old file.
+void writeSettings(const Document& document, const Preferences& preferences, const WindowGeometry& window,
+                   const std::filesystem::path& file) {
+    Json json = preferencesJson(preferences, window);
+    // The material as it is now (saved or not), and where it was saved, so a new session
+    // resumes; "dirty" is not restored: the file on disk decides.
+    json["lastMaterial"] = materialToJson(document.scene.material);
+    json["lastMaterialPath"] = document.materialPath.string();
     std::filesystem::create_directories(file.parent_path());
-    const std::string text = prettyJson(settingsJson(state, window, true));
+    const std::string text = prettyJson(json);
     writeFileAtomic(file, std::vector<uint8_t>(text.begin(), text.end()));
 }
 }  // namespace
 
-bool saveSettings(EditorState& state, const WindowGeometry& window, const std::filesystem::path& file) {
+bool saveSettings(const Document& document, const Preferences& preferences, Prompts& prompts,
+                  const WindowGeometry& window, const std::filesystem::path& file) {
     try {
-        writeSettings(state, window, file);
+        writeSettings(document, preferences, window, file);
         return true;
     } catch (const std::exception& error) {
-        state.error = couldNotSave(file, error);
+        prompts.error = couldNotSave(file, error);
         return false;
     }
 }
 
-SettingsWriter::SettingsWriter(const EditorState& state, const WindowGeometry& window, std::filesystem::path file)
-    : file_(std::move(file)), written_(settingsJson(state, window, false).dump()) {}
+SettingsWriter::SettingsWriter(const Preferences& preferences, const WindowGeometry& window, std::filesystem::path file)
+    : file_(std::move(file)), written_(preferencesJson(preferences, window).dump()) {}
 
-std::optional<std::chrono::milliseconds> SettingsWriter::update(EditorState& state, const WindowGeometry& window,
-                                                                Clock::time_point now) {
-    std::string text = settingsJson(state, window, false).dump();
+std::optional<std::chrono::milliseconds> SettingsWriter::update(const Document& document,
+                                                                const Preferences& preferences, Prompts& prompts,
+                                                                const WindowGeometry& window, Clock::time_point now) {
+    std::string text = preferencesJson(preferences, window).dump();
     if (text == written_) {
         pending_.clear();
         return std::nullopt;
@@ -139,11 +142,11 @@ std::optional<std::chrono::milliseconds> SettingsWriter::update(EditorState& sta
         return std::chrono::ceil<std::chrono::milliseconds>(changedAt_ + kSettingsDelay - now);
     }
     try {
-        writeSettings(state, window, file_);
+        writeSettings(document, preferences, window, file_);
         failed_ = false;
     } catch (const std::exception& error) {
         if (!failed_) {   // said once: a folder that cannot be written is not news at each change
-            state.error = couldNotSave(file_, error);
+            prompts.error = couldNotSave(file_, error);
         }
         failed_ = true;
     }

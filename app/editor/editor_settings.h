@@ -4,7 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "editor_state.h"
+#include "document.h"
+#include "preferences.h"
+#include "prompts.h"
 
 namespace patina::editor {
 
@@ -23,11 +25,14 @@ WindowGeometry windowSizeFor(const WindowGeometry& saved, int workWidth, int wor
 
 std::filesystem::path configFolder();
 
-// Missing or unreadable settings leave the defaults (a bad file is reported in state.error,
-// never fatal).
-void loadSettings(EditorState& state, WindowGeometry& window, const std::filesystem::path& file);
-// Returns false (and sets state.error) when the file cannot be written. Atomic.
-bool saveSettings(EditorState& state, const WindowGeometry& window, const std::filesystem::path& file);
+// Missing or unreadable settings leave the defaults (a bad file is reported in prompts.error,
+// never fatal). The material the last session ended with becomes the document's.
+void loadSettings(Document& document, Preferences& preferences, Prompts& prompts, WindowGeometry& window,
+                  const std::filesystem::path& file);
+// The preferences and the document's material, for the next session. Returns false (and sets
+// prompts.error) when the file cannot be written. Atomic.
+bool saveSettings(const Document& document, const Preferences& preferences, Prompts& prompts,
+                  const WindowGeometry& window, const std::filesystem::path& file);
 
 // How long a preference must hold still before it is written: a window resize writes once.
 inline constexpr std::chrono::milliseconds kSettingsDelay{500};
@@ -38,11 +43,12 @@ inline constexpr std::chrono::milliseconds kSettingsDelay{500};
 class SettingsWriter {
 public:
     using Clock = std::chrono::steady_clock;
-    // `state` and `window` as loaded: nothing to write yet.
-    SettingsWriter(const EditorState& state, const WindowGeometry& window, std::filesystem::path file);
+    // `preferences` and `window` as loaded: nothing to write yet.
+    SettingsWriter(const Preferences& preferences, const WindowGeometry& window, std::filesystem::path file);
     // Once a frame; how long until a waiting write, or nothing (for the event loop's timeout).
-    // A failed write is said once in state.error.
-    std::optional<std::chrono::milliseconds> update(EditorState& state, const WindowGeometry& window,
+    // A failed write is said once in prompts.error.
+    std::optional<std::chrono::milliseconds> update(const Document& document, const Preferences& preferences,
+                                                    Prompts& prompts, const WindowGeometry& window,
                                                     Clock::time_point now);
 
 private:

@@ -20,7 +20,7 @@ void endInnermostWindow() {
 }
 }  // namespace
 
-bool drawGuarded(EditorState& state, const char* what, const std::function<void()>& draw) {
+bool drawGuarded(Prompts& prompts, const char* what, const std::function<void()>& draw) {
     ImGuiContext& context = *ImGui::GetCurrentContext();
     const int windows = context.CurrentWindowStack.Size;
     std::string message;
@@ -38,7 +38,7 @@ bool drawGuarded(EditorState& state, const char* what, const std::function<void(
         endInnermostWindow();
     }
     ImGui::ErrorCheckEndWindowRecover(nullptr);
-    state.error = std::string(what) + " failed: " + message;
+    prompts.error = std::string(what) + " failed: " + message;
     return false;
 }
 

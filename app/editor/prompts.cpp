@@ -4,10 +4,10 @@
 
 namespace patina::editor {
 
-bool promptOpen(const EditorState& state) {
-    return state.recoverable.has_value() || state.pendingOpen.has_value() || state.pendingNew ||
-           state.pendingQuit || state.pathDialog != EditorState::PathDialog::None ||
-           !state.presets.renaming.empty() || !state.presets.deleting.empty();
+bool promptOpen(const Jobs& jobs, const Prompts& prompts) {
+    return jobs.recoverable.has_value() || prompts.pendingOpen.has_value() || prompts.pendingNew ||
+           prompts.pendingQuit || prompts.pathDialog != Prompts::PathDialog::None ||
+           !prompts.presets.renaming.empty() || !prompts.presets.deleting.empty();
 }
 
 std::string joinLines(const std::vector<std::string>& lines) {

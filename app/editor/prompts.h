@@ -6,7 +6,7 @@
 
 namespace patina::editor {
 
-struct EditorState;
+struct Jobs;
 
 // Prompts: what the editor says to the user and what it waits on them for: the error and the
 // status, and the dialogs and questions pending an answer.
@@ -45,8 +45,8 @@ struct Prompts {
 };
 
 // Whether a prompt is up (restore, unsaved changes, a path): nothing edits the document behind
-// it, neither a shortcut nor a dropped file.
-bool promptOpen(const EditorState& state);
+// it, neither a shortcut nor a dropped file. The restore prompt is up while Jobs offers work.
+bool promptOpen(const Jobs& jobs, const Prompts& prompts);
 // Warnings one a line, for the status.
 std::string joinLines(const std::vector<std::string>& lines);
 

@@ -371,7 +371,7 @@ TEST_F(EditorStateTest, NewStartsTheDefaultSceneAndAsksWhenUnsaved) {
     state.scene.material.roughness = 0.05f;
     requestNew(state);
     EXPECT_TRUE(state.pendingNew) << "unsaved work is never dropped without asking";
-    EXPECT_TRUE(promptOpen(state));
+    EXPECT_TRUE(promptOpen(state, state));
     EXPECT_EQ(state.scene.material.roughness, 0.05f);
 }
 
@@ -476,11 +476,11 @@ TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
     state.scene.material.name = "last session";
     state.scene.material.metallic = 0.25f;
     WindowGeometry window{1234, 777};
-    ASSERT_TRUE(saveSettings(state, window, dir_ / "config" / "settings.json"));
+    ASSERT_TRUE(saveSettings(state, state, state, window, dir_ / "config" / "settings.json"));
 
     EditorState next;
     WindowGeometry nextWindow;
-    loadSettings(next, nextWindow, dir_ / "config" / "settings.json");
+    loadSettings(next, next, next, nextWindow, dir_ / "config" / "settings.json");
     EXPECT_TRUE(next.error.empty()) << next.error;
     EXPECT_EQ(nextWindow.width, 1234);
     EXPECT_EQ(next.layout.leftWidth, 411.0f);
@@ -489,7 +489,7 @@ TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
 
     std::ofstream(dir_ / "broken.json") << "{ nope";
     EditorState broken;
-    loadSettings(broken, nextWindow, dir_ / "broken.json");
+    loadSettings(broken, broken, broken, nextWindow, dir_ / "broken.json");
     EXPECT_NE(broken.error.find("Settings ignored"), std::string::npos);
     EXPECT_EQ(broken.scene.material, defaultScene().material);
 }
@@ -501,27 +501,27 @@ TEST_F(EditorStateTest, SettingsAreWrittenWhenAPreferenceChanges) {
     WindowGeometry window{1280, 720};
     SettingsWriter writer(state, window, file);
     const auto t0 = SettingsWriter::Clock::now();
-    EXPECT_FALSE(writer.update(state, window, t0).has_value()) << "nothing changed";
+    EXPECT_FALSE(writer.update(state, state, state, window, t0).has_value()) << "nothing changed";
     EXPECT_FALSE(fs::exists(file));
     state.scene.material.roughness = 0.3f;
-    EXPECT_FALSE(writer.update(state, window, t0).has_value()) << "an edit is the autosave's, not a setting";
+    EXPECT_FALSE(writer.update(state, state, state, window, t0).has_value()) << "an edit is the autosave's, not a setting";
 
     window = {1500, 900};   // a resize, frame by frame
-    ASSERT_TRUE(writer.update(state, window, t0).has_value());
+    ASSERT_TRUE(writer.update(state, state, state, window, t0).has_value());
     window = {1600, 1000};
-    EXPECT_TRUE(writer.update(state, window, t0 + 100ms).has_value());
+    EXPECT_TRUE(writer.update(state, state, state, window, t0 + 100ms).has_value());
     EXPECT_FALSE(fs::exists(file)) << "not while it is still changing";
-    EXPECT_FALSE(writer.update(state, window, t0 + 100ms + kSettingsDelay).has_value());
+    EXPECT_FALSE(writer.update(state, state, state, window, t0 + 100ms + kSettingsDelay).has_value());
     ASSERT_TRUE(fs::exists(file));
     EditorState next;
     WindowGeometry loaded;
-    loadSettings(next, loaded, file);
+    loadSettings(next, next, next, loaded, file);
     EXPECT_EQ(loaded.width, 1600);
 
     rememberRecent(state, dir_ / "opened.json");
-    writer.update(state, window, t0 + 1s);
-    writer.update(state, window, t0 + 1s + kSettingsDelay);
-    loadSettings(next, loaded, file);
+    writer.update(state, state, state, window, t0 + 1s);
+    writer.update(state, state, state, window, t0 + 1s + kSettingsDelay);
+    loadSettings(next, next, next, loaded, file);
     ASSERT_EQ(next.recentFiles.size(), 1u);
     EXPECT_EQ(next.recentFiles[0].filename(), "opened.json");
 
@@ -529,13 +529,13 @@ TEST_F(EditorStateTest, SettingsAreWrittenWhenAPreferenceChanges) {
     fs::remove_all(dir_ / "config");
     std::ofstream(dir_ / "config") << "a file where the folder would be";
     state.showGizmos = !state.showGizmos;
-    writer.update(state, window, t0 + 2s);
-    writer.update(state, window, t0 + 2s + kSettingsDelay);
+    writer.update(state, state, state, window, t0 + 2s);
+    writer.update(state, state, state, window, t0 + 2s + kSettingsDelay);
     EXPECT_NE(state.error.find("settings.json"), std::string::npos) << state.error;
     state.error.clear();
     state.showAdvanced = !state.showAdvanced;
-    writer.update(state, window, t0 + 3s);
-    writer.update(state, window, t0 + 3s + kSettingsDelay);
+    writer.update(state, state, state, window, t0 + 3s);
+    writer.update(state, state, state, window, t0 + 3s + kSettingsDelay);
     EXPECT_TRUE(state.error.empty()) << state.error;
 }
 
@@ -1162,10 +1162,10 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     state.layout.showLobe = false;
     state.screenshotWidth = 3840;
     state.screenshotHeight = 2160;
-    ASSERT_TRUE(saveSettings(state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
+    ASSERT_TRUE(saveSettings(state, state, state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
     EditorState next;
     WindowGeometry window;
-    loadSettings(next, window, dir_ / "settings.json");
+    loadSettings(next, next, next, window, dir_ / "settings.json");
     EXPECT_EQ(next.uiScaleSetting, 1.5f);
     EXPECT_FALSE(next.showGizmos);
     EXPECT_TRUE(next.showAdvanced);

@@ -274,7 +274,7 @@ TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAskingAndNothingEditsBehindTh
     EXPECT_FALSE(state_.pendingNew) << "Ctrl+N behind the prompt";
     click(centreOf("Discard changes"));
     EXPECT_EQ(state_.scene.material.name, "other");
-    EXPECT_FALSE(promptOpen(state_));
+    EXPECT_FALSE(promptOpen(state_, state_));
 }
 
 TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {

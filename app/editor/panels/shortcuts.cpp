@@ -19,7 +19,7 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
     } else if (pressed(keys, kKeyEscape)) {
         state.showShortcuts = false;
     }
-    if (promptOpen(state)) {
+    if (promptOpen(state, state)) {
         // Nothing edits the document behind a prompt: Ctrl+Z or Ctrl+O there once undid or
         // replaced what the prompt was asking about.
         return;
