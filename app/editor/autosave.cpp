@@ -262,23 +262,23 @@ void compareWithItsFiles(Document& document, const Recoverable& found) {
 }
 }  // namespace
 
-void restoreRecoverable(EditorState& state) {
-    if (!state.recoverable) {
+void restoreRecoverable(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts) {
+    if (!jobs.recoverable) {
         return;
     }
-    Recoverable found = std::move(*state.recoverable);
-    startDocument(state, found.scene, found.scenePath, found.materialPath, found.shape);
-    compareWithItsFiles(state, found);
-    state.status = "Restored the work autosaved " + found.savedAt;
+    Recoverable found = std::move(*jobs.recoverable);
+    startDocument(document, interaction, jobs, found.scene, found.scenePath, found.materialPath, found.shape);
+    compareWithItsFiles(document, found);
+    prompts.status = "Restored the work autosaved " + found.savedAt;
     // Kept in this editor's own file before the old one goes, so a crash now loses nothing.
-    if (!state.autosave.file.empty()) {
-        write(state.autosave, state, autosaveText(state));
-        state.autosave.pending.clear();
+    if (!jobs.autosave.file.empty()) {
+        write(jobs.autosave, prompts, autosaveText(document));
+        jobs.autosave.pending.clear();
     }
-    if (!state.autosave.failed) {
+    if (!jobs.autosave.failed) {
         removeLocked(found.file, found.lock);
     }
-    offerNext(state);
+    offerNext(jobs);
 }
 
 void discardRecoverable(Jobs& jobs) {

@@ -18,7 +18,7 @@
 namespace patina::editor {
 
 struct Document;
-struct EditorState;
+struct Interaction;
 struct Jobs;
 struct Prompts;
 
@@ -86,7 +86,7 @@ std::optional<std::chrono::milliseconds> updateAutosave(const Document& document
 // The offered work becomes the edited document (its own paths and history), kept at once in
 // this editor's file; its old file is then deleted. Discard deletes that file. Either way the
 // next file found is offered.
-void restoreRecoverable(EditorState& state);
+void restoreRecoverable(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts);
 void discardRecoverable(Jobs& jobs);
 // A clean quit: this editor's file and lock are removed; nothing is left to recover.
 void removeAutosave(Autosave& autosave);

@@ -36,36 +36,38 @@ std::vector<CameraChoice> cameraChoices(const Document& document) {
     return choices;
 }
 
-std::string currentCameraName(const EditorState& state) {
-    if (!state.cameraName.empty() && state.cameraView == state.scene.camera) {
-        return state.cameraName;
+std::string currentCameraName(const Document& document, const Interaction& interaction) {
+    if (!interaction.cameraName.empty() && interaction.cameraView == document.scene.camera) {
+        return interaction.cameraName;
     }
-    return state.scene.camera == state.savedScene.camera ? "the scene's" : "free";
+    return document.scene.camera == document.savedScene.camera ? "the scene's" : "free";
 }
 
-void rememberCamera(EditorState& state, const std::string& name) {
-    state.cameraName = name;
-    state.cameraView = state.scene.camera;
+void rememberCamera(Interaction& interaction, const Camera& camera, const std::string& name) {
+    interaction.cameraName = name;
+    interaction.cameraView = camera;
 }
 
-void chooseCamera(EditorState& state, const CameraChoice& choice) {
-    const bool inModel = state.model && choice.fileCamera >= 0 && choice.fileCamera < int(state.model->cameras.size());
+void chooseCamera(Document& document, Interaction& interaction, Prompts& prompts, const CameraChoice& choice) {
+    const bool inModel =
+        document.model && choice.fileCamera >= 0 && choice.fileCamera < int(document.model->cameras.size());
     if (!choice.usable || (choice.fileCamera >= 0 && !inModel)) {
-        state.status = choice.detail;
+        prompts.status = choice.detail;
         return;
     }
     float roll = 0.0f;
     if (inModel) {
-        roll = placeModelCamera(state.scene.camera, state.model->cameras[size_t(choice.fileCamera)], meshBounds(state));
+        roll = placeModelCamera(document.scene.camera, document.model->cameras[size_t(choice.fileCamera)],
+                                meshBounds(document));
     } else {
-        frameAsModelViewer(state.scene.camera, meshBounds(state));
+        frameAsModelViewer(document.scene.camera, meshBounds(document));
     }
-    rememberCamera(state, choice.name);
-    state.status = "Camera: " + choice.name;
+    rememberCamera(interaction, document.scene.camera, choice.name);
+    prompts.status = "Camera: " + choice.name;
     if (std::abs(roll) > 0.5f) {
         char text[120];
         std::snprintf(text, sizeof text, " (rolled %.1f degrees in the file: shown level, +Y up)", double(roll));
-        state.status += text;
+        prompts.status += text;
     }
 }
 

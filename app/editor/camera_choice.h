@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "editor_state.h"
+#include "document.h"
+#include "interaction.h"
+#include "prompts.h"
 
 namespace patina::editor {
 
@@ -24,12 +26,13 @@ std::vector<CameraChoice> cameraChoices(const Document& document);
 // The name of the view last chosen (or given a model just opened) while the scene's camera is
 // still on it, else "the scene's" where it is the camera of the scene as opened or saved, else
 // "free" (orbited, panned, zoomed, undone, ...).
-std::string currentCameraName(const EditorState& state);
+std::string currentCameraName(const Document& document, const Interaction& interaction);
 // Looks through `choice` (a view, not an undoable edit, as orbiting is): the front at the
 // scene's field of view, a file's camera with its own; the status says which, and the roll of a
 // rolled camera, which is not shown. An unusable choice changes nothing and says why.
-void chooseCamera(EditorState& state, const CameraChoice& choice);
-// The scene's camera is now the view named `name` (a model opened and framed): the list names it.
-void rememberCamera(EditorState& state, const std::string& name);
+void chooseCamera(Document& document, Interaction& interaction, Prompts& prompts, const CameraChoice& choice);
+// The scene's camera is now `camera`, the view named `name` (a model opened and framed): the list
+// names it.
+void rememberCamera(Interaction& interaction, const Camera& camera, const std::string& name);
 
 }  // namespace patina::editor

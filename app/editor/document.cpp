@@ -90,52 +90,52 @@ void commitEdits(Document& document) {
 }
 
 namespace {
-void restore(EditorState& state, const EditSnapshot& snapshot) {
-    state.scene.material = snapshot.material;
-    state.scene.lights = snapshot.lights;
-    state.scene.display = snapshot.display;
-    state.scene.modelMaterials = snapshot.modelMaterials;
-    state.scene.modelBrdf = snapshot.modelBrdf;
-    state.model = snapshot.shape.model;   // the same file with the maps it had replaced, or another
-    if (!(state.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
-        state.scene.mesh = snapshot.shape.kind;
-        state.scene.meshFile = snapshot.shape.file;
-        state.mesh = snapshot.shape.mesh;
-        state.model = snapshot.shape.model;
-        state.scene.camera = snapshot.shape.camera;
-        state.selectedModelMaterial = 0;
+void restore(Document& document, Interaction& interaction, const EditSnapshot& snapshot) {
+    document.scene.material = snapshot.material;
+    document.scene.lights = snapshot.lights;
+    document.scene.display = snapshot.display;
+    document.scene.modelMaterials = snapshot.modelMaterials;
+    document.scene.modelBrdf = snapshot.modelBrdf;
+    document.model = snapshot.shape.model;   // the same file with the maps it had replaced, or another
+    if (!(document.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
+        document.scene.mesh = snapshot.shape.kind;
+        document.scene.meshFile = snapshot.shape.file;
+        document.mesh = snapshot.shape.mesh;
+        document.model = snapshot.shape.model;
+        document.scene.camera = snapshot.shape.camera;
+        interaction.selectedModelMaterial = 0;
     }
-    state.committed = snapshot;
-    const int count = int(state.scene.lights.size());
-    state.selectedLight = std::clamp(state.selectedLight, count ? 0 : -1, count - 1);
-    if (state.soloLight >= count) {
-        state.soloLight = -1;
+    document.committed = snapshot;
+    const int count = int(document.scene.lights.size());
+    interaction.selectedLight = std::clamp(interaction.selectedLight, count ? 0 : -1, count - 1);
+    if (interaction.soloLight >= count) {
+        interaction.soloLight = -1;
     }
 }
 }  // namespace
 
 // An error from before the step is old news.
-void undo(EditorState& state) {
-    commitEdits(state);
-    const EditSnapshot current = state.snapshot();
-    if (auto previous = state.history.undo(current)) {
-        state.status = "Undid " + describeChange(*previous, current);
-        state.error.clear();
-        restore(state, *previous);
+void undo(Document& document, Interaction& interaction, Prompts& prompts) {
+    commitEdits(document);
+    const EditSnapshot current = document.snapshot();
+    if (auto previous = document.history.undo(current)) {
+        prompts.status = "Undid " + describeChange(*previous, current);
+        prompts.error.clear();
+        restore(document, interaction, *previous);
     } else {
-        state.status = "Nothing to undo";
+        prompts.status = "Nothing to undo";
     }
 }
 
-void redo(EditorState& state) {
-    commitEdits(state);
-    const EditSnapshot current = state.snapshot();
-    if (auto next = state.history.redo(current)) {
-        state.status = "Redid " + describeChange(current, *next);
-        state.error.clear();
-        restore(state, *next);
+void redo(Document& document, Interaction& interaction, Prompts& prompts) {
+    commitEdits(document);
+    const EditSnapshot current = document.snapshot();
+    if (auto next = document.history.redo(current)) {
+        prompts.status = "Redid " + describeChange(current, *next);
+        prompts.error.clear();
+        restore(document, interaction, *next);
     } else {
-        state.status = "Nothing to redo";
+        prompts.status = "Nothing to redo";
     }
 }
 

@@ -12,7 +12,8 @@
 
 namespace patina::editor {
 
-struct EditorState;
+struct Interaction;
+struct Prompts;
 
 // The document: the scene being edited, the files it was opened from or saved to, what is in
 // them, and the history of its edits. Everything Save writes and Undo restores is here.
@@ -68,8 +69,8 @@ void applyEdit(Document& document, Apply&& apply) {
     commitEdits(document);
 }
 // The status says what a step undid or redid; the selection and solo stay on lights that exist.
-void undo(EditorState& state);
-void redo(EditorState& state);
+void undo(Document& document, Interaction& interaction, Prompts& prompts);
+void redo(Document& document, Interaction& interaction, Prompts& prompts);
 
 // The sphere the camera frames and the light rig is fitted to: the mesh file's bounds, or the
 // built-in mesh's (about the origin, radius 1).

@@ -55,8 +55,8 @@ void applyMesh(EditorState& state, const std::filesystem::path& path, const Mode
     scene.modelMaterials.clear();
     scene.modelBrdf.reset();   // shaded as its file says (glTF's BRDF), whatever the last one chose
     fitSceneTo(scene, meshBounds(state), shapeBounds(scene, mesh.get()));   // as `render --mesh` fits it
-    startDocument(state, scene, {}, {}, {mesh, loaded.model}, state.environment);
-    rememberCamera(state, kFrontCamera);
+    startDocument(state, state, state, scene, {}, {}, {mesh, loaded.model}, state.environment);
+    rememberCamera(state, state.scene.camera, kFrontCamera);
     state.error.clear();
     state.status = "Opened " + path.filename().string() + modelSummary(*loaded.model);
     rememberRecent(state, path);
@@ -74,11 +74,11 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
 }
 }  // namespace
 
-void startModelLoad(EditorState& state, const std::filesystem::path& path) {
-    cancelModelLoad(state);   // a newer choice replaces one under way
-    state.modelLoad = std::make_shared<ModelLoad>(path, state.assets);
-    state.modelReplaces = state.scene;
-    state.status = "Loading " + path.filename().string() + "...";
+void startModelLoad(const Document& document, Jobs& jobs, Prompts& prompts, const std::filesystem::path& path) {
+    cancelModelLoad(jobs, prompts);   // a newer choice replaces one under way
+    jobs.modelLoad = std::make_shared<ModelLoad>(path, jobs.assets);
+    jobs.modelReplaces = document.scene;
+    prompts.status = "Loading " + path.filename().string() + "...";
 }
 
 bool finishModelLoad(EditorState& state, bool wait) {
@@ -109,58 +109,58 @@ namespace {
 // The model under way, no longer wanted. Its worker is told to stop at the next image decoded
 // and ends on its own, its result unused, while the editor goes on (a future waits for its
 // worker when destroyed, so the load is kept until then). False when none was under way.
-bool dropModelLoad(EditorState& state) {
-    if (!state.modelLoad) {
+bool dropModelLoad(Jobs& jobs) {
+    if (!jobs.modelLoad) {
         return false;
     }
-    state.modelLoad->cancel();   // its worker stops at the next image
-    state.droppedModelLoads.push_back(std::move(state.modelLoad));
+    jobs.modelLoad->cancel();   // its worker stops at the next image
+    jobs.droppedModelLoads.push_back(std::move(jobs.modelLoad));
     return true;
 }
 }  // namespace
 
-void cancelModelLoad(EditorState& state) {
-    if (dropModelLoad(state)) {
-        state.status = "Mesh left as it was";
+void cancelModelLoad(Jobs& jobs, Prompts& prompts) {
+    if (dropModelLoad(jobs)) {
+        prompts.status = "Mesh left as it was";
     }
 }
 
-void startDocument(EditorState& state, const Scene& scene, const std::filesystem::path& scenePath,
-                   const std::filesystem::path& materialPath, AssetCache::Shape shape,
-                   std::shared_ptr<const Environment> environment) {
-    state.scene = scene;
-    state.mesh = std::move(shape.mesh);
-    state.model = std::move(shape.model);
-    state.selectedModelMaterial = 0;
-    state.partFilter.clear();
-    state.partPresets.clear();
-    state.environment = std::move(environment);
-    state.scenePath = scenePath;
-    state.materialPath = materialPath;
-    state.savedScene = scene;
-    state.savedMaterial = scene.material;
-    state.history = UndoHistory();   // the last document's steps would restore its content under this path
-    state.committed = state.snapshot();
-    state.selectedLight = scene.lights.empty() ? -1 : 0;
-    state.soloLight = -1;
-    state.draggedLight = -1;
+void startDocument(Document& document, Interaction& interaction, Jobs& jobs, const Scene& scene,
+                   const std::filesystem::path& scenePath, const std::filesystem::path& materialPath,
+                   AssetCache::Shape shape, std::shared_ptr<const Environment> environment) {
+    document.scene = scene;
+    document.mesh = std::move(shape.mesh);
+    document.model = std::move(shape.model);
+    interaction.selectedModelMaterial = 0;
+    interaction.partFilter.clear();
+    interaction.partPresets.clear();
+    document.environment = std::move(environment);
+    document.scenePath = scenePath;
+    document.materialPath = materialPath;
+    document.savedScene = scene;
+    document.savedMaterial = scene.material;
+    document.history = UndoHistory();   // the last document's steps would restore its content under this path
+    document.committed = document.snapshot();
+    interaction.selectedLight = scene.lights.empty() ? -1 : 0;
+    interaction.soloLight = -1;
+    interaction.draggedLight = -1;
     // An environment still being prepared was chosen for the last document.
-    state.environmentLoad.reset();
-    dropModelLoad(state);   // the last document's model does not land in this one
-    state.environmentFailed.clear();
+    jobs.environmentLoad.reset();
+    dropModelLoad(jobs);   // the last document's model does not land in this one
+    jobs.environmentFailed.clear();
 }
 
-void newDocument(EditorState& state) {
-    startDocument(state, defaultScene(), {}, {});
-    state.error.clear();
-    state.status = "New scene";
+void newDocument(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts) {
+    startDocument(document, interaction, jobs, defaultScene(), {}, {});
+    prompts.error.clear();
+    prompts.status = "New scene";
 }
 
-void requestNew(EditorState& state) {
-    if (state.dirty()) {
-        state.pendingNew = true;
+void requestNew(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts) {
+    if (document.dirty()) {
+        prompts.pendingNew = true;
     } else {
-        newDocument(state);
+        newDocument(document, interaction, jobs, prompts);
     }
 }
 
@@ -217,16 +217,16 @@ DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& p
 
 // Whether opening `path` starts a new document (a scene, a screenshot, a material file, a glTF
 // model) rather than editing the open one (a preset, an environment image).
-bool startsADocument(const EditorState& state, const std::filesystem::path& path) {
+bool startsADocument(const Preferences& preferences, const std::filesystem::path& path) {
     const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
-    return !environment && !isPreset(state, path);
+    return !environment && !isPreset(preferences, path);
 }
 
 void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
     if (file.scene) {
         // A scene file is the document; a screenshot's scene is not a file to save into.
-        startDocument(state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {}, file.shape,
-                      file.environment);
+        startDocument(state, state, state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {},
+                      file.shape, file.environment);
         // A screenshot reopens as what it shows: a comparison with its A, view and split, or
         // a single view.
         if (path.extension() == ".png") {
@@ -244,21 +244,21 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
         // model (a preset's is for the built-in meshes; a glTF part stays glTF's).
         Material preset = *file.material;
         if (modelMaterialCount(state) > 0) {
-            preset.model = editedMaterial(state).model;
+            preset.model = editedMaterial(state, state).model;
         }
-        applyEdit(state, [&](Document& d) { setEditedMaterial(state, d.scene, preset); });
+        applyEdit(state, [&](Document& d) { setEditedMaterial(state, state, d.scene, preset); });
         if (modelMaterialCount(state) > 0) {   // the part keeps its name: the labels say which preset
-            state.partPresets[state.selectedModelMaterial] = {file.material->name, editedMaterial(state)};
+            state.partPresets[state.selectedModelMaterial] = {file.material->name, editedMaterial(state, state)};
         }
     } else {
         Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
         scene.material = *file.material;
-        startDocument(state, scene, {}, path);
+        startDocument(state, state, state, scene, {}, path);
     }
     state.error.clear();
     const bool preset = !file.scene && isPreset(state, path);
     state.status = (preset ? "Preset " + file.material->name + " applied" +
-                                 (modelMaterialCount(state) > 0 ? " to " + editedMaterial(state).name : "") +
+                                 (modelMaterialCount(state) > 0 ? " to " + editedMaterial(state, state).name : "") +
                                  " (Ctrl+Z undoes it)"
                            : "Opened " + path.filename().string()) +
                    (file.warnings.empty() ? "" : "\n" + joinLines(file.warnings));
@@ -271,7 +271,8 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
         return openMesh(state, path);
     }
     if (path.extension() == ".hdr" || path.extension() == ".exr") {
-        return setEnvironmentSource(state, std::filesystem::absolute(path).lexically_normal().string());
+        return setEnvironmentSource(state, state, state, state,
+                                    std::filesystem::absolute(path).lexically_normal().string());
     }
     try {
         applyDocumentFile(state, path, readDocumentFile(*state.assets, path));
@@ -287,7 +288,8 @@ bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& pat
     for (const std::filesystem::path& path : paths) {
         // An environment image is prepared on a worker; here it is waited for, so that its error
         // joins the others instead of replacing them when it arrives.
-        if (!openFile(state, path) || (state.environmentLoad && !finishEnvironmentLoad(state, true))) {
+        if (!openFile(state, path) ||
+            (state.environmentLoad && !finishEnvironmentLoad(state, state, state, state, true))) {
             errors += (errors.empty() ? "" : "\n") + state.error;
         }
     }
@@ -303,7 +305,7 @@ void openStartupFiles(EditorState& state, std::vector<std::filesystem::path> pat
     }
     openFiles(state, paths);
     if (model) {
-        startModelLoad(state, *model);   // its error, if any, joins the others once it is read
+        startModelLoad(state, state, state, *model);   // its error, if any, joins the others once it is read
     }
 }
 
@@ -329,7 +331,7 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
     if (state.dirty()) {
         state.pendingOpen = path;
     } else if (model) {
-        startModelLoad(state, path);   // read and decoded on a worker: the window keeps drawing
+        startModelLoad(state, state, state, path);   // read and decoded on a worker: the window keeps drawing
     } else {
         applyDocumentFile(state, path, std::move(file));
     }
@@ -343,59 +345,59 @@ void answerOpen(EditorState& state, bool go) {
     const bool modelRead = state.modelLoad && state.modelLoad->path() == *path;
     if (!go) {
         if (modelRead) {
-            cancelModelLoad(state);
+            cancelModelLoad(state, state);
         }
     } else if (modelRead) {
         state.modelReplaces = state.scene;   // what was answered for: applied in the next frame
     } else if (!gltfExtension(*path).empty()) {
-        startModelLoad(state, *path);
+        startModelLoad(state, state, state, *path);
     } else {
         openFile(state, *path);
     }
 }
 
-bool saveScene(EditorState& state, const std::filesystem::path& path) {
-    commitEdits(state);
+bool saveScene(Document& document, Preferences& preferences, Prompts& prompts, const std::filesystem::path& path) {
+    commitEdits(document);
     try {
-        saveSceneFile(path, state.scene);
+        saveSceneFile(path, document.scene);
     } catch (const std::exception& error) {
-        state.error = couldNotSave(path, error);
+        prompts.error = couldNotSave(path, error);
         return false;
     }
-    state.scenePath = path;
-    state.savedScene = state.scene;
-    state.savedMaterial = state.scene.material;   // inline in the scene file
-    state.error.clear();
-    state.status = "Saved " + path.filename().string();
-    rememberRecent(state, path);
+    document.scenePath = path;
+    document.savedScene = document.scene;
+    document.savedMaterial = document.scene.material;   // inline in the scene file
+    prompts.error.clear();
+    prompts.status = "Saved " + path.filename().string();
+    rememberRecent(preferences, path);
     return true;
 }
 
-bool exportGltfFile(EditorState& state, std::filesystem::path path) {
+bool exportGltfFile(const Document& document, Prompts& prompts, std::filesystem::path path) {
     if (gltfExtension(path).empty()) {
         path += ".glb";
     }
     try {
-        if (state.scene.meshFile.empty()) {
-            exportGltf(path, *builtinMesh(state.scene.mesh), state.scene.material);
-        } else if (state.model) {
-            exportGltfModel(path, tunedModel(*state.model, state.scene));
+        if (document.scene.meshFile.empty()) {
+            exportGltf(path, *builtinMesh(document.scene.mesh), document.scene.material);
+        } else if (document.model) {
+            exportGltfModel(path, tunedModel(*document.model, document.scene));
         } else {
             throw std::runtime_error("the model is still loading");
         }
     } catch (const std::exception& error) {
-        state.error = couldNotSave(path, error);
+        prompts.error = couldNotSave(path, error);
         return false;
     }
-    state.error.clear();
-    state.status = "Exported " + path.filename().string();
+    prompts.error.clear();
+    prompts.status = "Exported " + path.filename().string();
     return true;
 }
 
 namespace {
 // Map `key` of the model's material `index` as a phrase: "base colour map of \"Texture\"".
-std::string mapOfMaterial(const EditorState& state, int index, const std::string& key) {
-    const ModelMaterial& material = state.model->materials.at(size_t(index));
+std::string mapOfMaterial(const Document& document, int index, const std::string& key) {
+    const ModelMaterial& material = document.model->materials.at(size_t(index));
     const auto map = mapWithKey(material, key);
     return (map ? std::string(map->name) + " map" : key) + " of \"" + material.name + "\"";
 }
@@ -403,61 +405,62 @@ std::string mapOfMaterial(const EditorState& state, int index, const std::string
 // The edit of the maps `index` has that `change` makes, with the model retextured to match, as
 // one undoable step.
 template <typename Change>
-void changeMaps(EditorState& state, Change&& change) {
-    Scene scene = state.scene;
+void changeMaps(Document& document, AssetCache& assets, Change&& change) {
+    Scene scene = document.scene;
     change(scene);
-    std::shared_ptr<const Model> model = state.assets->retextured(state.model, scene);
-    applyEdit(state, [&](Document& d) {
+    std::shared_ptr<const Model> model = assets.retextured(document.model, scene);
+    applyEdit(document, [&](Document& d) {
         d.scene.modelMaterials = scene.modelMaterials;
         d.model = std::move(model);
     });
 }
 }  // namespace
 
-bool replaceMap(EditorState& state, int index, const std::string& key, const std::filesystem::path& path) {
-    if (!state.model || index < 0 || index >= modelMaterialCount(state)) {
+bool replaceMap(Document& document, AssetCache& assets, Prompts& prompts, int index, const std::string& key,
+                const std::filesystem::path& path) {
+    if (!document.model || index < 0 || index >= modelMaterialCount(document)) {
         return false;
     }
-    const std::string what = "the " + mapOfMaterial(state, index, key);
+    const std::string what = "the " + mapOfMaterial(document, index, key);
     const std::string file = std::filesystem::absolute(path).lexically_normal().string();
     try {
-        const std::shared_ptr<const ModelImage> image = state.assets->image(file);   // held: decoded once
-        changeMaps(state, [&](Scene& scene) { setMapReplacement(state, scene, index, key, file); });
-        state.error.clear();
-        state.status = "Replaced " + what + " with " + path.filename().string() + ", " +
+        const std::shared_ptr<const ModelImage> image = assets.image(file);   // held: decoded once
+        changeMaps(document, assets, [&](Scene& scene) { setMapReplacement(document, scene, index, key, file); });
+        prompts.error.clear();
+        prompts.status = "Replaced " + what + " with " + path.filename().string() + ", " +
                        std::to_string(image->width) + " x " + std::to_string(image->height) + " (Ctrl+Z undoes it)";
         return true;
     } catch (const std::exception& error) {
-        state.error = "Could not replace " + what + ": " + error.what();
+        prompts.error = "Could not replace " + what + ": " + error.what();
         return false;
     }
 }
 
-void restoreMap(EditorState& state, int index, const std::string& key) {
-    if (!state.model || index < 0 || index >= modelMaterialCount(state)) {
+void restoreMap(Document& document, AssetCache& assets, Prompts& prompts, int index, const std::string& key) {
+    if (!document.model || index < 0 || index >= modelMaterialCount(document)) {
         return;
     }
     try {
-        changeMaps(state, [&](Scene& scene) { setMapReplacement(state, scene, index, key, ""); });
-        state.status = "The file's own " + mapOfMaterial(state, index, key) + " is drawn again";
+        changeMaps(document, assets, [&](Scene& scene) { setMapReplacement(document, scene, index, key, ""); });
+        prompts.status = "The file's own " + mapOfMaterial(document, index, key) + " is drawn again";
     } catch (const std::exception& error) {
-        state.error = "Could not restore the " + mapOfMaterial(state, index, key) + ": " + error.what();
+        prompts.error = "Could not restore the " + mapOfMaterial(document, index, key) + ": " + error.what();
     }
 }
 
-bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
-    commitEdits(state);   // what was saved is a step of its own to come back to
+bool saveMaterial(Document& document, Preferences& preferences, Prompts& prompts, const std::filesystem::path& path) {
+    commitEdits(document);   // what was saved is a step of its own to come back to
     try {
-        saveMaterialFile(path, state.scene.material);
+        saveMaterialFile(path, document.scene.material);
     } catch (const std::exception& error) {
-        state.error = couldNotSave(path, error);
+        prompts.error = couldNotSave(path, error);
         return false;
     }
-    state.materialPath = path;
-    state.savedMaterial = state.scene.material;
-    state.error.clear();
-    state.status = "Saved " + path.filename().string();
-    rememberRecent(state, path);
+    document.materialPath = path;
+    document.savedMaterial = document.scene.material;
+    prompts.error.clear();
+    prompts.status = "Saved " + path.filename().string();
+    rememberRecent(preferences, path);
     return true;
 }
 
@@ -465,8 +468,9 @@ namespace {
 // Where a preset saved as `path` goes: a name alone, or any path not from the root, into the
 // user's presets folder, where the browser shows it (a bare "my copper" once went into the
 // working folder, unseen); ".json" added when missing.
-std::filesystem::path presetFile(const EditorState& state, const std::filesystem::path& path) {
-    std::filesystem::path file = path.is_relative() && !state.userPresetFolder.empty() ? state.userPresetFolder / path : path;
+std::filesystem::path presetFile(const Preferences& preferences, const std::filesystem::path& path) {
+    std::filesystem::path file =
+        path.is_relative() && !preferences.userPresetFolder.empty() ? preferences.userPresetFolder / path : path;
     if (file.extension() != ".json") {
         file += ".json";
     }
@@ -474,44 +478,46 @@ std::filesystem::path presetFile(const EditorState& state, const std::filesystem
 }
 
 // "in your presets", or where it went and that the browser does not show it there.
-std::string presetPlace(const EditorState& state, const std::filesystem::path& file) {
-    if (isPreset(state, file)) {
+std::string presetPlace(const Preferences& preferences, const std::filesystem::path& file) {
+    if (isPreset(preferences, file)) {
         return "in your presets (" + shownPath(file.parent_path()) + ")";
     }
-    return "as " + shownPath(file) + ", outside your presets folder (" + shownPath(state.userPresetFolder) +
+    return "as " + shownPath(file) + ", outside your presets folder (" + shownPath(preferences.userPresetFolder) +
            "): the browser does not show it";
 }
 }  // namespace
 
-bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
-    const std::filesystem::path file = presetFile(state, path);
+bool saveAsPreset(Document& document, const Interaction& interaction, Preferences& preferences, Prompts& prompts,
+                  const std::filesystem::path& path) {
+    const std::filesystem::path file = presetFile(preferences, path);
     try {
         std::filesystem::create_directories(file.has_parent_path() ? file.parent_path() : ".");
     } catch (const std::exception& error) {
-        state.error = couldNotSave(file, error);
+        prompts.error = couldNotSave(file, error);
         return false;
     }
     // The preset is known by its file in the browser: the material takes the file's name.
     const std::string name = file.stem().string();
-    if (modelMaterialCount(state) > 0) {   // a model's material: written as it is, its key kept
-        Material preset = editedMaterial(state);
+    if (modelMaterialCount(document) > 0) {   // a model's material: written as it is, its key kept
+        Material preset = editedMaterial(document, interaction);
         preset.name = name;
         try {
             saveMaterialFile(file, preset);
         } catch (const std::exception& error) {
-            state.error = couldNotSave(file, error);
+            prompts.error = couldNotSave(file, error);
             return false;
         }
-        state.status = "Saved " + editedMaterial(state).name + " as the preset " + name + " " + presetPlace(state, file);
+        prompts.status = "Saved " + editedMaterial(document, interaction).name + " as the preset " + name + " " +
+                         presetPlace(preferences, file);
         return true;
     }
-    if (state.scene.material.name != name) {
-        applyEdit(state, [&](Document& d) { d.scene.material.name = name; });
+    if (document.scene.material.name != name) {
+        applyEdit(document, [&](Document& d) { d.scene.material.name = name; });
     }
-    if (!saveMaterial(state, file)) {
+    if (!saveMaterial(document, preferences, prompts, file)) {
         return false;
     }
-    state.status = "Saved the preset " + name + " " + presetPlace(state, file);
+    prompts.status = "Saved the preset " + name + " " + presetPlace(preferences, file);
     return true;
 }
 

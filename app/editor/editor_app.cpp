@@ -142,8 +142,8 @@ void stopImGui() {
 
 // What the status line says, which a frame drawn after the change must show: the messages, and
 // the PBR count the viewport sets after the menu bar has drawn the last one.
-std::string shownText(const EditorState& state, const EditorServices& services) {
-    std::string text = state.status + '\n' + state.error;
+std::string shownText(const Prompts& prompts, const EditorServices& services) {
+    std::string text = prompts.status + '\n' + prompts.error;
     if (services.pbrTally) {
         text += '\n' + std::to_string(services.pbrTally->flagged()) + '/' + std::to_string(services.pbrTally->texels);
     }

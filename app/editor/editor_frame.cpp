@@ -48,8 +48,8 @@ bool beginPanel(const char* name, const PanelRect& rect, bool horizontal, float*
 }
 
 // Errors float over the top of the viewport until dismissed, so no panel's widgets move.
-void drawError(EditorState& state, ImVec2 at, float width) {
-    if (state.error.empty()) {
+void drawError(Prompts& prompts, ImVec2 at, float width) {
+    if (prompts.error.empty()) {
         return;
     }
     ImGui::SetNextWindowPos(at, ImGuiCond_Always);
@@ -59,11 +59,11 @@ void drawError(EditorState& state, ImVec2 at, float width) {
                                              ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
         ImGui::PushTextWrapPos(width - px(16));
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.5f, 0.45f, 1.0f));
-        ImGui::TextUnformatted(state.error.c_str());
+        ImGui::TextUnformatted(prompts.error.c_str());
         ImGui::PopStyleColor();
         ImGui::PopTextWrapPos();
         if (ImGui::SmallButton("Dismiss")) {
-            state.error.clear();
+            prompts.error.clear();
         }
         recordItem("error:dismiss", "Hide this message");
     }
@@ -71,9 +71,10 @@ void drawError(EditorState& state, ImVec2 at, float width) {
 }
 
 // The lobe; with Advanced on, the accuracy numbers beside it, a research tool, in a tab of their own.
-void drawBottomPanel(EditorState& state, EditorServices& services) {
-    if (!state.showAdvanced) {
-        drawLobePanel(state, services);
+void drawBottomPanel(const Document& document, Interaction& interaction, const Preferences& preferences,
+                     EditorServices& services) {
+    if (!preferences.showAdvanced) {
+        drawLobePanel(document, interaction, services);
         return;
     }
     if (!ImGui::BeginTabBar("bottom")) {
@@ -82,13 +83,13 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
     const bool lobeTab = ImGui::BeginTabItem("Lobe");
     recordItem("Lobe tab", "The BRDF in the plane of incidence");
     if (lobeTab) {
-        drawLobePanel(state, services);
+        drawLobePanel(document, interaction, services);
         ImGui::EndTabItem();
     }
     const bool accuracyTab = ImGui::BeginTabItem("Accuracy");
     recordItem("Accuracy tab", "How far this model is from the reference BRDF, and fp32 from fp64");
     if (accuracyTab) {
-        drawAccuracyPanel(state, services);
+        drawAccuracyPanel(document, interaction, preferences, services);
         ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
@@ -98,10 +99,10 @@ void drawBottomPanel(EditorState& state, EditorServices& services) {
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
     if (!promptOpen(state, state)) {   // a load that ends behind a prompt waits for its answer
-        finishEnvironmentLoad(state);
+        finishEnvironmentLoad(state, state, state, state);
         finishModelLoad(state);
     }
-    resolveEnvironmentShown(state);
+    resolveEnvironmentShown(state, state, state);
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
@@ -133,7 +134,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     ImGui::End();
     // The menu, a shortcut or a panel may have changed the document this frame (New, Open, an
     // undo): the viewport draws the environment its light names, never one not yet looked up.
-    resolveEnvironmentShown(state);
+    resolveEnvironmentShown(state, state, state);
     ImGui::SetNextWindowPos(ImVec2(at.viewport.x, at.viewport.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(at.viewport.width, at.viewport.height), ImGuiCond_Always);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(px(4), px(4)));
@@ -145,7 +146,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     ImGui::PopStyleVar();
     if (layout.showLobe) {   // hidden (View menu): the viewport takes the whole column
         if (beginPanel("Lobe", at.lobe, false, &layout.lobeHeight)) {
-            drawGuarded(state, "The lobe panel", [&] { drawBottomPanel(state, services); });
+            drawGuarded(state, "The lobe panel", [&] { drawBottomPanel(state, state, state, services); });
         }
         ImGui::End();
     }

@@ -230,31 +230,37 @@ const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const 
     return environmentThumbnail_.second.get();
 }
 
-LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth, int height) {
-    const Scene sceneA = withMaterial(state, *state.compareA), sceneB = renderedScene(state);
-    const LdrImage a = renderImage(preparedScene(state, sceneA), halfWidth, height, state.renderPath, state.environmentShading).ldr;
-    const LdrImage b = renderImage(preparedScene(state, sceneB), halfWidth, height, state.renderPath, state.environmentShading).ldr;
+LdrImage EditorServices::sideImage(const Document& document, const Interaction& interaction, const Material* a,
+                                   int width, int height) {
+    const Scene scene = a ? withMaterial(document, interaction, *a) : renderedScene(document, interaction);
+    const PreparedScene prepared = preparedScene(document, scene);
+    return renderImage(prepared, width, height, interaction.renderPath, interaction.environmentShading).ldr;
+}
+
+LdrImage EditorServices::comparisonImage(const Document& document, const Interaction& interaction, int halfWidth,
+                                         int height) {
+    const LdrImage a = sideImage(document, interaction, &*interaction.compareA, halfWidth, height);
+    const LdrImage b = sideImage(document, interaction, nullptr, halfWidth, height);
     // Captioned "A: name  r ..." and "B: ...", as the viewport labels them.
     auto caption = [&](char side, Material material) {
         material.name = comparisonLabel(side, material);
         return materialCaption(material, halfWidth);
     };
-    return sideBySide(a, b, caption('A', *state.compareA), caption('B', labelledMaterial(state)));
+    return sideBySide(a, b, caption('A', *interaction.compareA), caption('B', labelledMaterial(document, interaction)));
 }
 
-LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
-    if (!state.compareA || state.compareView == CompareView::Single) {
-        const Scene shown = renderedScene(state);
-        return renderImage(preparedScene(state, shown), width, height, state.renderPath, state.environmentShading).ldr;
+LdrImage EditorServices::shownImage(const Document& document, const Interaction& interaction, int width, int height) {
+    if (!interaction.compareA || interaction.compareView == CompareView::Single) {
+        return sideImage(document, interaction, nullptr, width, height);
     }
-    if (state.compareView == CompareView::SideBySide) {
-        return comparisonImage(state, std::max(width / 2, 1), height);
+    if (interaction.compareView == CompareView::SideBySide) {
+        return comparisonImage(document, interaction, std::max(width / 2, 1), height);
     }
     // Split: A's columns left of the divider over B's, the divider and the labels as drawn.
-    const Scene sceneA = withMaterial(state, *state.compareA), sceneB = renderedScene(state);
-    const LdrImage a = renderImage(preparedScene(state, sceneA), width, height, state.renderPath, state.environmentShading).ldr;
-    LdrImage shown = renderImage(preparedScene(state, sceneB), width, height, state.renderPath, state.environmentShading).ldr;
-    const int split = std::clamp(int(std::lround(std::clamp(state.splitPosition, 0.0f, 1.0f) * float(width))), 0, width);
+    const LdrImage a = sideImage(document, interaction, &*interaction.compareA, width, height);
+    LdrImage shown = sideImage(document, interaction, nullptr, width, height);
+    const int split =
+        std::clamp(int(std::lround(std::clamp(interaction.splitPosition, 0.0f, 1.0f) * float(width))), 0, width);
     for (int y = 0; y < height; ++y) {
         const size_t row = size_t(y) * size_t(width) * 4;
         std::copy_n(a.rgba.begin() + std::ptrdiff_t(row), size_t(split) * 4, shown.rgba.begin() + std::ptrdiff_t(row));
@@ -265,48 +271,53 @@ LdrImage EditorServices::shownImage(const EditorState& state, int width, int hei
     // Each side's label cut to fit its own part (its letter at least).
     const int scale = captionScale(width);
     const int least = textWidth("A...", scale);
-    const std::string labelA = fitText(comparisonLabel('A', *state.compareA), std::max(split - 16, least), scale);
-    const std::string labelB =
-        fitText(comparisonLabel('B', labelledMaterial(state)), std::max(width - split - 16, least), scale);
+    const std::string labelA = fitText(comparisonLabel('A', *interaction.compareA), std::max(split - 16, least), scale);
+    const std::string labelB = fitText(comparisonLabel('B', labelledMaterial(document, interaction)),
+                                       std::max(width - split - 16, least), scale);
     drawText(shown, 8, 24, labelA, scale, kCaptionColour);
     drawText(shown, width - 8 - textWidth(labelB, scale), 24, labelB, scale, kCaptionColour);
     return shown;
 }
 
-std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& state, int width, int height) {
-    std::filesystem::path path = state.screenshotFolder / "patina-screenshot.png";   // until named
+std::optional<std::filesystem::path> EditorServices::screenshot(const Document& document,
+                                                                const Interaction& interaction,
+                                                                const Preferences& preferences, Prompts& prompts,
+                                                                int width, int height) {
+    std::filesystem::path path = preferences.screenshotFolder / "patina-screenshot.png";   // until named
     try {
-        const LdrImage image = shownImage(state, width, height);
-        std::filesystem::create_directories(state.screenshotFolder);   // a folder set but not made yet
-        path = std::filesystem::absolute(screenshotPath(state.screenshotFolder, editedMaterial(state).name))
+        const LdrImage image = shownImage(document, interaction, width, height);
+        std::filesystem::create_directories(preferences.screenshotFolder);   // a folder set but not made yet
+        path = std::filesystem::absolute(
+                   screenshotPath(preferences.screenshotFolder, editedMaterial(document, interaction).name))
                    .lexically_normal();
-        std::vector<std::pair<std::string, std::string>> text{{kSceneTextKeyword, sceneToJson(state.scene).dump()}};
-        if (const std::string comparison = comparisonText(state); !comparison.empty()) {
+        std::vector<std::pair<std::string, std::string>> text{{kSceneTextKeyword, sceneToJson(document.scene).dump()}};
+        if (const std::string comparison = comparisonText(interaction); !comparison.empty()) {
             text.emplace_back(kComparisonTextKeyword, comparison);   // reopens as the comparison shown
         }
         writeFileAtomic(path, encodePngWithText(image, text));
-        state.status = "Screenshot saved: " + shownPath(path);
-        state.lastScreenshot = path;
+        prompts.status = "Screenshot saved: " + shownPath(path);
+        prompts.lastScreenshot = path;
         return path;
     } catch (const std::exception& error) {
-        state.error = couldNotSave(path, error);
+        prompts.error = couldNotSave(path, error);
         return std::nullopt;
     }
 }
 
-std::optional<std::filesystem::path> EditorServices::exportComparison(EditorState& state,
+std::optional<std::filesystem::path> EditorServices::exportComparison(const Document& document,
+                                                                      const Interaction& interaction, Prompts& prompts,
                                                                       const std::filesystem::path& path) {
-    if (!state.compareA) {
-        state.error = "Set A first: the comparison needs an A material.";
+    if (!interaction.compareA) {
+        prompts.error = "Set A first: the comparison needs an A material.";
         return std::nullopt;
     }
     try {
         const int width = std::max(viewportWidth / 2, 64), height = std::max(viewportHeight, 64);
-        writeFileAtomic(path, encodePng(comparisonImage(state, width, height)));
-        state.status = "Exported " + shownPath(path);
+        writeFileAtomic(path, encodePng(comparisonImage(document, interaction, width, height)));
+        prompts.status = "Exported " + shownPath(path);
         return path;
     } catch (const std::exception& error) {
-        state.error = couldNotSave(path, error);
+        prompts.error = couldNotSave(path, error);
         return std::nullopt;
     }
 }

@@ -39,7 +39,7 @@ struct PictureRequest {
 // What panels need beyond EditorState: the renderer (a current GL context is assumed) and its
 // caches. Rendering happens here only when what it shows changed; what it draws comes
 // prepared (EditorState's mesh and environment), and its own preview scenes are prepared
-// through `assets`, the editor's cache (EditorState::assets).
+// through `assets`, the editor's cache (Jobs::assets).
 class EditorServices {
 public:
     explicit EditorServices(std::shared_ptr<AssetCache> assets);
@@ -115,12 +115,15 @@ public:
     // What the viewport shows, at width x height: the edited material alone; or A and B side
     // by side, each half as wide and captioned; or A left of the split and B right of it,
     // with the divider and labels.
-    LdrImage shownImage(const EditorState& state, int width, int height);
-    // Screenshot of what the viewport shows (shownImage) with the scene embedded; returns the
-    // file written.
-    std::optional<std::filesystem::path> screenshot(EditorState& state, int width, int height);
+    LdrImage shownImage(const Document& document, const Interaction& interaction, int width, int height);
+    // Screenshot of what the viewport shows (shownImage) with the scene embedded, in the
+    // preferences' screenshot folder; returns the file written, and says so (or why not).
+    std::optional<std::filesystem::path> screenshot(const Document& document, const Interaction& interaction,
+                                                    const Preferences& preferences, Prompts& prompts, int width,
+                                                    int height);
     // A and B side by side with captions; returns the file written.
-    std::optional<std::filesystem::path> exportComparison(EditorState& state, const std::filesystem::path& path);
+    std::optional<std::filesystem::path> exportComparison(const Document& document, const Interaction& interaction,
+                                                          Prompts& prompts, const std::filesystem::path& path);
 
 private:
     struct ViewKey {
@@ -169,8 +172,12 @@ private:
     std::shared_ptr<const Model> thumbnailModel_;   // held, so another model at its address is not taken for it
     std::map<int, std::unique_ptr<Texture>> mapThumbnails_;   // thumbnailModel_'s, by image
 
+    // B (the edited material, solo applied) or, with `a`, A in its place, at width x height, drawn as
+    // the interaction asks (render path, environment shading).
+    LdrImage sideImage(const Document& document, const Interaction& interaction, const Material* a, int width,
+                       int height);
     // A and B, each halfWidth x height, side by side with their captions.
-    LdrImage comparisonImage(const EditorState& state, int halfWidth, int height);
+    LdrImage comparisonImage(const Document& document, const Interaction& interaction, int halfWidth, int height);
     ViewImage& view(Shown shown) { return views_[shown == Shown::A ? 1 : 0]; }
     const ViewImage& view(Shown shown) const { return views_[shown == Shown::A ? 1 : 0]; }
 };

@@ -12,62 +12,70 @@ void toggleSolo(Interaction& interaction, int index) {
     interaction.soloLight = interaction.soloLight == index ? -1 : index;
 }
 
-bool soloedOut(const EditorState& state, int index) {
-    return state.hasLight(state.soloLight) && index != state.soloLight;
+bool soloedOut(const Document& document, const Interaction& interaction, int index) {
+    return document.hasLight(interaction.soloLight) && index != interaction.soloLight;
 }
 
-Scene renderedScene(const EditorState& state) {
-    Scene scene = state.scene;
-    if (state.hasLight(state.soloLight)) {
+Scene renderedScene(const Document& document, const Interaction& interaction) {
+    Scene scene = document.scene;
+    if (document.hasLight(interaction.soloLight)) {
         for (size_t i = 0; i < scene.lights.size(); ++i) {
-            scene.lights[i].enabled = !soloedOut(state, int(i));
+            scene.lights[i].enabled = !soloedOut(document, interaction, int(i));
         }
     }
     return scene;
 }
 
-Material editedMaterial(const EditorState& state) {
-    if (modelMaterialCount(state) > 0) {
-        return modelMaterial(state, state.scene, std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1));
-    }
-    return state.scene.material;
+namespace {
+// The shown model's part the Material panel edits; -1 for a built-in mesh (its material).
+int editedPart(const Document& document, const Interaction& interaction) {
+    const int count = modelMaterialCount(document);
+    return count > 0 ? std::clamp(interaction.selectedModelMaterial, 0, count - 1) : -1;
+}
+}  // namespace
+
+Material editedMaterial(const Document& document, const Interaction& interaction) {
+    const int part = editedPart(document, interaction);
+    return part >= 0 ? modelMaterial(document, document.scene, part) : document.scene.material;
 }
 
-Material labelledMaterial(const EditorState& state) {
-    Material material = editedMaterial(state);
-    if (modelMaterialCount(state) > 0) {
-        const auto preset = state.partPresets.find(std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1));
-        if (preset != state.partPresets.end() && preset->second.second == material) {
+Material labelledMaterial(const Document& document, const Interaction& interaction) {
+    Material material = editedMaterial(document, interaction);
+    if (const int part = editedPart(document, interaction); part >= 0) {
+        const auto preset = interaction.partPresets.find(part);
+        if (preset != interaction.partPresets.end() && preset->second.second == material) {
             material.name += " (" + preset->second.first + ")";
         }
     }
     return material;
 }
 
-void setEditedMaterial(const EditorState& state, Scene& scene, const Material& material) {
-    if (modelMaterialCount(state) > 0) {
-        setModelMaterial(state, scene, std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1),
-                         material);
+void setEditedMaterial(const Document& document, const Interaction& interaction, Scene& scene,
+                       const Material& material) {
+    if (const int part = editedPart(document, interaction); part >= 0) {
+        setModelMaterial(document, scene, part, material);
     } else {
         scene.material = material;
     }
 }
 
-Scene withMaterial(const EditorState& state, const Material& material) {
-    Scene scene = renderedScene(state);
-    setEditedMaterial(state, scene, material);
+Scene withMaterial(const Document& document, const Interaction& interaction, const Material& material) {
+    Scene scene = renderedScene(document, interaction);
+    setEditedMaterial(document, interaction, scene, material);
     return scene;
 }
 
-void keepChannelShowable(EditorState& state) {
-    if (state.channel.channel != shader::CHANNEL_LIGHT) {
+void keepChannelShowable(const Document& document, Interaction& interaction, Prompts& prompts) {
+    if (interaction.channel.channel != shader::CHANNEL_LIGHT) {
         return;
     }
     try {
-        channelLights(renderedScene(state).lights, state.channel);
+        channelLights(renderedScene(document, interaction).lights, interaction.channel);
     } catch (const InputError&) {
-        state.status = "The viewport shows the picture again: no enabled light \"" + state.channel.light + "\" to show";
-        state.channel = {-1, "", state.channel.srgb, state.channel.strictPbr};   // the picture; the options stay
+        prompts.status =
+            "The viewport shows the picture again: no enabled light \"" + interaction.channel.light + "\" to show";
+        interaction.channel = {-1, "", interaction.channel.srgb,
+                               interaction.channel.strictPbr};   // the picture; the options stay
     }
 }
 

@@ -14,7 +14,8 @@
 
 namespace patina::editor {
 
-struct EditorState;
+struct Document;
+struct Prompts;
 
 enum class CompareView { Single, Split, SideBySide };
 // What a viewport drag holds of a light: a point's or a sphere's position (a tube's middle,
@@ -87,22 +88,23 @@ struct Interaction {
 void toggleSolo(Interaction& interaction, int index);
 // The light a channel shows was renamed, removed or switched off: the picture again, and the
 // status says why. The viewport calls it before it draws, after every panel that changes lights.
-void keepChannelShowable(EditorState& state);
+void keepChannelShowable(const Document& document, Interaction& interaction, Prompts& prompts);
 // Whether solo leaves this light out of the picture (the list and the gizmos grey it out).
-bool soloedOut(const EditorState& state, int index);
+bool soloedOut(const Document& document, const Interaction& interaction, int index);
 // The scene as rendered: solo applied.
-Scene renderedScene(const EditorState& state);
+Scene renderedScene(const Document& document, const Interaction& interaction);
 // The material the Material panel edits: the selected one of a shown model (its tuning or the
 // file's factors), else the scene's own.
-Material editedMaterial(const EditorState& state);
+Material editedMaterial(const Document& document, const Interaction& interaction);
 // The same, named as the comparison labels and captions show it: a model's part that holds a
 // preset as it was applied is named with it, "Texture (copper)" (a preset keeps the part's name,
 // and both halves read "Texture"); once its values change, the part's name alone.
-Material labelledMaterial(const EditorState& state);
+Material labelledMaterial(const Document& document, const Interaction& interaction);
 // `material`'s values as the edited material of `scene` (a model's keeps the file's name).
-void setEditedMaterial(const EditorState& state, Scene& scene, const Material& material);
+void setEditedMaterial(const Document& document, const Interaction& interaction, Scene& scene,
+                       const Material& material);
 // The scene as rendered with another material in the edited one's place (a side of the
 // comparison).
-Scene withMaterial(const EditorState& state, const Material& material);
+Scene withMaterial(const Document& document, const Interaction& interaction, const Material& material);
 
 }  // namespace patina::editor

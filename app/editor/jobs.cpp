@@ -6,13 +6,14 @@ namespace patina::editor {
 
 namespace {
 // The loaded environment becomes the scene's (one undo step), adding a light if there is none.
-void applyEnvironment(EditorState& state, const std::string& source, std::shared_ptr<const Environment> environment,
+void applyEnvironment(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                      const std::string& source, std::shared_ptr<const Environment> environment,
                       const std::vector<std::string>& warnings) {
-    if (state.environmentIndex() < 0) {
-        addLight(state, LightType::Environment);
+    if (document.environmentIndex() < 0) {
+        addLight(document, interaction, prompts, LightType::Environment);
     }
-    const int index = state.environmentIndex();
-    applyEdit(state, [&](Document& d) {
+    const int index = document.environmentIndex();
+    applyEdit(document, [&](Document& d) {
         Light& light = d.scene.lights[size_t(index)];
         // The light is named after its image until the artist names it.
         if (light.name == environmentName(light.source) || light.name == lightTypeName(LightType::Environment)) {
@@ -21,68 +22,71 @@ void applyEnvironment(EditorState& state, const std::string& source, std::shared
         light.source = source;
         d.environment = std::move(environment);   // kept while disabled, for the checkbox
     });
-    state.selectedLight = index;
-    state.environmentFailed.clear();
-    state.error.clear();   // a load that worked: an older error is no longer news
+    interaction.selectedLight = index;
+    jobs.environmentFailed.clear();
+    prompts.error.clear();   // a load that worked: an older error is no longer news
     // Replaced pixels (real HDRIs hold a few slightly negative ones) are worth a note, not an
     // error box over the toolbar.
-    state.status = "Environment " + environmentName(source) + (warnings.empty() ? "" : ": " + joinLines(warnings));
+    prompts.status = "Environment " + environmentName(source) + (warnings.empty() ? "" : ": " + joinLines(warnings));
 }
 }  // namespace
 
-bool setEnvironmentSource(EditorState& state, const std::string& source) {
-    state.environmentLoad.reset();   // a newer choice replaces one under way (cancelled)
+bool setEnvironmentSource(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                          const std::string& source) {
+    jobs.environmentLoad.reset();   // a newer choice replaces one under way (cancelled)
     if (!source.starts_with("builtin:")) {
-        state.environmentLoad = std::make_shared<EnvironmentLoad>(source, state.assets);
-        state.status = "Preparing the environment " + environmentName(source) + "...";
+        jobs.environmentLoad = std::make_shared<EnvironmentLoad>(source, jobs.assets);
+        prompts.status = "Preparing the environment " + environmentName(source) + "...";
         return true;
     }
     std::vector<std::string> warnings;
     try {
-        applyEnvironment(state, source, state.assets->environment(source, warnings), warnings);
+        applyEnvironment(document, interaction, jobs, prompts, source, jobs.assets->environment(source, warnings),
+                         warnings);
         return true;
     } catch (const std::exception& error) {
-        state.error = error.what();   // the previous environment stays
+        prompts.error = error.what();   // the previous environment stays
         return false;
     }
 }
 
-bool finishEnvironmentLoad(EditorState& state, bool wait) {
-    if (!state.environmentLoad || (!wait && !state.environmentLoad->ready())) {
+bool finishEnvironmentLoad(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts, bool wait) {
+    if (!jobs.environmentLoad || (!wait && !jobs.environmentLoad->ready())) {
         return false;
     }
-    const std::shared_ptr<EnvironmentLoad> load = std::move(state.environmentLoad);
+    const std::shared_ptr<EnvironmentLoad> load = std::move(jobs.environmentLoad);
     try {
         EnvironmentLoad::Result result = load->take();
         if (!result.environment) {
             return false;   // cancelled
         }
-        applyEnvironment(state, load->source(), std::move(result.environment), result.warnings);
+        applyEnvironment(document, interaction, jobs, prompts, load->source(), std::move(result.environment),
+                         result.warnings);
         return true;
     } catch (const std::exception& error) {
-        state.error = error.what();   // the previous environment stays
-        state.status.clear();
+        prompts.error = error.what();   // the previous environment stays
+        prompts.status.clear();
         return false;
     }
 }
 
-void resolveEnvironmentShown(EditorState& state) {
-    const int index = state.environmentIndex();
+void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts) {
+    const int index = document.environmentIndex();
     if (index < 0) {
         return;
     }
-    const std::string& source = state.scene.lights[size_t(index)].source;
-    const std::shared_ptr<const Environment>& loaded = state.environment;
-    if ((loaded && loaded->source == source) || state.environmentFailed == source) {
+    const std::string& source = document.scene.lights[size_t(index)].source;
+    const std::shared_ptr<const Environment>& loaded = document.environment;
+    if ((loaded && loaded->source == source) || jobs.environmentFailed == source) {
         return;
     }
     std::vector<std::string> warnings;
     try {
-        state.environment = state.assets->environment(source, warnings);
-        state.environmentFailed.clear();
+        document.environment = jobs.assets->environment(source, warnings);
+        jobs.environmentFailed.clear();
     } catch (const std::exception& error) {
-        state.error = error.what();
-        state.environmentFailed = source;
+        prompts.error = error.what();
+        jobs.environmentFailed = source;
     }
 }
 

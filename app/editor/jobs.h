@@ -12,7 +12,9 @@
 
 namespace patina::editor {
 
-struct EditorState;
+struct Document;
+struct Interaction;
+struct Prompts;
 
 // Jobs: the work the editor does beside the user's, over many frames: an environment or a model
 // being made ready, the autosave, the last session's work offered back, the screenshot asked
@@ -45,16 +47,18 @@ struct Jobs {
 
 // Makes `source` ("builtin:NAME", an .hdr or .exr path) the scene's environment, adding one if
 // there is none: loaded (and prefiltered) first, so a file that cannot be read leaves the
-// previous environment as it was and says why in state.error. Undoable. A built-in is applied
-// at once; a file is made ready on a worker (state.environmentLoad, replacing one under way)
-// and applied by finishEnvironmentLoad. False when it failed at once.
-bool setEnvironmentSource(EditorState& state, const std::string& source);
+// previous environment as it was and says why in prompts.error. Undoable; the light is selected.
+// A built-in is applied at once; a file is made ready on a worker (jobs.environmentLoad,
+// replacing one under way) and applied by finishEnvironmentLoad. False when it failed at once.
+bool setEnvironmentSource(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                          const std::string& source);
 // Applies the environment load once it is done (with `wait`, waits for it): run once a frame.
 // True when one was applied.
-bool finishEnvironmentLoad(EditorState& state, bool wait = false);
+bool finishEnvironmentLoad(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                           bool wait = false);
 // Makes the document's environment the one the environment light names, whatever changed the
 // light (open, undo, autosave restore): loaded through the assets cache when it does not match
 // (a built-in too: read back from the disk cache once). Run once a frame, before drawing.
-void resolveEnvironmentShown(EditorState& state);
+void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts);
 
 }  // namespace patina::editor

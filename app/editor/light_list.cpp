@@ -19,32 +19,32 @@ glm::vec3 pointInView(const Camera& camera, float right, float up, float depth) 
 }
 }  // namespace
 
-void addLight(EditorState& state, LightType type) {
-    if (state.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
-        state.error = "A scene holds at most " + std::to_string(shader::MAX_LIGHTS) + " lights.";
+void addLight(Document& document, Interaction& interaction, Prompts& prompts, LightType type) {
+    if (document.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
+        prompts.error = "A scene holds at most " + std::to_string(shader::MAX_LIGHTS) + " lights.";
         return;
     }
-    if (type == LightType::Environment && state.environmentIndex() >= 0) {
-        state.error = kOneEnvironment;
-        state.selectedLight = state.environmentIndex();
+    if (type == LightType::Environment && document.environmentIndex() >= 0) {
+        prompts.error = kOneEnvironment;
+        interaction.selectedLight = document.environmentIndex();
         return;
     }
     Light light;
     light.type = type;
-    light.name = std::string(lightTypeName(type)) + " " + std::to_string(state.scene.lights.size() + 1);
+    light.name = std::string(lightTypeName(type)) + " " + std::to_string(document.scene.lights.size() + 1);
     // Point, sphere and tube lights start up and to the left between the camera and what it
     // looks at, wherever the camera is, so there is a handle to drag at once (a tube used to
     // start above the picture).
     if (type == LightType::Point || type == LightType::Sphere) {
-        light.position = pointInView(state.scene.camera, -0.45f, 0.45f, 0.65f);
+        light.position = pointInView(document.scene.camera, -0.45f, 0.45f, 0.65f);
         light.range = 10.0f;
         light.intensity = 5.0f;
         if (type == LightType::Sphere) {   // a point light keeps every other type's default
             light.sourceRadius = 0.25f;
         }
     } else if (type == LightType::Tube) {
-        light.start = pointInView(state.scene.camera, -0.75f, 0.5f, 0.65f);
-        light.end = pointInView(state.scene.camera, 0.05f, 0.5f, 0.65f);
+        light.start = pointInView(document.scene.camera, -0.75f, 0.5f, 0.65f);
+        light.end = pointInView(document.scene.camera, 0.05f, 0.5f, 0.65f);
         light.range = 10.0f;
         light.intensity = 8.0f;
         light.sourceRadius = 0.05f;
@@ -57,52 +57,52 @@ void addLight(EditorState& state, LightType type) {
     } else {
         light.name = "studio";   // builtin:studio, the default source
     }
-    applyEdit(state, [&](Document& d) { d.scene.lights.push_back(light); });
-    state.selectedLight = int(state.scene.lights.size()) - 1;
+    applyEdit(document, [&](Document& d) { d.scene.lights.push_back(light); });
+    interaction.selectedLight = int(document.scene.lights.size()) - 1;
 }
 
-void duplicateLight(EditorState& state, int index) {
-    if (!state.hasLight(index) || state.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
+void duplicateLight(Document& document, Interaction& interaction, Prompts& prompts, int index) {
+    if (!document.hasLight(index) || document.scene.lights.size() >= size_t(shader::MAX_LIGHTS)) {
         return;
     }
-    Light copy = state.scene.lights[size_t(index)];
+    Light copy = document.scene.lights[size_t(index)];
     if (copy.type == LightType::Environment) {
-        state.error = kOneEnvironment;
+        prompts.error = kOneEnvironment;
         return;
     }
     copy.name += " copy";
-    applyEdit(state, [&](Document& d) { d.scene.lights.insert(d.scene.lights.begin() + index + 1, copy); });
-    state.selectedLight = index + 1;
+    applyEdit(document, [&](Document& d) { d.scene.lights.insert(d.scene.lights.begin() + index + 1, copy); });
+    interaction.selectedLight = index + 1;
 }
 
-void deleteLight(EditorState& state, int index) {
-    if (!state.hasLight(index)) {
+void deleteLight(Document& document, Interaction& interaction, int index) {
+    if (!document.hasLight(index)) {
         return;
     }
-    applyEdit(state, [&](Document& d) { d.scene.lights.erase(d.scene.lights.begin() + index); });
-    if (state.soloLight == index) {
-        state.soloLight = -1;
-    } else if (state.soloLight > index) {
-        --state.soloLight;
+    applyEdit(document, [&](Document& d) { d.scene.lights.erase(d.scene.lights.begin() + index); });
+    if (interaction.soloLight == index) {
+        interaction.soloLight = -1;
+    } else if (interaction.soloLight > index) {
+        --interaction.soloLight;
     }
-    state.selectedLight = std::min(state.selectedLight, int(state.scene.lights.size()) - 1);
+    interaction.selectedLight = std::min(interaction.selectedLight, int(document.scene.lights.size()) - 1);
 }
 
-void moveLight(EditorState& state, int index, int delta) {
+void moveLight(Document& document, Interaction& interaction, int index, int delta) {
     const int target = index + delta;
-    if (!state.hasLight(index) || !state.hasLight(target)) {
+    if (!document.hasLight(index) || !document.hasLight(target)) {
         return;
     }
-    applyEdit(state, [&](Document& d) {
+    applyEdit(document, [&](Document& d) {
         std::swap(d.scene.lights[size_t(index)], d.scene.lights[size_t(target)]);
     });
-    if (state.selectedLight == index) {
-        state.selectedLight = target;
+    if (interaction.selectedLight == index) {
+        interaction.selectedLight = target;
     }
-    if (state.soloLight == index) {
-        state.soloLight = target;
-    } else if (state.soloLight == target) {
-        state.soloLight = index;
+    if (interaction.soloLight == index) {
+        interaction.soloLight = target;
+    } else if (interaction.soloLight == target) {
+        interaction.soloLight = index;
     }
 }
 

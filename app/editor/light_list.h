@@ -6,14 +6,16 @@
 namespace patina::editor {
 
 struct Document;
-struct EditorState;
+struct Interaction;
+struct Prompts;
 
 // The light list's edits: each an undoable step of the document, the selection and solo
 // following the light they were on.
-void addLight(EditorState& state, LightType type);
-void duplicateLight(EditorState& state, int index);
-void deleteLight(EditorState& state, int index);
-void moveLight(EditorState& state, int index, int delta);
+// A light the scene has no room for says so.
+void addLight(Document& document, Interaction& interaction, Prompts& prompts, LightType type);
+void duplicateLight(Document& document, Interaction& interaction, Prompts& prompts, int index);
+void deleteLight(Document& document, Interaction& interaction, int index);
+void moveLight(Document& document, Interaction& interaction, int index, int delta);
 // The scene's environment light, or null.
 Light* editedEnvironment(Document& document);
 // "studio" for builtin:studio, a file's stem.

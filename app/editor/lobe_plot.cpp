@@ -29,8 +29,8 @@ bool grey(const std::vector<LobeSample>& samples) {
 }
 }  // namespace
 
-LobePlot lobePlot(const EditorState& state) {
-    const LobeSettings& lobe = state.lobe;
+LobePlot lobePlot(const Document& document, const Interaction& interaction) {
+    const LobeSettings& lobe = interaction.lobe;
     const float cosine = lobe.multiplyByCosine ? std::cos(glm::radians(lobe.thetaInDegrees)) : 1.0f;
     LobePlot plot;
     auto add = [&](const std::vector<LobeSample>& samples, auto pick, uint32_t color, float thickness,
@@ -42,13 +42,13 @@ LobePlot lobePlot(const EditorState& state) {
         plot.curves.push_back(std::move(curve));
     };
     auto total = [](const LobeSample& s) { return luminance(s.total()); };
-    if (state.compareA) {
-        add(evaluateLobe(*state.compareA, lobe.thetaInDegrees, kLobeSamples), total, rgba(160, 160, 160, 160), 3.0f,
-            "A total");
+    if (interaction.compareA) {
+        add(evaluateLobe(*interaction.compareA, lobe.thetaInDegrees, kLobeSamples), total, rgba(160, 160, 160, 160),
+            3.0f, "A total");
     }
     // The same material under the reference model, for what a model chosen instead of the
     // default gets wrong; under the default it is a research question the Accuracy tab answers.
-    const Material edited = editedMaterial(state);
+    const Material edited = editedMaterial(document, interaction);
     const BrdfModelId model = edited.model;
     if (model != MaterialParameters{}.model && model != BrdfModelId::Reference) {
         Material reference = edited;
@@ -57,7 +57,7 @@ LobePlot lobePlot(const EditorState& state) {
             "reference model");
     }
     const std::vector<LobeSample> samples = evaluateLobe(edited, lobe.thetaInDegrees, kLobeSamples);
-    const std::string b = state.compareA ? "B " : "";   // "B" says which only beside an A
+    const std::string b = interaction.compareA ? "B " : "";   // "B" says which only beside an A
     if (lobe.luminance) {
         add(samples, [](const LobeSample& s) { return luminance(s.diffuse); }, rgba(110, 170, 255, 255), 1.0f,
             b + "diffuse");
@@ -92,14 +92,14 @@ LobePlot lobePlot(const EditorState& state) {
     return plot;
 }
 
-std::vector<Lobe3d> lobes3d(const EditorState& state) {
-    const LobeSettings& lobe = state.lobe;
+std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interaction) {
+    const LobeSettings& lobe = interaction.lobe;
     const float cosine = lobe.multiplyByCosine ? std::cos(glm::radians(lobe.thetaInDegrees)) : 1.0f;
     const float thetaIn = glm::radians(lobe.thetaInDegrees);
     const glm::vec3 N(0.0f, 0.0f, 1.0f), L(std::sin(thetaIn), 0.0f, std::cos(thetaIn));
-    std::vector<Material> materials{editedMaterial(state)};
-    if (state.compareA) {
-        materials.push_back(*state.compareA);
+    std::vector<Material> materials{editedMaterial(document, interaction)};
+    if (interaction.compareA) {
+        materials.push_back(*interaction.compareA);
     }
     std::vector<Lobe3d> lobes;
     std::vector<std::vector<float>> values;

@@ -8,7 +8,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "editor_state.h"
+#include "document.h"
+#include "interaction.h"
 
 namespace patina::editor {
 
@@ -27,7 +28,7 @@ struct LobePlot {
 
 constexpr int kLobeSamples = 181;
 
-LobePlot lobePlot(const EditorState& state);
+LobePlot lobePlot(const Document& document, const Interaction& interaction);
 
 // A value's distance from the centre as a fraction of the plot's radius: linear, or in log
 // scale 3 decades below the maximum to the maximum.
@@ -42,6 +43,6 @@ struct Lobe3d {
     float maxValue = 0.0f;
 };
 // The lobes of B and, when set, A, scaled together (one maxValue for both).
-std::vector<Lobe3d> lobes3d(const EditorState& state);
+std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interaction);
 
 }  // namespace patina::editor

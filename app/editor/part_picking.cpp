@@ -20,45 +20,47 @@ struct PartOutlineCache {
     std::vector<Segment> segments;
 };
 
-bool pickPart(EditorState& state, glm::vec2 ndc, float aspect) {
-    if (!state.model) {
+bool pickPart(const Document& document, Interaction& interaction, Prompts& prompts, glm::vec2 ndc, float aspect) {
+    if (!document.model) {
         return false;
     }
     // The ray through the pixel: its points on the near and far planes, back through the view.
-    const glm::mat4 inverse = glm::inverse(viewProjection(state.scene.camera, aspect));
+    const glm::mat4 inverse = glm::inverse(viewProjection(document.scene.camera, aspect));
     const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f), farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
     const glm::vec3 origin = glm::vec3(nearPoint) / nearPoint.w;
-    const DrawHit hit = firstDrawHit(*state.model, origin, glm::vec3(farPoint) / farPoint.w - origin);
+    const DrawHit hit = firstDrawHit(*document.model, origin, glm::vec3(farPoint) / farPoint.w - origin);
     if (hit.draw < 0) {
         return false;
     }
-    const DrawItem& item = state.model->draws[size_t(hit.draw)];
+    const DrawItem& item = document.model->draws[size_t(hit.draw)];
     if (item.material < 0) {
-        state.status = "That part (" + item.node + ") has glTF's default material, which the file gives no values to tune";
+        prompts.status =
+            "That part (" + item.node + ") has glTF's default material, which the file gives no values to tune";
         return false;
     }
-    state.selectedModelMaterial = item.material;
-    state.status = "Selected the part \"" + state.model->materials[size_t(item.material)].name + "\" (" + item.node + ")";
+    interaction.selectedModelMaterial = item.material;
+    prompts.status =
+        "Selected the part \"" + document.model->materials[size_t(item.material)].name + "\" (" + item.node + ")";
     return true;
 }
 
-const std::vector<Segment>& partOutline(EditorState& state) {
+const std::vector<Segment>& partOutline(const Document& document, Interaction& interaction) {
     static const std::vector<DrawItem> kNoDraws;   // without a model (a reference: no copy of the draws)
-    if (!state.partOutline) {
-        state.partOutline = std::make_shared<PartOutlineCache>();
+    if (!interaction.partOutline) {
+        interaction.partOutline = std::make_shared<PartOutlineCache>();
     }
-    PartOutlineCache& cache = *state.partOutline;
-    if (cache.model != state.model || cache.material != state.selectedModelMaterial) {
+    PartOutlineCache& cache = *interaction.partOutline;
+    if (cache.model != document.model || cache.material != interaction.selectedModelMaterial) {
         cache = PartOutlineCache{};
-        cache.model = state.model;
-        cache.material = state.selectedModelMaterial;
-        for (const DrawItem& item : state.model ? state.model->draws : kNoDraws) {
-            if (item.material == cache.material && size_t(item.primitive) < state.model->primitives.size()) {
-                cache.draws.emplace_back(item.transform, edgeFaces(state.model->primitives[size_t(item.primitive)]));
+        cache.model = document.model;
+        cache.material = interaction.selectedModelMaterial;
+        for (const DrawItem& item : document.model ? document.model->draws : kNoDraws) {
+            if (item.material == cache.material && size_t(item.primitive) < document.model->primitives.size()) {
+                cache.draws.emplace_back(item.transform, edgeFaces(document.model->primitives[size_t(item.primitive)]));
             }
         }
     }
-    const glm::vec3 eye = state.scene.camera.position;
+    const glm::vec3 eye = document.scene.camera.position;
     if (eye != cache.eye) {
         cache.eye = eye;
         cache.segments.clear();

@@ -59,8 +59,8 @@ void deletePreset(const std::filesystem::path& file) {
     }
 }
 
-void confirmPresetRename(EditorState& state) {
-    EditorState::PresetBrowser& presets = state.presets;
+void confirmPresetRename(Document& document, Prompts& prompts) {
+    Prompts::PresetBrowser& presets = prompts.presets;
     const std::filesystem::path old = presets.renaming;
     const std::string name = trimmed(presets.newName);
     if (name == old.stem().string()) {   // nothing to do
@@ -70,14 +70,14 @@ void confirmPresetRename(EditorState& state) {
     }
     try {
         const std::filesystem::path renamed = renamePreset(old, name);
-        if (state.materialPath == old) {   // saved as this preset: the document follows its file
-            if (state.scene.material.name == state.savedMaterial.name) {
-                applyEdit(state, [&](Document& d) { d.scene.material.name = name; });
+        if (document.materialPath == old) {   // saved as this preset: the document follows its file
+            if (document.scene.material.name == document.savedMaterial.name) {
+                applyEdit(document, [&](Document& d) { d.scene.material.name = name; });
             }
-            state.materialPath = renamed;
-            state.savedMaterial.name = name;
+            document.materialPath = renamed;
+            document.savedMaterial.name = name;
         }
-        state.status = "Renamed the preset " + old.stem().string() + " to " + name;
+        prompts.status = "Renamed the preset " + old.stem().string() + " to " + name;
         presets.renaming.clear();
         presets.problem.clear();
     } catch (const std::exception& error) {
@@ -85,16 +85,16 @@ void confirmPresetRename(EditorState& state) {
     }
 }
 
-void confirmPresetDelete(EditorState& state) {
-    EditorState::PresetBrowser& presets = state.presets;
+void confirmPresetDelete(Document& document, Prompts& prompts) {
+    Prompts::PresetBrowser& presets = prompts.presets;
     const std::filesystem::path file = presets.deleting;
     try {
         deletePreset(file);
-        if (state.materialPath == file) {
-            state.materialPath.clear();   // its file is gone: Save asks where
+        if (document.materialPath == file) {
+            document.materialPath.clear();   // its file is gone: Save asks where
         }
-        state.status = "Deleted the preset " + file.stem().string() + " (kept as " + withBak(file).filename().string() +
-                       ")";
+        prompts.status =
+            "Deleted the preset " + file.stem().string() + " (kept as " + withBak(file).filename().string() + ")";
         presets.deleting.clear();
         presets.problem.clear();
     } catch (const std::exception& error) {

@@ -5,7 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "editor_state.h"
+#include "document.h"
+#include "prompts.h"
 
 namespace patina::editor {
 
@@ -22,10 +23,10 @@ std::filesystem::path renamePreset(const std::filesystem::path& file, const std:
 // back by hand. Throws std::runtime_error saying why it could not.
 void deletePreset(const std::filesystem::path& file);
 
-// The prompts' actions: the preset state.presets names, renamed to state.presets.newName or
+// The prompts' actions: the preset prompts.presets names, renamed to prompts.presets.newName or
 // deleted. On success the prompt closes and the status says so; the document follows its file
-// when that was the preset. On failure the prompt stays, saying why (state.presets.problem).
-void confirmPresetRename(EditorState& state);
-void confirmPresetDelete(EditorState& state);
+// when that was the preset. On failure the prompt stays, saying why (prompts.presets.problem).
+void confirmPresetRename(Document& document, Prompts& prompts);
+void confirmPresetDelete(Document& document, Prompts& prompts);
 
 }  // namespace patina::editor

@@ -25,15 +25,15 @@ std::string comparisonLabel(char side, const Material& material) {
     return label;
 }
 
-std::string comparisonText(const EditorState& state) {
-    if (!state.compareA || state.compareView == CompareView::Single) {
+std::string comparisonText(const Interaction& interaction) {
+    if (!interaction.compareA || interaction.compareView == CompareView::Single) {
         return "";
     }
     const Json json{{"format", kFormat},
                     {"version", kVersion},
-                    {"view", viewName(state.compareView)},
-                    {"split", state.splitPosition},
-                    {"a", materialToJson(*state.compareA)}};
+                    {"view", viewName(interaction.compareView)},
+                    {"split", interaction.splitPosition},
+                    {"a", materialToJson(*interaction.compareA)}};
     return json.dump();
 }
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "editor_state.h"
+#include "interaction.h"
 
 namespace patina::editor {
 
@@ -24,7 +24,7 @@ std::string comparisonLabel(char side, const Material& material);
 
 // {"format": "patina-comparison", "version": 1, "view": "split" | "side-by-side", "split",
 // "a": a material file's object}; empty when the editor shows no comparison.
-std::string comparisonText(const EditorState& state);
+std::string comparisonText(const Interaction& interaction);
 // What a screenshot's comparison text holds; nothing for a screenshot without one. Throws
 // InputError naming the file when the text is there but wrong.
 std::optional<ScreenshotComparison> comparisonFromPng(const std::filesystem::path& png);

@@ -68,7 +68,7 @@ TEST_F(AutosaveTest, AChangeIsWrittenOnceItHoldsStillAndOfferedBackAtTheNextStar
     ASSERT_TRUE(next.recoverable.has_value()) << next.error;
     EXPECT_FALSE(next.recoverable->savedAt.empty());
     EXPECT_NE(next.autosave.file, written) << "each editor writes a file of its own";
-    restoreRecoverable(next);
+    restoreRecoverable(next, next, next, next);
     EXPECT_EQ(next.scene.material.roughness, 0.0625f);
     EXPECT_EQ(next.scene.lights[0].intensity, 3.5f);
     EXPECT_EQ(next.scene.camera.position, glm::vec3(1.0f, 2.0f, 3.0f));

@@ -29,14 +29,16 @@ std::pair<std::filesystem::path, std::string> splitTyped(const std::string& type
 // Runs the action the dialog was opened for on `path`.
 void confirm(EditorState& state, EditorServices& services, const std::filesystem::path& path) {
     switch (state.pathDialog) {
-    case EditorState::PathDialog::Open: requestOpen(state, path); break;
-    case EditorState::PathDialog::SaveAs: saveMaterial(state, path); break;
-    case EditorState::PathDialog::SaveSceneAs: saveScene(state, path); break;
-    case EditorState::PathDialog::SavePreset: saveAsPreset(state, path); break;
-    case EditorState::PathDialog::ExportComparison: services.exportComparison(state, path); break;
-    case EditorState::PathDialog::ExportGltf: exportGltfFile(state, path); break;
-    case EditorState::PathDialog::ReplaceMap: replaceMap(state, state.replacedMaterial, state.replacedMap, path); break;
-    case EditorState::PathDialog::None: break;
+    case Prompts::PathDialog::Open: requestOpen(state, path); break;
+    case Prompts::PathDialog::SaveAs: saveMaterial(state, state, state, path); break;
+    case Prompts::PathDialog::SaveSceneAs: saveScene(state, state, state, path); break;
+    case Prompts::PathDialog::SavePreset: saveAsPreset(state, state, state, state, path); break;
+    case Prompts::PathDialog::ExportComparison: services.exportComparison(state, state, state, path); break;
+    case Prompts::PathDialog::ExportGltf: exportGltfFile(state, state, path); break;
+    case Prompts::PathDialog::ReplaceMap:
+        replaceMap(state, *state.assets, state, state.replacedMaterial, state.replacedMap, path);
+        break;
+    case Prompts::PathDialog::None: break;
     }
 }
 
@@ -44,19 +46,19 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
 // in the hidden frame a dialog's first opening sizes itself in) were lost: they are the path's
 // start, replacing the path offered as typing over its selection does. Returns whether any were
 // taken, so that the field's cursor goes after them when it takes the keys.
-bool takeEarlyKeys(EditorState& state) {
+bool takeEarlyKeys(Prompts& prompts) {
     ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
-    if (state.pathFieldTaken || queue.empty()) {
+    if (prompts.pathFieldTaken || queue.empty()) {
         return false;
     }
-    if (!state.pathTypedEarly) {
-        state.pathDialogText.clear();
-        state.pathTypedEarly = true;
+    if (!prompts.pathTypedEarly) {
+        prompts.pathDialogText.clear();
+        prompts.pathTypedEarly = true;
     }
     for (ImWchar c : queue) {
         if (c >= 32 && c != 127) {
             char utf8[5];
-            state.pathDialogText += ImTextCharToUtf8(utf8, c);
+            prompts.pathDialogText += ImTextCharToUtf8(utf8, c);
         }
     }
     queue.resize(0);
@@ -66,22 +68,23 @@ bool takeEarlyKeys(EditorState& state) {
 // The folder's entries under its path, from the home folder where it is inside it (a relative
 // one is in `base`, or the editor's working folder): a click on a folder enters it, on a file
 // takes its path.
-void drawListing(EditorState& state, const std::filesystem::path& base, ImVec2 size) {
+void drawListing(Prompts& prompts, const std::filesystem::path& base, ImVec2 size) {
     std::error_code error;
-    const std::filesystem::path folder = typedFolder(state.pathDialogText, base);
+    const std::filesystem::path folder = typedFolder(prompts.pathDialogText, base);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + size.x);
     ImGui::TextDisabled("In %s", shownPath(folder).c_str());
     ImGui::PopTextWrapPos();
     recordItem("path:folder", "The folder listed below, where a relative path is");
     ImGui::BeginChild("listing", size, true);
     if (ImGui::Selectable("../")) {
-        state.pathDialogText = (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
+        prompts.pathDialogText =
+            (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
     }
     recordItem("path:up", "The folder above");
-    for (const ListedEntry& entry : listForDialog(state.pathDialogText, state.pathDialog, base)) {
+    for (const ListedEntry& entry : listForDialog(prompts.pathDialogText, prompts.pathDialog, base)) {
         const std::string name = entry.path.filename().string() + (entry.folder ? "/" : "");
         if (ImGui::Selectable(name.c_str())) {
-            state.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
+            prompts.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
         }
         recordItem("path:entry " + name, entry.folder ? "Open this folder" : "Choose this file");
     }
@@ -89,7 +92,7 @@ void drawListing(EditorState& state, const std::filesystem::path& base, ImVec2 s
 }
 }  // namespace
 
-const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
+const PathDialogKind& pathDialogKind(Prompts::PathDialog dialog) {
     static const PathDialogKind open{
         "Open", "Open a material or scene (.json), a Patina screenshot (.png), a glTF model (.gltf, .glb) "
                 "or an environment image (.hdr, .exr):",
@@ -116,20 +119,20 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
         "is saved with the scene and exported with the model:",
         "Replace", {".png", ".jpg", ".jpeg"}, true};
     switch (dialog) {
-    case EditorState::PathDialog::ReplaceMap: return replaceMap;
-    case EditorState::PathDialog::ExportGltf: return exportGltf;
-    case EditorState::PathDialog::SaveAs: return saveMaterial;
-    case EditorState::PathDialog::SaveSceneAs: return saveScene;
-    case EditorState::PathDialog::SavePreset: return savePreset;
-    case EditorState::PathDialog::ExportComparison: return exportComparison;
-    case EditorState::PathDialog::Open:
-    case EditorState::PathDialog::None: break;
+    case Prompts::PathDialog::ReplaceMap: return replaceMap;
+    case Prompts::PathDialog::ExportGltf: return exportGltf;
+    case Prompts::PathDialog::SaveAs: return saveMaterial;
+    case Prompts::PathDialog::SaveSceneAs: return saveScene;
+    case Prompts::PathDialog::SavePreset: return savePreset;
+    case Prompts::PathDialog::ExportComparison: return exportComparison;
+    case Prompts::PathDialog::Open:
+    case Prompts::PathDialog::None: break;
     }
     return open;
 }
 
-std::filesystem::path relativeBase(const EditorState& state, EditorState::PathDialog dialog) {
-    return dialog == EditorState::PathDialog::SavePreset ? state.userPresetFolder : std::filesystem::path();
+std::filesystem::path relativeBase(const Preferences& preferences, Prompts::PathDialog dialog) {
+    return dialog == Prompts::PathDialog::SavePreset ? preferences.userPresetFolder : std::filesystem::path();
 }
 
 std::filesystem::path typedFolder(const std::string& typed, const std::filesystem::path& base) {
@@ -137,7 +140,7 @@ std::filesystem::path typedFolder(const std::string& typed, const std::filesyste
     return base.empty() || folder.is_absolute() ? folder : base / folder;
 }
 
-std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog,
+std::vector<ListedEntry> listForDialog(const std::string& typed, Prompts::PathDialog dialog,
                                        const std::filesystem::path& base) {
     const std::filesystem::path folder = typedFolder(typed, base);
     const std::string name = splitTyped(typed).second;
@@ -172,10 +175,10 @@ bool enterFolder(std::string* typed, const std::filesystem::path& base) {
     return true;
 }
 
-void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial) {
-    state.pathDialog = kind;
-    state.pathDialogText = initial.string();
-    state.pathFieldTaken = state.pathTypedEarly = false;
+void startPathDialog(Prompts& prompts, Prompts::PathDialog kind, const std::filesystem::path& initial) {
+    prompts.pathDialog = kind;
+    prompts.pathDialogText = initial.string();
+    prompts.pathFieldTaken = prompts.pathTypedEarly = false;
 }
 
 void drawPathDialog(EditorState& state, EditorServices& services) {
@@ -183,7 +186,7 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     // One popup whatever the action ("###path"), titled by it.
     const std::string title = std::string(kind.title) + "###path";
     // Each opening's path field is a new widget (Prompts::pathDialogOpenings).
-    if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
+    if (state.pathDialog != Prompts::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
         ImGui::OpenPopup(title.c_str());
         ++state.pathDialogOpenings;
     }
@@ -237,12 +240,12 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     recordItem("path:confirm", kind.prompt);
     if (confirmed || entered) {
         confirm(state, services, state.pathDialogText);
-        state.pathDialog = EditorState::PathDialog::None;
+        state.pathDialog = Prompts::PathDialog::None;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
-        state.pathDialog = EditorState::PathDialog::None;
+        state.pathDialog = Prompts::PathDialog::None;
         ImGui::CloseCurrentPopup();
     }
     recordItem("path:cancel", "Close without doing anything (Escape)");

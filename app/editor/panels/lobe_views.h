@@ -9,8 +9,9 @@
 
 namespace patina::editor {
 
-void drawSliceView(EditorState& state, ImVec2 size);
-void drawAlbedoView(const EditorState& state, EditorServices& services, ImVec2 size);
-void drawLobe3dView(EditorState& state, ImVec2 size);
+void drawSliceView(const Document& document, const Interaction& interaction, ImVec2 size);
+void drawAlbedoView(const Document& document, const Interaction& interaction, EditorServices& services, ImVec2 size);
+// Dragged, it turns (interaction.lobe's yaw and pitch).
+void drawLobe3dView(const Document& document, Interaction& interaction, ImVec2 size);
 
 }  // namespace patina::editor

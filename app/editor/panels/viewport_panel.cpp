@@ -29,8 +29,8 @@ float gizmoRadius() {
 
 // A model being read, last on the toolbar so that no control moves under the pointer while the
 // seconds count: the mesh shown stays until it is done, or for good if cancelled.
-void drawModelLoad(EditorState& state) {
-    const std::shared_ptr<ModelLoad> load = state.modelLoad;
+void drawModelLoad(Jobs& jobs, Prompts& prompts) {
+    const std::shared_ptr<ModelLoad> load = jobs.modelLoad;
     if (!load) {
         return;
     }
@@ -48,7 +48,7 @@ void drawModelLoad(EditorState& state) {
     ImGui::TextUnformatted(text);
     ImGui::SameLine();
     if (ImGui::Button("Cancel##model")) {
-        cancelModelLoad(state);
+        cancelModelLoad(jobs, prompts);
     }
     recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
 }
@@ -71,8 +71,8 @@ const char* tonemapSummary(Tonemap tonemap) {
 
 // The Camera list (model-viewer's framing, then the model's own cameras; the view is made when
 // one is chosen, so no frame measures the mesh) and the field of view.
-void drawCameraControls(EditorState& state) {
-    const std::string current = currentCameraName(state);
+void drawCameraControls(Document& document, Interaction& interaction, Prompts& prompts) {
+    const std::string current = currentCameraName(document, interaction);
     // Wide enough for the name shown (up to a limit), as the mesh's.
     const float width = std::clamp(ImGui::CalcTextSize(current.c_str()).x + ImGui::GetFrameHeight() +
                                        ImGui::GetStyle().FramePadding.x * 2.0f,
@@ -80,13 +80,13 @@ void drawCameraControls(EditorState& state) {
     sameLineIfFits(labelledWidth(width, "Camera"));
     ImGui::SetNextItemWidth(width);
     if (ImGui::BeginCombo("Camera", current.c_str())) {
-        const std::vector<CameraChoice> choices = cameraChoices(state);
+        const std::vector<CameraChoice> choices = cameraChoices(document);
         for (size_t i = 0; i < choices.size(); ++i) {
             const CameraChoice& choice = choices[i];
             ImGui::BeginDisabled(!choice.usable);
             const std::string label = choice.name + "##camera" + std::to_string(i);
             if (ImGui::Selectable(label.c_str(), choice.usable && choice.name == current)) {
-                chooseCamera(state, choice);
+                chooseCamera(document, interaction, prompts, choice);
             }
             recordItem("camera:" + std::to_string(i), choice.detail.c_str());   // dimmed when not usable
             ImGui::EndDisabled();
@@ -100,7 +100,7 @@ void drawCameraControls(EditorState& state) {
                          "glTF file's own cameras (render --camera takes the same)");
     sameLineIfFits(labelledWidth(px(80), "FOV"));
     ImGui::SetNextItemWidth(px(80));
-    ImGui::DragFloat("FOV", &state.scene.camera.fovYDegrees, 0.2f, 1.0f, 179.0f, "%.1f deg",
+    ImGui::DragFloat("FOV", &document.scene.camera.fovYDegrees, 0.2f, 1.0f, 179.0f, "%.1f deg",
                      ImGuiSliderFlags_AlwaysClamp);
     recordItem("FOV", "The camera's vertical field of view in degrees (model-viewer's field-of-view; saved with the "
                       "scene): a wider lens from the same place. Ctrl+click or double-click to type");
@@ -108,12 +108,12 @@ void drawCameraControls(EditorState& state) {
 
 // The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
 // being cut off at its edge.
-void drawToolbar(EditorState& state) {
-    DisplaySettings& display = state.scene.display;
+void drawToolbar(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts) {
+    DisplaySettings& display = document.scene.display;
     // sphere, torus, or the glTF file opened or dropped on the window.
-    const std::string current = state.scene.meshFile.empty()
-                                    ? std::string(meshKindName(state.scene.mesh))
-                                    : std::filesystem::path(state.scene.meshFile).filename().string();
+    const std::string current = document.scene.meshFile.empty()
+                                    ? std::string(meshKindName(document.scene.mesh))
+                                    : std::filesystem::path(document.scene.meshFile).filename().string();
     // Wide enough for a model's file name (up to a limit), so "BoxTextured.glb" is not cut.
     const float nameWidth = ImGui::CalcTextSize(current.c_str()).x + ImGui::GetFrameHeight() +
                             ImGui::GetStyle().FramePadding.x * 2.0f;
@@ -121,15 +121,15 @@ void drawToolbar(EditorState& state) {
     if (ImGui::BeginCombo("Mesh", current.c_str())) {
         for (MeshKind kind : {MeshKind::Sphere, MeshKind::Torus}) {
             if (ImGui::Selectable(std::string(meshKindName(kind)).c_str(),
-                                  state.scene.meshFile.empty() && state.scene.mesh == kind)) {
-                chooseBuiltinMesh(state, kind);
+                                  document.scene.meshFile.empty() && document.scene.mesh == kind)) {
+                chooseBuiltinMesh(document, kind);
             }
         }
         ImGui::TextDisabled("or open / drop a .gltf or .glb");
         ImGui::EndCombo();
     }
     recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
-    drawCameraControls(state);
+    drawCameraControls(document, interaction, prompts);
     sameLineIfFits(labelledWidth(px(110), "Exposure"));
     // A drag, not a slider: 16 stops across 110 pixels moved 8 EV in 60 of them. Fine steps
     // (0.02 EV a pixel) for a look; a big change is typed.
@@ -158,15 +158,15 @@ void drawToolbar(EditorState& state) {
     const ImGuiStyle& style = ImGui::GetStyle();
     auto radioWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };
     if (ImGui::Button("Set A")) {
-        state.compareA = labelledMaterial(state);
-        if (state.compareView == CompareView::Single) {
-            state.compareView = CompareView::Split;
+        interaction.compareA = labelledMaterial(document, interaction);
+        if (interaction.compareView == CompareView::Single) {
+            interaction.compareView = CompareView::Split;
         }
     }
     recordItem("Set A", "Keep the current material as A, to compare with what you edit next (B)");
     sameLineIfFits(radioWidth("Single"));
-    ImGui::BeginDisabled(!state.compareA);
-    int view = int(state.compareView);
+    ImGui::BeginDisabled(!interaction.compareA);
+    int view = int(interaction.compareView);
     ImGui::RadioButton("Single", &view, int(CompareView::Single));
     recordItem("Single", "Show B, the material being edited, alone");
     sameLineIfFits(radioWidth("Split"));
@@ -175,14 +175,14 @@ void drawToolbar(EditorState& state) {
     sameLineIfFits(radioWidth("Side by side"));
     ImGui::RadioButton("Side by side", &view, int(CompareView::SideBySide));
     recordItem("Side by side", "A and B next to each other, each half as wide");
-    state.compareView = state.compareA ? CompareView(view) : CompareView::Single;
+    interaction.compareView = interaction.compareA ? CompareView(view) : CompareView::Single;
     sameLineIfFits(ImGui::CalcTextSize("Clear A").x + style.FramePadding.x * 2);
     if (ImGui::Button("Clear A")) {
-        state.compareA.reset();
+        interaction.compareA.reset();
     }
     recordItem("Clear A", "Forget A and show B alone");
     ImGui::EndDisabled();
-    drawModelLoad(state);
+    drawModelLoad(jobs, prompts);
 }
 
 // The pixels on screen of a length `radius` across the view at `centre` (perspective: its
@@ -307,8 +307,9 @@ void drawLightShape(const GizmoView& view, const Light& light, ImU32 color) {
 }
 
 // Light `i`'s handles, drawn; a click on one starts its drag. True when the mouse is over one.
-bool drawGrips(EditorState& state, const GizmoView& view, int i, ImU32 color, bool pressed) {
-    const Light& light = state.scene.lights[size_t(i)];
+bool drawGrips(const Document& document, Interaction& interaction, const GizmoView& view, int i, ImU32 color,
+               bool pressed) {
+    const Light& light = document.scene.lights[size_t(i)];
     const ImU32 fill = light.enabled ? color : IM_COL32(90, 90, 90, 200);
     const ImVec2 mouse = ImGui::GetIO().MousePos;
     const glm::vec2 mouseAt(mouse.x - view.origin.x, mouse.y - view.origin.y);
@@ -327,9 +328,9 @@ bool drawGrips(EditorState& state, const GizmoView& view, int i, ImU32 color, bo
             view.draw->AddCircle(*at, grip.radius + 2.0f, IM_COL32(0, 0, 0, 200));
         }
         if (hovered && pressed && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-            state.draggedLight = i;
-            state.draggedHandle = grip.handle;
-            state.selectedLight = i;
+            interaction.draggedLight = i;
+            interaction.draggedHandle = grip.handle;
+            interaction.selectedLight = i;
         }
     }
     return hoveredAny;
@@ -369,29 +370,29 @@ void dragLight(Light& light, LightHandle handle, const Camera& camera, glm::vec2
 // `pressed`: the viewport's button was clicked this frame (it holds the mouse from then on, so
 // ImGui reports the window as not hovered). Drawn clipped to the image. Returns true while a
 // gizmo is being dragged.
-bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool pressed) {
-    int& dragged = state.draggedLight;
+bool drawLightGizmos(Document& document, Interaction& interaction, ImVec2 origin, ImVec2 size, bool pressed) {
+    int& dragged = interaction.draggedLight;
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
-    const GizmoView view{origin, size, glm::vec2(size.x, size.y), state.scene.camera, draw};
+    const GizmoView view{origin, size, glm::vec2(size.x, size.y), document.scene.camera, draw};
     bool hoveredAny = false;
-    for (int i = 0; i < int(state.scene.lights.size()); ++i) {
+    for (int i = 0; i < int(document.scene.lights.size()); ++i) {
         // The selected light in yellow; one that solo leaves out of the picture greyed out.
-        const ImU32 color = i == state.selectedLight ? IM_COL32(255, 210, 80, 255)
-                            : soloedOut(state, i)    ? IM_COL32(110, 110, 110, 160)
+        const ImU32 color = i == interaction.selectedLight ? IM_COL32(255, 210, 80, 255)
+                            : soloedOut(document, interaction, i)    ? IM_COL32(110, 110, 110, 160)
                                                      : IM_COL32(230, 230, 230, 200);
-        drawLightShape(view, state.scene.lights[size_t(i)], color);
-        hoveredAny |= drawGrips(state, view, i, color, pressed);
+        drawLightShape(view, document.scene.lights[size_t(i)], color);
+        hoveredAny |= drawGrips(document, interaction, view, i, color, pressed);
     }
     draw->PopClipRect();
-    if (dragged >= 0 && dragged < int(state.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    if (dragged >= 0 && dragged < int(document.scene.lights.size()) && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         // The mouse is followed only inside the picture: a handle dragged past its edge stays
         // on it, where it can be grabbed again.
         const ImVec2 mouse = ImGui::GetIO().MousePos;
         const glm::vec2 mouseAt(mouse.x - origin.x, mouse.y - origin.y);
         const glm::vec2 margin(gizmoRadius() + 2.0f);
         const glm::vec2 local = glm::clamp(mouseAt, margin, glm::max(view.viewSize - margin, margin));
-        dragLight(state.scene.lights[size_t(dragged)], state.draggedHandle, view.camera, view.viewSize, local);
+        dragLight(document.scene.lights[size_t(dragged)], interaction.draggedHandle, view.camera, view.viewSize, local);
         return true;
     }
     dragged = -1;
@@ -401,9 +402,9 @@ bool drawLightGizmos(EditorState& state, ImVec2 origin, ImVec2 size, bool presse
     return hoveredAny;
 }
 
-void handleCameraInput(EditorState& state, ImVec2 size) {
+void handleCameraInput(Document& document, ImVec2 size) {
     ImGuiIO& io = ImGui::GetIO();
-    Camera& camera = state.scene.camera;
+    Camera& camera = document.scene.camera;
     const bool pan = ImGui::IsMouseDragging(ImGuiMouseButton_Middle) ||
                      (ImGui::IsMouseDragging(ImGuiMouseButton_Left) && io.KeyShift);
     if (pan) {
@@ -417,7 +418,7 @@ void handleCameraInput(EditorState& state, ImVec2 size) {
     // A right drag turns the environment (lighting and background together), as Marmoset's
     // sky drag: half a degree a pixel, one undo step a drag.
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
-        if (Light* environment = editedEnvironment(state)) {
+        if (Light* environment = editedEnvironment(document)) {
             environment->rotationDegrees =
                 std::remainder(environment->rotationDegrees + io.MouseDelta.x * 0.5f, 360.0f);
         }
@@ -444,17 +445,18 @@ void sideLabel(char side, const Material& material, float x, float y, float room
 }
 
 // Which material each part of the view shows, named.
-void drawSideLabels(const EditorState& state, ImVec2 origin, ImVec2 size) {
+void drawSideLabels(const Document& document, const Interaction& interaction, ImVec2 origin, ImVec2 size) {
     const float margin = px(8);
-    const float a = state.compareView == CompareView::Split ? size.x * std::clamp(state.splitPosition, 0.0f, 1.0f)
-                                                            : std::floor(size.x / 2.0f);
-    sideLabel('A', *state.compareA, origin.x + margin, origin.y + margin, a - 2.0f * margin, false);
-    if (state.compareView == CompareView::Split) {
-        sideLabel('B', labelledMaterial(state), origin.x + size.x - margin, origin.y + margin,
+    const float a = interaction.compareView == CompareView::Split
+                        ? size.x * std::clamp(interaction.splitPosition, 0.0f, 1.0f)
+                        : std::floor(size.x / 2.0f);
+    sideLabel('A', *interaction.compareA, origin.x + margin, origin.y + margin, a - 2.0f * margin, false);
+    if (interaction.compareView == CompareView::Split) {
+        sideLabel('B', labelledMaterial(document, interaction), origin.x + size.x - margin, origin.y + margin,
                   size.x - a - 2.0f * margin, true);
     } else {
-        sideLabel('B', labelledMaterial(state), origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
-                  false);
+        sideLabel('B', labelledMaterial(document, interaction), origin.x + a + margin, origin.y + margin,
+                  size.x - a - 2.0f * margin, false);
     }
 }
 
@@ -473,9 +475,9 @@ struct ViewArea {
 // View > PBR validation overlay over one picture on screen (at, size; u1: how much of it shows
 // from the left), the picture only: a channel is what was asked to be seen. The edited side's
 // tally goes to the status line.
-void overlayFlags(const EditorState& state, EditorServices& services, const PreparedScene& scene,
+void overlayFlags(const Interaction& interaction, EditorServices& services, const PreparedScene& scene,
                   const PictureRequest& request, EditorServices::Shown shown, ImVec2 at, ImVec2 size, float u1 = 1.0f) {
-    if (!state.pbrOverlay || request.channel.channel >= 0) {
+    if (!interaction.pbrOverlay || request.channel.channel >= 0) {
         return;
     }
     const EditorServices::PbrOverlay& overlay = services.pbrOverlay(scene, request, shown);
@@ -489,52 +491,53 @@ void overlayFlags(const EditorState& state, EditorServices& services, const Prep
 
 // The picture: B, or A and B side by side, or A over B's left part up to the divider; with
 // the PBR validation overlay over each when asked.
-void drawPictures(EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
+void drawPictures(const Document& document, const Interaction& interaction, EditorServices& services, const Scene& b,
+                  const ViewArea& area) {
     using Shown = EditorServices::Shown;
     // While a widget is held (a slider drag), skip MSAA so the preview keeps up; the full
     // quality frame follows on release.
     const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
-    const PictureRequest request{area.width, area.height, state.renderPath, samples, state.environmentShading,
-                                 state.channel};
-    const PreparedScene& preparedB = preparedScene(state, b);
-    if (state.compareA && state.compareView == CompareView::SideBySide) {
+    const PictureRequest request{
+        area.width, area.height, interaction.renderPath, samples, interaction.environmentShading, interaction.channel};
+    const PreparedScene& preparedB = preparedScene(document, b);
+    if (interaction.compareA && interaction.compareView == CompareView::SideBySide) {
         PictureRequest half = request;
         half.width = std::max(area.width / 2, 8);
         const ImVec2 halfSize(float(half.width), area.size.y);
-        const Scene a = withMaterial(state, *state.compareA);
-        const PreparedScene& preparedA = preparedScene(state, a);
+        const Scene a = withMaterial(document, interaction, *interaction.compareA);
+        const PreparedScene& preparedA = preparedScene(document, a);
         image(services.viewportTexture(preparedA, half, Shown::A), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
         image(services.viewportTexture(preparedB, half, Shown::Edited), halfSize);
-        overlayFlags(state, services, preparedA, half, Shown::A, area.origin, halfSize);
-        overlayFlags(state, services, preparedB, half, Shown::Edited,
+        overlayFlags(interaction, services, preparedA, half, Shown::A, area.origin, halfSize);
+        overlayFlags(interaction, services, preparedB, half, Shown::Edited,
                      ImVec2(area.origin.x + float(half.width), area.origin.y), halfSize);
         return;
     }
     image(services.viewportTexture(preparedB, request, Shown::Edited), area.size);
-    overlayFlags(state, services, preparedB, request, Shown::Edited, area.origin, area.size);
-    if (state.compareA && state.compareView == CompareView::Split) {
+    overlayFlags(interaction, services, preparedB, request, Shown::Edited, area.origin, area.size);
+    if (interaction.compareA && interaction.compareView == CompareView::Split) {
         // A left of the divider, B right, one camera: A's image drawn over B's left part.
-        const Scene sceneA = withMaterial(state, *state.compareA);
-        const PreparedScene& preparedA = preparedScene(state, sceneA);
+        const Scene sceneA = withMaterial(document, interaction, *interaction.compareA);
+        const PreparedScene& preparedA = preparedScene(document, sceneA);
         const unsigned a = services.viewportTexture(preparedA, request, Shown::A);
-        const float split = std::clamp(state.splitPosition, 0.0f, 1.0f);
+        const float split = std::clamp(interaction.splitPosition, 0.0f, 1.0f);
         const ImVec2 sizeA(area.size.x * split, area.size.y);
         ImGui::SetCursorScreenPos(area.origin);
         image(a, sizeA, 0.0f, split);
-        overlayFlags(state, services, preparedA, request, Shown::A, area.origin, sizeA, split);
+        overlayFlags(interaction, services, preparedA, request, Shown::A, area.origin, sizeA, split);
     }
 }
 
 // The split view's divider, drawn and dragged; true while the pointer is on it or drags it.
-bool handleDivider(EditorState& state, const ViewArea& area, bool hovered) {
-    if (!state.compareA || state.compareView != CompareView::Split) {
+bool handleDivider(Interaction& interaction, const ViewArea& area, bool hovered) {
+    if (!interaction.compareA || interaction.compareView != CompareView::Split) {
         return false;
     }
-    const float x = area.origin.x + area.size.x * state.splitPosition;
+    const float x = area.origin.x + area.size.x * interaction.splitPosition;
     ImGui::GetWindowDrawList()->AddLine(ImVec2(x, area.origin.y), ImVec2(x, area.origin.y + area.size.y),
                                         IM_COL32(255, 255, 255, 220), 2.0f);
-    bool& draggingDivider = state.draggingDivider;
+    bool& draggingDivider = interaction.draggingDivider;
     bool onDivider = std::abs(ImGui::GetIO().MousePos.x - x) < 6.0f && hovered;
     if (onDivider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
         draggingDivider = true;
@@ -543,7 +546,7 @@ bool handleDivider(EditorState& state, const ViewArea& area, bool hovered) {
         draggingDivider = false;
     }
     if (draggingDivider) {
-        state.splitPosition = std::clamp((ImGui::GetIO().MousePos.x - area.origin.x) / area.size.x, 0.02f, 0.98f);
+        interaction.splitPosition = std::clamp((ImGui::GetIO().MousePos.x - area.origin.x) / area.size.x, 0.02f, 0.98f);
         onDivider = true;
     }
     if (onDivider) {
@@ -554,19 +557,20 @@ bool handleDivider(EditorState& state, const ViewArea& area, bool hovered) {
 
 // The edited part of a model of several parts, outlined over the picture as the camera sees
 // it (with the gizmos: hidden with them, and not in Side by side, whose halves differ).
-void drawPartOutline(EditorState& state, const ViewArea& area) {
-    if (!state.model || modelMaterialCount(state) < 2 || !state.showGizmos ||
-        state.compareView == CompareView::SideBySide) {
+void drawPartOutline(const Document& document, Interaction& interaction, const Preferences& preferences,
+                     const ViewArea& area) {
+    if (!document.model || modelMaterialCount(document) < 2 || !preferences.showGizmos ||
+        interaction.compareView == CompareView::SideBySide) {
         return;
     }
-    const glm::mat4 transform = viewProjection(state.scene.camera, area.size.x / area.size.y);
+    const glm::mat4 transform = viewProjection(document.scene.camera, area.size.x / area.size.y);
     auto screen = [&](const glm::vec4& clip) {
         return ImVec2(area.origin.x + (clip.x / clip.w + 1.0f) * 0.5f * area.size.x,
                       area.origin.y + (1.0f - clip.y / clip.w) * 0.5f * area.size.y);
     };
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->PushClipRect(area.origin, ImVec2(area.origin.x + area.size.x, area.origin.y + area.size.y), true);
-    for (const auto& [a, b] : partOutline(state)) {
+    for (const auto& [a, b] : partOutline(document, interaction)) {
         const glm::vec4 clipA = transform * glm::vec4(a, 1.0f), clipB = transform * glm::vec4(b, 1.0f);
         if (clipA.w > 1e-4f && clipB.w > 1e-4f) {   // both in front of the eye
             draw->AddLine(screen(clipA), screen(clipB), IM_COL32(255, 160, 40, 230), px(1.5f));
@@ -577,26 +581,27 @@ void drawPartOutline(EditorState& state, const ViewArea& area) {
 
 // A left click (a press and release that did not drag) on the picture picks the model's part under
 // it, in the half it falls in when Side by side.
-void pickOnClick(EditorState& state, const ViewArea& area) {
+void pickOnClick(const Document& document, Interaction& interaction, Prompts& prompts, const ViewArea& area) {
     const ImGuiIO& io = ImGui::GetIO();
     // While the read-out is on a click also pins a pixel; Ctrl+click only pins it.
-    if (!state.model || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.KeyShift ||
-        (io.KeyCtrl && state.pixelReadOut) ||
+    if (!document.model || !ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.KeyShift ||
+        (io.KeyCtrl && interaction.pixelReadOut) ||
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] > px(3.0f) * px(3.0f)) {
         return;
     }
     float x = (io.MousePos.x - area.origin.x) / area.size.x, width = area.size.x;
-    if (state.compareA && state.compareView == CompareView::SideBySide) {
+    if (interaction.compareA && interaction.compareView == CompareView::SideBySide) {
         x = x < 0.5f ? 2.0f * x : 2.0f * x - 1.0f;
         width *= 0.5f;
     }
     const float y = (io.MousePos.y - area.origin.y) / area.size.y;
-    pickPart(state, glm::vec2(2.0f * x - 1.0f, 1.0f - 2.0f * y), width / area.size.y);
+    pickPart(document, interaction, prompts, glm::vec2(2.0f * x - 1.0f, 1.0f - 2.0f * y), width / area.size.y);
 }
 
 // The pointer over the picture: the divider first, then a light's gizmo, else the camera; a
 // click picks a part; F frames the mesh.
-void handlePointer(EditorState& state, EditorServices& services, const ViewArea& area) {
+void handlePointer(Document& document, Interaction& interaction, const Preferences& preferences, Prompts& prompts,
+                   EditorServices& services, const ViewArea& area) {
     ImGui::SetCursorScreenPos(area.origin);
     const bool clicked = ImGui::InvisibleButton("viewport-input", area.size,
                                                 ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
@@ -606,26 +611,26 @@ void handlePointer(EditorState& state, EditorServices& services, const ViewArea&
     const bool viewportPressed = ImGui::IsItemActivated();
     const bool hovered = ImGui::IsItemHovered();
 
-    const bool onDivider = handleDivider(state, area, hovered);
-    const bool gizmo = state.showGizmos && state.compareView != CompareView::SideBySide &&
-                       drawLightGizmos(state, area.origin, area.size, viewportPressed);
+    const bool onDivider = handleDivider(interaction, area, hovered);
+    const bool gizmo = preferences.showGizmos && interaction.compareView != CompareView::SideBySide &&
+                       drawLightGizmos(document, interaction, area.origin, area.size, viewportPressed);
     if (viewportActive && !gizmo && !onDivider) {
-        handleCameraInput(state, area.size);
+        handleCameraInput(document, area.size);
     } else if (hovered && ImGui::GetIO().MouseWheel != 0.0f) {
-        dollyCamera(state.scene.camera, std::pow(0.9f, ImGui::GetIO().MouseWheel));
+        dollyCamera(document.scene.camera, std::pow(0.9f, ImGui::GetIO().MouseWheel));
     }
     if (clicked && !gizmo && !onDivider) {
-        pickOnClick(state, area);
+        pickOnClick(document, interaction, prompts, area);
     }
     if (hovered && pressed(services.keyPresses, kKeyF) &&
         !ImGui::GetIO().WantTextInput) {
-        frameMesh(state);
+        frameMesh(document);
     }
 }
 
 // An environment file being prepared: the picture keeps the one it had until then.
-void drawEnvironmentProgress(const EditorState& state, const ViewArea& area) {
-    if (const std::shared_ptr<EnvironmentLoad>& load = state.environmentLoad) {
+void drawEnvironmentProgress(const Jobs& jobs, const ViewArea& area) {
+    if (const std::shared_ptr<EnvironmentLoad>& load = jobs.environmentLoad) {
         char text[160];
         std::snprintf(text, sizeof text, "Preparing the environment %s: %.0f%%", environmentName(load->source()).c_str(),
                       100.0f * load->progress());
@@ -636,15 +641,16 @@ void drawEnvironmentProgress(const EditorState& state, const ViewArea& area) {
 }
 
 // Which channel the viewport shows instead of the picture, at its top left: data, not light.
-void drawChannelLabel(const EditorState& state, const ViewArea& area) {
-    if (state.channel.channel < 0) {
+void drawChannelLabel(const Interaction& interaction, const ViewArea& area) {
+    if (interaction.channel.channel < 0) {
         return;
     }
-    const std::string text = "Channel: " + channelName(state.channel) + (state.channel.srgb ? " (sRGB)" : " (values)") +
+    const std::string text = "Channel: " + channelName(interaction.channel) +
+                             (interaction.channel.srgb ? " (sRGB)" : " (values)") +
                              "   View > Channel > Picture to go back";
     ImDrawList* draw = ImGui::GetWindowDrawList();
     // Under the comparison's side labels, which take the top corners.
-    const bool labelled = state.compareA && state.compareView != CompareView::Single;
+    const bool labelled = interaction.compareA && interaction.compareView != CompareView::Single;
     const ImVec2 at(area.origin.x + px(8), area.origin.y + px(8) + (labelled ? ImGui::GetTextLineHeight() + px(10) : 0.0f));
     draw->AddRectFilled(ImVec2(at.x - px(4), at.y - px(3)),
                         ImVec2(at.x + ImGui::CalcTextSize(text.c_str()).x + px(4), at.y + ImGui::GetTextLineHeight() + px(3)),
@@ -654,7 +660,7 @@ void drawChannelLabel(const EditorState& state, const ViewArea& area) {
 }
 
 // Overlay (Advanced): cost of the last render and what was drawn.
-void drawRenderOverlay(const EditorState& state, EditorServices& services, const Scene& b, const ViewArea& area) {
+void drawRenderOverlay(const Interaction& interaction, EditorServices& services, const Scene& b, const ViewArea& area) {
     int enabled = 0;
     for (const Light& light : b.lights) {
         enabled += light.enabled;
@@ -662,7 +668,7 @@ void drawRenderOverlay(const EditorState& state, EditorServices& services, const
     char overlay[160];
     std::snprintf(overlay, sizeof overlay, "CPU %.1f ms  GPU %.1f ms  lights %d  %s pass",
                   services.lastRenderMilliseconds(), services.lastGpuMilliseconds(), enabled,
-                  std::string(renderPathName(state.renderPath)).c_str());
+                  std::string(renderPathName(interaction.renderPath)).c_str());
     const float line = ImGui::GetTextLineHeight();
     const ImVec2 origin = area.origin, size = area.size;
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -674,7 +680,7 @@ void drawRenderOverlay(const EditorState& state, EditorServices& services, const
 }  // namespace
 
 void drawViewportPanel(EditorState& state, EditorServices& services) {
-    drawToolbar(state);
+    drawToolbar(state, state, state, state);
     const ImVec2 available = ImGui::GetContentRegionAvail();
     ViewArea area;
     area.width = std::max(int(available.x), 16);
@@ -685,17 +691,17 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     services.viewportHeight = area.height;
     // Here, not at the frame's start: the menu may have chosen a channel, the lights panel (drawn
     // before the viewport) switched its light off, in this frame.
-    keepChannelShowable(state);
-    const Scene b = renderedScene(state);
+    keepChannelShowable(state, state, state);
+    const Scene b = renderedScene(state, state);
     services.pbrTally.reset();   // set again below while the overlay or the channel shows it
-    drawPictures(state, services, b, area);
+    drawPictures(state, state, services, b, area);
     if (state.channel.channel == shader::CHANNEL_PBR_VALIDATION) {
         services.pbrTally = services.channelPbrTally(EditorServices::Shown::Edited);
     }
-    drawPartOutline(state, area);
-    handlePointer(state, services, area);
+    drawPartOutline(state, state, state, area);
+    handlePointer(state, state, state, state, services, area);
     if (state.compareA && state.compareView != CompareView::Single) {
-        drawSideLabels(state, area.origin, area.size);
+        drawSideLabels(state, state, area.origin, area.size);
     }
     drawEnvironmentProgress(state, area);
     drawChannelLabel(state, area);
@@ -706,7 +712,7 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     std::vector<ReadOutPicture> pictures;
     const ImVec2 end(area.origin.x + area.size.x, area.origin.y + area.size.y);
     if (state.pixelReadOut && state.compareA && state.compareView != CompareView::Single) {
-        sceneA = withMaterial(state, *state.compareA);
+        sceneA = withMaterial(state, state, *state.compareA);
         preparedA.emplace(preparedScene(state, *sceneA));
         if (state.compareView == CompareView::SideBySide) {
             const float half = float(std::max(area.width / 2, 8));
@@ -723,7 +729,8 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     } else {
         pictures.push_back({&preparedB, area.origin, area.size, area.origin, end, ""});
     }
-    drawPixelReadOut(state, services, pictures, ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(area.origin, end));
+    drawPixelReadOut(state, state, services, pictures,
+                     ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(area.origin, end));
     if (state.showAdvanced) {
         drawRenderOverlay(state, services, b, area);
     }
