@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "autosave.h"
-#include "editor_state.h"
+#include "storage/autosave.h"
+#include "state/editor_state.h"
 #include "io/json_reader.h"
 #include "scratch_test.h"
 

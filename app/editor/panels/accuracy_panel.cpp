@@ -1,8 +1,8 @@
 #include <imgui.h>
 
 #include "accuracy/accuracy.h"
-#include "panels.h"
-#include "widgets.h"
+#include "panels/panels.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

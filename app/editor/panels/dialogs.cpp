@@ -1,10 +1,10 @@
 #include <imgui.h>
 
-#include "file_dialog.h"
-#include "menu_actions.h"
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "panels/file_dialog.h"
+#include "panels/menu_actions.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

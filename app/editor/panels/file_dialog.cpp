@@ -1,4 +1,4 @@
-#include "file_dialog.h"
+#include "panels/file_dialog.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,10 +7,10 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "shown_path.h"
-#include "text_match.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "storage/shown_path.h"
+#include "views/text_match.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "editor_services.h"
-#include "editor_state.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
 
 namespace patina::editor {
 

@@ -1,4 +1,4 @@
-#include "light_gizmos.h"
+#include "panels/light_gizmos.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include <glm/glm.hpp>
 
-#include "editor_state.h"
+#include "state/editor_state.h"
 #include "scene/camera_control.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

@@ -10,9 +10,9 @@
 #include <imgui.h>
 
 #include "environment/builtin_environments.h"
-#include "editor_services.h"
-#include "panels.h"
-#include "widgets.h"
+#include "window/editor_services.h"
+#include "panels/panels.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

@@ -11,11 +11,11 @@
 #include "common/luminance.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
-#include "lobe_plot.h"
-#include "lobe_views.h"
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "views/lobe_plot.h"
+#include "panels/lobe_views.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

@@ -1,4 +1,4 @@
-#include "lobe_views.h"
+#include "panels/lobe_views.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 #include <glm/glm.hpp>
 
 #include "common/luminance.h"
-#include "lobe_plot.h"
+#include "views/lobe_plot.h"
 #include "shading/brdf_slice.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

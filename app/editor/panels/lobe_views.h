@@ -4,8 +4,8 @@
 // shows B, and A beside or over it when set, as the polar plot does.
 #include <imgui.h>
 
-#include "editor_services.h"
-#include "editor_state.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
 
 namespace patina::editor {
 

@@ -5,13 +5,13 @@
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
-#include "document_files.h"
-#include "file_dialog.h"
-#include "panels.h"
-#include "shown_path.h"
-#include "text_match.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "storage/document_files.h"
+#include "panels/file_dialog.h"
+#include "panels/panels.h"
+#include "storage/shown_path.h"
+#include "views/text_match.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

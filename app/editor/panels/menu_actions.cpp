@@ -1,9 +1,9 @@
-#include "menu_actions.h"
+#include "panels/menu_actions.h"
 
 #include <algorithm>
 
-#include "file_dialog.h"
-#include "open_folder.h"
+#include "panels/file_dialog.h"
+#include "storage/open_folder.h"
 
 namespace patina::editor {
 

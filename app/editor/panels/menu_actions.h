@@ -1,7 +1,7 @@
 #pragma once
 // What the File menu does, shared with the shortcuts and the unsaved-changes prompt.
-#include "editor_services.h"
-#include "editor_state.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
 
 namespace patina::editor {
 

@@ -4,8 +4,8 @@
 #include <imgui.h>
 // One function per panel: each reads EditorState (the whole, or the parts it draws), draws its
 // widgets and writes the state back.
-#include "editor_services.h"
-#include "editor_state.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
 
 namespace patina::editor {
 

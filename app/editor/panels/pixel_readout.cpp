@@ -9,9 +9,9 @@
 
 #include <imgui.h>
 
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

@@ -2,12 +2,12 @@
 
 #include <imgui.h>
 
-#include "panels.h"
+#include "panels/panels.h"
 #include "io/scene_file.h"
-#include "preset_files.h"
-#include "shown_path.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "storage/preset_files.h"
+#include "storage/shown_path.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

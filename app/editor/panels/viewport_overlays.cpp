@@ -1,4 +1,4 @@
-#include "viewport_overlays.h"
+#include "panels/viewport_overlays.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 
 #include <glm/glm.hpp>
 
-#include "editor_services.h"
-#include "editor_state.h"
-#include "part_picking.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
+#include "state/part_picking.h"
 #include "scene/view.h"
-#include "screenshot_comparison.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "views/screenshot_comparison.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

@@ -6,15 +6,15 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
-#include "keys.h"
-#include "light_gizmos.h"
-#include "panels.h"
-#include "part_picking.h"
+#include "window/keys.h"
+#include "panels/light_gizmos.h"
+#include "panels/panels.h"
+#include "state/part_picking.h"
 #include "scene/camera_control.h"
-#include "ui_scale.h"
-#include "viewport_overlays.h"
-#include "viewport_toolbar.h"
-#include "widgets.h"
+#include "window/ui_scale.h"
+#include "panels/viewport_overlays.h"
+#include "panels/viewport_toolbar.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 

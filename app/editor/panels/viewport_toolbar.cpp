@@ -1,4 +1,4 @@
-#include "viewport_toolbar.h"
+#include "panels/viewport_toolbar.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,10 +7,10 @@
 
 #include <imgui.h>
 
-#include "camera_choice.h"
-#include "editor_state.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "state/camera_choice.h"
+#include "state/editor_state.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
