@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "cli.h"
-#include "editor_app.h"
+#include "window/editor_app.h"
 #include "files/input_error.h"
 
 int main(int argc, char** argv) {

@@ -177,5 +177,33 @@ TEST(Layers, TheEditorIncludesNoBenchmarkCode) {
     }
 }
 
+// The editor's rooms: what it holds and acts on (state/), reads and writes (storage/) and
+// computes for the panels to show (views/) draw nothing, so the tests drive them without a
+// window; ImGui, GLFW and GL calls live in window/ and panels/, which they never include. No file
+// lies loose in app/editor/.
+TEST(Layers, TheEditorsStateStorageAndViewsDrawNothing) {
+    const fs::path editor = fs::path(PATINA_SOURCE_DIR) / "app" / "editor";
+    for (const auto& entry : fs::directory_iterator(editor)) {
+        EXPECT_TRUE(entry.is_directory()) << entry.path().filename() << " lies outside the editor's rooms";
+    }
+    const std::regex drawing(R"(^\s*#\s*include\s*[<"](imgui|GLFW/|epoxy/|window/|panels/))");
+    int checked = 0;
+    for (const char* room : {"state", "storage", "views"}) {
+        for (const auto& source : fs::recursive_directory_iterator(editor / room)) {
+            if (!source.is_regular_file()) {
+                continue;
+            }
+            ++checked;
+            std::ifstream in(source.path());
+            int number = 0;
+            for (std::string line; std::getline(in, line);) {
+                ++number;
+                EXPECT_FALSE(std::regex_search(line, drawing))
+                    << room << "/" << source.path().filename().string() << ":" << number << ": " << line;
+            }
+        }
+    }
+    EXPECT_GT(checked, 30) << "the rooms are missing or moved";
+}
 }  // namespace
 }  // namespace patina

@@ -10,22 +10,22 @@
 
 #include <gtest/gtest.h>
 
-#include "editor_settings.h"
-#include "editor_state.h"
+#include "storage/editor_settings.h"
+#include "state/editor_state.h"
 #include "panels/file_dialog.h"
 #include "panels/menu_actions.h"
-#include "lobe_plot.h"
-#include "open_folder.h"
-#include "panel_layout.h"
-#include "preset_files.h"
-#include "save_errors.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "views/lobe_plot.h"
+#include "storage/open_folder.h"
+#include "views/panel_layout.h"
+#include "storage/preset_files.h"
+#include "storage/save_errors.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 #include "gltf/export.h"
 #include "gltf/import.h"
 #include "gltf/model_export.h"
 #include "gltf/model_import.h"
-#include "part_picking.h"
+#include "state/part_picking.h"
 #include "scene/camera_control.h"
 #include "scene/view.h"
 #include "io/json_writer.h"
@@ -62,14 +62,14 @@ TEST_F(EditorStateTest, UndoAndRedoStepThroughEdits) {
     commitEdits(state);
     state.scene.material.metallic = 1.0f;
     commitEdits(state);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.metallic, 0.0f);
     EXPECT_EQ(state.scene.material.roughness, 0.9f);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.roughness, original);
-    redo(state);
+    redo(state, state, state);
     EXPECT_EQ(state.scene.material.roughness, 0.9f);
-    redo(state);
+    redo(state, state, state);
     EXPECT_EQ(state.scene.material.metallic, 1.0f);
     EXPECT_FALSE(state.history.canRedo());
 }
@@ -89,13 +89,13 @@ TEST_F(EditorStateTest, NotesGoWhenTheValuesAreEdited) {
     state.scene.material.roughness = 0.1f;
     commitEdits(state);
     EXPECT_EQ(state.scene.material.notes, "");
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material, measured) << "one step: the value and the notes";
-    redo(state);
+    redo(state, state, state);
     EXPECT_EQ(state.scene.material.notes, "");
 
     // A document's notes come back with its values (Reset).
-    startDocument(state, state.scene, {}, {});
+    startDocument(state, state, state, state.scene, {}, {});
     state.scene.material = measured;
     state.savedMaterial = measured;
     state.committed = state.snapshot();
@@ -115,14 +115,14 @@ TEST_F(EditorStateTest, AContinuousDragIsOneStep) {
     }
     commitEdits(state);                       // the widget is released
     EXPECT_EQ(state.history.undoSteps(), 1u);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.roughness, original);
 }
 
 TEST_F(EditorStateTest, UndoTakesPendingEditsFirst) {
     const float original = state.scene.material.specular;
     state.scene.material.specular = 0.9f;     // not committed yet
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.specular, original);
 }
 
@@ -132,7 +132,7 @@ TEST_F(EditorStateTest, KeepsAtLeastOneHundredSteps) {
         commitEdits(state);
     }
     for (int i = 0; i < 149; ++i) {
-        undo(state);
+        undo(state, state, state);
     }
     EXPECT_FLOAT_EQ(state.scene.material.roughness, 1.0f / 150.0f);
 }
@@ -140,7 +140,7 @@ TEST_F(EditorStateTest, KeepsAtLeastOneHundredSteps) {
 TEST_F(EditorStateTest, NewEditClearsRedo) {
     state.scene.material.roughness = 0.7f;
     commitEdits(state);
-    undo(state);
+    undo(state, state, state);
     state.scene.material.metallic = 0.3f;
     commitEdits(state);
     EXPECT_FALSE(state.history.canRedo());
@@ -151,7 +151,7 @@ TEST_F(EditorStateTest, DirtyUntilSavedAndTitleShowsIt) {
     state.scene.material.roughness = 0.77f;
     EXPECT_TRUE(state.dirty());
     EXPECT_EQ(windowTitle(state).front(), '*');
-    ASSERT_TRUE(saveMaterial(state, dir_ / "saved.json"));
+    ASSERT_TRUE(saveMaterial(state, state, state, dir_ / "saved.json"));
     EXPECT_FALSE(state.dirty());
     EXPECT_EQ(windowTitle(state), "saved.json - Patina");
     std::vector<std::string> warnings;
@@ -160,13 +160,13 @@ TEST_F(EditorStateTest, DirtyUntilSavedAndTitleShowsIt) {
     state.scene.material.metallic = 0.5f;
     commitEdits(state);
     EXPECT_TRUE(state.dirty());
-    undo(state);
+    undo(state, state, state);
     EXPECT_FALSE(state.dirty());
 }
 
 TEST_F(EditorStateTest, FailedSaveKeepsTheChangesAndSaysWhy) {
     state.scene.material.roughness = 0.66f;
-    EXPECT_FALSE(saveMaterial(state, dir_ / "no" / "such" / "folder.json"));
+    EXPECT_FALSE(saveMaterial(state, state, state, dir_ / "no" / "such" / "folder.json"));
     EXPECT_TRUE(state.dirty());
     // In words: the file, and what is wrong with its folder (not "cannot create a temporary file").
     EXPECT_EQ(state.error, "Could not save folder.json: the folder " + (dir_ / "no" / "such").string() +
@@ -181,7 +181,7 @@ TEST_F(EditorStateTest, SavingWritesBackUnknownKeysAndKeepsTheOldFileAsBak) {
     ASSERT_TRUE(openFile(state, dir_ / "tagged.json")) << state.error;
     EXPECT_NE(state.status.find("unknown key 'author'"), std::string::npos) << state.status;
     state.scene.material.roughness = 0.25f;
-    ASSERT_TRUE(saveMaterial(state, dir_ / "tagged.json")) << state.error;
+    ASSERT_TRUE(saveMaterial(state, state, state, dir_ / "tagged.json")) << state.error;
     const Json saved = readJsonFile(dir_ / "tagged.json");
     EXPECT_EQ(saved["author"], "me");
     EXPECT_EQ(saved["vendor"]["id"], 7);
@@ -191,34 +191,34 @@ TEST_F(EditorStateTest, SavingWritesBackUnknownKeysAndKeepsTheOldFileAsBak) {
 
 TEST_F(EditorStateTest, LightListOperations) {
     const size_t initial = state.scene.lights.size();
-    addLight(state, LightType::Point);
+    addLight(state, state, state, LightType::Point);
     ASSERT_EQ(state.scene.lights.size(), initial + 1);
     EXPECT_EQ(state.scene.lights.back().type, LightType::Point);
     EXPECT_EQ(state.selectedLight, int(initial));
 
-    duplicateLight(state, 0);
+    duplicateLight(state, state, state, 0);
     ASSERT_EQ(state.scene.lights.size(), initial + 2);
     EXPECT_EQ(state.scene.lights[1].name, state.scene.lights[0].name + " copy");
 
     state.scene.lights[1].name = "renamed";   // as the panel's name field writes it
     commitEdits(state);
     EXPECT_EQ(state.scene.lights[1].name, "renamed");
-    moveLight(state, 1, -1);
+    moveLight(state, state, 1, -1);
     EXPECT_EQ(state.scene.lights[0].name, "renamed");
-    moveLight(state, 0, -1);   // already first: nothing
+    moveLight(state, state, 0, -1);   // already first: nothing
     EXPECT_EQ(state.scene.lights[0].name, "renamed");
 
-    deleteLight(state, 0);
+    deleteLight(state, state, 0);
     EXPECT_EQ(state.scene.lights.size(), initial + 1);
     // Each operation is one undo step.
     EXPECT_EQ(state.history.undoSteps(), 5u);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.lights[0].name, "renamed");
 }
 
 TEST_F(EditorStateTest, SoloRendersOneLightWithoutEditingTheScene) {
     toggleSolo(state, 1);
-    const Scene rendered = renderedScene(state);
+    const Scene rendered = renderedScene(state, state);
     for (size_t i = 0; i < rendered.lights.size(); ++i) {
         EXPECT_EQ(rendered.lights[i].enabled, i == 1);
     }
@@ -226,7 +226,7 @@ TEST_F(EditorStateTest, SoloRendersOneLightWithoutEditingTheScene) {
         EXPECT_TRUE(light.enabled);
     }
     EXPECT_FALSE(state.history.canUndo());
-    deleteLight(state, 1);
+    deleteLight(state, state, 1);
     EXPECT_EQ(state.soloLight, -1);
 }
 
@@ -239,27 +239,27 @@ TEST_F(EditorStateTest, OpeningAFileStartsANewDocumentThatUndoCannotLeave) {
     state.scene.material.baseColor = {1.0f, 0.71f, 0.29f};
     state.scene.material.metallic = 1.0f;
     commitEdits(state);
-    ASSERT_TRUE(saveMaterial(state, dir_ / "b.json"));
+    ASSERT_TRUE(saveMaterial(state, state, state, dir_ / "b.json"));
     const std::vector<uint8_t> gold = readFileBytes(dir_ / "b.json");
 
     ASSERT_TRUE(openFile(state, a)) << state.error;
     EXPECT_EQ(state.materialPath, a);
     EXPECT_FALSE(state.dirty());
     EXPECT_FALSE(state.history.canUndo()) << "a new document has no steps yet";
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.name, "a") << "undo does not cross into the last document";
     EXPECT_EQ(windowTitle(state), "a.json - Patina");
 
     state.scene.material.roughness = 0.5f;   // the nudge, then Ctrl+S
     commitEdits(state);
-    ASSERT_TRUE(saveMaterial(state, state.materialPath));
+    ASSERT_TRUE(saveMaterial(state, state, state, state.materialPath));
     std::vector<std::string> warnings;
     const Material saved = loadMaterialFile(a, warnings);
     EXPECT_EQ(saved.name, "a");
     EXPECT_EQ(saved.metallic, 0.0f) << "a.json holds a's material, not gold";
     EXPECT_EQ(saved.roughness, 0.5f);
     EXPECT_EQ(readFileBytes(dir_ / "b.json"), gold);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.roughness, 0.8f) << "the new document's own steps undo";
 }
 
@@ -273,12 +273,12 @@ TEST_F(EditorStateTest, PresetsAreUndoableEditsAndResetReadsTheDocument) {
     EXPECT_FALSE(state.pendingOpen.has_value()) << "a preset after a tweak asks nothing: it is undoable";
     EXPECT_EQ(state.scene.material.name, "brick");
     EXPECT_NE(state.status.find("Ctrl+Z"), std::string::npos) << "the status says how to take it back: " << state.status;
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.name, "copper");
     EXPECT_EQ(state.savedMaterial, document) << "what Reset goes back to is the document's";
     EXPECT_TRUE(state.materialChanged());
     EXPECT_TRUE(state.materialPath.empty()) << "a preset is never the file Save writes";
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material, document);
     EXPECT_FALSE(state.dirty());
 }
@@ -291,28 +291,28 @@ TEST_F(EditorStateTest, UndoRedoAndALoadSayWhatTheyDidAndClearAnOldError) {
     requestOpen(state, writeMaterial("brick", 0.9f));
     requestOpen(state, dir_ / "missing.json");
     ASSERT_FALSE(state.error.empty());
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.status, "Undid the material brick");
     EXPECT_TRUE(state.error.empty()) << state.error;
-    redo(state);
+    redo(state, state, state);
     EXPECT_EQ(state.status, "Redid the material brick");
     state.scene.material.roughness = 0.2f;
     commitEdits(state);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.status, "Undid roughness");
-    undo(state);
-    undo(state);
+    undo(state, state, state);
+    undo(state, state, state);
     EXPECT_EQ(state.status, "Nothing to undo");
-    addLight(state, LightType::Point);
+    addLight(state, state, state, LightType::Point);
     state.scene.display.exposure = 1.0f;
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.status, "Undid exposure");
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.status, "Undid adding a light");
 
     requestOpen(state, dir_ / "missing.json");
     ASSERT_FALSE(state.error.empty());
-    ASSERT_TRUE(setEnvironmentSource(state, "builtin:white"));
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, "builtin:white"));
     EXPECT_TRUE(state.error.empty()) << "the environment loaded: " << state.error;
     requestOpen(state, dir_ / "missing.json");
     ASSERT_TRUE(openFile(state, dir_ / "brick.json"));
@@ -339,14 +339,14 @@ TEST_F(EditorStateTest, DisplaySettingsAreUndoneInTurn) {
     state.scene.display.backgroundFromEnvironment = true;
     state.scene.display.tonemap = Tonemap::AcesNarkowicz;
     commitEdits(state);
-    undo(state);
+    undo(state, state, state);
     EXPECT_FALSE(state.scene.display.backgroundFromEnvironment);
     EXPECT_EQ(state.scene.display.tonemap, Tonemap::PbrNeutral);
     EXPECT_EQ(state.scene.display.exposure, 8.0f);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.display.exposure, 0.0f) << "Ctrl+Z undoes the exposure, not the light";
     EXPECT_FALSE(state.scene.lights[0].enabled);
-    redo(state);
+    redo(state, state, state);
     EXPECT_EQ(state.scene.display.exposure, 8.0f);
 }
 
@@ -354,7 +354,7 @@ TEST_F(EditorStateTest, DisplaySettingsAreUndoneInTurn) {
 // scene: saving what the editor starts with writes the shipped file, byte for byte.
 TEST_F(EditorStateTest, TheEditorStartsWithTheShippedDefaultScene) {
     EXPECT_EQ(state.scene, defaultScene());
-    ASSERT_TRUE(saveScene(state, path("new.json")));
+    ASSERT_TRUE(saveScene(state, state, state, path("new.json")));
     std::ifstream shipped(fs::path(PATINA_PRESETS_DIR) / "../examples/default_scene.json", std::ios::binary);
     ASSERT_TRUE(shipped);
     EXPECT_EQ(read("new.json"), std::string(std::istreambuf_iterator<char>(shipped), {}));
@@ -362,16 +362,16 @@ TEST_F(EditorStateTest, TheEditorStartsWithTheShippedDefaultScene) {
 
 TEST_F(EditorStateTest, NewStartsTheDefaultSceneAndAsksWhenUnsaved) {
     ASSERT_TRUE(openFile(state, writeMaterial("mine", 0.2f)));
-    requestNew(state);
+    requestNew(state, state, state, state);
     EXPECT_FALSE(state.pendingNew);
     EXPECT_EQ(state.scene, defaultScene());
     EXPECT_TRUE(state.materialPath.empty());
     EXPECT_FALSE(state.dirty());
     EXPECT_FALSE(state.history.canUndo());
     state.scene.material.roughness = 0.05f;
-    requestNew(state);
+    requestNew(state, state, state, state);
     EXPECT_TRUE(state.pendingNew) << "unsaved work is never dropped without asking";
-    EXPECT_TRUE(promptOpen(state));
+    EXPECT_TRUE(promptOpen(state, state));
     EXPECT_EQ(state.scene.material.roughness, 0.05f);
 }
 
@@ -427,18 +427,18 @@ TEST_F(EditorStateTest, AnOpenedScenesEnvironmentFileIsWhatItShows) {
 TEST_F(EditorStateTest, UndoingAnEnvironmentBringsBackTheImageItNamed) {
     const std::string first = writeHdr(dir_ / "first.hdr", 64).string();
     const std::string second = writeHdr(dir_ / "second.hdr", 200).string();
-    ASSERT_TRUE(setEnvironmentSource(state, first)) << state.error;
-    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
-    ASSERT_TRUE(setEnvironmentSource(state, second)) << state.error;
-    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
-    undo(state);
-    resolveEnvironmentShown(state);
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, first)) << state.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state, state, state, state, true)) << state.error;
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, second)) << state.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state, state, state, state, true)) << state.error;
+    undo(state, state, state);
+    resolveEnvironmentShown(state, state, state);
     ASSERT_TRUE(state.environment);
     EXPECT_EQ(state.environment->source, first);
     // A file that cannot be read is said once and the light is left as it is.
     std::filesystem::remove(dir_ / "second.hdr");
-    redo(state);
-    resolveEnvironmentShown(state);
+    redo(state, state, state);
+    resolveEnvironmentShown(state, state, state);
     EXPECT_NE(state.error.find("second.hdr"), std::string::npos) << state.error;
     EXPECT_EQ(state.environmentFailed, second);
 }
@@ -447,7 +447,7 @@ TEST_F(EditorStateTest, OpeningAnEnvironmentImageWhileDirtyDoesNotAsk) {
     state.scene.material.roughness = 0.12f;
     requestOpen(state, writeHdr(dir_ / "sky.hdr", 64));
     EXPECT_FALSE(state.pendingOpen.has_value());
-    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state, state, state, state, true)) << state.error;
     ASSERT_TRUE(state.environment) << state.error;
     EXPECT_EQ(state.scene.material.roughness, 0.12f);   // nothing else changed
 }
@@ -462,10 +462,10 @@ TEST_F(EditorStateTest, AnOpenedScenesUnknownKeysSurviveEditsAndUndo) {
     ASSERT_TRUE(openFile(state, dir_ / "scene.json")) << state.error;
     state.scene.lights[0].intensity = 3.0f;
     commitEdits(state);
-    undo(state);
+    undo(state, state, state);
     // What a screenshot embeds is the scene as opened.
     EXPECT_EQ(sceneToJson(state.scene), sceneToJson(scene));
-    redo(state);
+    redo(state, state, state);
     EXPECT_EQ(state.scene.lights[0].intensity, 3.0f);
     EXPECT_EQ(state.scene.lights[0].extras, scene.lights[0].extras);
 }
@@ -476,11 +476,11 @@ TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
     state.scene.material.name = "last session";
     state.scene.material.metallic = 0.25f;
     WindowGeometry window{1234, 777};
-    ASSERT_TRUE(saveSettings(state, window, dir_ / "config" / "settings.json"));
+    ASSERT_TRUE(saveSettings(state, state, state, window, dir_ / "config" / "settings.json"));
 
     EditorState next;
     WindowGeometry nextWindow;
-    loadSettings(next, nextWindow, dir_ / "config" / "settings.json");
+    loadSettings(next, next, next, nextWindow, dir_ / "config" / "settings.json");
     EXPECT_TRUE(next.error.empty()) << next.error;
     EXPECT_EQ(nextWindow.width, 1234);
     EXPECT_EQ(next.layout.leftWidth, 411.0f);
@@ -489,7 +489,7 @@ TEST_F(EditorStateTest, SettingsPersistAcrossSessions) {
 
     std::ofstream(dir_ / "broken.json") << "{ nope";
     EditorState broken;
-    loadSettings(broken, nextWindow, dir_ / "broken.json");
+    loadSettings(broken, broken, broken, nextWindow, dir_ / "broken.json");
     EXPECT_NE(broken.error.find("Settings ignored"), std::string::npos);
     EXPECT_EQ(broken.scene.material, defaultScene().material);
 }
@@ -501,27 +501,28 @@ TEST_F(EditorStateTest, SettingsAreWrittenWhenAPreferenceChanges) {
     WindowGeometry window{1280, 720};
     SettingsWriter writer(state, window, file);
     const auto t0 = SettingsWriter::Clock::now();
-    EXPECT_FALSE(writer.update(state, window, t0).has_value()) << "nothing changed";
+    EXPECT_FALSE(writer.update(state, state, state, window, t0).has_value()) << "nothing changed";
     EXPECT_FALSE(fs::exists(file));
     state.scene.material.roughness = 0.3f;
-    EXPECT_FALSE(writer.update(state, window, t0).has_value()) << "an edit is the autosave's, not a setting";
+    EXPECT_FALSE(writer.update(state, state, state, window, t0).has_value())
+        << "an edit is the autosave's, not a setting";
 
     window = {1500, 900};   // a resize, frame by frame
-    ASSERT_TRUE(writer.update(state, window, t0).has_value());
+    ASSERT_TRUE(writer.update(state, state, state, window, t0).has_value());
     window = {1600, 1000};
-    EXPECT_TRUE(writer.update(state, window, t0 + 100ms).has_value());
+    EXPECT_TRUE(writer.update(state, state, state, window, t0 + 100ms).has_value());
     EXPECT_FALSE(fs::exists(file)) << "not while it is still changing";
-    EXPECT_FALSE(writer.update(state, window, t0 + 100ms + kSettingsDelay).has_value());
+    EXPECT_FALSE(writer.update(state, state, state, window, t0 + 100ms + kSettingsDelay).has_value());
     ASSERT_TRUE(fs::exists(file));
     EditorState next;
     WindowGeometry loaded;
-    loadSettings(next, loaded, file);
+    loadSettings(next, next, next, loaded, file);
     EXPECT_EQ(loaded.width, 1600);
 
     rememberRecent(state, dir_ / "opened.json");
-    writer.update(state, window, t0 + 1s);
-    writer.update(state, window, t0 + 1s + kSettingsDelay);
-    loadSettings(next, loaded, file);
+    writer.update(state, state, state, window, t0 + 1s);
+    writer.update(state, state, state, window, t0 + 1s + kSettingsDelay);
+    loadSettings(next, next, next, loaded, file);
     ASSERT_EQ(next.recentFiles.size(), 1u);
     EXPECT_EQ(next.recentFiles[0].filename(), "opened.json");
 
@@ -529,13 +530,13 @@ TEST_F(EditorStateTest, SettingsAreWrittenWhenAPreferenceChanges) {
     fs::remove_all(dir_ / "config");
     std::ofstream(dir_ / "config") << "a file where the folder would be";
     state.showGizmos = !state.showGizmos;
-    writer.update(state, window, t0 + 2s);
-    writer.update(state, window, t0 + 2s + kSettingsDelay);
+    writer.update(state, state, state, window, t0 + 2s);
+    writer.update(state, state, state, window, t0 + 2s + kSettingsDelay);
     EXPECT_NE(state.error.find("settings.json"), std::string::npos) << state.error;
     state.error.clear();
     state.showAdvanced = !state.showAdvanced;
-    writer.update(state, window, t0 + 3s);
-    writer.update(state, window, t0 + 3s + kSettingsDelay);
+    writer.update(state, state, state, window, t0 + 3s);
+    writer.update(state, state, state, window, t0 + 3s + kSettingsDelay);
     EXPECT_TRUE(state.error.empty()) << state.error;
 }
 
@@ -560,7 +561,7 @@ namespace {
 // them back with nothing unsaved.
 TEST_F(EditorStateTest, LightEditsAreUnsavedAndASavedSceneKeepsThem) {
     EXPECT_FALSE(state.dirty());
-    addLight(state, LightType::Directional);
+    addLight(state, state, state, LightType::Directional);
     state.scene.camera.position = {0.5f, 1.0f, 4.0f};
     EXPECT_TRUE(state.dirty());
     EXPECT_FALSE(state.materialChanged());
@@ -568,7 +569,7 @@ TEST_F(EditorStateTest, LightEditsAreUnsavedAndASavedSceneKeepsThem) {
     EXPECT_EQ(windowTitle(state).front(), '*');
 
     const fs::path file = dir_ / "studio.json";
-    ASSERT_TRUE(saveScene(state, file)) << state.error;
+    ASSERT_TRUE(saveScene(state, state, state, file)) << state.error;
     EXPECT_FALSE(state.dirty());
     EXPECT_EQ(windowTitle(state), "studio.json - Patina");
 
@@ -583,8 +584,8 @@ TEST_F(EditorStateTest, LightEditsAreUnsavedAndASavedSceneKeepsThem) {
 }
 
 TEST_F(EditorStateTest, AFailedSceneSaveKeepsTheDocumentAsItWas) {
-    addLight(state, LightType::Point);
-    EXPECT_FALSE(saveScene(state, dir_ / "missing-folder" / "scene.json"));
+    addLight(state, state, state, LightType::Point);
+    EXPECT_FALSE(saveScene(state, state, state, dir_ / "missing-folder" / "scene.json"));
     EXPECT_NE(state.error.find("Could not save scene.json: the folder"), std::string::npos) << state.error;
     EXPECT_TRUE(state.dirty());
     EXPECT_TRUE(state.scenePath.empty());
@@ -616,7 +617,7 @@ TEST_F(EditorStateTest, EveryFilesErrorIsShownAndAFolderIsCalledAFolder) {
     for (const char* name : {"missing.json", "broken.hdr", "broken.glb", "gone.exr"}) {
         EXPECT_NE(state.error.find(name), std::string::npos) << name << " in: " << state.error;
     }
-    EXPECT_FALSE(finishEnvironmentLoad(state, true));
+    EXPECT_FALSE(finishEnvironmentLoad(state, state, state, state, true));
     EXPECT_NE(state.error.find("missing.json"), std::string::npos) << "nothing arrives later to replace them";
 
     // A model named last is read on a worker, the window showing meanwhile; its error joins the
@@ -662,18 +663,18 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     EXPECT_EQ(state.scene.material, before) << "the scene's own material is untouched";
     ASSERT_EQ(modelMaterialCount(state), 1);
     EXPECT_NE(state.status.find("1 material (\"model gold\", in the Material panel)"), std::string::npos) << state.status;
-    Material edited = editedMaterial(state);
+    Material edited = editedMaterial(state, state);
     EXPECT_EQ(edited.name, "model gold");
     EXPECT_NEAR(edited.roughness, 0.3f, 1e-6f);
     EXPECT_EQ(edited.metallic, 1.0f);
     // What the viewport draws: the model, its material as tuned.
     edited.roughness = 0.7f;
     edited.name = "renamed";   // the key stays the file's
-    setEditedMaterial(state, state.scene, edited);
+    setEditedMaterial(state, state, state.scene, edited);
     commitEdits(state);
     ASSERT_EQ(state.scene.modelMaterials.size(), 1u);
     EXPECT_EQ(state.scene.modelMaterials[0].material.name, "model gold");
-    const Scene shown = renderedScene(state);
+    const Scene shown = renderedScene(state, state);
     const PreparedScene prepared = preparedScene(state, shown);
     ASSERT_NE(prepared.model, nullptr);
     const std::vector<SceneDraw> draws = sceneDraws(prepared);
@@ -682,17 +683,17 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     EXPECT_TRUE(state.dirty());
     EXPECT_NE(unsavedParts(state).find("the model's materials"), std::string::npos);
     edited.metallic = 0.5f;
-    setEditedMaterial(state, state.scene, edited);
+    setEditedMaterial(state, state, state.scene, edited);
     commitEdits(state);
-    undo(state);
+    undo(state, state, state);
     EXPECT_NE(state.status.find("Undid metallic of model gold"), std::string::npos) << state.status;
-    undo(state);
+    undo(state, state, state);
     EXPECT_NE(state.status.find("Undid the tuning of model gold"), std::string::npos) << state.status;
-    EXPECT_NEAR(editedMaterial(state).roughness, 0.3f, 1e-6f);
+    EXPECT_NEAR(editedMaterial(state, state).roughness, 0.3f, 1e-6f);
     EXPECT_TRUE(state.scene.modelMaterials.empty());
-    redo(state);
-    redo(state);
-    EXPECT_EQ(editedMaterial(state).metallic, 0.5f);
+    redo(state, state, state);
+    redo(state, state, state);
+    EXPECT_EQ(editedMaterial(state, state).metallic, 0.5f);
     // A preset lands on the model's material, under its name.
     Material brick;
     brick.name = "brick";
@@ -702,24 +703,24 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     saveMaterialFile(dir_ / "presets" / "brick.json", brick);
     state.presetFolders = {dir_ / "presets"};
     ASSERT_TRUE(openFile(state, dir_ / "presets" / "brick.json")) << state.error;
-    EXPECT_EQ(editedMaterial(state).baseColor, brick.baseColor);
-    EXPECT_EQ(editedMaterial(state).name, "model gold");
-    EXPECT_EQ(editedMaterial(state).model, BrdfModelId::Gltf) << "a preset's model is for the built-in meshes";
+    EXPECT_EQ(editedMaterial(state, state).baseColor, brick.baseColor);
+    EXPECT_EQ(editedMaterial(state, state).name, "model gold");
+    EXPECT_EQ(editedMaterial(state, state).model, BrdfModelId::Gltf) << "a preset's model is for the built-in meshes";
     EXPECT_EQ(state.scene.material, before);
     // Saved and reopened, the tuning is there.
-    ASSERT_TRUE(saveScene(state, dir_ / "tuned.json")) << state.error;
-    newDocument(state);
+    ASSERT_TRUE(saveScene(state, state, state, dir_ / "tuned.json")) << state.error;
+    newDocument(state, state, state, state);
     EXPECT_EQ(modelMaterialCount(state), 0);
     ASSERT_TRUE(openFile(state, dir_ / "tuned.json")) << state.error;
     ASSERT_EQ(modelMaterialCount(state), 1);
-    EXPECT_EQ(editedMaterial(state).roughness, 0.9f);
+    EXPECT_EQ(editedMaterial(state, state).roughness, 0.9f);
     EXPECT_FALSE(state.dirty());
     // Another model, whose material has the same index and name, starts as its file says, in a
     // document of its own.
     exportGltf(dir_ / "gold copy.glb", makeUvSphere(), gold);
     ASSERT_TRUE(openFile(state, dir_ / "gold copy.glb")) << state.error;
     EXPECT_TRUE(state.scene.modelMaterials.empty());
-    EXPECT_NEAR(editedMaterial(state).roughness, 0.3f, 1e-6f);
+    EXPECT_NEAR(editedMaterial(state, state).roughness, 0.3f, 1e-6f);
     EXPECT_TRUE(state.scenePath.empty());
 }
 
@@ -731,12 +732,12 @@ TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone
     gold.roughness = 0.3f;
     exportGltf(dir_ / "gold.glb", makeTorus(), gold);
     ASSERT_TRUE(openFile(state, dir_ / "gold.glb")) << state.error;
-    Material edited = editedMaterial(state);
+    Material edited = editedMaterial(state, state);
     edited.roughness = 0.6f;
-    setEditedMaterial(state, state.scene, edited);
+    setEditedMaterial(state, state, state.scene, edited);
     commitEdits(state);
     const Scene before = state.scene;
-    ASSERT_TRUE(exportGltfFile(state, dir_ / "tuned")) << state.error;
+    ASSERT_TRUE(exportGltfFile(state, state, dir_ / "tuned")) << state.error;
     EXPECT_EQ(state.status, "Exported tuned.glb");
     const Model exported = importGltfModel(dir_ / "tuned.glb");
     ASSERT_EQ(exported.materials.size(), 1u);
@@ -745,10 +746,10 @@ TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone
     EXPECT_EQ(state.scene, before);
     EXPECT_TRUE(state.dirty()) << "an export is no save";
 
-    newDocument(state);
-    ASSERT_TRUE(exportGltfFile(state, dir_ / "sphere.gltf")) << state.error;
+    newDocument(state, state, state, state);
+    ASSERT_TRUE(exportGltfFile(state, state, dir_ / "sphere.gltf")) << state.error;
     EXPECT_EQ(importGltf(dir_ / "sphere.gltf").material->name, state.scene.material.name);
-    EXPECT_FALSE(exportGltfFile(state, dir_ / "no" / "such" / "x.glb"));
+    EXPECT_FALSE(exportGltfFile(state, state, dir_ / "no" / "such" / "x.glb"));
     EXPECT_NE(state.error.find("x.glb"), std::string::npos) << state.error;
 }
 
@@ -762,9 +763,9 @@ TEST_F(EditorStateTest, AnExportCarriesNoLocalPath) {
     const LdrImage red{2, 2, std::vector<uint8_t>(2 * 2 * 4, 200)};
     writeFileAtomic(dir_ / "red.png", encodePng(red));
     ASSERT_TRUE(openFile(state, dir_ / "grey.glb")) << state.error;
-    ASSERT_TRUE(replaceMap(state, 0, "baseColorTexture", dir_ / "red.png")) << state.error;
+    ASSERT_TRUE(replaceMap(state, *state.assets, state, 0, "baseColorTexture", dir_ / "red.png")) << state.error;
     for (const char* name : {"shared.glb", "shared.gltf"}) {
-        ASSERT_TRUE(exportGltfFile(state, dir_ / name)) << state.error;
+        ASSERT_TRUE(exportGltfFile(state, state, dir_ / name)) << state.error;
         const std::vector<uint8_t> bytes = readFileBytes(dir_ / name);
         const std::string text(bytes.begin(), bytes.end());
         EXPECT_EQ(text.find(dir_.string()), std::string::npos) << name << " holds the path of its folder";
@@ -780,19 +781,19 @@ TEST_F(EditorStateTest, AMapTickedOffIsAnUndoableEditThatTheExportKeeps) {
         GTEST_SKIP() << "needs Debian's assimp-testmodels";
     }
     ASSERT_TRUE(openFile(state, box)) << state.error;
-    const Material factors = editedMaterial(state);
+    const Material factors = editedMaterial(state, state);
     EXPECT_TRUE(mapShown(state.scene, 0, "baseColorTexture"));
     setMapShown(state, state.scene, 0, "baseColorTexture", false);
     commitEdits(state);
     EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture"));
-    EXPECT_EQ(editedMaterial(state), factors);
-    const std::vector<SceneDraw> draws = sceneDraws(preparedScene(state, renderedScene(state)));
+    EXPECT_EQ(editedMaterial(state, state), factors);
+    const std::vector<SceneDraw> draws = sceneDraws(preparedScene(state, renderedScene(state, state)));
     ASSERT_EQ(draws.size(), 1u);
     EXPECT_EQ(draws[0].maps, nullptr);
-    ASSERT_TRUE(exportGltfFile(state, dir_ / "plain.glb")) << state.error;
+    ASSERT_TRUE(exportGltfFile(state, state, dir_ / "plain.glb")) << state.error;
     EXPECT_FALSE(importGltfModel(dir_ / "plain.glb").materials[0].baseColor.present());
-    ASSERT_TRUE(saveScene(state, dir_ / "plain.json")) << state.error;
-    undo(state);
+    ASSERT_TRUE(saveScene(state, state, state, dir_ / "plain.json")) << state.error;
+    undo(state, state, state);
     EXPECT_NE(state.status.find("Undid the maps of " + factors.name), std::string::npos) << state.status;
     EXPECT_TRUE(mapShown(state.scene, 0, "baseColorTexture"));
     ASSERT_TRUE(openFile(state, dir_ / "plain.json")) << state.error;
@@ -820,7 +821,7 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
 
     exportGltf(dir_ / "sphere.glb", makeUvSphere(), Material{});
     requestOpen(state, dir_ / "sphere.glb");
-    cancelModelLoad(state);
+    cancelModelLoad(state, state);
     EXPECT_EQ(state.modelLoad, nullptr);
     EXPECT_EQ(state.status, "Mesh left as it was");
     ASSERT_EQ(state.droppedModelLoads.size(), 1u);
@@ -832,7 +833,7 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
     EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
     // A new document started meanwhile does not get the last one's model.
     requestOpen(state, dir_ / "sphere.glb");
-    newDocument(state);
+    newDocument(state, state, state, state);
     EXPECT_EQ(state.modelLoad, nullptr);
     EXPECT_FALSE(finishModelLoad(state, true));
     EXPECT_TRUE(state.scene.meshFile.empty());
@@ -852,15 +853,15 @@ TEST_F(EditorStateTest, AFileOfAnotherKindSaysWhatTheEditorOpens) {
 
 // A scene never saved is offered under the name of what it shows: the model, or the material.
 TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
-    saveSceneAs(state);
+    saveSceneAs(state, state);
     EXPECT_EQ(state.pathDialogText, state.scene.material.name + "-scene.json");
     exportGltfModel(dir_ / "two.glb", test::twoBalls());
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
-    saveSceneAs(state);
+    saveSceneAs(state, state);
     EXPECT_EQ(state.pathDialogText, "two-scene.json");
     EXPECT_EQ(windowTitle(state), "two.glb - Patina") << "named for the model shown, until saved";
-    ASSERT_TRUE(saveScene(state, dir_ / "mine.json")) << state.error;
-    saveSceneAs(state);
+    ASSERT_TRUE(saveScene(state, state, state, dir_ / "mine.json")) << state.error;
+    saveSceneAs(state, state);
     EXPECT_EQ(fs::path(state.pathDialogText).filename(), "mine.json");
 }
 
@@ -875,20 +876,20 @@ TEST_F(EditorStateTest, EachPartHasItsOwnBrdfModelAndAnOldSceneKeepsItsOne) {
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
     auto shaded = [&] {
         std::vector<BrdfModelId> models;
-        for (const SceneDraw& draw : sceneDraws(preparedScene(state, renderedScene(state)))) {
+        for (const SceneDraw& draw : sceneDraws(preparedScene(state, renderedScene(state, state)))) {
             models.push_back(draw.material.model);
         }
         return models;
     };
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
     state.selectedModelMaterial = 1;
-    Material right = editedMaterial(state);
+    Material right = editedMaterial(state, state);
     right.model = BrdfModelId::Epic;
-    setEditedMaterial(state, state.scene, right);
+    setEditedMaterial(state, state, state.scene, right);
     commitEdits(state);
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
-    ASSERT_TRUE(saveScene(state, dir_ / "mixed.json")) << state.error;
-    undo(state);
+    ASSERT_TRUE(saveScene(state, state, state, dir_ / "mixed.json")) << state.error;
+    undo(state, state, state);
     EXPECT_NE(state.status.find("Undid the tuning of right"), std::string::npos) << state.status;
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
     ASSERT_TRUE(openFile(state, dir_ / "mixed.json")) << state.error;
@@ -903,15 +904,15 @@ TEST_F(EditorStateTest, EachPartHasItsOwnBrdfModelAndAnOldSceneKeepsItsOne) {
     ASSERT_TRUE(openFile(state, dir_ / "old.json")) << state.error;
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Burley, BrdfModelId::Burley}));
     state.selectedModelMaterial = 0;
-    Material left = editedMaterial(state);
+    Material left = editedMaterial(state, state);
     EXPECT_EQ(left.model, BrdfModelId::Burley);
     left.roughness = 0.2f;   // tuning a part under one model keeps the part's own model beneath
-    setEditedMaterial(state, state.scene, left);
+    setEditedMaterial(state, state, state.scene, left);
     state.scene.modelBrdf.reset();   // "Each part its own model"
     commitEdits(state);
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
-    EXPECT_EQ(editedMaterial(state).roughness, 0.2f);
-    undo(state);
+    EXPECT_EQ(editedMaterial(state, state).roughness, 0.2f);
+    undo(state, state, state);
     EXPECT_NE(state.status.find("the BRDF model of every part"), std::string::npos) << state.status;
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Burley, BrdfModelId::Burley}));
 }
@@ -926,29 +927,29 @@ TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {
         const glm::vec4 clip = viewProjection(state.scene.camera, aspect) * glm::vec4(point, 1.0f);
         return glm::vec2(clip) / clip.w;
     };
-    const std::vector<Segment> leftOutline = partOutline(state);
+    const std::vector<Segment> leftOutline = partOutline(state, state);
     EXPECT_FALSE(leftOutline.empty());
     for (const auto& [a, b] : leftOutline) {
         EXPECT_LT(a.x, 0.0f);   // the left ball's
     }
-    ASSERT_TRUE(pickPart(state, ndcOf(right), aspect));
+    ASSERT_TRUE(pickPart(state, state, state, ndcOf(right), aspect));
     EXPECT_EQ(state.selectedModelMaterial, 1);
-    EXPECT_EQ(editedMaterial(state).name, "right");
+    EXPECT_EQ(editedMaterial(state, state).name, "right");
     EXPECT_NE(state.status.find("\"right\" (right ball)"), std::string::npos) << state.status;
-    for (const auto& [a, b] : partOutline(state)) {
+    for (const auto& [a, b] : partOutline(state, state)) {
         EXPECT_GT(a.x, 0.0f);
     }
     // Between the balls, nothing: the selection stays.
-    EXPECT_FALSE(pickPart(state, ndcOf(glm::vec3(0.0f, 1.5f, 0.0f)), aspect));
+    EXPECT_FALSE(pickPart(state, state, state, ndcOf(glm::vec3(0.0f, 1.5f, 0.0f)), aspect));
     EXPECT_EQ(state.selectedModelMaterial, 1);
     // Another eye, another outline.
-    const std::vector<Segment> before = partOutline(state);
+    const std::vector<Segment> before = partOutline(state, state);
     orbitCamera(state.scene.camera, 0.0f, 0.8f);
-    EXPECT_NE(partOutline(state), before);
+    EXPECT_NE(partOutline(state, state), before);
     // No model, nothing to pick or outline.
-    newDocument(state);
-    EXPECT_FALSE(pickPart(state, glm::vec2(0.0f), aspect));
-    EXPECT_TRUE(partOutline(state).empty());
+    newDocument(state, state, state, state);
+    EXPECT_FALSE(pickPart(state, state, state, glm::vec2(0.0f), aspect));
+    EXPECT_TRUE(partOutline(state, state).empty());
 }
 
 // A model of hundreds of units (2CylinderEngine's size) swallowed every point, sphere and tube
@@ -998,11 +999,11 @@ TEST_F(EditorStateTest, OpeningAModelStartsItsOwnDocumentSoSaveNeverWritesAnothe
     exportGltf(dir_ / "engine.glb", big, state.scene.material);
     exportGltf(dir_ / "box.glb", makeUvSphere(), state.scene.material);
     ASSERT_TRUE(openFile(state, dir_ / "engine.glb")) << state.error;
-    Material tuned = editedMaterial(state);
+    Material tuned = editedMaterial(state, state);
     tuned.roughness = 0.2f;
-    setEditedMaterial(state, state.scene, tuned);
+    setEditedMaterial(state, state, state.scene, tuned);
     commitEdits(state);
-    ASSERT_TRUE(saveScene(state, dir_ / "engine-scene.json")) << state.error;
+    ASSERT_TRUE(saveScene(state, state, state, dir_ / "engine-scene.json")) << state.error;
     const std::vector<uint8_t> engineScene = readFileBytes(dir_ / "engine-scene.json");
     const std::vector<Light> engineLights = state.scene.lights;
 
@@ -1016,14 +1017,14 @@ TEST_F(EditorStateTest, OpeningAModelStartsItsOwnDocumentSoSaveNeverWritesAnothe
     EXPECT_FALSE(state.history.canUndo()) << "a new document has no steps yet";
     EXPECT_NE(state.scene.lights, engineLights) << "the stage's lights follow the box's size";
     tuned.roughness = 0.9f;
-    setEditedMaterial(state, state.scene, tuned);
+    setEditedMaterial(state, state, state.scene, tuned);
     commitEdits(state);
     EXPECT_EQ(windowTitle(state), "*box.glb - Patina");
-    saveSceneDocument(state);   // Save scene (Ctrl+Alt+S)
+    saveSceneDocument(state, state, state);   // Save scene (Ctrl+Alt+S)
     EXPECT_EQ(state.pathDialog, EditorState::PathDialog::SaveSceneAs);
     EXPECT_EQ(state.pathDialogText, "box-scene.json");
     state.pathDialog = EditorState::PathDialog::None;
-    save(state);   // Ctrl+S: the model's tuning is a scene's, never the hidden sphere's material
+    save(state, state, state);   // Ctrl+S: the model's tuning is a scene's, never the hidden sphere's material
     EXPECT_EQ(state.pathDialog, EditorState::PathDialog::SaveSceneAs);
     EXPECT_EQ(state.pathDialogText, "box-scene.json");
     state.pathDialog = EditorState::PathDialog::None;
@@ -1052,7 +1053,7 @@ TEST_F(EditorStateTest, OpeningAModelStartsItsOwnDocumentSoSaveNeverWritesAnothe
     // Edited while a model is read, the document is not replaced without asking again.
     requestOpen(state, dir_ / "box.glb");
     ASSERT_NE(state.modelLoad, nullptr);
-    setEditedMaterial(state, state.scene, tuned);
+    setEditedMaterial(state, state, state.scene, tuned);
     EXPECT_FALSE(finishModelLoad(state, true));
     EXPECT_EQ(state.pendingOpen, dir_ / "box.glb");
     EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "engine.glb");
@@ -1065,7 +1066,7 @@ TEST_F(EditorStateTest, OpeningAModelStartsItsOwnDocumentSoSaveNeverWritesAnothe
     chooseBuiltinMesh(state, MeshKind::Sphere);
     EXPECT_EQ(meshBounds(state).radius, 1.0f);
     EXPECT_LT(glm::length(state.scene.camera.position), 10.0f);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "box.glb");
 }
 
@@ -1093,7 +1094,7 @@ TEST_F(EditorStateTest, SaveAsPresetMakesTheFolderAndNamesTheMaterialAfterTheFil
     state.userPresetFolder = dir_ / "config" / "patina" / "presets";
     state.presetFolders = {state.userPresetFolder};
     state.scene.material.roughness = 0.31f;
-    ASSERT_TRUE(saveAsPreset(state, state.userPresetFolder / "brushed steel")) << state.error;
+    ASSERT_TRUE(saveAsPreset(state, state, state, state, state.userPresetFolder / "brushed steel")) << state.error;
     const fs::path file = state.userPresetFolder / "brushed steel.json";
     ASSERT_TRUE(fs::exists(file));
     EXPECT_EQ(state.scene.material.name, "brushed steel");
@@ -1102,7 +1103,7 @@ TEST_F(EditorStateTest, SaveAsPresetMakesTheFolderAndNamesTheMaterialAfterTheFil
     EXPECT_EQ(materialFilesIn(state.userPresetFolder), std::vector<fs::path>{file});
     EXPECT_FALSE(state.dirty());
     EXPECT_NE(state.status.find("brushed steel"), std::string::npos) << state.status;
-    undo(state);   // the rename is a step of its own
+    undo(state, state, state);   // the rename is a step of its own
     EXPECT_EQ(state.scene.material.name, "terracotta");
 
     // Issue 34: a name alone ("my copper", typed over the dialog's path) went into the working
@@ -1115,7 +1116,7 @@ TEST_F(EditorStateTest, SaveAsPresetMakesTheFolderAndNamesTheMaterialAfterTheFil
     fs::create_directories(dir_ / "work");
     fs::current_path(dir_ / "work");
     setenv("HOME", dir_.c_str(), 1);
-    const bool saved = saveAsPreset(state, "my copper");
+    const bool saved = saveAsPreset(state, state, state, state, "my copper");
     setenv("HOME", home.c_str(), 1);
     fs::current_path(working);
     ASSERT_TRUE(saved) << state.error;
@@ -1131,7 +1132,7 @@ TEST_F(EditorStateTest, SaveAsPresetMakesTheFolderAndNamesTheMaterialAfterTheFil
 
     // A folder that cannot be made: said in words, nothing lost.
     std::ofstream(dir_ / "a-file") << "x";
-    EXPECT_FALSE(saveAsPreset(state, dir_ / "a-file" / "presets" / "gold.json"));
+    EXPECT_FALSE(saveAsPreset(state, state, state, state, dir_ / "a-file" / "presets" / "gold.json"));
     EXPECT_NE(state.error.find("Could not save gold.json: "), std::string::npos) << state.error;
     EXPECT_NE(state.error.find("not a folder"), std::string::npos) << state.error;
 }
@@ -1162,10 +1163,10 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
     state.layout.showLobe = false;
     state.screenshotWidth = 3840;
     state.screenshotHeight = 2160;
-    ASSERT_TRUE(saveSettings(state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
+    ASSERT_TRUE(saveSettings(state, state, state, WindowGeometry{900, 600}, dir_ / "settings.json")) << state.error;
     EditorState next;
     WindowGeometry window;
-    loadSettings(next, window, dir_ / "settings.json");
+    loadSettings(next, next, next, window, dir_ / "settings.json");
     EXPECT_EQ(next.uiScaleSetting, 1.5f);
     EXPECT_FALSE(next.showGizmos);
     EXPECT_TRUE(next.showAdvanced);
@@ -1178,15 +1179,15 @@ TEST_F(EditorStateTest, ViewSettingsPersist) {
 // Solo greys out the other lights: soloedOut says which, and the rendered scene agrees.
 TEST_F(EditorStateTest, SoloLeavesTheOtherLightsOut) {
     ASSERT_GE(state.scene.lights.size(), 3u);
-    EXPECT_FALSE(soloedOut(state, 0));
+    EXPECT_FALSE(soloedOut(state, state, 0));
     toggleSolo(state, 1);
-    const Scene rendered = renderedScene(state);
+    const Scene rendered = renderedScene(state, state);
     for (int i = 0; i < int(state.scene.lights.size()); ++i) {
-        EXPECT_EQ(soloedOut(state, i), i != 1) << i;
+        EXPECT_EQ(soloedOut(state, state, i), i != 1) << i;
         EXPECT_EQ(rendered.lights[size_t(i)].enabled, i == 1) << i;
     }
     toggleSolo(state, 1);
-    EXPECT_FALSE(soloedOut(state, 0));
+    EXPECT_FALSE(soloedOut(state, state, 0));
 }
 
 // The lobe plot's scale fits every curve: A's too (a sharp A used to run off a rough B's plot),
@@ -1199,7 +1200,7 @@ TEST_F(EditorStateTest, TheLobePlotFitsAAndBAndHasALegend) {
     state.scene.material.roughness = 0.9f;
     state.scene.material.model = BrdfModelId::Filament;   // another model: the reference drawn too
     state.lobe.thetaInDegrees = 30.0f;
-    const LobePlot plot = lobePlot(state);
+    const LobePlot plot = lobePlot(state, state);
     float aPeak = 0.0f, bPeak = 0.0f;
     std::vector<std::string> legend;
     for (const LobeCurve& curve : plot.curves) {
@@ -1231,7 +1232,7 @@ TEST_F(EditorStateTest, TheThreeDLobePeaksAtTheMirrorDirection) {
     Material rough = state.scene.material;
     rough.roughness = 0.9f;
     state.compareA = rough;
-    const std::vector<Lobe3d> lobes = lobes3d(state);
+    const std::vector<Lobe3d> lobes = lobes3d(state, state);
     ASSERT_EQ(lobes.size(), 2u);
     EXPECT_EQ(lobes[0].maxValue, lobes[1].maxValue);
     ASSERT_EQ(lobes[0].points.size(), size_t(kLobeRings * kLobeMeridians));
@@ -1250,7 +1251,7 @@ TEST_F(EditorStateTest, TheThreeDLobePeaksAtTheMirrorDirection) {
 TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
     auto legend = [&] {
         std::vector<std::string> entries;
-        for (const LobeCurve& curve : lobePlot(state).curves) {
+        for (const LobeCurve& curve : lobePlot(state, state).curves) {
             if (!curve.legend.empty()) {
                 entries.push_back(curve.legend);
             }
@@ -1265,7 +1266,7 @@ TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
     state.scene.material.model = BrdfModelId::Hammon;
     EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "reference model", "B diffuse", "B specular", "B total"}));
     state.scene.material.model = BrdfModelId::Reference;   // the reference itself: nothing to compare
-    EXPECT_EQ(lobePlot(state).curves.size(), 4u);
+    EXPECT_EQ(lobePlot(state, state).curves.size(), 4u);
 }
 
 // Issue 34: a grey material's legend said "total, R G B" in red, the red curve's colour, while
@@ -1277,14 +1278,14 @@ TEST_F(EditorStateTest, TheLobeLegendOfAGreyMaterialIsNotRed) {
         return r == g && g == b;
     };
     state.scene.material.baseColor = glm::vec3(0.5f);
-    LobePlot plot = lobePlot(state);
+    LobePlot plot = lobePlot(state, state);
     ASSERT_EQ(plot.curves.size(), 2u) << "one total and one specular curve: R, G and B coincide";
     EXPECT_EQ(plot.curves[0].legend, "total (thick)");
     for (const LobeCurve& curve : plot.curves) {
         EXPECT_TRUE(neutral(curve.color) && neutral(curve.legendColor)) << curve.legend;
     }
     state.scene.material.baseColor = {0.8f, 0.3f, 0.1f};
-    plot = lobePlot(state);
+    plot = lobePlot(state, state);
     ASSERT_EQ(plot.curves.size(), 6u);
     EXPECT_FALSE(neutral(plot.curves[0].color)) << "a coloured material's channels are drawn apart";
     for (const LobeCurve& curve : plot.curves) {
@@ -1341,16 +1342,17 @@ TEST_F(EditorStateTest, ShowingAFolderRunsTheOpenerAndSaysWhenItFails) {
     std::ofstream(script) << "#!/bin/sh\necho \"$1\" > '" << (dir_ / "opened.txt").string() << "'\n";
     fs::permissions(script, fs::perms::owner_all);
     fs::create_directories(dir_ / "shots");
-    EXPECT_EQ(showFolder(dir_ / "shots", script.string()), "");
+    RunningOpeners running;
+    EXPECT_EQ(showFolder(dir_ / "shots", script.string(), running), "");
     std::ifstream opened(dir_ / "opened.txt");
     std::string line;
     std::getline(opened, line);
     EXPECT_EQ(line, (dir_ / "shots").string());
 
-    const std::string missing = showFolder(dir_ / "shots", "patina-no-such-opener");
+    const std::string missing = showFolder(dir_ / "shots", "patina-no-such-opener", running);
     EXPECT_NE(missing.find("is not installed"), std::string::npos) << missing;
     EXPECT_NE(missing.find((dir_ / "shots").string()), std::string::npos) << missing;
-    const std::string failing = showFolder(dir_ / "shots", "false");
+    const std::string failing = showFolder(dir_ / "shots", "false", running);
     EXPECT_NE(failing.find("failed"), std::string::npos) << failing;
 }
 
@@ -1407,31 +1409,31 @@ TEST_F(EditorStateTest, AnEnvironmentFileIsPreparedOffTheUiThreadAndThenApplied)
     const std::shared_ptr<const Environment> before = state.environment;
     const std::vector<Light> lights = state.scene.lights;
     const std::string sky = writeHdr(dir_ / "sky.hdr", 90).string();
-    ASSERT_TRUE(setEnvironmentSource(state, sky));
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, sky));
     // Nothing changes until it is ready: the picture keeps the environment it had.
     ASSERT_TRUE(state.environmentLoad);
     EXPECT_EQ(state.scene.lights, lights);
     EXPECT_EQ(state.environment, before);
-    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state, state, state, state, true)) << state.error;
     EXPECT_FALSE(state.environmentLoad);
     ASSERT_TRUE(state.environment);
     EXPECT_EQ(state.environment->source, sky);
     EXPECT_EQ(editedEnvironment(state)->source, sky);
-    undo(state);   // one step back to the studio
+    undo(state, state, state);   // one step back to the studio
     EXPECT_EQ(state.scene.lights, lights);
 }
 
 TEST_F(EditorStateTest, ABadEnvironmentFileSaysWhyWhenItFailsAndChangesNothing) {
     const std::vector<Light> lights = state.scene.lights;
     std::ofstream(dir_ / "broken.hdr") << "#?RADIANCE\nnot an image";
-    ASSERT_TRUE(setEnvironmentSource(state, (dir_ / "broken.hdr").string()));
-    EXPECT_FALSE(finishEnvironmentLoad(state, true));
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, (dir_ / "broken.hdr").string()));
+    EXPECT_FALSE(finishEnvironmentLoad(state, state, state, state, true));
     EXPECT_NE(state.error.find("broken.hdr"), std::string::npos) << state.error;
     EXPECT_EQ(state.scene.lights, lights);
     // A newer choice replaces one under way; a cancelled one is never applied.
-    ASSERT_TRUE(setEnvironmentSource(state, writeHdr(dir_ / "a.hdr", 10).string()));
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, writeHdr(dir_ / "a.hdr", 10).string()));
     state.environmentLoad.reset();
-    EXPECT_FALSE(finishEnvironmentLoad(state, true));
+    EXPECT_FALSE(finishEnvironmentLoad(state, state, state, state, true));
     EXPECT_EQ(state.scene.lights, lights);
 }
 
@@ -1452,7 +1454,7 @@ TEST_F(EditorStateTest, APresetIsATemplateNeverSavedOverAndAsksNothing) {
     requestOpen(state, preset);
     EXPECT_FALSE(state.pendingOpen.has_value()) << "the tweak is one undo away";
     EXPECT_EQ(state.scene.material.roughness, 0.3f);
-    undo(state);
+    undo(state, state, state);
     EXPECT_EQ(state.scene.material.roughness, 0.9f);
     EXPECT_EQ(readFileBytes(preset), presetBytes);
     // A material file elsewhere is a document of its own.
@@ -1470,11 +1472,11 @@ TEST_F(EditorStateTest, AnEnvironmentKeepsTheNameItWasGivenAndNotesReplacedPixel
     ASSERT_NE(environment, nullptr);
     environment->name = "my key HDRI";
     commitEdits(state);
-    ASSERT_TRUE(setEnvironmentSource(state, "builtin:white"));
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, "builtin:white"));
     EXPECT_EQ(editedEnvironment(state)->name, "my key HDRI");
     editedEnvironment(state)->name = "white";   // named after its image: follows the image
     commitEdits(state);
-    ASSERT_TRUE(setEnvironmentSource(state, "builtin:studio"));
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, "builtin:studio"));
     EXPECT_EQ(editedEnvironment(state)->name, "studio");
     // Real HDRIs hold a few slightly negative pixels (Blender's sunset.exr 5): a note in the
     // status line, not an error box over the toolbar.
@@ -1482,8 +1484,8 @@ TEST_F(EditorStateTest, AnEnvironmentKeepsTheNameItWasGivenAndNotesReplacedPixel
     if (!fs::exists(sunset)) {
         GTEST_SKIP() << sunset << " is not installed (blender-data)";
     }
-    ASSERT_TRUE(setEnvironmentSource(state, sunset.string()));
-    ASSERT_TRUE(finishEnvironmentLoad(state, true)) << state.error;
+    ASSERT_TRUE(setEnvironmentSource(state, state, state, state, sunset.string()));
+    ASSERT_TRUE(finishEnvironmentLoad(state, state, state, state, true)) << state.error;
     EXPECT_NE(state.status.find("were NaN, infinite or negative"), std::string::npos) << state.status;
     EXPECT_TRUE(state.error.empty()) << state.error;
 }
@@ -1545,15 +1547,15 @@ TEST_F(EditorStateTest, PresetsAreRenamedDeletedAndSearched) {
 TEST_F(EditorStateTest, RenamingTheDocumentsPresetTakesTheDocumentAlong) {
     state.presetFolders = {dir_};
     state.userPresetFolder = dir_;
-    ASSERT_TRUE(saveAsPreset(state, dir_ / "clay.json"));
+    ASSERT_TRUE(saveAsPreset(state, state, state, state, dir_ / "clay.json"));
     writeMaterial("brick", 0.9f);
     state.presets.renaming = dir_ / "clay.json";
     state.presets.newName = "brick";
-    confirmPresetRename(state);
+    confirmPresetRename(state, state);
     EXPECT_NE(state.presets.problem.find("already there"), std::string::npos);
     EXPECT_EQ(state.presets.renaming, dir_ / "clay.json") << "the prompt stays";
     state.presets.newName = " warm clay ";
-    confirmPresetRename(state);
+    confirmPresetRename(state, state);
     EXPECT_TRUE(state.presets.renaming.empty());
     EXPECT_TRUE(state.presets.problem.empty());
     EXPECT_EQ(state.materialPath, dir_ / "warm clay.json");
@@ -1562,7 +1564,7 @@ TEST_F(EditorStateTest, RenamingTheDocumentsPresetTakesTheDocumentAlong) {
     EXPECT_EQ(state.status, "Renamed the preset clay to warm clay");
 
     state.presets.deleting = dir_ / "warm clay.json";
-    confirmPresetDelete(state);
+    confirmPresetDelete(state, state);
     EXPECT_TRUE(state.presets.deleting.empty());
     EXPECT_TRUE(state.materialPath.empty()) << "its file is gone";
     EXPECT_NE(state.status.find("warm clay.json.bak"), std::string::npos) << state.status;

@@ -14,21 +14,21 @@
 #include "image/compositing.h"
 #include "scene/camera_control.h"
 #include "scene/camera_placement.h"
-#include "camera_choice.h"
+#include "state/camera_choice.h"
 #include "gltf_builder.h"
 #include "image/image.h"
 #include "gltf/export.h"
 #include "gltf/model_export.h"
-#include "keys.h"
+#include "window/keys.h"
 #include "panels/file_dialog.h"
 #include "panels/panels.h"
-#include "preview_scene.h"
+#include "views/preview_scene.h"
 #include "image/png_text.h"
 #include "scratch_test.h"
 #include "io/scene_file.h"
 #include "test_support.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 #include "files/file_bytes.h"
 
 namespace patina::editor {
@@ -40,7 +40,6 @@ protected:
         ScratchTest::SetUp();
         test::glContext();
         ImGui::CreateContext();
-        forgetRecordedItems();   // the last test's context's
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.DisplaySize = ImVec2(1280, 800);
@@ -240,7 +239,7 @@ TEST_F(EditorUi, SetAThenSplitShowsBothMaterials) {
     EXPECT_GT(int(a.rgba[size_t(centre)]), int(a.rgba[size_t(centre) + 2]));   // A is terracotta
     EXPECT_GT(int(b.rgba[size_t(centre) + 2]), int(b.rgba[size_t(centre)]));   // B is blue
     const std::filesystem::path exported = dir_ / "ab.png";
-    ASSERT_TRUE(services_->exportComparison(state_, exported).has_value()) << state_.error;
+    ASSERT_TRUE(services_->exportComparison(state_, state_, state_, exported).has_value()) << state_.error;
     EXPECT_EQ(decodePng(readFileBytes(exported)).width % 2, 0);
 }
 
@@ -275,7 +274,7 @@ TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAskingAndNothingEditsBehindTh
     EXPECT_FALSE(state_.pendingNew) << "Ctrl+N behind the prompt";
     click(centreOf("Discard changes"));
     EXPECT_EQ(state_.scene.material.name, "other");
-    EXPECT_FALSE(promptOpen(state_));
+    EXPECT_FALSE(promptOpen(state_, state_));
 }
 
 TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
@@ -444,9 +443,9 @@ TEST_F(EditorUi, APresetOnAPartIsNamedInTheComparisonsLabels) {
     EXPECT_EQ(items.at("label A").tooltip.rfind("A: left (gold)", 0), 0u) << items.at("label A").tooltip;
     EXPECT_EQ(items.at("label B").tooltip.rfind("B: left (silver)", 0), 0u) << items.at("label B").tooltip;
     // Tuned by hand, it is no longer the preset: the part's name alone.
-    Material tuned = editedMaterial(state_);
+    Material tuned = editedMaterial(state_, state_);
     tuned.roughness = 0.61f;
-    setEditedMaterial(state_, state_.scene, tuned);
+    setEditedMaterial(state_, state_, state_.scene, tuned);
     frames(2);
     EXPECT_EQ(label("label B"), "B: left");
 }
@@ -505,8 +504,8 @@ TEST_F(EditorUi, AMapIsReplacedByAnImageFileAndRestored) {
     EXPECT_LT(differingPixels(replaced, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
 
     // Saved with the scene, and drawn again when it is opened.
-    ASSERT_TRUE(saveScene(state_, path("replaced.json"))) << state_.error;
-    newDocument(state_);
+    ASSERT_TRUE(saveScene(state_, state_, state_, path("replaced.json"))) << state_.error;
+    newDocument(state_, state_, state_, state_);
     ASSERT_TRUE(openFile(state_, path("replaced.json"))) << state_.error;
     frames(2);
     EXPECT_EQ(mapReplacement(state_.scene, 0, "baseColorTexture"), path("red.png").string());
@@ -521,7 +520,7 @@ TEST_F(EditorUi, AMapIsReplacedByAnImageFileAndRestored) {
     // Not an image: nothing changes, and the error says which file and why.
     write("notes.png", "not a picture");
     const EditSnapshot before = state_.snapshot();
-    EXPECT_FALSE(replaceMap(state_, 0, "baseColorTexture", path("notes.png")));
+    EXPECT_FALSE(replaceMap(state_, *state_.assets, state_, 0, "baseColorTexture", path("notes.png")));
     EXPECT_NE(state_.error.find("notes.png: the image is neither PNG nor JPEG"), std::string::npos) << state_.error;
     EXPECT_EQ(state_.snapshot(), before);
     frames(1);
@@ -1044,7 +1043,7 @@ TEST_F(EditorUi, ThePixelReadOutListsTheLightsInThePanelsOrder) {
     point.name = "then a point";
     point.position = {-0.5f, 0.5f, 2.0f};
     state_.scene.lights = {sphere, point};
-    const Scene shown = renderedScene(state_);
+    const Scene shown = renderedScene(state_, state_);
     const PixelStory* story = services_->pixelStory(preparedScene(state_, shown), 64, 64, 32, 32);
     ASSERT_NE(story, nullptr);
     std::vector<std::string> names;
@@ -1149,14 +1148,14 @@ TEST_F(EditorUi, AnEnvironmentFileShowsItsProgressThenItsPanorama) {
     // a cache of its own so that it is prepared, not read back from an earlier run.
     setenv("PATINA_CACHE_DIR", dir_.c_str(), 1);
     test::writeFlatHdr(path("big.hdr"), 1024, 512, 100);
-    ASSERT_TRUE(setEnvironmentSource(state_, path("big.hdr").string()));
+    ASSERT_TRUE(setEnvironmentSource(state_, state_, state_, state_, path("big.hdr").string()));
     frames(1);
     ASSERT_TRUE(state_.environmentLoad);
     {
         EXPECT_EQ(itemsOfLastFrame().count("Environment progress"), 1u);
         EXPECT_NE(state_.environment ? state_.environment->source : "", path("big.hdr").string());
     }
-    ASSERT_TRUE(finishEnvironmentLoad(state_, true)) << state_.error;
+    ASSERT_TRUE(finishEnvironmentLoad(state_, state_, state_, state_, true)) << state_.error;
     unsetenv("PATINA_CACHE_DIR");
     frames(2);
     ASSERT_TRUE(state_.environment);
@@ -1825,7 +1824,7 @@ TEST_F(EditorUi, BothComparisonViewsNameTheirMaterials) {
 
     // A Split screenshot's labels are as wide as the names, not a letter each.
     state_.compareView = CompareView::Split;
-    const LdrImage split = services_->shownImage(state_, 600, 400);
+    const LdrImage split = services_->shownImage(state_, state_, 600, 400);
     const int scale = captionScale(600);
     int rightmost = 0;
     // The caption's ink: its colour, or nearly (its stems are anti-aliased).
@@ -1876,15 +1875,15 @@ TEST_F(EditorUi, TheToneMapListOffersEveryViewTransform) {
 TEST_F(EditorUi, TheCameraListTakesTheModelsCamerasAndTheFieldOfViewDrags) {
     test::GltfBuilder model = test::twoQuadsAndTheirCameras();
     model.writeGltf(path("quads.gltf"));
-    EXPECT_EQ(currentCameraName(state_), "the scene's");
+    EXPECT_EQ(currentCameraName(state_, state_), "the scene's");
     orbitCamera(state_.scene.camera, 1.2f, 0.4f);   // from the side and above
-    EXPECT_EQ(currentCameraName(state_), "free");
+    EXPECT_EQ(currentCameraName(state_, state_), "free");
     ASSERT_TRUE(openFile(state_, path("quads.gltf"))) << state_.error;
     frames(2);
     Camera expected = state_.scene.camera;
     frameAsModelViewer(expected, meshBounds(state_));
     EXPECT_EQ(state_.scene.camera, expected) << "framed from the front";
-    EXPECT_EQ(currentCameraName(state_), kFrontCamera);
+    EXPECT_EQ(currentCameraName(state_, state_), kFrontCamera);
     const LdrImage framed = services_->viewportPixels(EditorServices::Shown::Edited);
 
     click(centreOf("Camera"));
@@ -1896,7 +1895,7 @@ TEST_F(EditorUi, TheCameraListTakesTheModelsCamerasAndTheFieldOfViewDrags) {
     expected = state_.scene.camera;
     placeModelCamera(expected, state_.model->cameras[1], meshBounds(state_));
     EXPECT_EQ(state_.scene.camera, expected);
-    EXPECT_EQ(currentCameraName(state_), "right");
+    EXPECT_EQ(currentCameraName(state_, state_), "right");
     EXPECT_EQ(state_.status, "Camera: right");
     frames(2);
     const LdrImage right = services_->viewportPixels(EditorServices::Shown::Edited);
@@ -1908,7 +1907,7 @@ TEST_F(EditorUi, TheCameraListTakesTheModelsCamerasAndTheFieldOfViewDrags) {
     const ImVec2 from = centreOf("FOV");
     drag(from, ImVec2(from.x + 50.0f, from.y));
     EXPECT_NEAR(state_.scene.camera.fovYDegrees, fov + 10.0f, 2.0f) << "0.2 degrees a pixel";
-    EXPECT_EQ(currentCameraName(state_), "free");
+    EXPECT_EQ(currentCameraName(state_, state_), "free");
     frames(2);
     EXPECT_GT(differingPixels(right, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
 

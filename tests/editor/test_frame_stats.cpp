@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frame_stats.h"
+#include "views/frame_stats.h"
 
 namespace patina::editor {
 namespace {

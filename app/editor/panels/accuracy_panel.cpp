@@ -1,8 +1,8 @@
 #include <imgui.h>
 
 #include "accuracy/accuracy.h"
-#include "panels.h"
-#include "widgets.h"
+#include "panels/panels.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
@@ -22,8 +22,9 @@ AccuracyNumbers accuracyOf(const Material& material) {
     return {physicalError(material.model, set), cpuImplementationError(material.model, set)};
 }
 
-void drawAccuracyPanel(EditorState& state, EditorServices& services) {
-    const Material material = editedMaterial(state);
+void drawAccuracyPanel(const Document& document, const Interaction& interaction, const Preferences& preferences,
+                       EditorServices& services) {
+    const Material material = editedMaterial(document, interaction);
     const BrdfModelInfo& model = brdfModel(material.model);
     ImGui::Text("Model: %s", std::string(model.name).c_str());
     ImGui::SameLine();
@@ -36,13 +37,13 @@ void drawAccuracyPanel(EditorState& state, EditorServices& services) {
                 numbers.implementation.maxRelative);
     ImGui::TextDisabled("The lobe panel draws the reference lobe in cyan.");
     ImGui::Separator();
-    if (const Texture* chart = services.benchChart(state.benchFolder / "speed_accuracy.png")) {
+    if (const Texture* chart = services.benchChart(preferences.benchFolder / "speed_accuracy.png")) {
         const float width = ImGui::GetContentRegionAvail().x;
         const float height = width * float(chart->height()) / float(chart->width());
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(chart->id())), ImVec2(width, height));
     } else {
         ImGui::TextWrapped("No bench chart in %s yet: run `patina bench --out-dir %s`.",
-                           state.benchFolder.string().c_str(), state.benchFolder.string().c_str());
+                           preferences.benchFolder.string().c_str(), preferences.benchFolder.string().c_str());
     }
 }
 

@@ -1,34 +1,34 @@
 #include <imgui.h>
 
-#include "file_dialog.h"
-#include "menu_actions.h"
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "panels/file_dialog.h"
+#include "panels/menu_actions.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
 namespace {
 // The last session's work, offered before anything else.
-void drawRestorePrompt(EditorState& state) {
-    if (state.recoverable && !ImGui::IsPopupOpen("Restore unsaved work?")) {
+void drawRestorePrompt(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts) {
+    if (jobs.recoverable && !ImGui::IsPopupOpen("Restore unsaved work?")) {
         ImGui::OpenPopup("Restore unsaved work?");
     }
     if (ImGui::BeginPopupModal("Restore unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        if (!state.recoverable) {
+        if (!jobs.recoverable) {
             ImGui::CloseCurrentPopup();
         } else {
             ImGui::Text("Patina did not close normally last time. Its working scene was kept%s%s.",
-                        state.recoverable->savedAt.empty() ? "" : " at ", state.recoverable->savedAt.c_str());
-            ImGui::TextUnformatted(recoverableSummary(state.recoverable->scene).c_str());
+                        jobs.recoverable->savedAt.empty() ? "" : " at ", jobs.recoverable->savedAt.c_str());
+            ImGui::TextUnformatted(recoverableSummary(jobs.recoverable->scene).c_str());
             if (ImGui::Button("Restore")) {
-                restoreRecoverable(state);
+                restoreRecoverable(document, interaction, jobs, prompts);
                 ImGui::CloseCurrentPopup();
             }
             recordItem("Restore");
             ImGui::SameLine();
             if (ImGui::Button("Discard")) {
-                discardRecoverable(state);
+                discardRecoverable(jobs);
                 ImGui::CloseCurrentPopup();
             }
             recordItem("Discard");
@@ -42,7 +42,7 @@ void proceed(EditorState& state) {
     if (state.pendingOpen) {
         answerOpen(state, true);
     } else if (state.pendingNew) {
-        newDocument(state);
+        newDocument(state, state, state, state);
     } else {
         state.quitConfirmed = true;
     }
@@ -52,17 +52,17 @@ void proceed(EditorState& state) {
 
 // Whether the prompt's Save writes the scene: when more than the material changed, a scene file
 // is open, or a model's document has no file yet (Ctrl+S's rule, menu_actions.h save).
-bool promptSavesScene(const EditorState& state) {
-    return state.sceneChanged() || !state.scenePath.empty() ||
-           (state.materialPath.empty() && !state.scene.meshFile.empty());
+bool promptSavesScene(const Document& document) {
+    return document.sceneChanged() || !document.scenePath.empty() ||
+           (document.materialPath.empty() && !document.scene.meshFile.empty());
 }
 
 // The prompt's Save: the scene or the material; a file first if it has none.
-void saveForPrompt(EditorState& state) {
-    if (promptSavesScene(state)) {
-        saveSceneDocument(state);
+void saveForPrompt(Document& document, Preferences& preferences, Prompts& prompts) {
+    if (promptSavesScene(document)) {
+        saveSceneDocument(document, preferences, prompts);
     } else {
-        save(state);
+        save(document, preferences, prompts);
     }
 }
 
@@ -70,7 +70,7 @@ void saveForPrompt(EditorState& state) {
 // open, the open or quit waits for it, and goes on once nothing is unsaved.
 void drawUnsavedPrompt(EditorState& state) {
     const bool asking = state.pendingOpen.has_value() || state.pendingNew || state.pendingQuit;
-    if (asking && state.pathDialog == EditorState::PathDialog::None && !ImGui::IsPopupOpen("Unsaved changes")) {
+    if (asking && state.pathDialog == Prompts::PathDialog::None && !ImGui::IsPopupOpen("Unsaved changes")) {
         if (!state.dirty()) {
             proceed(state);
         } else {
@@ -93,7 +93,7 @@ void drawUnsavedPrompt(EditorState& state) {
                                              : "Save writes the material.");
     if (ImGui::Button("Save")) {
         ImGui::CloseCurrentPopup();
-        saveForPrompt(state);
+        saveForPrompt(state, state, state);
         if (!state.dirty()) {
             proceed(state);
         }
@@ -118,7 +118,7 @@ void drawUnsavedPrompt(EditorState& state) {
 
 void drawDialogs(EditorState& state, EditorServices& services) {
     drawPathDialog(state, services);
-    drawRestorePrompt(state);
+    drawRestorePrompt(state, state, state, state);
     drawUnsavedPrompt(state);
     drawShortcutsWindow(state);
 }

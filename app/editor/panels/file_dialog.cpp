@@ -1,4 +1,4 @@
-#include "file_dialog.h"
+#include "panels/file_dialog.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,10 +7,10 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "shown_path.h"
-#include "text_match.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "storage/shown_path.h"
+#include "views/text_match.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
@@ -29,14 +29,16 @@ std::pair<std::filesystem::path, std::string> splitTyped(const std::string& type
 // Runs the action the dialog was opened for on `path`.
 void confirm(EditorState& state, EditorServices& services, const std::filesystem::path& path) {
     switch (state.pathDialog) {
-    case EditorState::PathDialog::Open: requestOpen(state, path); break;
-    case EditorState::PathDialog::SaveAs: saveMaterial(state, path); break;
-    case EditorState::PathDialog::SaveSceneAs: saveScene(state, path); break;
-    case EditorState::PathDialog::SavePreset: saveAsPreset(state, path); break;
-    case EditorState::PathDialog::ExportComparison: services.exportComparison(state, path); break;
-    case EditorState::PathDialog::ExportGltf: exportGltfFile(state, path); break;
-    case EditorState::PathDialog::ReplaceMap: replaceMap(state, state.replacedMaterial, state.replacedMap, path); break;
-    case EditorState::PathDialog::None: break;
+    case Prompts::PathDialog::Open: requestOpen(state, path); break;
+    case Prompts::PathDialog::SaveAs: saveMaterial(state, state, state, path); break;
+    case Prompts::PathDialog::SaveSceneAs: saveScene(state, state, state, path); break;
+    case Prompts::PathDialog::SavePreset: saveAsPreset(state, state, state, state, path); break;
+    case Prompts::PathDialog::ExportComparison: services.exportComparison(state, state, state, path); break;
+    case Prompts::PathDialog::ExportGltf: exportGltfFile(state, state, path); break;
+    case Prompts::PathDialog::ReplaceMap:
+        replaceMap(state, *state.assets, state, state.replacedMaterial, state.replacedMap, path);
+        break;
+    case Prompts::PathDialog::None: break;
     }
 }
 
@@ -44,19 +46,19 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
 // in the hidden frame a dialog's first opening sizes itself in) were lost: they are the path's
 // start, replacing the path offered as typing over its selection does. Returns whether any were
 // taken, so that the field's cursor goes after them when it takes the keys.
-bool takeEarlyKeys(EditorState& state) {
+bool takeEarlyKeys(Prompts& prompts) {
     ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
-    if (state.pathFieldTaken || queue.empty()) {
+    if (prompts.pathFieldTaken || queue.empty()) {
         return false;
     }
-    if (!state.pathTypedEarly) {
-        state.pathDialogText.clear();
-        state.pathTypedEarly = true;
+    if (!prompts.pathTypedEarly) {
+        prompts.pathDialogText.clear();
+        prompts.pathTypedEarly = true;
     }
     for (ImWchar c : queue) {
         if (c >= 32 && c != 127) {
             char utf8[5];
-            state.pathDialogText += ImTextCharToUtf8(utf8, c);
+            prompts.pathDialogText += ImTextCharToUtf8(utf8, c);
         }
     }
     queue.resize(0);
@@ -66,22 +68,23 @@ bool takeEarlyKeys(EditorState& state) {
 // The folder's entries under its path, from the home folder where it is inside it (a relative
 // one is in `base`, or the editor's working folder): a click on a folder enters it, on a file
 // takes its path.
-void drawListing(EditorState& state, const std::filesystem::path& base, ImVec2 size) {
+void drawListing(Prompts& prompts, const std::filesystem::path& base, ImVec2 size) {
     std::error_code error;
-    const std::filesystem::path folder = typedFolder(state.pathDialogText, base);
+    const std::filesystem::path folder = typedFolder(prompts.pathDialogText, base);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + size.x);
     ImGui::TextDisabled("In %s", shownPath(folder).c_str());
     ImGui::PopTextWrapPos();
     recordItem("path:folder", "The folder listed below, where a relative path is");
     ImGui::BeginChild("listing", size, true);
     if (ImGui::Selectable("../")) {
-        state.pathDialogText = (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
+        prompts.pathDialogText =
+            (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
     }
     recordItem("path:up", "The folder above");
-    for (const ListedEntry& entry : listForDialog(state.pathDialogText, state.pathDialog, base)) {
+    for (const ListedEntry& entry : listForDialog(prompts.pathDialogText, prompts.pathDialog, base)) {
         const std::string name = entry.path.filename().string() + (entry.folder ? "/" : "");
         if (ImGui::Selectable(name.c_str())) {
-            state.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
+            prompts.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
         }
         recordItem("path:entry " + name, entry.folder ? "Open this folder" : "Choose this file");
     }
@@ -89,7 +92,7 @@ void drawListing(EditorState& state, const std::filesystem::path& base, ImVec2 s
 }
 }  // namespace
 
-const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
+const PathDialogKind& pathDialogKind(Prompts::PathDialog dialog) {
     static const PathDialogKind open{
         "Open", "Open a material or scene (.json), a Patina screenshot (.png), a glTF model (.gltf, .glb) "
                 "or an environment image (.hdr, .exr):",
@@ -116,20 +119,20 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
         "is saved with the scene and exported with the model:",
         "Replace", {".png", ".jpg", ".jpeg"}, true};
     switch (dialog) {
-    case EditorState::PathDialog::ReplaceMap: return replaceMap;
-    case EditorState::PathDialog::ExportGltf: return exportGltf;
-    case EditorState::PathDialog::SaveAs: return saveMaterial;
-    case EditorState::PathDialog::SaveSceneAs: return saveScene;
-    case EditorState::PathDialog::SavePreset: return savePreset;
-    case EditorState::PathDialog::ExportComparison: return exportComparison;
-    case EditorState::PathDialog::Open:
-    case EditorState::PathDialog::None: break;
+    case Prompts::PathDialog::ReplaceMap: return replaceMap;
+    case Prompts::PathDialog::ExportGltf: return exportGltf;
+    case Prompts::PathDialog::SaveAs: return saveMaterial;
+    case Prompts::PathDialog::SaveSceneAs: return saveScene;
+    case Prompts::PathDialog::SavePreset: return savePreset;
+    case Prompts::PathDialog::ExportComparison: return exportComparison;
+    case Prompts::PathDialog::Open:
+    case Prompts::PathDialog::None: break;
     }
     return open;
 }
 
-std::filesystem::path relativeBase(const EditorState& state, EditorState::PathDialog dialog) {
-    return dialog == EditorState::PathDialog::SavePreset ? state.userPresetFolder : std::filesystem::path();
+std::filesystem::path relativeBase(const Preferences& preferences, Prompts::PathDialog dialog) {
+    return dialog == Prompts::PathDialog::SavePreset ? preferences.userPresetFolder : std::filesystem::path();
 }
 
 std::filesystem::path typedFolder(const std::string& typed, const std::filesystem::path& base) {
@@ -137,7 +140,7 @@ std::filesystem::path typedFolder(const std::string& typed, const std::filesyste
     return base.empty() || folder.is_absolute() ? folder : base / folder;
 }
 
-std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog,
+std::vector<ListedEntry> listForDialog(const std::string& typed, Prompts::PathDialog dialog,
                                        const std::filesystem::path& base) {
     const std::filesystem::path folder = typedFolder(typed, base);
     const std::string name = splitTyped(typed).second;
@@ -172,22 +175,20 @@ bool enterFolder(std::string* typed, const std::filesystem::path& base) {
     return true;
 }
 
-void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial) {
-    state.pathDialog = kind;
-    state.pathDialogText = initial.string();
-    state.pathFieldTaken = state.pathTypedEarly = false;
+void startPathDialog(Prompts& prompts, Prompts::PathDialog kind, const std::filesystem::path& initial) {
+    prompts.pathDialog = kind;
+    prompts.pathDialogText = initial.string();
+    prompts.pathFieldTaken = prompts.pathTypedEarly = false;
 }
 
 void drawPathDialog(EditorState& state, EditorServices& services) {
     const PathDialogKind& kind = pathDialogKind(state.pathDialog);
     // One popup whatever the action ("###path"), titled by it.
     const std::string title = std::string(kind.title) + "###path";
-    // Each opening's path field is a new widget: ImGui keeps a field's cursor and selection by
-    // its ID, and the last opening's cursor, inside the new text, took what was typed there.
-    static int openings = 0;
-    if (state.pathDialog != EditorState::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
+    // Each opening's path field is a new widget (Prompts::pathDialogOpenings).
+    if (state.pathDialog != Prompts::PathDialog::None && !ImGui::IsPopupOpen("###path")) {
         ImGui::OpenPopup(title.c_str());
-        ++openings;
+        ++state.pathDialogOpenings;
     }
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float width = std::min(px(560), display.x - px(40));
@@ -204,8 +205,7 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     }
     // Written as typed, so the list follows; Enter lets go of the field (single-line fields do).
     // After Enter on a folder the field takes the keys again, its cursor after the new '/'.
-    static bool cursorToEnd = false;
-    cursorToEnd = takeEarlyKeys(state) || cursorToEnd;
+    state.pathCursorToEnd = takeEarlyKeys(state) || state.pathCursorToEnd;
     char buffer[1024];
     std::snprintf(buffer, sizeof buffer, "%s", state.pathDialogText.c_str());
     const auto moveCursor = [](ImGuiInputTextCallbackData* data) {
@@ -216,8 +216,9 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
         }
         return 0;
     };
-    ImGui::PushID(openings);
-    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor, &cursorToEnd)) {
+    ImGui::PushID(state.pathDialogOpenings);
+    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor,
+                         &state.pathCursorToEnd)) {
         state.pathDialogText = buffer;
     }
     ImGui::PopID();
@@ -232,19 +233,19 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     if (entered && enterFolder(&state.pathDialogText, base)) {
         entered = false;   // into the folder, the dialog stays
         ImGui::SetKeyboardFocusHere(-1);
-        cursorToEnd = true;
+        state.pathCursorToEnd = true;
     }
     drawListing(state, base, ImVec2(width, std::min(px(240), display.y * 0.4f)));
     const bool confirmed = ImGui::Button(kind.verb);
     recordItem("path:confirm", kind.prompt);
     if (confirmed || entered) {
         confirm(state, services, state.pathDialogText);
-        state.pathDialog = EditorState::PathDialog::None;
+        state.pathDialog = Prompts::PathDialog::None;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
-        state.pathDialog = EditorState::PathDialog::None;
+        state.pathDialog = Prompts::PathDialog::None;
         ImGui::CloseCurrentPopup();
     }
     recordItem("path:cancel", "Close without doing anything (Escape)");

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "editor_services.h"
-#include "editor_state.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
 
 namespace patina::editor {
 
@@ -20,7 +20,7 @@ struct PathDialogKind {
     // matches nothing, and the folder it goes into stays listed.
     bool filterByName = false;
 };
-const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog);
+const PathDialogKind& pathDialogKind(Prompts::PathDialog dialog);
 
 struct ListedEntry {
     std::filesystem::path path;
@@ -28,20 +28,21 @@ struct ListedEntry {
 };
 // Where a relative path typed in `dialog` is: the user's presets folder for Save as preset (a
 // name alone goes there, as saveAsPreset takes it), else the working folder (empty).
-std::filesystem::path relativeBase(const EditorState& state, EditorState::PathDialog dialog);
+std::filesystem::path relativeBase(const Preferences& preferences, Prompts::PathDialog dialog);
 // The folder `typed` points into (the text up to its last '/', a relative one inside `base`).
 std::filesystem::path typedFolder(const std::string& typed, const std::filesystem::path& base = {});
 // That folder's entries, folders first then files of `dialog`'s types; for Open, each whose
 // name contains what is typed after that '/' (any case).
-std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog,
+std::vector<ListedEntry> listForDialog(const std::string& typed, Prompts::PathDialog dialog,
                                        const std::filesystem::path& base = {});
 
 // Enter in the path field: a folder (a relative one inside `base`) is entered (the text becomes
 // "folder/", and true is returned); anything else is to be confirmed (false).
 bool enterFolder(std::string* typed, const std::filesystem::path& base = {});
 
-void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial);
-// The dialog itself, while state.pathDialog is not None.
+void startPathDialog(Prompts& prompts, Prompts::PathDialog kind, const std::filesystem::path& initial);
+// The dialog itself, while state.pathDialog is not None; what it is confirmed for runs on the
+// path (open, save, export, replace a map: any part of the state).
 void drawPathDialog(EditorState& state, EditorServices& services);
 
 }  // namespace patina::editor

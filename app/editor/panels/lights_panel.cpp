@@ -10,9 +10,9 @@
 #include <imgui.h>
 
 #include "environment/builtin_environments.h"
-#include "editor_services.h"
-#include "panels.h"
-#include "widgets.h"
+#include "window/editor_services.h"
+#include "panels/panels.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
@@ -74,37 +74,38 @@ std::vector<std::filesystem::path> blenderEnvironments() {
 
 // The environment's own editor: where it comes from, how bright, how turned, and whether it is
 // the background too. A source is loaded before it replaces the current one.
-void editEnvironment(EditorState& state, EditorServices& services, Light& light) {
+void editEnvironment(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                     EditorServices& services, Light& light) {
     if (ImGui::BeginCombo("Source", environmentName(light.source).c_str())) {
         for (std::string_view builtin : builtinEnvironmentNames()) {
             const std::string source = "builtin:" + std::string(builtin);
             if (ImGui::Selectable(("built-in " + std::string(builtin)).c_str(), light.source == source)) {
-                setEnvironmentSource(state, source);
+                setEnvironmentSource(document, interaction, jobs, prompts, source);
             }
         }
         for (const std::filesystem::path& file : blenderEnvironments()) {
             if (ImGui::Selectable(("Blender " + file.stem().string()).c_str(), light.source == file.string())) {
-                setEnvironmentSource(state, file.string());
+                setEnvironmentSource(document, interaction, jobs, prompts, file.string());
             }
         }
         ImGui::EndCombo();
     }
     const std::string sourceTip = light.source + "\nOpen or drop an .hdr or .exr file to light with it";
     recordItem("Environment source", sourceTip.c_str());
-    if (const std::shared_ptr<EnvironmentLoad>& load = state.environmentLoad) {
+    if (const std::shared_ptr<EnvironmentLoad>& load = jobs.environmentLoad) {
         // A file being prepared: the one shown stays until it is done, or for good if cancelled.
         const std::string overlay = "Preparing " + environmentName(load->source());
         ImGui::ProgressBar(load->progress(), ImVec2(-1.0f, 0.0f), overlay.c_str());
         recordItem("Environment progress", "Decoding and prefiltering the image; the picture changes when it is done");
         if (ImGui::Button("Cancel")) {
-            state.environmentLoad.reset();
-            state.status = "Environment left as it was";
+            jobs.environmentLoad.reset();
+            prompts.status = "Environment left as it was";
         }
         recordItem("Environment cancel", "Stop preparing the new environment and keep the current one");
     }
     // What the light shows once loaded (resolveEnvironmentShown); none while it is not.
     const std::shared_ptr<const Environment> shown =
-        state.environment && state.environment->source == light.source ? state.environment : nullptr;
+        document.environment && document.environment->source == light.source ? document.environment : nullptr;
     if (const Texture* panorama = services.environmentThumbnail(shown)) {
         const float width = ImGui::GetContentRegionAvail().x;
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(panorama->id())), ImVec2(width, width * 0.5f));
@@ -114,13 +115,13 @@ void editEnvironment(EditorState& state, EditorServices& services, Light& light)
     }
     ImGui::SliderFloat("Rotation", &light.rotationDegrees, -180.0f, 180.0f, "%.1f deg");
     recordItem("Environment rotation", "Turns the environment about the vertical axis");
-    bool background = state.scene.display.backgroundFromEnvironment;
+    bool background = document.scene.display.backgroundFromEnvironment;
     if (ImGui::Checkbox("Show as background", &background)) {
-        state.scene.display.backgroundFromEnvironment = background;
+        document.scene.display.backgroundFromEnvironment = background;
     }
     recordItem("Environment background", "Show the environment behind the mesh instead of the background colour");
     ImGui::BeginDisabled(!background);
-    ImGui::SliderFloat("Background blur", &state.scene.display.backgroundBlur, 0.0f, 1.0f, "%.2f");
+    ImGui::SliderFloat("Background blur", &document.scene.display.backgroundBlur, 0.0f, 1.0f, "%.2f");
     recordItem("Background blur", "Blurs the environment shown behind the mesh (not the lighting)");
     ImGui::EndDisabled();
 }
@@ -227,7 +228,7 @@ void editLight(Light& light, float intensityScale) {
 }
 
 // The Add buttons, one a light type, wrapping onto more lines in a narrow panel.
-void drawAddButtons(EditorState& state) {
+void drawAddButtons(Document& document, Interaction& interaction, Prompts& prompts) {
     struct AddButton {
         LightType type;
         const char* label;
@@ -245,15 +246,15 @@ void drawAddButtons(EditorState& state) {
             sameLineIfFits(buttonWidth(button.label));
         }
         if (ImGui::Button(button.label)) {
-            addLight(state, button.type);
+            addLight(document, interaction, prompts, button.type);
         }
         recordItem(button.label, button.tooltip);
     }
     sameLineIfFits(buttonWidth("Add environment"));
-    const bool hasEnvironment = editedEnvironment(state) != nullptr;
+    const bool hasEnvironment = editedEnvironment(document) != nullptr;
     ImGui::BeginDisabled(hasEnvironment);   // a scene has one at most
     if (ImGui::Button("Add environment")) {
-        addLight(state, LightType::Environment);
+        addLight(document, interaction, prompts, LightType::Environment);
     }
     ImGui::EndDisabled();
     recordItem("Add environment", hasEnvironment ? "Light from a whole surrounding image (HDR). The scene has one "
@@ -262,31 +263,31 @@ void drawAddButtons(EditorState& state) {
 }
 
 // One row of the list: enabled, the name to select it by, solo.
-void drawLightRow(EditorState& state, int i) {
-    Light& light = state.scene.lights[size_t(i)];
+void drawLightRow(Document& document, Interaction& interaction, int i) {
+    Light& light = document.scene.lights[size_t(i)];
     ImGui::PushID(i);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     // A light solo leaves out is greyed out, still there to pick.
-    const bool faded = soloedOut(state, i);
+    const bool faded = soloedOut(document, interaction, i);
     ImGui::PushStyleVar(ImGuiStyleVar_Alpha, faded ? ImGui::GetStyle().DisabledAlpha : 1.0f);
     const std::string id = "light:" + std::to_string(i);
     ImGui::Checkbox("##enabled", &light.enabled);
     recordItem(id + " enabled", "Whether this light shines");
     ImGui::TableNextColumn();
     const std::string label = std::string(typeIcon(light.type)) + " " + light.name;
-    if (ImGui::Selectable(label.c_str(), state.selectedLight == i)) {
-        state.selectedLight = i;
+    if (ImGui::Selectable(label.c_str(), interaction.selectedLight == i)) {
+        interaction.selectedLight = i;
     }
     recordItem(id, faded ? "Left out by solo; click to edit it" : "Click to edit this light");
     ImGui::PopStyleVar();
     ImGui::TableNextColumn();
-    const bool solo = state.soloLight == i;
+    const bool solo = interaction.soloLight == i;
     if (solo) {
         ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.8f, 0.6f, 0.1f, 1.0f));
     }
     if (ImGui::SmallButton("S")) {
-        toggleSolo(state, i);
+        toggleSolo(interaction, i);
     }
     if (solo) {
         ImGui::PopStyleColor();
@@ -295,40 +296,40 @@ void drawLightRow(EditorState& state, int i) {
     ImGui::PopID();
 }
 
-void drawLightTable(EditorState& state) {
+void drawLightTable(Document& document, Interaction& interaction) {
     if (!ImGui::BeginTable("lights", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH)) {
         return;
     }
     ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed);
     ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
     ImGui::TableSetupColumn("solo", ImGuiTableColumnFlags_WidthFixed);
-    for (int i = 0; i < int(state.scene.lights.size()); ++i) {
-        drawLightRow(state, i);
+    for (int i = 0; i < int(document.scene.lights.size()); ++i) {
+        drawLightRow(document, interaction, i);
     }
     ImGui::EndTable();
 }
 
 // Duplicate, Delete, up and down, on the selected light.
-void drawSelectionButtons(EditorState& state) {
-    const int selected = state.selectedLight;
-    ImGui::BeginDisabled(!state.hasLight(selected));
+void drawSelectionButtons(Document& document, Interaction& interaction, Prompts& prompts) {
+    const int selected = interaction.selectedLight;
+    ImGui::BeginDisabled(!document.hasLight(selected));
     if (ImGui::Button("Duplicate")) {
-        duplicateLight(state, selected);
+        duplicateLight(document, interaction, prompts, selected);
     }
     recordItem("Duplicate light", "A copy of the selected light");
     ImGui::SameLine();
     if (ImGui::Button("Delete")) {
-        deleteLight(state, selected);
+        deleteLight(document, interaction, selected);
     }
     recordItem("Delete light", "Delete the selected light (Delete key)");
     ImGui::SameLine();
     if (ImGui::ArrowButton("up", ImGuiDir_Up)) {
-        moveLight(state, selected, -1);
+        moveLight(document, interaction, selected, -1);
     }
     recordItem("Light up", "Move the selected light up the list");
     ImGui::SameLine();
     if (ImGui::ArrowButton("down", ImGuiDir_Down)) {
-        moveLight(state, selected, +1);
+        moveLight(document, interaction, selected, +1);
     }
     recordItem("Light down", "Move the selected light down the list");
     ImGui::EndDisabled();
@@ -336,15 +337,15 @@ void drawSelectionButtons(EditorState& state) {
 }  // namespace
 
 void drawLightsPanel(EditorState& state, EditorServices& services) {
-    drawAddButtons(state);
-    drawLightTable(state);
-    drawSelectionButtons(state);
+    drawAddButtons(state, state, state);
+    drawLightTable(state, state);
+    drawSelectionButtons(state, state, state);
     if (state.hasLight(state.selectedLight)) {
         ImGui::Separator();
         Light& light = state.scene.lights[size_t(state.selectedLight)];
         editLight(light, intensityScale(state, light));
         if (light.type == LightType::Environment) {
-            editEnvironment(state, services, light);
+            editEnvironment(state, state, state, state, services, light);
         }
     }
 }

@@ -11,21 +11,21 @@
 #include "common/luminance.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
-#include "lobe_plot.h"
-#include "lobe_views.h"
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "views/lobe_plot.h"
+#include "panels/lobe_views.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
 namespace {
 // theta_in from the first enabled directional light, seen from the camera: the angle between
 // L and the normal that faces the viewer.
-std::optional<float> followedThetaIn(const EditorState& state) {
-    for (const Light& light : state.scene.lights) {
+std::optional<float> followedThetaIn(const Document& document) {
+    for (const Light& light : document.scene.lights) {
         if (light.type == LightType::Directional && light.enabled) {
-            const glm::vec3 toCamera = glm::normalize(state.scene.camera.position - state.scene.camera.target);
+            const glm::vec3 toCamera = glm::normalize(document.scene.camera.position - document.scene.camera.target);
             const glm::vec3 L = -glm::normalize(light.direction);
             return glm::degrees(std::acos(glm::clamp(glm::dot(L, toCamera), -1.0f, 1.0f)));
         }
@@ -132,23 +132,23 @@ void drawSliceControls(LobeSettings& lobe) {
 }
 }  // namespace
 
-void drawLobePanel(EditorState& state) {
-    LobeSettings& lobe = state.lobe;
+void drawLobePanel(const Document& document, Interaction& interaction, EditorServices& services) {
+    LobeSettings& lobe = interaction.lobe;
     drawViewChoice(lobe);
     if (lobe.view == LobeView::Slice) {
         drawSliceControls(lobe);
-        drawSliceView(state, ImGui::GetContentRegionAvail());
+        drawSliceView(document, interaction, ImGui::GetContentRegionAvail());
         return;
     }
     if (lobe.view == LobeView::Albedo) {
-        drawAlbedoView(state, ImGui::GetContentRegionAvail());
+        drawAlbedoView(document, interaction, services, ImGui::GetContentRegionAvail());
         return;
     }
     const ImGuiStyle& style = ImGui::GetStyle();
     auto checkboxWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };
     ImGui::Checkbox("Follow first directional light", &lobe.followFirstDirectional);
     recordItem("Follow light", "theta_in from the first directional light, as seen from the camera");
-    const std::optional<float> followed = lobe.followFirstDirectional ? followedThetaIn(state) : std::nullopt;
+    const std::optional<float> followed = lobe.followFirstDirectional ? followedThetaIn(document) : std::nullopt;
     if (followed) {
         lobe.thetaInDegrees = std::min(*followed, 89.9f);
     }
@@ -171,10 +171,10 @@ void drawLobePanel(EditorState& state) {
     recordItem("x cos", "Multiply by cos(theta_in): the light the surface actually reflects");
 
     if (lobe.view == LobeView::Lobe3d) {
-        drawLobe3dView(state, ImGui::GetContentRegionAvail());
+        drawLobe3dView(document, interaction, ImGui::GetContentRegionAvail());
         return;
     }
-    const LobePlot plot = lobePlot(state);
+    const LobePlot plot = lobePlot(document, interaction);
     const float termsWidth = px(220);
     const ImVec2 available = ImGui::GetContentRegionAvail();
     drawPolar(plot, lobe, ImVec2(std::max(available.x - termsWidth - style.ItemSpacing.x, px(80)),
@@ -184,7 +184,7 @@ void drawLobePanel(EditorState& state) {
 
     // The three specular terms against theta_out, from the shared code.
     ImGui::BeginGroup();
-    const Material edited = editedMaterial(state);
+    const Material edited = editedMaterial(document, interaction);
     const shader::SurfaceMaterial m = surfaceMaterial(edited);
     const float inRadians = glm::radians(lobe.thetaInDegrees);
     const glm::vec3 N(0, 0, 1), L(std::sin(inRadians), 0, std::cos(inRadians));

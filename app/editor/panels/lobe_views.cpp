@@ -1,18 +1,16 @@
-#include "lobe_views.h"
+#include "panels/lobe_views.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <list>
 
 #include <glm/glm.hpp>
 
-#include "accuracy/albedo_curve.h"
 #include "common/luminance.h"
-#include "lobe_plot.h"
+#include "views/lobe_plot.h"
 #include "shading/brdf_slice.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
@@ -61,46 +59,30 @@ void drawSlice(const BrdfSlice& slice, const LobeSettings& lobe, ImVec2 at, floa
     }
 }
 
-// The albedo curves of the last few materials asked about: the ground truth takes milliseconds,
-// too long to redo every frame of a slider drag for a material that did not change.
-const std::vector<AlbedoPoint>& albedoOf(const MaterialParameters& material) {
-    static std::list<std::pair<MaterialParameters, std::vector<AlbedoPoint>>> cache;
-    for (auto it = cache.begin(); it != cache.end(); ++it) {
-        if (it->first == material) {
-            cache.splice(cache.begin(), cache, it);
-            return cache.front().second;
-        }
-    }
-    cache.emplace_front(material, albedoCurve(material, 19, 256));
-    if (cache.size() > 4) {
-        cache.pop_back();
-    }
-    return cache.front().second;
-}
 }  // namespace
 
-void drawSliceView(EditorState& state, ImVec2 size) {
-    const LobeSettings& lobe = state.lobe;
+void drawSliceView(const Document& document, const Interaction& interaction, ImVec2 size) {
+    const LobeSettings& lobe = interaction.lobe;
     const SliceLobe which = SliceLobe(std::clamp(lobe.sliceLobe, 0, 2));
     const float line = ImGui::GetTextLineHeight();
-    const int count = state.compareA ? 2 : 1;
+    const int count = interaction.compareA ? 2 : 1;
     const float margin = ImGui::CalcTextSize("90").x + px(8);
     const float side = std::max(std::min((size.x - margin * float(count)) / float(count) - px(8), size.y - 2.0f * line - px(8)),
                                 px(32));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::GetWindowDrawList()->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
     ImVec2 at(origin.x + margin, origin.y + line + px(4));
-    if (state.compareA) {
-        drawSlice(brdfSlice(*state.compareA, lobe.phiDDegrees, kSliceSize, which), lobe, at, side, "A");
+    if (interaction.compareA) {
+        drawSlice(brdfSlice(*interaction.compareA, lobe.phiDDegrees, kSliceSize, which), lobe, at, side, "A");
         at.x += side + margin + px(8);
     }
-    drawSlice(brdfSlice(editedMaterial(state), lobe.phiDDegrees, kSliceSize, which), lobe, at, side,
-              state.compareA ? "B" : "theta_h across, theta_d up (degrees)");
+    drawSlice(brdfSlice(editedMaterial(document, interaction), lobe.phiDDegrees, kSliceSize, which), lobe, at, side,
+              interaction.compareA ? "B" : "theta_h across, theta_d up (degrees)");
     ImGui::Dummy(size);
     recordItem("slice");   // no tooltip of its own: the hovered cell's values are the tooltip
 }
 
-void drawAlbedoView(const EditorState& state, ImVec2 size) {
+void drawAlbedoView(const Document& document, const Interaction& interaction, EditorServices& services, ImVec2 size) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float line = ImGui::GetTextLineHeight();
@@ -111,10 +93,11 @@ void drawAlbedoView(const EditorState& state, ImVec2 size) {
         const char* name;
     };
     std::vector<Shown> shown;
-    if (state.compareA) {
-        shown.push_back({&albedoOf(*state.compareA), IM_COL32(170, 170, 170, 255), "A"});
+    if (interaction.compareA) {
+        shown.push_back({&services.albedo(*interaction.compareA), IM_COL32(170, 170, 170, 255), "A"});
     }
-    shown.push_back({&albedoOf(editedMaterial(state)), IM_COL32(255, 170, 80, 255), state.compareA ? "B" : ""});
+    shown.push_back({&services.albedo(editedMaterial(document, interaction)), IM_COL32(255, 170, 80, 255),
+                     interaction.compareA ? "B" : ""});
     // Luminance; a bar is the luminance of the channels' standard errors, which bounds its own.
     float top = 1.0f;
     for (const Shown& s : shown) {
@@ -178,8 +161,8 @@ void drawAlbedoView(const EditorState& state, ImVec2 size) {
     }
 }
 
-void drawLobe3dView(EditorState& state, ImVec2 size) {
-    LobeSettings& lobe = state.lobe;
+void drawLobe3dView(const Document& document, Interaction& interaction, ImVec2 size) {
+    LobeSettings& lobe = interaction.lobe;
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("lobe3d", size);
     recordItem("lobe 3d", "The lobe over every outgoing direction for theta_in; drag to turn it");
@@ -212,7 +195,7 @@ void drawLobe3dView(EditorState& state, ImVec2 size) {
     const float thetaIn = glm::radians(lobe.thetaInDegrees);
     draw->AddLine(project(glm::vec3(0.0f)), project(glm::vec3(std::sin(thetaIn), 0.0f, std::cos(thetaIn))),
                   IM_COL32(255, 220, 90, 255), 1.5f);
-    const std::vector<Lobe3d> lobes = lobes3d(state);
+    const std::vector<Lobe3d> lobes = lobes3d(document, interaction);
     for (size_t l = lobes.size(); l-- > 0;) {   // B last, on top
         const ImU32 colour = l == 0 ? IM_COL32(255, 170, 80, 220) : IM_COL32(170, 170, 170, 150);
         auto at = [&](int ring, int meridian) {
@@ -232,7 +215,7 @@ void drawLobe3dView(EditorState& state, ImVec2 size) {
         }
     }
     char text[96];
-    std::snprintf(text, sizeof text, "%s%.3g /sr at the largest%s", state.compareA ? "B orange, A grey; " : "",
+    std::snprintf(text, sizeof text, "%s%.3g /sr at the largest%s", interaction.compareA ? "B orange, A grey; " : "",
                   double(lobes.front().maxValue), lobe.logScale ? " (log, 3 decades)" : "");
     draw->AddText(ImVec2(origin.x + px(6), origin.y + px(4)), kLabel, text);
     draw->PopClipRect();

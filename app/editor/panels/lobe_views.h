@@ -4,12 +4,14 @@
 // shows B, and A beside or over it when set, as the polar plot does.
 #include <imgui.h>
 
-#include "editor_state.h"
+#include "window/editor_services.h"
+#include "state/editor_state.h"
 
 namespace patina::editor {
 
-void drawSliceView(EditorState& state, ImVec2 size);
-void drawAlbedoView(const EditorState& state, ImVec2 size);
-void drawLobe3dView(EditorState& state, ImVec2 size);
+void drawSliceView(const Document& document, const Interaction& interaction, ImVec2 size);
+void drawAlbedoView(const Document& document, const Interaction& interaction, EditorServices& services, ImVec2 size);
+// Dragged, it turns (interaction.lobe's yaw and pitch).
+void drawLobe3dView(const Document& document, Interaction& interaction, ImVec2 size);
 
 }  // namespace patina::editor

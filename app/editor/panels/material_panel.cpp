@@ -6,23 +6,23 @@
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
-#include "document_files.h"
-#include "file_dialog.h"
-#include "panels.h"
-#include "shown_path.h"
-#include "text_match.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "storage/document_files.h"
+#include "panels/file_dialog.h"
+#include "panels/panels.h"
+#include "storage/shown_path.h"
+#include "views/text_match.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
 namespace {
 // The BRDF model of what the panel edits: the built-in mesh's material, the selected part of a
 // model, or every part where the scene shades them all with one (Scene::modelBrdf).
-void drawModelChoice(EditorState& state) {
-    const bool parts = modelMaterialCount(state) > 0;
-    const bool everyPart = parts && state.scene.modelBrdf.has_value();
-    Material edited = editedMaterial(state);
+void drawModelChoice(Document& document, const Interaction& interaction) {
+    const bool parts = modelMaterialCount(document) > 0;
+    const bool everyPart = parts && document.scene.modelBrdf.has_value();
+    Material edited = editedMaterial(document, interaction);
     BrdfModelId chosen = edited.model;
     if (ImGui::BeginCombo("Model", std::string(brdfModel(chosen).name).c_str())) {
         for (const BrdfModelInfo& model : brdfModels()) {
@@ -41,12 +41,12 @@ void drawModelChoice(EditorState& state) {
                                       "defines it, or another to compare (saved in the scene)");
     if (chosen != edited.model) {
         if (!parts) {
-            state.scene.material.model = chosen;
+            document.scene.material.model = chosen;
         } else if (everyPart) {
-            state.scene.modelBrdf = chosen;
+            document.scene.modelBrdf = chosen;
         } else {
             edited.model = chosen;
-            setEditedMaterial(state, state.scene, edited);
+            setEditedMaterial(document, interaction, document.scene, edited);
         }
     }
     if (everyPart) {
@@ -56,7 +56,7 @@ void drawModelChoice(EditorState& state) {
                             std::string(brdfModel(chosen).name).c_str());
         ImGui::PopTextWrapPos();
         if (ImGui::SmallButton("Each part its own model")) {
-            state.scene.modelBrdf.reset();
+            document.scene.modelBrdf.reset();
         }
         recordItem("Each part its own model",
                    "Shade each part with its own BRDF model again: glTF's (gltf) for the file's materials");
@@ -64,9 +64,9 @@ void drawModelChoice(EditorState& state) {
 }
 
 // The research controls: which BRDF model and render path, and what the shader derives.
-void drawAdvanced(EditorState& state) {
-    drawModelChoice(state);
-    int path = int(state.renderPath);
+void drawAdvanced(Document& document, Interaction& interaction) {
+    drawModelChoice(document, interaction);
+    int path = int(interaction.renderPath);
     ImGui::TextUnformatted("Render path");
     ImGui::RadioButton("single", &path, int(RenderPath::Single));
     recordItem("Path single", "One pass shades every light (the default)");
@@ -77,10 +77,10 @@ void drawAdvanced(EditorState& state) {
                    ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::RadioButton("specialised", &path, int(RenderPath::Specialised));
     recordItem("Path specialised", "A shader compiled for this scene's lights");
-    state.renderPath = RenderPath(path);
+    interaction.renderPath = RenderPath(path);
     // The environment's shading: the split sum as published, or a variant docs/LIGHTING.md
     // measures against the ground truth.
-    EnvironmentShading& environment = state.environmentShading;
+    EnvironmentShading& environment = interaction.environmentShading;
     if (ImGui::BeginCombo("Environment", std::string(environmentMethodName(environment.method)).c_str())) {
         for (EnvironmentMethod method :
              {EnvironmentMethod::SplitSum, EnvironmentMethod::Dominant, EnvironmentMethod::Stochastic}) {
@@ -105,7 +105,7 @@ void drawAdvanced(EditorState& state) {
     ImGui::TextDisabled("The viewport shows the render's CPU and GPU time.");
 
     // What the shader derives from the four parameters (shaders/shared/brdf.glsl), guards included.
-    const Material edited = editedMaterial(state);
+    const Material edited = editedMaterial(document, interaction);
     const shader::SurfaceMaterial derived = surfaceMaterial(edited);
     ImGui::TextDisabled("Derived");
     ImGui::Text("alpha = r^2       %.5f", double(derived.alpha));
@@ -151,18 +151,18 @@ std::string joinNames(const std::vector<std::string>& names) {
 // One part's row: a swatch of its base colour as tuned, its index and name, how many maps it
 // uses, and the nodes drawn with it, greyed (a model's materials often share one name:
 // 2CylinderEngine has nine "Material_17"); the maps and every node in the tooltip.
-bool drawPartRow(const EditorState& state, int i, bool selected) {
-    const Material tuned = modelMaterial(state, state.scene, i);
+bool drawPartRow(const Document& document, int i, bool selected) {
+    const Material tuned = modelMaterial(document, document.scene, i);
     const glm::vec3 srgb = shader::srgbColor(glm::clamp(tuned.baseColor, 0.0f, 1.0f));
     const float side = ImGui::GetTextLineHeight();
     ImGui::ColorButton("##swatch", ImVec4(srgb.r, srgb.g, srgb.b, 1.0f),
                        ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(side, side));
     ImGui::SameLine();
-    const std::string maps = mapNames(state, i);
+    const std::string maps = mapNames(document, i);
     const int mapCount = maps.empty() ? 0 : int(std::count(maps.begin(), maps.end(), ',')) + 1;
-    const std::string label = std::to_string(i) + ": " + state.model->materials[size_t(i)].name +
+    const std::string label = std::to_string(i) + ": " + document.model->materials[size_t(i)].name +
                               (mapCount ? "  (" + std::to_string(mapCount) + (mapCount > 1 ? " maps)" : " map)") : "");
-    const std::string nodes = joinNames(partNodes(state, i));
+    const std::string nodes = joinNames(partNodes(document, i));
     const ImVec2 start = ImGui::GetCursorScreenPos();
     const bool clicked = ImGui::Selectable(("##part" + std::to_string(i)).c_str(), selected);
     const std::string tooltip = label + "\nDrawn on: " + (nodes.empty() ? "no node" : nodes) + "\n" +
@@ -184,22 +184,21 @@ bool drawPartRow(const EditorState& state, int i, bool selected) {
 // material or node has what is typed. The list grows with the panel (at least six rows, up to
 // about half the panel). A click makes a part the one the panel edits; a part picked in the
 // viewport is scrolled into view.
-void drawPartList(EditorState& state) {
-    const int count = modelMaterialCount(state);
-    int& selected = state.selectedModelMaterial;
+void drawPartList(const Document& document, Interaction& interaction) {
+    const int count = modelMaterialCount(document);
+    int& selected = interaction.selectedModelMaterial;
     selected = std::clamp(selected, 0, count - 1);
-    static int shown = -1;   // the selection the list last scrolled to
     const float line = ImGui::GetTextLineHeightWithSpacing();
     ImGui::TextUnformatted("Parts");
     if (count > 6) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(-FLT_MIN);
-        inputString("##part search", &state.partFilter, 0, "Search parts or nodes");
+        inputString("##part search", &interaction.partFilter, 0, "Search parts or nodes");
         recordItem("part search", "Show only the parts whose material or node has this in its name");
     }
     std::vector<int> rows;
     for (int i = 0; i < count; ++i) {
-        if (partMatches(state, i, state.partFilter)) {
+        if (partMatches(document, i, interaction.partFilter)) {
             rows.push_back(i);
         }
     }
@@ -209,17 +208,17 @@ void drawPartList(EditorState& state) {
     if (ImGui::BeginListBox("##parts", ImVec2(-FLT_MIN, height))) {
         for (int i : rows) {
             ImGui::PushID(i);
-            if (drawPartRow(state, i, i == selected)) {
+            if (drawPartRow(document, i, i == selected)) {
                 selected = i;
             }
-            if (i == selected && shown != selected) {
+            if (i == selected && interaction.partScrolledTo != selected) {
                 ImGui::SetScrollHereY();
-                shown = selected;
+                interaction.partScrolledTo = selected;
             }
             ImGui::PopID();
         }
         if (rows.empty()) {
-            ImGui::TextDisabled("No part or node has \"%s\" in its name.", state.partFilter.c_str());
+            ImGui::TextDisabled("No part or node has \"%s\" in its name.", interaction.partFilter.c_str());
         }
         ImGui::EndListBox();
     }
@@ -228,8 +227,8 @@ void drawPartList(EditorState& state) {
 }
 
 // The map's image, small; hovered, larger with its name and size. Greyed where it is not drawn.
-void drawMapThumbnail(EditorState& state, EditorServices& services, const char* name, int image, bool shown) {
-    const Texture* thumbnail = services.mapThumbnail(state.model, image);
+void drawMapThumbnail(const Document& document, EditorServices& services, const char* name, int image, bool shown) {
+    const Texture* thumbnail = services.mapThumbnail(document.model, image);
     if (!thumbnail) {
         return;
     }
@@ -242,7 +241,7 @@ void drawMapThumbnail(EditorState& state, EditorServices& services, const char* 
     ImGui::Image(id, fitted(side), ImVec2(0, 0), ImVec2(1, 1), ImVec4(1, 1, 1, shown ? 1.0f : 0.35f));
     recordItem("map image: " + std::string(name));
     if (ImGui::IsItemHovered()) {
-        const ModelImage& source = state.model->images.at(size_t(image));
+        const ModelImage& source = document.model->images.at(size_t(image));
         ImGui::BeginTooltip();
         ImGui::Image(id, fitted(px(160)));
         ImGui::Text("%s, %d x %d", source.name.c_str(), source.width, source.height);
@@ -253,26 +252,28 @@ void drawMapThumbnail(EditorState& state, EditorServices& services, const char* 
 
 // Replace... puts an image file in place of the map (a path dialog); Restore, shown once it is
 // replaced, draws the file's own again. Both undoable, saved in the scene.
-void drawMapReplace(EditorState& state, int index, const char* key, const char* name) {
-    const std::string replaced = mapReplacement(state.scene, index, key);
+void drawMapReplace(Document& document, AssetCache& assets, Prompts& prompts, int index, const char* key,
+                    const char* name) {
+    const std::string replaced = mapReplacement(document.scene, index, key);
     ImGui::SameLine();
     ImGui::PushID(key);
     if (ImGui::SmallButton("Replace...")) {
-        state.replacedMaterial = index;
-        state.replacedMap = key;
-        const std::filesystem::path near = std::filesystem::path(replaced.empty() ? state.scene.meshFile : replaced);
-        startPathDialog(state, EditorState::PathDialog::ReplaceMap, near.parent_path() / "");
+        prompts.replacedMaterial = index;
+        prompts.replacedMap = key;
+        const std::filesystem::path near = std::filesystem::path(replaced.empty() ? document.scene.meshFile : replaced);
+        startPathDialog(prompts, Prompts::PathDialog::ReplaceMap, near.parent_path() / "");
     }
     recordItem("map replace: " + std::string(name),
                ("Draw an image file (PNG or JPEG) in place of the " + std::string(name) +
                 " map, with its UV set, sampling and transform" +
-                (replaced.empty() ? std::string()
-                                  : "; now " + shownPath(replaced, std::filesystem::path(state.scene.meshFile).parent_path())))
+                (replaced.empty()
+                     ? std::string()
+                     : "; now " + shownPath(replaced, std::filesystem::path(document.scene.meshFile).parent_path())))
                    .c_str());
     if (!replaced.empty()) {
         ImGui::SameLine();
         if (ImGui::SmallButton("Restore")) {
-            restoreMap(state, index, key);
+            restoreMap(document, assets, prompts, index, key);
         }
         recordItem("map restore: " + std::string(name),
                    ("Draw the file's own " + std::string(name) + " map again, not " +
@@ -284,21 +285,21 @@ void drawMapReplace(EditorState& state, int index, const char* key, const char* 
 
 // Each map the file gives the part, as a thumbnail and a checkbox: unticked, the factor alone
 // is drawn there (an undoable edit, saved in the scene and kept by an export).
-void drawMapSwitches(EditorState& state, EditorServices& services, int index) {
-    for (const auto& map : mapsOf(state.model->materials.at(size_t(index)))) {
+void drawMapSwitches(Document& document, AssetCache& assets, Prompts& prompts, EditorServices& services, int index) {
+    for (const auto& map : mapsOf(document.model->materials.at(size_t(index)))) {
         if (!map.slot->present()) {
             continue;
         }
-        bool shown = mapShown(state.scene, index, map.key);
-        drawMapThumbnail(state, services, map.name, map.slot->image, shown);
+        bool shown = mapShown(document.scene, index, map.key);
+        drawMapThumbnail(document, services, map.name, map.slot->image, shown);
         const std::string label = std::string(map.name) + "##map";
         if (ImGui::Checkbox(label.c_str(), &shown)) {
-            setMapShown(state, state.scene, index, map.key, shown);
+            setMapShown(document, document.scene, index, map.key, shown);
         }
         recordItem("map: " + std::string(map.name), ("Draw the " + std::string(map.name) +
                                    " map; unticked, its factor alone is drawn (the map stays in the file)")
                                       .c_str());
-        drawMapReplace(state, index, map.key, map.name);
+        drawMapReplace(document, assets, prompts, index, map.key, map.name);
     }
 }
 
@@ -329,32 +330,34 @@ void drawModelExtensions(const Model& model) {
 }
 
 // The edited part of a model: its factors, each multiplying its map as glTF defines.
-void drawModelMaterial(EditorState& state, EditorServices& services) {
-    drawPartList(state);
-    const int selected = state.selectedModelMaterial;
-    const std::string maps = mapNames(state, selected);
+void drawModelMaterial(Document& document, Interaction& interaction, AssetCache& assets, Prompts& prompts,
+                       EditorServices& services) {
+    drawPartList(document, interaction);
+    const int selected = interaction.selectedModelMaterial;
+    const std::string maps = mapNames(document, selected);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
                                            : ("Maps: " + maps + ". Each factor multiplies its map").c_str());
     ImGui::PopTextWrapPos();
-    drawMapSwitches(state, services, selected);
-    Material material = modelMaterial(state, state.scene, selected);
+    drawMapSwitches(document, assets, prompts, services, selected);
+    Material material = modelMaterial(document, document.scene, selected);
     const Material before = material;
-    Scene untuned = state.scene;
+    Scene untuned = document.scene;
     untuned.modelMaterials.clear();
-    drawFactors(material, modelMaterial(state, state.savedScene, selected), modelMaterial(state, untuned, selected));
+    drawFactors(material, modelMaterial(document, document.savedScene, selected),
+                modelMaterial(document, untuned, selected));
     if (material != before) {
-        setModelMaterial(state, state.scene, selected, material);
+        setModelMaterial(document, document.scene, selected, material);
     }
-    if (state.model) {
-        drawModelExtensions(*state.model);
+    if (document.model) {
+        drawModelExtensions(*document.model);
     }
 }
 }  // namespace
 
 void drawMaterialPanel(EditorState& state, EditorServices& services) {
     if (modelMaterialCount(state) > 0) {
-        drawModelMaterial(state, services);
+        drawModelMaterial(state, state, *state.assets, state, services);
     } else {
         Material& material = state.scene.material;
         inputString("Name", &material.name);
@@ -366,7 +369,7 @@ void drawMaterialPanel(EditorState& state, EditorServices& services) {
     state.showAdvanced = ImGui::CollapsingHeader("Advanced");
     recordItem("Advanced", "The BRDF model, render path, timings, derived values and the Accuracy tab");
     if (state.showAdvanced) {
-        drawAdvanced(state);
+        drawAdvanced(state, state);
     }
 }
 

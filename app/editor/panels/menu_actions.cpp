@@ -1,75 +1,81 @@
-#include "menu_actions.h"
+#include "panels/menu_actions.h"
 
 #include <algorithm>
 
-#include "file_dialog.h"
-#include "open_folder.h"
+#include "panels/file_dialog.h"
+#include "storage/open_folder.h"
 
 namespace patina::editor {
 
-void saveAs(EditorState& state) {
-    startPathDialog(state, EditorState::PathDialog::SaveAs,
-                    state.materialPath.empty() ? std::filesystem::path(state.scene.material.name + ".json")
-                                               : state.materialPath);
+void saveAs(const Document& document, Prompts& prompts) {
+    startPathDialog(prompts, Prompts::PathDialog::SaveAs,
+                    document.materialPath.empty() ? std::filesystem::path(document.scene.material.name + ".json")
+                                                  : document.materialPath);
 }
 
-void saveSceneAs(EditorState& state) {
+void saveSceneAs(const Document& document, Prompts& prompts) {
     // A scene never saved is named for what it shows: the model opened, or the material.
-    const std::string shown = state.scene.meshFile.empty() ? state.scene.material.name
-                                                           : std::filesystem::path(state.scene.meshFile).stem().string();
-    startPathDialog(state, EditorState::PathDialog::SaveSceneAs,
-                    state.scenePath.empty() ? std::filesystem::path(shown + "-scene.json") : state.scenePath);
+    const std::string shown = document.scene.meshFile.empty()
+                                  ? document.scene.material.name
+                                  : std::filesystem::path(document.scene.meshFile).stem().string();
+    startPathDialog(prompts, Prompts::PathDialog::SaveSceneAs,
+                    document.scenePath.empty() ? std::filesystem::path(shown + "-scene.json") : document.scenePath);
 }
 
-void saveSceneDocument(EditorState& state) {
-    if (state.scenePath.empty()) {
-        saveSceneAs(state);
+void saveSceneDocument(Document& document, Preferences& preferences, Prompts& prompts) {
+    if (document.scenePath.empty()) {
+        saveSceneAs(document, prompts);
     } else {
-        saveScene(state, state.scenePath);
+        saveScene(document, preferences, prompts, document.scenePath);
     }
 }
 
-void save(EditorState& state) {
-    if (!state.scenePath.empty()) {
-        saveScene(state, state.scenePath);
-    } else if (!state.materialPath.empty()) {
-        saveMaterial(state, state.materialPath);
-    } else if (!state.scene.meshFile.empty()) {
-        saveSceneAs(state);   // a model's document: its tuning is kept in a scene
+void save(Document& document, Preferences& preferences, Prompts& prompts) {
+    if (!document.scenePath.empty()) {
+        saveScene(document, preferences, prompts, document.scenePath);
+    } else if (!document.materialPath.empty()) {
+        saveMaterial(document, preferences, prompts, document.materialPath);
+    } else if (!document.scene.meshFile.empty()) {
+        saveSceneAs(document, prompts);   // a model's document: its tuning is kept in a scene
     } else {
-        saveAs(state);
+        saveAs(document, prompts);
     }
 }
 
-void screenshot(EditorState& state, const EditorServices& services) {
-    const int width = std::max(state.screenshotWidth > 0 ? state.screenshotWidth : services.viewportWidth, 1);
-    const int height = std::max(state.screenshotHeight > 0 ? state.screenshotHeight : services.viewportHeight, 1);
-    state.screenshotRequested = {width, height};
-    state.status = "Rendering the " + std::to_string(width) + " x " + std::to_string(height) + " screenshot...";
+void screenshot(const Preferences& preferences, Jobs& jobs, Prompts& prompts, const EditorServices& services) {
+    const int width =
+        std::max(preferences.screenshotWidth > 0 ? preferences.screenshotWidth : services.viewportWidth, 1);
+    const int height =
+        std::max(preferences.screenshotHeight > 0 ? preferences.screenshotHeight : services.viewportHeight, 1);
+    jobs.screenshotRequested = {width, height};
+    prompts.status = "Rendering the " + std::to_string(width) + " x " + std::to_string(height) + " screenshot...";
 }
 
 void takeRequestedScreenshot(EditorState& state, EditorServices& services) {
     if (const auto size = state.screenshotRequested) {
         state.screenshotRequested.reset();   // once, even when it fails
-        services.screenshot(state, size->first, size->second);
+        services.screenshot(state, state, state, state, size->first, size->second);
     }
 }
 
-void openScreenshotFolder(EditorState& state) {
-    if (const std::string failed = showFolder(state.screenshotFolder, state.folderOpener); !failed.empty()) {
-        state.error = failed;
+void openScreenshotFolder(const Preferences& preferences, Jobs& jobs, Prompts& prompts) {
+    if (const std::string failed =
+            showFolder(preferences.screenshotFolder, preferences.folderOpener, jobs.folderOpeners);
+        !failed.empty()) {
+        prompts.error = failed;
     }
 }
 
-void saveAsPresetDialog(EditorState& state) {
-    const std::string edited = editedMaterial(state).name;
+void saveAsPresetDialog(const Document& document, const Interaction& interaction, const Preferences& preferences,
+                        Prompts& prompts) {
+    const std::string edited = editedMaterial(document, interaction).name;
     std::string name = edited.empty() ? "material" : edited;
     std::replace(name.begin(), name.end(), '/', '_');
-    startPathDialog(state, EditorState::PathDialog::SavePreset, state.userPresetFolder / (name + ".json"));
+    startPathDialog(prompts, Prompts::PathDialog::SavePreset, preferences.userPresetFolder / (name + ".json"));
 }
 
-void openDialog(EditorState& state) {
-    startPathDialog(state, EditorState::PathDialog::Open, state.materialPath.parent_path() / "");
+void openDialog(const Document& document, Prompts& prompts) {
+    startPathDialog(prompts, Prompts::PathDialog::Open, document.materialPath.parent_path() / "");
 }
 
 }  // namespace patina::editor

@@ -9,9 +9,9 @@
 
 #include <imgui.h>
 
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
@@ -136,9 +136,9 @@ void placePinsWindow(ImVec2 min, ImVec2 max) {
 }
 
 // Every pin's story, recomputed for the scene as it is now.
-void drawPinsWindow(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
-                    int width, int height) {
-    if (state.pins.empty()) {
+void drawPinsWindow(Interaction& interaction, Prompts& prompts, EditorServices& services, const PreparedScene& shown,
+                    ImVec2 origin, int width, int height) {
+    if (interaction.pins.empty()) {
         return;
     }
     ImVec2 pictureMin, pictureMax;   // the whole picture: both halves of a comparison
@@ -155,8 +155,8 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
     std::string header, rows;   // the header by the first story (each pin's lights are the scene's)
     // The stories scroll; the buttons under them stay in view however many pins there are.
     ImGui::BeginChild("pins", ImVec2(0.0f, -(ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y)));
-    for (size_t i = 0; i < state.pins.size(); ++i) {
-        const glm::ivec2 at = pinPixel(state.pins[i], width, height);
+    for (size_t i = 0; i < interaction.pins.size(); ++i) {
+        const glm::ivec2 at = pinPixel(interaction.pins[i], width, height);
         ImGui::PushID(int(i));
         const bool remove = ImGui::SmallButton("x");
         recordItem("unpin:" + std::to_string(i + 1), "Remove this pin");
@@ -174,7 +174,7 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
         }
         ImGui::PopID();
         if (remove) {
-            state.pins.erase(state.pins.begin() + long(i));
+            interaction.pins.erase(interaction.pins.begin() + long(i));
             break;
         }
     }
@@ -183,32 +183,32 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
     ImGui::Separator();
     if (ImGui::Button("Copy as CSV")) {
         ImGui::SetClipboardText(csv.c_str());
-        state.status = "Copied " + std::to_string(state.pins.size()) + " pinned pixel(s) as CSV";
+        prompts.status = "Copied " + std::to_string(interaction.pins.size()) + " pinned pixel(s) as CSV";
     }
     recordItem("Copy pins as CSV", "Every pin's values, a line each, for a spreadsheet");
     ImGui::SameLine();
     if (ImGui::Button("Clear pins")) {
-        state.pins.clear();
+        interaction.pins.clear();
     }
     recordItem("Clear pins");
     ImGui::End();
     if (!open) {
-        state.pins.clear();
+        interaction.pins.clear();
     }
 }
 }  // namespace
 
-void drawPixelReadOut(EditorState& state, EditorServices& services, const std::vector<ReadOutPicture>& pictures,
-                      bool hovered) {
-    if (!state.pixelReadOut || pictures.empty()) {
+void drawPixelReadOut(Interaction& interaction, Prompts& prompts, EditorServices& services,
+                      const std::vector<ReadOutPicture>& pictures, bool hovered) {
+    if (!interaction.pixelReadOut || pictures.empty()) {
         return;
     }
     ImDrawList* draw = ImGui::GetWindowDrawList();
     for (const ReadOutPicture& picture : pictures) {
         draw->PushClipRect(picture.hoverMin, picture.hoverMax, true);
-        for (size_t i = 0; i < state.pins.size(); ++i) {
-            const ImVec2 at(picture.origin.x + state.pins[i].x * picture.size.x,
-                            picture.origin.y + state.pins[i].y * picture.size.y);
+        for (size_t i = 0; i < interaction.pins.size(); ++i) {
+            const ImVec2 at(picture.origin.x + interaction.pins[i].x * picture.size.x,
+                            picture.origin.y + interaction.pins[i].y * picture.size.y);
             draw->AddCircle(at, px(5), IM_COL32(255, 220, 120, 255), 12, px(2));
             draw->AddText(ImVec2(at.x + px(6), at.y - px(16)), IM_COL32(255, 220, 120, 255), std::to_string(i + 1).c_str());
         }
@@ -245,11 +245,11 @@ void drawPixelReadOut(EditorState& state, EditorServices& services, const std::v
     // A click pins (a drag turns the camera and pins nothing).
     if (under && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= px(3.0f) * px(3.0f)) {
-        state.pins.push_back({(io.MousePos.x - under->origin.x) / under->size.x,
+        interaction.pins.push_back({(io.MousePos.x - under->origin.x) / under->size.x,
                               (io.MousePos.y - under->origin.y) / under->size.y});
     }
     const ReadOutPicture& b = pictures.back();
-    drawPinsWindow(state, services, *b.scene, b.origin, int(b.size.x), int(b.size.y));
+    drawPinsWindow(interaction, prompts, services, *b.scene, b.origin, int(b.size.x), int(b.size.y));
 }
 
 }  // namespace patina::editor

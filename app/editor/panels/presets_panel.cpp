@@ -2,31 +2,31 @@
 
 #include <imgui.h>
 
-#include "panels.h"
+#include "panels/panels.h"
 #include "io/scene_file.h"
-#include "preset_files.h"
-#include "shown_path.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "storage/preset_files.h"
+#include "storage/shown_path.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
 namespace {
 // Right-click on a preset: rename or delete it. Only the user's own: the built-in ones are
 // part of the program (Save as preset makes an own copy to change).
-void presetMenu(EditorState& state, const std::filesystem::path& file, bool own) {
+void presetMenu(Prompts& prompts, const std::filesystem::path& file, bool own) {
     if (!ImGui::BeginPopupContextItem("preset menu")) {
         return;
     }
     if (ImGui::MenuItem("Rename...", nullptr, false, own)) {
-        state.presets.renaming = file;
-        state.presets.newName = file.stem().string();
-        state.presets.problem.clear();
+        prompts.presets.renaming = file;
+        prompts.presets.newName = file.stem().string();
+        prompts.presets.problem.clear();
     }
     recordItem("preset:rename", "Give the preset another name (its file's and its material's)");
     if (ImGui::MenuItem("Delete...", nullptr, false, own)) {
-        state.presets.deleting = file;
-        state.presets.problem.clear();
+        prompts.presets.deleting = file;
+        prompts.presets.problem.clear();
     }
     recordItem("preset:delete", "Take the preset out of the browser (its file is kept as .bak)");
     if (!own) {
@@ -35,10 +35,9 @@ void presetMenu(EditorState& state, const std::filesystem::path& file, bool own)
     ImGui::EndPopup();
 }
 
-// One preset: its thumbnail in the fixed preview scene, a click applies it, a right-click
-// offers to rename or delete it; its material's name under it.
-void presetCell(EditorState& state, EditorServices& services, const std::filesystem::path& file, bool own,
-                float thumb) {
+// One preset: its thumbnail in the fixed preview scene, a right-click offers to rename or delete
+// it; its material's name under it. True when it was clicked (to apply it).
+bool presetCell(Prompts& prompts, EditorServices& services, const std::filesystem::path& file, bool own, float thumb) {
     ImGui::PushID(file.string().c_str());
     const EditorServices::Preset* preset = services.preset(file);
     const std::string name = preset && !preset->name.empty() ? preset->name : file.stem().string();
@@ -53,21 +52,19 @@ void presetCell(EditorState& state, EditorServices& services, const std::filesys
     const std::string tooltip = name + "\n" + file.filename().string() + (preset ? "" : "\n(cannot be read)") +
                                 (own ? "\nRight-click to rename or delete" : "");
     recordItem("preset:" + file.stem().string(), tooltip.c_str());
-    presetMenu(state, file, own);
+    presetMenu(prompts, file, own);
     ImGui::TextUnformatted(fittedText(name, thumb).c_str());
     recordItem("caption:" + file.stem().string());
     ImGui::EndGroup();
-    if (clicked) {
-        requestOpen(state, file);
-    }
     ImGui::PopID();
+    return clicked;
 }
 
 // A modal prompt about a preset, open while `about` names it: `ask` draws the question (and
 // returns true when Enter confirms it), then what went wrong if anything, then `verb`, which
 // runs `act`, and Cancel (or Escape).
 template <typename Ask, typename Act>
-void presetPrompt(EditorState& state, const char* title, std::filesystem::path& about, const char* verb, Ask&& ask,
+void presetPrompt(Prompts& prompts, const char* title, std::filesystem::path& about, const char* verb, Ask&& ask,
                   Act&& act) {
     if (!about.empty() && !ImGui::IsPopupOpen(title)) {
         ImGui::OpenPopup(title);
@@ -76,9 +73,9 @@ void presetPrompt(EditorState& state, const char* title, std::filesystem::path& 
         return;
     }
     const bool entered = ask();
-    if (!state.presets.problem.empty()) {
+    if (!prompts.presets.problem.empty()) {
         ImGui::PushTextWrapPos(px(420));
-        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "%s", state.presets.problem.c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "%s", prompts.presets.problem.c_str());
         ImGui::PopTextWrapPos();
     }
     const bool confirmed = ImGui::Button(verb);
@@ -89,7 +86,7 @@ void presetPrompt(EditorState& state, const char* title, std::filesystem::path& 
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
         about.clear();
-        state.presets.problem.clear();
+        prompts.presets.problem.clear();
     }
     recordItem("preset prompt:cancel", "Leave the preset as it is (Escape)");
     if (about.empty()) {
@@ -98,10 +95,10 @@ void presetPrompt(EditorState& state, const char* title, std::filesystem::path& 
     ImGui::EndPopup();
 }
 
-void drawPresetPrompts(EditorState& state) {
-    EditorState::PresetBrowser& presets = state.presets;
+void drawPresetPrompts(Document& document, Prompts& prompts) {
+    Prompts::PresetBrowser& presets = prompts.presets;
     presetPrompt(
-        state, "Rename preset", presets.renaming, "Rename",
+        prompts, "Rename preset", presets.renaming, "Rename",
         [&] {
             ImGui::Text("New name for %s:", presets.renaming.filename().string().c_str());
             if (ImGui::IsWindowAppearing()) {
@@ -113,15 +110,15 @@ void drawPresetPrompts(EditorState& state) {
             return ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
                                                   ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
         },
-        [&] { confirmPresetRename(state); });
+        [&] { confirmPresetRename(document, prompts); });
     presetPrompt(
-        state, "Delete preset?", presets.deleting, "Delete",
+        prompts, "Delete preset?", presets.deleting, "Delete",
         [&] {
             ImGui::Text("Delete the preset %s? Its file is kept as %s.bak.", presets.deleting.stem().string().c_str(),
                         presets.deleting.filename().string().c_str());
             return false;
         },
-        [&] { confirmPresetDelete(state); });
+        [&] { confirmPresetDelete(document, prompts); });
 }
 }  // namespace
 
@@ -157,7 +154,9 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
                        : "The presets that come with Patina: a click applies one, Save as preset makes your own");
         int column = 0;
         for (const std::filesystem::path& file : files) {
-            presetCell(state, services, file, own, kThumb);
+            if (presetCell(state, services, file, own, kThumb)) {
+                requestOpen(state, file);
+            }
             if (++column < columns) {
                 ImGui::SameLine();
             } else {
@@ -171,7 +170,7 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
     if (!any && !state.presets.filter.empty()) {
         ImGui::TextDisabled("No preset's name has \"%s\" in it.", state.presets.filter.c_str());
     }
-    drawPresetPrompts(state);
+    drawPresetPrompts(state, state);
 }
 
 }  // namespace patina::editor

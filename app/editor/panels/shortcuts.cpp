@@ -1,10 +1,10 @@
 #include <imgui.h>
 
-#include "keys.h"
-#include "menu_actions.h"
-#include "panels.h"
-#include "ui_scale.h"
-#include "widgets.h"
+#include "window/keys.h"
+#include "panels/menu_actions.h"
+#include "panels/panels.h"
+#include "window/ui_scale.h"
+#include "window/widgets.h"
 
 namespace patina::editor {
 
@@ -19,52 +19,52 @@ void handleShortcuts(EditorState& state, EditorServices& services) {
     } else if (pressed(keys, kKeyEscape)) {
         state.showShortcuts = false;
     }
-    if (promptOpen(state)) {
+    if (promptOpen(state, state)) {
         // Nothing edits the document behind a prompt: Ctrl+Z or Ctrl+O there once undid or
         // replaced what the prompt was asking about.
         return;
     }
     if (pressed(keys, kKeyN, true)) {
-        requestNew(state);
+        requestNew(state, state, state, state);
     }
     if (pressed(keys, kKeyZ, true)) {
-        undo(state);
+        undo(state, state, state);
     }
     if (pressed(keys, kKeyZ, true, true) || pressed(keys, kKeyY, true)) {
-        redo(state);
+        redo(state, state, state);
     }
     if (pressed(keys, kKeyS, true)) {
-        save(state);
+        save(state, state, state);
     }
     if (pressed(keys, kKeyS, true, true)) {
-        saveAs(state);
+        saveAs(state, state);
     }
     if (pressed(keys, kKeyS, true, false, true)) {
-        saveSceneDocument(state);
+        saveSceneDocument(state, state, state);
     }
     if (pressed(keys, kKeyO, true)) {
-        openDialog(state);
+        openDialog(state, state);
     }
     if (pressed(keys, kKeyQ, true)) {
         state.pendingQuit = true;
     }
     if (pressed(keys, kKeyF12)) {
-        screenshot(state, services);
+        screenshot(state, state, state, services);
     }
     if (pressed(keys, kKeyDelete)) {
-        deleteLight(state, state.selectedLight);   // one undo step, as the Delete button
+        deleteLight(state, state, state.selectedLight);   // one undo step, as the Delete button
     }
 }
 
 // F1's list of keys: centred and sized to its rows, never larger than the window.
-void drawShortcutsWindow(EditorState& state) {
-    if (!state.showShortcuts) {
+void drawShortcutsWindow(Prompts& prompts) {
+    if (!prompts.showShortcuts) {
         return;
     }
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(display.x - px(20), display.y - px(20)));
-    if (ImGui::Begin("Shortcuts", &state.showShortcuts, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (ImGui::Begin("Shortcuts", &prompts.showShortcuts, ImGuiWindowFlags_AlwaysAutoResize)) {
         const char* rows[][2] = {
             {"Ctrl+N", "new scene"}, {"Ctrl+O", "open a material, scene, screenshot, glTF or environment"},
             {"Ctrl+S", "save (the scene, if one is open; else the material)"},

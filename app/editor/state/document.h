@@ -1,0 +1,123 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "environment/environment.h"
+#include "geometry/mesh.h"
+#include "scene/prepared_scene.h"
+#include "scene/scene.h"
+#include "state/undo_history.h"
+
+namespace patina::editor {
+
+struct Interaction;
+struct Prompts;
+
+// The document: the scene being edited, the files it was opened from or saved to, what is in
+// them, and the history of its edits. Everything Save writes and Undo restores is here.
+struct Document {
+    Scene scene = defaultScene();
+    // What the scene names, loaded (assets/, through Jobs::assets): its glTF file's mesh (null:
+    // the built-in kind's), and its environment light's environment (kept while the light is
+    // off, for the checkbox).
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Model> model;   // what the glTF file draws (null: a built-in mesh)
+    std::shared_ptr<const Environment> environment;
+    std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
+    Material savedMaterial = scene.material; // what is on disk at materialPath
+    // The scene as a document: where it was opened from or saved to (empty: none), and the
+    // scene as it was then (or at start), against which lights, camera, display and mesh are
+    // unsaved changes.
+    std::filesystem::path scenePath;
+    Scene savedScene = scene;
+    UndoHistory history;
+    EditSnapshot committed = snapshot();     // the state history knows; edits since are pending
+
+    // What differs from the files: the material from its own (or the scene's), the rest of the
+    // scene from the scene as opened, saved or started with.
+    bool materialChanged() const { return scene.material != savedMaterial; }
+    bool sceneChanged() const;
+    bool dirty() const { return materialChanged() || sceneChanged(); }
+    ShownShape shownShape() const { return {scene.mesh, scene.meshFile, mesh, model, scene.camera}; }
+    EditSnapshot snapshot() const {
+        return {scene.material, scene.lights, scene.display, scene.modelMaterials, scene.modelBrdf, shownShape()};
+    }
+    // Whether `index` is one of the scene's lights.
+    bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
+    // The scene's environment light's index, or -1.
+    int environmentIndex() const;
+};
+
+// The window title: the document's file name (the scene's, else the model's shown, else the
+// material's, else the material's name), a '*' while anything is unsaved.
+std::string windowTitle(const Document& document);
+// "the material", "the lights and the camera", ...: what is unsaved, for the prompt.
+std::string unsavedParts(const Document& document);
+
+// --- Undoable edits ---------------------------------------------------------------------
+// Widgets write straight into the document's scene. Whatever changed since the last commit
+// becomes one undo step when commitEdits runs, which the editor does once no widget is active:
+// a slider drag over many frames is one step, whatever widget made it.
+void commitEdits(Document& document);
+// A discrete edit (a button): its own step, apart from anything pending.
+template <typename Apply>
+void applyEdit(Document& document, Apply&& apply) {
+    commitEdits(document);
+    apply(document);
+    commitEdits(document);
+}
+// The status says what a step undid or redid; the selection and solo stay on lights that exist.
+void undo(Document& document, Interaction& interaction, Prompts& prompts);
+void redo(Document& document, Interaction& interaction, Prompts& prompts);
+
+// The sphere the camera frames and the light rig is fitted to: the mesh file's bounds, or the
+// built-in mesh's (about the origin, radius 1).
+BoundingSphere meshBounds(const Document& document);
+// What the lights panel shows a light's intensity divided by: for a point, sphere or tube light
+// while a model is shown, the square of the model's radius, the factor opening it multiplied
+// the intensity by (moveLightRig), so the panel reads as it did on the unit sphere (2Cylinder-
+// Engine's key light read 784563.938); 1 otherwise. The scene file keeps the intensity itself.
+float intensityScale(const Document& document, const Light& light);
+// Aims the camera at the whole mesh (F, View > Frame mesh).
+void frameMesh(Document& document);
+// The built-in sphere or torus; coming back from a model, the camera frames it and the lights
+// return to the unit scale (an undoable step).
+void chooseBuiltinMesh(Document& document, MeshKind kind);
+// `shown` (renderedScene, withMaterial) with the document's loaded mesh, model and environment:
+// what the renderer draws. Refers to `shown`, which must outlive it.
+PreparedScene preparedScene(const Document& document, const Scene& shown);
+
+// --- A model's materials ----------------------------------------------------------------
+// How many materials the shown model has (0 for a built-in mesh).
+int modelMaterialCount(const Document& document);
+// Material `index` of the model as `scene` draws it: its edit (Scene::modelMaterials) or the
+// file's factors, under the file's name, with its BRDF model (the part's own: the file's are
+// `gltf`; Scene::modelBrdf where the scene shades every part with one).
+Material modelMaterial(const Document& document, const Scene& scene, int index);
+// Writes `material`'s values as the edit of material `index` in `scene` (its name stays the
+// file's: the key), made or replaced; under Scene::modelBrdf the part keeps its own model.
+void setModelMaterial(const Document& document, Scene& scene, int index, Material material);
+// "base colour, normal": the maps material `index` of the model uses; empty for none.
+// Whether `scene` draws map `key` (model/model.h mapsOf) of the model's material `index`: false
+// where the scene's edit of it leaves the map out.
+bool mapShown(const Scene& scene, int index, const std::string& key);
+// Draws or leaves out that map: an edit of the material (made with its values as they are
+// where the scene has none).
+void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown);
+std::string mapNames(const Document& document, int index);
+// The names of the nodes the shown model draws with its material `index`, each once, in the
+// file's order: what tells apart materials of one name.
+std::vector<std::string> partNodes(const Document& document, int index);
+// Whether material `index`'s name or one of its nodes' has `filter` in it, in any case (the
+// Parts list's search box); everything matches an empty filter.
+bool partMatches(const Document& document, int index, const std::string& filter);
+// The image the scene puts in place of map `key` of the model's material `index`, or "".
+std::string mapReplacement(const Scene& scene, int index, const std::string& key);
+// Puts the image at `path` there (empty: the file's map again), an edit of the material as
+// setMapShown makes one; the model drawn is retextured apart (document_files.h replaceMap).
+void setMapReplacement(const Document& document, Scene& scene, int index, const std::string& key,
+                       const std::string& path);
+
+}  // namespace patina::editor

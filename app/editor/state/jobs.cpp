@@ -1,0 +1,93 @@
+#include "state/jobs.h"
+
+#include "state/editor_state.h"
+
+namespace patina::editor {
+
+namespace {
+// The loaded environment becomes the scene's (one undo step), adding a light if there is none.
+void applyEnvironment(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                      const std::string& source, std::shared_ptr<const Environment> environment,
+                      const std::vector<std::string>& warnings) {
+    if (document.environmentIndex() < 0) {
+        addLight(document, interaction, prompts, LightType::Environment);
+    }
+    const int index = document.environmentIndex();
+    applyEdit(document, [&](Document& d) {
+        Light& light = d.scene.lights[size_t(index)];
+        // The light is named after its image until the artist names it.
+        if (light.name == environmentName(light.source) || light.name == lightTypeName(LightType::Environment)) {
+            light.name = environmentName(source);
+        }
+        light.source = source;
+        d.environment = std::move(environment);   // kept while disabled, for the checkbox
+    });
+    interaction.selectedLight = index;
+    jobs.environmentFailed.clear();
+    prompts.error.clear();   // a load that worked: an older error is no longer news
+    // Replaced pixels (real HDRIs hold a few slightly negative ones) are worth a note, not an
+    // error box over the toolbar.
+    prompts.status = "Environment " + environmentName(source) + (warnings.empty() ? "" : ": " + joinLines(warnings));
+}
+}  // namespace
+
+bool setEnvironmentSource(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
+                          const std::string& source) {
+    jobs.environmentLoad.reset();   // a newer choice replaces one under way (cancelled)
+    if (!source.starts_with("builtin:")) {
+        jobs.environmentLoad = std::make_shared<EnvironmentLoad>(source, jobs.assets);
+        prompts.status = "Preparing the environment " + environmentName(source) + "...";
+        return true;
+    }
+    std::vector<std::string> warnings;
+    try {
+        applyEnvironment(document, interaction, jobs, prompts, source, jobs.assets->environment(source, warnings),
+                         warnings);
+        return true;
+    } catch (const std::exception& error) {
+        prompts.error = error.what();   // the previous environment stays
+        return false;
+    }
+}
+
+bool finishEnvironmentLoad(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts, bool wait) {
+    if (!jobs.environmentLoad || (!wait && !jobs.environmentLoad->ready())) {
+        return false;
+    }
+    const std::shared_ptr<EnvironmentLoad> load = std::move(jobs.environmentLoad);
+    try {
+        EnvironmentLoad::Result result = load->take();
+        if (!result.environment) {
+            return false;   // cancelled
+        }
+        applyEnvironment(document, interaction, jobs, prompts, load->source(), std::move(result.environment),
+                         result.warnings);
+        return true;
+    } catch (const std::exception& error) {
+        prompts.error = error.what();   // the previous environment stays
+        prompts.status.clear();
+        return false;
+    }
+}
+
+void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts) {
+    const int index = document.environmentIndex();
+    if (index < 0) {
+        return;
+    }
+    const std::string& source = document.scene.lights[size_t(index)].source;
+    const std::shared_ptr<const Environment>& loaded = document.environment;
+    if ((loaded && loaded->source == source) || jobs.environmentFailed == source) {
+        return;
+    }
+    std::vector<std::string> warnings;
+    try {
+        document.environment = jobs.assets->environment(source, warnings);
+        jobs.environmentFailed.clear();
+    } catch (const std::exception& error) {
+        prompts.error = error.what();
+        jobs.environmentFailed = source;
+    }
+}
+
+}  // namespace patina::editor

@@ -1,0 +1,154 @@
+#include "state/undo_history.h"
+
+namespace patina::editor {
+
+namespace {
+// "a", "a and b"; `whole` for more: a preset or a file changes many fields at once.
+std::string fieldsOr(const std::vector<std::string>& fields, const std::string& whole) {
+    if (fields.size() == 1) {
+        return fields[0];
+    }
+    return fields.size() == 2 ? fields[0] + " and " + fields[1] : whole;
+}
+
+std::string materialChange(const Material& a, const Material& b) {
+    // Another name and other values: another material (a preset, a model's) took its place.
+    if (a.name != b.name && static_cast<const MaterialParameters&>(a) != b) {
+        return "the material " + b.name;
+    }
+    std::vector<std::string> fields;
+    const std::pair<bool, const char*> checks[] = {
+        {a.name != b.name, "the material's name"}, {a.baseColor != b.baseColor, "base colour"},
+        {a.roughness != b.roughness, "roughness"},  {a.specular != b.specular, "specular"},
+        {a.metallic != b.metallic, "metallic"},     {a.model != b.model, "the BRDF model"},
+        {a.notes != b.notes, "the notes"},          {a.extras != b.extras, "the material"}};
+    for (const auto& [changed, name] : checks) {
+        if (changed) {
+            fields.push_back(name);
+        }
+    }
+    return fieldsOr(fields, "the material");
+}
+
+std::string lightsChange(const std::vector<Light>& a, const std::vector<Light>& b) {
+    if (b.size() == a.size() + 1) {
+        return "adding a light";
+    }
+    if (a.size() == b.size() + 1) {
+        return "deleting a light";
+    }
+    std::vector<std::string> fields;
+    for (size_t i = 0; i < a.size() && a.size() == b.size(); ++i) {
+        if (a[i] != b[i]) {
+            fields.push_back("the light " + b[i].name);
+        }
+    }
+    return fields.size() == 1 ? fields[0] : "the lights";
+}
+
+std::string displayChange(const DisplaySettings& a, const DisplaySettings& b) {
+    std::vector<std::string> fields;
+    const std::pair<bool, const char*> checks[] = {
+        {a.exposure != b.exposure, "exposure"},
+        {a.tonemap != b.tonemap, "the tone map"},
+        {a.background != b.background, "the background colour"},
+        {a.backgroundFromEnvironment != b.backgroundFromEnvironment, "the environment as background"},
+        {a.backgroundBlur != b.backgroundBlur, "the background blur"},
+        {a.extras != b.extras, "the display settings"}};
+    for (const auto& [changed, name] : checks) {
+        if (changed) {
+            fields.push_back(name);
+        }
+    }
+    return fieldsOr(fields, "the display settings");
+}
+// "roughness of Texture": the first model material whose edit differs (one is edited at a time).
+std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const std::vector<ModelMaterialEdit>& b) {
+    auto find = [](const std::vector<ModelMaterialEdit>& edits, int index) -> const ModelMaterialEdit* {
+        for (const ModelMaterialEdit& edit : edits) {
+            if (edit.index == index) {
+                return &edit;
+            }
+        }
+        return nullptr;
+    };
+    for (const std::vector<ModelMaterialEdit>* side : {&b, &a}) {
+        for (const ModelMaterialEdit& edit : *side) {
+            const ModelMaterialEdit* before = find(a, edit.index);
+            const ModelMaterialEdit* after = find(b, edit.index);
+            if (!before || !after || *before != *after) {
+                if (!before || !after) {   // made or removed: by a map switch when it leaves maps out
+                    return (edit.mapsOff.empty() && edit.mapsReplaced.empty() ? "the tuning of " : "the maps of ") +
+                           edit.material.name;
+                }
+                if (before->mapsOff != after->mapsOff || before->mapsReplaced != after->mapsReplaced) {
+                    return "the maps of " + edit.material.name;
+                }
+                return materialChange(before->material, after->material) + " of " + edit.material.name;
+            }
+        }
+    }
+    return "the model's materials";
+}
+}  // namespace
+
+std::string describeChange(const EditSnapshot& before, const EditSnapshot& after) {
+    std::vector<std::string> parts;
+    if (before.material != after.material) {
+        parts.push_back(materialChange(before.material, after.material));
+    }
+    if (before.lights != after.lights) {
+        parts.push_back(lightsChange(before.lights, after.lights));
+    }
+    if (before.display != after.display) {
+        parts.push_back(displayChange(before.display, after.display));
+    }
+    if (before.modelMaterials != after.modelMaterials) {
+        parts.push_back(modelMaterialsChange(before.modelMaterials, after.modelMaterials));
+    }
+    if (before.modelBrdf != after.modelBrdf) {
+        parts.push_back("the BRDF model of every part");
+    }
+    if (before.shape != after.shape) {
+        const ShownShape& shown = after.shape.file.empty() && !before.shape.file.empty() ? before.shape : after.shape;
+        parts.insert(parts.begin(), "the mesh (" +
+                                        (shown.file.empty() ? std::string(meshKindName(shown.kind))
+                                                            : std::filesystem::path(shown.file).filename().string()) +
+                                        ")");
+    }
+    std::string text;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        text += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return text;
+}
+
+void UndoHistory::record(EditSnapshot before) {
+    undo_.push_back(std::move(before));
+    if (undo_.size() > limit_) {
+        undo_.pop_front();
+    }
+    redo_.clear();
+}
+
+std::optional<EditSnapshot> UndoHistory::undo(EditSnapshot current) {
+    if (undo_.empty()) {
+        return std::nullopt;
+    }
+    EditSnapshot previous = std::move(undo_.back());
+    undo_.pop_back();
+    redo_.push_back(std::move(current));
+    return previous;
+}
+
+std::optional<EditSnapshot> UndoHistory::redo(EditSnapshot current) {
+    if (redo_.empty()) {
+        return std::nullopt;
+    }
+    EditSnapshot next = std::move(redo_.back());
+    redo_.pop_back();
+    undo_.push_back(std::move(current));
+    return next;
+}
+
+}  // namespace patina::editor
