@@ -8,6 +8,7 @@
 #include "bench/lighting_accuracy.h"
 #include "assets/asset_cache.h"
 #include "cli.h"
+#include "accuracy/diffuse_accuracy.h"
 #include "accuracy/furnace.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
@@ -128,7 +129,75 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
     }
     return environments;
 }
+// What diffuse-accuracy measures under by default: the built-in studio, every Blender HDRI
+// installed, and a small sun 10^4 times its sky's radiance (sunEnvironment), made here.
+std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>& files) {
+    std::vector<std::string> sources = files;
+    if (sources.empty()) {
+        sources = {"builtin:studio"};
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(kBlenderWorlds, error)) {
+            if (entry.path().extension() == ".exr") {
+                sources.push_back(entry.path().string());
+            }
+        }
+        std::sort(sources.begin() + 1, sources.end());
+        if (sources.size() == 1) {
+            std::cerr << "diffuse-accuracy: " << kBlenderWorlds
+                      << " holds no HDRIs (apt-get install blender-data); measured without them\n";
+        }
+    }
+    std::vector<NamedEnvironment> environments = lightingEnvironments(sources);
+    for (NamedEnvironment& environment : environments) {
+        if (environment.environment->source.starts_with("builtin:")) {
+            environment.name = "built-in " + environment.name;   // beside Blender's studio.exr
+        }
+    }
+    if (files.empty()) {
+        environments.push_back({"sun", prepareEnvironment(sunEnvironment(1024), "generated:sun")});
+    }
+    return environments;
+}
 }  // namespace
+
+Command addDiffuseAccuracyCommand(CLI::App& app) {
+    struct Options {
+        std::string outDir;
+        bool quick = false;
+        std::vector<std::string> environments;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "diffuse-accuracy",
+        "The environment's diffuse light against the ground truth: the irradiance against the exact cosine "
+        "convolution (irradiance.csv), and a matte cube and sphere rendered against the reference render "
+        "(matte.csv)");
+    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
+    command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
+    command->add_option("--environment", options->environments,
+                        "An .hdr or .exr to measure under (repeatable; default: builtin:studio, every Blender HDRI "
+                        "installed and a generated sun)");
+    return [options] {
+        const std::filesystem::path folder = outputFolder(options->outDir);
+        HeadlessContext context;
+        const std::vector<NamedEnvironment> environments = diffuseEnvironments(options->environments);
+        std::vector<IrradianceErrorRow> irradiance;
+        std::vector<MatteRow> matte;
+        for (const NamedEnvironment& environment : environments) {
+            for (const IrradianceErrorRow& row :
+                 measureIrradiance(environment, options->quick ? 64 : 256, options->quick ? 256 : 4096)) {
+                irradiance.push_back(row);
+            }
+            for (MatteShape shape : {MatteShape::Cube, MatteShape::Sphere}) {
+                matte.push_back(measureMatte(environment, shape, options->quick ? 32 : 64, options->quick ? 256 : 1024));
+                std::cerr << environment.name << " " << matte.back().shape << ": mean " << matte.back().meanRatio << "\n";
+            }
+        }
+        writeOutputText((folder / "irradiance.csv").string(), irradianceCsv(irradiance));
+        writeOutputText((folder / "matte.csv").string(), matteCsv(matte));
+        std::cout << matteCsv(matte);
+    };
+}
 
 Command addLightingAccuracyCommand(CLI::App& app) {
     struct Options {
