@@ -1,6 +1,9 @@
-// The speed/accuracy commands: bench, stability, furnace and lighting-accuracy, and what they
-// share with the other measurements (cli.h). Each writes into --out-dir (default: the current folder).
+// The speed/accuracy commands: bench, stability, furnace, lighting-accuracy and diffuse-accuracy,
+// and what they share with the other measurements (cli.h). Each writes into --out-dir (default:
+// the current folder).
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -160,78 +163,80 @@ std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>
 }
 }  // namespace
 
-Command addDiffuseAccuracyCommand(CLI::App& app) {
+// A measurement under environments: --out-dir, --quick and --environment F (repeatable), whose
+// default `defaults` names.
+using EnvironmentMeasurement =
+    std::function<void(const std::filesystem::path&, bool, const std::vector<std::string>&)>;
+Command addEnvironmentMeasurementCommand(CLI::App& app, const char* name, const std::string& description,
+                                         const std::string& defaults, EnvironmentMeasurement measure) {
     struct Options {
         std::string outDir;
         bool quick = false;
         std::vector<std::string> environments;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand(
-        "diffuse-accuracy",
-        "The environment's diffuse light against the ground truth: the irradiance against the exact cosine "
-        "convolution (irradiance.csv), and a matte cube and sphere rendered against the reference render "
-        "(matte.csv)");
+    CLI::App* command = app.add_subcommand(name, description);
     command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
     command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
     command->add_option("--environment", options->environments,
-                        "An .hdr or .exr to measure under (repeatable; default: builtin:studio, every Blender HDRI "
-                        "installed and a generated sun)");
-    return [options] {
-        const std::filesystem::path folder = outputFolder(options->outDir);
-        HeadlessContext context;
-        const std::vector<NamedEnvironment> environments = diffuseEnvironments(options->environments);
-        std::vector<IrradianceErrorRow> irradiance;
-        std::vector<MatteRow> matte;
-        for (const NamedEnvironment& environment : environments) {
-            for (const IrradianceErrorRow& row :
-                 measureIrradiance(environment, options->quick ? 64 : 256, options->quick ? 256 : 4096)) {
-                irradiance.push_back(row);
+                        "An .hdr or .exr to measure under (repeatable; default: " + defaults + ")");
+    return [options, measure] { measure(outputFolder(options->outDir), options->quick, options->environments); };
+}
+
+Command addDiffuseAccuracyCommand(CLI::App& app) {
+    return addEnvironmentMeasurementCommand(
+        app, "diffuse-accuracy",
+        "The environment's diffuse light against the ground truth: the irradiance against the exact cosine "
+        "convolution (irradiance.csv), and a matte cube and sphere rendered against the reference render "
+        "(matte.csv)",
+        "builtin:studio, every Blender HDRI installed and a generated sun",
+        [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
+            HeadlessContext context;
+            const std::vector<NamedEnvironment> environments = diffuseEnvironments(files);
+            std::vector<IrradianceErrorRow> irradiance;
+            std::vector<MatteRow> matte;
+            for (const NamedEnvironment& environment : environments) {
+                const std::vector<IrradianceErrorRow> rows =
+                    measureIrradiance(environment, quick ? 64 : 256, quick ? 256 : 4096);
+                irradiance.insert(irradiance.end(), rows.begin(), rows.end());
+                for (EnvironmentMethod method : {EnvironmentMethod::SplitSum, EnvironmentMethod::Dominant}) {
+                    for (MatteShape shape : {MatteShape::Cube, MatteShape::Sphere}) {
+                        MatteOptions options;
+                        options.size = quick ? 32 : 64;
+                        options.samples = quick ? 256 : 1024;
+                        options.shading.method = method;
+                        matte.push_back(measureMatte(environment, shape, options));
+                    }
+                }
+                std::cerr << "diffuse-accuracy: " << environment.name << " measured\n";
             }
-            for (MatteShape shape : {MatteShape::Cube, MatteShape::Sphere}) {
-                matte.push_back(measureMatte(environment, shape, options->quick ? 32 : 64, options->quick ? 256 : 1024));
-                std::cerr << environment.name << " " << matte.back().shape << ": mean " << matte.back().meanRatio << "\n";
-            }
-        }
-        writeOutputText((folder / "irradiance.csv").string(), irradianceCsv(irradiance));
-        writeOutputText((folder / "matte.csv").string(), matteCsv(matte));
-        std::cout << matteCsv(matte);
-    };
+            writeOutputText((folder / "irradiance.csv").string(), irradianceCsv(irradiance));
+            writeOutputText((folder / "matte.csv").string(), matteCsv(matte));
+            std::cout << matteCsv(matte);
+        });
 }
 
 Command addLightingAccuracyCommand(CLI::App& app) {
-    struct Options {
-        std::string outDir;
-        bool quick = false;
-        std::vector<std::string> environments;
-    };
-    auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand(
-        "lighting-accuracy",
+    return addEnvironmentMeasurementCommand(
+        app, "lighting-accuracy",
         "The split sum and its variants against the ground truth under environments, with their frame cost: "
-        "split_sum.csv, sh.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
-        "and sphere and tube lights as area-accuracy measures them");
-    command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
-    command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
-    command->add_option("--environment", options->environments,
-                        "An .hdr or .exr to measure under (repeatable; default: builtin:studio and Blender's "
-                        "sunrise.exr and interior.exr when installed)");
-    return [options] {
-        const std::filesystem::path folder = outputFolder(options->outDir);
-        const std::vector<NamedEnvironment> environments = lightingEnvironments(options->environments);
-        HeadlessContext context;
-        const LightingAccuracyResult result = runLightingAccuracy(environments, options->quick);
-        writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
-        writeOutputText((folder / "sh.csv").string(), shCsv(result.accuracy.sh));
-        writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
-        writeLightingChart(folder, result);
-        for (const NamedEnvironment& environment : environments) {
-            writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
-                        encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));
-        }
-        std::cout << lightingCostCsv(result);
-        writeAreaAccuracy(folder, options->quick);
-    };
+        "split_sum.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
+        "and sphere and tube lights as area-accuracy measures them",
+        "builtin:studio and Blender's sunrise.exr and interior.exr when installed",
+        [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
+            const std::vector<NamedEnvironment> environments = lightingEnvironments(files);
+            HeadlessContext context;
+            const LightingAccuracyResult result = runLightingAccuracy(environments, quick);
+            writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
+            writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
+            writeLightingChart(folder, result);
+            for (const NamedEnvironment& environment : environments) {
+                writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
+                            encodePng(roughnessMetallicGrid(environment, quick ? 48 : 128, quick ? 8 : 256)));
+            }
+            std::cout << lightingCostCsv(result);
+            writeAreaAccuracy(folder, quick);
+        });
 }
 
 }  // namespace patina::cli

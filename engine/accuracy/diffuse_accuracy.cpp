@@ -25,18 +25,6 @@ namespace patina {
 
 namespace {
 
-// `count` unit vectors spread evenly over the sphere (a Fibonacci lattice).
-std::vector<glm::vec3> fibonacciNormals(int count) {
-    std::vector<glm::vec3> normals;
-    const float golden = std::numbers::pi_v<float> * (3.0f - std::sqrt(5.0f));
-    for (int i = 0; i < count; ++i) {
-        const float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(count);
-        const float radius = std::sqrt(std::max(0.0f, 1.0f - y * y));
-        normals.emplace_back(radius * std::cos(golden * float(i)), y, radius * std::sin(golden * float(i)));
-    }
-    return normals;
-}
-
 IrradianceErrorRow errorsOf(const std::string& environment, const std::string& method,
                             const std::vector<double>& exact, const std::vector<double>& values) {
     IrradianceErrorRow row{environment, method};
@@ -108,9 +96,10 @@ Scene matteScene(const NamedEnvironment& environment) {
 
 }  // namespace
 
-std::vector<IrradianceErrorRow> measureIrradiance(const NamedEnvironment& named, int normalCount, int referenceSamples) {
+std::vector<IrradianceErrorRow> measureIrradiance(const NamedEnvironment& named, int normalCount,
+                                                  int referenceSamples) {
     const Environment& environment = *named.environment;
-    const std::vector<glm::vec3> normals = fibonacciNormals(normalCount);
+    const std::vector<glm::vec3> normals = spreadNormals(normalCount);
     const ExactIrradiance exactIrradiance(environment.image);
     std::vector<double> exact(normals.size());
     parallelFor(normals.size(), [&](size_t i) { exact[i] = luminance(glm::vec3(exactIrradiance.at(normals[i]))); });
@@ -122,16 +111,18 @@ std::vector<IrradianceErrorRow> measureIrradiance(const NamedEnvironment& named,
         }
         rows.push_back(errorsOf(named.name, method, exact, values));
     };
-    for (const auto& [face, cells] :
-         {std::pair{32, 16}, std::pair{16, 16}, std::pair{64, 16}, std::pair{32, 8}, std::pair{32, 32}}) {
+    add("irradiance map " + std::to_string(kIrradianceFaceSize) + " cells " + std::to_string(kIrradianceCellSize) +
+            " (as shipped)",
+        [&](glm::vec3 n) { return sampleCubeLevel(environment.irradiance, n); });
+    for (const auto& [face, cells] : {std::pair{16, 16}, std::pair{64, 16}, std::pair{32, 8}, std::pair{32, 32}}) {
         const CubeLevel map = irradianceCube(environment.image, face, cells);
-        add("irradiance map " + std::to_string(face) + ", cells " + std::to_string(cells),
+        add("irradiance map " + std::to_string(face) + " cells " + std::to_string(cells),
             [&](glm::vec3 n) { return sampleCubeLevel(map, n); });
     }
     const ShCoefficients sh = projectSH(environment.image), windowed = windowSH(sh);
-    add("SH 9 coefficients, clamped at 0",
+    add("SH 9 coefficients clamped at 0",
         [&](glm::vec3 n) { return glm::max(irradianceUnclamped(sh, n), glm::vec3(0.0f)); });
-    add("SH 9 coefficients, windowed and clamped",
+    add("SH 9 coefficients windowed and clamped",
         [&](glm::vec3 n) { return glm::max(irradianceUnclamped(windowed, n), glm::vec3(0.0f)); });
     // The Monte Carlo reference's own estimate: a white Lambert surface's diffuse lobe is E / pi.
     const EnvironmentDistribution distribution(environment.image);
@@ -148,7 +139,7 @@ std::vector<IrradianceErrorRow> measureIrradiance(const NamedEnvironment& named,
                                                    normals[i], options)
                                      .value);
     });
-    rows.push_back(errorsOf(named.name, "reference, " + std::to_string(referenceSamples) + " iterations", exact,
+    rows.push_back(errorsOf(named.name, "reference " + std::to_string(referenceSamples) + " iterations", exact,
                             estimates));
     return rows;
 }
@@ -157,7 +148,8 @@ const char* matteShapeName(MatteShape shape) {
     return shape == MatteShape::Cube ? "cube" : "sphere";
 }
 
-MatteRow measureMatte(const NamedEnvironment& named, MatteShape shape, int size, int samples) {
+MatteRow measureMatte(const NamedEnvironment& named, MatteShape shape, const MatteOptions& matte) {
+    const int size = matte.size, samples = matte.samples;
     const Scene scene = matteScene(named);
     const std::shared_ptr<const Mesh> mesh = shape == MatteShape::Cube ? turnedCube() : builtinMesh(MeshKind::Sphere);
     const PreparedScene prepared{scene, mesh, named.environment};
@@ -165,13 +157,15 @@ MatteRow measureMatte(const NamedEnvironment& named, MatteShape shape, int size,
     RenderSettings settings;
     settings.width = settings.height = size;
     settings.samples = 1;   // pixel centres, as the ground truth
+    settings.environment = matte.shading;
     const HdrImage render = renderer.render(prepared, settings).hdr;
     settings.channel = *channelFromName("diffuse");
     const HdrImage diffuse = renderer.render(prepared, settings).hdr;
     const PixelSurfaces surfaces = rasterizeSurfaces(prepared, size, size);
     ReferenceRenderOptions referenceOptions;
     referenceOptions.samplesPerPixel = samples;
-    const ReferenceImage reference = renderReference(prepared, surfaces, referenceOptions);
+    const ReferenceImage reference =
+        matte.referenceRender ? renderReference(prepared, surfaces, referenceOptions) : ReferenceImage{};
     // The truth with its diffuse lobe exact, its specular lobe by the same estimator.
     const ExactIrradiance exact(named.environment->image);
     const EnvironmentDistribution distribution(named.environment->image);
@@ -187,7 +181,8 @@ MatteRow measureMatte(const NamedEnvironment& named, MatteShape shape, int size,
         options.samples = samples;
         options.seed = 0xD1B54A32D192ED03ull * (i + 1);
         options.diffuse = false;
-        specular[i] = referenceRadiance(BrdfModelId::Epic, material, environment, {}, p.position, N, p.toViewer, options);
+        specular[i] =
+            referenceRadiance(BrdfModelId::Epic, material, environment, {}, p.position, N, p.toViewer, options);
     });
     std::vector<double> ratios, truthErrors, referenceRatios, referenceErrors, diffuseRatios;
     double referenceVariance = 0.0;
@@ -201,18 +196,24 @@ MatteRow measureMatte(const NamedEnvironment& named, MatteShape shape, int size,
         const double truth = exactLobe + luminance(specular[size_t(i)].value);
         ratios.push_back(shown / std::max(truth, 1e-12));
         truthErrors.push_back(luminance(specular[size_t(i)].standardError) / std::max(truth, 1e-12));
-        const double estimate = luminance(&reference.value.rgb[pixel * 3]);
-        referenceRatios.push_back(shown / std::max(estimate, 1e-12));
-        referenceErrors.push_back(luminance(&reference.standardError.rgb[pixel * 3]) / std::max(estimate, 1e-12));
-        referenceVariance += referenceRatios.back() * referenceRatios.back() * referenceErrors.back() * referenceErrors.back();
+        if (matte.referenceRender) {
+            const double estimate = luminance(&reference.value.rgb[pixel * 3]);
+            const double ratio = shown / std::max(estimate, 1e-12);
+            const double error = luminance(&reference.standardError.rgb[pixel * 3]) / std::max(estimate, 1e-12);
+            referenceRatios.push_back(ratio);
+            referenceErrors.push_back(error);
+            referenceVariance += ratio * ratio * error * error;
+        }
         diffuseRatios.push_back(luminance(&diffuse.rgb[pixel * 3]) / std::max(exactLobe, 1e-12));
     }
-    MatteRow row{named.name, matteShapeName(shape), int(ratios.size()), mean(ratios), percentile(ratios, 0.05),
+    MatteRow row{named.name, matteShapeName(shape), std::string(environmentMethodName(matte.shading.method)),
+                 int(ratios.size()), mean(ratios), percentile(ratios, 0.05),
                  percentile(ratios, 0.5), percentile(ratios, 0.95)};
     row.truthMedianRelativeError = percentile(truthErrors, 0.5);
     row.truthP95RelativeError = percentile(truthErrors, 0.95);
     row.referenceMeanRatio = mean(referenceRatios);
-    row.referenceMeanRatioStandardError = std::sqrt(referenceVariance) / double(std::max<size_t>(ratios.size(), 1));
+    row.referenceMeanRatioStandardError =
+        matte.referenceRender ? std::sqrt(referenceVariance) / double(std::max<size_t>(ratios.size(), 1)) : std::nan("");
     row.referenceMedianRelativeError = percentile(referenceErrors, 0.5);
     row.diffuseMeanRatio = mean(diffuseRatios);
     row.diffuseP5 = percentile(diffuseRatios, 0.05);
@@ -252,12 +253,12 @@ std::string irradianceCsv(const std::vector<IrradianceErrorRow>& rows) {
 
 std::string matteCsv(const std::vector<MatteRow>& rows) {
     std::ostringstream csv;
-    csv << "environment,shape,pixels,mean_ratio,p5,p50,p95,truth_median_rse,truth_p95_rse,reference_mean_ratio,"
+    csv << "environment,shape,method,pixels,mean_ratio,p5,p50,p95,truth_median_rse,truth_p95_rse,reference_mean_ratio,"
            "reference_mean_ratio_se,reference_median_rse,diffuse_mean_ratio,diffuse_p5,diffuse_p95\n";
     csv.precision(6);
     for (const MatteRow& row : rows) {
-        csv << row.environment << "," << row.shape << "," << row.pixels << "," << row.meanRatio << "," << row.p5 << ","
-            << row.p50 << "," << row.p95 << "," << row.truthMedianRelativeError << "," << row.truthP95RelativeError
+        csv << row.environment << "," << row.shape << "," << row.method << "," << row.pixels << "," << row.meanRatio
+            << "," << row.p5 << "," << row.p50 << "," << row.p95 << "," << row.truthMedianRelativeError << "," << row.truthP95RelativeError
             << "," << row.referenceMeanRatio << "," << row.referenceMeanRatioStandardError << ","
             << row.referenceMedianRelativeError << "," << row.diffuseMeanRatio << "," << row.diffuseP5 << ","
             << row.diffuseP95 << "\n";

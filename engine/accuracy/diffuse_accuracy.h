@@ -10,6 +10,7 @@
 
 #include "accuracy/split_sum_accuracy.h"
 #include "common/hdr_image.h"
+#include "gl/environment_method.h"
 
 namespace patina {
 
@@ -33,7 +34,7 @@ enum class MatteShape { Cube, Sphere };
 const char* matteShapeName(MatteShape shape);
 
 struct MatteRow {
-    std::string environment, shape;
+    std::string environment, shape, method;   // method: how the renderer shaded it (environmentMethodName)
     int pixels = 0;
     // render / truth on luminance over the object's pixels: the mean and the 5th, 50th and 95th
     // percentiles. The truth is the integral the reference estimates with its diffuse lobe
@@ -53,9 +54,15 @@ struct MatteRow {
     double diffuseMeanRatio = 0.0, diffuseP5 = 0.0, diffuseP95 = 0.0;
 };
 
-// Needs a current GL context. `size`: the image's side; `samples`: the reference's iterations a
-// pixel (the reference render's and the specular lobe's).
-MatteRow measureMatte(const NamedEnvironment& environment, MatteShape shape, int size, int samples);
+struct MatteOptions {
+    int size = 64;          // the image's side
+    int samples = 1024;     // the reference's iterations a pixel (the specular lobe's and the render's)
+    bool referenceRender = true;   // also the whole reference render (the reference_* values; else NaN)
+    EnvironmentShading shading;    // how the renderer shades the environment
+};
+
+// Needs a current GL context.
+MatteRow measureMatte(const NamedEnvironment& environment, MatteShape shape, const MatteOptions& options);
 
 // A test environment with a small sun: a sky of radiance `sky` (a little brighter at the
 // zenith, a darker ground) and a disc of `radius` degrees, 10^4 times the sky's radiance, at
@@ -64,7 +71,7 @@ HdrImage sunEnvironment(int width, float elevation = 30.0f, float radius = 0.5f)
 
 // CSV: environment,method,mean_relative_error,max_relative_error,mean_signed_error
 std::string irradianceCsv(const std::vector<IrradianceErrorRow>& rows);
-// CSV: environment,shape,pixels,mean_ratio,p5,p50,p95,truth_median_rse,truth_p95_rse,
+// CSV: environment,shape,method,pixels,mean_ratio,p5,p50,p95,truth_median_rse,truth_p95_rse,
 // reference_mean_ratio,reference_mean_ratio_se,reference_median_rse,diffuse_mean_ratio,diffuse_p5,
 // diffuse_p95
 std::string matteCsv(const std::vector<MatteRow>& rows);

@@ -11,7 +11,8 @@ ExactIrradiance::ExactIrradiance(const HdrImage& image) {
         for (int x = 0; x < image.width; ++x) {
             const float* p = &image.rgb[(size_t(y) * size_t(image.width) + size_t(x)) * 3];
             if (p[0] > 0.0f || p[1] > 0.0f || p[2] > 0.0f) {
-                pixels_.push_back({glm::vec3(pixelMoment(image.width, image.height, x, y)), glm::vec3(p[0], p[1], p[2])});
+                const glm::vec3 moment(pixelMoment(image.width, image.height, x, y));
+                pixels_.push_back({moment, glm::vec3(p[0], p[1], p[2])});
             }
         }
     }
