@@ -9,6 +9,7 @@
 
 #include "bench/bench.h"
 #include "bench/lighting_accuracy.h"
+#include "accuracy/model_split_sum.h"
 #include "assets/asset_cache.h"
 #include "cli.h"
 #include "accuracy/diffuse_accuracy.h"
@@ -92,11 +93,16 @@ Command addStabilityCommand(CLI::App& app) {
 
 Command addFurnaceCommand(CLI::App& app) {
     return addMeasurementCommand(
-        app, "furnace", "White furnace: specular albedo with F = 1 of every model: furnace.csv and furnace.png",
+        app, "furnace",
+        "White furnace: specular albedo with F = 1 of every model (furnace.csv, furnace.png), and a white "
+        "dielectric and metal whole, split sum and ground truth, under epic, gltf and gltf-single (material_furnace.csv)",
         [](const std::filesystem::path& folder, bool quick) {
             const std::vector<FurnaceCurve> curves = whiteFurnace(quick ? 10 : 40, quick ? 1024 : 4096);
             writeOutputText((folder / "furnace.csv").string(), furnaceCsv(curves));
             writeChart(folder / "furnace", furnaceChart(curves), false);
+            const std::vector<MaterialFurnaceRow> materials = materialFurnace(
+                {BrdfModelId::Epic, BrdfModelId::Gltf, BrdfModelId::GltfSingle}, quick ? 4 : 10, quick ? 256 : 2048);
+            writeOutputText((folder / "material_furnace.csv").string(), materialFurnaceCsv(materials));
         });
 }
 
@@ -221,6 +227,7 @@ Command addLightingAccuracyCommand(CLI::App& app) {
         app, "lighting-accuracy",
         "The split sum and its variants against the ground truth under environments, with their frame cost: "
         "split_sum.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
+        "whole materials by BRDF model (epic, gltf, gltf-single) against their ground truth: model_split_sum.csv; "
         "and sphere and tube lights as area-accuracy measures them",
         "builtin:studio and Blender's sunrise.exr and interior.exr when installed",
         [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
@@ -235,6 +242,9 @@ Command addLightingAccuracyCommand(CLI::App& app) {
                             encodePng(roughnessMetallicGrid(environment, quick ? 48 : 128, quick ? 8 : 256)));
             }
             std::cout << lightingCostCsv(result);
+            const std::vector<BrdfModelId> models = {BrdfModelId::Epic, BrdfModelId::Gltf, BrdfModelId::GltfSingle};
+            writeOutputText((folder / "model_split_sum.csv").string(),
+                            modelSplitSumCsv(measureModelSplitSum(environments, models, quick)));
             writeAreaAccuracy(folder, quick);
         });
 }

@@ -18,7 +18,18 @@
 
 namespace patina {
 
-namespace {
+// `count` unit vectors spread evenly over the sphere (a Fibonacci lattice): surfaces facing up,
+// down and sideways, so a sun, a floor and the horizon all count.
+std::vector<glm::vec3> spreadNormals(int count) {
+    std::vector<glm::vec3> normals;
+    const float golden = std::numbers::pi_v<float> * (3.0f - std::sqrt(5.0f));
+    for (int i = 0; i < count; ++i) {
+        const float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(count);
+        const float radius = std::sqrt(std::max(0.0f, 1.0f - y * y));
+        normals.emplace_back(radius * std::cos(golden * float(i)), y, radius * std::sin(golden * float(i)));
+    }
+    return normals;
+}
 
 // V at NoV to N, turned about N by an azimuth of its own for each normal.
 glm::vec3 viewAt(glm::vec3 N, float NoV, int index) {
@@ -28,6 +39,8 @@ glm::vec3 viewAt(glm::vec3 N, float NoV, int index) {
     const glm::vec3 tangent = t * std::cos(phi) + b * std::sin(phi);
     return glm::normalize(NoV * N + std::sqrt(std::max(0.0f, 1.0f - NoV * NoV)) * tangent);
 }
+
+namespace {
 
 shader::SurfaceMaterial metal(float f0, float roughness) {
     return shader::deriveSurfaceMaterial(glm::vec3(f0), roughness, 0.5f, 1.0f);
@@ -272,17 +285,6 @@ SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environmen
         }
     }
     return result;
-}
-
-std::vector<glm::vec3> spreadNormals(int count) {
-    std::vector<glm::vec3> normals;
-    const float golden = std::numbers::pi_v<float> * (3.0f - std::sqrt(5.0f));
-    for (int i = 0; i < count; ++i) {
-        const float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(count);
-        const float radius = std::sqrt(std::max(0.0f, 1.0f - y * y));
-        normals.emplace_back(radius * std::cos(golden * float(i)), y, radius * std::sin(golden * float(i)));
-    }
-    return normals;
 }
 
 std::string splitSumCsv(const std::vector<SplitSumErrorRow>& rows) {
