@@ -29,6 +29,7 @@ Command addBenchRenderCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addFurnaceCommand(CLI::App& app);
 Command addLightingAccuracyCommand(CLI::App& app);
+Command addDiffuseAccuracyCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addAreaAccuracyCommand(CLI::App& app);
 // `patina inspect`: one pixel's story as JSON.

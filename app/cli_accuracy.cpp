@@ -1,6 +1,9 @@
-// The speed/accuracy commands: bench, stability, furnace and lighting-accuracy, and what they
-// share with the other measurements (cli.h). Each writes into --out-dir (default: the current folder).
+// The speed/accuracy commands: bench, stability, furnace, lighting-accuracy and diffuse-accuracy,
+// and what they share with the other measurements (cli.h). Each writes into --out-dir (default:
+// the current folder).
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -9,6 +12,7 @@
 #include "accuracy/model_split_sum.h"
 #include "assets/asset_cache.h"
 #include "cli.h"
+#include "accuracy/diffuse_accuracy.h"
 #include "accuracy/furnace.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
@@ -134,45 +138,115 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
     }
     return environments;
 }
+// What diffuse-accuracy measures under by default: the built-in studio, every Blender HDRI
+// installed, and a small sun 10^4 times its sky's radiance (sunEnvironment), made here.
+std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>& files) {
+    std::vector<std::string> sources = files;
+    if (sources.empty()) {
+        sources = {"builtin:studio"};
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(kBlenderWorlds, error)) {
+            if (entry.path().extension() == ".exr") {
+                sources.push_back(entry.path().string());
+            }
+        }
+        std::sort(sources.begin() + 1, sources.end());
+        if (sources.size() == 1) {
+            std::cerr << "diffuse-accuracy: " << kBlenderWorlds
+                      << " holds no HDRIs (apt-get install blender-data); measured without them\n";
+        }
+    }
+    std::vector<NamedEnvironment> environments = lightingEnvironments(sources);
+    for (NamedEnvironment& environment : environments) {
+        if (environment.environment->source.starts_with("builtin:")) {
+            environment.name = "built-in " + environment.name;   // beside Blender's studio.exr
+        }
+    }
+    if (files.empty()) {
+        environments.push_back({"sun", prepareEnvironment(sunEnvironment(1024), "generated:sun")});
+    }
+    return environments;
+}
 }  // namespace
 
-Command addLightingAccuracyCommand(CLI::App& app) {
+// A measurement under environments: --out-dir, --quick and --environment F (repeatable), whose
+// default `defaults` names.
+using EnvironmentMeasurement =
+    std::function<void(const std::filesystem::path&, bool, const std::vector<std::string>&)>;
+Command addEnvironmentMeasurementCommand(CLI::App& app, const char* name, const std::string& description,
+                                         const std::string& defaults, EnvironmentMeasurement measure) {
     struct Options {
         std::string outDir;
         bool quick = false;
         std::vector<std::string> environments;
     };
     auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand(
-        "lighting-accuracy",
-        "The split sum and its variants against the ground truth under environments, with their frame cost: "
-        "split_sum.csv, sh.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
-        "whole materials by BRDF model (epic, gltf, gltf-single) against their ground truth: model_split_sum.csv; "
-        "and sphere and tube lights as area-accuracy measures them");
+    CLI::App* command = app.add_subcommand(name, description);
     command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
     command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
     command->add_option("--environment", options->environments,
-                        "An .hdr or .exr to measure under (repeatable; default: builtin:studio and Blender's "
-                        "sunrise.exr and interior.exr when installed)");
-    return [options] {
-        const std::filesystem::path folder = outputFolder(options->outDir);
-        const std::vector<NamedEnvironment> environments = lightingEnvironments(options->environments);
-        HeadlessContext context;
-        const LightingAccuracyResult result = runLightingAccuracy(environments, options->quick);
-        writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
-        writeOutputText((folder / "sh.csv").string(), shCsv(result.accuracy.sh));
-        writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
-        writeLightingChart(folder, result);
-        for (const NamedEnvironment& environment : environments) {
-            writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
-                        encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));
-        }
-        std::cout << lightingCostCsv(result);
-        writeOutputText((folder / "model_split_sum.csv").string(),
-                        modelSplitSumCsv(measureModelSplitSum(environments, {BrdfModelId::Epic, BrdfModelId::Gltf, BrdfModelId::GltfSingle},
-                                                              options->quick)));
-        writeAreaAccuracy(folder, options->quick);
-    };
+                        "An .hdr or .exr to measure under (repeatable; default: " + defaults + ")");
+    return [options, measure] { measure(outputFolder(options->outDir), options->quick, options->environments); };
+}
+
+Command addDiffuseAccuracyCommand(CLI::App& app) {
+    return addEnvironmentMeasurementCommand(
+        app, "diffuse-accuracy",
+        "The environment's diffuse light against the ground truth: the irradiance against the exact cosine "
+        "convolution (irradiance.csv), and a matte cube and sphere rendered against the reference render "
+        "(matte.csv)",
+        "builtin:studio, every Blender HDRI installed and a generated sun",
+        [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
+            HeadlessContext context;
+            const std::vector<NamedEnvironment> environments = diffuseEnvironments(files);
+            std::vector<IrradianceErrorRow> irradiance;
+            std::vector<MatteRow> matte;
+            for (const NamedEnvironment& environment : environments) {
+                const std::vector<IrradianceErrorRow> rows =
+                    measureIrradiance(environment, quick ? 64 : 256, quick ? 256 : 4096);
+                irradiance.insert(irradiance.end(), rows.begin(), rows.end());
+                for (EnvironmentMethod method : {EnvironmentMethod::SplitSum, EnvironmentMethod::Dominant}) {
+                    for (MatteShape shape : {MatteShape::Cube, MatteShape::Sphere}) {
+                        MatteOptions options;
+                        options.size = quick ? 32 : 64;
+                        options.samples = quick ? 256 : 1024;
+                        options.shading.method = method;
+                        matte.push_back(measureMatte(environment, shape, options));
+                    }
+                }
+                std::cerr << "diffuse-accuracy: " << environment.name << " measured\n";
+            }
+            writeOutputText((folder / "irradiance.csv").string(), irradianceCsv(irradiance));
+            writeOutputText((folder / "matte.csv").string(), matteCsv(matte));
+            std::cout << matteCsv(matte);
+        });
+}
+
+Command addLightingAccuracyCommand(CLI::App& app) {
+    return addEnvironmentMeasurementCommand(
+        app, "lighting-accuracy",
+        "The split sum and its variants against the ground truth under environments, with their frame cost: "
+        "split_sum.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
+        "whole materials by BRDF model (epic, gltf, gltf-single) against their ground truth: model_split_sum.csv; "
+        "and sphere and tube lights as area-accuracy measures them",
+        "builtin:studio and Blender's sunrise.exr and interior.exr when installed",
+        [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
+            const std::vector<NamedEnvironment> environments = lightingEnvironments(files);
+            HeadlessContext context;
+            const LightingAccuracyResult result = runLightingAccuracy(environments, quick);
+            writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));
+            writeOutputText((folder / "lighting_cost.csv").string(), lightingCostCsv(result));
+            writeLightingChart(folder, result);
+            for (const NamedEnvironment& environment : environments) {
+                writeOutput((folder / ("grid_" + environment.name + ".png")).string(),
+                            encodePng(roughnessMetallicGrid(environment, quick ? 48 : 128, quick ? 8 : 256)));
+            }
+            std::cout << lightingCostCsv(result);
+            const std::vector<BrdfModelId> models = {BrdfModelId::Epic, BrdfModelId::Gltf, BrdfModelId::GltfSingle};
+            writeOutputText((folder / "model_split_sum.csv").string(),
+                            modelSplitSumCsv(measureModelSplitSum(environments, models, quick)));
+            writeAreaAccuracy(folder, quick);
+        });
 }
 
 }  // namespace patina::cli

@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
                      patina::cli::addSheetCommand, patina::cli::addBenchCommand,
                      patina::cli::addBenchRenderCommand,
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
-                     patina::cli::addLightingAccuracyCommand, patina::cli::addAreaAccuracyCommand,
+                     patina::cli::addLightingAccuracyCommand, patina::cli::addDiffuseAccuracyCommand,
+                     patina::cli::addAreaAccuracyCommand,
                      patina::cli::addExportCommand, patina::cli::addValidateCommand,
                      patina::cli::addInspectCommand, patina::cli::addChartCommand,
                      patina::cli::addDifferenceCommand}) {

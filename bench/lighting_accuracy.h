@@ -42,7 +42,7 @@ std::string lightingCostCsv(const LightingAccuracyResult& result);
 Chart lightingAccuracyChart(const LightingAccuracyResult& result);
 // What lightingAccuracyChart draws, back from split_sum.csv (splitSumCsv) and lighting_cost.csv
 // (its methods' frame times; the per-environment means are recomputed from the rows): what
-// `patina chart lighting` redraws it from. sh.csv is not charted. `quick`: the CSVs are from a
+// `patina chart lighting` redraws it from. `quick`: the CSVs are from a
 // --quick run (the frame size is not in them). Throws InputError naming the file.
 LightingAccuracyResult parseLightingAccuracy(const CsvFile& splitSum, const CsvFile& cost, bool quick);
 

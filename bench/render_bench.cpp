@@ -508,7 +508,7 @@ void measureEnvironment(BenchRenderer& renderer, const RenderBenchOptions& optio
     }
 }
 
-// Making a 1024 x 512 HDRI ready to light with (decode, prefilter, coefficients, the disk
+// Making a 1024 x 512 HDRI ready to light with (decode, prefilter, irradiance map, the disk
 // cache written), then again from the disk cache alone, each in a cache folder of its own
 // (PATINA_CACHE_DIR): Blender's studio.exr when installed, else an image of the built-in
 // studio at that size as a Radiance file.

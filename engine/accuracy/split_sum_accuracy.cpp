@@ -283,43 +283,6 @@ SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environmen
                 }
             }
         }
-
-        // Diffuse: a white Lambert surface, irradiance / pi.
-        const std::vector<glm::vec3> normals = spreadNormals(options.quick ? 16 : 64);
-        std::vector<double> truth(normals.size());
-        parallelFor(normals.size(), [&](size_t i) {
-            ReferenceOptions referenceOptions;
-            referenceOptions.samples = referenceSamples;
-            referenceOptions.seed = 0x2545F4914F6CDD1Dull * (i + 1);
-            referenceOptions.specular = false;
-            const shader::SurfaceMaterial white = shader::deriveSurfaceMaterial(glm::vec3(1.0f), 1.0f, 0.0f, 0.0f);
-            truth[i] = luminance(referenceRadiance(BrdfModelId::Epic, white, reference, {}, glm::vec3(0), normals[i],
-                                                   normals[i], referenceOptions)
-                                     .value);
-        });
-        const ShCoefficients raw = projectSH(environment.image), windowed = windowSH(raw);
-        struct ShMethod {
-            const char* name;
-            const ShCoefficients* coefficients;
-            bool clamp;
-        };
-        for (const ShMethod method : {ShMethod{"SH 9 coefficients, unguarded", &raw, false},
-                                      ShMethod{"SH 9 coefficients, clamped at 0", &raw, true},
-                                      ShMethod{"SH 9 coefficients, windowed and clamped", &windowed, true}}) {
-            ShErrorRow row{named.name, method.name};
-            int negative = 0;
-            for (size_t i = 0; i < normals.size(); ++i) {
-                const glm::vec3 unclamped = irradianceUnclamped(*method.coefficients, normals[i]);
-                negative += luminance(unclamped) < 0.0f;
-                const glm::vec3 e = method.clamp ? glm::max(unclamped, glm::vec3(0.0f)) : unclamped;
-                const double error = std::abs(double(luminance(e)) / double(std::numbers::pi_v<float>) - truth[i]) /
-                                     std::max(truth[i], 1e-6);
-                row.meanRelativeError += error / double(normals.size());
-                row.maxRelativeError = std::max(row.maxRelativeError, error);
-            }
-            row.negativeFraction = double(negative) / double(normals.size());
-            result.sh.push_back(row);
-        }
     }
     return result;
 }
@@ -331,17 +294,6 @@ std::string splitSumCsv(const std::vector<SplitSumErrorRow>& rows) {
     for (const SplitSumErrorRow& row : rows) {
         csv << row.environment << ",\"" << row.method << "\"," << row.NoV << "," << row.roughness << "," << row.f0 << ","
             << row.relativeError << "," << row.truthRelativeStandardError << "\n";
-    }
-    return csv.str();
-}
-
-std::string shCsv(const std::vector<ShErrorRow>& rows) {
-    std::ostringstream csv;
-    csv << "environment,method,mean_relative_error,max_relative_error,negative_fraction\n";
-    csv.precision(6);
-    for (const ShErrorRow& row : rows) {
-        csv << row.environment << ",\"" << row.method << "\"," << row.meanRelativeError << "," << row.maxRelativeError
-            << "," << row.negativeFraction << "\n";
     }
     return csv.str();
 }

@@ -36,17 +36,9 @@ struct SplitSumErrorRow {
     double truthRelativeStandardError = 0.0;   // of the ground truth itself
 };
 
-// Diffuse: the 9-coefficient irradiance (with and without its guards) against the ground truth
-// of a white Lambert surface, over many normals.
-struct ShErrorRow {
-    std::string environment, method;
-    double meanRelativeError = 0.0, maxRelativeError = 0.0;
-    double negativeFraction = 0.0;   // of normals where the unguarded series is below 0
-};
-
+// The diffuse lobe is measured apart (diffuse_accuracy.h).
 struct SplitSumAccuracy {
     std::vector<SplitSumErrorRow> rows;
-    std::vector<ShErrorRow> sh;
 };
 
 // `count` unit vectors spread evenly over the sphere (a Fibonacci lattice): surfaces facing up,
@@ -63,8 +55,6 @@ SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environmen
 
 // CSV: environment,method,NoV,roughness,f0,relative_error,truth_relative_se
 std::string splitSumCsv(const std::vector<SplitSumErrorRow>& rows);
-// CSV: environment,method,mean_relative_error,max_relative_error,negative_fraction
-std::string shCsv(const std::vector<ShErrorRow>& rows);
 
 // The mean of a method's rows (all environments when `environment` is empty); NaN for none.
 double meanError(const std::vector<SplitSumErrorRow>& rows, const std::string& method,

@@ -19,8 +19,7 @@ std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::strin
     if (environment->prefiltered.empty()) {
         return nullptr;
     }
-    const ShCoefficients sh = projectSH(image);
-    environment->sh = settings.windowSH ? windowSH(sh) : sh;
+    environment->irradiance = irradianceCube(image);
     environment->image = std::move(image);
     return environment;
 }
@@ -38,9 +37,8 @@ glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial
     const std::function<glm::vec3(glm::vec3, float)> read = [&](glm::vec3 d, float lod) {
         return sampleCube(environment.prefiltered, d, lod);
     };
-    glm::vec3 sh[9];
-    std::copy(environment.sh.begin(), environment.sh.end(), sh);
-    return shadeEnvironment(model, read, environment.maxLod(), sh, intensity, rotationDegrees, material, N, V, dominant);
+    return shadeEnvironment(model, read, environment.maxLod(), irradianceReader(environment), intensity, rotationDegrees,
+                            material, N, V, dominant);
 }
 
 glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,
@@ -50,10 +48,12 @@ glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMat
     const std::function<glm::vec3(glm::vec3, float)> read = [&](glm::vec3 d, float lod) {
         return sampleCube(sourceChain, d, lod);
     };
-    glm::vec3 sh[9];
-    std::copy(environment.sh.begin(), environment.sh.end(), sh);
-    return shadeEnvironmentStochastic(model, read, float(sourceChain.front().size), sh, intensity, rotationDegrees,
-                                      material, N, V, count, jitter);
+    return shadeEnvironmentStochastic(model, read, float(sourceChain.front().size), irradianceReader(environment),
+                                      intensity, rotationDegrees, material, N, V, count, jitter);
+}
+
+std::function<glm::vec3(glm::vec3, float)> irradianceReader(const Environment& environment) {
+    return [&environment](glm::vec3 n, float) { return sampleCubeLevel(environment.irradiance, n); };
 }
 
 CubeChain sourceMipChain(const Environment& environment) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -6,8 +7,8 @@
 
 #include "common/hdr_image.h"
 #include "environment/cube_map.h"
+#include "environment/irradiance.h"
 #include "environment/prefilter.h"
-#include "environment/spherical_harmonics.h"
 #include "shading/brdf_model_id.h"
 #include "shading/shading.h"
 
@@ -15,19 +16,18 @@ namespace patina {
 
 struct EnvironmentSettings {
     PrefilterSettings prefilter;
-    bool windowSH = false;   // windowSH on top of the clamp (spherical_harmonics.h)
     bool operator==(const EnvironmentSettings&) const = default;
 };
 
 // An environment made ready to light with: the source image at full resolution (the ground
-// truth and the coefficients read it, never the chain), the prefiltered chain and the
-// irradiance coefficients. Immutable once made; prepared scenes share it (scene/prepared_scene.h).
+// truth and the irradiance read it, never the chain), the prefiltered chain and the irradiance
+// map (irradiance.h). Immutable once made; prepared scenes share it (scene/prepared_scene.h).
 struct Environment {
     std::string source;      // what it was made from: "builtin:studio", a path
     HdrImage image;          // equirect, invalid pixels replaced
     size_t replacedPixels = 0;
     CubeChain prefiltered;
-    ShCoefficients sh{};
+    CubeLevel irradiance;   // E(n) of irradiance.h, faces of kIrradianceFaceSize texels
     EnvironmentSettings settings;
 
     float maxLod() const { return float(prefiltered.size() - 1); }
@@ -44,7 +44,7 @@ std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const 
                                                    const std::string& source);
 
 // The split sum on the CPU for `model`: the same code as the GPU's (ibl_model.glsl), reading
-// the chain with the seamless trilinear filter of cube_map.h.
+// the chain and the irradiance map with the seamless filters of cube_map.h.
 glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material, const Environment& environment,
                                 float intensity, float rotationDegrees, glm::vec3 N, glm::vec3 V, bool dominant = false);
 
@@ -58,5 +58,10 @@ glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMat
 // The source as a cube of the chain's mip-0 size and its box-filtered mips, as
 // glGenerateMipmap makes them on the GPU (what filtered importance sampling reads).
 CubeChain sourceMipChain(const Environment& environment);
+
+// The irradiance map as the shared code reads it (ibl.glsl's irradianceFromMap, an
+// EnvironmentSource on the CPU): bilinear and seamless, as the GPU's sampler; refers to
+// `environment`, which must outlive it.
+std::function<glm::vec3(glm::vec3, float)> irradianceReader(const Environment& environment);
 
 }  // namespace patina

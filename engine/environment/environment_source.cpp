@@ -15,22 +15,28 @@
 namespace patina {
 
 namespace {
-// Bumped whenever the prefilter, the coefficients or the built-ins change what they make.
-constexpr uint32_t kCacheVersion = 2;   // 2: the lod mapping starts at the roughness floor
+// Bumped whenever the prefilter, the irradiance or the built-ins change what they make.
+// 2: the lod mapping starts at the roughness floor; 3: the irradiance map instead of 9 SH coefficients.
+constexpr uint32_t kCacheVersion = 3;
 constexpr uint64_t kMaxEnvironmentFileBytes = uint64_t(512) << 20;
 
 uint64_t settingsHash(const EnvironmentSettings& settings, uint64_t hash) {
     const int32_t values[] = {int32_t(kCacheVersion), settings.prefilter.levels, int32_t(settings.prefilter.samples),
-                              settings.windowSH ? 1 : 0};
+                              kIrradianceFaceSize, kIrradianceCellSize};
     return hashBytes(values, sizeof values, hash);
 }
 
-// The cache file: "PATINAENV", version, level count, each level's size and texels, the 27
-// coefficients. Floats as the machine stores them (a cache, not an interchange format).
+size_t levelBytes(const CubeLevel& level) {
+    return 4 + 6 * level.faces[0].size() * sizeof(float);
+}
+
+// The cache file: "PATINAENV", version, level count, each level's size and texels, then the
+// irradiance map as one more level. Floats as the machine stores them (a cache, not an
+// interchange format).
 std::vector<uint8_t> serialise(const Environment& environment) {
-    size_t total = 9 + 4 + 4 + sizeof environment.sh;
+    size_t total = 9 + 4 + 4 + levelBytes(environment.irradiance);
     for (const CubeLevel& level : environment.prefiltered) {
-        total += 4 + 6 * level.faces[0].size() * sizeof(float);
+        total += levelBytes(level);
     }
     std::vector<uint8_t> bytes(total);
     size_t at = 0;
@@ -42,14 +48,17 @@ std::vector<uint8_t> serialise(const Environment& environment) {
     put(&kCacheVersion, 4);
     const uint32_t levels = uint32_t(environment.prefiltered.size());
     put(&levels, 4);
-    for (const CubeLevel& level : environment.prefiltered) {
+    auto putLevel = [&](const CubeLevel& level) {
         const int32_t size = level.size;
         put(&size, 4);
         for (const std::vector<float>& face : level.faces) {
             put(face.data(), face.size() * sizeof(float));
         }
+    };
+    for (const CubeLevel& level : environment.prefiltered) {
+        putLevel(level);
     }
-    put(environment.sh.data(), sizeof environment.sh);
+    putLevel(environment.irradiance);
     return bytes;
 }
 
@@ -70,24 +79,31 @@ bool deserialise(const std::vector<uint8_t>& bytes, Environment& environment) {
         !get(&levels, 4) || levels == 0 || levels > 16) {
         return false;
     }
-    CubeChain chain;
-    for (uint32_t i = 0; i < levels; ++i) {
+    auto getLevel = [&](CubeLevel& level) {
         int32_t size = 0;
         if (!get(&size, 4) || size < 1 || size > 4096) {
             return false;
         }
-        CubeLevel level(size);
+        level = CubeLevel(size);
         for (std::vector<float>& face : level.faces) {
             if (!get(face.data(), face.size() * sizeof(float))) {
                 return false;
             }
         }
-        chain.push_back(std::move(level));
+        return true;
+    };
+    CubeChain chain(levels);
+    for (CubeLevel& level : chain) {
+        if (!getLevel(level)) {
+            return false;
+        }
     }
-    if (!get(environment.sh.data(), sizeof environment.sh) || at != bytes.size()) {
+    CubeLevel irradiance;
+    if (!getLevel(irradiance) || irradiance.size != kIrradianceFaceSize || at != bytes.size()) {
         return false;
     }
     environment.prefiltered = std::move(chain);
+    environment.irradiance = std::move(irradiance);
     return true;
 }
 

@@ -2,10 +2,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "shading/shading.h"
 
 namespace patina {
+
+namespace {
+// The real basis Y_lm for l <= 2 (Ramamoorthi and Hanrahan 2001, eq. 3) and the cosine lobe's
+// factors A_l: A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4 (eqs. 7-8).
+double shBasis(int index, glm::dvec3 n) {
+    switch (index) {
+    case 0: return 0.282095;
+    case 1: return 0.488603 * n.y;
+    case 2: return 0.488603 * n.z;
+    case 3: return 0.488603 * n.x;
+    case 4: return 1.092548 * n.x * n.y;
+    case 5: return 1.092548 * n.y * n.z;
+    case 6: return 0.315392 * (3.0 * n.z * n.z - 1.0);
+    case 7: return 1.092548 * n.x * n.z;
+    default: return 0.546274 * (n.x * n.x - n.y * n.y);
+    }
+}
+
+double shBandFactor(int index) {
+    const double pi = std::numbers::pi;
+    return index == 0 ? pi : index < 4 ? 2.0 * pi / 3.0 : pi / 4.0;
+}
+}  // namespace
 
 ShCoefficients projectSH(const HdrImage& image) {
     std::array<glm::dvec3, 9> sum{};
@@ -20,7 +44,7 @@ ShCoefficients projectSH(const HdrImage& image) {
             const float* p = &image.rgb[(size_t(y) * size_t(image.width) + size_t(x)) * 3];
             const glm::dvec3 radiance(p[0], p[1], p[2]);
             for (int i = 0; i < 9; ++i) {
-                sum[size_t(i)] += radiance * (double(shader::shBasis(i, d)) * solidAngle);
+                sum[size_t(i)] += radiance * (shBasis(i, glm::dvec3(d)) * solidAngle);
             }
         }
     }
@@ -42,9 +66,11 @@ ShCoefficients windowSH(const ShCoefficients& coefficients) {
 }
 
 glm::vec3 irradianceUnclamped(const ShCoefficients& coefficients, glm::vec3 n) {
-    glm::vec3 c[9];
-    std::copy(coefficients.begin(), coefficients.end(), c);
-    return shader::irradianceSHUnclamped(c, n);
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < 9; ++i) {
+        sum += glm::dvec3(coefficients[size_t(i)]) * (shBandFactor(i) * shBasis(i, glm::dvec3(n)));
+    }
+    return glm::vec3(sum);
 }
 
 }  // namespace patina

@@ -6,6 +6,7 @@ namespace patina {
 
 EnvironmentTexture::~EnvironmentTexture() {
     glDeleteTextures(1, &prefiltered_.texture);
+    glDeleteTextures(1, &irradiance_.texture);
     glDeleteTextures(1, &source_.texture);
 }
 
@@ -46,8 +47,9 @@ void EnvironmentTexture::bindCube(Cube& cube, const std::shared_ptr<const Enviro
     glActiveTexture(GL_TEXTURE0);
 }
 
-void EnvironmentTexture::bind(const std::shared_ptr<const Environment>& environment, int unit) {
+void EnvironmentTexture::bind(const std::shared_ptr<const Environment>& environment, int unit, int irradianceUnit) {
     bindCube(prefiltered_, environment, unit, [](const Environment& e) { return e.prefiltered; });
+    bindCube(irradiance_, environment, irradianceUnit, [](const Environment& e) { return CubeChain{e.irradiance}; });
 }
 
 void EnvironmentTexture::bindSource(const std::shared_ptr<const Environment>& environment, int unit) {

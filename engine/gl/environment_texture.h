@@ -9,8 +9,9 @@ namespace patina {
 // the caller owns (and deletes) the texture.
 unsigned uploadCubeChain(const CubeChain& chain);
 
-// An environment's prefiltered chain (and, when asked, its source chain) as a GL cube map (RGB32F, one mip per level, seamless
-// filtering on, trilinear), uploaded once per Environment shown. Needs a current context.
+// An environment's prefiltered chain and irradiance map (and, when asked, its source chain) as
+// GL cube maps (RGB32F, one mip per level, seamless filtering on, trilinear), uploaded once per
+// Environment shown. Needs a current context.
 class EnvironmentTexture {
 public:
     EnvironmentTexture() = default;
@@ -18,8 +19,9 @@ public:
     EnvironmentTexture(const EnvironmentTexture&) = delete;
     EnvironmentTexture& operator=(const EnvironmentTexture&) = delete;
 
-    // Uploads `environment` unless it is the one uploaded last, then binds it to `unit`.
-    void bind(const std::shared_ptr<const Environment>& environment, int unit);
+    // Uploads `environment` unless it is the one uploaded last, then binds its prefiltered chain
+    // to `unit` and its irradiance map to `irradianceUnit`.
+    void bind(const std::shared_ptr<const Environment>& environment, int unit, int irradianceUnit);
     // The same for its source and box-filtered mips (sourceMipChain), which the stochastic
     // mode reads.
     void bindSource(const std::shared_ptr<const Environment>& environment, int unit);
@@ -29,7 +31,7 @@ private:
         unsigned texture = 0;
         std::shared_ptr<const Environment> shown;
     };
-    Cube prefiltered_, source_;
+    Cube prefiltered_, irradiance_, source_;
     static void bindCube(Cube& cube, const std::shared_ptr<const Environment>& environment, int unit,
                          CubeChain (*chainOf)(const Environment&));
 };

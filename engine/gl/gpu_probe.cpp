@@ -65,7 +65,7 @@ std::vector<glm::vec3> GpuProbe::evaluate(const Material& material, const std::v
         s.programs.use(material.model, ShadingPrograms::Use::Probe, ShadingPrograms::Output::Linear, environmentLight);
     setMaterialUniforms(program, material);
     if (environmentLight) {
-        s.environment.bind(shown, ShadingPrograms::kEnvironmentMapUnit);
+        s.environment.bind(shown, ShadingPrograms::kEnvironmentMapUnit, ShadingPrograms::kEnvironmentIrradianceUnit);
         setEnvironmentUniforms(program, *shown, *environmentLight, ShadingPrograms::kEnvironmentMapUnit);
     }
 

@@ -414,7 +414,8 @@ void Renderer::Frame::choosePrograms() {
     }
     backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
     if (environment) {
-        s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit);
+        s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit,
+                          ShadingPrograms::kEnvironmentIrradianceUnit);
         if (environmentShading.method == EnvironmentMethod::Stochastic) {
             s.environment.bindSource(environmentMap, ShadingPrograms::kEnvironmentSourceUnit);
         }

@@ -95,7 +95,6 @@ void setEnvironmentUniforms(const GlProgram& program, const Environment& environ
     glUniform1f(program.uniform("uEnvironmentMaxLod"), environment.maxLod());
     glUniform1f(program.uniform("uEnvironmentIntensity"), light.intensity);
     glUniform2f(program.uniform("uEnvironmentRotation"), rotation.x, rotation.y);
-    glUniform3fv(program.uniform("uEnvironmentSH"), 9, &environment.sh[0].x);
     glUniform1f(program.uniform("uEnvironmentSourceSize"), float(environment.prefiltered.front().size));
 }
 

@@ -80,6 +80,7 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
         glUniform1i(program.uniform("uEnvironmentBrdf"), kEnvironmentBrdfUnit);
         glUniform1i(program.uniform("uEnvironmentMap"), kEnvironmentMapUnit);
         glUniform1i(program.uniform("uEnvironmentSource"), kEnvironmentSourceUnit);
+        glUniform1i(program.uniform("uEnvironmentIrradiance"), kEnvironmentIrradianceUnit);
     }
     return program;
 }

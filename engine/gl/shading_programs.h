@@ -55,12 +55,13 @@ public:
     // uLightIndex < 0.
     const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear, bool environment = false,
                          Surface surface = Surface::Factors);
-    // Texture units of the environment's cube map and BRDF table (unit 0 is the display pass's,
+    // Texture units of the environment's cube maps and BRDF table (unit 0 is the display pass's,
     // 1 the energy table's).
     static constexpr int kEnvironmentMapUnit = 2;
     static constexpr int kEnvironmentBrdfUnit = 3;
-    static constexpr int kEnvironmentSourceUnit = 4;   // the stochastic mode's source chain
-    static constexpr int kFirstMapUnit = 5;            // Surface::Maps: the maps' units (SurfaceMap order)
+    static constexpr int kEnvironmentSourceUnit = 4;       // the stochastic mode's source chain
+    static constexpr int kEnvironmentIrradianceUnit = 5;   // the irradiance map
+    static constexpr int kFirstMapUnit = 6;                // Surface::Maps: the maps' units (SurfaceMap order)
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);

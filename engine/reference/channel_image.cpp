@@ -43,7 +43,7 @@ std::optional<ChannelEnvironment> channelEnvironment(const PreparedScene& prepar
     ChannelEnvironment environment;
     environment.prefiltered = [shown](glm::vec3 d, float lod) { return sampleCube(shown->prefiltered, d, lod); };
     environment.maxLod = shown->maxLod();
-    std::copy(shown->sh.begin(), shown->sh.end(), environment.sh);
+    environment.irradiance = [shown, read = irradianceReader(*shown)](glm::vec3 n, float lod) { return read(n, lod); };
     environment.intensity = light->intensity;
     environment.rotationDegrees = light->rotationDegrees;
     return environment;

@@ -34,10 +34,8 @@ inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vecto
     if (environment) {
         SurfaceMaterial material = deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic);
         const vec2 rotation = environmentRotation(environment->rotationDegrees);
-        vec3 sh[9];
-        std::copy(std::begin(environment->sh), std::end(environment->sh), sh);
-        LightShares shares = environmentShares(environment->prefiltered, environment->maxLod, sh, rotation.x,
-                                               rotation.y, material, p.N, p.V, false);
+        LightShares shares = environmentShares(environment->prefiltered, environment->maxLod, environment->irradiance,
+                                               rotation.x, rotation.y, material, p.N, p.V, false);
         c = channelWithEnvironment(c, shares, environment->intensity, asked == -2);
     }
     return channelFinished(c);

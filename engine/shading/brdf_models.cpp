@@ -154,15 +154,14 @@ glm::vec2 environmentRotation(float rotationDegrees) {
 }
 
 glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod,
-                           const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                           shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                            const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant) {
     const glm::vec2 rotation = environmentRotation(rotationDegrees);
     const float c = rotation.x, s = rotation.y;
-    glm::vec3 sh[9];
-    std::copy(std::begin(coefficients), std::end(coefficients), sh);
     switch (id) {
-#define PATINA_SHADE(model, name, summary) \
-    PATINA_CASE(shader, model, shadeEnvironment(prefiltered, maxLod, sh, intensity, c, s, material, N, V, dominant))
+#define PATINA_SHADE(model, name, summary)                                                                      \
+    PATINA_CASE(shader, model,                                                                                  \
+                shadeEnvironment(prefiltered, maxLod, irradiance, intensity, c, s, material, N, V, dominant))
         PATINA_BRDF_MODELS(PATINA_SHADE)
 #undef PATINA_SHADE
     }
@@ -170,17 +169,15 @@ glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered
 }
 
 glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,
-                                     const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                                     shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                                      const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V,
                                      unsigned count, glm::vec2 jitter) {
     const glm::vec2 rotation = environmentRotation(rotationDegrees);
-    glm::vec3 sh[9];
-    std::copy(std::begin(coefficients), std::end(coefficients), sh);
     switch (id) {
-#define PATINA_SHADE(model, name, summary)                                                                  \
-    PATINA_CASE(shader, model,                                                                              \
-                shadeEnvironmentStochastic(source, sourceFaceSize, sh, intensity, rotation.x, rotation.y, material, \
-                                           N, V, count, jitter))
+#define PATINA_SHADE(model, name, summary)                                                                        \
+    PATINA_CASE(shader, model,                                                                                    \
+                shadeEnvironmentStochastic(source, sourceFaceSize, irradiance, intensity, rotation.x, rotation.y, \
+                                           material, N, V, count, jitter))
         PATINA_BRDF_MODELS(PATINA_SHADE)
 #undef PATINA_SHADE
     }

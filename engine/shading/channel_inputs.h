@@ -28,11 +28,12 @@ struct ChannelPoint {
 };
 
 // The environment as environment.glsl's uniforms give it: its prefiltered chain (any trilinear
-// lookup of direction and level), SH, intensity and rotation.
+// lookup of direction and level), its irradiance map (a lookup of direction), intensity and
+// rotation.
 struct ChannelEnvironment {
     std::function<glm::vec3(glm::vec3, float)> prefiltered;
     float maxLod = 0.0f;
-    glm::vec3 sh[9]{};
+    std::function<glm::vec3(glm::vec3, float)> irradiance;
     float intensity = 1.0f;
     float rotationDegrees = 0.0f;
 };

@@ -29,15 +29,16 @@ glm::vec2 environmentBrdf(BrdfModelId id, float NoV, float roughness);
 // CPU and as the GPU's uniform, computed once here so both turn by the same floats.
 glm::vec2 environmentRotation(float rotationDegrees);
 
-// shadeEnvironment of ibl_model.glsl for `id` (the CPU side of the GPU's split sum).
+// shadeEnvironment of ibl_model.glsl for `id` (the CPU side of the GPU's split sum); `irradiance`
+// reads the irradiance map (environment/environment.h's irradianceReader).
 glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod,
-                           const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                           shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                            const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant);
 
 // shadeEnvironmentStochastic of ibl_model.glsl for `id`: `count` filtered importance samples at
 // the real N and V read from `source`, the box-filtered mip chain of the environment's source.
 glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,
-                                     const glm::vec3 (&coefficients)[9], float intensity, float rotationDegrees,
+                                     shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                                      const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V,
                                      unsigned count, glm::vec2 jitter);
 

@@ -1,9 +1,10 @@
 // Image-based lighting, the parts every BRDF model shares (Karis 2013, "Real Shading in Unreal
 // Engine 4", section "Image-based lighting"): the Hammersley set and GGX sampler that the
 // tables, the prefilter and the ground truth all use, the prefilter itself, the roughness-to-mip
-// mapping, the equirect convention and the 9-coefficient irradiance. Shared GLSL / C++ like
+// mapping, the equirect convention and the irradiance map's read. Shared GLSL / C++ like
 // brdf.glsl; include after it. The includer defines, before this file:
-//   EnvironmentSource                          the prefilter's source (samplerCube on the GPU)
+//   EnvironmentSource                          a cube map: the prefilter's source, the prefiltered
+//                                              chain, the irradiance map (samplerCube on the GPU)
 //   sampleEnvironmentSource(source, dir, lod)  its trilinear, seamless read at a mip level
 
 // The 32 bits of `bits` in reverse order.
@@ -151,38 +152,9 @@ PATINA_INLINE vec3 prefilterEnvironment(EnvironmentSource source, vec3 R, real r
     return weight > 0.0f ? sum / weight : vec3(0.0f);
 }
 
-// Irradiance E(n) from the 9 coefficients L_lm of the radiance (Ramamoorthi and Hanrahan 2001,
-// "An Efficient Representation for Irradiance Environment Maps", eqs. 3, 7 and 8):
-// E(n) = sum over l <= 2 of A_l L_lm Y_lm(n), A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
-// Nine terms cannot represent a small bright source: the series rings, and on the far side of a
-// sun it goes negative. The guard is the clamp at 0 here (and, when chosen, a window the
-// coefficients carry already; environment/spherical_harmonics.h).
-PATINA_INLINE real shBasis(int index, vec3 n) {
-    if (index == 0) return 0.282095f;
-    if (index == 1) return 0.488603f * n.y;
-    if (index == 2) return 0.488603f * n.z;
-    if (index == 3) return 0.488603f * n.x;
-    if (index == 4) return 1.092548f * n.x * n.y;
-    if (index == 5) return 1.092548f * n.y * n.z;
-    if (index == 6) return 0.315392f * (3.0f * n.z * n.z - 1.0f);
-    if (index == 7) return 1.092548f * n.x * n.z;
-    return 0.546274f * (n.x * n.x - n.y * n.y);
-}
-
-PATINA_INLINE real shBandFactor(int index) {
-    if (index == 0) return PATINA_PI;
-    if (index < 4) return 2.0f * PATINA_PI / 3.0f;
-    return PATINA_PI / 4.0f;
-}
-
-PATINA_INLINE vec3 irradianceSHUnclamped(vec3 coefficients[9], vec3 n) {
-    vec3 sum = vec3(0.0f);
-    for (int i = 0; i < 9; ++i) {
-        sum += coefficients[i] * (shBandFactor(i) * shBasis(i, n));
-    }
-    return sum;
-}
-
-PATINA_INLINE vec3 irradianceSH(vec3 coefficients[9], vec3 n) {
-    return max(irradianceSHUnclamped(coefficients, n), vec3(0.0f));
+// The irradiance E(n) = integral of Env(l) max(n.l, 0) dl, the Lambert radiance's
+// c_diff / pi E(n), read from the irradiance map: a cube map whose texels hold E exactly at
+// their centres (engine/environment/irradiance.h), bilinear and seamless, at its one level.
+PATINA_INLINE vec3 irradianceFromMap(EnvironmentSource irradiance, vec3 n) {
+    return sampleEnvironmentSource(irradiance, n, 0.0f);
 }

@@ -75,7 +75,7 @@ PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, vec2 ab, real NoV, real r
 
 // The split sum: LD (F0 A + B) for the specular (Karis 2013, eq. 8), with the model's Turquin
 // compensation taken from the same table (E = A + B), plus the Lambert diffuse c_diff / pi E(N)
-// from the spherical harmonics. Models with Burley's diffuse take Lambert's here.
+// from the irradiance map. Models with Burley's diffuse take Lambert's here.
 // glTF's two lobes (PATINA_FD_LAMBERT_FRESNEL_MIX: the gltf models) are mixed by metallic
 // instead, each with the single-scattered energy of Fdez-Aguera's roughness-dependent Fresnel
 // (scatteredEnergy) from LD and, with PATINA_MS_FDEZ_AGUERA, the multiple-scattered from the
@@ -125,23 +125,23 @@ PATINA_INLINE vec3 splitSum(SurfaceMaterial material, real NoV, vec3 prefiltered
 
 // Outgoing radiance towards V from an environment of `intensity` turned by (cosRotation,
 // sinRotation) about +Y: the split sum, LD read from the prefiltered chain at roughnessToLod
-// and E from the coefficients, both in the environment's frame.
+// and E from the irradiance map, both in the environment's frame.
 // The split sum's two lobes before the intensity (the inspector's channels).
-PATINA_INLINE LightShares environmentShares(EnvironmentSource prefiltered, real maxLod, vec3 coefficients[9],
+PATINA_INLINE LightShares environmentShares(EnvironmentSource prefiltered, real maxLod, EnvironmentSource irradianceMap,
                                             real cosRotation, real sinRotation, SurfaceMaterial material, vec3 N,
                                             vec3 V, bool dominant) {
     real NoV = max(dot(N, V), MIN_N_DOT_V);
     vec3 R = toEnvironmentFrame(environmentReflection(material, N, V, dominant), cosRotation, sinRotation);
     vec3 ld = sampleEnvironmentSource(prefiltered, R, roughnessToLod(material.roughness, maxLod));
-    vec3 irradiance = irradianceSH(coefficients, toEnvironmentFrame(N, cosRotation, sinRotation));
+    vec3 irradiance = irradianceFromMap(irradianceMap, toEnvironmentFrame(N, cosRotation, sinRotation));
     return splitSumShares(material, NoV, ld, irradiance);
 }
 
-PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, vec3 coefficients[9], real intensity,
-                                    real cosRotation, real sinRotation, SurfaceMaterial material, vec3 N, vec3 V,
-                                    bool dominant) {
+PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, EnvironmentSource irradianceMap,
+                                    real intensity, real cosRotation, real sinRotation, SurfaceMaterial material,
+                                    vec3 N, vec3 V, bool dominant) {
     LightShares shares =
-        environmentShares(prefiltered, maxLod, coefficients, cosRotation, sinRotation, material, N, V, dominant);
+        environmentShares(prefiltered, maxLod, irradianceMap, cosRotation, sinRotation, material, N, V, dominant);
 #if defined(PATINA_NO_DIFFUSE)
     return intensity * shares.specular;
 #else
@@ -180,22 +180,24 @@ PATINA_INLINE vec3 stochasticSpecular(EnvironmentSource source, real sourceFaceS
 }
 
 // The stochastic mode's outgoing radiance: stochasticSpecular plus the same Lambert diffuse
-// from the coefficients as the split sum.
-PATINA_INLINE vec3 shadeEnvironmentStochastic(EnvironmentSource source, real sourceFaceSize, vec3 coefficients[9],
-                                              real intensity, real cosRotation, real sinRotation,
-                                              SurfaceMaterial material, vec3 N, vec3 V, uint count, vec2 jitter) {
+// from the irradiance map as the split sum.
+PATINA_INLINE vec3 shadeEnvironmentStochastic(EnvironmentSource source, real sourceFaceSize,
+                                              EnvironmentSource irradianceMap, real intensity, real cosRotation,
+                                              real sinRotation, SurfaceMaterial material, vec3 N, vec3 V, uint count,
+                                              vec2 jitter) {
     vec3 n = toEnvironmentFrame(N, cosRotation, sinRotation);
     vec3 v = toEnvironmentFrame(V, cosRotation, sinRotation);
     vec3 specular = stochasticSpecular(source, sourceFaceSize, material, n, v, count, jitter);
 #if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
     // The samples give the single-scattered specular; the multiple-scattered and the weighted
     // diffuse are the split sum's (splitSumShares with no prefiltered light).
-    LightShares rest = splitSumShares(material, max(dot(n, v), MIN_N_DOT_V), vec3(0.0f), irradianceSH(coefficients, n));
+    LightShares rest =
+        splitSumShares(material, max(dot(n, v), MIN_N_DOT_V), vec3(0.0f), irradianceFromMap(irradianceMap, n));
     return intensity * (specular + rest.specular + rest.diffuse);
 #elif defined(PATINA_NO_DIFFUSE)
     return intensity * specular;
 #else
-    return intensity * (specular + Fd_Lambert(material.diffuseColor) * irradianceSH(coefficients, n));
+    return intensity * (specular + Fd_Lambert(material.diffuseColor) * irradianceFromMap(irradianceMap, n));
 #endif
 }
 

@@ -86,16 +86,16 @@ uniform bool uEmissionPass;
 vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
 #if defined(PATINA_ENVIRONMENT_STOCHASTIC)
     vec2 jitter = pixelJitter(uint(gl_FragCoord.x), uint(gl_FragCoord.y));
-    return shadeEnvironmentStochastic(uEnvironmentSource, uEnvironmentSourceSize, uEnvironmentSH, uEnvironmentIntensity,
-                                      uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V,
-                                      uint(PATINA_ENVIRONMENT_STOCHASTIC), jitter);
+    return shadeEnvironmentStochastic(uEnvironmentSource, uEnvironmentSourceSize, uEnvironmentIrradiance,
+                                      uEnvironmentIntensity, uEnvironmentRotation.x, uEnvironmentRotation.y, material,
+                                      N, V, uint(PATINA_ENVIRONMENT_STOCHASTIC), jitter);
 #else
 #if defined(PATINA_ENVIRONMENT_DOMINANT)
     const bool dominant = true;
 #else
     const bool dominant = false;
 #endif
-    return shadeEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentSH, uEnvironmentIntensity,
+    return shadeEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance, uEnvironmentIntensity,
                             uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, dominant);
 #endif
 }
@@ -121,8 +121,8 @@ vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metall
     }
 #ifdef PATINA_ENVIRONMENT
     SurfaceMaterial material = deriveSurfaceMaterial(baseColor, roughness, uSpecular, metallic);
-    LightShares shares = environmentShares(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentSH, uEnvironmentRotation.x,
-                                           uEnvironmentRotation.y, material, N, V, false);
+    LightShares shares = environmentShares(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
+                                           uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, false);
     c = channelWithEnvironment(c, shares, uEnvironmentIntensity, uChannelLight == -2);
 #endif
     return channelValue(PATINA_CHANNEL, channelFinished(c), uPbrRanges);

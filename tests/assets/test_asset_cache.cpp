@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -136,6 +137,30 @@ TEST_F(Assets, AChangedFileIsLoadedAgain) {
     const auto sphere = cache.model(path("model.glb"));
     EXPECT_NE(sphere, torus);
     EXPECT_EQ(sphere->mesh.positions.size(), makeUvSphere().positions.size());
+}
+
+TEST_F(Assets, AnEnvironmentComesBackFromTheDiskCacheAsItWasMade) {
+    // The prefiltered chain and the irradiance map both: a second cache (nothing in memory)
+    // reads the file the first wrote, bit for bit.
+    test::writeFlatHdr(path("sky.hdr"), 64, 32, 100);
+    std::vector<std::string> warnings;
+    const auto made = AssetCache().environment(path("sky.hdr").string(), warnings);
+    size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(path("cache"))) {
+        files += entry.path().extension() == ".env";
+    }
+    EXPECT_EQ(files, 1u);
+    const auto read = AssetCache().environment(path("sky.hdr").string(), warnings);
+    ASSERT_NE(read, made);
+    ASSERT_EQ(read->prefiltered.size(), made->prefiltered.size());
+    for (size_t level = 0; level < made->prefiltered.size(); ++level) {
+        EXPECT_EQ(read->prefiltered[level].faces, made->prefiltered[level].faces) << level;
+    }
+    EXPECT_EQ(read->irradiance.size, kIrradianceFaceSize);
+    EXPECT_EQ(read->irradiance.faces, made->irradiance.faces);
+    // A grey sky of radiance r everywhere: E = pi r.
+    EXPECT_NEAR(read->irradiance.texel(2, 3, 4).x, std::numbers::pi_v<float> * read->image.rgb[0],
+                3e-3f * std::numbers::pi_v<float> * read->image.rgb[0]);
 }
 
 TEST_F(Assets, BuiltInsAreKeptForTheCachesLifeAndNoOtherCacheShares) {

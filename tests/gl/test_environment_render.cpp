@@ -64,7 +64,8 @@ TEST(EnvironmentRender, TheGpuSplitSumAgreesWithTheCpu) {
         }
     }
     RecordProperty("max_relative_error", std::to_string(worst));
-    // Measured: 2e-6 (the CPU filter reproduces Mesa's seamless corners); the issue asks 1e-3.
+    // Measured: 4e-6 with the irradiance map (2e-6 with SH; the CPU filter reproduces Mesa's seamless
+    // corners); the issue asks 1e-3.
     EXPECT_LE(worst, 1e-4);
 }
 
