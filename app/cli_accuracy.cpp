@@ -6,6 +6,7 @@
 
 #include "bench/bench.h"
 #include "bench/lighting_accuracy.h"
+#include "accuracy/model_split_sum.h"
 #include "assets/asset_cache.h"
 #include "cli.h"
 #include "accuracy/furnace.h"
@@ -88,11 +89,16 @@ Command addStabilityCommand(CLI::App& app) {
 
 Command addFurnaceCommand(CLI::App& app) {
     return addMeasurementCommand(
-        app, "furnace", "White furnace: specular albedo with F = 1 of every model: furnace.csv and furnace.png",
+        app, "furnace",
+        "White furnace: specular albedo with F = 1 of every model (furnace.csv, furnace.png), and a white "
+        "dielectric and metal whole, split sum and ground truth, under epic, gltf and gltf-single (material_furnace.csv)",
         [](const std::filesystem::path& folder, bool quick) {
             const std::vector<FurnaceCurve> curves = whiteFurnace(quick ? 10 : 40, quick ? 1024 : 4096);
             writeOutputText((folder / "furnace.csv").string(), furnaceCsv(curves));
             writeChart(folder / "furnace", furnaceChart(curves), false);
+            const std::vector<MaterialFurnaceRow> materials = materialFurnace(
+                {BrdfModelId::Epic, BrdfModelId::Gltf, BrdfModelId::GltfSingle}, quick ? 4 : 10, quick ? 256 : 2048);
+            writeOutputText((folder / "material_furnace.csv").string(), materialFurnaceCsv(materials));
         });
 }
 
@@ -141,6 +147,7 @@ Command addLightingAccuracyCommand(CLI::App& app) {
         "lighting-accuracy",
         "The split sum and its variants against the ground truth under environments, with their frame cost: "
         "split_sum.csv, sh.csv, lighting_cost.csv, lighting_accuracy.svg/.png and a grid_<environment>.png each; "
+        "whole materials by BRDF model (epic, gltf, gltf-single) against their ground truth: model_split_sum.csv; "
         "and sphere and tube lights as area-accuracy measures them");
     command->add_option("--out-dir", options->outDir, "Folder for the outputs (default: current)");
     command->add_flag("--quick", options->quick, "A smaller, faster run (for CI)");
@@ -161,6 +168,9 @@ Command addLightingAccuracyCommand(CLI::App& app) {
                         encodePng(roughnessMetallicGrid(environment, options->quick ? 48 : 128, options->quick ? 8 : 256)));
         }
         std::cout << lightingCostCsv(result);
+        writeOutputText((folder / "model_split_sum.csv").string(),
+                        modelSplitSumCsv(measureModelSplitSum(environments, {BrdfModelId::Epic, BrdfModelId::Gltf, BrdfModelId::GltfSingle},
+                                                              options->quick)));
         writeAreaAccuracy(folder, options->quick);
     };
 }

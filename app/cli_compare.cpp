@@ -11,6 +11,7 @@ namespace patina::cli {
 
 Command addCompareCommand(CLI::App& app) {
     struct Options {
+        ViewOptions view;
         std::string scenePath, a, b, out, part, mesh;
         int width = 512, height = 512;
         bool diff = false;
@@ -25,6 +26,7 @@ Command addCompareCommand(CLI::App& app) {
     command->add_option("--height", options->height, "Height of each panel")->check(CLI::Range(1, 4096));
     command->add_option("--out", options->out, "Output PNG")->required();
     addMeshOption(*command, options->mesh);
+    options->view.addOptions(*command);
     command->add_option("--part", options->part,
                         "With a glTF model: A and B on the parts of this material name only (default: every part)");
     command->add_flag("--diff", options->diff, "Add a third panel: the difference as a heat map");
@@ -32,6 +34,7 @@ Command addCompareCommand(CLI::App& app) {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
         inputs.mesh = options->mesh;
+        inputs.view = options->view;
         Scene scene = inputs.load();
         AssetCache assets;
         const PreparedScene prepared = inputs.prepare(scene, assets);

@@ -1,3 +1,4 @@
+#include <iostream>
 #include <memory>
 
 #include "cli.h"
@@ -6,8 +7,39 @@
 #include "io/file_kinds.h"
 #include "files/input_error.h"
 #include "inputs.h"
+#include "shading/brdf_models.h"
 
 namespace patina::cli {
+
+namespace {
+// glTF keeps no BRDF model: whatever shaded a material here, an engine shows the exported factors
+// with glTF's own BRDF (Appendix B, Patina's `gltf`). Said where one was shaded otherwise.
+void noteOtherModels(const Scene& scene, const Model* model) {
+    std::vector<std::string> names;
+    auto other = [&](const Material& material) {
+        const BrdfModelId shown = model && scene.modelBrdf ? *scene.modelBrdf : material.model;
+        if (shown != BrdfModelId::Gltf) {
+            names.push_back("\"" + material.name + "\" (" + std::string(brdfModel(shown).name) + ")");
+        }
+    };
+    if (!model) {
+        other(scene.material);
+    } else {
+        for (size_t i = 0; i < model->materials.size(); ++i) {
+            Material part;
+            static_cast<MaterialParameters&>(part) = tunedMaterial(scene, int(i), model->materials[i]).factors;
+            part.name = model->materials[i].name;
+            other(part);
+        }
+    }
+    if (!names.empty()) {
+        std::cerr << "export: shaded here with another model than glTF's own BRDF, which every glTF viewer uses: "
+                  << names.front() << (names.size() > 1 ? " and " + std::to_string(names.size() - 1) + " more" : "")
+                  << "; the factors are written as they are (open the export, or choose the model gltf, to see "
+                     "them as a viewer will)\n";
+    }
+}
+}  // namespace
 
 Command addExportCommand(CLI::App& app) {
     struct Options {
@@ -36,12 +68,14 @@ Command addExportCommand(CLI::App& app) {
             if (scene.meshFile.empty()) {
                 options->inputs.putMaterialOnParts(scene, nullptr);   // refuses a --part
                 exportGltf(options->out, *assets.mesh(scene), scene.material, buffer);
+                noteOtherModels(scene, nullptr);
             } else {
                 // The whole model: every part with its maps, as the scene tunes it.
                 const std::shared_ptr<const Model> model = assets.shape(scene).model;   // its maps replaced
                 printWarnings(model->notes);   // what the import left out stays out of the export
                 options->inputs.putMaterialOnParts(scene, model.get());
                 exportGltfModel(options->out, tunedModel(*model, scene), buffer);
+                noteOtherModels(scene, model.get());
             }
         } catch (const InputError&) {
             throw;

@@ -34,6 +34,7 @@ Json storyJson(const PixelStory& s) {
     return {{"surface", true},
             {"item", s.item},
             {"material", s.material},
+            {"model", s.model},
             {"position", array(s.position)},
             {"geometryNormal", array(c.geometryNormal)},
             {"normal", array(c.shadingNormal)},
@@ -71,6 +72,7 @@ Command addInspectCommand(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "inspect", "Print one pixel's inputs and lighting as JSON (the CPU twin of the shaders; docs/INSPECTOR.md)");
     options->inputs.addOptions(*command, true, true);
+    options->inputs.view.addOptions(*command);
     command->add_option("--x", options->x, "Pixel column, 0 at the left")->required()->check(CLI::NonNegativeNumber);
     command->add_option("--y", options->y, "Pixel row, 0 at the top")->required()->check(CLI::NonNegativeNumber);
     command->add_option("--width", options->width, "Image width, as render takes it")->check(CLI::Range(1, 16384));

@@ -115,6 +115,7 @@ Command addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
     options->inputs.addOptions(*command, true, true);
+    options->inputs.view.addOptions(*command);
     command->add_option("--width", options->width, "Image width")->check(CLI::Range(1, 16384));
     command->add_option("--height", options->height, "Image height")->check(CLI::Range(1, 16384));
     command->add_option("--passes", options->passes, "single: all lights in one pass; multi: one pass per light; "

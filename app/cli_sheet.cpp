@@ -14,6 +14,7 @@ namespace patina::cli {
 
 Command addSheetCommand(CLI::App& app) {
     struct Options {
+        ViewOptions view;
         std::string scenePath, out, part, mesh;
         std::vector<std::string> materials;
         int columns = 4, size = 256;
@@ -28,12 +29,14 @@ Command addSheetCommand(CLI::App& app) {
         ->check(CLI::Range(1, 4096));
     command->add_option("--scene", options->scenePath, "Scene JSON (default: the embedded scene)");
     addMeshOption(*command, options->mesh);
+    options->view.addOptions(*command);
     command->add_option("--part", options->part,
                         "With a glTF model: each material on the parts of this material name only (default: every part)");
     return [options] {
         SceneInputs inputs;
         inputs.scenePath = options->scenePath;
         inputs.mesh = options->mesh;
+        inputs.view = options->view;
         Scene scene = inputs.load();
         AssetCache assets;
         const PreparedScene prepared = inputs.prepare(scene, assets);

@@ -1,5 +1,7 @@
 #include "inputs.h"
 
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "shading/brdf_models.h"
@@ -10,6 +12,7 @@
 #include "files/input_error.h"
 #include "io/scene_file.h"
 #include "files/file_bytes.h"
+#include "scene/camera_placement.h"
 #include "scene/light_rig.h"
 
 namespace patina::cli {
@@ -41,7 +44,8 @@ void SceneInputs::addOptions(CLI::App& command, bool withScene, bool withPart) {
     if (withPart) {
         addMeshOption(command, mesh);
     }
-    command.add_option("--model", model, "BRDF model, replacing the material's: " + brdfModelNames());
+    command.add_option("--model", model,
+                       "BRDF model, replacing the material's and every model part's: " + brdfModelNames());
 }
 
 Scene SceneInputs::load() const {
@@ -59,6 +63,7 @@ Scene SceneInputs::load() const {
             throw InputError("--model: unknown BRDF model \"" + model + "\" (known: " + brdfModelNames() + ")");
         }
         scene.material.model = *id;
+        scene.modelBrdf = *id;   // a glTF model's parts too (each has its own otherwise)
     }
     printWarnings(warnings);
     return scene;
@@ -83,6 +88,7 @@ PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets) const {
     if (mesh.empty()) {
         PreparedScene prepared = prepareScene(scene, assets, warnings);
         printWarnings(warnings);
+        view.apply(scene, prepared);
         return prepared;
     }
     // The rig was made for the scene's own shape: measured before it is replaced. A model the
@@ -102,7 +108,93 @@ PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets) const {
     PreparedScene prepared = prepareScene(scene, assets, warnings);
     printWarnings(warnings);
     fitSceneTo(scene, before, shapeBounds(scene, prepared.mesh.get()));   // `prepared` reads `scene`
+    view.apply(scene, prepared);
     return prepared;
+}
+
+void ViewOptions::addOptions(CLI::App& command) {
+    CLI::Option* camera =
+        command.add_option("--camera", this->camera,
+                           "One of the glTF model's own cameras, by name or by its index in the file's cameras "
+                           "(perspective ones, shown with +Y up)");
+    CLI::Option* orbit = command.add_option("--orbit", this->orbit,
+                                            "THETA PHI RADIUS: the eye at target + RADIUS (sin PHI sin THETA, cos PHI, "
+                                            "sin PHI cos THETA), as model-viewer's camera-orbit (degrees, scene units)");
+    orbit->expected(3);
+    CLI::Option* target = command.add_option(
+        "--target", this->target, "X Y Z: the point the camera looks at and orbits, as model-viewer's camera-target "
+                                  "(the eye keeps its offset from it unless --orbit says another)");
+    target->expected(3);
+    camera->excludes(orbit)->excludes(target);
+    command.add_option("--tonemap", tonemap, "The view transform after exposure: " + tonemapNames() +
+                                                 " (default: the scene's)");
+}
+
+namespace {
+std::string number(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(value));
+    return text;
+}
+
+// Each number finite, or InputError naming the option.
+void requireFinite(const std::vector<float>& numbers, const char* option) {
+    for (const float value : numbers) {
+        if (!std::isfinite(value)) {
+            throw InputError(std::string(option) + ": " + number(value) + " is not a finite number");
+        }
+    }
+}
+
+// --camera: the model's camera on `scene`, or InputError.
+void useModelCamera(Scene& scene, const PreparedScene& prepared, const std::string& name) {
+    if (!prepared.model) {
+        throw InputError("--camera names a camera of a glTF model, and the scene's mesh is the built-in " +
+                         std::string(meshKindName(scene.mesh)));
+    }
+    try {
+        const ModelCamera& camera = findModelCamera(prepared.model->cameras, name);
+        const float roll = placeModelCamera(scene.camera, camera, shapeBounds(scene, prepared.mesh.get()));
+        if (std::abs(roll) > 0.5f) {
+            char line[200];
+            std::snprintf(line, sizeof line, " is rolled %.1f degrees about its view: Patina's camera keeps +Y up "
+                                             "and shows it level", roll);
+            printWarnings({"--camera \"" + camera.name + "\"" + line});
+        }
+    } catch (const std::invalid_argument& error) {
+        throw InputError("--camera " + name + ": " + error.what());
+    }
+}
+}  // namespace
+
+void ViewOptions::apply(Scene& scene, const PreparedScene& prepared) const {
+    if (!tonemap.empty()) {
+        const auto parsed = tonemapFromName(tonemap);
+        if (!parsed) {
+            throw InputError("--tonemap: unknown tone map \"" + tonemap + "\" (known: " + tonemapNames() + ")");
+        }
+        scene.display.tonemap = *parsed;
+    }
+    if (!camera.empty()) {
+        useModelCamera(scene, prepared, camera);
+    }
+    requireFinite(target, "--target");
+    requireFinite(orbit, "--orbit");
+    if (!target.empty()) {
+        const glm::vec3 to(target[0], target[1], target[2]);
+        scene.camera.position += to - scene.camera.target;
+        scene.camera.target = to;
+    }
+    if (!orbit.empty()) {
+        if (orbit[1] < 0.0f || orbit[1] > 180.0f) {
+            throw InputError("--orbit: PHI (from +Y down) must be between 0 and 180 degrees, not " +
+                             number(orbit[1]));
+        }
+        if (!(orbit[2] > 0.0f)) {
+            throw InputError("--orbit: RADIUS must be above 0, not " + number(orbit[2]));
+        }
+        placeOnOrbit(scene.camera, scene.camera.target, {orbit[0], orbit[1], orbit[2]});
+    }
 }
 
 void putMaterialOnParts(Scene& scene, const Model* model, const Material& material, const std::string& part) {

@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -9,6 +10,24 @@
 
 namespace patina::cli {
 
+// How the commands that draw a picture of the scene (render, inspect, compare, sheet) look at
+// it: --camera (one of the glTF model's own), --orbit and --target (model-viewer's camera-orbit
+// and camera-target) and --tonemap.
+struct ViewOptions {
+    std::string camera;          // a camera of the model, by name or by its index in the file
+    std::vector<float> orbit;    // THETA PHI RADIUS: degrees, degrees, scene units
+    std::vector<float> target;   // X Y Z
+    std::string tonemap;         // a tone map's name (scene/scene.h tonemapName)
+
+    void addOptions(CLI::App& command);
+    // The options on `scene`, whose mesh `prepared` holds (after --mesh framed it): the file's
+    // camera; else the target moved, the eye keeping its offset from it, then the eye on the
+    // orbit about the target; and the tone map. InputError for a camera the model lacks (or a
+    // built-in mesh), an orthographic one, an orbit or target out of range or a tone map's name
+    // unknown. A camera rolled about its view is shown level, said on stderr.
+    void apply(Scene& scene, const PreparedScene& prepared) const;
+};
+
 // --scene and --material, shared by the commands that shade.
 struct SceneInputs {
     std::string scenePath;
@@ -16,6 +35,7 @@ struct SceneInputs {
     std::string model;   // empty: the material's own
     std::string part;    // --part: with --material over a model, only the parts of this name
     std::string mesh;    // --mesh: sphere, torus or a glTF model instead of the scene's; empty: the scene's
+    ViewOptions view;    // for the commands that register them (ViewOptions::addOptions)
 
     // --scene (withScene), --material, --model, and --mesh and --part for the commands that draw
     // a model (withPart).
@@ -30,8 +50,8 @@ struct SceneInputs {
     // `scene` with --mesh as its mesh, and its mesh and environment loaded through `assets`
     // (assets/prepare_scene.h), for the commands that draw it. --mesh is shown as the editor
     // opens a model: the camera frames it and the positional lights follow its size
-    // (fitSceneTo); without --mesh the scene's camera and lights stay as its file says.
-    // Warnings go to stderr; errors throw InputError.
+    // (fitSceneTo); without --mesh the scene's camera and lights stay as its file says. Then
+    // `view` is applied. Warnings go to stderr; errors throw InputError.
     PreparedScene prepare(Scene& scene, AssetCache& assets) const;
     // --material over `model` (the scene's, null for a built-in mesh): its factors on every
     // part, or on --part's, as the scene's edits of them (setPartMaterials). InputError for a

@@ -169,6 +169,31 @@ inline GltfBuilder cubeModel(bool withNormals = true, int indexType = kUnsignedS
     return model;
 }
 
+// Two quads, red at x = -3 and green at x = +3, both facing +Z, and two cameras looking down -Z
+// from 4 in front of each ("left" at index 0, "right" at 1); a third camera, orthographic.
+inline GltfBuilder twoQuadsAndTheirCameras() {
+    GltfBuilder model;
+    const int positions = model.positions({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
+    const int normals = model.positions({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    const int indices = model.data(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, kUnsignedShort, "SCALAR", 1);
+    for (const auto& [x, colour] : {std::pair{-3, Json::array({1, 0, 0, 1})}, std::pair{3, Json::array({0, 1, 0, 1})}}) {
+        const int material = model.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", colour}}}});
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}, {"indices", indices},
+                        {"material", material}},
+                       {{"translation", {x, 0, 0}}});
+    }
+    for (const auto& [name, x] : {std::pair{"left", -3}, std::pair{"right", 3}}) {
+        const int camera = model.add("cameras", {{"type", "perspective"}, {"name", name},
+                                                 {"perspective", {{"yfov", 0.4}, {"znear", 0.1}}}});
+        model.json["scenes"][0]["nodes"].push_back(
+            model.add("nodes", {{"camera", camera}, {"translation", {x, 0, 4}}}));
+    }
+    model.add("cameras", {{"type", "orthographic"}, {"name", "plan"},
+                          {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0}, {"zfar", 9}}}});
+    model.json["scenes"][0]["nodes"].push_back(model.add("nodes", {{"camera", 2}}));
+    return model;
+}
+
 // The InputError `load` throws, or "(loaded)"; any other exception fails the test.
 template <typename Load>
 std::string errorOf(const Load& load) {

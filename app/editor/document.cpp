@@ -6,13 +6,15 @@
 #include "geometry/mesh.h"
 #include "scene/camera_control.h"
 #include "scene/light_rig.h"
+#include "text_match.h"
 
 namespace patina::editor {
 
 bool Document::sceneChanged() const {
     return scene.lights != savedScene.lights || scene.camera != savedScene.camera ||
            scene.display != savedScene.display || scene.mesh != savedScene.mesh ||
-           scene.meshFile != savedScene.meshFile || scene.modelMaterials != savedScene.modelMaterials;
+           scene.meshFile != savedScene.meshFile || scene.modelMaterials != savedScene.modelMaterials ||
+           scene.modelBrdf != savedScene.modelBrdf;
 }
 
 int Document::environmentIndex() const {
@@ -51,7 +53,7 @@ std::string unsavedParts(const Document& document) {
     if (now.mesh != saved.mesh || now.meshFile != saved.meshFile) {
         parts.push_back("the mesh");
     }
-    if (now.modelMaterials != saved.modelMaterials) {
+    if (now.modelMaterials != saved.modelMaterials || now.modelBrdf != saved.modelBrdf) {
         parts.push_back("the model's materials");
     }
     std::string text;
@@ -93,6 +95,7 @@ void restore(EditorState& state, const EditSnapshot& snapshot) {
     state.scene.lights = snapshot.lights;
     state.scene.display = snapshot.display;
     state.scene.modelMaterials = snapshot.modelMaterials;
+    state.scene.modelBrdf = snapshot.modelBrdf;
     state.model = snapshot.shape.model;   // the same file with the maps it had replaced, or another
     if (!(state.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
         state.scene.mesh = snapshot.shape.kind;
@@ -140,6 +143,15 @@ BoundingSphere meshBounds(const Document& document) {
     return shapeBounds(document.scene, document.mesh.get());
 }
 
+float intensityScale(const Document& document, const Light& light) {
+    const bool scaled = light.type == LightType::Point || light.type == LightType::Sphere || light.type == LightType::Tube;
+    if (!scaled || document.scene.meshFile.empty()) {
+        return 1.0f;
+    }
+    const float radius = meshBounds(document).radius;
+    return radius * radius;
+}
+
 void frameMesh(Document& document) {
     const BoundingSphere bounds = meshBounds(document);
     frameCamera(document.scene.camera, bounds.center, bounds.radius);
@@ -166,27 +178,58 @@ PreparedScene preparedScene(const Document& document, const Scene& shown) {
             file ? document.model : nullptr};
 }
 
+std::vector<std::string> partNodes(const Document& document, int index) {
+    std::vector<std::string> nodes;
+    if (index < 0 || index >= modelMaterialCount(document)) {
+        return nodes;
+    }
+    for (const DrawItem& draw : document.model->draws) {
+        if (draw.material == index && std::find(nodes.begin(), nodes.end(), draw.node) == nodes.end()) {
+            nodes.push_back(draw.node);
+        }
+    }
+    return nodes;
+}
+
+bool partMatches(const Document& document, int index, const std::string& filter) {
+    if (filter.empty()) {
+        return true;
+    }
+    const std::vector<std::string> nodes = partNodes(document, index);
+    return containsAnyCase(document.model->materials.at(size_t(index)).name, filter) ||
+           std::any_of(nodes.begin(), nodes.end(), [&](const std::string& node) { return containsAnyCase(node, filter); });
+}
+
 int modelMaterialCount(const Document& document) {
     return document.model && !document.scene.meshFile.empty() ? int(document.model->materials.size()) : 0;
 }
 
-Material modelMaterial(const Document& document, const Scene& scene, int index) {
+namespace {
+// Part `index` as the scene has it, its own BRDF model kept (Scene::modelBrdf not applied).
+Material ownModelMaterial(const Document& document, const Scene& scene, int index) {
     const ModelMaterial& file = document.model->materials.at(size_t(index));
     if (const ModelMaterialEdit* edit = patina::editOf(scene, index, file)) {
-        Material material = edit->material;
-        material.model = scene.material.model;
-        return material;
+        return edit->material;
     }
     Material material;
     static_cast<MaterialParameters&>(material) = file.factors;
     material.name = file.name;
-    material.model = scene.material.model;
+    return material;
+}
+}  // namespace
+
+Material modelMaterial(const Document& document, const Scene& scene, int index) {
+    Material material = ownModelMaterial(document, scene, index);
+    material.model = scene.modelBrdf.value_or(material.model);   // as sceneDraws shades it
     return material;
 }
 
 void setModelMaterial(const Document& document, Scene& scene, int index, Material material) {
     material.name = document.model->materials.at(size_t(index)).name;
-    material.model = scene.material.model;   // the document's: one program shades a frame
+    if (scene.modelBrdf) {
+        // One model shades every part (Scene::modelBrdf): the part keeps its own beneath it.
+        material.model = ownModelMaterial(document, scene, index).model;
+    }
     for (ModelMaterialEdit& edit : scene.modelMaterials) {
         if (edit.index == index) {
             edit.material = std::move(material);

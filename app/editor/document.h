@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "environment/environment.h"
 #include "geometry/mesh.h"
@@ -40,7 +41,7 @@ struct Document {
     bool dirty() const { return materialChanged() || sceneChanged(); }
     ShownShape shownShape() const { return {scene.mesh, scene.meshFile, mesh, model, scene.camera}; }
     EditSnapshot snapshot() const {
-        return {scene.material, scene.lights, scene.display, scene.modelMaterials, shownShape()};
+        return {scene.material, scene.lights, scene.display, scene.modelMaterials, scene.modelBrdf, shownShape()};
     }
     // Whether `index` is one of the scene's lights.
     bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }
@@ -73,6 +74,11 @@ void redo(EditorState& state);
 // The sphere the camera frames and the light rig is fitted to: the mesh file's bounds, or the
 // built-in mesh's (about the origin, radius 1).
 BoundingSphere meshBounds(const Document& document);
+// What the lights panel shows a light's intensity divided by: for a point, sphere or tube light
+// while a model is shown, the square of the model's radius, the factor opening it multiplied
+// the intensity by (moveLightRig), so the panel reads as it did on the unit sphere (2Cylinder-
+// Engine's key light read 784563.938); 1 otherwise. The scene file keeps the intensity itself.
+float intensityScale(const Document& document, const Light& light);
 // Aims the camera at the whole mesh (F, View > Frame mesh).
 void frameMesh(Document& document);
 // The built-in sphere or torus; coming back from a model, the camera frames it and the lights
@@ -86,10 +92,11 @@ PreparedScene preparedScene(const Document& document, const Scene& shown);
 // How many materials the shown model has (0 for a built-in mesh).
 int modelMaterialCount(const Document& document);
 // Material `index` of the model as `scene` draws it: its edit (Scene::modelMaterials) or the
-// file's factors, under the file's name, with the document's BRDF model.
+// file's factors, under the file's name, with its BRDF model (the part's own: the file's are
+// `gltf`; Scene::modelBrdf where the scene shades every part with one).
 Material modelMaterial(const Document& document, const Scene& scene, int index);
 // Writes `material`'s values as the edit of material `index` in `scene` (its name stays the
-// file's: the key), made or replaced.
+// file's: the key), made or replaced; under Scene::modelBrdf the part keeps its own model.
 void setModelMaterial(const Document& document, Scene& scene, int index, Material material);
 // "base colour, normal": the maps material `index` of the model uses; empty for none.
 // Whether `scene` draws map `key` (model/model.h mapsOf) of the model's material `index`: false
@@ -99,6 +106,12 @@ bool mapShown(const Scene& scene, int index, const std::string& key);
 // where the scene has none).
 void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown);
 std::string mapNames(const Document& document, int index);
+// The names of the nodes the shown model draws with its material `index`, each once, in the
+// file's order: what tells apart materials of one name.
+std::vector<std::string> partNodes(const Document& document, int index);
+// Whether material `index`'s name or one of its nodes' has `filter` in it, in any case (the
+// Parts list's search box); everything matches an empty filter.
+bool partMatches(const Document& document, int index, const std::string& filter);
 // The image the scene puts in place of map `key` of the model's material `index`, or "".
 std::string mapReplacement(const Scene& scene, int index, const std::string& key);
 // Puts the image at `path` there (empty: the file's map again), an edit of the material as

@@ -1,7 +1,9 @@
 #include "document_files.h"
 
 #include <optional>
+#include <utility>
 
+#include "camera_choice.h"
 #include "editor_state.h"
 #include "assets/prepare_scene.h"
 #include "gltf/import.h"
@@ -9,10 +11,12 @@
 #include "image/png_text.h"
 #include "io/file_kinds.h"
 #include "files/input_error.h"
+#include "files/regular_file.h"
 #include "io/scene_file.h"
 #include "scene/light_rig.h"
 #include "save_errors.h"
 #include "screenshot_comparison.h"
+#include "shown_path.h"
 
 namespace patina::editor {
 
@@ -36,30 +40,25 @@ std::string modelSummary(const Model& model) {
     return text;
 }
 
-// The loaded model becomes the shown mesh: framed, the lights following its size.
+// The loaded model becomes a new document, as a scene file does: named for the model, with its
+// own Save scene as and its own history, so that no Save writes it into the file of the scene
+// open before it (an engine's scene file once took the box opened after it, without a word).
+// The stage stays, as a material file keeps it: the lights (following the model's size and
+// place: a model of hundreds of units used to swallow every point light), the display and the
+// environment; the camera frames the model. Its materials start as its file says (the scene's
+// material stays the built-in meshes').
 void applyMesh(EditorState& state, const std::filesystem::path& path, const ModelLoad::Result& loaded) {
     const std::shared_ptr<const GltfImport>& imported = loaded.imported;
-    const std::shared_ptr<const Model>& model = loaded.model;
-    const std::string file = std::filesystem::absolute(path).lexically_normal().string();
-    // One undoable step: the model shown, framed, and the lights following its size and place
-    // (a model of hundreds of units used to swallow every point light). Its materials are its
-    // own (the scene's material stays the built-in meshes'). The tuning belongs to the file it
-    // was made on: another model, even with a material of the same index and name, starts as
-    // its file says (reopening the same one keeps it).
-    applyEdit(state, [&](Document& d) {
-        const BoundingSphere before = meshBounds(d);
-        const bool another = file != d.scene.meshFile;
-        d.scene.meshFile = file;
-        d.mesh = std::shared_ptr<const Mesh>(imported, &imported->mesh);
-        fitSceneTo(d.scene, before, meshBounds(d));   // as `render --mesh` fits it
-        if (another) {
-            d.scene.modelMaterials.clear();
-        }
-        d.model = state.assets->retextured(model, d.scene);   // the same file keeps its maps replaced
-    });
-    state.selectedModelMaterial = 0;
+    const std::shared_ptr<const Mesh> mesh(imported, &imported->mesh);
+    Scene scene = state.scene;
+    scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
+    scene.modelMaterials.clear();
+    scene.modelBrdf.reset();   // shaded as its file says (glTF's BRDF), whatever the last one chose
+    fitSceneTo(scene, meshBounds(state), shapeBounds(scene, mesh.get()));   // as `render --mesh` fits it
+    startDocument(state, scene, {}, {}, {mesh, loaded.model}, state.environment);
+    rememberCamera(state, kFrontCamera);
     state.error.clear();
-    state.status = "Mesh " + path.filename().string() + modelSummary(*model);
+    state.status = "Opened " + path.filename().string() + modelSummary(*loaded.model);
     rememberRecent(state, path);
 }
 
@@ -78,12 +77,19 @@ bool openMesh(EditorState& state, const std::filesystem::path& path) {
 void startModelLoad(EditorState& state, const std::filesystem::path& path) {
     cancelModelLoad(state);   // a newer choice replaces one under way
     state.modelLoad = std::make_shared<ModelLoad>(path, state.assets);
+    state.modelReplaces = state.scene;
     state.status = "Loading " + path.filename().string() + "...";
 }
 
 bool finishModelLoad(EditorState& state, bool wait) {
     std::erase_if(state.droppedModelLoads, [](const std::shared_ptr<ModelLoad>& load) { return load->ready(); });
     if (!state.modelLoad || (!wait && !state.modelLoad->ready())) {
+        return false;
+    }
+    // Edited while the model was read: those edits are not dropped without asking. The load
+    // waits for the answer (answerOpen).
+    if (state.dirty() && state.scene != state.modelReplaces) {
+        state.pendingOpen = state.modelLoad->path();
         return false;
     }
     const std::shared_ptr<ModelLoad> load = std::move(state.modelLoad);
@@ -126,6 +132,8 @@ void startDocument(EditorState& state, const Scene& scene, const std::filesystem
     state.mesh = std::move(shape.mesh);
     state.model = std::move(shape.model);
     state.selectedModelMaterial = 0;
+    state.partFilter.clear();
+    state.partPresets.clear();
     state.environment = std::move(environment);
     state.scenePath = scenePath;
     state.materialPath = materialPath;
@@ -207,11 +215,11 @@ DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& p
     return file;
 }
 
-// Whether opening `path` starts a new document (a scene, a screenshot, a material file) rather
-// than editing the open one (a preset, a mesh, an environment image).
+// Whether opening `path` starts a new document (a scene, a screenshot, a material file, a glTF
+// model) rather than editing the open one (a preset, an environment image).
 bool startsADocument(const EditorState& state, const std::filesystem::path& path) {
     const bool environment = path.extension() == ".hdr" || path.extension() == ".exr";
-    return !environment && gltfExtension(path).empty() && !isPreset(state, path);
+    return !environment && !isPreset(state, path);
 }
 
 void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
@@ -232,8 +240,16 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
     } else if (isPreset(state, path)) {
         // A preset is a template: an undoable edit of the material; Save never writes into it
         // (Save as preset does, when asked to).
-        // On a model, onto the material the panel edits.
-        applyEdit(state, [&](Document& d) { setEditedMaterial(state, d.scene, *file.material); });
+        // On a model, onto the material the panel edits: its factors, the part keeping its BRDF
+        // model (a preset's is for the built-in meshes; a glTF part stays glTF's).
+        Material preset = *file.material;
+        if (modelMaterialCount(state) > 0) {
+            preset.model = editedMaterial(state).model;
+        }
+        applyEdit(state, [&](Document& d) { setEditedMaterial(state, d.scene, preset); });
+        if (modelMaterialCount(state) > 0) {   // the part keeps its name: the labels say which preset
+            state.partPresets[state.selectedModelMaterial] = {file.material->name, editedMaterial(state)};
+        }
     } else {
         Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
         scene.material = *file.material;
@@ -292,26 +308,49 @@ void openStartupFiles(EditorState& state, std::vector<std::filesystem::path> pat
 }
 
 void requestOpen(EditorState& state, const std::filesystem::path& path) {
-    if (!gltfExtension(path).empty()) {
-        startModelLoad(state, path);   // read and decoded on a worker: the window keeps drawing
-        return;
-    }
     if (!startsADocument(state, path)) {
         openFile(state, path);   // undoable: nothing can be lost
         return;
     }
-    // The file is checked before anything is asked: a missing or broken one says so at once.
+    // The file is checked before anything is asked: a missing or broken one says so at once. A
+    // model, that it can be opened: the rest once it is read, on a worker.
+    const bool model = !gltfExtension(path).empty();
     DocumentFile file;
     try {
-        file = readDocumentFile(*state.assets, path);
+        if (model) {
+            RegularFile(path, 0, path.string());
+        } else {
+            file = readDocumentFile(*state.assets, path);
+        }
     } catch (const std::exception& error) {
         state.error = error.what();
         return;
     }
     if (state.dirty()) {
         state.pendingOpen = path;
+    } else if (model) {
+        startModelLoad(state, path);   // read and decoded on a worker: the window keeps drawing
     } else {
         applyDocumentFile(state, path, std::move(file));
+    }
+}
+
+void answerOpen(EditorState& state, bool go) {
+    const std::optional<std::filesystem::path> path = std::exchange(state.pendingOpen, std::nullopt);
+    if (!path) {
+        return;
+    }
+    const bool modelRead = state.modelLoad && state.modelLoad->path() == *path;
+    if (!go) {
+        if (modelRead) {
+            cancelModelLoad(state);
+        }
+    } else if (modelRead) {
+        state.modelReplaces = state.scene;   // what was answered for: applied in the next frame
+    } else if (!gltfExtension(*path).empty()) {
+        startModelLoad(state, *path);
+    } else {
+        openFile(state, *path);
     }
 }
 
@@ -422,13 +461,32 @@ bool saveMaterial(EditorState& state, const std::filesystem::path& path) {
     return true;
 }
 
-bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
-    std::filesystem::path file = path;
+namespace {
+// Where a preset saved as `path` goes: a name alone, or any path not from the root, into the
+// user's presets folder, where the browser shows it (a bare "my copper" once went into the
+// working folder, unseen); ".json" added when missing.
+std::filesystem::path presetFile(const EditorState& state, const std::filesystem::path& path) {
+    std::filesystem::path file = path.is_relative() && !state.userPresetFolder.empty() ? state.userPresetFolder / path : path;
     if (file.extension() != ".json") {
         file += ".json";
     }
+    return file;
+}
+
+// "in your presets", or where it went and that the browser does not show it there.
+std::string presetPlace(const EditorState& state, const std::filesystem::path& file) {
+    if (isPreset(state, file)) {
+        return "in your presets (" + shownPath(file.parent_path()) + ")";
+    }
+    return "as " + shownPath(file) + ", outside your presets folder (" + shownPath(state.userPresetFolder) +
+           "): the browser does not show it";
+}
+}  // namespace
+
+bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
+    const std::filesystem::path file = presetFile(state, path);
     try {
-        std::filesystem::create_directories(file.parent_path().empty() ? "." : file.parent_path());
+        std::filesystem::create_directories(file.has_parent_path() ? file.parent_path() : ".");
     } catch (const std::exception& error) {
         state.error = couldNotSave(file, error);
         return false;
@@ -444,8 +502,7 @@ bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
             state.error = couldNotSave(file, error);
             return false;
         }
-        state.status = "Saved " + editedMaterial(state).name + " as the preset " + name + " in " +
-                       std::filesystem::absolute(file).parent_path().string();
+        state.status = "Saved " + editedMaterial(state).name + " as the preset " + name + " " + presetPlace(state, file);
         return true;
     }
     if (state.scene.material.name != name) {
@@ -454,7 +511,7 @@ bool saveAsPreset(EditorState& state, const std::filesystem::path& path) {
     if (!saveMaterial(state, file)) {
         return false;
     }
-    state.status = "Saved preset " + name + " in " + std::filesystem::absolute(file).parent_path().string();
+    state.status = "Saved the preset " + name + " " + presetPlace(state, file);
     return true;
 }
 

@@ -13,10 +13,11 @@ namespace patina::editor {
 
 struct EditorState;
 
-// Opening and saving the document. Opening a scene, a material file or a screenshot starts a
-// new document, as in every editor: its own path, its own undo history, and its content as what
-// is saved, which Reset and the unsaved mark compare with. Applying a preset, a mesh or an
-// environment is an undoable edit of the document that is open.
+// Opening and saving the document. Opening a scene, a material file, a screenshot or a glTF
+// model starts a new document, as in every editor: its own path (none for a model: its Save is
+// a Save as), its own undo history, and its content as what is saved, which Reset and the
+// unsaved mark compare with. Applying a preset, a built-in mesh or an environment is an
+// undoable edit of the document that is open.
 //
 // Makes `scene` the document, saved at `scenePath` (a scene file) or `materialPath` (a material
 // file), or neither, with what was loaded for it: `shape`, its glTF file's mesh and model
@@ -30,13 +31,20 @@ void newDocument(EditorState& state);
 // Asks first (state.pendingNew) when anything is unsaved; else starts it.
 void requestNew(EditorState& state);
 // Opens a material, scene or Patina screenshot (PNG with an embedded scene, its comparison A
-// too) as a new document, a preset as an undoable edit of the material, or a .gltf/.glb mesh
-// (shown instead of the sphere, the camera framed on it) or an environment image. A file that
+// too) or a .gltf/.glb model (shown instead of the sphere, the camera framed on it, the stage
+// kept) as a new document, a preset as an undoable edit of the material, or an environment
+// image. A file that
 // fails to load sets state.error and changes nothing else.
 bool openFile(EditorState& state, const std::filesystem::path& path);
 // Reads the file first: one that cannot be opened says why and asks nothing. Then, when it
 // starts a new document and the one open is unsaved, asks first (state.pendingOpen); else opens.
+// A glTF model is a new document too: asked for the same way, then read on a worker
+// (startModelLoad).
 void requestOpen(EditorState& state, const std::filesystem::path& path);
+// The unsaved-changes prompt's answer about state.pendingOpen: `go` (the document was saved, or
+// its changes discarded) opens it, a model on a worker or the one read already; else it stays
+// closed, and a model read for it is dropped. Clears state.pendingOpen.
+void answerOpen(EditorState& state, bool go);
 // Opens each in turn (the command line's files): every file's error is kept, one a line, in
 // state.error, so a later file does not hide an earlier one's. False when any failed.
 bool openFiles(EditorState& state, const std::vector<std::filesystem::path>& paths);
@@ -54,11 +62,14 @@ bool saveAsPreset(EditorState& state, const std::filesystem::path& path);
 // Saves the whole scene, material inline; the scene becomes the document. Same failure rules.
 bool saveScene(EditorState& state, const std::filesystem::path& path);
 // Opens a glTF model on a worker (state.modelLoad, replacing one under way), applied by
-// finishModelLoad as openFile applies it: the window's Open, Recent and dropped files.
+// finishModelLoad as openFile applies it: the window's Open, Recent and dropped files. The
+// document as it is now is the one it replaces (state.modelReplaces).
 void startModelLoad(EditorState& state, const std::filesystem::path& path);
-// Applies the model under way once it is read (with `wait`, waits for it); its error, if it
-// could not be read, goes to state.error and the mesh shown stays. Run once a frame. True when
-// one was applied.
+// Applies the model under way once it is read (with `wait`, waits for it) as a new document;
+// its error, if it could not be read, goes to state.error and the document stays. Where the
+// document was edited since the model was asked for and is unsaved, asks first
+// (state.pendingOpen, answerOpen) and applies nothing. Run once a frame. True when one was
+// applied.
 bool finishModelLoad(EditorState& state, bool wait = false);
 // Stops waiting for the model under way: the mesh shown stays.
 void cancelModelLoad(EditorState& state);

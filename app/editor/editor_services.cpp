@@ -14,6 +14,7 @@
 #include "preview_scene.h"
 #include "save_errors.h"
 #include "screenshot_comparison.h"
+#include "shown_path.h"
 
 namespace patina::editor {
 
@@ -221,7 +222,7 @@ LdrImage EditorServices::comparisonImage(const EditorState& state, int halfWidth
         material.name = comparisonLabel(side, material);
         return materialCaption(material, halfWidth);
     };
-    return sideBySide(a, b, caption('A', *state.compareA), caption('B', editedMaterial(state)));
+    return sideBySide(a, b, caption('A', *state.compareA), caption('B', labelledMaterial(state)));
 }
 
 LdrImage EditorServices::shownImage(const EditorState& state, int width, int height) {
@@ -249,7 +250,7 @@ LdrImage EditorServices::shownImage(const EditorState& state, int width, int hei
     const int least = textWidth("A...", scale);
     const std::string labelA = fitText(comparisonLabel('A', *state.compareA), std::max(split - 16, least), scale);
     const std::string labelB =
-        fitText(comparisonLabel('B', editedMaterial(state)), std::max(width - split - 16, least), scale);
+        fitText(comparisonLabel('B', labelledMaterial(state)), std::max(width - split - 16, least), scale);
     drawText(shown, 8, 24, labelA, scale, kCaptionColour);
     drawText(shown, width - 8 - textWidth(labelB, scale), 24, labelB, scale, kCaptionColour);
     return shown;
@@ -267,7 +268,7 @@ std::optional<std::filesystem::path> EditorServices::screenshot(EditorState& sta
             text.emplace_back(kComparisonTextKeyword, comparison);   // reopens as the comparison shown
         }
         writeFileAtomic(path, encodePngWithText(image, text));
-        state.status = "Screenshot saved: " + path.string();
+        state.status = "Screenshot saved: " + shownPath(path);
         state.lastScreenshot = path;
         return path;
     } catch (const std::exception& error) {
@@ -285,7 +286,7 @@ std::optional<std::filesystem::path> EditorServices::exportComparison(EditorStat
     try {
         const int width = std::max(viewportWidth / 2, 64), height = std::max(viewportHeight, 64);
         writeFileAtomic(path, encodePng(comparisonImage(state, width, height)));
-        state.status = "Exported " + path.string();
+        state.status = "Exported " + shownPath(path);
         return path;
     } catch (const std::exception& error) {
         state.error = couldNotSave(path, error);

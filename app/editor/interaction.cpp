@@ -33,6 +33,17 @@ Material editedMaterial(const EditorState& state) {
     return state.scene.material;
 }
 
+Material labelledMaterial(const EditorState& state) {
+    Material material = editedMaterial(state);
+    if (modelMaterialCount(state) > 0) {
+        const auto preset = state.partPresets.find(std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1));
+        if (preset != state.partPresets.end() && preset->second.second == material) {
+            material.name += " (" + preset->second.first + ")";
+        }
+    }
+    return material;
+}
+
 void setEditedMaterial(const EditorState& state, Scene& scene, const Material& material) {
     if (modelMaterialCount(state) > 0) {
         setModelMaterial(state, scene, std::clamp(state.selectedModelMaterial, 0, modelMaterialCount(state) - 1),

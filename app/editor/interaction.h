@@ -1,5 +1,7 @@
 #pragma once
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -46,7 +48,15 @@ struct Interaction {
     int selectedLight = 0;
     int selectedModelMaterial = 0;           // of the shown model: the one the Material panel edits
     PartOutlineCachePtr partOutline;         // its outline, kept while the eye stays (part_picking.h)
+    std::string partFilter;                  // the Parts list's search box
+    // The preset last applied to each part of the shown model, and the part's material as it
+    // made it (labelledMaterial names a part with it while its values are still those).
+    std::map<int, std::pair<std::string, Material>> partPresets;
     int soloLight = -1;                      // -1: all enabled lights
+    // The toolbar's Camera list: the view last chosen there (or framing a model just opened),
+    // named while the scene's camera stays on it; a drag leaves it "free".
+    std::string cameraName;
+    Camera cameraView;
     RenderPath renderPath = RenderPath::Single;
 
     std::optional<Material> compareA;        // "Set A"; B is the current material
@@ -84,6 +94,10 @@ Scene renderedScene(const EditorState& state);
 // The material the Material panel edits: the selected one of a shown model (its tuning or the
 // file's factors), else the scene's own.
 Material editedMaterial(const EditorState& state);
+// The same, named as the comparison labels and captions show it: a model's part that holds a
+// preset as it was applied is named with it, "Texture (copper)" (a preset keeps the part's name,
+// and both halves read "Texture"); once its values change, the part's name alone.
+Material labelledMaterial(const EditorState& state);
 // `material`'s values as the edited material of `scene` (a model's keeps the file's name).
 void setEditedMaterial(const EditorState& state, Scene& scene, const Material& material);
 // The scene as rendered with another material in the edited one's place (a side of the

@@ -29,6 +29,9 @@ struct Jobs {
     // A glTF model being read on a worker (startModelLoad), applied by finishModelLoad; and the
     // cancelled ones, kept until their workers end so that dropping them never waits.
     std::shared_ptr<ModelLoad> modelLoad;
+    // The document that model replaces, as it was when it was asked for: edited since and
+    // unsaved, it is not replaced without asking again.
+    Scene modelReplaces;
     std::vector<std::shared_ptr<ModelLoad>> droppedModelLoads;
     // F12's size, taken at the start of the next frame: the frame asking shows "Rendering..."
     // first, as a large screenshot keeps the window waiting for seconds.

@@ -17,6 +17,16 @@ namespace {
 constexpr uint32_t rgba(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
     return r | (g << 8) | (b << 16) | (a << 24);   // IM_COL32's layout
 }
+
+// Whether the three channels of every sample are one (a grey material): their curves coincide.
+bool grey(const std::vector<LobeSample>& samples) {
+    return std::all_of(samples.begin(), samples.end(), [](const LobeSample& s) {
+        const glm::vec3 total = s.total();
+        const float tolerance = 1e-5f * std::max(total.r, 1e-6f);
+        return std::abs(total.g - total.r) <= tolerance && std::abs(total.b - total.r) <= tolerance &&
+               std::abs(s.specular.g - s.specular.r) <= tolerance && std::abs(s.specular.b - s.specular.r) <= tolerance;
+    });
+}
 }  // namespace
 
 LobePlot lobePlot(const EditorState& state) {
@@ -25,7 +35,7 @@ LobePlot lobePlot(const EditorState& state) {
     LobePlot plot;
     auto add = [&](const std::vector<LobeSample>& samples, auto pick, uint32_t color, float thickness,
                    std::string legend) {
-        LobeCurve curve{{}, color, thickness, std::move(legend)};
+        LobeCurve curve{{}, color, thickness, std::move(legend), color};
         for (const LobeSample& sample : samples) {
             curve.values.push_back(pick(sample) * cosine);
         }
@@ -54,13 +64,23 @@ LobePlot lobePlot(const EditorState& state) {
         add(samples, [](const LobeSample& s) { return luminance(s.specular); }, rgba(255, 150, 90, 255), 1.0f,
             b + "specular");
         add(samples, total, rgba(255, 255, 255, 255), 2.0f, b + "total");
+    } else if (grey(samples)) {
+        // R, G and B are one curve: drawn once, in white, as what it is.
+        add(samples, [](const LobeSample& s) { return s.total().r; }, rgba(255, 255, 255, 255), 2.0f,
+            b + "total (thick)");
+        add(samples, [](const LobeSample& s) { return s.specular.r; }, rgba(255, 255, 255, 160), 1.0f,
+            b + "specular (thin)");
     } else {
         const uint32_t channel[3] = {rgba(255, 80, 80, 255), rgba(80, 255, 80, 255), rgba(90, 140, 255, 255)};
+        // Each legend entry names three curves, one a channel: its line is neutral, not the red one's.
+        const uint32_t neutral = rgba(220, 220, 220, 255);
         for (int c = 0; c < 3; ++c) {
             add(samples, [c](const LobeSample& s) { return s.total()[c]; }, channel[c], 2.0f,
                 c == 0 ? b + "total, R G B (thick)" : "");
+            plot.curves.back().legendColor = neutral;
             add(samples, [c](const LobeSample& s) { return s.specular[c]; }, channel[c] & 0x80FFFFFFu, 1.0f,
                 c == 0 ? b + "specular (thin)" : "");
+            plot.curves.back().legendColor = neutral;
         }
     }
     plot.maxValue = 1e-6f;

@@ -17,6 +17,7 @@ struct LobeCurve {
     uint32_t color;              // ImGui's packed RGBA (IM_COL32)
     float thickness;
     std::string legend;          // its legend entry; empty: covered by an earlier entry
+    uint32_t legendColor;        // the legend entry's line: the curve's, or neutral for one naming several
 };
 
 struct LobePlot {

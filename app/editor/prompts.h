@@ -30,6 +30,9 @@ struct Prompts {
         None, Open, SaveAs, SaveSceneAs, SavePreset, ExportComparison, ExportGltf, ReplaceMap
     } pathDialog = PathDialog::None;
     std::string pathDialogText;
+    // Whether the path field has had the keys since the dialog opened, and whether keys typed
+    // before it did were taken into pathDialogText (file_dialog.cpp takeEarlyKeys).
+    bool pathFieldTaken = false, pathTypedEarly = false;
     // What ReplaceMap replaces: the model's material and the map's key (model/model.h mapsOf).
     int replacedMaterial = -1;
     std::string replacedMap;

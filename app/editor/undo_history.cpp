@@ -106,6 +106,9 @@ std::string describeChange(const EditSnapshot& before, const EditSnapshot& after
     if (before.modelMaterials != after.modelMaterials) {
         parts.push_back(modelMaterialsChange(before.modelMaterials, after.modelMaterials));
     }
+    if (before.modelBrdf != after.modelBrdf) {
+        parts.push_back("the BRDF model of every part");
+    }
     if (before.shape != after.shape) {
         const ShownShape& shown = after.shape.file.empty() && !before.shape.file.empty() ? before.shape : after.shape;
         parts.insert(parts.begin(), "the mesh (" +

@@ -31,6 +31,7 @@ struct EditSnapshot {
     std::vector<Light> lights;
     DisplaySettings display;
     std::vector<ModelMaterialEdit> modelMaterials;   // the scene's model's materials as tuned
+    std::optional<BrdfModelId> modelBrdf;            // Scene::modelBrdf
     ShownShape shape;
 
     bool operator==(const EditSnapshot&) const = default;

@@ -118,17 +118,28 @@ void remember(const std::string& name, ImVec2 min, ImVec2 max, const char* toolt
 }
 }  // namespace
 
+namespace {
+// A tooltip wrapped at 40 ems: a long one (a status with a path in it) stays on the screen.
+void wrappedTooltip(const char* text) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+}  // namespace
+
 void recordItem(const std::string& name, const char* tooltip) {
     remember(name, ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), tooltip);
     if (tooltip && !ImGui::IsItemActive() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-        ImGui::SetTooltip("%s", tooltip);
+        wrappedTooltip(tooltip);
     }
 }
 
 void recordArea(const std::string& name, ImVec2 min, ImVec2 max, const char* tooltip) {
     remember(name, min, max, tooltip);
     if (tooltip && ImGui::IsWindowHovered() && ImGui::IsMouseHoveringRect(min, max) && !ImGui::IsAnyMouseDown()) {
-        ImGui::SetTooltip("%s", tooltip);
+        wrappedTooltip(tooltip);
     }
 }
 

@@ -24,26 +24,31 @@ const Environment& whiteFurnace() {
 }
 }  // namespace
 
-std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int points, int samples) {
+AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, int samples, uint64_t seed) {
     const Environment& white = whiteFurnace();
     static const EnvironmentDistribution distribution(white.image);
     const ReferenceEnvironment reference{&white, &distribution, 1.0f, 0.0f};
     const shader::SurfaceMaterial surface = surfaceMaterial(material);
     const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const float theta = glm::radians(thetaVDegrees);
+    const glm::vec3 V(std::sin(theta), 0.0f, std::cos(theta));
+    AlbedoPoint point;
+    point.thetaVDegrees = thetaVDegrees;
+    point.product = shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
+    ReferenceOptions options;
+    options.samples = samples;
+    options.seed = seed;
+    const ReferenceEstimate truth = referenceRadiance(material.model, surface, reference, {}, glm::vec3(0.0f), N, V,
+                                                      options);
+    point.truth = truth.value;
+    point.standardError = truth.standardError;
+    return point;
+}
+
+std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int points, int samples) {
     std::vector<AlbedoPoint> curve(size_t(std::max(points, 2)));
     parallelFor(curve.size(), [&](size_t i) {
-        AlbedoPoint& point = curve[i];
-        point.thetaVDegrees = 88.5f * float(i) / float(curve.size() - 1);
-        const float theta = glm::radians(point.thetaVDegrees);
-        const glm::vec3 V(std::sin(theta), 0.0f, std::cos(theta));
-        point.product = shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
-        ReferenceOptions options;
-        options.samples = samples;
-        options.seed = 0x9E3779B97F4A7C15ull * (i + 1);
-        const ReferenceEstimate truth = referenceRadiance(material.model, surface, reference, {}, glm::vec3(0.0f), N, V,
-                                                          options);
-        point.truth = truth.value;
-        point.standardError = truth.standardError;
+        curve[i] = albedoAt(material, 88.5f * float(i) / float(curve.size() - 1), samples, 0x9E3779B97F4A7C15ull * (i + 1));
     });
     return curve;
 }

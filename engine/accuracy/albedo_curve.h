@@ -4,6 +4,7 @@
 // of radiance 1 everywhere), as the product computes it, by the split sum's tables
 // (environment BRDF and irradiance, ibl_model.glsl), against the ground truth's Monte Carlo
 // estimate of the same integral (reference/radiance.h) with its standard error.
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -23,6 +24,8 @@ struct AlbedoPoint {
 // `points` angles from 0 to 88.5 degrees (where NoV stays clear of the floor 1e-4), the truth
 // by `samples` MIS iterations at each (deterministic).
 std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int points, int samples);
+// One angle of it, the truth's random numbers from `seed`.
+AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, int samples, uint64_t seed);
 
 // The curves of named materials on one chart, as luminance: each material's split sum as a
 // line, its ground truth as markers with one standard error's bars (the luminance of the

@@ -1,7 +1,13 @@
 #include "accuracy/furnace.h"
 
+#include <cmath>
 #include <cstdio>
 
+#include <glm/trigonometric.hpp>
+
+#include "accuracy/albedo_curve.h"
+#include "common/luminance.h"
+#include "common/parallel_for.h"
 #include "shading/energy_table.h"
 
 namespace patina {
@@ -72,6 +78,43 @@ Chart furnaceChart(const std::vector<FurnaceCurve>& curves) {
         chart.panels.push_back(panel);
     }
     return chart;
+}
+
+std::vector<MaterialFurnaceRow> materialFurnace(const std::vector<BrdfModelId>& models, int steps, int samples) {
+    std::vector<MaterialFurnaceRow> rows;
+    for (BrdfModelId model : models) {
+        for (const auto& [name, metallic] : {std::pair{"white dielectric", 0.0f}, std::pair{"white metal", 1.0f}}) {
+            for (double mu : {1.0, 0.25}) {
+                for (int i = 0; i <= steps; ++i) {
+                    rows.push_back({std::string(brdfModel(model).name), name, mu, double(i) / steps});
+                }
+            }
+        }
+    }
+    parallelFor(rows.size(), [&](size_t i) {
+        MaterialFurnaceRow& row = rows[i];
+        MaterialParameters white;
+        white.model = *brdfModelFromName(row.model);
+        white.baseColor = glm::vec3(1.0f);
+        white.metallic = row.material == "white metal" ? 1.0f : 0.0f;
+        white.roughness = float(row.roughness);
+        const AlbedoPoint p = albedoAt(white, glm::degrees(float(std::acos(row.mu))), samples, 0xD1B54A32D192ED03ull * (i + 1));
+        row.splitSum = luminance(p.product);
+        row.truth = luminance(p.truth);
+        row.truthStandardError = luminance(p.standardError);
+    });
+    return rows;
+}
+
+std::string materialFurnaceCsv(const std::vector<MaterialFurnaceRow>& rows) {
+    std::string csv = "model,material,mu,roughness,split_sum,truth,truth_se\n";
+    char line[200];
+    for (const MaterialFurnaceRow& r : rows) {
+        std::snprintf(line, sizeof line, "%s,%s,%.3g,%.4g,%.6f,%.6f,%.6f\n", r.model.c_str(), r.material.c_str(), r.mu,
+                      r.roughness, r.splitSum, r.truth, r.truthStandardError);
+        csv += line;
+    }
+    return csv;
 }
 
 }  // namespace patina

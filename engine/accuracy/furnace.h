@@ -21,4 +21,17 @@ std::vector<FurnaceCurve> whiteFurnace(int steps, int samples);
 std::string furnaceCsv(const std::vector<FurnaceCurve>& curves);
 Chart furnaceChart(const std::vector<FurnaceCurve>& curves);
 
+// The whole material under the furnace (a uniform white environment of radiance 1): a white
+// dielectric (F0 0.04) and a white metal, diffuse and specular, at mu = 1 and 0.25, as the
+// product's split sum shows them and as the BRDF integrates (the ground truth, with its
+// standard error; albedo_curve.h). Energy conservation asks both to stay at or under 1.
+struct MaterialFurnaceRow {
+    std::string model, material;
+    double mu = 0.0, roughness = 0.0;
+    double splitSum = 0.0, truth = 0.0, truthStandardError = 0.0;   // luminance
+};
+std::vector<MaterialFurnaceRow> materialFurnace(const std::vector<BrdfModelId>& models, int steps, int samples);
+// CSV: model,material,mu,roughness,split_sum,truth,truth_se
+std::string materialFurnaceCsv(const std::vector<MaterialFurnaceRow>& rows);
+
 }  // namespace patina

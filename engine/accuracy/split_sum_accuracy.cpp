@@ -18,8 +18,6 @@
 
 namespace patina {
 
-namespace {
-
 // `count` unit vectors spread evenly over the sphere (a Fibonacci lattice): surfaces facing up,
 // down and sideways, so a sun, a floor and the horizon all count.
 std::vector<glm::vec3> spreadNormals(int count) {
@@ -41,6 +39,8 @@ glm::vec3 viewAt(glm::vec3 N, float NoV, int index) {
     const glm::vec3 tangent = t * std::cos(phi) + b * std::sin(phi);
     return glm::normalize(NoV * N + std::sqrt(std::max(0.0f, 1.0f - NoV * NoV)) * tangent);
 }
+
+namespace {
 
 shader::SurfaceMaterial metal(float f0, float roughness) {
     return shader::deriveSurfaceMaterial(glm::vec3(f0), roughness, 0.5f, 1.0f);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "environment/environment.h"
 
 namespace patina {
@@ -46,6 +48,12 @@ struct SplitSumAccuracy {
     std::vector<SplitSumErrorRow> rows;
     std::vector<ShErrorRow> sh;
 };
+
+// `count` unit vectors spread evenly over the sphere (a Fibonacci lattice): surfaces facing up,
+// down and sideways, so a sun, a floor and the horizon all count.
+std::vector<glm::vec3> spreadNormals(int count);
+// V at NoV to N, turned about N by an azimuth of its own for each `index`.
+glm::vec3 viewAt(glm::vec3 N, float NoV, int index);
 
 // The methods and error sources measured, in the order they are reported.
 std::vector<std::string> splitSumMethods(bool quick);

@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace patina {
@@ -14,6 +15,16 @@ std::optional<Enum> enumFromName(std::string_view name, const Enum (&values)[N],
         }
     }
     return std::nullopt;
+}
+
+// "a, b, c": the names of `values`, in their order, for messages and help.
+template <typename Enum, size_t N>
+std::string enumNameList(const Enum (&values)[N], std::string_view (*nameOf)(Enum)) {
+    std::string names;
+    for (Enum value : values) {
+        names += (names.empty() ? "" : ", ") + std::string(nameOf(value));
+    }
+    return names;
 }
 
 }  // namespace patina

@@ -262,11 +262,18 @@ private:
     void drawStrip(int top);
     void drawItems() const;
     void drawSinglePass(Items opaque, Items blended) const;
-    // The shading program of `item`: the frame's, or in the specialised path with maps the one
-    // compiled for the item's map set.
-    const GlProgram& programOf(const DrawPlan& item) const;
+    // The shading program of `item`: the one for its BRDF model and, in the specialised path
+    // with maps, its map set (programKeyOf).
+    struct ItemProgram {
+        BrdfModelId model;
+        const GlProgram* program;
+    };
+    std::pair<BrdfModelId, int> programKeyOf(const SceneDraw& draw) const;
+    ItemProgram programOf(const DrawPlan& item) const;
+    // Makes `program` current with its model's tables bound (another model's may be).
+    void useProgram(const ItemProgram& program) const;
     void drawMultiPass(Items opaque, Items blended) const;
-    void lightPasses(GLint lightIndex, const DrawPlan& item) const;
+    void lightPasses(const GlProgram& shading, const DrawPlan& item) const;
     void useItem(const DrawUniforms& uniforms, const DrawPlan& item) const;
     void drawItem(const DrawPlan& item) const;
     ModelTextures* mapTextures() const { return maps ? &s.textures : nullptr; }
@@ -291,8 +298,8 @@ private:
     ChannelLights channelLights;   // with a channel: its lights in `packed`
     const GlImage* linear = nullptr;
     const GlProgram* displayPass = nullptr;
-    const GlProgram* shading = nullptr;
-    std::map<int, const GlProgram*> shadingByMapSet;   // specialised with maps: by mapSetOf
+    // By (BRDF model, map set): each item's, programKeyOf. One model and no maps: one program.
+    std::map<std::pair<BrdfModelId, int>, const GlProgram*> shading;
     const GlProgram* backgroundPass = nullptr;
     int exposureTonemap = 0;
     glm::vec3 background{0.0f};
@@ -362,7 +369,6 @@ void Renderer::Frame::choosePrograms() {
     displayPass = plan.msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
                   : plan.displayInPass ? nullptr
                                        : &s.display.get();
-    const BrdfModelId model = scene.material.model;
     const ShadingPrograms::Output output =
         plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
     EnvironmentShading environmentShading = settings.environment;
@@ -386,20 +392,23 @@ void Renderer::Frame::choosePrograms() {
     };
     const ShadingPrograms::Surface surface = maps ? ShadingPrograms::Surface::Maps : ShadingPrograms::Surface::Factors;
     s.shading.beginFrame();
-    if (settings.path == RenderPath::Specialised && maps) {
-        // A program for each set of maps the items have: a map an item lacks costs it nothing.
-        ShaderSpecialisation key = specialisation();
-        for (const SceneDraw& item : draws) {
-            key.mapSet = item.maps ? mapSetOf(*item.maps) : 0;
-            const GlProgram*& program = shadingByMapSet[key.mapSet];
-            program = program ? program : &s.shading.useSpecialised(model, key, output, surface);
+    // A program for each BRDF model the items are shaded with and, specialised with maps, each
+    // set of maps they have: a map an item lacks costs it nothing.
+    const ShaderSpecialisation specialised = settings.path == RenderPath::Specialised ? specialisation()
+                                                                                      : ShaderSpecialisation{};
+    for (const SceneDraw& item : draws) {
+        const auto [model, mapSet] = programKeyOf(item);
+        const GlProgram*& program = shading[{model, mapSet}];
+        if (program) {
+            continue;
         }
+        ShaderSpecialisation key = specialised;
+        key.mapSet = mapSet;
+        program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
+                  : settings.path == RenderPath::Multi
+                      ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface)
+                      : &s.shading.useSpecialised(model, key, output, surface);
     }
-    shading = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
-              : settings.path == RenderPath::Multi
-                  ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface)
-              : shadingByMapSet.empty() ? &s.shading.useSpecialised(model, specialisation(), output, surface)
-                                        : shadingByMapSet.begin()->second;
     if (settings.path == RenderPath::Multi) {
         s.prepass(maps).get();
     }
@@ -538,28 +547,34 @@ void blendOver(float alpha) {
 }
 }  // namespace
 
-const GlProgram& Renderer::Frame::programOf(const DrawPlan& item) const {
-    if (shadingByMapSet.empty()) {
-        return *shading;
-    }
-    const SceneDraw& draw = draws[item.item];
-    return *shadingByMapSet.at(draw.maps ? mapSetOf(*draw.maps) : 0);
+std::pair<BrdfModelId, int> Renderer::Frame::programKeyOf(const SceneDraw& draw) const {
+    const bool byMapSet = settings.path == RenderPath::Specialised && maps;
+    return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet};
+}
+
+Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {
+    const auto key = programKeyOf(draws[item.item]);
+    return {key.first, shading.at(key)};
+}
+
+void Renderer::Frame::useProgram(const ItemProgram& program) const {
+    s.shading.bind(program.model, *program.program, environment);
 }
 
 // Single and specialised: each item in one pass of every light. Blended items test against
 // the opaque items' depth and write none, so each shows what lies behind it.
 void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
     // Items keep the plan's order (the same depth ties as one program); the program changes
-    // only where an item's map set does.
+    // only where an item's BRDF model or map set does.
     const GlProgram* current = nullptr;
     std::optional<DrawUniforms> uniforms;
     auto drawWithItsProgram = [&](const DrawPlan& item) {
-        const GlProgram& program = programOf(item);
-        if (&program != current) {
-            current = &program;
-            program.use();
-            prepare(program);
-            uniforms.emplace(program, mapTextures());
+        const ItemProgram program = programOf(item);
+        if (program.program != current) {
+            current = program.program;
+            useProgram(program);
+            prepare(*current);
+            uniforms.emplace(*current, mapTextures());
         }
         useItem(*uniforms, item);
         drawItem(item);
@@ -588,40 +603,53 @@ void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
         useItem(prepassUniforms, item);
         drawItem(item);
     }
-    shading->use();
-    prepare(*shading);
-    const DrawUniforms uniforms(*shading, mapTextures());
-    const GLint lightIndex = shading->uniform("uLightIndex");
-    // The passes add 0 to alpha, so the pre-pass's stamp (RenderTargets::SampleStamp) stays.
-    glUniform1f(shading->uniform("uSampleStamp"), 0.0f);
+    // The item's shading program, made current with its uniforms where it changes (another
+    // BRDF model's, or after the pre-pass's).
+    const GlProgram* current = nullptr;
+    std::optional<DrawUniforms> uniforms;
+    auto useShading = [&](const DrawPlan& item) {
+        const ItemProgram program = programOf(item);
+        if (program.program == current) {
+            return;
+        }
+        current = program.program;
+        useProgram(program);
+        prepare(*current);
+        uniforms.emplace(*current, mapTextures());
+        // The passes add 0 to alpha, so the pre-pass's stamp (RenderTargets::SampleStamp) stays.
+        glUniform1f(current->uniform("uSampleStamp"), 0.0f);
+    };
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
     for (const DrawPlan& item : opaque) {
-        useItem(uniforms, item);
-        lightPasses(lightIndex, item);
+        useShading(item);
+        useItem(*uniforms, item);
+        lightPasses(*current, item);
     }
     glDepthFunc(GL_LESS);   // against the opaque items' depth; the blended ones write none
     for (const DrawPlan& item : blended) {
         const float alpha = draws[item.item].alpha;
         depthPrepass.use();
+        current = nullptr;
         useItem(prepassUniforms, item);   // the pre-pass's stamp: the sample now holds a drawn value
         glBlendColor(0.0f, 0.0f, 0.0f, alpha);
         glBlendFuncSeparate(GL_ZERO, GL_ONE_MINUS_CONSTANT_ALPHA, GL_ONE, GL_ZERO);
         drawItem(item);
-        shading->use();
+        useShading(item);
         glBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
-        useItem(uniforms, item);
-        lightPasses(lightIndex, item);
+        useItem(*uniforms, item);
+        lightPasses(*current, item);
     }
 }
 
 // One item's light passes, then the environment's, as in the single pass (the shading program
 // in use; `lightIndex` its uLightIndex).
 // Emission (with maps) comes in the first pass only.
-void Renderer::Frame::lightPasses(GLint lightIndex, const DrawPlan& item) const {
-    const GLint emissionPass = maps ? shading->uniform("uEmissionPass") : -1;
+void Renderer::Frame::lightPasses(const GlProgram& shading, const DrawPlan& item) const {
+    const GLint lightIndex = shading.uniform("uLightIndex");
+    const GLint emissionPass = maps ? shading.uniform("uEmissionPass") : -1;
     for (size_t i = 0; i < packed.size(); ++i) {
         glUniform1i(emissionPass, i == 0 ? 1 : 0);
         glUniform1i(lightIndex, GLint(i));

@@ -74,6 +74,10 @@ public:
     const GlProgram& useSpecialised(BrdfModelId model, const ShaderSpecialisation& key,
                                     Output output = Output::Linear, Surface surface = Surface::Factors);
     static constexpr size_t kSpecialisedCapacity = 16;
+    // Makes `program`, one that use, useSingle or useSpecialised returned for `model`, current
+    // again with that model's tables bound: a frame whose items have several BRDF models
+    // switches between their programs (each model has its own tables on the same units).
+    const GlProgram& bind(BrdfModelId model, const GlProgram& program, bool environment);
     // From here on the programs useSpecialised returns are the frame's, and stay.
     void beginFrame() { frameStart_ = useCount_ + 1; }
     size_t specialisedCount() const { return specialised_.size(); }
@@ -97,7 +101,6 @@ private:
     unsigned environmentBrdfTexture(BrdfModelId model);
     std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, Surface surface,
                                      const std::vector<const char*>& vertexParts, std::vector<std::string> defines);
-    const GlProgram& bind(BrdfModelId model, const GlProgram& program, bool environment);
 };
 
 }  // namespace patina

@@ -4,6 +4,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "gltf/cameras.h"
 #include "gltf/import.h"
 #include "gltf/nodes.h"
 #include "gltf/primitives.h"
@@ -121,10 +122,13 @@ private:
 
 Model modelGeometry(const tinygltf::Model& document, const std::string& source) {
     GeometryBuilder builder(document, source);
-    for (const MeshInstance& instance : meshInstances(document, source)) {
+    const SceneInstances instances = sceneInstances(document, source);
+    for (const MeshInstance& instance : instances.meshes) {
         builder.addInstance(instance);
     }
-    return builder.finish();
+    Model model = builder.finish();
+    model.cameras = modelCameras(document, instances.cameras, model.notes);
+    return model;
 }
 
 }  // namespace patina::gltf

@@ -148,7 +148,7 @@ std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, co
 ModelImage readImageFile(const std::filesystem::path& path) {
     const std::vector<uint8_t> bytes = readModelFile(path);
     ModelImage image;
-    image.name = path.string();
+    image.name = path.filename().string();
     uint64_t size = 0;
     std::string problem = ImageBudget().admit(bytes, size);
     if (problem.empty()) {

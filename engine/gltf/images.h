@@ -29,7 +29,9 @@ std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, co
 
 // An image file a scene puts in place of one of a model's maps (Scene's mapsReplaced): PNG or
 // JPEG by its signature, at most kGltfMaxImageSide a side, decoded as a model's images are. Its
-// name is the file's path. Throws InputError naming the file and why it cannot be had.
+// name is the file's name, without its folder: a name travels into exports (an exported glTF's
+// image once carried the user's whole path), and the scene keeps the path. Throws InputError
+// naming the file and why it cannot be had.
 ModelImage readImageFile(const std::filesystem::path& path);
 
 }  // namespace patina::gltf

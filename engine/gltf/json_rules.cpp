@@ -86,6 +86,7 @@ void sceneGraph(Rules& rules) {
     arrayOf(rules, "/scenes/*/nodes", index("node"));
     arrayOf(rules, "/nodes/*/children", index("node"));
     rules["/nodes/*/mesh"] = index("mesh");
+    rules["/nodes/*/camera"] = index("camera");
     rules["/nodes/*/name"] = kString;
     for (const char* transform : {"matrix", "translation", "rotation", "scale"}) {
         arrayOf(rules, std::string("/nodes/*/") + transform, kNumber);
@@ -97,6 +98,15 @@ void sceneGraph(Rules& rules) {
     rules[primitive + "/indices"] = index("accessor");
     rules[primitive + "/material"] = index("material");
     rules[primitive + "/mode"] = kInteger;
+}
+
+// Cameras (sections 5.12-5.14): what a camera node's view is made of.
+void cameras(Rules& rules) {
+    rules["/cameras/*/name"] = kString;
+    rules["/cameras/*/type"] = kString;
+    rules["/cameras/*/perspective"] = kObject;
+    rules["/cameras/*/perspective/yfov"] = kNumber;
+    rules["/cameras/*/orthographic"] = kObject;
 }
 
 // Accessors, buffer views and buffers (sections 5.1-5.4, 5.10 and 5.11).
@@ -127,7 +137,7 @@ void data(Rules& rules) {
 Rules makeRules() {
     Rules rules;
     for (const char* collection : {"/scenes", "/nodes", "/meshes", "/materials", "/textures", "/images", "/samplers",
-                                   "/accessors", "/bufferViews", "/buffers"}) {
+                                   "/accessors", "/bufferViews", "/buffers", "/cameras"}) {
         arrayOf(rules, collection, kObject);
     }
     arrayOf(rules, "/extensionsUsed", kString);
@@ -135,6 +145,7 @@ Rules makeRules() {
     rules["/asset"] = kObject;
     rules["/asset/version"] = kString;
     sceneGraph(rules);
+    cameras(rules);
     materials(rules);
     textures(rules);
     data(rules);

@@ -31,6 +31,9 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     Material result;
     result.name = material.name.empty() ? fallbackName : material.name;
+    // Shaded as the file's format defines it (glTF 2.0 Appendix B), so that what is tuned here
+    // is what a glTF engine shows; a scene may still choose another model per part.
+    result.model = BrdfModelId::Gltf;
     for (int i = 0; i < 3; ++i) {
         result.baseColor[i] = unit(pbr.baseColorFactor.at(size_t(i)));
     }

@@ -151,14 +151,14 @@ std::string nodeName(const tinygltf::Model& model, int node) {
 }
 
 // Depth first with a stack of its own: a hierarchy a million nodes deep must not overflow ours.
-std::vector<MeshInstance> meshInstances(const tinygltf::Model& model, const std::string& source) {
+SceneInstances sceneInstances(const tinygltf::Model& model, const std::string& source) {
     const std::vector<int> parent = parents(model, source);
     refuseCycles(parent, source);
     const std::vector<int> roots = rootNodes(model, parent, source);
     // Trees now: each node is reached once. Its parent's world is looked up, not copied.
     std::vector<glm::dmat4> worlds(model.nodes.size());
     std::vector<int> stack(roots.rbegin(), roots.rend());
-    std::vector<MeshInstance> instances;
+    SceneInstances instances;
     while (!stack.empty()) {
         const int index = stack.back();
         stack.pop_back();
@@ -174,7 +174,10 @@ std::vector<MeshInstance> meshInstances(const tinygltf::Model& model, const std:
             if (node.mesh < 0 || size_t(node.mesh) >= model.meshes.size()) {
                 fail(source, where + "/mesh: mesh " + std::to_string(node.mesh) + " does not exist");
             }
-            instances.push_back({index, node.mesh, world});
+            instances.meshes.push_back({index, node.mesh, world});
+        }
+        if (node.camera != -1) {
+            instances.cameras.push_back({index, node.camera, world});
         }
         stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
     }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "shading/brdf_models.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -210,9 +211,13 @@ Rgb8 heatColour(int difference) {
 std::string materialCaption(const Material& material, int panelWidth) {
     // The base colour as the editor's field shows it: sRGB, and named so (files hold linear).
     const glm::vec3 base = shader::srgbColor(material.baseColor);
-    char full[96], parameters[48];
-    std::snprintf(parameters, sizeof parameters, "  r %.2f s %.2f m %.2f", double(material.roughness),
-                  double(material.specular), double(material.metallic));
+    char full[128], parameters[80];
+    // The BRDF model where it is not the seed's: A and B may differ in it alone (a glTF part
+    // under `gltf` against the same under `epic`).
+    const std::string model =
+        material.model == BrdfModelId::Epic ? std::string() : "  " + std::string(brdfModel(material.model).name);
+    std::snprintf(parameters, sizeof parameters, "  r %.2f s %.2f m %.2f%s", double(material.roughness),
+                  double(material.specular), double(material.metallic), model.c_str());
     std::snprintf(full, sizeof full, "%s  base sRGB %.2f %.2f %.2f", parameters, double(base.r), double(base.g),
                   double(base.b));
     const int scale = captionScale(panelWidth);

@@ -164,8 +164,7 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     const std::string tonemap = reader.string("tonemap", "none");
     const auto parsed = tonemapFromName(tonemap);
     if (!parsed) {
-        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) +
-                                   " (expected \"none\", \"aces\", \"reinhard\" or \"pbr-neutral\")");
+        reader.fail("tonemap", "unknown tone map " + shortJson(tonemap) + " (known: " + tonemapNames() + ")");
     }
     display.tonemap = *parsed;
     // The scene's environment itself behind the mesh, blurred to a roughness (the colour stays
@@ -221,6 +220,18 @@ Json lightToJson(const Light& light) {
 }
 }  // namespace
 
+namespace {
+// A BRDF model by its name (shading/brdf_models.h), the key required to be a known one.
+BrdfModelId brdfModelFromJson(JsonObjectReader& reader, const char* key) {
+    const std::string name = reader.string(key, "");
+    const auto id = brdfModelFromName(name);
+    if (!id) {
+        reader.fail(key, "unknown BRDF model " + shortJson(name) + " (known: " + brdfModelNames() + ")");
+    }
+    return *id;
+}
+}  // namespace
+
 Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
                           bool requireHeader, std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, pointer, source);
@@ -233,12 +244,9 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.roughness = reader.number("roughness", material.roughness, kUnit);
     material.specular = reader.number("specular", material.specular, kUnit);
     material.metallic = reader.number("metallic", material.metallic, kUnit);
-    const std::string model = reader.string("model", std::string(brdfModel(material.model).name));
-    const auto modelId = brdfModelFromName(model);
-    if (!modelId) {
-        reader.fail("model", "unknown BRDF model " + shortJson(model) + " (known: " + brdfModelNames() + ")");
+    if (reader.has("model")) {
+        material.model = brdfModelFromJson(reader, "model");
     }
-    material.model = *modelId;
     material.notes = reader.string("notes", material.notes);
     material.extras = reader.keepUnknown(warnings);
     // Saved inline in a scene (a screenshot's), the material is one level down: it must still
@@ -395,6 +403,11 @@ Scene sceneFromJson(const Json& json, const std::string& source,
     if (const Json* edits = reader.child("modelMaterials")) {
         scene.modelMaterials = modelMaterialsFromJson(*edits, source, baseDirectory, warnings);
     }
+    if (reader.has("modelBrdf")) {
+        scene.modelBrdf = brdfModelFromJson(reader, "modelBrdf");
+    } else if (version < 3 && !scene.meshFile.empty()) {
+        scene.modelBrdf = scene.material.model;   // how versions 1 and 2 shaded a model (kSceneFormatVersion)
+    }
     if (const Json* camera = reader.child("camera")) {
         scene.camera = cameraFromJson(*camera, "/camera", source, warnings);
     }
@@ -500,6 +513,9 @@ Json sceneToJson(const Scene& scene) {
                                    camera.extras)},
              {"lights", lights},
              {"display", withExtras(displayToJson(display), display.extras)}};
+    if (scene.modelBrdf) {
+        json["modelBrdf"] = brdfModel(*scene.modelBrdf).name;
+    }
     if (!scene.modelMaterials.empty()) {   // only a tuned model's scene has the key
         Json edits = Json::array();
         for (const ModelMaterialEdit& edit : scene.modelMaterials) {

@@ -12,8 +12,11 @@ namespace patina {
 // docs/FORMATS.md describes both formats.
 constexpr int kMaterialFormatVersion = 1;
 // 2: a point light's attenuation window is "range" (version 1 called it "radius", which sphere
-// lights need for their size). Version 1 files still load; saving writes version 2.
-constexpr int kSceneFormatVersion = 2;
+// lights need for their size). Version 1 files still load.
+// 3: a glTF model's parts are shaded each with its own BRDF model (the file's are `gltf`) unless
+// "modelBrdf" names one for all; a version 1 or 2 scene shaded them all with its material's
+// model, so reading one sets "modelBrdf" to that and it keeps its look. Saving writes version 3.
+constexpr int kSceneFormatVersion = 3;
 
 Material materialFromJson(const Json& json, const std::string& pointer, const std::string& source,
                           bool requireHeader, std::vector<std::string>& warnings);

@@ -109,11 +109,27 @@ struct DrawItem {
     bool operator==(const DrawItem&) const = default;
 };
 
+// A camera of the file as a node of the default scene places it (glTF 2.0 section 3.10): from
+// the node's origin it looks down the node's -Z with the node's +Y up. The node's scale is not
+// the camera's: only the directions are kept, as unit vectors.
+struct ModelCamera {
+    std::string name;     // the camera's name, else its node's, else "camera N"
+    std::string node;     // the node placing it (its name or "node N")
+    int index = 0;        // N: its place in the file's `cameras`
+    bool perspective = true;   // false: orthographic, which Patina does not draw
+    float yfov = 0.8f;         // perspective: the vertical field of view, radians
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    bool operator==(const ModelCamera&) const = default;
+};
+
 struct Model {
     std::vector<Mesh> primitives;        // each in its own (the mesh's) space
     std::vector<ModelMaterial> materials;
     std::vector<ModelImage> images;
     std::vector<DrawItem> draws;         // the default scene's node instances, in node order
+    std::vector<ModelCamera> cameras;    // the default scene's camera nodes, in node order
     std::vector<std::string> notes;      // what was skipped or left out, a line each
 };
 

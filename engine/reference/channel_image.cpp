@@ -61,9 +61,10 @@ HdrImage channelImage(const PreparedScene& prepared, const PixelSurfaces& surfac
         if (i < 0) {
             continue;
         }
+        const BrdfModelId model = draws[size_t(surfaces.drawOfSample[size_t(i)])].material.model;
         const shader::ChannelInputs inputs =
-            gatherChannelInputs(prepared.scene.material.model, channelPoint(surfaces, draws, size_t(i)), packed,
-                                lights.asked, lights.key, environment ? &*environment : nullptr);
+            gatherChannelInputs(model, channelPoint(surfaces, draws, size_t(i)), packed, lights.asked, lights.key,
+                                environment ? &*environment : nullptr);
         const glm::vec3 value = shader::channelValue(request.channel, inputs, channelPbrRanges(request));
         std::copy(&value.x, &value.x + 3, &image.rgb[pixel * 3]);
     }

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "reference/channel_image.h"
+#include "shading/brdf_models.h"
 #include "scene/channel.h"
 #include "scene/light_packing.h"
 
@@ -29,7 +31,8 @@ std::optional<PixelStory> pixelStory(const PreparedScene& prepared, const PixelS
     story.x = x;
     story.y = y;
     const std::vector<SceneDraw> draws = sceneDraws(prepared);
-    nameItem(story, prepared, draws[size_t(surfaces.drawOfSample[size_t(sample)])]);
+    const SceneDraw& draw = draws[size_t(surfaces.drawOfSample[size_t(sample)])];
+    nameItem(story, prepared, draw);
     const ProbeSample& surface = surfaces.samples[size_t(sample)];
     story.position = surface.position;
     story.view = surface.toViewer;
@@ -39,14 +42,19 @@ std::optional<PixelStory> pixelStory(const PreparedScene& prepared, const PixelS
     const std::vector<shader::PackedLight> packed = packEnabledLights(lights);
     const ChannelLights channel = channelLights(lights, {});
     const ChannelPoint point = channelPoint(surfaces, draws, size_t(sample));
-    const BrdfModelId model = prepared.scene.material.model;
+    const BrdfModelId model = draw.material.model;
+    story.model = std::string(brdfModel(model).name);
     const std::optional<ChannelEnvironment> environment = channelEnvironment(prepared);
     story.inputs = gatherChannelInputs(model, point, packed, -1, channel.key, environment ? &*environment : nullptr);
     if (channel.key >= 0) {
         story.keyLight = lights[order[size_t(channel.key)]].name;
     }
-    // Each enabled light's lobes: the same gather over that light alone.
-    for (size_t i = 0; i < packed.size(); ++i) {
+    // Each enabled light's lobes: the same gather over that light alone, in the scene's order
+    // (the lights panel's), not the packing's (area lights last).
+    std::vector<size_t> byScene(packed.size());
+    std::iota(byScene.begin(), byScene.end(), size_t(0));
+    std::sort(byScene.begin(), byScene.end(), [&](size_t a, size_t b) { return order[a] < order[b]; });
+    for (size_t i : byScene) {
         const shader::ChannelInputs alone = gatherChannelInputs(model, point, {packed[i]}, -1, -1, nullptr);
         const Light& light = lights[order[i]];
         story.lights.push_back({light.name, std::string(lightTypeName(light.type)), alone.diffuse,

@@ -29,6 +29,7 @@ struct PixelStory {
     int x = 0, y = 0;
     std::string item;       // the draw item's name (a model's node and part), "" for a built-in mesh
     std::string material;   // its material's name, "" where it has none
+    std::string model;      // the BRDF model it is shaded with (shading/brdf_models.h)
     glm::vec3 position{0.0f}, view{0.0f};
     // Every channel's input at the pixel, under every light and the environment (channels.glsl):
     // the normals, UVs and tangent, the material after its maps, D, G and F towards the key

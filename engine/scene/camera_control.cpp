@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/camera_placement.h"
 #include "scene/view.h"
 
 namespace patina {
@@ -56,8 +57,7 @@ void dollyCamera(Camera& camera, float factor) {
 
 void frameCamera(Camera& camera, glm::vec3 center, float radius) {
     const glm::vec3 back = glm::normalize(camera.position - camera.target);
-    const float halfFov = glm::radians(camera.fovYDegrees) * 0.5f;
-    const float distance = radius / std::sin(halfFov) * 1.1f;
+    const float distance = framingDistance(radius, camera.fovYDegrees) * 1.1f;
     camera.target = center;
     camera.position = center + distance * back;
 }

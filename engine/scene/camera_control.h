@@ -15,7 +15,8 @@ void orbitCamera(Camera& camera, float deltaAzimuth, float deltaElevation);
 void panCamera(Camera& camera, float rightFraction, float upFraction);
 // Multiplies the distance to the target by `factor` (clamped to [0.05, 1000]).
 void dollyCamera(Camera& camera, float factor);
-// Keeps the view direction and aims at a sphere of `radius` around `center`, filling the view.
+// Keeps the view direction and aims at a sphere of `radius` around `center`, filling the view
+// (at 110% of camera_placement.h's framingDistance).
 void frameCamera(Camera& camera, glm::vec3 center, float radius);
 
 // Window coordinates (pixels, y down) of a world point in a viewport of `size` pixels, or

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/camera_control.h"
+#include "scene/camera_placement.h"
 
 namespace patina {
 
@@ -42,7 +42,7 @@ BoundingSphere shapeBounds(const Scene& scene, const Mesh* mesh) {
 }
 
 void fitSceneTo(Scene& scene, const BoundingSphere& from, const BoundingSphere& to) {
-    frameCamera(scene.camera, to.center, to.radius);
+    frameAsModelViewer(scene.camera, to);
     moveLightRig(scene.lights, from, to);
 }
 

@@ -24,7 +24,9 @@ void moveLightRig(std::vector<Light>& lights, const BoundingSphere& from, const 
 BoundingSphere shapeBounds(const Scene& scene, const Mesh* mesh);
 
 // The scene's shape replaced by one of `to`'s bounds, as opening a model does: the camera frames
-// it and the rig moves from `from` (the shape's before) onto it.
+// it as model-viewer frames a model it loads (frameAsModelViewer: from the front and a little
+// above, whatever the camera looked at before) and the rig moves from `from` (the shape's
+// before) onto it.
 void fitSceneTo(Scene& scene, const BoundingSphere& from, const BoundingSphere& to);
 
 }  // namespace patina

@@ -18,7 +18,6 @@ namespace {
 
 // Item `i` of `model` as drawn, or nothing when its MASK cutoff hides it whole.
 std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_t i) {
-    const BrdfModelId brdf = scene.material.model;
     const DrawItem& item = model.draws[i];
     if (item.primitive < 0 || size_t(item.primitive) >= model.primitives.size()) {
         missing(i, "primitive", item.primitive, model.primitives.size());
@@ -40,7 +39,7 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
     draw.normalTransform = normalTransform(item.transform);
     const ModelMaterialEdit* edit = item.material >= 0 ? editOf(scene, item.material, material) : nullptr;
     draw.material = edit ? edit->material : material.factors;
-    draw.material.model = brdf;
+    draw.material.model = scene.modelBrdf.value_or(draw.material.model);
     draw.doubleSided = material.doubleSided;
     draw.reverseBackNormals = material.doubleSided;
     draw.blend = material.alphaMode == AlphaMode::Blend;
@@ -100,10 +99,13 @@ void setPartMaterials(Scene& scene, const Model& model, const Material& material
         found = true;
         Material named = material;
         named.name = name;
-        // An edit there keeps its maps left out and replaced: the factors are what is named.
+        // An edit there keeps its maps left out and replaced, and the part its BRDF model: the
+        // factors are what is named.
         const auto same = std::find_if(scene.modelMaterials.begin(), scene.modelMaterials.end(),
                                        [&](const ModelMaterialEdit& old) { return old.index == int(i); });
-        if (same != scene.modelMaterials.end() && same->material.name == name) {
+        const bool edited = same != scene.modelMaterials.end() && same->material.name == name;
+        named.model = edited ? same->material.model : model.materials[i].factors.model;
+        if (edited) {
             same->material = std::move(named);
             continue;
         }
@@ -136,6 +138,7 @@ MaterialParameters defaultModelMaterial() {
     material.metallic = 1.0f;
     material.roughness = 1.0f;
     material.specular = 0.5f;
+    material.model = BrdfModelId::Gltf;
     return material;
 }
 

@@ -66,13 +66,14 @@ bool hasMaps(const ModelMaterial& material);
 int mapSetOf(const ModelMaterial& material);
 
 // glTF's default material (§3.9.6) in Patina's parameters: white, metallic 1, roughness 1, and
-// specular 0.5 (F0 0.04, a glTF dielectric's).
+// specular 0.5 (F0 0.04, a glTF dielectric's), shaded as glTF's (`gltf`).
 MaterialParameters defaultModelMaterial();
 
 // What `prepared` draws, in order: without a model its mesh with the document's material, as
 // it has always been drawn; with one each draw item with its own material (the default one for
-// none; its factors the scene's edit of it, Scene::modelMaterials, where there is one), under
-// the document's BRDF model (one program shades a frame). A MASK item whose alpha
+// none; its factors the scene's edit of it, Scene::modelMaterials, where there is one), each
+// under its own BRDF model (the file's `gltf`, an edit's own) unless Scene::modelBrdf names
+// one for all. A MASK item whose alpha
 // is below its cutoff is left out: a texture's alpha, at most 1, could only lower it. Throws
 // std::invalid_argument for a scene without its mesh, or an item naming a primitive or
 // material the model lacks.
@@ -94,8 +95,9 @@ Model tunedModel(const Model& model, const Scene& scene);
 
 // `material`'s factors (not its name) on the parts of `model` whose material is named `part`,
 // or on every part when `part` is empty, as the scene's edits of them (Scene::modelMaterials;
-// each part keeps its name and maps, and an edit's maps left out or replaced): what a material named on the command line does to a
-// model. Throws std::invalid_argument listing the parts when none is named `part`.
+// each part keeps its name, maps and BRDF model, and an edit's maps left out or replaced: a
+// material's model is for the built-in meshes): what a material named on the command line or a
+// preset does to a model. Throws std::invalid_argument listing the parts when none is named `part`.
 void setPartMaterials(Scene& scene, const Model& model, const Material& material, const std::string& part = {});
 
 }  // namespace patina

@@ -8,26 +8,36 @@ namespace patina {
 std::string_view tonemapName(Tonemap tonemap) {
     switch (tonemap) {
     case Tonemap::None: return "none";
-    case Tonemap::Aces: return "aces";
+    case Tonemap::AcesNarkowicz: return "aces-narkowicz";
     case Tonemap::Reinhard: return "reinhard";
     case Tonemap::PbrNeutral: return "pbr-neutral";
+    case Tonemap::AcesHill: return "aces-hill";
+    case Tonemap::Agx: return "agx";
     }
     return "none";
 }
 
 int tonemapShaderIndex(Tonemap tonemap) {
     switch (tonemap) {
-    case Tonemap::Aces: return shader::TONEMAP_ACES;
+    case Tonemap::AcesNarkowicz: return shader::TONEMAP_ACES_NARKOWICZ;
     case Tonemap::Reinhard: return shader::TONEMAP_REINHARD;
     case Tonemap::PbrNeutral: return shader::TONEMAP_PBR_NEUTRAL;
+    case Tonemap::AcesHill: return shader::TONEMAP_ACES_HILL;
+    case Tonemap::Agx: return shader::TONEMAP_AGX;
     case Tonemap::None: break;
     }
     return shader::TONEMAP_NONE;
 }
 
 std::optional<Tonemap> tonemapFromName(std::string_view name) {
-    static const Tonemap all[] = {Tonemap::None, Tonemap::Aces, Tonemap::Reinhard, Tonemap::PbrNeutral};
-    return enumFromName(name, all, tonemapName);
+    if (name == "aces") {
+        return Tonemap::AcesNarkowicz;   // the name before Hill's fit came: files and scripts keep their look
+    }
+    return enumFromName(name, kTonemaps, tonemapName);
+}
+
+std::string tonemapNames() {
+    return enumNameList(kTonemaps, tonemapName);
 }
 
 const Light* enabledEnvironment(const std::vector<Light>& lights) {

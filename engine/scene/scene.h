@@ -22,9 +22,21 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
-enum class Tonemap { None, Aces, Reinhard, PbrNeutral };
+// The view transforms (shaders/shared/display.glsl has each one's source). The ACES fits are
+// two: Narkowicz's (named "aces" before Hill's joined it, a name still read as his) and Hill's
+// as three.js and the Khronos viewer apply it.
+enum class Tonemap { None, AcesNarkowicz, Reinhard, PbrNeutral, AcesHill, Agx };
+// Every tone map, in the order the editor offers them.
+inline constexpr Tonemap kTonemaps[] = {Tonemap::None,       Tonemap::PbrNeutral,    Tonemap::AcesHill,
+                                        Tonemap::Agx,        Tonemap::AcesNarkowicz, Tonemap::Reinhard};
+// "none", "pbr-neutral", "aces-hill", "agx", "aces-narkowicz", "reinhard": the name in files,
+// on the command line and in the editor.
 std::string_view tonemapName(Tonemap tonemap);
+// The tone map of `name`, or of "aces" (older files' name for "aces-narkowicz"); nothing for
+// any other name.
 std::optional<Tonemap> tonemapFromName(std::string_view name);
+// "none, pbr-neutral, ...": the names, for messages and help.
+std::string tonemapNames();
 // The shaders' TONEMAP_* value (shaders/shared/display.glsl) of a tone map.
 int tonemapShaderIndex(Tonemap tonemap);
 
@@ -70,6 +82,10 @@ struct Scene {
     std::string meshFile;
     Material material;   // the built-in meshes'
     std::vector<ModelMaterialEdit> modelMaterials;   // the model's materials as tuned, by index
+    // The BRDF model every part of the model is shaded with, in place of each part's own (the
+    // file's materials are glTF's, `gltf`; an edit names its own): set by `render --model`, and
+    // by a scene written before version 3, which shaded the whole model with `material`'s model.
+    std::optional<BrdfModelId> modelBrdf;
     Camera camera;
     std::vector<Light> lights;
     DisplaySettings display;

@@ -16,12 +16,14 @@ glm::vec3 boxCorner(const BoundingBox& box, int corner) {
 }
 }  // namespace
 
+glm::vec3 viewUp(glm::vec3 forward) {
+    return std::abs(forward.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+}
+
 glm::mat4 viewProjection(const Camera& camera, float aspect) {
     const glm::vec3 forward = camera.target - camera.position;
     const float distance = glm::length(forward);
-    // Looking straight up or down, +y cannot be the up vector.
-    const glm::vec3 unitForward = forward / distance;
-    const glm::vec3 up = std::abs(unitForward.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+    const glm::vec3 up = viewUp(forward / distance);
     const float nearPlane = std::max(1e-3f, distance * 0.01f);
     const float farPlane = distance * 10.0f + 10.0f;
     return glm::perspective(glm::radians(camera.fovYDegrees), aspect, nearPlane, farPlane) *

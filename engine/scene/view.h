@@ -8,6 +8,10 @@
 
 namespace patina {
 
+// The up vector of a view along the unit `forward`: +Y, or -Z looking straight up or down (where
+// +Y cannot be one).
+glm::vec3 viewUp(glm::vec3 forward);
+
 // Where the camera looks, as GL's clip space: perspective of camera.fovYDegrees at `aspect`,
 // near and far planes scaled to the camera's distance from its target.
 glm::mat4 viewProjection(const Camera& camera, float aspect);

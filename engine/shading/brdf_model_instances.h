@@ -29,5 +29,9 @@
 #include "shading/brdf_model_instance.h"
 #define PATINA_INSTANCE Reference
 #include "shading/brdf_model_instance.h"
+#define PATINA_INSTANCE Gltf
+#include "shading/brdf_model_instance.h"
+#define PATINA_INSTANCE GltfSingle
+#include "shading/brdf_model_instance.h"
 #pragma GCC diagnostic pop
 #undef PATINA_INLINE

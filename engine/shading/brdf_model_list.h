@@ -29,6 +29,10 @@
     PATINA_D_GGX, PATINA_V_HAMMON, PATINA_F_SCHLICK_POW5, PATINA_FD_LAMBERT, PATINA_MS_TURQUIN
 #define PATINA_TERMS_Reference \
     PATINA_D_GGX, PATINA_V_SMITH_CORRELATED, PATINA_F_DIELECTRIC_EXACT, PATINA_FD_LAMBERT, PATINA_MS_TURQUIN
+#define PATINA_TERMS_Gltf \
+    PATINA_D_GGX, PATINA_V_SMITH_CORRELATED, PATINA_F_SCHLICK_POW5, PATINA_FD_LAMBERT_FRESNEL_MIX, PATINA_MS_FDEZ_AGUERA
+#define PATINA_TERMS_GltfSingle \
+    PATINA_D_GGX, PATINA_V_SMITH_CORRELATED, PATINA_F_SCHLICK_POW5, PATINA_FD_LAMBERT_FRESNEL_MIX, PATINA_MS_NONE
 
 // X(identifier, name, summary)
 #define PATINA_BRDF_MODELS(X)                                                                        \
@@ -43,7 +47,9 @@
     X(Burley, "burley", "epic with Burley 2012 diffuse")                                           \
     X(EpicMultiScatter, "epic-ms", "epic with Turquin 2019 multiple-scattering compensation")      \
     X(Filament, "filament", "Hammon visibility, pow5 Fresnel, Lambert, energy compensation")      \
-    X(Reference, "reference", "exact height-correlated Smith, exact Fresnel, energy compensation")
+    X(Reference, "reference", "exact height-correlated Smith, exact Fresnel, energy compensation")   \
+    X(Gltf, "gltf", "glTF 2.0 Appendix B: fresnel_mix, correlated Smith, pow5; Fdez-Aguera under IBL")   \
+    X(GltfSingle, "gltf-single", "gltf without Fdez-Aguera's multiple scattering under IBL")
 
 #define PATINA_TERM_D(d, v, f, fd, ms) d
 #define PATINA_TERM_V(d, v, f, fd, ms) v

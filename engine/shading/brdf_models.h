@@ -28,12 +28,18 @@ struct BrdfModelInfo {
     std::string_view name;
     BrdfTerms terms;
     std::string_view summary;
-    // Single scattering with exact Smith visibility: its white-furnace albedo must stay <= 1.
+    // Single scattering with exact Smith visibility under lights: its white-furnace albedo must
+    // stay <= 1. Fdez-Aguera's term acts under an environment only; fresnel_mix's diffuse takes
+    // only what the specular leaves.
     bool energyConserving() const {
         return (terms.v == PATINA_V_SMITH_SEPARABLE || terms.v == PATINA_V_SMITH_CORRELATED) &&
-               terms.ms == PATINA_MS_NONE && terms.fd == PATINA_FD_LAMBERT;
+               !multipleScattering() &&
+               (terms.fd == PATINA_FD_LAMBERT || terms.fd == PATINA_FD_LAMBERT_FRESNEL_MIX);
     }
-    bool multipleScattering() const { return terms.ms != PATINA_MS_NONE; }
+    // The BRDF itself compensates (Turquin 2019: every light, from the energy table).
+    bool multipleScattering() const { return terms.ms == PATINA_MS_TURQUIN; }
+    // The split sum adds Fdez-Aguera 2019's multiple scattering (the environment only).
+    bool environmentMultipleScattering() const { return terms.ms == PATINA_MS_FDEZ_AGUERA; }
 };
 
 std::span<const BrdfModelInfo> brdfModels();

@@ -27,6 +27,12 @@ struct SurfaceMaterial {
     vec3 f0;             // c_spec: reflectance at normal incidence
     real roughness;     // perceptual r, after the floor above
     real alpha;         // r^2
+    // The two lobes glTF 2.0's Appendix B mixes by metallic, kept apart for the models that
+    // weigh them apart (PATINA_FD_LAMBERT_FRESNEL_MIX, PATINA_MS_FDEZ_AGUERA); the others read
+    // only the four above.
+    vec3 dielectricF0;   // 0.08 s: the dielectric's F0 alone (0.04 at s = 0.5, ior 1.5)
+    vec3 baseColor;      // c_base: the metal's F0
+    real metallic;      // m
 };
 
 struct BrdfValue {
@@ -46,7 +52,7 @@ PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, real roughne
     real r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
     return SurfaceMaterial((1.0f - metallic) * baseColor,
                            mix(vec3(0.08f * specular), baseColor, metallic),
-                           r, r * r);
+                           r, r * r, vec3(0.08f * specular), baseColor, metallic);
 }
 
 // Lambert: c_diff / pi (Karis 2013, eq. 1).

@@ -4,7 +4,9 @@
 // permutation compiles only the terms it uses:
 //   PATINA_D, PATINA_V, PATINA_F, PATINA_FD, PATINA_MS   one of brdf_terms.glsl's names each
 //   PATINA_NO_DIFFUSE (defined or not): c_diff = 0, no diffuse term (specialised shaders)
-// The defaults are the seed model, "epic".
+// The defaults are the seed model, "epic". glTF 2.0's Appendix B BRDF ("gltf") is D_GGX,
+// V_SMITH_CORRELATED, F_SCHLICK_POW5, FD_LAMBERT_FRESNEL_MIX and, under an environment,
+// MS_FDEZ_AGUERA.
 #ifndef PATINA_D
 #define PATINA_D PATINA_D_GGX
 #endif
@@ -71,6 +73,11 @@ PATINA_INLINE vec3 diffuse(SurfaceMaterial material, real NoV, real NoL, real Lo
     return vec3(0.0f);
 #elif PATINA_FD == PATINA_FD_BURLEY
     return Fd_Burley(material.diffuseColor, material.roughness, NoV, NoL, LoH);
+#elif PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
+    // glTF 2.0, Appendix B.3.5 (fresnel_mix): the dielectric's diffuse keeps what its specular
+    // layer does not reflect, (1 - F_dielectric(VoH)) c_diff / pi, with the dielectric's own F0
+    // (not the metallic mix: the metal lobe has no diffuse to weigh). LoH = VoH.
+    return Fd_Lambert(material.diffuseColor) * (vec3(1.0f) - fresnel(material.dielectricF0, LoH));
 #else
     return Fd_Lambert(material.diffuseColor);
 #endif

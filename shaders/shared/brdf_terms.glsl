@@ -17,6 +17,8 @@
 // FD: the diffuse term.
 #define PATINA_FD_LAMBERT 0            // c_diff / pi (Karis 2013 eq. 1)
 #define PATINA_FD_BURLEY 1             // Burley 2012
+#define PATINA_FD_LAMBERT_FRESNEL_MIX 2  // Lambert times 1 - F of the dielectric (glTF 2.0 Appendix B)
 // MS: multiple scattering.
 #define PATINA_MS_NONE 0               // single scattering
 #define PATINA_MS_TURQUIN 1            // Turquin 2019 energy compensation
+#define PATINA_MS_FDEZ_AGUERA 2        // Fdez-Aguera 2019, under an environment only (the split sum)

@@ -51,12 +51,56 @@ PATINA_INLINE vec2 environmentBrdfLookup(real NoV, real roughness) {
     return mix(bottom, top, c.fy);
 }
 
+// Fdez-Aguera 2019, "A Multiple-Scattering Microfacet Model for Real-Time Image-based
+// Lighting" (JCGT 8(1)), for one Fresnel lobe of F0 `f0` at (NoV, r) with the model's table
+// (A, B): the single-scattered energy FssEss = k_S A + B with the roughness-dependent Fresnel
+// k_S = F0 + (max(1 - r, F0) - F0)(1 - NoV)^5 (sec. 3), and the multiple-scattered energy
+// Fms Ems = Ems FssEss F_avg / (1 - F_avg Ems), Ems = 1 - (A + B), F_avg = F0 + (1 - F0) / 21
+// (sec. 4-5, eqs. 12-16). Their sum is the lobe's directional albedo; 1 - it is what a layer
+// beneath it receives.
+struct ScatteredEnergy {
+    vec3 single;     // FssEss
+    vec3 multiple;   // Fms Ems
+};
+
+PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, vec2 ab, real NoV, real roughness) {
+    real m = clamp(1.0f - NoV, 0.0f, 1.0f);
+    real m5 = m * m * m * m * m;
+    vec3 kS = f0 + (max(vec3(1.0f - roughness), f0) - f0) * m5;
+    vec3 single = kS * ab.x + vec3(ab.y);
+    real ems = 1.0f - (ab.x + ab.y);
+    vec3 average = f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f);
+    return ScatteredEnergy(single, ems * single * average / (vec3(1.0f) - average * ems));
+}
+
 // The split sum: LD (F0 A + B) for the specular (Karis 2013, eq. 8), with the model's Turquin
 // compensation taken from the same table (E = A + B), plus the Lambert diffuse c_diff / pi E(N)
 // from the spherical harmonics. Models with Burley's diffuse take Lambert's here.
+// glTF's two lobes (PATINA_FD_LAMBERT_FRESNEL_MIX: the gltf models) are mixed by metallic
+// instead, each with the single-scattered energy of Fdez-Aguera's roughness-dependent Fresnel
+// (scatteredEnergy) from LD and, with PATINA_MS_FDEZ_AGUERA, the multiple-scattered from the
+// irradiance (it leaves the surface diffusely, sec. 5); the dielectric's diffuse is weighted by
+// 1 - its specular albedo, as fresnel_mix weighs it per light.
 // Its two lobes apart (the inspector's channels); splitSum is their sum.
 PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
     vec2 ab = environmentBrdfLookup(NoV, material.roughness);
+#if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
+    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, ab, NoV, material.roughness);
+    ScatteredEnergy metal = scatteredEnergy(material.baseColor, ab, NoV, material.roughness);
+#if PATINA_MS != PATINA_MS_FDEZ_AGUERA
+    dielectric.multiple = vec3(0.0f);
+    metal.multiple = vec3(0.0f);
+#endif
+    vec3 single = mix(dielectric.single, metal.single, material.metallic);
+    vec3 multiple = mix(dielectric.multiple, metal.multiple, material.metallic);
+    vec3 specular = prefiltered * single + Fd_Lambert(multiple) * irradiance;
+#if defined(PATINA_NO_DIFFUSE)
+    return LightShares(vec3(0.0f), specular);
+#else
+    vec3 beneath = vec3(1.0f) - dielectric.single - dielectric.multiple;
+    return LightShares(Fd_Lambert(material.diffuseColor) * beneath * irradiance, specular);
+#endif
+#else
     vec3 specular = prefiltered * (material.f0 * ab.x + vec3(ab.y));
 #if PATINA_MS == PATINA_MS_TURQUIN
     real albedo = max(ab.x + ab.y, 1e-4f);
@@ -66,6 +110,7 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
     return LightShares(vec3(0.0f), specular);
 #else
     return LightShares(Fd_Lambert(material.diffuseColor) * irradiance, specular);
+#endif
 #endif
 }
 
@@ -142,7 +187,12 @@ PATINA_INLINE vec3 shadeEnvironmentStochastic(EnvironmentSource source, real sou
     vec3 n = toEnvironmentFrame(N, cosRotation, sinRotation);
     vec3 v = toEnvironmentFrame(V, cosRotation, sinRotation);
     vec3 specular = stochasticSpecular(source, sourceFaceSize, material, n, v, count, jitter);
-#if defined(PATINA_NO_DIFFUSE)
+#if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
+    // The samples give the single-scattered specular; the multiple-scattered and the weighted
+    // diffuse are the split sum's (splitSumShares with no prefiltered light).
+    LightShares rest = splitSumShares(material, max(dot(n, v), MIN_N_DOT_V), vec3(0.0f), irradianceSH(coefficients, n));
+    return intensity * (specular + rest.specular + rest.diffuse);
+#elif defined(PATINA_NO_DIFFUSE)
     return intensity * specular;
 #else
     return intensity * (specular + Fd_Lambert(material.diffuseColor) * irradianceSH(coefficients, n));

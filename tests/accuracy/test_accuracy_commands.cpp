@@ -125,6 +125,10 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
         EXPECT_EQ(perSeries[std::string("textured ") + path + " "], 1) << path;
         EXPECT_EQ(perSeries[std::string("untextured ") + path + " "], 1) << path;
     }
+    for (const char* series : {"brdf-model specialised-epic ", "brdf-model specialised-gltf ",
+                               "brdf-model specialised-epic-default-scene ", "brdf-model specialised-gltf-default-scene "}) {
+        EXPECT_EQ(perSeries[series], 1) << series;   // glTF's BRDF against the seed's, one row each
+    }
     const std::string targets = read("render_targets.csv");
     for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
                                "single's cost per added point light /",
@@ -132,6 +136,7 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "specialised's cost per added point light with other coefficients",
                                "single's cost per added sphere light / per added point light",
                                "specialised's cost per added tube light / per added point light", "separate renders",
+                               "specialised gltf / epic, 8 lights", "specialised gltf / epic, the default scene",
                                "peak RSS"}) {
         EXPECT_NE(targets.find(target), std::string::npos) << target;
     }
@@ -247,6 +252,28 @@ TEST_F(AccuracyCommands, FurnaceWritesCurvesForEveryModel) {
     const auto rows = readCsv(path("furnace.csv"));
     EXPECT_EQ(rows.size(), brdfModelCount() * 2 * 11 + 1);   // two mu, 11 roughness steps
     EXPECT_TRUE(std::filesystem::exists(path("furnace.png")));
+    // The whole material: glTF's BRDF at or under 1 in its split sum, and a white metal's truth;
+    // the seed's epic over 1 for a white dielectric (its Lambert takes nothing for the specular).
+    double epicDielectric = 0.0;
+    size_t gltfRows = 0;
+    for (const auto& row : readCsv(path("material_furnace.csv"))) {
+        if (row[0] == "model") {
+            continue;
+        }
+        const double splitSum = std::stod(row[4]), truth = std::stod(row[5]), se = std::stod(row[6]);
+        if (row[0] == "gltf") {
+            ++gltfRows;
+            EXPECT_LE(splitSum, 1.005) << row[1] << " mu " << row[2] << " r " << row[3];
+            if (row[1] == "white metal") {
+                EXPECT_LE(truth, 1.0 + 4.0 * se + 1e-3) << row[1] << " mu " << row[2] << " r " << row[3];
+            }
+        }
+        if (row[0] == "epic" && row[1] == "white dielectric") {
+            epicDielectric = std::max(epicDielectric, splitSum);
+        }
+    }
+    EXPECT_EQ(gltfRows, 2u * 2u * 5u);   // two materials, two mu, 5 roughness steps
+    EXPECT_GT(epicDielectric, 1.02);
     EXPECT_EQ(test::runPatina("furnace --out-dir " + path("missing").string(), dir_).exitCode, 3);
 }
 
@@ -338,6 +365,24 @@ TEST_F(LightingAccuracy, WritesTheTablesTheChartAndTheGrid) {
     EXPECT_LT(std::stod(costs[1][2]), 0.05);  // the error under white (a noisy truth in --quick)
     const LdrImage grid = decodePng(readFileBytes(path("grid_white.png")));
     EXPECT_GT(grid.width, 5 * 48 - 1);
+    // Whole materials by model: under a uniform white environment the split sum of glTF's BRDF
+    // without multiple scattering is its ground truth but for the tables; with it, a rough
+    // metal is brighter than its single-scattering truth (the energy Fdez-Aguera adds back).
+    std::map<std::string, double> worst;
+    double roughMetal = 0.0;
+    for (const auto& row : readCsv(path("model_split_sum.csv"))) {
+        if (row[0] == "environment") {
+            continue;
+        }
+        ASSERT_EQ(row.size(), 7u);
+        worst[row[1]] = std::max(worst[row[1]], std::stod(row[5]));
+        if (row[1] == "gltf" && row[2] == "white metal" && row[3] == "1") {
+            roughMetal = std::stod(row[4]);
+        }
+    }
+    EXPECT_EQ(worst.size(), 3u);   // epic, gltf, gltf-single
+    EXPECT_LT(worst["gltf-single"], 0.05);
+    EXPECT_GT(roughMetal, 0.5);
 }
 
 }  // namespace

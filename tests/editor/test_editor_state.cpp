@@ -33,6 +33,7 @@
 #include "test_support.h"
 #include "files/file_bytes.h"
 #include "io/scene_file.h"
+#include "image/image.h"
 
 namespace patina::editor {
 namespace {
@@ -336,7 +337,7 @@ TEST_F(EditorStateTest, DisplaySettingsAreUndoneInTurn) {
     state.scene.display.exposure = 8.0f;
     commitEdits(state);
     state.scene.display.backgroundFromEnvironment = true;
-    state.scene.display.tonemap = Tonemap::Aces;
+    state.scene.display.tonemap = Tonemap::AcesNarkowicz;
     commitEdits(state);
     undo(state);
     EXPECT_FALSE(state.scene.display.backgroundFromEnvironment);
@@ -703,6 +704,7 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_TRUE(openFile(state, dir_ / "presets" / "brick.json")) << state.error;
     EXPECT_EQ(editedMaterial(state).baseColor, brick.baseColor);
     EXPECT_EQ(editedMaterial(state).name, "model gold");
+    EXPECT_EQ(editedMaterial(state).model, BrdfModelId::Gltf) << "a preset's model is for the built-in meshes";
     EXPECT_EQ(state.scene.material, before);
     // Saved and reopened, the tuning is there.
     ASSERT_TRUE(saveScene(state, dir_ / "tuned.json")) << state.error;
@@ -712,14 +714,13 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_EQ(modelMaterialCount(state), 1);
     EXPECT_EQ(editedMaterial(state).roughness, 0.9f);
     EXPECT_FALSE(state.dirty());
-    // Another model, whose material has the same index and name, starts as its file says; an
-    // undo brings the tuning back.
+    // Another model, whose material has the same index and name, starts as its file says, in a
+    // document of its own.
     exportGltf(dir_ / "gold copy.glb", makeUvSphere(), gold);
     ASSERT_TRUE(openFile(state, dir_ / "gold copy.glb")) << state.error;
     EXPECT_TRUE(state.scene.modelMaterials.empty());
     EXPECT_NEAR(editedMaterial(state).roughness, 0.3f, 1e-6f);
-    undo(state);
-    EXPECT_EQ(state.scene.modelMaterials.size(), 1u);
+    EXPECT_TRUE(state.scenePath.empty());
 }
 
 // File > Export as glTF writes the model as tuned, maps and all, and is no save; a built-in
@@ -749,6 +750,26 @@ TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone
     EXPECT_EQ(importGltf(dir_ / "sphere.gltf").material->name, state.scene.material.name);
     EXPECT_FALSE(exportGltfFile(state, dir_ / "no" / "such" / "x.glb"));
     EXPECT_NE(state.error.find("x.glb"), std::string::npos) << state.error;
+}
+
+// Issue 34: an exported glTF named a replaced map's image by the user's whole path. What is
+// exported names files without their folders, in a .glb and in a .gltf with its images beside.
+TEST_F(EditorStateTest, AnExportCarriesNoLocalPath) {
+    Model file = test::twoBalls();
+    file.images.push_back({"grey", 4, 4, std::vector<uint8_t>(4 * 4 * 4, 90)});
+    file.materials[0].baseColor.image = 0;
+    exportGltfModel(dir_ / "grey.glb", file);
+    const LdrImage red{2, 2, std::vector<uint8_t>(2 * 2 * 4, 200)};
+    writeFileAtomic(dir_ / "red.png", encodePng(red));
+    ASSERT_TRUE(openFile(state, dir_ / "grey.glb")) << state.error;
+    ASSERT_TRUE(replaceMap(state, 0, "baseColorTexture", dir_ / "red.png")) << state.error;
+    for (const char* name : {"shared.glb", "shared.gltf"}) {
+        ASSERT_TRUE(exportGltfFile(state, dir_ / name)) << state.error;
+        const std::vector<uint8_t> bytes = readFileBytes(dir_ / name);
+        const std::string text(bytes.begin(), bytes.end());
+        EXPECT_EQ(text.find(dir_.string()), std::string::npos) << name << " holds the path of its folder";
+        EXPECT_NE(text.find("\"red.png\""), std::string::npos) << name << ": the image keeps its file's name";
+    }
 }
 
 // A map ticked off is an undoable edit of the part, saved in the scene, and left out of the
@@ -837,7 +858,7 @@ TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
     saveSceneAs(state);
     EXPECT_EQ(state.pathDialogText, "two-scene.json");
-    EXPECT_EQ(windowTitle(state), "*two.glb - Patina") << "named for the model shown, until saved";
+    EXPECT_EQ(windowTitle(state), "two.glb - Patina") << "named for the model shown, until saved";
     ASSERT_TRUE(saveScene(state, dir_ / "mine.json")) << state.error;
     saveSceneAs(state);
     EXPECT_EQ(fs::path(state.pathDialogText).filename(), "mine.json");
@@ -845,6 +866,56 @@ TEST_F(EditorStateTest, SaveSceneAsOffersTheNameOfTheModelShown) {
 
 // A click on a part selects its material for the Material panel; the selected part is
 // outlined, and its outline follows the eye.
+// A glTF model's parts are shaded with glTF's BRDF; the Model combo (the edited material's
+// model) switches the selected part alone, undoably, and the scene keeps it. A scene written
+// before each part had its own (version 2) shades every part with one model: the combo then
+// switches them all, and "Each part its own" (modelBrdf cleared) gives each its own back.
+TEST_F(EditorStateTest, EachPartHasItsOwnBrdfModelAndAnOldSceneKeepsItsOne) {
+    exportGltfModel(dir_ / "two.glb", test::twoBalls());
+    ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
+    auto shaded = [&] {
+        std::vector<BrdfModelId> models;
+        for (const SceneDraw& draw : sceneDraws(preparedScene(state, renderedScene(state)))) {
+            models.push_back(draw.material.model);
+        }
+        return models;
+    };
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
+    state.selectedModelMaterial = 1;
+    Material right = editedMaterial(state);
+    right.model = BrdfModelId::Epic;
+    setEditedMaterial(state, state.scene, right);
+    commitEdits(state);
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
+    ASSERT_TRUE(saveScene(state, dir_ / "mixed.json")) << state.error;
+    undo(state);
+    EXPECT_NE(state.status.find("Undid the tuning of right"), std::string::npos) << state.status;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
+    ASSERT_TRUE(openFile(state, dir_ / "mixed.json")) << state.error;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
+
+    // The same scene as version 2 wrote it: the whole model under the scene material's model.
+    Json old = readJsonFile(dir_ / "mixed.json");
+    old["version"] = 2;
+    old["material"]["model"] = "burley";
+    const std::string text = old.dump();
+    writeFileAtomic(dir_ / "old.json", std::vector<uint8_t>(text.begin(), text.end()));
+    ASSERT_TRUE(openFile(state, dir_ / "old.json")) << state.error;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Burley, BrdfModelId::Burley}));
+    state.selectedModelMaterial = 0;
+    Material left = editedMaterial(state);
+    EXPECT_EQ(left.model, BrdfModelId::Burley);
+    left.roughness = 0.2f;   // tuning a part under one model keeps the part's own model beneath
+    setEditedMaterial(state, state.scene, left);
+    state.scene.modelBrdf.reset();   // "Each part its own model"
+    commitEdits(state);
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
+    EXPECT_EQ(editedMaterial(state).roughness, 0.2f);
+    undo(state);
+    EXPECT_NE(state.status.find("the BRDF model of every part"), std::string::npos) << state.status;
+    EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Burley, BrdfModelId::Burley}));
+}
+
 TEST_F(EditorStateTest, AClickOnAPartSelectsItsMaterialAndThePartIsOutlined) {
     const glm::vec3 right(1.2f, 0.0f, 0.0f);
     exportGltfModel(dir_ / "two.glb", test::twoBalls());
@@ -914,39 +985,88 @@ TEST_F(EditorStateTest, TheLightsFollowAModelsSizeAndComeBackWithTheSphere) {
     EXPECT_LT(glm::length(state.scene.camera.position), 10.0f) << "framed on the unit sphere again";
 }
 
-// Opening a model is one undoable step: undo brings back the sphere, its camera and the lights
-// as they were together (a user once got the model with sphere-sized lights and no way back);
-// redo shows the model again as opened, nothing reloaded.
-TEST_F(EditorStateTest, OpeningAModelIsOneStepThatUndoTakesBackWhole) {
+// Issue 34's route: the engine tuned and saved as engine-scene.json, then another model opened
+// and tuned, and Save scene wrote the box into the engine's scene file without a word, the
+// title still naming it. Opening a model starts a document of its own: named for the model,
+// no file (its Save is a Save as, offering the model's name), its own history; the engine's
+// file is never written again.
+TEST_F(EditorStateTest, OpeningAModelStartsItsOwnDocumentSoSaveNeverWritesAnotherModelsScene) {
     Mesh big = makeTorus();
     for (glm::vec3& p : big.positions) {
         p *= 50.0f;
     }
-    exportGltf(dir_ / "big.glb", big, state.scene.material);
-    const Scene before = state.scene;
-    ASSERT_TRUE(openFile(state, dir_ / "big.glb")) << state.error;
-    const Scene opened = state.scene;
-    const std::shared_ptr<const Model> model = state.model;
-    ASSERT_NE(opened.lights, before.lights);
-    undo(state);
-    EXPECT_EQ(state.status, "Undid the mesh (big.glb) and the light warm key");
-    EXPECT_TRUE(state.scene.meshFile.empty());
-    EXPECT_EQ(state.model, nullptr);
-    EXPECT_EQ(state.scene.lights, before.lights);
-    EXPECT_EQ(state.scene.camera.position, before.camera.position);
+    exportGltf(dir_ / "engine.glb", big, state.scene.material);
+    exportGltf(dir_ / "box.glb", makeUvSphere(), state.scene.material);
+    ASSERT_TRUE(openFile(state, dir_ / "engine.glb")) << state.error;
+    Material tuned = editedMaterial(state);
+    tuned.roughness = 0.2f;
+    setEditedMaterial(state, state.scene, tuned);
+    commitEdits(state);
+    ASSERT_TRUE(saveScene(state, dir_ / "engine-scene.json")) << state.error;
+    const std::vector<uint8_t> engineScene = readFileBytes(dir_ / "engine-scene.json");
+    const std::vector<Light> engineLights = state.scene.lights;
+
+    requestOpen(state, dir_ / "box.glb");   // Open, Recent and a dropped file all come here
+    ASSERT_TRUE(finishModelLoad(state, true)) << state.error;
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "box.glb");
+    EXPECT_TRUE(state.scenePath.empty()) << "the engine's scene is not the box's";
+    EXPECT_TRUE(state.scene.modelMaterials.empty()) << "the box starts as its file says";
+    EXPECT_EQ(windowTitle(state), "box.glb - Patina");
+    EXPECT_FALSE(state.dirty());
+    EXPECT_FALSE(state.history.canUndo()) << "a new document has no steps yet";
+    EXPECT_NE(state.scene.lights, engineLights) << "the stage's lights follow the box's size";
+    tuned.roughness = 0.9f;
+    setEditedMaterial(state, state.scene, tuned);
+    commitEdits(state);
+    EXPECT_EQ(windowTitle(state), "*box.glb - Patina");
+    saveSceneDocument(state);   // Save scene (Ctrl+Alt+S)
+    EXPECT_EQ(state.pathDialog, EditorState::PathDialog::SaveSceneAs);
+    EXPECT_EQ(state.pathDialogText, "box-scene.json");
+    state.pathDialog = EditorState::PathDialog::None;
+    save(state);   // Ctrl+S: the model's tuning is a scene's, never the hidden sphere's material
+    EXPECT_EQ(state.pathDialog, EditorState::PathDialog::SaveSceneAs);
+    EXPECT_EQ(state.pathDialogText, "box-scene.json");
+    state.pathDialog = EditorState::PathDialog::None;
+    EXPECT_EQ(readFileBytes(dir_ / "engine-scene.json"), engineScene);
+
+    // Unsaved, another model asks first, as a scene file does; Cancel changes nothing.
+    requestOpen(state, dir_ / "engine.glb");
+    EXPECT_EQ(state.pendingOpen, dir_ / "engine.glb");
+    EXPECT_EQ(state.modelLoad, nullptr) << "nothing is read before the answer";
+    answerOpen(state, false);
+    EXPECT_FALSE(state.pendingOpen.has_value());
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "box.glb");
+    EXPECT_TRUE(state.dirty());
+    // A missing model says so at once, without asking.
+    requestOpen(state, dir_ / "gone.glb");
+    EXPECT_FALSE(state.pendingOpen.has_value());
+    EXPECT_NE(state.error.find("gone.glb"), std::string::npos) << state.error;
+    // Discard: the engine opens as its file says.
+    requestOpen(state, dir_ / "engine.glb");
+    answerOpen(state, true);
+    ASSERT_TRUE(finishModelLoad(state, true)) << state.error;
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "engine.glb");
+    EXPECT_TRUE(state.scene.modelMaterials.empty());
+    EXPECT_EQ(windowTitle(state), "engine.glb - Patina");
+
+    // Edited while a model is read, the document is not replaced without asking again.
+    requestOpen(state, dir_ / "box.glb");
+    ASSERT_NE(state.modelLoad, nullptr);
+    setEditedMaterial(state, state.scene, tuned);
+    EXPECT_FALSE(finishModelLoad(state, true));
+    EXPECT_EQ(state.pendingOpen, dir_ / "box.glb");
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "engine.glb");
+    answerOpen(state, true);   // Discard: the model read already is applied
+    EXPECT_TRUE(finishModelLoad(state, true));
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "box.glb");
+    EXPECT_EQ(readFileBytes(dir_ / "engine-scene.json"), engineScene);
+
+    // Back on the sphere, the camera and the lights come back to the unit scale, one step.
+    chooseBuiltinMesh(state, MeshKind::Sphere);
     EXPECT_EQ(meshBounds(state).radius, 1.0f);
-    redo(state);
-    EXPECT_EQ(state.scene.meshFile, opened.meshFile);
-    EXPECT_EQ(state.model, model) << "the same model, not read again";
-    EXPECT_EQ(state.scene.lights, opened.lights);
-    EXPECT_EQ(state.scene.camera.position, opened.camera.position);
-    // Orbiting is not an edit; the torus is, and undo returns to the model as framed.
-    orbitCamera(state.scene.camera, 0.3f, 0.1f);
-    commitEdits(state);
-    chooseBuiltinMesh(state, MeshKind::Torus);
-    commitEdits(state);
+    EXPECT_LT(glm::length(state.scene.camera.position), 10.0f);
     undo(state);
-    EXPECT_EQ(state.scene.meshFile, opened.meshFile);
+    EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "box.glb");
 }
 
 }  // namespace
@@ -984,6 +1104,30 @@ TEST_F(EditorStateTest, SaveAsPresetMakesTheFolderAndNamesTheMaterialAfterTheFil
     EXPECT_NE(state.status.find("brushed steel"), std::string::npos) << state.status;
     undo(state);   // the rename is a step of its own
     EXPECT_EQ(state.scene.material.name, "terracotta");
+
+    // Issue 34: a name alone ("my copper", typed over the dialog's path) went into the working
+    // folder, and the browser never showed it. It goes into the presets folder, made if missing,
+    // and the status says where from a place the user knows.
+    state.userPresetFolder = dir_ / "fresh" / "presets";
+    state.presetFolders = {state.userPresetFolder};
+    const fs::path working = fs::current_path();
+    const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
+    fs::create_directories(dir_ / "work");
+    fs::current_path(dir_ / "work");
+    setenv("HOME", dir_.c_str(), 1);
+    const bool saved = saveAsPreset(state, "my copper");
+    setenv("HOME", home.c_str(), 1);
+    fs::current_path(working);
+    ASSERT_TRUE(saved) << state.error;
+    EXPECT_FALSE(fs::exists(dir_ / "work" / "my copper.json")) << "not in the working folder";
+    EXPECT_EQ(materialFilesIn(state.userPresetFolder), std::vector<fs::path>{state.userPresetFolder / "my copper.json"});
+    EXPECT_EQ(state.status, "Saved the preset my copper in your presets (~/fresh/presets)");
+    // The dialog lists that folder for a name alone.
+    EXPECT_EQ(typedFolder("my", relativeBase(state, EditorState::PathDialog::SavePreset)), state.userPresetFolder / ".");
+    const std::vector<ListedEntry> listed =
+        listForDialog("x", EditorState::PathDialog::SavePreset, relativeBase(state, EditorState::PathDialog::SavePreset));
+    ASSERT_EQ(listed.size(), 1u);
+    EXPECT_EQ(listed[0].path.filename(), "my copper.json");
 
     // A folder that cannot be made: said in words, nothing lost.
     std::ofstream(dir_ / "a-file") << "x";
@@ -1122,6 +1266,30 @@ TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
     EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "reference model", "B diffuse", "B specular", "B total"}));
     state.scene.material.model = BrdfModelId::Reference;   // the reference itself: nothing to compare
     EXPECT_EQ(lobePlot(state).curves.size(), 4u);
+}
+
+// Issue 34: a grey material's legend said "total, R G B" in red, the red curve's colour, while
+// the three curves lay one on another. A grey material's curves are drawn once, in white; a
+// coloured one's legend lines, each naming three curves, are neutral.
+TEST_F(EditorStateTest, TheLobeLegendOfAGreyMaterialIsNotRed) {
+    auto neutral = [](uint32_t color) {
+        const uint32_t r = color & 0xFF, g = (color >> 8) & 0xFF, b = (color >> 16) & 0xFF;
+        return r == g && g == b;
+    };
+    state.scene.material.baseColor = glm::vec3(0.5f);
+    LobePlot plot = lobePlot(state);
+    ASSERT_EQ(plot.curves.size(), 2u) << "one total and one specular curve: R, G and B coincide";
+    EXPECT_EQ(plot.curves[0].legend, "total (thick)");
+    for (const LobeCurve& curve : plot.curves) {
+        EXPECT_TRUE(neutral(curve.color) && neutral(curve.legendColor)) << curve.legend;
+    }
+    state.scene.material.baseColor = {0.8f, 0.3f, 0.1f};
+    plot = lobePlot(state);
+    ASSERT_EQ(plot.curves.size(), 6u);
+    EXPECT_FALSE(neutral(plot.curves[0].color)) << "a coloured material's channels are drawn apart";
+    for (const LobeCurve& curve : plot.curves) {
+        EXPECT_TRUE(curve.legend.empty() || neutral(curve.legendColor)) << curve.legend;
+    }
 }
 
 // The path dialog lists what its action takes (glTF and environments for Open), folders first,

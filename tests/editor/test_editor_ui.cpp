@@ -13,6 +13,9 @@
 
 #include "image/compositing.h"
 #include "scene/camera_control.h"
+#include "scene/camera_placement.h"
+#include "camera_choice.h"
+#include "gltf_builder.h"
 #include "image/image.h"
 #include "gltf/export.h"
 #include "gltf/model_export.h"
@@ -352,6 +355,76 @@ TEST_F(EditorUi, AClickOnAPartSelectsItAndAMapsCheckboxLeavesTheMapOut) {
     EXPECT_LT(differingPixels(logo, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
 }
 
+// Issue 34: 2CylinderEngine's Parts list showed "Material_17" nine times in a box of 6 rows
+// out of 34. Each row names the nodes drawn with its part, a search box keeps the parts whose
+// material or node has what is typed, and the list grows with the panel.
+TEST_F(EditorUi, ThePartsListTellsPartsApartSearchesAndGrows) {
+    Model model = test::twoBalls();
+    model.materials.clear();
+    model.draws.clear();
+    for (int i = 0; i < 34; ++i) {
+        ModelMaterial material;
+        material.name = "Material_17";
+        model.materials.push_back(material);
+        glm::mat4 transform(1.0f);
+        transform[3] = glm::vec4(2.5f * float(i), 0.0f, 0.0f, 1.0f);
+        model.draws.push_back({0, i, transform, "body_" + std::to_string(i)});
+    }
+    exportGltfModel(path("parts.glb"), model);
+    ASSERT_TRUE(openFile(state_, path("parts.glb"))) << state_.error;
+    frames(3);
+    std::map<std::string, RecordedItem> items = itemsOfLastFrame();
+    ASSERT_TRUE(items.count("part:3"));
+    EXPECT_NE(items.at("part:3").tooltip.find("Drawn on: body_3"), std::string::npos) << items.at("part:3").tooltip;
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Model material", &min, &max));
+    EXPECT_GT(max.y - min.y, 10.0f * line) << "more than six rows where the panel has room";
+
+    click(centreOf("part search"));
+    for (char c : std::string("BODY_33")) {
+        ImGui::GetIO().AddInputCharacter(static_cast<unsigned>(c));
+    }
+    frames(2);
+    items = itemsOfLastFrame();
+    EXPECT_TRUE(items.count("part:33"));
+    EXPECT_FALSE(items.count("part:3")) << "filtered out";
+    click(centreOf("part:33"));
+    EXPECT_EQ(state_.selectedModelMaterial, 33);
+}
+
+// Issue 34: a preset put on a model's part kept the part's name, and the comparison's halves
+// both read "A: left" / "B: left". They say which preset, while the part holds it unchanged.
+TEST_F(EditorUi, APresetOnAPartIsNamedInTheComparisonsLabels) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    std::filesystem::create_directories(path("presets"));
+    for (const char* name : {"gold", "silver"}) {
+        std::filesystem::copy_file(std::filesystem::path(PATINA_PRESETS_DIR) / (std::string(name) + ".json"),
+                                   path("presets") / (std::string(name) + ".json"));
+    }
+    state_.presetFolders = {path("presets")};
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    ASSERT_TRUE(openFile(state_, path("presets") / "gold.json")) << state_.error;
+    frames(2);
+    click(centreOf("Set A"));
+    ASSERT_TRUE(openFile(state_, path("presets") / "silver.json")) << state_.error;
+    frames(2);
+    auto label = [](const char* name) {
+        const std::string tooltip = itemsOfLastFrame().at(name).tooltip;
+        return tooltip.substr(0, tooltip.find(" ("));   // the label, before what it is
+    };
+    std::map<std::string, RecordedItem> items = itemsOfLastFrame();
+    ASSERT_TRUE(items.count("label A") && items.count("label B"));
+    EXPECT_EQ(items.at("label A").tooltip.rfind("A: left (gold)", 0), 0u) << items.at("label A").tooltip;
+    EXPECT_EQ(items.at("label B").tooltip.rfind("B: left (silver)", 0), 0u) << items.at("label B").tooltip;
+    // Tuned by hand, it is no longer the preset: the part's name alone.
+    Material tuned = editedMaterial(state_);
+    tuned.roughness = 0.61f;
+    setEditedMaterial(state_, state_.scene, tuned);
+    frames(2);
+    EXPECT_EQ(label("label B"), "B: left");
+}
+
 // Replace... puts an image file in place of a map: drawn at once, one undoable step, saved in
 // the scene and back when it is opened again; Restore draws the file's own map; an image that
 // cannot be read changes nothing and says why.
@@ -445,6 +518,35 @@ TEST_F(EditorUi, APathDialogOpenedAgainTakesTheTypedPathWhole) {
     }
 }
 
+// Issue 34: on File > Open's first opening, what was typed at once was lost: the dialog sizes
+// itself in a hidden first frame, and its field took the keys only a frame later. What is typed
+// from the frame it opens on is the path.
+TEST_F(EditorUi, ThePathFieldTakesWhatIsTypedAtOnceOnItsFirstOpening) {
+    ImGuiIO& io = ImGui::GetIO();
+    for (const std::string& typed : {path("first.json").string(), path("second.json").string()}) {
+        startPathDialog(state_, EditorState::PathDialog::Open, dir_ / "");
+        for (char c : typed.substr(0, 5)) {   // with the key that opened it
+            io.AddInputCharacter(static_cast<unsigned>(c));
+        }
+        frames(1);
+        for (char c : typed.substr(5)) {
+            io.AddInputCharacter(static_cast<unsigned>(c));
+            frames(1);
+        }
+        EXPECT_EQ(state_.pathDialogText, typed);
+        click(centreOf("path:cancel"));
+    }
+    // Enter at once takes the path offered (Ctrl+Alt+S, Enter).
+    startPathDialog(state_, EditorState::PathDialog::SaveSceneAs, path("at-once.json"));
+    io.KeyMap[ImGuiKey_Enter] = 257;   // GLFW's, as the window maps it
+    io.KeysDown[257] = true;
+    frames(1);
+    io.KeysDown[257] = false;
+    frames(2);
+    EXPECT_EQ(state_.pathDialog, EditorState::PathDialog::None);
+    EXPECT_TRUE(std::filesystem::exists(path("at-once.json"))) << state_.error;
+}
+
 // A model read on a worker is shown once read, but not behind a prompt: it waits for the
 // answer, as every edit does.
 TEST_F(EditorUi, AModelReadOnAWorkerWaitsForAnOpenPrompt) {
@@ -458,6 +560,11 @@ TEST_F(EditorUi, AModelReadOnAWorkerWaitsForAnOpenPrompt) {
     frames(2);
     EXPECT_TRUE(state_.scene.meshFile.empty());
     state_.pendingNew = false;
+    frames(2);
+    // The roughness was edited after the model was asked for: it asks before replacing it.
+    EXPECT_TRUE(state_.scene.meshFile.empty());
+    ASSERT_EQ(state_.pendingOpen, path("torus.glb"));
+    click(centreOf("Discard changes"));
     frames(2);
     EXPECT_EQ(std::filesystem::path(state_.scene.meshFile).filename(), "torus.glb");
     EXPECT_EQ(state_.modelLoad, nullptr);
@@ -767,6 +874,36 @@ TEST_F(EditorUi, IntensityDragsInProportionToItself) {
     EXPECT_LT(state_.scene.lights[0].intensity, 1000.0f);
 }
 
+// Issue 34: after opening 2CylinderEngine the key light read 784563.938, the rig's intensity
+// times the model's radius squared, and the field's limit of 10^6 clamped it at the first touch.
+// At a model's scale the field reads as it did on the unit sphere; the scene keeps the intensity.
+TEST_F(EditorUi, ALightsIntensityReadsAtTheModelsScale) {
+    Mesh big = makeTorus();
+    for (glm::vec3& p : big.positions) {
+        p *= 500.0f;
+    }
+    exportGltf(path("big.glb"), big, Material{});
+    size_t point = 0;
+    while (state_.scene.lights[point].type != LightType::Point) {
+        ++point;
+    }
+    state_.scene.lights[point].intensity = 8.0f;
+    ASSERT_TRUE(openFile(state_, path("big.glb"))) << state_.error;
+    const float scale = intensityScale(state_, state_.scene.lights[point]);
+    EXPECT_NEAR(scale, meshBounds(state_).radius * meshBounds(state_).radius, 1.0f);
+    EXPECT_NEAR(state_.scene.lights[point].intensity / scale, 8.0f, 1e-3f) << "the rig followed the model";
+    state_.selectedLight = int(point);
+    frames(2);
+    EXPECT_NE(itemsOfLastFrame().at("Intensity").tooltip.find("at the model's scale"), std::string::npos);
+    const ImVec2 at = centreOf("Intensity");
+    drag(at, ImVec2(at.x + 300.0f, at.y), 60);
+    EXPECT_GT(state_.scene.lights[point].intensity / scale, 100.0f) << "not clamped at 10^6";
+    EXPECT_LT(state_.scene.lights[point].intensity / scale, 1000.0f);
+    EXPECT_EQ(intensityScale(state_, state_.scene.lights[point]), scale);
+    chooseBuiltinMesh(state_, MeshKind::Sphere);
+    EXPECT_EQ(intensityScale(state_, state_.scene.lights[point]), 1.0f);
+}
+
 // The Delete key deletes the selected light, undoably; not while a text field has the keys.
 TEST_F(EditorUi, TheDeleteKeyDeletesTheSelectedLight) {
     const std::vector<Light> lights = state_.scene.lights;
@@ -844,6 +981,64 @@ TEST_F(EditorUi, PresetsShowTheirNamesInAFixedPreviewScene) {
                                      std::filesystem::last_write_time(path("gold.json")) + std::chrono::seconds(2));
     frames(2);
     EXPECT_NE(texturePixels(*services_->preset(path("gold.json"))->texture), before);
+}
+
+// Issue 34: the browser's header was the build tree's whole path. The shipped presets are
+// "Built-in", the user's are theirs, from their home folder; no path of the machine shows.
+TEST_F(EditorUi, ThePresetBrowserNamesItsFoldersWithoutLocalPaths) {
+    state_.userPresetFolder = path("config/patina/presets");
+    std::filesystem::create_directories(state_.userPresetFolder);
+    std::filesystem::copy_file(std::filesystem::path(PATINA_PRESETS_DIR) / "gold.json",
+                               state_.userPresetFolder / "mine.json");
+    state_.presetFolders = {PATINA_PRESETS_DIR, state_.userPresetFolder};
+    const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
+    setenv("HOME", dir_.c_str(), 1);
+    frames(2);
+    setenv("HOME", home.c_str(), 1);
+    const std::map<std::string, RecordedItem> items = itemsOfLastFrame();
+    ASSERT_TRUE(items.count("presets:built-in"));
+    ASSERT_TRUE(items.count("presets:yours"));
+    EXPECT_NE(items.at("presets:yours").tooltip.find("~/config/patina/presets"), std::string::npos)
+        << items.at("presets:yours").tooltip;
+    for (const auto& [name, item] : items) {
+        EXPECT_EQ(item.tooltip.find(PATINA_PRESETS_DIR), std::string::npos) << name << ": " << item.tooltip;
+        EXPECT_EQ(item.tooltip.find(dir_.string()), std::string::npos) << name << ": " << item.tooltip;
+    }
+}
+
+// Issue 34: the read-out listed the lights in the order the renderer packs them (area lights
+// last), not in the lights panel's.
+TEST_F(EditorUi, ThePixelReadOutListsTheLightsInThePanelsOrder) {
+    Light sphere;
+    sphere.type = LightType::Sphere;
+    sphere.name = "first, a sphere";
+    sphere.position = {0.5f, 0.5f, 2.0f};
+    sphere.sourceRadius = 0.2f;
+    Light point;
+    point.name = "then a point";
+    point.position = {-0.5f, 0.5f, 2.0f};
+    state_.scene.lights = {sphere, point};
+    const Scene shown = renderedScene(state_);
+    const PixelStory* story = services_->pixelStory(preparedScene(state_, shown), 64, 64, 32, 32);
+    ASSERT_NE(story, nullptr);
+    std::vector<std::string> names;
+    for (const LightShare& light : story->lights) {
+        names.push_back(light.name);
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"first, a sphere", "then a point"}));
+}
+
+// Issue 34: a long status ran off the window's edge with no way to read it. Its first line is
+// cut with "..." inside the window, and the whole status is its tooltip.
+TEST_F(EditorUi, ALongStatusStaysInTheWindowAndReadsWholeOnHover) {
+    state_.status = "Opened 2CylinderEngine.glb: 34 materials (the Material panel shows \"Material_17\"; pick another "
+                    "in Parts or click a part), 0 texture images, and a note long enough to run past the window's edge"
+                    "\nnode 12: a second line";
+    frames(2);
+    const std::map<std::string, RecordedItem> items = itemsOfLastFrame();
+    ASSERT_TRUE(items.count("status"));
+    EXPECT_LE(items.at("status").max.x, ImGui::GetIO().DisplaySize.x);
+    EXPECT_EQ(items.at("status").tooltip, state_.status);
 }
 
 // Reset goes back to the opened file's value; a right-click to the default.
@@ -1330,6 +1525,31 @@ TEST_F(EditorUi, PixelReadOutPinsAPixelWithTheValuesTheViewportShows) {
     EXPECT_TRUE(state_.pins.empty());
 }
 
+// Issue 34: the Pinned pixels window opened over the model. It opens beside the picture.
+TEST_F(EditorUi, ThePinnedPixelsWindowOpensBesideThePicture) {
+    state_.pixelReadOut = true;
+    frames(2);
+    click(centreOf("viewport"));
+    ASSERT_EQ(state_.pins.size(), 1u);
+    frames(2);
+    const ImGuiWindow* pins = ImGui::FindWindowByName("Pinned pixels");
+    ASSERT_NE(pins, nullptr);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("viewport", &min, &max));
+    const bool apart = pins->Pos.y >= max.y || pins->Pos.x >= max.x || pins->Pos.x + pins->Size.x <= min.x ||
+                       pins->Pos.y + pins->Size.y <= min.y;
+    EXPECT_TRUE(apart) << "window at " << pins->Pos.x << ", " << pins->Pos.y << " size " << pins->Size.x << " x "
+                       << pins->Size.y << "; picture " << min.x << ", " << min.y << " to " << max.x << ", " << max.y;
+    EXPECT_LE(pins->Pos.y + pins->Size.y, ImGui::GetIO().DisplaySize.y) << "whole on the screen";
+    for (int more = 0; more < 4; ++more) {   // more stories than the window holds: they scroll
+        state_.pins.push_back(state_.pins[0]);
+    }
+    frames(2);
+    const std::map<std::string, RecordedItem> items = itemsOfLastFrame();
+    ASSERT_TRUE(items.count("Copy pins as CSV"));
+    EXPECT_FALSE(clipped(items.at("Copy pins as CSV"))) << "the buttons stay in view";
+}
+
 // With the gizmos hidden (View menu), a drag where a light's dot was orbits the camera.
 TEST_F(EditorUi, HiddenGizmosCannotBeGrabbed) {
     const Light lamp = onlyALamp();
@@ -1605,6 +1825,72 @@ TEST_F(EditorUi, ExposureDragsInFineSteps) {
     EXPECT_LT(state_.scene.display.exposure, 2.0f);
     press(kKeyZ, true);
     EXPECT_EQ(state_.scene.display.exposure, 0.0f);
+}
+
+// The tone map list offers every view transform under the names scene files and render
+// --tonemap use; a choice changes the picture, and undo takes it back.
+TEST_F(EditorUi, TheToneMapListOffersEveryViewTransform) {
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Tone map"));
+    ImVec2 min, max;
+    for (const Tonemap tonemap : kTonemaps) {
+        EXPECT_TRUE(itemRect("tonemap:" + std::string(tonemapName(tonemap)), &min, &max)) << tonemapName(tonemap);
+    }
+    click(centreOf("tonemap:agx"));
+    EXPECT_EQ(state_.scene.display.tonemap, Tonemap::Agx);
+    frames(2);
+    EXPECT_GT(differingPixels(before, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.display.tonemap, Tonemap::PbrNeutral);
+}
+
+// A model opened is framed as model-viewer frames it, wherever the camera looked before; the
+// Camera list offers that framing and the file's own cameras (an orthographic one listed,
+// dimmed, not taken), and the field of view drags.
+TEST_F(EditorUi, TheCameraListTakesTheModelsCamerasAndTheFieldOfViewDrags) {
+    test::GltfBuilder model = test::twoQuadsAndTheirCameras();
+    model.writeGltf(path("quads.gltf"));
+    EXPECT_EQ(currentCameraName(state_), "the scene's");
+    orbitCamera(state_.scene.camera, 1.2f, 0.4f);   // from the side and above
+    EXPECT_EQ(currentCameraName(state_), "free");
+    ASSERT_TRUE(openFile(state_, path("quads.gltf"))) << state_.error;
+    frames(2);
+    Camera expected = state_.scene.camera;
+    frameAsModelViewer(expected, meshBounds(state_));
+    EXPECT_EQ(state_.scene.camera, expected) << "framed from the front";
+    EXPECT_EQ(currentCameraName(state_), kFrontCamera);
+    const LdrImage framed = services_->viewportPixels(EditorServices::Shown::Edited);
+
+    click(centreOf("Camera"));
+    ASSERT_TRUE(itemsOfLastFrame().count("camera:3"));
+    EXPECT_TRUE(itemsOfLastFrame().at("camera:3").dimmed) << "the orthographic camera";
+    EXPECT_FALSE(itemsOfLastFrame().at("camera:2").dimmed);
+    click(centreOf("camera:2"));   // "right", the file's camera 1
+    ASSERT_TRUE(state_.model);
+    expected = state_.scene.camera;
+    placeModelCamera(expected, state_.model->cameras[1], meshBounds(state_));
+    EXPECT_EQ(state_.scene.camera, expected);
+    EXPECT_EQ(currentCameraName(state_), "right");
+    EXPECT_EQ(state_.status, "Camera: right");
+    frames(2);
+    const LdrImage right = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(differingPixels(framed, right), 1000);
+    const size_t centre = (size_t(right.height / 2) * size_t(right.width) + size_t(right.width / 2)) * 4;
+    EXPECT_GT(right.rgba[centre + 1], right.rgba[centre]) << "the green quad fills the middle";
+
+    const float fov = state_.scene.camera.fovYDegrees;
+    const ImVec2 from = centreOf("FOV");
+    drag(from, ImVec2(from.x + 50.0f, from.y));
+    EXPECT_NEAR(state_.scene.camera.fovYDegrees, fov + 10.0f, 2.0f) << "0.2 degrees a pixel";
+    EXPECT_EQ(currentCameraName(state_), "free");
+    frames(2);
+    EXPECT_GT(differingPixels(right, services_->viewportPixels(EditorServices::Shown::Edited)), 1000);
+
+    click(centreOf("Camera"));
+    click(centreOf("camera:0"));
+    expected = state_.scene.camera;
+    frameAsModelViewer(expected, meshBounds(state_));
+    EXPECT_EQ(state_.scene.camera, expected) << "the front again, at the field of view now set";
 }
 
 // Issue 23: Escape did not close the F1 help; it does, as any help window.

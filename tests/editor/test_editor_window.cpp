@@ -12,6 +12,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "geometry/mesh.h"
+#include "gltf/export.h"
 #include "image/image.h"
 #include "image/png_text.h"
 #include "io/json_reader.h"
@@ -498,6 +500,61 @@ TEST_F(EditorWindow, UndoAfterAnOpenNeverWritesTheLastDocumentIntoTheNewFile) {
     EXPECT_EQ(saved.metallic, 0.0f);
     EXPECT_LT(saved.roughness, 0.3f) << "the nudge";
     EXPECT_EQ(readText(dir_ / "b.json"), bBytes);
+    EXPECT_TRUE(editor_->running());
+}
+
+// Issue 34's first route, as an artist takes it: the engine opened (Ctrl+O, its path typed at
+// once: on the dialog's first opening the keys typed with it were lost) and tuned, Save scene as
+// engine-scene.json; the box opened from File > Open, tuned, Ctrl+S. Saving used to write the
+// box into the engine's scene file without a word, the title still naming it. The box is a
+// document of its own: the title names it, Ctrl+S asks where, offering the box's name, and the
+// engine's file stays as it was.
+TEST_F(EditorWindow, SaveNeverWritesAnotherModelsSceneFile) {
+    Mesh big = makeTorus();
+    for (glm::vec3& p : big.positions) {
+        p *= 50.0f;
+    }
+    exportGltf(dir_ / "engine.glb", big, Material{});
+    exportGltf(dir_ / "box.glb", makeUvSphere(), Material{});
+    auto titled = [&](const std::string& name) {
+        return waitFor([&] { return xdotool("getwindowname " + window_).find(name) != std::string::npos; }, 20s);
+    };
+    auto key = [&](const std::string& keys) {
+        const int before = frameDrawn();
+        xdotool("key --window " + window_ + " " + keys);
+        std::this_thread::sleep_for(300ms);
+        waitUntilDrawn(before);
+    };
+    xdotool("key --window " + window_ + " ctrl+o");
+    xdotool("type --window " + window_ + " " + (dir_ / "engine.glb").string());   // at once, no click
+    std::this_thread::sleep_for(1s);
+    key("Return");
+    ASSERT_TRUE(titled("engine.glb - Patina")) << xdotool("getwindowname " + window_);
+    dragRoughness();
+    key("ctrl+alt+s");
+    key("Return");   // the name offered, in the working folder, at once
+    ASSERT_TRUE(waitFor([&] { return fs::exists(dir_ / "engine-scene.json"); }, 10s)) << "nothing saved";
+    ASSERT_TRUE(titled("engine-scene.json")) << xdotool("getwindowname " + window_);
+    const std::string engineScene = readText(dir_ / "engine-scene.json");
+
+    ASSERT_TRUE(clickOn("menu:File"));
+    ASSERT_TRUE(waitFor([&] { return rect("Open").size() == 4; }, 10s));
+    std::this_thread::sleep_for(1s);   // the menu's first frames, where it sizes itself
+    ASSERT_TRUE(clickOn("Open"));
+    xdotool("type --window " + window_ + " " + (dir_ / "box.glb").string());
+    std::this_thread::sleep_for(1s);
+    key("Return");
+    ASSERT_TRUE(titled("box.glb - Patina")) << "a new document, named for the model: " << xdotool("getwindowname " + window_);
+    dragRoughness();
+    ASSERT_TRUE(titled("*box.glb")) << xdotool("getwindowname " + window_);
+    key("ctrl+s");
+    key("Return");   // Save scene as, offering the box's own name
+    ASSERT_TRUE(waitFor([&] { return fs::exists(dir_ / "box-scene.json"); }, 10s)) << "Ctrl+S did not ask for the box's";
+    EXPECT_TRUE(titled("box-scene.json - Patina")) << xdotool("getwindowname " + window_);
+    EXPECT_EQ(readText(dir_ / "engine-scene.json"), engineScene) << "the engine's scene holds the box";
+    EXPECT_FALSE(fs::exists(dir_ / "engine-scene.json.bak"));
+    std::vector<std::string> warnings;
+    EXPECT_EQ(fs::path(loadSceneFile(dir_ / "box-scene.json", warnings).meshFile).filename(), "box.glb");
     EXPECT_TRUE(editor_->running());
 }
 

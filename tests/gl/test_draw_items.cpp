@@ -161,6 +161,37 @@ TEST(DrawItems, EachItemShowsWhereItIsWithItsOwnMaterialOnEveryPath) {
     });
 }
 
+// Each item under its own BRDF model: the left sphere epic, the right glTF's, drawn on every
+// path as the ground truth shades each (the frame switches programs and their tables), and
+// the right one unlike the same sphere under epic.
+TEST(DrawItems, EachItemIsShadedWithItsOwnBrdfModelOnEveryPath) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = litScene();
+    Model mixed = *twoSpheres();
+    mixed.materials[0].factors.model = BrdfModelId::Epic;
+    mixed.materials[1].factors.model = BrdfModelId::Gltf;
+    mixed.materials[1].factors.roughness = 0.3f;   // glTF's visibility and Fresnel show on the highlight
+    const PreparedScene prepared = preparedWith(scene, std::make_shared<const Model>(mixed));
+    Scene allEpic = scene;
+    allEpic.modelBrdf = BrdfModelId::Epic;
+    const PreparedScene epic = preparedWith(allEpic, std::make_shared<const Model>(mixed));
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kWidth, kHeight);
+    const ReferenceImage reference = groundTruth(prepared, surfaces);
+    const glm::ivec2 right = pixelOf(scene, {1.1f, 0.0f, 0.8f});
+    onEveryPath([&](RenderPath path, int samples, const std::string& what) {
+        const RenderSettings settings = test::renderSettings(kWidth, kHeight, path, samples);
+        const HdrImage render = renderer.render(prepared, settings).hdr;
+        const HdrImage underEpic = renderer.render(epic, settings).hdr;
+        const glm::vec3 gltf = test::pixel(render, right.x, right.y);
+        EXPECT_TRUE(near(gltf, test::pixel(reference.value, right.x, right.y), 2e-3f)) << what;
+        EXPECT_FALSE(near(gltf, test::pixel(underEpic, right.x, right.y), 1e-2f)) << what;
+        if (samples == 1) {
+            EXPECT_GT(agreement(render, surfaces, reference), 0.97) << what;
+        }
+    });
+}
+
 // A mirroring transform winds the primitive's triangles the other way: its front faces must
 // still be the ones drawn and lit from the front. A sphere mirrored in x is the same sphere,
 // so the image is the unmirrored one's (to the facets' rounding), single- or double-sided.

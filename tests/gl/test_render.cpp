@@ -409,13 +409,15 @@ TEST(Renderer, TheDisplayImageIsTheSameWithOrWithoutTheLinearImage) {
 
 // The display image is stored as bytes, so reading it back is a copy (llvmpipe converting a
 // float image in glReadPixels took 3 ms of a 512x512 sheet cell). Storing rounds to nearest, as
-// that conversion did: the bytes are the linear image's display values rounded. With ACES and
-// with PBR Neutral, so the GPU's tone maps are the CPU's.
+// that conversion did: the bytes are the linear image's display values rounded. With Narkowicz's ACES and
+// with PBR Neutral, Hill's ACES and AgX, so the GPU's tone maps are the CPU's.
 TEST(Renderer, TheDisplayImageIsStoredAsRoundedBytes) {
     test::glContext();
     Renderer renderer;
-    for (const auto& [tonemap, index] : {std::pair{Tonemap::Aces, shader::TONEMAP_ACES},
-                                         std::pair{Tonemap::PbrNeutral, shader::TONEMAP_PBR_NEUTRAL}}) {
+    for (const auto& [tonemap, index] : {std::pair{Tonemap::AcesNarkowicz, shader::TONEMAP_ACES_NARKOWICZ},
+                                         std::pair{Tonemap::PbrNeutral, shader::TONEMAP_PBR_NEUTRAL},
+                                         std::pair{Tonemap::AcesHill, shader::TONEMAP_ACES_HILL},
+                                         std::pair{Tonemap::Agx, shader::TONEMAP_AGX}}) {
         // The environment behind the mesh: every pixel is radiance through the display
         // transform (the flat background shows as its swatch: TheFlatBackgroundShowsAsItsSwatch).
         Scene scene = toneMappedScene(0.4f, tonemap);
@@ -485,7 +487,7 @@ TEST(Renderer, BackgroundShowsAroundTheMesh) {
     EXPECT_FLOAT_EQ(image.hdr.rgb[2], 0.75f);
     // Without MSAA the single pass clears the display image to the background's display value
     // (computed on the CPU); it matches the display pass's to the byte.
-    scene.display.tonemap = Tonemap::Aces;
+    scene.display.tonemap = Tonemap::AcesNarkowicz;
     scene.display.exposure = 1.5f;
     const RenderOutput shownByPass = renderScene(renderer, scene, RenderPath::Multi, 64, 1);
     const RenderOutput cleared = renderScene(renderer, scene, RenderPath::Single, 64, 1);
@@ -506,8 +508,9 @@ TEST(Renderer, DisplayTransformAppliesExposureAndToneMap) {
     };
     const float before = render(0.0f, Tonemap::None).hdr.rgb[centre * 3];
     for (const auto& [exposure, tonemap] : {std::pair{0.0f, Tonemap::None}, std::pair{1.0f, Tonemap::None},
-                                            std::pair{0.0f, Tonemap::Reinhard}, std::pair{1.0f, Tonemap::Aces},
-                                            std::pair{-1.0f, Tonemap::PbrNeutral}}) {
+                                            std::pair{0.0f, Tonemap::Reinhard}, std::pair{1.0f, Tonemap::AcesNarkowicz},
+                                            std::pair{-1.0f, Tonemap::PbrNeutral}, std::pair{0.5f, Tonemap::AcesHill},
+                                            std::pair{2.0f, Tonemap::Agx}}) {
         const RenderOutput image = render(exposure, tonemap);
         const glm::vec3 linear(image.hdr.rgb[centre * 3], image.hdr.rgb[centre * 3 + 1], image.hdr.rgb[centre * 3 + 2]);
         const glm::vec3 shown = shader::displayTransform(linear, exposure, tonemapShaderIndex(tonemap));
@@ -531,7 +534,7 @@ TEST(Renderer, TheFlatBackgroundShowsAsItsSwatch) {
     const glm::vec3 swatch = shader::srgbColor(scene.display.background) * 255.0f;
     EXPECT_EQ(std::lround(swatch.r), 0x27);
     EXPECT_EQ(std::lround(swatch.b), 0x2C);
-    for (const auto& [exposure, tonemap] : {std::pair{0.0f, Tonemap::PbrNeutral}, std::pair{3.0f, Tonemap::Aces},
+    for (const auto& [exposure, tonemap] : {std::pair{0.0f, Tonemap::PbrNeutral}, std::pair{3.0f, Tonemap::AcesNarkowicz},
                                             std::pair{-2.0f, Tonemap::None}}) {
         scene.display.exposure = exposure;
         scene.display.tonemap = tonemap;
@@ -638,7 +641,7 @@ TEST(Renderer, CroppingToTheMeshGivesTheSameImage) {
     inBox.camera.position = {0.9f, 0.9f, 0.9f};
     Scene aside = manyLightScene(2);
     aside.camera.target = {1.5f, 0.8f, 0.0f};
-    aside.display.tonemap = Tonemap::Aces;
+    aside.display.tonemap = Tonemap::AcesNarkowicz;
     aside.display.exposure = -0.5f;
     Scene quad = manyLightScene(2);
     quad.camera.position = {0.3f, 0.2f, 2.0f};

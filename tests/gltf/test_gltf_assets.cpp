@@ -56,6 +56,23 @@ void expectSameModel(const Model& a, const Model& b, const std::string& what) {
     EXPECT_EQ(a.notes, b.notes) << what;
 }
 
+// assimp's Cameras.gltf: a perspective camera (yfov 0.7) and an orthographic one, both at
+// (0.5, 0.5, 3) looking down -Z at a square.
+TEST_F(GltfAssets, CamerasGltfListsItsTwoCameras) {
+    const Model model = importGltfModel(kModels / "cameras" / "Cameras.gltf");
+    ASSERT_EQ(model.cameras.size(), 2u);
+    for (const ModelCamera& camera : model.cameras) {
+        EXPECT_EQ(camera.position, glm::vec3(0.5f, 0.5f, 3.0f));
+        EXPECT_EQ(camera.forward, glm::vec3(0.0f, 0.0f, -1.0f));
+        EXPECT_EQ(camera.up, glm::vec3(0.0f, 1.0f, 0.0f));
+    }
+    EXPECT_EQ(model.cameras[0].name, "camera 0");
+    EXPECT_TRUE(model.cameras[0].perspective);
+    EXPECT_FLOAT_EQ(model.cameras[0].yfov, 0.7f);
+    EXPECT_EQ(model.cameras[1].index, 1);
+    EXPECT_FALSE(model.cameras[1].perspective);
+}
+
 TEST_F(GltfAssets, BoxTexturedIsTheSameModelFromGltfGlbAndEmbedded) {
     const fs::path folder = kModels / "BoxTextured-glTF";
     const Model gltf = importGltfModel(folder / "BoxTextured.gltf");

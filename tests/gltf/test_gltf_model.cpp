@@ -96,6 +96,55 @@ TEST_F(GltfModel, ANodeHierarchyWithTrsGivesTheWorldMatrix) {
     EXPECT_EQ(load(model).draws[0].transform, glm::make_mat4(matrix.data()));
 }
 
+// Section 3.10: a camera node looks down its -Z with +Y up from its origin, placed by its
+// world transform (the parent's too); its scale is no part of the camera. Listed in node order,
+// named by the camera, else its node; an orthographic one is listed as such; a node whose
+// camera is not there, or whose transform has no direction, is left out with a note.
+TEST_F(GltfModel, CameraNodesAreListedWhereTheirNodesPlaceThem) {
+    GltfBuilder model = cubeModel();
+    const double h = std::sqrt(0.5);   // 90 degrees about +y: -Z turns to -X, +Y stays
+    model.add("cameras", {{"type", "perspective"}, {"name", "side"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.1}}}});
+    model.add("cameras", {{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0}, {"zfar", 9}}}});
+    const int side = model.add("nodes", {{"camera", 0}, {"rotation", {0, h, 0, h}}, {"scale", {3, 3, 3}}});
+    const int plan = model.add("nodes", {{"camera", 1}, {"name", "plan node"}, {"translation", {0, 5, 0}}});
+    const int missing = model.add("nodes", {{"camera", 7}});
+    const int flat = model.add("nodes", {{"camera", 0}, {"scale", {1, 1, 0}}});
+    model.add("nodes", {{"children", {side, plan, missing, flat}}, {"translation", {4, 2, 1}}});
+    model.json["scenes"][0]["nodes"].push_back(int(model.json["nodes"].size()) - 1);
+    const Model imported = load(model);
+    ASSERT_EQ(imported.cameras.size(), 2u) << allNotes(imported);
+    const ModelCamera& a = imported.cameras[0];
+    EXPECT_EQ(a.name, "side");
+    EXPECT_EQ(a.node, "node 1");
+    EXPECT_EQ(a.index, 0);
+    EXPECT_TRUE(a.perspective);
+    EXPECT_FLOAT_EQ(a.yfov, 0.5f);
+    EXPECT_EQ(a.position, glm::vec3(4.0f, 2.0f, 1.0f));
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(a.forward[c], glm::vec3(-1, 0, 0)[c], 1e-6f) << c;
+        EXPECT_NEAR(a.up[c], glm::vec3(0, 1, 0)[c], 1e-6f) << c;
+    }
+    const ModelCamera& b = imported.cameras[1];
+    EXPECT_EQ(b.name, "plan node");
+    EXPECT_EQ(b.index, 1);
+    EXPECT_FALSE(b.perspective);
+    EXPECT_EQ(b.position, glm::vec3(4.0f, 7.0f, 1.0f));
+    const std::string notes = allNotes(imported);
+    EXPECT_NE(notes.find("/nodes/3/camera: camera 7 does not exist, left out"), std::string::npos) << notes;
+    EXPECT_NE(notes.find("camera \"side\" (/nodes/4): its node's transform has no direction"), std::string::npos)
+        << notes;
+    // Properties of the wrong type are refused by name (tinygltf would drop them quietly).
+    GltfBuilder typed = model;
+    typed.json["nodes"][1]["camera"] = "0";
+    EXPECT_ERROR(errorOf(typed), "/nodes/1/camera: must be the index of a camera");
+    typed = model;
+    typed.json["cameras"][0]["perspective"]["yfov"] = "wide";
+    EXPECT_ERROR(errorOf(typed), "/cameras/0/perspective/yfov: must be a number");
+    // A camera node outside the default scene is not the scene's.
+    model.json["scenes"][0]["nodes"] = {0};
+    EXPECT_TRUE(load(model).cameras.empty());
+}
+
 TEST_F(GltfModel, InstancesShareTheirPrimitive) {
     GltfBuilder model = cubeModel();
     model.json["scenes"][0]["nodes"].push_back(model.add("nodes", {{"mesh", 0}, {"translation", {4, 0, 0}}}));
@@ -556,6 +605,7 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
     EXPECT_EQ(m.factors.metallic, 0.3f);
     EXPECT_EQ(m.factors.roughness, 0.6f);
     EXPECT_NEAR(m.factors.specular, 0.25f, 1e-6f);   // material.h's mapping: 0.5 * 0.04 / 0.08
+    EXPECT_EQ(m.factors.model, BrdfModelId::Gltf);   // shaded as glTF 2.0's Appendix B defines
     EXPECT_TRUE(m.normal.present());
     EXPECT_EQ(m.normalScale, 0.7f);
     EXPECT_TRUE(m.occlusion.present());
@@ -567,7 +617,7 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
     // glTF's defaults (section 3.9), and a name for a material without one.
     ModelMaterial defaults;
     defaults.name = "material 1";
-    defaults.factors = MaterialParameters{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f};
+    defaults.factors = MaterialParameters{glm::vec3(1.0f), 1.0f, 0.5f, 1.0f, BrdfModelId::Gltf};
     EXPECT_EQ(imported.materials[1], defaults);
 
     model.json["materials"][0]["alphaMode"] = "GLASS";

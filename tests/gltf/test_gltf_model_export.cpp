@@ -245,9 +245,11 @@ TEST_F(GltfModelExport, TheCommandExportsTheTunedModelAndItRendersTheSame) {
     edit.material.baseColor = {0.25f, 0.5f, 1.0f};
     edit.material.roughness = 0.125f;
     edit.material.metallic = 0.75f;
+    edit.material.model = BrdfModelId::Gltf;   // the part's own, as the editor tunes it
     const fs::path tuned = sceneOf(box, "tuned.json", {edit});
     const test::CliRun exported = run("export --scene " + tuned.string() + " --out " + path("tuned.glb").string());
     ASSERT_EQ(exported.exitCode, 0) << exported.stderrText;
+    EXPECT_EQ(exported.stderrText.find("another model"), std::string::npos) << exported.stderrText;
     test::expectValidGltf(path("tuned.glb"), dir_);
     const Model back = importGltfModel(path("tuned.glb"));
     EXPECT_EQ(back.materials[0].factors.baseColor, edit.material.baseColor);
@@ -266,6 +268,13 @@ TEST_F(GltfModelExport, TheCommandExportsTheTunedModelAndItRendersTheSame) {
     EXPECT_LE(largest, 1);
     const LdrImage untuned = render(sceneOf(box, "untuned.json"), "untuned.png");
     EXPECT_NE(untuned.rgba, original.rgba);   // the tuning shows, so the check above can fail
+    // A part shaded here with another model than glTF's: its factors go as they are, and the
+    // export says that a viewer will show them with glTF's BRDF.
+    edit.material.model = BrdfModelId::Epic;
+    const test::CliRun epic =
+        run("export --scene " + sceneOf(box, "epic.json", {edit}).string() + " --out " + path("epic.glb").string());
+    ASSERT_EQ(epic.exitCode, 0) << epic.stderrText;
+    EXPECT_NE(epic.stderrText.find("\"" + edit.material.name + "\" (epic)"), std::string::npos) << epic.stderrText;
 
     write("m.json", prettyJson(materialToJson(edit.material)));
     const std::string material = " --material " + path("m.json").string();

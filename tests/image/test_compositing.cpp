@@ -178,6 +178,9 @@ TEST(Compositing, ACaptionShowsTheBaseColourInSrgbAndNamesIt) {
     gold.roughness = 0.3f;
     gold.metallic = 1.0f;
     EXPECT_EQ(materialCaption(gold, 1000), "gold  r 0.30 s 0.50 m 1.00  base sRGB 1.00 0.86 0.60");
+    Material gltf = gold;   // another model than the seed's is named: A and B may differ in it alone
+    gltf.model = BrdfModelId::Gltf;
+    EXPECT_EQ(materialCaption(gltf, 1000), "gold  r 0.30 s 0.50 m 1.00  gltf  base sRGB 1.00 0.86 0.60");
 }
 
 // A side-by-side half is narrow: the name is what tells A from B, so numbers give way first.

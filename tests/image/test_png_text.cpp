@@ -59,7 +59,7 @@ Scene unusualScene() {
     scene.material.roughness = 0.0123f;
     scene.material.metallic = 1.0f;
     scene.camera.fovYDegrees = 33.3f;
-    scene.display.tonemap = Tonemap::Aces;
+    scene.display.tonemap = Tonemap::AcesNarkowicz;
     scene.display.exposure = -1.25f;
     scene.lights[0].enabled = false;
     return scene;

@@ -9,6 +9,7 @@
 #include "io/json_writer.h"
 #include "io/scene_file.h"
 #include "scene/camera_control.h"
+#include "shading/shading.h"
 
 namespace patina {
 namespace {
@@ -169,8 +170,8 @@ TEST(SceneFile, ReplacedMapsRoundTripWithTheirPathsResolved) {
 }
 
 // Version 2 renamed a point light's "radius" (its attenuation window) to "range": a version 1
-// file still loads with the same light, and saving writes version 2.
-TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {
+// file still loads with the same light, and saving writes the current version.
+TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsTheCurrentVersion) {
     const char* lights = R"(, "lights": [{"type": "point", "position": [1, 2, 3], "radius": 7.5}]})";
     std::vector<std::string> warnings;
     const Scene old = sceneFromJson(
@@ -182,7 +183,7 @@ TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {
 
     const Json saved = sceneToJson(old);
     EXPECT_EQ(saved["version"], kSceneFormatVersion);
-    EXPECT_EQ(kSceneFormatVersion, 2);
+    EXPECT_EQ(kSceneFormatVersion, 3);
     EXPECT_EQ(saved["lights"][0]["range"], 7.5);
     EXPECT_FALSE(saved["lights"][0].contains("radius"));
     EXPECT_EQ(sceneFromJson(saved, "new.json", ".", warnings), old);
@@ -194,7 +195,60 @@ TEST(SceneFile, Version1RadiusLoadsAsRangeAndSavesAsVersion2) {
     EXPECT_EQ(renamed.lights[0].range, 0.0f);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("/lights/0/radius: unknown key"), std::string::npos) << warnings[0];
-    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 3})").find("up to 2"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 4})").find("up to 3"), std::string::npos);
+}
+
+// Version 3: a model's parts are each shaded with their own BRDF model (glTF's for the file's
+// materials). A version 2 scene shaded the whole model with its material's model: read, it
+// names that model for every part ("modelBrdf"), which saving keeps, so it looks as it did.
+TEST(SceneFile, AVersion2SceneOfAModelKeepsItsOneModelAndVersion3ChoosesPerPart) {
+    auto read = [](const std::string& text) {
+        std::vector<std::string> warnings;
+        return sceneFromJson(parseJsonText(text, "scene.json"), "scene.json", "/models", warnings);
+    };
+    const std::string model = R"(, "mesh": "box.glb", "material": {"model": "burley"}})";
+    const Scene old = read(R"({"format": "patina-scene", "version": 2)" + model);
+    ASSERT_TRUE(old.modelBrdf.has_value());
+    EXPECT_EQ(*old.modelBrdf, BrdfModelId::Burley);
+    const Json saved = sceneToJson(old);
+    EXPECT_EQ(saved["modelBrdf"], "burley");
+    EXPECT_EQ(read(saved.dump()), old);
+    // The same scene written now: each part its own; a built-in mesh's version 2 scene has
+    // nothing to keep.
+    const Scene now = read(R"({"format": "patina-scene", "version": 3)" + model);
+    EXPECT_FALSE(now.modelBrdf.has_value());
+    EXPECT_FALSE(sceneToJson(now).contains("modelBrdf"));
+    EXPECT_FALSE(read(R"({"format": "patina-scene", "version": 2, "mesh": "torus"})").modelBrdf.has_value());
+    EXPECT_EQ(read(R"({"format": "patina-scene", "version": 3, "mesh": "box.glb", "modelBrdf": "gltf"})").modelBrdf,
+              BrdfModelId::Gltf);
+    const std::string unknown = errorOf(R"({"format": "patina-scene", "version": 3, "modelBrdf": "phong"})");
+    EXPECT_NE(unknown.find("/modelBrdf: unknown BRDF model \"phong\""), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("gltf"), std::string::npos) << unknown;   // the known ones listed
+}
+
+// "aces" was Narkowicz's fit before Hill's came: a file that says so still shows it, and is
+// written back under the name that says which; every tone map's name round-trips.
+TEST(SceneFile, TheOldAcesNameReadsAsNarkowiczAndEveryToneMapRoundTrips) {
+    std::vector<std::string> warnings;
+    const Scene old = sceneFromJson(
+        parseJsonText(R"({"format": "patina-scene", "version": 1, "display": {"tonemap": "aces"}})", "old.json"),
+        "old.json", ".", warnings);
+    EXPECT_EQ(old.display.tonemap, Tonemap::AcesNarkowicz);
+    EXPECT_EQ(tonemapShaderIndex(old.display.tonemap), shader::TONEMAP_ACES_NARKOWICZ);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_EQ(sceneToJson(old)["display"]["tonemap"], "aces-narkowicz");
+    for (const Tonemap tonemap : kTonemaps) {
+        Scene scene = defaultScene();
+        scene.display.tonemap = tonemap;
+        const Json saved = sceneToJson(scene);
+        EXPECT_EQ(saved["display"]["tonemap"], std::string(tonemapName(tonemap)));
+        EXPECT_EQ(sceneFromJson(saved, "saved.json", ".", warnings).display.tonemap, tonemap);
+    }
+    const std::string refused = errorOf(R"({"format": "patina-scene", "version": 2, "display": {"tonemap": "aces2"}})");
+    EXPECT_NE(refused.find("/display/tonemap: unknown tone map \"aces2\" (known: none, pbr-neutral, aces-hill, agx, "
+                           "aces-narkowicz, reinhard)"),
+              std::string::npos)
+        << refused;
 }
 
 // A version 1 file with a "range" key (unknown there) must not turn it into the window when
@@ -292,7 +346,7 @@ TEST(SceneFile, SphereAndTubeLightsRoundTripAndRefuseBadSizes) {
 TEST(SceneFile, RefusesOtherFormatsAndNewerVersions) {
     EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1})").find("/format"),
               std::string::npos);
-    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 3})").find("newer"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-scene", "version": 4})").find("newer"), std::string::npos);
     EXPECT_NE(errorOf(R"({"format": "patina-scene"})").find("missing required key 'version'"),
               std::string::npos);
     EXPECT_NE(errorOf(R"([1, 2])").find("expected an object"), std::string::npos);

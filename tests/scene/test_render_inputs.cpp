@@ -45,7 +45,7 @@ TEST(RenderInputs, EverythingDrawnChangesThem) {
         {"camera", [](Scene& s) { s.camera.position.x += 0.1f; }},
         {"field of view", [](Scene& s) { s.camera.fovYDegrees = 30.0f; }},
         {"exposure", [](Scene& s) { s.display.exposure = 1.0f; }},
-        {"tone map", [](Scene& s) { s.display.tonemap = Tonemap::Aces; }},
+        {"tone map", [](Scene& s) { s.display.tonemap = Tonemap::AcesNarkowicz; }},
         {"background", [](Scene& s) { s.display.background = glm::vec3(1.0f); }},
         {"built-in mesh", [](Scene& s) { s.mesh = MeshKind::Torus; }},
         {"environment source", [](Scene& s) { s.lights[2].source = "builtin:white"; }},

@@ -80,8 +80,8 @@ TEST(SceneDraws, AModelsItemsKeepTheirPlacesAndMaterials) {
     EXPECT_EQ(draws[1].normalTransform, normalTransform(model->draws[1].transform));
     EXPECT_EQ(draws[0].material.baseColor, model->materials[0].factors.baseColor);
     EXPECT_EQ(draws[1].material.baseColor, model->materials[1].factors.baseColor);
-    for (const SceneDraw& draw : draws) {
-        EXPECT_EQ(draw.material.model, BrdfModelId::Filament) << "one program shades a frame: the document's model";
+    for (size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(draws[i].material.model, model->materials[i].factors.model) << "each part its own, not the document's";
     }
     // glTF 2.0 §3.9.5: doubleSided draws both sides and lights a back face from its side.
     EXPECT_TRUE(draws[0].doubleSided && draws[0].reverseBackNormals);
@@ -90,10 +90,9 @@ TEST(SceneDraws, AModelsItemsKeepTheirPlacesAndMaterials) {
     EXPECT_EQ(draws[1].alpha, 0.25f);
     EXPECT_FALSE(draws[0].blend);
     EXPECT_EQ(draws[0].alpha, 1.0f) << "an opaque item's alpha is ignored (§3.9.4)";
-    // §3.9.6: no material is the default one.
-    MaterialParameters defaults = defaultModelMaterial();
-    defaults.model = BrdfModelId::Filament;
-    EXPECT_EQ(draws[2].material, defaults);
+    // §3.9.6: no material is the default one, shaded as glTF's.
+    EXPECT_EQ(draws[2].material, defaultModelMaterial());
+    EXPECT_EQ(defaultModelMaterial().model, BrdfModelId::Gltf);
     EXPECT_EQ(defaultModelMaterial().baseColor, glm::vec3(1.0f));
     EXPECT_EQ(defaultModelMaterial().metallic, 1.0f);
     EXPECT_EQ(defaultModelMaterial().roughness, 1.0f);
@@ -121,7 +120,7 @@ TEST(SceneDraws, TheScenesEditOfAModelMaterialReplacesItsFactors) {
     ASSERT_EQ(draws.size(), 3u);
     EXPECT_EQ(draws[0].material.baseColor, tuned.baseColor);
     EXPECT_EQ(draws[0].material.roughness, 0.15f);
-    EXPECT_EQ(draws[0].material.model, scene.material.model);
+    EXPECT_EQ(draws[0].material.model, tuned.model);
     EXPECT_EQ(draws[1].material.baseColor, items.materials[1].factors.baseColor) << "another name: not this material";
     EXPECT_EQ(draws[2].material.baseColor, defaultModelMaterial().baseColor) << "no material: glTF's default";
 }
@@ -191,6 +190,42 @@ TEST(SceneDraws, PartMaterialsGoOnEveryPartOfTheNameAndAWrongNameListsEachOnce) 
     } catch (const std::invalid_argument& error) {
         EXPECT_STREQ(error.what(), "the model has no part \"glass\" (its parts: \"metal\", \"rubber\")");
     }
+}
+
+// Each part is shaded with its own BRDF model (the file's are glTF's; an edit names its own)
+// unless the scene names one for all (Scene::modelBrdf: `render --model`, a version 2 scene); a
+// material put on the parts changes their factors and keeps their models.
+TEST(SceneDraws, EachPartIsShadedWithItsOwnModelUnlessTheSceneNamesOne) {
+    Scene scene = defaultScene();
+    Model items = threeItems();
+    items.materials[0].name = "red";
+    items.materials[0].factors.model = BrdfModelId::Gltf;
+    items.materials[1].name = "blue";
+    items.materials[1].factors.model = BrdfModelId::Burley;
+    const auto model = std::make_shared<const Model>(items);
+    const PreparedScene prepared{scene, builtinMesh(MeshKind::Sphere), nullptr, model};
+    Material blue;
+    blue.name = "blue";
+    blue.model = BrdfModelId::Epic;
+    scene.modelMaterials = {{1, blue}};
+    auto models = [&] {
+        std::vector<BrdfModelId> shaded;
+        for (const SceneDraw& draw : sceneDraws(PreparedScene{scene, prepared.mesh, nullptr, model})) {
+            shaded.push_back(draw.material.model);
+        }
+        return shaded;
+    };
+    scene.material.model = BrdfModelId::Hammon;   // the built-in meshes': no part's
+    EXPECT_EQ(models(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic, BrdfModelId::Gltf}));
+    scene.modelBrdf = BrdfModelId::Filament;
+    EXPECT_EQ(models(), (std::vector{BrdfModelId::Filament, BrdfModelId::Filament, BrdfModelId::Filament}));
+    scene.modelBrdf.reset();
+    Material preset;
+    preset.roughness = 0.9f;
+    preset.model = BrdfModelId::SchlickPow5;
+    setPartMaterials(scene, items, preset);
+    EXPECT_EQ(models(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic, BrdfModelId::Gltf}));
+    EXPECT_EQ(sceneDraws(PreparedScene{scene, prepared.mesh, nullptr, model})[0].material.roughness, 0.9f);
 }
 
 TEST(SceneDraws, AnItemNamingWhatTheModelLacksIsRefused) {

@@ -40,21 +40,26 @@ void drawRestorePrompt(EditorState& state) {
 // What was waiting on the prompt goes on: the open, the new document or the quit.
 void proceed(EditorState& state) {
     if (state.pendingOpen) {
-        openFile(state, *state.pendingOpen);
+        answerOpen(state, true);
     } else if (state.pendingNew) {
         newDocument(state);
     } else {
         state.quitConfirmed = true;
     }
-    state.pendingOpen.reset();
     state.pendingNew = false;
     state.pendingQuit = false;
 }
 
-// The prompt's Save: the whole scene when more than the material changed; a file first if it
-// has none.
+// Whether the prompt's Save writes the scene: when more than the material changed, a scene file
+// is open, or a model's document has no file yet (Ctrl+S's rule, menu_actions.h save).
+bool promptSavesScene(const EditorState& state) {
+    return state.sceneChanged() || !state.scenePath.empty() ||
+           (state.materialPath.empty() && !state.scene.meshFile.empty());
+}
+
+// The prompt's Save: the scene or the material; a file first if it has none.
 void saveForPrompt(EditorState& state) {
-    if (state.sceneChanged() || !state.scenePath.empty()) {
+    if (promptSavesScene(state)) {
         saveSceneDocument(state);
     } else {
         save(state);
@@ -81,7 +86,10 @@ void drawUnsavedPrompt(EditorState& state) {
     } else {
         ImGui::Text("Unsaved changes to %s.", parts.c_str());
     }
-    ImGui::TextDisabled(state.sceneChanged() ? "Save writes the scene, its material inline."
+    if (state.pendingOpen) {
+        ImGui::Text("%s opens as a new document.", state.pendingOpen->filename().string().c_str());
+    }
+    ImGui::TextDisabled(promptSavesScene(state) ? "Save writes the scene, its material inline."
                                              : "Save writes the material.");
     if (ImGui::Button("Save")) {
         ImGui::CloseCurrentPopup();
@@ -99,7 +107,7 @@ void drawUnsavedPrompt(EditorState& state) {
     recordItem("Discard changes");
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) {
-        state.pendingOpen.reset();
+        answerOpen(state, false);
         state.pendingNew = false;
         state.pendingQuit = false;
         ImGui::CloseCurrentPopup();

@@ -5,7 +5,9 @@
 #include <system_error>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
+#include "shown_path.h"
 #include "text_match.h"
 #include "ui_scale.h"
 #include "widgets.h"
@@ -37,6 +39,54 @@ void confirm(EditorState& state, EditorServices& services, const std::filesystem
     case EditorState::PathDialog::None: break;
     }
 }
+
+// Characters typed before the path field has the keys (with the key that opened the dialog, and
+// in the hidden frame a dialog's first opening sizes itself in) were lost: they are the path's
+// start, replacing the path offered as typing over its selection does. Returns whether any were
+// taken, so that the field's cursor goes after them when it takes the keys.
+bool takeEarlyKeys(EditorState& state) {
+    ImVector<ImWchar>& queue = ImGui::GetIO().InputQueueCharacters;
+    if (state.pathFieldTaken || queue.empty()) {
+        return false;
+    }
+    if (!state.pathTypedEarly) {
+        state.pathDialogText.clear();
+        state.pathTypedEarly = true;
+    }
+    for (ImWchar c : queue) {
+        if (c >= 32 && c != 127) {
+            char utf8[5];
+            state.pathDialogText += ImTextCharToUtf8(utf8, c);
+        }
+    }
+    queue.resize(0);
+    return true;
+}
+
+// The folder's entries under its path, from the home folder where it is inside it (a relative
+// one is in `base`, or the editor's working folder): a click on a folder enters it, on a file
+// takes its path.
+void drawListing(EditorState& state, const std::filesystem::path& base, ImVec2 size) {
+    std::error_code error;
+    const std::filesystem::path folder = typedFolder(state.pathDialogText, base);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + size.x);
+    ImGui::TextDisabled("In %s", shownPath(folder).c_str());
+    ImGui::PopTextWrapPos();
+    recordItem("path:folder", "The folder listed below, where a relative path is");
+    ImGui::BeginChild("listing", size, true);
+    if (ImGui::Selectable("../")) {
+        state.pathDialogText = (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
+    }
+    recordItem("path:up", "The folder above");
+    for (const ListedEntry& entry : listForDialog(state.pathDialogText, state.pathDialog, base)) {
+        const std::string name = entry.path.filename().string() + (entry.folder ? "/" : "");
+        if (ImGui::Selectable(name.c_str())) {
+            state.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
+        }
+        recordItem("path:entry " + name, entry.folder ? "Open this folder" : "Choose this file");
+    }
+    ImGui::EndChild();
+}
 }  // namespace
 
 const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
@@ -48,7 +98,10 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
     static const PathDialogKind saveScene{
         "Save scene as", "Save the scene (lights, camera, display, the material inline) as .json:", "Save", {".json"}};
     static const PathDialogKind savePreset{
-        "Save as preset", "Save the material in your presets; the file's name becomes the material's name:", "Save",
+        "Save as preset",
+        "Save the material in your presets (a name alone goes into your presets folder); the file's name becomes "
+        "the material's name:",
+        "Save",
         {".json"}};
     static const PathDialogKind exportComparison{
         "Export comparison", "Export A and B side by side, captioned, as a PNG:", "Export", {".png"}};
@@ -75,8 +128,19 @@ const PathDialogKind& pathDialogKind(EditorState::PathDialog dialog) {
     return open;
 }
 
-std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog) {
-    const auto [folder, name] = splitTyped(typed);
+std::filesystem::path relativeBase(const EditorState& state, EditorState::PathDialog dialog) {
+    return dialog == EditorState::PathDialog::SavePreset ? state.userPresetFolder : std::filesystem::path();
+}
+
+std::filesystem::path typedFolder(const std::string& typed, const std::filesystem::path& base) {
+    const std::filesystem::path folder = splitTyped(typed).first;
+    return base.empty() || folder.is_absolute() ? folder : base / folder;
+}
+
+std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog,
+                                       const std::filesystem::path& base) {
+    const std::filesystem::path folder = typedFolder(typed, base);
+    const std::string name = splitTyped(typed).second;
     const PathDialogKind& kind = pathDialogKind(dialog);
     const std::string wanted = kind.filterByName ? name : "";
     const std::vector<std::string>& extensions = kind.extensions;
@@ -96,9 +160,10 @@ std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::Pa
     return entries;
 }
 
-bool enterFolder(std::string* typed) {
+bool enterFolder(std::string* typed, const std::filesystem::path& base) {
     std::error_code error;
-    if (typed->empty() || !std::filesystem::is_directory(*typed, error)) {
+    const std::filesystem::path path = *typed;
+    if (typed->empty() || !std::filesystem::is_directory(base.empty() || path.is_absolute() ? path : base / path, error)) {
         return false;
     }
     if (typed->back() != '/') {
@@ -110,6 +175,7 @@ bool enterFolder(std::string* typed) {
 void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial) {
     state.pathDialog = kind;
     state.pathDialogText = initial.string();
+    state.pathFieldTaken = state.pathTypedEarly = false;
 }
 
 void drawPathDialog(EditorState& state, EditorServices& services) {
@@ -139,6 +205,7 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     // Written as typed, so the list follows; Enter lets go of the field (single-line fields do).
     // After Enter on a folder the field takes the keys again, its cursor after the new '/'.
     static bool cursorToEnd = false;
+    cursorToEnd = takeEarlyKeys(state) || cursorToEnd;
     char buffer[1024];
     std::snprintf(buffer, sizeof buffer, "%s", state.pathDialogText.c_str());
     const auto moveCursor = [](ImGuiInputTextCallbackData* data) {
@@ -154,36 +221,20 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
         state.pathDialogText = buffer;
     }
     ImGui::PopID();
-    bool entered = ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
-                                                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+    // Enter lets go of the field, or comes before the field had the keys (Ctrl+Alt+S, Enter: the
+    // name offered, at once).
+    const bool early = !state.pathFieldTaken;
+    state.pathFieldTaken = state.pathFieldTaken || ImGui::IsItemActive();
+    bool entered = (ImGui::IsItemDeactivated() || early) && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                                                              ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
     recordItem("path:text", "The file's path; Enter on a folder opens it, the list below follows what you type");
-    if (entered && enterFolder(&state.pathDialogText)) {
+    const std::filesystem::path base = relativeBase(state, state.pathDialog);
+    if (entered && enterFolder(&state.pathDialogText, base)) {
         entered = false;   // into the folder, the dialog stays
         ImGui::SetKeyboardFocusHere(-1);
         cursorToEnd = true;
     }
-    // The folder's entries, under its whole path (a relative one is the editor's working folder):
-    // a click on a folder enters it, on a file takes its path.
-    std::error_code error;
-    const std::filesystem::path folder = splitTyped(state.pathDialogText).first;
-    const std::string shown = std::filesystem::absolute(folder, error).lexically_normal().string();
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
-    ImGui::TextDisabled("In %s", shown.c_str());
-    ImGui::PopTextWrapPos();
-    recordItem("path:folder", "The folder listed below, where a relative path is");
-    ImGui::BeginChild("listing", ImVec2(width, std::min(px(240), display.y * 0.4f)), true);
-    if (ImGui::Selectable("../")) {
-        state.pathDialogText = (std::filesystem::absolute(folder, error).lexically_normal().parent_path() / "").string();
-    }
-    recordItem("path:up", "The folder above");
-    for (const ListedEntry& entry : listForDialog(state.pathDialogText, state.pathDialog)) {
-        const std::string name = entry.path.filename().string() + (entry.folder ? "/" : "");
-        if (ImGui::Selectable(name.c_str())) {
-            state.pathDialogText = entry.folder ? (entry.path / "").string() : entry.path.string();
-        }
-        recordItem("path:entry " + name, entry.folder ? "Open this folder" : "Choose this file");
-    }
-    ImGui::EndChild();
+    drawListing(state, base, ImVec2(width, std::min(px(240), display.y * 0.4f)));
     const bool confirmed = ImGui::Button(kind.verb);
     recordItem("path:confirm", kind.prompt);
     if (confirmed || entered) {

@@ -26,13 +26,19 @@ struct ListedEntry {
     std::filesystem::path path;
     bool folder = false;
 };
-// The folder `typed` points into (the text up to its last '/'), folders first then files of
-// `dialog`'s types; for Open, each whose name contains what is typed after that '/' (any case).
-std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog);
+// Where a relative path typed in `dialog` is: the user's presets folder for Save as preset (a
+// name alone goes there, as saveAsPreset takes it), else the working folder (empty).
+std::filesystem::path relativeBase(const EditorState& state, EditorState::PathDialog dialog);
+// The folder `typed` points into (the text up to its last '/', a relative one inside `base`).
+std::filesystem::path typedFolder(const std::string& typed, const std::filesystem::path& base = {});
+// That folder's entries, folders first then files of `dialog`'s types; for Open, each whose
+// name contains what is typed after that '/' (any case).
+std::vector<ListedEntry> listForDialog(const std::string& typed, EditorState::PathDialog dialog,
+                                       const std::filesystem::path& base = {});
 
-// Enter in the path field: a folder is entered (the text becomes "folder/", and true is
-// returned); anything else is to be confirmed (false).
-bool enterFolder(std::string* typed);
+// Enter in the path field: a folder (a relative one inside `base`) is entered (the text becomes
+// "folder/", and true is returned); anything else is to be confirmed (false).
+bool enterFolder(std::string* typed, const std::filesystem::path& base = {});
 
 void startPathDialog(EditorState& state, EditorState::PathDialog kind, const std::filesystem::path& initial);
 // The dialog itself, while state.pathDialog is not None.

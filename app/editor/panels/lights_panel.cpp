@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <filesystem>
 #include <string>
@@ -168,7 +169,30 @@ void editTube(Light& light) {
     editSourceRadius(light);
 }
 
-void editLight(Light& light) {
+// The intensity, shown divided by `scale` (intensityScale): at a model's scale, 1 lights the
+// model as 1 lights the unit sphere; the file keeps the intensity itself.
+void editIntensity(Light& light, float scale) {
+    float shown = light.intensity / scale;
+    // Each pixel of drag changes the intensity by 1% of itself: 8 to 100 is about 250 pixels,
+    // not 1800 as at a fixed step, and small values stay as easy to set as large ones.
+    if (ImGui::DragFloat("Intensity", &shown, std::max(shown, 0.1f) * 0.01f, 0.0f, 1e6f,
+                         scale == 1.0f ? "%.3f" : "%.3f (model scale)", ImGuiSliderFlags_AlwaysClamp)) {
+        light.intensity = shown * scale;
+    }
+    if (scale == 1.0f) {
+        recordItem("Intensity", "How bright the light is; a drag changes it in proportion to itself. Ctrl+click to type");
+        return;
+    }
+    char tooltip[320];
+    std::snprintf(tooltip, sizeof tooltip,
+                  "How bright the light is at the model's scale: 1 lights the model as 1 lights the unit sphere. The "
+                  "scene holds it times the model's radius squared (%.6g x %.6g = %.6g). A drag changes it in "
+                  "proportion to itself; Ctrl+click to type",
+                  double(shown), double(scale), double(light.intensity));
+    recordItem("Intensity", tooltip);
+}
+
+void editLight(Light& light, float intensityScale) {
     // Written as typed, as the material's name: the edit commits when the field lets go, by
     // Enter or by a click elsewhere (it used to be lost unless Enter was pressed).
     inputString("Name", &light.name);
@@ -178,11 +202,7 @@ void editLight(Light& light) {
     if (light.type != LightType::Environment) {   // an environment's colour is its image's
         colorEditLinear("Colour", "The light's colour; values above 1 are kept", &light.color, true);
     }
-    // Each pixel of drag changes the intensity by 1% of itself: 8 to 100 is about 250 pixels,
-    // not 1800 as at a fixed step, and small values stay as easy to set as large ones.
-    ImGui::DragFloat("Intensity", &light.intensity, std::max(light.intensity, 0.1f) * 0.01f, 0.0f, 1e6f, "%.3f",
-                     ImGuiSliderFlags_AlwaysClamp);
-    recordItem("Intensity", "How bright the light is; a drag changes it in proportion to itself. Ctrl+click to type");
+    editIntensity(light, intensityScale);
     switch (light.type) {
     case LightType::Point:
         editPosition(light);
@@ -322,7 +342,7 @@ void drawLightsPanel(EditorState& state, EditorServices& services) {
     if (state.hasLight(state.selectedLight)) {
         ImGui::Separator();
         Light& light = state.scene.lights[size_t(state.selectedLight)];
-        editLight(light);
+        editLight(light, intensityScale(state, light));
         if (light.type == LightType::Environment) {
             editEnvironment(state, services, light);
         }

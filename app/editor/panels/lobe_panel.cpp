@@ -85,7 +85,7 @@ void drawPolar(const LobePlot& plot, const LobeSettings& lobe, ImVec2 size) {
     entry(IM_COL32(255, 220, 90, 255), 1.5f, "light (theta_in)");
     for (const LobeCurve& curve : plot.curves) {
         if (!curve.legend.empty()) {
-            entry(curve.color, curve.thickness, curve.legend.c_str());
+            entry(curve.legendColor, curve.thickness, curve.legend.c_str());
         }
     }
     draw->PopClipRect();

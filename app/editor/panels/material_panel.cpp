@@ -8,19 +8,25 @@
 #include "document_files.h"
 #include "file_dialog.h"
 #include "panels.h"
+#include "shown_path.h"
+#include "text_match.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
 namespace patina::editor {
 
 namespace {
-// The research controls: which BRDF model and render path, and what the shader derives.
-void drawAdvanced(EditorState& state) {
-    Material& material = state.scene.material;
-    if (ImGui::BeginCombo("Model", std::string(brdfModel(material.model).name).c_str())) {
+// The BRDF model of what the panel edits: the built-in mesh's material, the selected part of a
+// model, or every part where the scene shades them all with one (Scene::modelBrdf).
+void drawModelChoice(EditorState& state) {
+    const bool parts = modelMaterialCount(state) > 0;
+    const bool everyPart = parts && state.scene.modelBrdf.has_value();
+    Material edited = editedMaterial(state);
+    BrdfModelId chosen = edited.model;
+    if (ImGui::BeginCombo("Model", std::string(brdfModel(chosen).name).c_str())) {
         for (const BrdfModelInfo& model : brdfModels()) {
-            if (ImGui::Selectable(std::string(model.name).c_str(), model.id == material.model)) {
-                material.model = model.id;
+            if (ImGui::Selectable(std::string(model.name).c_str(), model.id == chosen)) {
+                chosen = model.id;
             }
             if (ImGui::IsItemHovered()) {
                 ImGui::SetTooltip("%s", std::string(model.summary).c_str());
@@ -28,7 +34,37 @@ void drawAdvanced(EditorState& state) {
         }
         ImGui::EndCombo();
     }
-    recordItem("Model", "The BRDF model the renderer shades with (saved with the material)");
+    recordItem("Model", !parts      ? "The BRDF model the renderer shades with (saved with the material)"
+                        : everyPart ? "The BRDF model every part of the model is shaded with (saved in the scene)"
+                                    : "The BRDF model this part is shaded with: glTF's own (gltf) as the file "
+                                      "defines it, or another to compare (saved in the scene)");
+    if (chosen != edited.model) {
+        if (!parts) {
+            state.scene.material.model = chosen;
+        } else if (everyPart) {
+            state.scene.modelBrdf = chosen;
+        } else {
+            edited.model = chosen;
+            setEditedMaterial(state, state.scene, edited);
+        }
+    }
+    if (everyPart) {
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("Every part is shaded with %s: the scene chose one model for all (a scene saved "
+                            "before each part had its own, or --model).",
+                            std::string(brdfModel(chosen).name).c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::SmallButton("Each part its own model")) {
+            state.scene.modelBrdf.reset();
+        }
+        recordItem("Each part its own model",
+                   "Shade each part with its own BRDF model again: glTF's (gltf) for the file's materials");
+    }
+}
+
+// The research controls: which BRDF model and render path, and what the shader derives.
+void drawAdvanced(EditorState& state) {
+    drawModelChoice(state);
     int path = int(state.renderPath);
     ImGui::TextUnformatted("Render path");
     ImGui::RadioButton("single", &path, int(RenderPath::Single));
@@ -102,9 +138,51 @@ void drawFactors(Material& material, const Material& file, const Material& defau
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
 }
 
-// A model's parts (its materials), a row each: a swatch of the base colour as tuned, the index
-// and name, and how many maps it uses (named in the tooltip). A click makes it the one the
-// panel edits; a part picked in the viewport is scrolled into view.
+// "a, b, c".
+std::string joinNames(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) {
+        text += (text.empty() ? "" : ", ") + name;
+    }
+    return text;
+}
+
+// One part's row: a swatch of its base colour as tuned, its index and name, how many maps it
+// uses, and the nodes drawn with it, greyed (a model's materials often share one name:
+// 2CylinderEngine has nine "Material_17"); the maps and every node in the tooltip.
+bool drawPartRow(const EditorState& state, int i, bool selected) {
+    const Material tuned = modelMaterial(state, state.scene, i);
+    const glm::vec3 srgb = shader::srgbColor(glm::clamp(tuned.baseColor, 0.0f, 1.0f));
+    const float side = ImGui::GetTextLineHeight();
+    ImGui::ColorButton("##swatch", ImVec4(srgb.r, srgb.g, srgb.b, 1.0f),
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(side, side));
+    ImGui::SameLine();
+    const std::string maps = mapNames(state, i);
+    const int mapCount = maps.empty() ? 0 : int(std::count(maps.begin(), maps.end(), ',')) + 1;
+    const std::string label = std::to_string(i) + ": " + state.model->materials[size_t(i)].name +
+                              (mapCount ? "  (" + std::to_string(mapCount) + (mapCount > 1 ? " maps)" : " map)") : "");
+    const std::string nodes = joinNames(partNodes(state, i));
+    const ImVec2 start = ImGui::GetCursorScreenPos();
+    const bool clicked = ImGui::Selectable(("##part" + std::to_string(i)).c_str(), selected);
+    const std::string tooltip = label + "\nDrawn on: " + (nodes.empty() ? "no node" : nodes) + "\n" +
+                                (maps.empty() ? "Factors only, no texture maps" : "Maps: " + maps);
+    recordItem("part:" + std::to_string(i), tooltip.c_str());
+    // The label, then the nodes greyed, cut where the row ends.
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float right = ImGui::GetItemRectMax().x;
+    draw->AddText(start, ImGui::GetColorU32(ImGuiCol_Text), label.c_str());
+    const float after = start.x + ImGui::CalcTextSize(label.c_str()).x + px(10);
+    if (!nodes.empty() && after < right) {
+        draw->AddText(ImVec2(after, start.y), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                      fittedText(nodes, right - after).c_str());
+    }
+    return clicked;
+}
+
+// A model's parts (its materials), a row each, under a search box that keeps the rows whose
+// material or node has what is typed. The list grows with the panel (at least six rows, up to
+// about half the panel). A click makes a part the one the panel edits; a part picked in the
+// viewport is scrolled into view.
 void drawPartList(EditorState& state) {
     const int count = modelMaterialCount(state);
     int& selected = state.selectedModelMaterial;
@@ -112,30 +190,35 @@ void drawPartList(EditorState& state) {
     static int shown = -1;   // the selection the list last scrolled to
     const float line = ImGui::GetTextLineHeightWithSpacing();
     ImGui::TextUnformatted("Parts");
-    if (ImGui::BeginListBox("##parts", ImVec2(-FLT_MIN, (float(std::min(count, 6)) + 0.4f) * line))) {
-        for (int i = 0; i < count; ++i) {
+    if (count > 6) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        inputString("##part search", &state.partFilter, 0, "Search parts or nodes");
+        recordItem("part search", "Show only the parts whose material or node has this in its name");
+    }
+    std::vector<int> rows;
+    for (int i = 0; i < count; ++i) {
+        if (partMatches(state, i, state.partFilter)) {
+            rows.push_back(i);
+        }
+    }
+    const float least = (float(std::min(count, 6)) + 0.4f) * line;
+    const float wanted = (float(rows.size()) + 0.4f) * line;
+    const float height = std::max(least, std::min(wanted, ImGui::GetContentRegionAvail().y * 0.5f));
+    if (ImGui::BeginListBox("##parts", ImVec2(-FLT_MIN, height))) {
+        for (int i : rows) {
             ImGui::PushID(i);
-            const Material tuned = modelMaterial(state, state.scene, i);
-            const glm::vec3 srgb = shader::srgbColor(glm::clamp(tuned.baseColor, 0.0f, 1.0f));
-            const float side = ImGui::GetTextLineHeight();
-            ImGui::ColorButton("##swatch", ImVec4(srgb.r, srgb.g, srgb.b, 1.0f),
-                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(side, side));
-            ImGui::SameLine();
-            const std::string maps = mapNames(state, i);
-            const int mapCount = maps.empty() ? 0 : int(std::count(maps.begin(), maps.end(), ',')) + 1;
-            const std::string label = std::to_string(i) + ": " + state.model->materials[size_t(i)].name +
-                                      (mapCount ? "  (" + std::to_string(mapCount) + (mapCount > 1 ? " maps)" : " map)") : "");
-            if (ImGui::Selectable(label.c_str(), i == selected)) {
+            if (drawPartRow(state, i, i == selected)) {
                 selected = i;
             }
             if (i == selected && shown != selected) {
                 ImGui::SetScrollHereY();
                 shown = selected;
             }
-            if (ImGui::IsItemHovered()) {
-                ImGui::SetTooltip("%s", maps.empty() ? "Factors only, no texture maps" : ("Maps: " + maps).c_str());
-            }
             ImGui::PopID();
+        }
+        if (rows.empty()) {
+            ImGui::TextDisabled("No part or node has \"%s\" in its name.", state.partFilter.c_str());
         }
         ImGui::EndListBox();
     }
@@ -182,7 +265,8 @@ void drawMapReplace(EditorState& state, int index, const char* key, const char* 
     recordItem("map replace: " + std::string(name),
                ("Draw an image file (PNG or JPEG) in place of the " + std::string(name) +
                 " map, with its UV set, sampling and transform" +
-                (replaced.empty() ? std::string() : "; now " + replaced))
+                (replaced.empty() ? std::string()
+                                  : "; now " + shownPath(replaced, std::filesystem::path(state.scene.meshFile).parent_path())))
                    .c_str());
     if (!replaced.empty()) {
         ImGui::SameLine();

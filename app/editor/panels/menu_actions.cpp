@@ -32,10 +32,12 @@ void saveSceneDocument(EditorState& state) {
 void save(EditorState& state) {
     if (!state.scenePath.empty()) {
         saveScene(state, state.scenePath);
-    } else if (state.materialPath.empty()) {
-        saveAs(state);
-    } else {
+    } else if (!state.materialPath.empty()) {
         saveMaterial(state, state.materialPath);
+    } else if (!state.scene.meshFile.empty()) {
+        saveSceneAs(state);   // a model's document: its tuning is kept in a scene
+    } else {
+        saveAs(state);
     }
 }
 

@@ -10,7 +10,8 @@ void saveAs(EditorState& state);
 void saveSceneAs(EditorState& state);
 // The scene to its file, or Save scene as when it has none.
 void saveSceneDocument(EditorState& state);
-// Ctrl+S: the document: the scene when one is open, else the material.
+// Ctrl+S: the document: the scene when one is open, else the material's file; with neither, a
+// model's document asks where to save its scene, anything else where to save the material.
 void save(EditorState& state);
 // F12: asks for a screenshot at the size the View menu sets (else the viewport's) and says "Rendering...";
 // takeRequestedScreenshot (panels.h) writes it at the start of the next frame.

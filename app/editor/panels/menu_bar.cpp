@@ -7,6 +7,7 @@
 #include "file_dialog.h"
 #include "menu_actions.h"
 #include "panels.h"
+#include "shown_path.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
@@ -46,9 +47,10 @@ void drawFileMenu(EditorState& state, EditorServices& services) {
     if (ImGui::MenuItem("Open...", "Ctrl+O")) {
         openDialog(state);
     }
+    recordItem("Open", "Open a material, scene, screenshot, glTF model or environment image");
     if (ImGui::BeginMenu("Open recent", !state.recentFiles.empty())) {
         for (const std::filesystem::path& recent : state.recentFiles) {
-            if (ImGui::MenuItem(recent.string().c_str())) {
+            if (ImGui::MenuItem(shownPath(recent).c_str())) {
                 requestOpen(state, recent);
             }
         }
@@ -216,13 +218,20 @@ void drawPbrTally(const EditorState& state, const PbrTally& tally) {
     recordItem("PBR tally", detail);
 }
 
-// The last completed action, on one line where it moves nothing; after a screenshot, a
-// button to its folder.
+// The last completed action, on one line where it moves nothing: its first line, cut with "..."
+// where the window ends, the whole of it in a tooltip (a long one used to run off the window's
+// edge, unreadable); after a screenshot, a button to its folder.
 void drawStatus(EditorState& state) {
     const std::string status = state.status.substr(0, state.status.find('\n'));
+    const bool screenshot = !state.lastScreenshot.empty() && status.find(shownPath(state.lastScreenshot)) != std::string::npos;
     ImGui::SameLine(0.0f, px(24));
-    ImGui::TextDisabled("%s", status.c_str());
-    if (!state.lastScreenshot.empty() && status.find(state.lastScreenshot.string()) != std::string::npos) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float button =
+        screenshot ? ImGui::CalcTextSize("Open folder").x + 2.0f * style.FramePadding.x + style.ItemSpacing.x : 0.0f;
+    const std::string shown = fittedText(status, std::max(ImGui::GetContentRegionAvail().x - button, px(60)));
+    ImGui::TextDisabled("%s", shown.c_str());
+    recordItem("status", state.status.empty() ? "What the editor did last shows here" : state.status.c_str());
+    if (screenshot) {
         ImGui::SameLine();
         if (ImGui::SmallButton("Open folder")) {
             openScreenshotFolder(state);

@@ -2,6 +2,7 @@
 // pixel's story (reference/pixel_story.h, the CPU twin of the shaders) as a tooltip, a click
 // pins, each pin marked on the picture and listed in the Pinned pixels window (removable, copied
 // as CSV).
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <string>
@@ -30,7 +31,7 @@ std::vector<std::string> storyLines(const PixelStory& s) {
     const shader::ChannelInputs& c = s.inputs;
     std::vector<std::string> lines{
         "pixel " + std::to_string(s.x) + ", " + std::to_string(s.y) +
-            (s.item.empty() ? "" : "   " + s.item + " (" + s.material + ")"),
+            (s.item.empty() ? "   " + s.model : "   " + s.item + " (" + s.material + ", " + s.model + ")"),
         "radiance      " + vec3Text(c.radiance),
         "shown (sRGB)  " + format("%.0f  %.0f  %.0f", s.display[0], s.display[1], s.display[2]),
         "base colour   " + vec3Text(c.baseColor) + format("   alpha %.3g", c.alpha),
@@ -116,21 +117,44 @@ glm::ivec2 pinPixel(glm::vec2 pin, int width, int height) {
     return {std::min(int(pin.x * float(width)), width - 1), std::min(int(pin.y * float(height)), height - 1)};
 }
 
+// Where the Pinned pixels window first opens: beside the picture (`min` to `max`), never over
+// it (it once covered the model): below it, over the lobe panel, where there is room; else right
+// of it, over the lights panel; else over the picture's lower part, the last resort.
+void placePinsWindow(ImVec2 min, ImVec2 max) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float gap = px(4);
+    ImVec2 at(min.x + px(8), min.y + (max.y - min.y) * 0.55f), size(px(520), px(300));
+    if (display.y - max.y - gap >= px(150)) {
+        at = ImVec2(min.x, max.y + gap);
+        size = ImVec2(std::min(px(560), display.x - min.x), display.y - at.y);
+    } else if (display.x - max.x - gap >= px(240)) {
+        at = ImVec2(max.x + gap, min.y);
+        size = ImVec2(display.x - at.x, std::min(px(360), display.y - at.y));
+    }
+    ImGui::SetNextWindowPos(at, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
+}
+
 // Every pin's story, recomputed for the scene as it is now.
 void drawPinsWindow(EditorState& state, EditorServices& services, const PreparedScene& shown, ImVec2 origin,
                     int width, int height) {
     if (state.pins.empty()) {
         return;
     }
-    // First over the viewport's lower part, clear of the panels' sliders.
-    ImGui::SetNextWindowPos(ImVec2(origin.x + px(8), origin.y + float(height) * 0.55f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(px(520), px(300)), ImGuiCond_FirstUseEver);
+    ImVec2 pictureMin, pictureMax;   // the whole picture: both halves of a comparison
+    if (!itemRect("viewport", &pictureMin, &pictureMax)) {
+        pictureMin = origin;
+        pictureMax = ImVec2(origin.x + float(width), origin.y + float(height));
+    }
+    placePinsWindow(pictureMin, pictureMax);
     bool open = true;
     if (!ImGui::Begin("Pinned pixels", &open)) {
         ImGui::End();
         return;
     }
     std::string header, rows;   // the header by the first story (each pin's lights are the scene's)
+    // The stories scroll; the buttons under them stay in view however many pins there are.
+    ImGui::BeginChild("pins", ImVec2(0.0f, -(ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y)));
     for (size_t i = 0; i < state.pins.size(); ++i) {
         const glm::ivec2 at = pinPixel(state.pins[i], width, height);
         ImGui::PushID(int(i));
@@ -154,6 +178,7 @@ void drawPinsWindow(EditorState& state, EditorServices& services, const Prepared
             break;
         }
     }
+    ImGui::EndChild();
     const std::string csv = (header.empty() ? csvHeader(nullptr) : header) + rows;
     ImGui::Separator();
     if (ImGui::Button("Copy as CSV")) {

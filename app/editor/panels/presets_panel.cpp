@@ -5,6 +5,7 @@
 #include "panels.h"
 #include "io/scene_file.h"
 #include "preset_files.h"
+#include "shown_path.h"
 #include "ui_scale.h"
 #include "widgets.h"
 
@@ -146,8 +147,14 @@ void drawPresetsPanel(EditorState& state, EditorServices& services) {
             continue;
         }
         any = true;
-        ImGui::TextDisabled("%s", folder.string().c_str());
         const bool own = folder == state.userPresetFolder;
+        // Named for whose they are, the user's folder from their home: never a path of the
+        // machine that built the program.
+        const std::string header = own ? "Your presets (" + shownPath(folder) + ")" : std::string("Built-in presets");
+        ImGui::TextDisabled("%s", header.c_str());
+        recordItem(own ? "presets:yours" : "presets:built-in",
+                   own ? ("Your presets, in " + shownPath(folder) + ": Save as preset writes here").c_str()
+                       : "The presets that come with Patina: a click applies one, Save as preset makes your own");
         int column = 0;
         for (const std::filesystem::path& file : files) {
             presetCell(state, services, file, own, kThumb);

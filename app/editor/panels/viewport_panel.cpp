@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <imgui.h>
 
+#include "camera_choice.h"
 #include "scene/camera_control.h"
 #include "scene/view.h"
 #include "part_picking.h"
@@ -52,6 +53,59 @@ void drawModelLoad(EditorState& state) {
     recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
 }
 
+// What each tone map is, for its entry's tooltip (docs/FORMATS.md, display.tonemap).
+const char* tonemapSummary(Tonemap tonemap) {
+    switch (tonemap) {
+    case Tonemap::None: return "None: clamped at white, no curve";
+    case Tonemap::PbrNeutral: return "Khronos PBR Neutral: colours up to 0.8 kept as they are, highlights compressed "
+                                     "towards white (model-viewer's default)";
+    case Tonemap::AcesHill: return "ACES as three.js and the Khronos glTF viewer show it: Hill's fit of the RRT + ODT, "
+                                   "exposure boosted by 1/0.6";
+    case Tonemap::Agx: return "AgX, Blender 4's default view, with its base look, as three.js applies it";
+    case Tonemap::AcesNarkowicz: return "ACES by Narkowicz's fit, what Patina called \"aces\": brighter "
+                                        "shadows, no colour matrices";
+    case Tonemap::Reinhard: return "Reinhard: x / (1 + x)";
+    }
+    return "";
+}
+
+// The Camera list (model-viewer's framing, then the model's own cameras; the view is made when
+// one is chosen, so no frame measures the mesh) and the field of view.
+void drawCameraControls(EditorState& state) {
+    const std::string current = currentCameraName(state);
+    // Wide enough for the name shown (up to a limit), as the mesh's.
+    const float width = std::clamp(ImGui::CalcTextSize(current.c_str()).x + ImGui::GetFrameHeight() +
+                                       ImGui::GetStyle().FramePadding.x * 2.0f,
+                                   px(90), px(200));
+    sameLineIfFits(labelledWidth(width, "Camera"));
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::BeginCombo("Camera", current.c_str())) {
+        const std::vector<CameraChoice> choices = cameraChoices(state);
+        for (size_t i = 0; i < choices.size(); ++i) {
+            const CameraChoice& choice = choices[i];
+            ImGui::BeginDisabled(!choice.usable);
+            const std::string label = choice.name + "##camera" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str(), choice.usable && choice.name == current)) {
+                chooseCamera(state, choice);
+            }
+            recordItem("camera:" + std::to_string(i), choice.detail.c_str());   // dimmed when not usable
+            ImGui::EndDisabled();
+        }
+        if (choices.size() == 1) {
+            ImGui::TextDisabled("a glTF model's own cameras are listed here");
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Camera", "Look from model-viewer's framing (the front, the whole shape in view) or from one of the "
+                         "glTF file's own cameras (render --camera takes the same)");
+    sameLineIfFits(labelledWidth(px(80), "FOV"));
+    ImGui::SetNextItemWidth(px(80));
+    ImGui::DragFloat("FOV", &state.scene.camera.fovYDegrees, 0.2f, 1.0f, 179.0f, "%.1f deg",
+                     ImGuiSliderFlags_AlwaysClamp);
+    recordItem("FOV", "The camera's vertical field of view in degrees (model-viewer's field-of-view; saved with the "
+                      "scene): a wider lens from the same place. Ctrl+click or double-click to type");
+}
+
 // The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
 // being cut off at its edge.
 void drawToolbar(EditorState& state) {
@@ -75,6 +129,7 @@ void drawToolbar(EditorState& state) {
         ImGui::EndCombo();
     }
     recordItem("Mesh", "The shape the material is shown on; open or drop a .gltf or .glb for your own");
+    drawCameraControls(state);
     sameLineIfFits(labelledWidth(px(110), "Exposure"));
     // A drag, not a slider: 16 stops across 110 pixels moved 8 EV in 60 of them. Fine steps
     // (0.02 EV a pixel) for a look; a big change is typed.
@@ -82,12 +137,20 @@ void drawToolbar(EditorState& state) {
     ImGui::DragFloat("Exposure", &display.exposure, 0.02f, -8.0f, 8.0f, "%.2f EV", ImGuiSliderFlags_AlwaysClamp);
     recordItem("Exposure", "Brightness of the picture in stops (EV): +1 doubles it. Drag for fine steps (0.02 EV a "
                            "pixel); Ctrl+click or double-click to type");
-    sameLineIfFits(labelledWidth(px(100), "Tone map"));
-    int tonemap = int(display.tonemap);
-    ImGui::SetNextItemWidth(px(100));
-    ImGui::Combo("Tone map", &tonemap, "none\0aces\0reinhard\0pbr neutral\0");
-    recordItem("Tone map", "How light above white is brought into the screen's range; PBR Neutral keeps colours true");
-    display.tonemap = Tonemap(tonemap);
+    sameLineIfFits(labelledWidth(px(120), "Tone map"));
+    ImGui::SetNextItemWidth(px(120));
+    if (ImGui::BeginCombo("Tone map", std::string(tonemapName(display.tonemap)).c_str())) {
+        for (const Tonemap tonemap : kTonemaps) {
+            const std::string name(tonemapName(tonemap));
+            if (ImGui::Selectable(name.c_str(), tonemap == display.tonemap)) {
+                display.tonemap = tonemap;
+            }
+            recordItem("tonemap:" + name, tonemapSummary(tonemap));
+        }
+        ImGui::EndCombo();
+    }
+    recordItem("Tone map", "How light above white is brought into the screen's range, as the engines that show the "
+                           "asset do (the same names as render --tonemap)");
     sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Background"));
     colorEditLinear("Background", "The colour behind the mesh", &display.background, false,
                     ImGuiColorEditFlags_NoInputs);
@@ -95,7 +158,7 @@ void drawToolbar(EditorState& state) {
     const ImGuiStyle& style = ImGui::GetStyle();
     auto radioWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };
     if (ImGui::Button("Set A")) {
-        state.compareA = editedMaterial(state);
+        state.compareA = labelledMaterial(state);
         if (state.compareView == CompareView::Single) {
             state.compareView = CompareView::Split;
         }
@@ -387,10 +450,10 @@ void drawSideLabels(const EditorState& state, ImVec2 origin, ImVec2 size) {
                                                             : std::floor(size.x / 2.0f);
     sideLabel('A', *state.compareA, origin.x + margin, origin.y + margin, a - 2.0f * margin, false);
     if (state.compareView == CompareView::Split) {
-        sideLabel('B', editedMaterial(state), origin.x + size.x - margin, origin.y + margin,
+        sideLabel('B', labelledMaterial(state), origin.x + size.x - margin, origin.y + margin,
                   size.x - a - 2.0f * margin, true);
     } else {
-        sideLabel('B', editedMaterial(state), origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
+        sideLabel('B', labelledMaterial(state), origin.x + a + margin, origin.y + margin, size.x - a - 2.0f * margin,
                   false);
     }
 }
