@@ -85,7 +85,7 @@ std::optional<Model> importGltfModel(const std::filesystem::path& path, const Pr
         material.diffuse.image = model.materials[size_t(material.material)].baseColor.image;
         material.specularGlossiness.image = model.materials[size_t(material.material)].metallicRoughness.image;
     }
-    gltf::convertSpecularGlossiness(model, specGloss);
+    gltf::convertSpecularGlossiness(model, specGloss, gltf::kGltfMaxImageBytes);
     addMissingTangents(model);
     return model;
 }

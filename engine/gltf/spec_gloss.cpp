@@ -73,6 +73,23 @@ void bakeMaps(Model& model, const SpecGlossMaterial& source, ModelMaterial& mate
     material.factors.roughness = 1.0f;
 }
 
+// Whether two more images of the baked size (bakeMaps) keep the model's decoded images within
+// the budget docs/FORMATS.md sets (a hostile file's maps are bounded; what they bake must be).
+bool fitsBudget(const Model& model, const SpecGlossMaterial& source, uint64_t budget) {
+    uint64_t used = 0, width = 0, height = 0;
+    for (const ModelImage& image : model.images) {
+        used += image.rgba.size();
+    }
+    for (const TextureSlot* slot : {&source.diffuse, &source.specularGlossiness}) {
+        if (slot->present()) {
+            const ModelImage& image = model.images[size_t(slot->image)];
+            width = std::max(width, uint64_t(image.width));
+            height = std::max(height, uint64_t(image.height));
+        }
+    }
+    return used + 2 * width * height * 4 <= budget;
+}
+
 }  // namespace
 
 float perceivedBrightness(glm::vec3 c) { return std::sqrt(0.299f * c.r * c.r + 0.587f * c.g * c.g + 0.114f * c.b * c.b); }
@@ -104,14 +121,19 @@ MetallicRoughness metallicRoughnessFrom(const SpecularGlossiness& material) {
     return result;
 }
 
-void convertSpecularGlossiness(Model& model, const std::vector<SpecGlossMaterial>& materials) {
+void convertSpecularGlossiness(Model& model, const std::vector<SpecGlossMaterial>& materials, uint64_t budget) {
     for (const SpecGlossMaterial& source : materials) {
         ModelMaterial& material = model.materials[size_t(source.material)];
         std::string how = "its factors";
-        if (source.diffuse.present() || source.specularGlossiness.present()) {
+        const bool mapped = source.diffuse.present() || source.specularGlossiness.present();
+        if (mapped && fitsBudget(model, source, budget)) {
             bakeMaps(model, source, material);
             how = "its maps texel by texel into a base colour and a metallic-roughness map";
         } else {
+            if (mapped) {   // the maps would take the model past its decoded images' budget
+                how = "its factors alone: its maps, baked, would pass the " +
+                      std::to_string(budget) + " bytes a model's decoded images may take";
+            }
             const MetallicRoughness converted = metallicRoughnessFrom(source.factors);
             material.factors.baseColor = converted.baseColor;
             material.baseAlpha = converted.alpha;

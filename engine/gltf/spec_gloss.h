@@ -4,6 +4,7 @@
 // extensions/2.0/Archived/KHR_materials_pbrSpecularGlossiness/examples/convert-between-workflows
 // (ConvertToMetallicRoughness), in linear values, per texel where the material has maps.
 // docs/FORMATS.md ("Specular-glossiness") writes the formulas out.
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -49,7 +50,10 @@ struct SpecGlossMaterial {
 // Sets each listed material's factors and maps to the conversion's: factors alone convert
 // once; where there are maps the conversion runs per texel of the larger map (the other read
 // at the same place) into two new images of `model`, a base colour map and a
-// metallic-roughness one, the factors then 1. Adds a note for each material converted.
-void convertSpecularGlossiness(Model& model, const std::vector<SpecGlossMaterial>& materials);
+// metallic-roughness one, the factors then 1. Adds a note for each material converted. Maps
+// whose baking would take the model's decoded images past `budget` bytes (docs/FORMATS.md's
+// limit) convert by their factors alone, which the note says.
+void convertSpecularGlossiness(Model& model, const std::vector<SpecGlossMaterial>& materials,
+                               uint64_t budget = uint64_t(512) << 20);
 
 }  // namespace patina::gltf
