@@ -321,7 +321,7 @@ void drawModelExtensions(const Model& model) {
             extension.support == ExtensionSupport::NotDrawn || extension.support == ExtensionSupport::Unknown;
         const std::string line = gltf::extensionLine(extension);
         if (lacking) {
-            ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", line.c_str());   // the PBR tally's amber
+            ImGui::TextColored(kWarningColour, "%s", line.c_str());
         } else {
             ImGui::TextDisabled("%s", line.c_str());
         }

@@ -213,7 +213,7 @@ void drawPbrTally(const Interaction& interaction, const PbrTally& tally) {
     const PbrRanges ranges = interaction.channel.strictPbr ? PbrRanges::strict() : PbrRanges{};
     const double percent = tally.texels ? 100.0 * double(tally.flagged()) / double(tally.texels) : 0.0;
     ImGui::SameLine(0.0f, px(24));
-    const ImVec4 colour = tally.flagged() ? ImVec4(1.0f, 0.75f, 0.3f, 1.0f) : ImVec4(0.55f, 0.85f, 0.55f, 1.0f);
+    const ImVec4 colour = tally.flagged() ? kWarningColour : ImVec4(0.55f, 0.85f, 0.55f, 1.0f);
     ImGui::TextColored(colour, "PBR: %zu of %zu pixels flagged (%.1f%%)", tally.flagged(), tally.texels, percent);
     char detail[200];
     std::snprintf(detail, sizeof detail, "Dielectric below %d sRGB: %zu (blue)\nDielectric above %d: %zu (red)\n"
@@ -244,7 +244,7 @@ void drawStatus(const Preferences& preferences, Jobs& jobs, Prompts& prompts) {
     recordItem("status", prompts.status.empty() ? "What the editor did last shows here" : prompts.status.c_str());
     if (notes > 0) {
         ImGui::SameLine();
-        ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", count.c_str());   // the PBR tally's amber
+        ImGui::TextColored(kWarningColour, "%s", count.c_str());
         recordItem("status notes", prompts.status.c_str());
     }
     if (screenshot) {

@@ -9,6 +9,9 @@
 
 namespace patina::editor {
 
+// Amber: what asks to be looked at (PBR texels flagged, what a model's file has that is not drawn).
+inline const ImVec4 kWarningColour{1.0f, 0.75f, 0.3f, 1.0f};
+
 // The width that leaves room for the item's label and a resetButton on its line.
 float widthBesideReset(const char* label);
 // A slider (Ctrl+click types a value) with a resetButton; `tooltip` says what it does.
