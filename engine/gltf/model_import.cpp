@@ -81,10 +81,6 @@ std::optional<Model> importGltfModel(const std::filesystem::path& path, const Pr
     if (!attachImages(document, model, source, progress)) {
         return std::nullopt;
     }
-    for (gltf::SpecGlossMaterial& material : specGloss) {   // its maps' images, decoded (or gone)
-        material.diffuse.image = model.materials[size_t(material.material)].baseColor.image;
-        material.specularGlossiness.image = model.materials[size_t(material.material)].metallicRoughness.image;
-    }
     gltf::convertSpecularGlossiness(model, specGloss, gltf::kGltfMaxImageBytes);
     addMissingTangents(model);
     return model;

@@ -228,12 +228,10 @@ std::optional<SpecGlossMaterial> MaterialReader::specularGlossiness(int index, M
     SpecGlossMaterial found;
     found.material = index;
     found.factors = specGlossFactors(object, where, source_);
-    found.diffuse = slot(textureInfoOf(object, "diffuseTexture", where, source_), where + "/diffuseTexture");
-    found.specularGlossiness = slot(textureInfoOf(object, "specularGlossinessTexture", where, source_),
-                                    where + "/specularGlossinessTexture");
     // Decoded with the other maps (model_import.cpp), then converted (spec_gloss.h).
-    result.baseColor = found.diffuse;
-    result.metallicRoughness = found.specularGlossiness;
+    result.baseColor = slot(textureInfoOf(object, "diffuseTexture", where, source_), where + "/diffuseTexture");
+    result.metallicRoughness = slot(textureInfoOf(object, "specularGlossinessTexture", where, source_),
+                                    where + "/specularGlossinessTexture");
     return found;
 }
 

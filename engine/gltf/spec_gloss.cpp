@@ -29,9 +29,9 @@ glm::vec3 decodedRgb(const uint8_t* texel) { return {decoded(texel[0]), decoded(
 
 // The conversion of every texel into a base colour image and a metallic-roughness image.
 void bakeMaps(Model& model, const SpecGlossMaterial& source, ModelMaterial& material) {
-    const ModelImage* diffuse = source.diffuse.present() ? &model.images[size_t(source.diffuse.image)] : nullptr;
-    const ModelImage* specular =
-        source.specularGlossiness.present() ? &model.images[size_t(source.specularGlossiness.image)] : nullptr;
+    const TextureSlot diffuseSlot = material.baseColor, specularSlot = material.metallicRoughness;
+    const ModelImage* diffuse = diffuseSlot.present() ? &model.images[size_t(diffuseSlot.image)] : nullptr;
+    const ModelImage* specular = specularSlot.present() ? &model.images[size_t(specularSlot.image)] : nullptr;
     const int width = std::max(diffuse ? diffuse->width : 0, specular ? specular->width : 0);
     const int height = std::max(diffuse ? diffuse->height : 0, specular ? specular->height : 0);
     ModelImage base{material.name + " base colour (from specular-glossiness)", width, height, {}};
@@ -60,7 +60,7 @@ void bakeMaps(Model& model, const SpecGlossMaterial& source, ModelMaterial& mate
         }
     }
     // The maps keep the sampling of the one they came from (the diffuse's first).
-    const TextureSlot& sampling = diffuse ? source.diffuse : source.specularGlossiness;
+    const TextureSlot& sampling = diffuse ? diffuseSlot : specularSlot;
     material.baseColor = sampling;
     material.baseColor.image = int(model.images.size());
     material.metallicRoughness = sampling;
@@ -75,12 +75,12 @@ void bakeMaps(Model& model, const SpecGlossMaterial& source, ModelMaterial& mate
 
 // Whether two more images of the baked size (bakeMaps) keep the model's decoded images within
 // the budget docs/FORMATS.md sets (a hostile file's maps are bounded; what they bake must be).
-bool fitsBudget(const Model& model, const SpecGlossMaterial& source, uint64_t budget) {
+bool fitsBudget(const Model& model, const ModelMaterial& material, uint64_t budget) {
     uint64_t used = 0, width = 0, height = 0;
     for (const ModelImage& image : model.images) {
         used += image.rgba.size();
     }
-    for (const TextureSlot* slot : {&source.diffuse, &source.specularGlossiness}) {
+    for (const TextureSlot* slot : {&material.baseColor, &material.metallicRoughness}) {
         if (slot->present()) {
             const ModelImage& image = model.images[size_t(slot->image)];
             width = std::max(width, uint64_t(image.width));
@@ -125,8 +125,8 @@ void convertSpecularGlossiness(Model& model, const std::vector<SpecGlossMaterial
     for (const SpecGlossMaterial& source : materials) {
         ModelMaterial& material = model.materials[size_t(source.material)];
         std::string how = "its factors";
-        const bool mapped = source.diffuse.present() || source.specularGlossiness.present();
-        if (mapped && fitsBudget(model, source, budget)) {
+        const bool mapped = material.baseColor.present() || material.metallicRoughness.present();
+        if (mapped && fitsBudget(model, material, budget)) {
             bakeMaps(model, source, material);
             how = "its maps texel by texel into a base colour and a metallic-roughness map";
         } else {

@@ -38,13 +38,13 @@ float solveMetallic(float diffuse, float specular, float oneMinusSpecularStrengt
 
 MetallicRoughness metallicRoughnessFrom(const SpecularGlossiness& material);
 
-// A material of the file that uses the extension, as read: its factors and its two maps (the
-// slots' images index Model::images once decoded).
+// A material of the file that uses the extension, as read: its factors. Its two maps are the
+// material's own slots until converted, decoded with the other maps: baseColor holds the
+// diffuse map (sRGB RGBA, multiplies diffuse and alpha), metallicRoughness the
+// specular-glossiness map (sRGB RGB the specular, linear A the glossiness).
 struct SpecGlossMaterial {
     int material = 0;
     SpecularGlossiness factors;
-    TextureSlot diffuse;              // sRGB RGBA, multiplies diffuse and alpha
-    TextureSlot specularGlossiness;   // sRGB RGB (specular), linear A (glossiness)
 };
 
 // Sets each listed material's factors and maps to the conversion's: factors alone convert

@@ -114,14 +114,15 @@ TEST(SpecularGlossiness, MapsPastTheImageBudgetConvertByTheirFactors) {
     model.images.push_back({"diffuse", 64, 64, std::vector<uint8_t>(64 * 64 * 4, 200)});
     model.materials.push_back({});
     model.materials[0].name = "big";
+    model.materials[0].baseColor.image = 0;   // the diffuse map, as the import leaves it
     gltf::SpecGlossMaterial source;
-    source.diffuse.image = 0;
     source.factors.specular = glm::vec3(0.04f);
     gltf::convertSpecularGlossiness(model, {source}, 3 * 64 * 64 * 4 - 1);
     EXPECT_EQ(model.images.size(), 1u) << "nothing baked";
     EXPECT_FALSE(model.materials[0].baseColor.present());
     ASSERT_EQ(model.notes.size(), 1u);
     EXPECT_NE(model.notes[0].find("its factors alone"), std::string::npos) << model.notes[0];
+    model.materials[0].baseColor.image = 0;   // the same material again, its map as read
     gltf::convertSpecularGlossiness(model, {source}, 3 * 64 * 64 * 4);
     EXPECT_EQ(model.images.size(), 3u) << "within the budget: baked";
 }
