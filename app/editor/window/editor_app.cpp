@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <thread>
+#include <utility>
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -20,6 +21,7 @@
 #include "panels/panels.h"
 #include "window/ui_scale.h"
 #include "window/widgets.h"
+#include "window/window_input.h"
 
 #ifndef PATINA_PRESETS_DIR
 #define PATINA_PRESETS_DIR "presets"
@@ -28,70 +30,6 @@
 namespace patina::editor {
 
 namespace {
-// Files dropped on the window and key presses since the last frame, which handles them. The
-// window's user pointer: GLFW's callbacks carry no other.
-struct WindowInput {
-    std::vector<std::filesystem::path> droppedFiles;
-    KeyPresses keyPresses;
-    // ImGui 1.86 reads each key's state once a frame (io.KeysDown): a key pressed and released
-    // between two frames was never seen, so under a slow frame (a large model, a software
-    // rasteriser) Ctrl+A in a field went missing and the typed digits were appended. A release
-    // of a key pressed since the last frame waits for the next one.
-    std::vector<int> pressedSinceFrame;
-    struct Release {
-        int key, scancode, mods;
-    };
-    std::vector<Release> heldReleases;
-};
-
-WindowInput& inputOf(GLFWwindow* window) {
-    return *static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
-}
-
-// Installed before ImGui's, which calls it after its own (imgui_impl_glfw chains callbacks).
-void onKey(GLFWwindow* window, int key, int, int action, int mods) {
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
-        inputOf(window).keyPresses.push_back(
-            {key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_ALT) != 0});
-    }
-}
-
-// Installed over ImGui's (after it), so it sees every key first; ImGui's then calls onKey.
-void onKeyForImGui(GLFWwindow* window, int key, int scancode, int action, int mods) {
-    WindowInput& input = inputOf(window);
-    if (action == GLFW_PRESS) {
-        input.pressedSinceFrame.push_back(key);
-    } else if (action == GLFW_RELEASE &&
-               std::find(input.pressedSinceFrame.begin(), input.pressedSinceFrame.end(), key) !=
-                   input.pressedSinceFrame.end()) {
-        input.heldReleases.push_back({key, scancode, mods});
-        return;
-    }
-    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
-}
-
-// NewFrame has read the keys: a release from now on is of a key some frame has seen down.
-void keysRead(GLFWwindow* window) {
-    inputOf(window).pressedSinceFrame.clear();
-}
-
-// After the frame (never inside one: ImGui checks that the modifiers stay as NewFrame read
-// them), the releases held back reach ImGui for the next frame.
-void releaseHeldKeys(GLFWwindow* window) {
-    WindowInput& input = inputOf(window);
-    const std::vector<WindowInput::Release> releases = std::move(input.heldReleases);
-    input.heldReleases.clear();
-    for (const WindowInput::Release& release : releases) {
-        ImGui_ImplGlfw_KeyCallback(window, release.key, release.scancode, GLFW_RELEASE, release.mods);
-    }
-}
-
-void onDrop(GLFWwindow* window, int count, const char** paths) {
-    for (int i = 0; i < count; ++i) {
-        inputOf(window).droppedFiles.emplace_back(paths[i]);
-    }
-}
-
 // After input, ImGui needs a couple of frames to settle (hover, popups): draw this many more,
 // then sleep in glfwWaitEvents until the next event.
 constexpr int kFramesAfterInput = 3;
@@ -175,6 +113,12 @@ struct Loop {
 void waitForEvents(Loop& loop) {
     if (loop.framesLeft > 0) {
         glfwPollEvents();
+        // A click that came as the last of them was drawn used to get its press frame only: the
+        // loop then slept, its release unseen until the next input (a menu item stayed held,
+        // and the next click landed where the closed menu had been).
+        if (std::exchange(loop.input.arrived, false)) {
+            loop.framesLeft = kFramesAfterInput;
+        }
         return;
     }
     const std::optional<std::chrono::milliseconds> due = earliest(loop.autosaveDue, loop.settingsDue);
@@ -185,6 +129,7 @@ void waitForEvents(Loop& loop) {
     } else {
         glfwWaitEvents();
     }
+    loop.input.arrived = false;
     loop.framesLeft = kFramesAfterInput;
 }
 
@@ -238,7 +183,7 @@ void drawFrame(Loop& loop) {
         loop.state.error = error.what();
     }
     ImGui::Render();
-    releaseHeldKeys(loop.window);
+    releaseWaitingInput(loop.window);
     int width = 0, height = 0;
     glfwGetFramebufferSize(loop.window, &width, &height);
     glViewport(0, 0, width, height);
@@ -321,11 +266,9 @@ int runEditor(const EditorOptions& options) {
     setThreadPrefilter(prefilterCubeOnGpu);
     glfwSwapInterval(1);
     WindowInput input;
-    glfwSetWindowUserPointer(window, &input);
-    glfwSetDropCallback(window, onDrop);
-    glfwSetKeyCallback(window, onKey);
+    installInputCallbacksBeforeImGui(window, input);
     startImGui(window);
-    glfwSetKeyCallback(window, onKeyForImGui);
+    installInputCallbacksOverImGui(window);
     {
         EditorServices services(state.assets);
         openStartupFiles(state, std::vector<std::filesystem::path>(options.files.begin(), options.files.end()));
