@@ -286,7 +286,7 @@ Model texturedSphere(int side, int images) {
             pixels.rgba[i] = uint8_t(((i + size_t(image)) * 2654435761u) >> 24 | 0x80);   // busy and bright
         }
         model.images.push_back(std::move(pixels));
-        if (image % kMapCount == 0) {
+        if (image % kCoreMapCount == 0) {
             ModelMaterial material;
             material.factors = defaultScene().material;
             material.emissiveFactor = glm::vec3(0.1f);
@@ -294,7 +294,7 @@ Model texturedSphere(int side, int images) {
             model.materials.push_back(material);
             model.draws.push_back({0, int(model.materials.size()) - 1, glm::mat4(1.0f), material.name});
         }
-        mapsOf(model.materials.back())[size_t(image % kMapCount)].slot->image = image;
+        mapsOf(model.materials.back())[size_t(image % kCoreMapCount)].slot->image = image;
     }
     return model;
 }
@@ -306,7 +306,7 @@ Model texturedSphere(int side, int images) {
 // material has no maps.
 void measureTextured(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
                      RenderBenchResult& result) {
-    Model textured = texturedSphere(options.quick ? 256 : 1024, kMapCount);
+    Model textured = texturedSphere(options.quick ? 256 : 1024, kCoreMapCount);
     Model plain = textured;
     plain.materials[0] = ModelMaterial{};
     plain.materials[0].factors = textured.materials[0].factors;

@@ -262,13 +262,20 @@ private:
     void drawStrip(int top);
     void drawItems() const;
     void drawSinglePass(Items opaque, Items blended) const;
-    // The shading program of `item`: the one for its BRDF model and, in the specialised path
+    // The shading program of `item`: the one for its BRDF model, whether it has a clear coat
+    // (PATINA_CLEARCOAT: only a coated item pays for the coat) and, in the specialised path
     // with maps, its map set (programKeyOf).
+    struct ProgramKey {
+        BrdfModelId model;
+        int mapSet;
+        bool clearcoat;
+        auto operator<=>(const ProgramKey&) const = default;
+    };
     struct ItemProgram {
         BrdfModelId model;
         const GlProgram* program;
     };
-    std::pair<BrdfModelId, int> programKeyOf(const SceneDraw& draw) const;
+    ProgramKey programKeyOf(const SceneDraw& draw) const;
     ItemProgram programOf(const DrawPlan& item) const;
     // Makes `program` current with its model's tables bound (another model's may be).
     void useProgram(const ItemProgram& program) const;
@@ -298,8 +305,9 @@ private:
     ChannelLights channelLights;   // with a channel: its lights in `packed`
     const GlImage* linear = nullptr;
     const GlProgram* displayPass = nullptr;
-    // By (BRDF model, map set): each item's, programKeyOf. One model and no maps: one program.
-    std::map<std::pair<BrdfModelId, int>, const GlProgram*> shading;
+    // By (BRDF model, map set, coat): each item's, programKeyOf. One model, no maps and no
+    // coat: one program.
+    std::map<ProgramKey, const GlProgram*> shading;
     const GlProgram* backgroundPass = nullptr;
     int exposureTonemap = 0;
     glm::vec3 background{0.0f};
@@ -390,20 +398,21 @@ void Renderer::Frame::choosePrograms() {
         key.environment = environment;
         return key;
     };
-    const ShadingPrograms::Surface surface = maps ? ShadingPrograms::Surface::Maps : ShadingPrograms::Surface::Factors;
     s.shading.beginFrame();
     // A program for each BRDF model the items are shaded with and, specialised with maps, each
     // set of maps they have: a map an item lacks costs it nothing.
     const ShaderSpecialisation specialised = settings.path == RenderPath::Specialised ? specialisation()
                                                                                       : ShaderSpecialisation{};
     for (const SceneDraw& item : draws) {
-        const auto [model, mapSet] = programKeyOf(item);
-        const GlProgram*& program = shading[{model, mapSet}];
+        const ProgramKey itemKey = programKeyOf(item);
+        const GlProgram*& program = shading[itemKey];
         if (program) {
             continue;
         }
+        const BrdfModelId model = itemKey.model;
+        const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(maps, itemKey.clearcoat);
         ShaderSpecialisation key = specialised;
-        key.mapSet = mapSet;
+        key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
                   : settings.path == RenderPath::Multi
                       ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface)
@@ -548,14 +557,15 @@ void blendOver(float alpha) {
 }
 }  // namespace
 
-std::pair<BrdfModelId, int> Renderer::Frame::programKeyOf(const SceneDraw& draw) const {
+Renderer::Frame::ProgramKey Renderer::Frame::programKeyOf(const SceneDraw& draw) const {
     const bool byMapSet = settings.path == RenderPath::Specialised && maps;
-    return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet};
+    return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet,
+            hasClearcoat(draw.material)};
 }
 
 Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {
-    const auto key = programKeyOf(draws[item.item]);
-    return {key.first, shading.at(key)};
+    const ProgramKey key = programKeyOf(draws[item.item]);
+    return {key.model, shading.at(key)};
 }
 
 void Renderer::Frame::useProgram(const ItemProgram& program) const {

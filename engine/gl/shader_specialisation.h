@@ -37,6 +37,10 @@ struct ShaderSpecialisation {
 // deriveSurfaceMaterial, so "exactly 0" means what the shader sees.
 bool hasNoDiffuse(const MaterialParameters& material);
 
+// Whether `material` has a clear coat to draw (KHR_materials_clearcoat's factor above 0): the
+// items whose programs compile the coat in (PATINA_CLEARCOAT).
+inline bool hasClearcoat(const MaterialParameters& material) { return material.clearcoat > 0.0f; }
+
 // `lights` as packEnabledLights gives them (the uniform block's order); `noDiffuse` when every
 // material drawn has none (hasNoDiffuse). `flatSlots`: how many lights the vertex stage can
 // hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).

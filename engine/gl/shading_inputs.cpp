@@ -19,6 +19,7 @@ extern const char* const ibl_model_glsl;
 extern const char* const channels_glsl;
 extern const char* const channel_model_glsl;
 extern const char* const lights_glsl;
+extern const char* const clearcoat_glsl;
 extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
 extern const char* const energy_table_glsl;
@@ -41,7 +42,8 @@ constexpr size_t kLightBlockSize = kLightArraySize + 2 * 16;
 std::vector<const char*> shadingFragmentParts(bool channels) {
     std::vector<const char*> parts{
         shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
-        shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::energy_texel_glsl,
+        shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::clearcoat_glsl,
+        shader_sources::energy_texel_glsl,
         shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
         shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::texture_glsl,
         shader_sources::surface_maps_glsl, shader_sources::shade_frag};
@@ -100,13 +102,18 @@ void setEnvironmentUniforms(const GlProgram& program, const Environment& environ
 
 MaterialUniforms::MaterialUniforms(const GlProgram& program)
     : baseColor_(program.uniform("uBaseColor")), roughness_(program.uniform("uRoughness")),
-      specular_(program.uniform("uSpecular")), metallic_(program.uniform("uMetallic")) {}
+      specular_(program.uniform("uSpecular")), metallic_(program.uniform("uMetallic")),
+      clearcoat_(program.uniform("uClearcoat")), clearcoatRoughness_(program.uniform("uClearcoatRoughness")) {}
 
 void MaterialUniforms::set(const MaterialParameters& material) const {
     glUniform3f(baseColor_, material.baseColor.x, material.baseColor.y, material.baseColor.z);
     glUniform1f(roughness_, material.roughness);
     glUniform1f(specular_, material.specular);
     glUniform1f(metallic_, material.metallic);
+    if (clearcoat_ >= 0) {   // only a coated program has them (PATINA_CLEARCOAT)
+        glUniform1f(clearcoat_, material.clearcoat);
+        glUniform1f(clearcoatRoughness_, material.clearcoatRoughness);
+    }
 }
 
 void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material) {

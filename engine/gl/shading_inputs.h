@@ -46,7 +46,7 @@ public:
     void set(const MaterialParameters& material) const;   // its program in use
 
 private:
-    GLint baseColor_, roughness_, specular_, metallic_;
+    GLint baseColor_, roughness_, specular_, metallic_, clearcoat_, clearcoatRoughness_;
 };
 // The same, for one draw (program must be in use).
 void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material);

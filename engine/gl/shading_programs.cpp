@@ -48,8 +48,11 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (output == Output::LinearAndDisplay) {
         defines.push_back("PATINA_DISPLAY_OUTPUT");
     }
-    if (surface == Surface::Maps) {
+    if (surface == Surface::Maps || surface == Surface::CoatedMaps) {
         defines.push_back("PATINA_TEXTURED");
+    }
+    if (surface == Surface::CoatedFactors || surface == Surface::CoatedMaps) {
+        defines.push_back("PATINA_CLEARCOAT");
     }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {

@@ -43,7 +43,12 @@ public:
     // What the surface is shaded with: the draw's factors alone, or also a model's texture maps
     // and emission (PATINA_TEXTURED: mesh.vert hands on UVs and tangents, surface_maps.glsl
     // reads the maps; docs/FORMATS.md, "glTF").
-    enum class Surface { Factors, Maps };
+    // Either also with KHR_materials_clearcoat's coat (PATINA_CLEARCOAT, shaders/shared/
+    // clearcoat.glsl): compiled only for items whose material has one (hasClearcoat).
+    enum class Surface { Factors, Maps, CoatedFactors, CoatedMaps };
+    static Surface surfaceOf(bool maps, bool clearcoat) {
+        return clearcoat ? (maps ? Surface::CoatedMaps : Surface::CoatedFactors) : (maps ? Surface::Maps : Surface::Factors);
+    }
 
     ShadingPrograms() = default;
     ~ShadingPrograms();

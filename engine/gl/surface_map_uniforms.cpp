@@ -5,8 +5,9 @@
 namespace patina {
 
 namespace {
-constexpr const char* kSamplerNames[kSurfaceMapCount] = {"uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",
-                                                         "uOcclusionMap", "uEmissiveMap"};
+constexpr const char* kSamplerNames[kSurfaceMapCount] = {
+    "uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",      "uOcclusionMap",
+    "uEmissiveMap",  "uClearcoatMap",         "uClearcoatRoughnessMap", "uClearcoatNormalMap"};
 
 }  // namespace
 
@@ -14,7 +15,8 @@ SurfaceMapUniforms::SurfaceMapUniforms(const GlProgram& program, int firstUnit)
     : firstUnit_(firstUnit), placement_(program.uniform("uMapPlacement")),
       rotationSet_(program.uniform("uMapRotationSet")), baseAlpha_(program.uniform("uBaseAlpha")),
       alphaCutoff_(program.uniform("uAlphaCutoff")), normalScale_(program.uniform("uNormalScale")),
-      occlusionStrength_(program.uniform("uOcclusionStrength")), emissive_(program.uniform("uEmissive")) {
+      occlusionStrength_(program.uniform("uOcclusionStrength")), emissive_(program.uniform("uEmissive")),
+      clearcoatNormalScale_(program.uniform("uClearcoatNormalScale")) {
     for (int map = 0; map < kSurfaceMapCount; ++map) {
         glUniform1i(program.uniform(kSamplerNames[map]), firstUnit + map);
     }
@@ -45,6 +47,7 @@ void SurfaceMapUniforms::set(const SceneDraw& draw, ModelTextures& textures) con
     glUniform1f(occlusionStrength_, material ? material->occlusionStrength : 1.0f);
     const glm::vec3 emissive = material ? material->emissiveFactor : glm::vec3(0.0f);
     glUniform3fv(emissive_, 1, glm::value_ptr(emissive));
+    glUniform1f(clearcoatNormalScale_, material ? material->clearcoatNormalScale : 1.0f);
 }
 
 }  // namespace patina

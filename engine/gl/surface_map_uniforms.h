@@ -13,7 +13,10 @@
 namespace patina {
 
 // The maps in surface_maps.glsl's order; each on texture unit firstUnit + its index.
-enum class SurfaceMap { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive };
+enum class SurfaceMap {
+    BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
+    Clearcoat, ClearcoatRoughness, ClearcoatNormal   // KHR_materials_clearcoat's
+};
 inline constexpr int kSurfaceMapCount = kMapCount;   // model/model.h's mapsOf order
 
 // Looked up once per program (a model may have thousands of items); a program without the maps
@@ -28,7 +31,8 @@ public:
 
 private:
     int firstUnit_;
-    GLint placement_, rotationSet_, baseAlpha_, alphaCutoff_, normalScale_, occlusionStrength_, emissive_;
+    GLint placement_, rotationSet_, baseAlpha_, alphaCutoff_, normalScale_, occlusionStrength_, emissive_,
+        clearcoatNormalScale_;
 };
 
 }  // namespace patina

@@ -18,7 +18,7 @@ ModelExtension modelExtension(const std::string& name, bool required);
 std::vector<ModelExtension> modelExtensions(const std::vector<std::string>& used,
                                             const std::vector<std::string>& required);
 
-// "KHR_materials_clearcoat (not drawn): the clear coat is left out; the base layer shows bare".
+// "KHR_materials_sheen (not drawn): the sheen is left out; fabrics show without it".
 std::string extensionLine(const ModelExtension& extension);
 
 // Throws InputError("SOURCE: requires the extension NAME, which Patina does not draw (...)")

@@ -11,6 +11,7 @@ namespace {
 
 constexpr const char* kSpecular = "KHR_materials_specular";
 constexpr const char* kIor = "KHR_materials_ior";
+constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 
 float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
 
@@ -20,6 +21,7 @@ double exact(float value) { return double(value); }
 }  // namespace
 
 const char* const kMaterialExtensions[2] = {kSpecular, kIor};
+const char* const kClearcoatExtension = kClearcoat;
 
 double f0FromIor(double ior) {
     const double r = (ior - 1.0) / (ior + 1.0);
@@ -55,13 +57,19 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     }
     const double f0 = std::min(f0FromIor(ior) * largestColor, 1.0) * specularFactor;
     result.specular = unit(f0 / kF0PerSpecular);
+    // KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor, both 0 by default
+    // (no coat). Its maps are read beside the core maps (model_materials.cpp).
+    const std::string clearcoatAt = what + "/extensions/" + kClearcoat;
+    const tinygltf::Value* clearcoat = extensionOf(material.extensions, kClearcoat);
+    result.clearcoat = unit(numberField(clearcoat, "clearcoatFactor", 0.0, clearcoatAt, source));
+    result.clearcoatRoughness = unit(numberField(clearcoat, "clearcoatRoughnessFactor", 0.0, clearcoatAt, source));
     return result;
 }
 
 Json materialToGltf(const Material& material) {
     const double color = exact(float(kF0PerSpecular * double(material.specular) / f0FromIor(kExportIor)));
     const glm::vec3& base = material.baseColor;
-    return Json{
+    Json json{
         {"name", material.name},
         {"pbrMetallicRoughness",
          {{"baseColorFactor", {exact(base.r), exact(base.g), exact(base.b), 1.0}},
@@ -70,6 +78,12 @@ Json materialToGltf(const Material& material) {
         {"extensions",
          {{kSpecular, {{"specularFactor", 1.0}, {"specularColorFactor", {color, color, color}}}},
           {kIor, {{"ior", kExportIor}}}}}};
+    // A coat only where there is one: a material without keeps the two extensions every export has.
+    if (material.clearcoat > 0.0f || material.clearcoatRoughness > 0.0f) {
+        json["extensions"][kClearcoat] = {{"clearcoatFactor", exact(material.clearcoat)},
+                                          {"clearcoatRoughnessFactor", exact(material.clearcoatRoughness)}};
+    }
+    return json;
 }
 
 }  // namespace patina::gltf

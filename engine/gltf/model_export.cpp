@@ -200,6 +200,32 @@ struct Textures {
     }
 };
 
+// KHR_materials_clearcoat where the material has a coat: the factors materialToGltf wrote, and
+// the coat's maps (model_materials.cpp reads them back).
+void clearcoatJson(const ModelMaterial& material, Textures& textures, Json& json) {
+    const char* name = gltf::kClearcoatExtension;
+    const bool maps =
+        material.clearcoat.present() || material.clearcoatRoughness.present() || material.clearcoatNormal.present();
+    if (!maps && !(json.contains("extensions") && json["extensions"].contains(name))) {
+        return;
+    }
+    Json& coat = json["extensions"][name];
+    if (!coat.is_object()) {   // maps on a coat of factor 0
+        coat = {{"clearcoatFactor", 0.0}, {"clearcoatRoughnessFactor", 0.0}};
+    }
+    if (material.clearcoat.present()) {
+        coat["clearcoatTexture"] = textures.info(material.clearcoat);
+    }
+    if (material.clearcoatRoughness.present()) {
+        coat["clearcoatRoughnessTexture"] = textures.info(material.clearcoatRoughness);
+    }
+    if (material.clearcoatNormal.present()) {
+        coat["clearcoatNormalTexture"] = textures.info(material.clearcoatNormal);
+        coat["clearcoatNormalTexture"]["scale"] = double(material.clearcoatNormalScale);
+    }
+    textures.extensions.insert(name);
+}
+
 // The material as glTF writes it (3.9): the factors as materialToGltf maps them, and every
 // map, alpha, emission and sidedness the model read (the inverse of model_materials.cpp).
 Json materialJson(const ModelMaterial& material, Textures& textures) {
@@ -244,6 +270,7 @@ Json materialJson(const ModelMaterial& material, Textures& textures) {
     if (material.doubleSided) {
         json["doubleSided"] = true;
     }
+    clearcoatJson(material, textures, json);
     return json;
 }
 

@@ -40,13 +40,18 @@ bool attachImages(const tinygltf::Model& document, Model& model, const std::stri
 }
 
 // glTF 2.0 section 3.7.2.1: a normal-mapped primitive without TANGENT gets MikkTSpace
-// tangents, the frames the map was baked in, for the UV set its (first drawn) normal map reads.
+// tangents, the frames the map was baked in, for the UV set its (first drawn) normal map reads:
+// the material's, else its clear coat's (KHR_materials_clearcoat's clearcoatNormalTexture).
 void addMissingTangents(Model& model) {
     std::vector<int> normalUvSet(model.primitives.size(), -1);
     for (const DrawItem& draw : model.draws) {
-        if (draw.material >= 0 && model.materials[size_t(draw.material)].normal.present() &&
-            normalUvSet[size_t(draw.primitive)] < 0) {
-            normalUvSet[size_t(draw.primitive)] = model.materials[size_t(draw.material)].normal.texCoord;
+        if (draw.material < 0 || normalUvSet[size_t(draw.primitive)] >= 0) {
+            continue;
+        }
+        const ModelMaterial& material = model.materials[size_t(draw.material)];
+        const TextureSlot& normal = material.normal.present() ? material.normal : material.clearcoatNormal;
+        if (normal.present()) {
+            normalUvSet[size_t(draw.primitive)] = normal.texCoord;
         }
     }
     for (size_t i = 0; i < model.primitives.size(); ++i) {

@@ -81,6 +81,7 @@ private:
     int imageOf(int index, const std::string& where);
     TextureSampler samplerOf(const tinygltf::Texture& texture, int index) const;
     void transform(const tinygltf::ExtensionMap& extensions, const std::string& where, TextureSlot& slot) const;
+    void clearcoatMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
 
     const tinygltf::Model& document_;
     const std::string& source_;
@@ -261,7 +262,29 @@ ModelMaterial MaterialReader::read(int index) {
     }
     result.alphaCutoff = float(material.alphaCutoff);
     result.doubleSided = material.doubleSided;
+    clearcoatMaps(material, where, result);
     return result;
+}
+
+// KHR_materials_clearcoat's three maps (its factors are materialFromGltf's): each a textureInfo
+// read as the core maps are, the normal map's scale beside it.
+void MaterialReader::clearcoatMaps(const tinygltf::Material& material, const std::string& where,
+                                   ModelMaterial& result) {
+    const char* name = "KHR_materials_clearcoat";
+    const tinygltf::Value* object = extensionOf(material.extensions, name);
+    if (!object) {
+        return;
+    }
+    const std::string at = where + "/extensions/" + name;
+    result.clearcoat = slot(textureInfoOf(object, "clearcoatTexture", at, source_), at + "/clearcoatTexture");
+    result.clearcoatRoughness = slot(textureInfoOf(object, "clearcoatRoughnessTexture", at, source_),
+                                     at + "/clearcoatRoughnessTexture");
+    result.clearcoatNormal = slot(textureInfoOf(object, "clearcoatNormalTexture", at, source_),
+                                  at + "/clearcoatNormalTexture");
+    if (object->Has("clearcoatNormalTexture")) {
+        const tinygltf::Value& normal = object->Get("clearcoatNormalTexture");
+        result.clearcoatNormalScale = float(numberField(&normal, "scale", 1.0, at + "/clearcoatNormalTexture", source_));
+    }
 }
 
 }  // namespace

@@ -244,6 +244,8 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.roughness = reader.number("roughness", material.roughness, kUnit);
     material.specular = reader.number("specular", material.specular, kUnit);
     material.metallic = reader.number("metallic", material.metallic, kUnit);
+    material.clearcoat = reader.number("clearcoat", material.clearcoat, kUnit);
+    material.clearcoatRoughness = reader.number("clearcoatRoughness", material.clearcoatRoughness, kUnit);
     if (reader.has("model")) {
         material.model = brdfModelFromJson(reader, "model");
     }
@@ -453,6 +455,12 @@ Json materialToJson(const Material& material) {
               {"specular", toJson(material.specular)},
               {"metallic", toJson(material.metallic)},
               {"model", brdfModel(material.model).name}};
+    // KHR_materials_clearcoat's factors only where there is a coat: a material without one is
+    // written as before it existed.
+    if (material.clearcoat != 0.0f || material.clearcoatRoughness != 0.0f) {
+        json["clearcoat"] = toJson(material.clearcoat);
+        json["clearcoatRoughness"] = toJson(material.clearcoatRoughness);
+    }
     if (!material.notes.empty()) {
         json["notes"] = material.notes;
     }

@@ -55,16 +55,23 @@ struct ModelMaterial {
     float occlusionStrength = 1.0f;
     TextureSlot emissive;                   // sRGB
     glm::vec3 emissiveFactor{0.0f};         // times KHR_materials_emissive_strength
+    // KHR_materials_clearcoat's maps (its factors are `factors.clearcoat` and
+    // `factors.clearcoatRoughness`): R scales the coat, G its roughness; the coat's own normal
+    // map (tangent space as `normal`), else the coat follows the geometric normal.
+    TextureSlot clearcoat;                  // linear; R
+    TextureSlot clearcoatRoughness;         // linear; G
+    TextureSlot clearcoatNormal;            // linear
+    float clearcoatNormalScale = 1.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
     bool operator==(const ModelMaterial&) const = default;
 };
 
-// A material's five maps in their one order (the shaders' too: surface_maps.glsl), each with
-// whether its texels are sRGB (base colour and emissive; the others are data, glTF 2.0
-// 3.9.2-3.9.3), its name for people and its key (glTF's name of the property, which scene
-// files use too).
+// A material's maps in their one order (the shaders' too: surface_maps.glsl): glTF 2.0's five,
+// then KHR_materials_clearcoat's three; each with whether its texels are sRGB (base colour and
+// emissive; the others are data, glTF 2.0 3.9.2-3.9.3), its name for people and its key
+// (glTF's name of the property, which scene files use too).
 template <typename Slot>
 struct MapOf {
     Slot* slot;
@@ -72,7 +79,8 @@ struct MapOf {
     const char* name;
     const char* key;
 };
-inline constexpr int kMapCount = 5;
+inline constexpr int kCoreMapCount = 5;   // glTF 2.0's own maps, the first of mapsOf
+inline constexpr int kMapCount = 8;
 template <typename Material>   // ModelMaterial or const ModelMaterial
 auto mapsOf(Material& material) {
     using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
@@ -81,7 +89,10 @@ auto mapsOf(Material& material) {
          {&material.metallicRoughness, false, "metallic-roughness", "metallicRoughnessTexture"},
          {&material.normal, false, "normal", "normalTexture"},
          {&material.occlusion, false, "occlusion", "occlusionTexture"},
-         {&material.emissive, true, "emissive", "emissiveTexture"}}};
+         {&material.emissive, true, "emissive", "emissiveTexture"},
+         {&material.clearcoat, false, "clear coat", "clearcoatTexture"},
+         {&material.clearcoatRoughness, false, "clear coat roughness", "clearcoatRoughnessTexture"},
+         {&material.clearcoatNormal, false, "clear coat normal", "clearcoatNormalTexture"}}};
 }
 // The map of `material` whose key is `key`, or nothing: what a scene file's key names.
 template <typename Material>

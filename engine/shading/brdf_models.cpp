@@ -168,6 +168,18 @@ glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered
     return glm::vec3(0.0f);
 }
 
+glm::vec3 clearcoatEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod, float intensity,
+                               float rotationDegrees, const shader::Clearcoat& coat, glm::vec3 V) {
+    const glm::vec2 rotation = environmentRotation(rotationDegrees);
+    switch (id) {
+#define PATINA_SHADE(model, name, summary) \
+    PATINA_CASE(shader, model, clearcoatEnvironment(prefiltered, maxLod, rotation.x, rotation.y, coat, V) * intensity)
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return glm::vec3(0.0f);
+}
+
 glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,
                                      shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                                      const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V,

@@ -35,6 +35,11 @@ glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered
                            shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                            const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V, bool dominant);
 
+// clearcoatEnvironment of ibl_model.glsl for `id` times `intensity`: KHR_materials_clearcoat's
+// coat under the environment by the split sum (the GPU's, whichever method shades the base).
+glm::vec3 clearcoatEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod, float intensity,
+                               float rotationDegrees, const shader::Clearcoat& coat, glm::vec3 V);
+
 // shadeEnvironmentStochastic of ibl_model.glsl for `id`: `count` filtered importance samples at
 // the real N and V read from `source`, the box-filtered mip chain of the environment's source.
 glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,

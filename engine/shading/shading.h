@@ -13,6 +13,7 @@ using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
 #include "lights.glsl"
+#include "clearcoat.glsl"
 #include "display.glsl"
 #include "channels.glsl"
 #include "texture.glsl"

@@ -24,5 +24,6 @@ using real = double;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
 #include "lights.glsl"
+#include "clearcoat.glsl"
 #undef PATINA_INLINE
 }  // namespace patina::shader_f64

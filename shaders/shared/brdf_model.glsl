@@ -158,32 +158,7 @@ PATINA_INLINE LightShares sharesFromDirection(vec3 radiance, vec3 L, SurfaceMate
 // light has range 0 (true is right for every light: 1/range = 0 gives window 1). `karis`
 // true takes KARIS_ATTENUATION for the light's coefficients instead of reading them: only for
 // a light that has exactly those (hasKarisAttenuation, light_packing.h).
-// The falloff of a point, sphere or tube light at distance t, with shadePointLight's switches.
-// 1/range = 0 turns the window off: with `windowed` a constant, the compiler folds it away.
-PATINA_INLINE real lightFalloff(PackedLight light, real t, bool windowed, bool karis) {
-    return pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f, karis ? KARIS_ATTENUATION : light.attenuation);
-}
-
-// What a point light sends to P: its radiance after the falloff, the unit direction to it, and
-// whether it has one (a light on the shaded point has none: no light).
-struct LightArrival {
-    vec3 radiance;
-    vec3 L;
-    bool present;
-};
-
-PATINA_INLINE LightArrival pointLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
-    vec3 toLight = light.position - P;
-    real distanceSquared = dot(toLight, toLight);
-    // Clamped so the light on the shaded point still gives finite numbers; selected away by
-    // the callers.
-    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
-    real t = distanceSquared * inverseDistance;
-    real attenuation = lightFalloff(light, t, windowed, karis);
-    return LightArrival(light.radiance * attenuation, toLight * inverseDistance,
-                        distanceSquared > MIN_LIGHT_DISTANCE_SQUARED);
-}
-
+// lightFalloff and pointLightArrival: lights.glsl.
 PATINA_INLINE vec3 shadePointLight(PackedLight light, bool windowed, bool karis, SurfaceMaterial material,
                                    vec3 P, vec3 N, vec3 V) {
     LightArrival arrival = pointLightArrival(light, windowed, karis, P);
@@ -224,13 +199,10 @@ PATINA_INLINE vec3 diffuseFromDirection(vec3 radiance, real illuminance, vec3 L,
 // `windowed` and `karis` as for shadePointLight. Source radius 0 gives the point light.
 PATINA_INLINE LightShares sphereLightSharesWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
                                                 SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
-    vec3 toCentre = light.position - P;
-    real distanceSquared = dot(toCentre, toCentre);
-    // Clamped so the centre on the shaded point still gives finite numbers; selected away below.
-    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
-    real t = distanceSquared * inverseDistance;
-    vec3 radiance = light.radiance * lightFalloff(light, t, windowed, karis);
-    vec3 toCentreUnit = toCentre * inverseDistance;
+    SphereArrival arrival = sphereLightArrival(light, windowed, karis, P);
+    vec3 radiance = arrival.radiance;
+    real inverseDistance = arrival.inverseDistance;
+    vec3 toCentreUnit = arrival.toCentre * inverseDistance;
     real NoL = dot(N, toCentreUnit);
     real s = light.sourceRadius;
     real illuminance = method.exactSphereDiffuse
@@ -239,12 +211,10 @@ PATINA_INLINE LightShares sphereLightSharesWith(PackedLight light, bool windowed
     vec3 diffuse = diffuseFromDirection(radiance, illuminance, toCentreUnit, material, N, V);
 
     vec3 R = 2.0f * dot(N, V) * N - V;   // reflect(-V, N)
-    vec3 closest = sphereRepresentativePoint(toCentre, R, s);
-    vec3 towardsClosest = closest * inversesqrt(max(dot(closest, closest), MIN_LIGHT_DISTANCE_SQUARED));
-    real normalization = sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, t, method.widening));
-    vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
+    RepresentativePoint point = sphereRepresentative(arrival, s, R, material.alpha, method);
+    vec3 specular = specularFromDirection(radiance * point.normalization, point.L, material, N, V);
     // The centre on the shaded point has no direction: no light, as for a point light.
-    if (distanceSquared > MIN_LIGHT_DISTANCE_SQUARED) {
+    if (arrival.present) {
         return LightShares(diffuse, specular);
     }
     return LightShares(vec3(0.0f), vec3(0.0f));
@@ -265,25 +235,15 @@ PATINA_INLINE vec3 shadeSphereLightWith(PackedLight light, bool windowed, bool k
 // the sphere light.
 PATINA_INLINE LightShares tubeLightSharesWith(PackedLight light, bool windowed, bool karis, AreaLightMethod method,
                                               SurfaceMaterial material, vec3 P, vec3 N, vec3 V) {
-    vec3 L0 = light.position - P;
-    vec3 L1 = light.tubeEnd - P;
-    vec3 Ld = L1 - L0;
-    real lineDistanceSquared = max(lineIrradianceDistanceSquared(L0, L1), 0.0f);
-    vec3 radiance = light.radiance * lightFalloff(light, sqrt(lineDistanceSquared), windowed, karis);
-    vec3 toCentre = L0 + Ld * real(0.5f);
-    real centreDistance = sqrt(dot(toCentre, toCentre));
-    vec3 towardsCentre = toCentre * inversesqrt(max(dot(toCentre, toCentre), MIN_LIGHT_DISTANCE_SQUARED));
-    vec3 diffuse = diffuseFromDirection(radiance, lineIrradianceCosine(N, L0, L1), towardsCentre, material, N, V);
+    TubeArrival arrival = tubeLightArrival(light, windowed, karis, P);
+    vec3 radiance = arrival.radiance;
+    vec3 towardsCentre = towardsPoint(arrival.toCentre);
+    vec3 diffuse =
+        diffuseFromDirection(radiance, lineIrradianceCosine(N, arrival.L0, arrival.L1), towardsCentre, material, N, V);
 
     vec3 R = 2.0f * dot(N, V) * N - V;   // reflect(-V, N)
-    real s = light.sourceRadius;
-    vec3 closest = sphereRepresentativePoint(tubeClosestPoint(L0, Ld, R), R, s);
-    vec3 towardsClosest = closest * inversesqrt(max(dot(closest, closest), MIN_LIGHT_DISTANCE_SQUARED));
-    real segmentLength = sqrt(dot(Ld, Ld));
-    real normalization =
-        lineNormalization(material.alpha, widenedAlpha(material.alpha, segmentLength, centreDistance, method.widening)) *
-        sphereNormalization(material.alpha, widenedAlpha(material.alpha, s, centreDistance, method.widening));
-    vec3 specular = specularFromDirection(radiance * normalization, towardsClosest, material, N, V);
+    RepresentativePoint point = tubeRepresentative(arrival, light.sourceRadius, R, material.alpha, method);
+    vec3 specular = specularFromDirection(radiance * point.normalization, point.L, material, N, V);
     return LightShares(diffuse, specular);
 }
 

@@ -149,6 +149,16 @@ PATINA_INLINE vec3 shadeEnvironment(EnvironmentSource prefiltered, real maxLod, 
 #endif
 }
 
+// KHR_materials_clearcoat under an environment (clearcoat.glsl's clearcoatSplitSum, before the
+// intensity): LD read from the prefiltered chain along R_c at the coat's roughness, (A, B) from
+// this model's table at (N_c.V, the coat's roughness). Include clearcoat.glsl first.
+PATINA_INLINE vec3 clearcoatEnvironment(EnvironmentSource prefiltered, real maxLod, real cosRotation, real sinRotation,
+                                        Clearcoat coat, vec3 V) {
+    vec3 R = toEnvironmentFrame(clearcoatReflection(coat, V), cosRotation, sinRotation);
+    vec3 ld = sampleEnvironmentSource(prefiltered, R, roughnessToLod(coat.roughness, maxLod));
+    return clearcoatSplitSum(coat, ld, environmentBrdfLookup(coat.NoV, coat.roughness));
+}
+
 // The stochastic alternative to the split sum: the specular integral itself at the real N and
 // V (no N = V, no split of F and G from the light), estimated per pixel by `count` GGX
 // half-vector samples (f NoL / pdf = F G_Vis, G_Vis as in eq. 8), each read from the source's

@@ -193,3 +193,102 @@ PATINA_INLINE real sphereIlluminance_Frostbite(real cosTheta, real sinSigmaSquar
     // light negative.
     return max(illuminance, 0.0f) / (PATINA_PI * sinSigmaSquared);
 }
+
+// The falloff of a point, sphere or tube light at distance t, with shadePointLight's switches.
+// 1/range = 0 turns the window off: with `windowed` a constant, the compiler folds it away.
+PATINA_INLINE real lightFalloff(PackedLight light, real t, bool windowed, bool karis) {
+    return pointLightAttenuation(t, windowed ? light.inverseRange : 0.0f, karis ? KARIS_ATTENUATION : light.attenuation);
+}
+
+// What a point light sends to P: its radiance after the falloff, the unit direction to it, and
+// whether it has one (a light on the shaded point has none: no light).
+struct LightArrival {
+    vec3 radiance;
+    vec3 L;
+    bool present;
+};
+
+PATINA_INLINE LightArrival pointLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
+    vec3 toLight = light.position - P;
+    real distanceSquared = dot(toLight, toLight);
+    // Clamped so the light on the shaded point still gives finite numbers; selected away by
+    // the callers.
+    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
+    real t = distanceSquared * inverseDistance;
+    real attenuation = lightFalloff(light, t, windowed, karis);
+    return LightArrival(light.radiance * attenuation, toLight * inverseDistance,
+                        distanceSquared > MIN_LIGHT_DISTANCE_SQUARED);
+}
+
+// What a sphere light sends to P: the vector to its centre, its distance t and 1 / t (clamped so
+// the centre on the shaded point still gives finite numbers; `present` false there: no light),
+// and its radiance after the point light's falloff at t.
+struct SphereArrival {
+    vec3 toCentre;
+    real t;
+    real inverseDistance;
+    vec3 radiance;
+    bool present;
+};
+
+PATINA_INLINE SphereArrival sphereLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
+    vec3 toCentre = light.position - P;
+    real distanceSquared = dot(toCentre, toCentre);
+    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
+    real t = distanceSquared * inverseDistance;
+    return SphereArrival(toCentre, t, inverseDistance, light.radiance * lightFalloff(light, t, windowed, karis),
+                         distanceSquared > MIN_LIGHT_DISTANCE_SQUARED);
+}
+
+// What a tube light sends to P: its ends and the segment seen from P, its radiance after the
+// falloff at the line irradiance's distance, and the vector to its centre and that distance.
+struct TubeArrival {
+    vec3 L0;
+    vec3 L1;
+    vec3 Ld;
+    vec3 radiance;
+    vec3 toCentre;
+    real centreDistance;
+};
+
+PATINA_INLINE TubeArrival tubeLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
+    vec3 L0 = light.position - P;
+    vec3 L1 = light.tubeEnd - P;
+    vec3 Ld = L1 - L0;
+    real lineDistanceSquared = max(lineIrradianceDistanceSquared(L0, L1), 0.0f);
+    vec3 radiance = light.radiance * lightFalloff(light, sqrt(lineDistanceSquared), windowed, karis);
+    vec3 toCentre = L0 + Ld * real(0.5f);
+    return TubeArrival(L0, L1, Ld, radiance, toCentre, sqrt(dot(toCentre, toCentre)));
+}
+
+// Karis 2013's representative point for a specular lobe of `alpha` about the reflected ray R:
+// the unit direction to it and the normalisation its radiance takes.
+struct RepresentativePoint {
+    vec3 L;
+    real normalization;
+};
+
+PATINA_INLINE vec3 towardsPoint(vec3 point) {
+    return point * inversesqrt(max(dot(point, point), MIN_LIGHT_DISTANCE_SQUARED));
+}
+
+// A sphere: the point of eq. 11, normalised by (alpha / alpha')^2 (eq. 14) at the centre's distance.
+PATINA_INLINE RepresentativePoint sphereRepresentative(SphereArrival arrival, real sourceRadius, vec3 R, real alpha,
+                                                       AreaLightMethod method) {
+    vec3 closest = sphereRepresentativePoint(arrival.toCentre, R, sourceRadius);
+    return RepresentativePoint(towardsPoint(closest),
+                               sphereNormalization(alpha, widenedAlpha(alpha, sourceRadius, arrival.t, method.widening)));
+}
+
+// A tube: the segment's point closest to R (eqs. 15-17), then the sphere's point about it,
+// normalised by the line's alpha / alpha' (eq. 16) with the segment's length and the sphere's
+// (alpha / alpha')^2 (eq. 14), both at the distance of the tube's centre.
+PATINA_INLINE RepresentativePoint tubeRepresentative(TubeArrival arrival, real sourceRadius, vec3 R, real alpha,
+                                                     AreaLightMethod method) {
+    vec3 closest = sphereRepresentativePoint(tubeClosestPoint(arrival.L0, arrival.Ld, R), R, sourceRadius);
+    real segmentLength = sqrt(dot(arrival.Ld, arrival.Ld));
+    real normalization =
+        lineNormalization(alpha, widenedAlpha(alpha, segmentLength, arrival.centreDistance, method.widening)) *
+        sphereNormalization(alpha, widenedAlpha(alpha, sourceRadius, arrival.centreDistance, method.widening));
+    return RepresentativePoint(towardsPoint(closest), normalization);
+}

@@ -16,6 +16,10 @@
 // PATINA_TEXTURED: a model's maps (surface_maps.glsl) multiply into the factors, bend the
 // normal, occlude the environment and hemisphere lights, add emission (once: in multi, in the
 // pass uEmissionPass marks) and cut out MASK's pixels.
+// PATINA_CLEARCOAT: KHR_materials_clearcoat (clearcoat.glsl), only for an item with a coat: the
+// base's light, environment and emission weighed by 1 - clearcoat fr_c, the coat's own lobe
+// added light by light and from the environment (COATED). Without it not one instruction of the
+// coat is compiled.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -68,6 +72,14 @@ PackedLight flatLight(int i) {
 uniform int uLightIndex;
 #endif
 
+#ifdef PATINA_CLEARCOAT
+uniform float uClearcoat;            // clearcoatFactor
+uniform float uClearcoatRoughness;   // clearcoatRoughnessFactor
+#define COATED(term) coatRadiance += (term);
+#else
+#define COATED(term)
+#endif
+
 // Light that skips the surface's crevices: the environment's and the hemisphere lights'
 // (glTF 2.0 section 3.9.3: occlusion applies to indirect lighting).
 #ifdef PATINA_TEXTURED
@@ -98,6 +110,14 @@ vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
     return shadeEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance, uEnvironmentIntensity,
                             uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, dominant);
 #endif
+}
+#endif
+
+#if defined(PATINA_ENVIRONMENT) && defined(PATINA_CLEARCOAT)
+// The coat's split sum (ibl_model.glsl's clearcoatEnvironment), whatever the base's method.
+vec3 clearcoatEnvironmentRadiance(Clearcoat coat, vec3 V) {
+    return uEnvironmentIntensity * clearcoatEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentRotation.x,
+                                                        uEnvironmentRotation.y, coat, V);
 }
 #endif
 
@@ -168,6 +188,16 @@ void main() {
 #ifdef PATINA_CHANNEL
     vec3 geometryNormal = N;
 #endif
+#ifdef PATINA_CLEARCOAT
+    // The coat lies on the geometric normal, or on its own normal map: not on the base's.
+#ifdef PATINA_TEXTURED
+    Clearcoat coat = deriveClearcoat(mappedClearcoat(uClearcoat), mappedClearcoatRoughness(uClearcoatRoughness),
+                                     mappedClearcoatNormal(N), V);
+#else
+    Clearcoat coat = deriveClearcoat(uClearcoat, uClearcoatRoughness, N, V);
+#endif
+    vec3 coatRadiance = vec3(0.0f);
+#endif
 #ifdef PATINA_TEXTURED
     N = mappedNormal(N);
 #endif
@@ -192,11 +222,15 @@ void main() {
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
-#define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V);
-#define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V);
+#define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V); \
+    COATED(clearcoatPointLight(light, windowed, karis, coat, vPosition, V))
+#define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V); \
+    COATED(clearcoatDirectionalLight(light, coat, V))
 #define SHADE_HEMISPHERE(light) radiance += OCCLUDED(shadeHemisphereLight(light, material, N, V));
-#define SHADE_SPHERE(light, windowed, karis) radiance += shadeSphereLight(light, windowed, karis, material, vPosition, N, V);
-#define SHADE_TUBE(light, windowed, karis) radiance += shadeTubeLight(light, windowed, karis, material, vPosition, N, V);
+#define SHADE_SPHERE(light, windowed, karis) radiance += shadeSphereLight(light, windowed, karis, material, vPosition, N, V); \
+    COATED(clearcoatSphereLight(light, windowed, karis, coat, vPosition, V))
+#define SHADE_TUBE(light, windowed, karis) radiance += shadeTubeLight(light, windowed, karis, material, vPosition, N, V); \
+    COATED(clearcoatTubeLight(light, windowed, karis, coat, vPosition, V))
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/scene/light_packing.h): a loop per type, no type branch.
@@ -216,6 +250,7 @@ void main() {
         int i = first;
         do {
             radiance += shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+            COATED(clearcoatPointLight(uLights[i], true, karisPoints, coat, vPosition, V))
         } while (++i < end);
     }
 #endif
@@ -226,6 +261,7 @@ void main() {
         int i = first;
         do {
             radiance += shadeDirectionalLight(uLights[i], material, N, V);
+            COATED(clearcoatDirectionalLight(uLights[i], coat, V))
         } while (++i < end);
     }
 #endif
@@ -246,6 +282,7 @@ void main() {
         int i = first;
         do {
             radiance += shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+            COATED(clearcoatSphereLight(uLights[i], true, karisPoints, coat, vPosition, V))
         } while (++i < end);
     }
 #endif
@@ -256,6 +293,7 @@ void main() {
         int i = first;
         do {
             radiance += shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+            COATED(clearcoatTubeLight(uLights[i], true, karisPoints, coat, vPosition, V))
         } while (++i < end);
     }
 #endif
@@ -263,6 +301,7 @@ void main() {
 #if defined(PATINA_SPECIALISED) || defined(PATINA_SINGLE_PASS)
 #ifdef PATINA_ENVIRONMENT
     radiance += OCCLUDED(environmentRadiance(material, N, V));
+    COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
 #endif
 #ifdef PATINA_TEXTURED
     radiance += surfaceEmission();
@@ -271,11 +310,13 @@ void main() {
 #if defined(PATINA_ENVIRONMENT)
     if (uLightIndex < 0) {
         radiance = OCCLUDED(environmentRadiance(material, N, V));
+        COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
     } else
 #endif
     {
         PackedLight light = uLights[max(uLightIndex, 0)];
         radiance = shadeLight(light, material, vPosition, N, V);
+        COATED(clearcoatLight(light, coat, vPosition, V))
         if (light.type == LIGHT_HEMISPHERE) {
             radiance = OCCLUDED(radiance);
         }
@@ -285,6 +326,10 @@ void main() {
         radiance += surfaceEmission();
     }
 #endif
+#endif
+#ifdef PATINA_CLEARCOAT
+    // The base, its emission too, seen through the coat, and the coat's own light.
+    radiance = clearcoatOver(radiance, coatRadiance, coat);
 #endif
 #ifdef PATINA_STAMPED
     fragColor = vec4(radiance, uSampleStamp);

@@ -10,15 +10,19 @@ in vec2 vUv1;
 in vec4 vTangent;   // world space; w = 0: the vertex has none
 
 // The maps in SurfaceMap order (engine/gl/surface_map_uniforms.h): 0 base colour,
-// 1 metallic-roughness, 2 normal, 3 occlusion, 4 emissive. A sampler array could be indexed
-// only by constants in GLSL 3.30, so each has its own name.
+// 1 metallic-roughness, 2 normal, 3 occlusion, 4 emissive, then KHR_materials_clearcoat's
+// 5 coat, 6 coat roughness, 7 coat normal (read only with PATINA_CLEARCOAT). A sampler array
+// could be indexed only by constants in GLSL 3.30, so each has its own name.
 uniform sampler2D uBaseColorMap;
 uniform sampler2D uMetallicRoughnessMap;
 uniform sampler2D uNormalMap;
 uniform sampler2D uOcclusionMap;
 uniform sampler2D uEmissiveMap;
-uniform vec4 uMapPlacement[5];   // KHR_texture_transform: offset (xy), scale (zw)
-uniform vec2 uMapRotationSet[5];   // its rotation; the UV set read, -1 where there is no map
+uniform sampler2D uClearcoatMap;
+uniform sampler2D uClearcoatRoughnessMap;
+uniform sampler2D uClearcoatNormalMap;
+uniform vec4 uMapPlacement[8];   // KHR_texture_transform: offset (xy), scale (zw)
+uniform vec2 uMapRotationSet[8];   // its rotation; the UV set read, -1 where there is no map
 uniform float uBaseAlpha;          // baseColorFactor's alpha
 uniform float uAlphaCutoff;        // MASK's; negative for OPAQUE and BLEND
 uniform float uNormalScale;
@@ -70,6 +74,27 @@ vec3 mappedNormal(vec3 N) {
     vec3 texel = mapTexel(uNormalMap, mapCoordinate(2)).xyz;
     return normalMappedNormal(N, vTangent, tangentSpaceNormal(texel, uNormalScale));
 }
+
+#ifdef PATINA_CLEARCOAT
+uniform float uClearcoatNormalScale;
+
+// KHR_materials_clearcoat's maps: the coat's weight times its map's R, its roughness times its
+// map's G (the glTF channels), and the coat's own normal map about N, the geometric normal as
+// shaded (without its map, the coat follows N: not the base's normal map).
+float mappedClearcoat(float factor) {
+    return factor * MAP_TEXEL(5, uClearcoatMap, vec4(1.0f)).x;
+}
+float mappedClearcoatRoughness(float roughness) {
+    return roughness * MAP_TEXEL(6, uClearcoatRoughnessMap, vec4(1.0f)).y;
+}
+vec3 mappedClearcoatNormal(vec3 N) {
+    if (!hasMap(7)) {
+        return N;
+    }
+    vec3 texel = mapTexel(uClearcoatNormalMap, mapCoordinate(7)).xyz;
+    return normalMappedNormal(N, vTangent, tangentSpaceNormal(texel, uClearcoatNormalScale));
+}
+#endif
 
 // What reaches the environment's and hemisphere lights' light (1 without an occlusion map).
 float surfaceOcclusion() {

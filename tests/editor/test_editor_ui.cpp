@@ -396,14 +396,14 @@ TEST_F(EditorUi, ThePartsListTellsPartsApartSearchesAndGrows) {
 // in amber beside the status line, and the File extensions section lists it.
 TEST_F(EditorUi, AnExtensionNotDrawnIsCountedInTheStatusAndListed) {
     test::GltfBuilder coated = test::cubeModel();
-    coated.json["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
-    coated.json["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+    coated.json["extensionsUsed"] = {"KHR_materials_sheen", "KHR_texture_transform"};
+    coated.json["materials"][0]["extensions"]["KHR_materials_sheen"] = {{"sheenColorFactor", {1.0, 1.0, 1.0}}};
     coated.writeGlb(path("coated.glb"));
     ASSERT_TRUE(openFile(state_, path("coated.glb"))) << state_.error;
     frames(3);
     std::map<std::string, RecordedItem> items = itemsOfLastFrame();
     ASSERT_TRUE(items.count("status notes")) << state_.status;
-    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_clearcoat (not drawn)"), std::string::npos);
+    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_sheen (not drawn)"), std::string::npos);
     ASSERT_TRUE(items.count("File extensions"));
     ASSERT_EQ(state_.model->extensions.size(), 2u);
     click(centreOf("File extensions"));

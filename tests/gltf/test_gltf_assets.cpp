@@ -183,7 +183,8 @@ TEST_F(GltfAssets, ClearCoatReadsNormalMapsFromPngAndJpegAndMakesTheirTangents) 
     for (const DrawItem& draw : model.draws) {
         const Mesh& primitive = model.primitives.at(size_t(draw.primitive));
         EXPECT_EQ(primitive.uv0.size(), primitive.positions.size());
-        const bool normalMapped = draw.material >= 0 && model.materials[size_t(draw.material)].normal.present();
+        const bool normalMapped = draw.material >= 0 && (model.materials[size_t(draw.material)].normal.present() ||
+                                                         model.materials[size_t(draw.material)].clearcoatNormal.present());
         ASSERT_EQ(primitive.tangents.size(), normalMapped ? primitive.positions.size() : 0u) << draw.node;
         for (size_t i = 0; i < primitive.tangents.size(); ++i) {
             const glm::vec4& tangent = primitive.tangents[i];
@@ -192,9 +193,8 @@ TEST_F(GltfAssets, ClearCoatReadsNormalMapsFromPngAndJpegAndMakesTheirTangents) 
             EXPECT_EQ(std::abs(tangent.w), 1.0f);
         }
     }
-    // Nothing left out but the coat, which Patina does not draw, and says so.
-    EXPECT_EQ(model.notes, std::vector<std::string>{"uses KHR_materials_clearcoat (not drawn): the clear coat is left "
-                                                    "out; the base layer shows bare"});
+    // Nothing left out: the coat is drawn (KHR_materials_clearcoat), so no note.
+    EXPECT_TRUE(model.notes.empty()) << model.notes.front();
 }
 
 // A node's own matrix: this file gives a matrix or nothing.
@@ -245,14 +245,14 @@ TEST_F(GltfAssets, TwoCylinderEngineHasEveryMaterialAndTheHierarchysTransforms) 
     EXPECT_GT(nested, 0u);   // some transforms come from parents too
 }
 
-// Files written by other tools with extensions Patina does not draw say so when they open.
-TEST_F(GltfAssets, ClearCoatTestAndTheSpecGlossBoxSayWhatIsNotDrawn) {
+// Files written by other tools say what they use when they open: ClearCoatTest's coat is drawn
+// (no note), the spec-gloss box's conversion is noted.
+TEST_F(GltfAssets, ClearCoatTestIsDrawnAndTheSpecGlossBoxSaysItIsConverted) {
     const Model coat = importGltfModel(kModels / "ClearCoat-glTF/ClearCoatTest.gltf");
     ASSERT_EQ(coat.extensions.size(), 1u);
     EXPECT_EQ(coat.extensions[0].name, "KHR_materials_clearcoat");
-    EXPECT_NE(std::find(coat.notes.begin(), coat.notes.end(),
-                        "uses KHR_materials_clearcoat (not drawn): the clear coat is left out; the base layer shows bare"),
-              coat.notes.end());
+    EXPECT_EQ(coat.extensions[0].support, ExtensionSupport::Drawn);
+    EXPECT_TRUE(coat.notes.empty()) << coat.notes.front();
     const Model box = importGltfModel(kModels / "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf");
     ASSERT_EQ(box.extensions.size(), 1u);
     EXPECT_EQ(box.extensions[0].name, "KHR_materials_pbrSpecularGlossiness");

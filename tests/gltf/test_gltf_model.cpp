@@ -628,6 +628,49 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
                                  "-1.000000 is below 0");
 }
 
+// KHR_materials_clearcoat: its two factors into the material's, its three maps as the core maps
+// are read (UV set, KHR_texture_transform), the coat normal's scale; a coat without maps, and
+// the extension's defaults (no coat) where a material lacks it.
+TEST_F(GltfModel, TheClearcoatsFactorsAndMapsAreRead) {
+    GltfBuilder model = texturedCube({{"uri", "map.png"}});
+    model.json["extensionsUsed"] = {"KHR_materials_clearcoat", "KHR_texture_transform"};
+    model.json["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {
+        {"clearcoatFactor", 0.75},
+        {"clearcoatRoughnessFactor", 0.25},
+        {"clearcoatTexture", {{"index", 0}, {"texCoord", 0}}},
+        {"clearcoatRoughnessTexture",
+         {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{"scale", {2, 3}}, {"texCoord", 0}}}}}}},
+        {"clearcoatNormalTexture", {{"index", 0}, {"scale", 0.5}}}};
+    model.add("materials", {{"extensions", {{"KHR_materials_clearcoat", {{"clearcoatFactor", 2.0}}}}}});
+    model.add("materials", Json::object());
+    const Model imported = load(model);
+    ASSERT_EQ(imported.materials.size(), 3u);
+    const ModelMaterial& coated = imported.materials[0];
+    EXPECT_EQ(coated.factors.clearcoat, 0.75f);
+    EXPECT_EQ(coated.factors.clearcoatRoughness, 0.25f);
+    EXPECT_TRUE(coated.clearcoat.present());
+    EXPECT_EQ(coated.clearcoat.image, coated.baseColor.image);
+    EXPECT_TRUE(coated.clearcoatRoughness.present());
+    EXPECT_EQ(coated.clearcoatRoughness.transform.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_TRUE(coated.clearcoatNormal.present());
+    EXPECT_EQ(coated.clearcoatNormalScale, 0.5f);
+    // (The cube has no UVs, so no tangents: GltfAssets.ClearCoatReadsNormalMaps... sees a coat
+    // normal map's primitive get them.)
+    EXPECT_EQ(imported.extensions[0].support, ExtensionSupport::Drawn);
+    EXPECT_TRUE(imported.notes.empty()) << allNotes(imported);
+    // Factors clamped to [0, 1] as every factor; roughness 0 by the extension's default.
+    EXPECT_EQ(imported.materials[1].factors.clearcoat, 1.0f);
+    EXPECT_EQ(imported.materials[1].factors.clearcoatRoughness, 0.0f);
+    EXPECT_FALSE(imported.materials[1].clearcoat.present());
+    EXPECT_EQ(imported.materials[2].factors.clearcoat, 0.0f);
+
+    model.json["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatTexture"]["index"] = 9;
+    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_clearcoat/clearcoatTexture/index: texture 9 "
+                                 "does not exist");
+    model.json["materials"][0]["extensions"]["KHR_materials_clearcoat"]["clearcoatFactor"] = "thick";
+    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_clearcoat/clearcoatFactor: must be a number");
+}
+
 TEST_F(GltfModel, IndicesOutOfRangeAreRefusedNamingThem) {
     const struct {
         const char* pointer;
@@ -675,9 +718,9 @@ TEST_F(GltfModel, ExtensionsPatinaDoesNotReadAreNotedOrRefused) {
 // picture lacks is a note (the editor's status line, render and validate print them).
 TEST_F(GltfModel, EveryExtensionTheFileUsesIsToldWithWhatIsDrawnOfIt) {
     GltfBuilder model = cubeModel();
-    model.json["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_clearcoat", "EXT_made_up",
+    model.json["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_sheen", "EXT_made_up",
                                     "KHR_xmp_json_ld"};
-    model.json["materials"][0]["extensions"]["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0}};
+    model.json["materials"][0]["extensions"]["KHR_materials_sheen"] = {{"sheenColorFactor", {1.0, 1.0, 1.0}}};
     const Model loaded = load(model);
     ASSERT_EQ(loaded.extensions.size(), 4u);
     EXPECT_EQ(loaded.extensions[0].name, "KHR_texture_transform");
@@ -688,7 +731,7 @@ TEST_F(GltfModel, EveryExtensionTheFileUsesIsToldWithWhatIsDrawnOfIt) {
     EXPECT_FALSE(loaded.extensions[1].required);
     EXPECT_EQ(loaded.notes,
               (std::vector<std::string>{
-                  "uses KHR_materials_clearcoat (not drawn): the clear coat is left out; the base layer shows bare",
+                  "uses KHR_materials_sheen (not drawn): the sheen is left out; fabrics show without it",
                   "uses EXT_made_up (unknown to Patina): whatever it adds is left out"}))
         << allNotes(loaded);
     // A required extension the file forgot to list as used is listed all the same.

@@ -62,6 +62,11 @@ void expectSameMaterial(const ModelMaterial& a, const ModelMaterial& b, const Mo
     EXPECT_NEAR(a.factors.roughness, b.factors.roughness, 1e-6f) << a.name;
     EXPECT_NEAR(a.factors.metallic, b.factors.metallic, 1e-6f) << a.name;
     EXPECT_NEAR(a.factors.specular, b.factors.specular, 1e-5f) << a.name;
+    EXPECT_EQ(a.factors.clearcoat, b.factors.clearcoat) << a.name;
+    EXPECT_EQ(a.factors.clearcoatRoughness, b.factors.clearcoatRoughness) << a.name;
+    if (a.clearcoatNormal.present()) {
+        EXPECT_NEAR(a.clearcoatNormalScale, b.clearcoatNormalScale, 1e-6f) << a.name;
+    }
     EXPECT_NEAR(a.baseAlpha, b.baseAlpha, 1e-6f) << a.name;
     // glTF holds the scale and the strength with their maps: without one they mean nothing.
     if (a.normal.present()) {

@@ -38,6 +38,25 @@ TEST(MaterialFile, NotesRoundTripAndAreLeftOutWhenEmpty) {
                   .find("m.json: /notes: expected a string"), std::string::npos);
 }
 
+// KHR_materials_clearcoat's factors: written only where there is a coat (a material without
+// one is written as before the extension, so screenshots' scenes keep their bytes), read back
+// the same, checked as every factor.
+TEST(MaterialFile, TheClearcoatRoundTripsAndIsLeftOutWithoutACoat) {
+    Material material;
+    EXPECT_FALSE(materialToJson(material).contains("clearcoat"));
+    EXPECT_FALSE(materialToJson(material).contains("clearcoatRoughness"));
+    material.clearcoat = 0.75f;
+    material.clearcoatRoughness = 0.125f;
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["clearcoat"], 0.75);
+    EXPECT_EQ(json["clearcoatRoughness"], 0.125);
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "clearcoat": 1.5})").find("m.json: /clearcoat"),
+              std::string::npos);
+}
+
 TEST(MaterialFile, UnknownKeysAreWarnedAboutAndWrittenBack) {
     std::vector<std::string> warnings;
     const Material material = read(R"({"format": "patina-material", "version": 1,

@@ -72,10 +72,13 @@ TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
     Material edited;
     edited.name = "Texture";
     edited.roughness = 0.2f;
+    edited.clearcoat = 0.5f;   // a part's coat (KHR_materials_clearcoat) travels with it
+    edited.clearcoatRoughness = 0.25f;
     scene.modelMaterials = {{3, edited}};
     const Json json = sceneToJson(scene);
     ASSERT_TRUE(json.contains("modelMaterials"));
     EXPECT_EQ(json["modelMaterials"][0]["index"], 3);
+    EXPECT_EQ(json["modelMaterials"][0]["material"]["clearcoat"], 0.5);
     EXPECT_EQ(sceneFromJson(json, "x", ".", warnings), scene);
     EXPECT_TRUE(warnings.empty());
     Json twice = json;
