@@ -228,15 +228,14 @@ ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMat
         }
         prepared.push_back(p);
     }
+    const shader::Clearcoat coat = referenceCoat(options, N, V);
     auto integrand = [&](const Prepared& light, glm::dvec3 L) {
         const float NoL = float(glm::dot(n, L));
         if (!(NoL > 0.0f)) {
             return glm::dvec3(0.0);
         }
         const shader::BrdfValue f = evaluateBrdf(model, material, N, V, glm::vec3(L));
-        const glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
-                                (options.specular ? f.specular : glm::vec3(0.0f));
-        return light.radiance * glm::dvec3(lobes) * double(std::min(NoL, 1.0f));
+        return light.radiance * glm::dvec3(coatedBrdf(f, coat, V, glm::vec3(L), options)) * double(std::min(NoL, 1.0f));
     };
     auto ggxPdfOf = [&](glm::dvec3 L) { return double(ggxPdf(N, V, glm::vec3(L), material.alpha)); };
     // The light strategy's pdf of direction L, and whether L reaches the light at all.

@@ -43,6 +43,8 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
         options.indirectOcclusion = occlusion.empty() ? 1.0f : occlusion[i];
         const size_t m = size_t(materialOfSample[i]);
+        options.clearcoat = materials[m].clearcoat;
+        options.clearcoatRoughness = materials[m].clearcoatRoughness;
         const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,
                                                       options);

@@ -36,6 +36,21 @@ float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha) {
     return shader::D_GGX(NoH, glm::cross(N, H), alpha) * NoH / (4.0f * VoH);
 }
 
+shader::Clearcoat referenceCoat(const ReferenceOptions& options, glm::vec3 N, glm::vec3 V) {
+    return shader::deriveClearcoat(options.clearcoat, options.clearcoatRoughness, N, V);
+}
+
+glm::vec3 coatedBrdf(const shader::BrdfValue& f, const shader::Clearcoat& coat, glm::vec3 V, glm::vec3 L,
+                     const ReferenceOptions& options) {
+    const glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
+                            (options.specular ? f.specular : glm::vec3(0.0f));
+    if (options.clearcoat <= 0.0f) {
+        return lobes;
+    }
+    const float layer = options.specular ? shader::clearcoatBrdf(coat, V, L) : 0.0f;
+    return shader::clearcoatOver(lobes, glm::vec3(layer), coat);
+}
+
 ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
                                     const ReferenceEnvironment& environment,
                                     const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
@@ -52,9 +67,22 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
             (occluded && light.type == shader::LIGHT_HEMISPHERE ? hemispheres : exact).push_back(light);
         }
     }
-    estimate.value += shadePoint(model, material, exact, P, N, V);
+    const bool coated = options.clearcoat > 0.0f;
+    const shader::Clearcoat coat = referenceCoat(options, N, V);
+    // The coat over the lights added exactly (clearcoat.glsl's, a hemisphere light's none).
+    auto overExact = [&](glm::vec3 base, const std::vector<shader::PackedLight>& some) {
+        if (!coated) {
+            return base;
+        }
+        glm::vec3 layer(0.0f);
+        for (const shader::PackedLight& light : some) {
+            layer += options.specular ? shader::clearcoatLight(light, coat, P, V) : glm::vec3(0.0f);
+        }
+        return shader::clearcoatOver(base, layer, coat);
+    };
+    estimate.value += overExact(shadePoint(model, material, exact, P, N, V), exact);
     if (!hemispheres.empty()) {
-        estimate.value += options.indirectOcclusion * shadePoint(model, material, hemispheres, P, N, V);
+        estimate.value += options.indirectOcclusion * overExact(shadePoint(model, material, hemispheres, P, N, V), hemispheres);
     }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
@@ -71,33 +99,38 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
             return glm::vec3(0.0f);
         }
         const shader::BrdfValue f = evaluateBrdfUnderEnvironment(model, material, N, V, L);
-        const glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
-                                (options.specular ? f.specular : glm::vec3(0.0f));
-        return radianceFrom(L) * lobes * std::min(NoL, 1.0f);
+        return radianceFrom(L) * coatedBrdf(f, coat, V, L, options) * std::min(NoL, 1.0f);
     };
-    // The three strategies' pdfs of one direction (0 where a strategy cannot make it).
+    // The strategies' pdfs of one direction (0 where a strategy cannot make it): the coat's
+    // GGX fourth, 0 without a coat.
     auto pdfs = [&](glm::vec3 L) {
         const float NoL = glm::dot(N, L);
         const float ggx = NoL > 0.0f ? ggxPdf(N, V, L, material.alpha) : 0.0f;
         const float cosine = std::max(NoL, 0.0f) / std::numbers::pi_v<float>;
         const float env = environment.distribution->pdf(shader::toEnvironmentFrame(L, c, s));
-        return glm::vec3(ggx, cosine, env);
+        const float coatGgx = coated && NoL > 0.0f ? ggxPdf(N, V, L, coat.alpha) : 0.0f;
+        return glm::vec4(ggx, cosine, env, coatGgx);
     };
+    const int strategies = coated ? 4 : 3;
     std::mt19937_64 random(options.seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     glm::dvec3 sum(0.0), sumSquares(0.0);
     for (int i = 0; i < options.samples; ++i) {
-        glm::vec3 L[3];
+        glm::vec3 L[4];
         const glm::vec3 H = shader::importanceSampleGGX(glm::vec2(uniform(random), uniform(random)), material.alpha, N);
         L[0] = 2.0f * glm::dot(V, H) * H - V;
         L[1] = sampleCosine(glm::vec2(uniform(random), uniform(random)), N);
         const EnvironmentDistribution::Sample e = environment.distribution->sample(uniform(random), uniform(random));
         L[2] = shader::toEnvironmentFrame(e.direction, c, -s);   // back to the world
+        if (coated) {
+            const glm::vec3 Hc = shader::importanceSampleGGX(glm::vec2(uniform(random), uniform(random)), coat.alpha, N);
+            L[3] = 2.0f * glm::dot(V, Hc) * Hc - V;
+        }
         glm::dvec3 x(0.0);
-        for (int k = 0; k < 3; ++k) {
-            const glm::vec3 p = pdfs(L[k]);
+        for (int k = 0; k < strategies; ++k) {
+            const glm::vec4 p = pdfs(L[k]);
             const float own = p[k];
-            const float squares = p.x * p.x + p.y * p.y + p.z * p.z;
+            const float squares = p.x * p.x + p.y * p.y + p.z * p.z + p.w * p.w;
             if (own > 0.0f && squares > 0.0f) {
                 x += glm::dvec3(integrand(L[k]) * (own / squares));   // (own^2 / squares) / own
             }

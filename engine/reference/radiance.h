@@ -28,6 +28,11 @@ struct ReferenceOptions {
     // What reaches the point of the environment's and the hemisphere lights' light (an
     // occlusion map's factor, glTF 2.0 3.9.3; shade.frag's OCCLUDED).
     float indirectOcclusion = 1.0f;
+    // KHR_materials_clearcoat over the material (docs/SHADING.md S5) on the sample's normal:
+    // its factor (0: none, and the estimate draws the same random numbers as without) and its
+    // perceptual roughness. Every estimate takes the coated BRDF sample by sample.
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
 };
 
 struct ReferenceEstimate {
@@ -39,9 +44,18 @@ struct ReferenceEstimate {
 // D(H) NoH / (4 VoH); 0 where VoH <= 0.
 float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha);
 
+// The coat of `options` at (N, V): factor 0 where there is none.
+shader::Clearcoat referenceCoat(const ReferenceOptions& options, glm::vec3 N, glm::vec3 V);
+
+// The BRDF every estimate integrates towards unit L (times N.L, the coat's normal being N): the
+// lobes of `f` that `options` asks for, the coat (if any) over them, f (1 - clearcoat fr_c) +
+// the coat's term (clearcoat.glsl). Without a coat, the lobes' sum as it always was.
+glm::vec3 coatedBrdf(const shader::BrdfValue& f, const shader::Clearcoat& coat, glm::vec3 V, glm::vec3 L,
+                     const ReferenceOptions& options);
+
 // Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (docs/LIGHTING.md L3), by Monte
 // Carlo with multiple importance sampling (Veach 1997, power heuristic) of GGX half-vector,
-// cosine and environment sampling; the model's f under an environment (environmentVisibility).
+// cosine and environment sampling, and with a coat GGX sampling of the coat's roughness; the model's f under an environment (environmentVisibility).
 // The analytic lights are added exactly (no error) but sphere and tube lights, which are
 // estimated too (area_lights.h). Deterministic for a seed.
 ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,

@@ -65,6 +65,10 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
     surface.material.roughness = mapped.roughness;
     surface.material.metallic = mapped.metallic;
     surface.alpha = mapped.alpha;
+    // KHR_materials_clearcoat's factor maps: R scales the coat, G its roughness (the coat's
+    // normal map is the GPU's alone: the ground truth lays the coat on the shading normal).
+    surface.material.clearcoat *= texel(maps->clearcoat, false, glm::vec4(1.0f)).x;
+    surface.material.clearcoatRoughness *= texel(maps->clearcoatRoughness, false, glm::vec4(1.0f)).y;
     if (maps->normal.present()) {
         const glm::vec4 n = texel(maps->normal, false, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
         surface.normal =
