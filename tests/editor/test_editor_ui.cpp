@@ -155,6 +155,33 @@ TEST_F(EditorUi, DraggingTheRoughnessSliderChangesMaterialAndPixels) {
     EXPECT_LT(state_.scene.material.roughness, 0.1f);
 }
 
+// KHR_materials_clearcoat in the editor: a part's Clearcoat section under its factors, its Coat
+// slider dragged puts a coat on the part (the picture changes), one undo step takes it off,
+// and the part's coat is what the scene saves.
+TEST_F(EditorUi, APartsClearcoatIsDraggedOnUndoneAndSaved) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    ASSERT_EQ(state_.selectedModelMaterial, 0);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).clearcoat, 0.0f);
+    EXPECT_FALSE(itemsOfLastFrame().count("Coat")) << "closed on a part without a coat";
+    click(centreOf("Clearcoat"));
+    frames(1);
+    const LdrImage bare = services_->viewportPixels(EditorServices::Shown::Edited);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Coat", &min, &max));
+    drag(ImVec2(min.x + 2.0f, (min.y + max.y) * 0.5f), ImVec2(max.x + 40.0f, (min.y + max.y) * 0.5f));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).clearcoat, 1.0f);
+    frames(1);
+    EXPECT_GT(differingPixels(bare, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    const Json saved = sceneToJson(state_.scene);
+    ASSERT_TRUE(saved.contains("modelMaterials"));
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["clearcoat"], 1.0);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).clearcoat, 0.0f);
+}
+
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     const size_t before = state_.scene.lights.size();
     click(centreOf("Add point"));

@@ -139,6 +139,21 @@ void drawFactors(Material& material, const Material& file, const Material& defau
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
 }
 
+// KHR_materials_clearcoat's two factors in a section of their own under the factors, open
+// where the part has a coat; its maps are among the part's maps above. A coat of 0 is none.
+void drawClearcoat(Material& material, const Material& file, const Material& defaults) {
+    ImGui::SetNextItemOpen(material.clearcoat > 0.0f, ImGuiCond_Appearing);
+    const bool open = ImGui::CollapsingHeader("Clearcoat");
+    recordItem("Clearcoat", "A clear lacquer over the part (KHR_materials_clearcoat), as on a car's paint");
+    if (!open) {
+        return;
+    }
+    sliderWithReset("Coat", "How much clear coat lies over the part: 0 none, 1 a full coat (index 1.5)",
+                    &material.clearcoat, 0.0f, 1.0f, file.clearcoat, defaults.clearcoat);
+    sliderWithReset("Coat roughness", "0: the coat's highlight mirror-sharp; 1: broad. Ctrl+click to type",
+                    &material.clearcoatRoughness, 0.0f, 1.0f, file.clearcoatRoughness, defaults.clearcoatRoughness);
+}
+
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names) {
     std::string text;
@@ -344,8 +359,10 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     const Material before = material;
     Scene untuned = document.scene;
     untuned.modelMaterials.clear();
-    drawFactors(material, modelMaterial(document, document.savedScene, selected),
-                modelMaterial(document, untuned, selected));
+    const Material saved = modelMaterial(document, document.savedScene, selected);
+    const Material defaults = modelMaterial(document, untuned, selected);
+    drawFactors(material, saved, defaults);
+    drawClearcoat(material, saved, defaults);
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
     }
