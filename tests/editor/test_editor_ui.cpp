@@ -180,6 +180,17 @@ TEST_F(EditorUi, APartsClearcoatIsDraggedOnUndoneAndSaved) {
     EXPECT_EQ(state_.history.undoSteps(), 1u);
     press(kKeyZ, true);
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).clearcoat, 0.0f);
+    // A part with a coat shows its section open when it is first picked, whatever another
+    // part's shows.
+    click(centreOf("Clearcoat"));
+    frames(1);
+    EXPECT_FALSE(itemsOfLastFrame().count("Coat")) << "closed again";
+    Material coated = modelMaterial(state_, state_.scene, 1);
+    coated.clearcoat = 0.5f;
+    setModelMaterial(state_, state_.scene, 1, coated);
+    state_.selectedModelMaterial = 1;
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().count("Coat"));
 }
 
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {

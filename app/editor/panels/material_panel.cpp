@@ -139,19 +139,22 @@ void drawFactors(Material& material, const Material& file, const Material& defau
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
 }
 
-// KHR_materials_clearcoat's two factors in a section of their own under the factors, open
-// where the part has a coat; its maps are among the part's maps above. A coat of 0 is none.
-void drawClearcoat(Material& material, const Material& file, const Material& defaults) {
-    ImGui::SetNextItemOpen(material.clearcoat > 0.0f, ImGuiCond_Appearing);
+// KHR_materials_clearcoat's two factors in a section of their own under the factors, first
+// shown open where the part has a coat (each part keeps its own open state); its maps are among
+// the part's maps above. A coat of 0 is none.
+void drawClearcoat(Material& material, const Material& file, const Material& defaults, int part) {
+    ImGui::PushID(part);
+    ImGui::SetNextItemOpen(material.clearcoat > 0.0f, ImGuiCond_Once);
     const bool open = ImGui::CollapsingHeader("Clearcoat");
     recordItem("Clearcoat", "A clear lacquer over the part (KHR_materials_clearcoat), as on a car's paint");
-    if (!open) {
-        return;
+    if (open) {
+        sliderWithReset("Coat", "How much clear coat lies over the part: 0 none, 1 a full coat (index 1.5)",
+                        &material.clearcoat, 0.0f, 1.0f, file.clearcoat, defaults.clearcoat);
+        sliderWithReset("Coat roughness", "0: the coat's highlight mirror-sharp; 1: broad. Ctrl+click to type",
+                        &material.clearcoatRoughness, 0.0f, 1.0f, file.clearcoatRoughness,
+                        defaults.clearcoatRoughness);
     }
-    sliderWithReset("Coat", "How much clear coat lies over the part: 0 none, 1 a full coat (index 1.5)",
-                    &material.clearcoat, 0.0f, 1.0f, file.clearcoat, defaults.clearcoat);
-    sliderWithReset("Coat roughness", "0: the coat's highlight mirror-sharp; 1: broad. Ctrl+click to type",
-                    &material.clearcoatRoughness, 0.0f, 1.0f, file.clearcoatRoughness, defaults.clearcoatRoughness);
+    ImGui::PopID();
 }
 
 // "a, b, c".
@@ -362,7 +365,7 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     const Material saved = modelMaterial(document, document.savedScene, selected);
     const Material defaults = modelMaterial(document, untuned, selected);
     drawFactors(material, saved, defaults);
-    drawClearcoat(material, saved, defaults);
+    drawClearcoat(material, saved, defaults, selected);
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
     }
