@@ -4,6 +4,7 @@
 
 #include "gltf/values.h"
 #include "files/input_error.h"
+#include "shading/shading.h"
 
 namespace patina::gltf {
 
@@ -54,12 +55,12 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
         throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1 (and not 0)");
     }
     const double f0 = std::min(f0FromIor(ior) * largestColor, 1.0) * specularFactor;
-    result.specular = unit(f0 / kF0PerSpecular);
+    result.specular = unit(f0 / double(shader::F0_PER_SPECULAR));
     return result;
 }
 
 Json materialToGltf(const Material& material) {
-    const double color = exact(float(kF0PerSpecular * double(material.specular) / f0FromIor(kExportIor)));
+    const double color = exact(float(double(shader::F0_PER_SPECULAR) * double(material.specular) / f0FromIor(kExportIor)));
     const glm::vec3& base = material.baseColor;
     return Json{
         {"name", material.name},
