@@ -14,6 +14,7 @@
 #include "cli.h"
 #include "accuracy/diffuse_accuracy.h"
 #include "accuracy/furnace.h"
+#include "environment/builtin_environments.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
 #include "files/input_error.h"
@@ -113,7 +114,7 @@ constexpr const char* kBlenderWorlds = "/usr/share/blender/datafiles/studiolight
 std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string>& files) {
     std::vector<std::string> sources = files;
     if (sources.empty()) {
-        sources = {"builtin:studio"};
+        sources = {builtinSource("studio")};
         for (const char* name : {"sunrise.exr", "interior.exr"}) {
             const std::filesystem::path path = std::filesystem::path(kBlenderWorlds) / name;
             if (std::filesystem::is_regular_file(path)) {
@@ -129,12 +130,10 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
     for (const std::string& source : sources) {
         std::vector<std::string> warnings;
         const std::string absolute =
-            source.starts_with("builtin:") ? source : std::filesystem::absolute(source).lexically_normal().string();
+            builtinName(source) ? source : std::filesystem::absolute(source).lexically_normal().string();
         std::shared_ptr<const Environment> environment = assets.environment(absolute, warnings);
         printWarnings(warnings);
-        const std::string name =
-            source.starts_with("builtin:") ? source.substr(8) : std::filesystem::path(source).stem().string();
-        environments.push_back({name, std::move(environment)});
+        environments.push_back({environmentName(source), std::move(environment)});
     }
     return environments;
 }
@@ -143,7 +142,7 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
 std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>& files) {
     std::vector<std::string> sources = files;
     if (sources.empty()) {
-        sources = {"builtin:studio"};
+        sources = {builtinSource("studio")};
         std::error_code error;
         for (const auto& entry : std::filesystem::directory_iterator(kBlenderWorlds, error)) {
             if (entry.path().extension() == ".exr") {
@@ -158,7 +157,7 @@ std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>
     }
     std::vector<NamedEnvironment> environments = lightingEnvironments(sources);
     for (NamedEnvironment& environment : environments) {
-        if (environment.environment->source.starts_with("builtin:")) {
+        if (builtinName(environment.environment->source)) {
             environment.name = "built-in " + environment.name;   // beside Blender's studio.exr
         }
     }

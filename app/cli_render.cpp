@@ -97,107 +97,114 @@ void renderChannel(const SceneInputs& inputs, const ChannelRequest& request, int
         reportPbrTally(tallyPbrChannel(shown), request.strictPbr ? PbrRanges::strict() : PbrRanges{});
     }
 }
-}  // namespace
 
-Command addRenderCommand(CLI::App& app) {
-    struct Options {
-        SceneInputs inputs;
-        int width = 800, height = 800, samples = 4;
-        std::string passes = "single", out, hdr;
-        bool reference = false;
-        int referenceSamples = 256;
-        std::string environmentMethod = "split-sum";
-        int environmentSamples = 16;
-        std::string channel;
-        bool channelSrgb = false;
-        bool pbrStrict = false;
-    };
-    auto options = std::make_shared<Options>();
-    CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
-    options->inputs.addOptions(*command, true, true);
-    options->inputs.view.addOptions(*command);
-    command->add_option("--width", options->width, "Image width")->check(CLI::Range(1, 16384));
-    command->add_option("--height", options->height, "Image height")->check(CLI::Range(1, 16384));
-    command->add_option("--passes", options->passes, "single: all lights in one pass; multi: one pass per light; "
-                        "specialised: one pass compiled for the scene's lights")
+struct RenderOptions {
+    SceneInputs inputs;
+    int width = 800, height = 800, samples = 4;
+    std::string passes = "single", out, hdr;
+    bool reference = false;
+    int referenceSamples = 256;
+    std::string environmentMethod = "split-sum";
+    int environmentSamples = 16;
+    std::string channel;
+    bool channelSrgb = false;
+    bool pbrStrict = false;
+};
+
+void addRenderOptions(CLI::App& command, RenderOptions& options) {
+    options.inputs.addOptions(command, true, true);
+    options.inputs.view.addOptions(command);
+    command.add_option("--width", options.width, "Image width")->check(CLI::Range(1, 16384));
+    command.add_option("--height", options.height, "Image height")->check(CLI::Range(1, 16384));
+    command.add_option("--passes", options.passes, "single: all lights in one pass; multi: one pass per light; "
+                       "specialised: one pass compiled for the scene's lights")
         ->check(CLI::IsMember({"single", "multi", "specialised"}));
-    command->add_option("--msaa", options->samples, "Samples per pixel (1 = none)")->check(CLI::Range(1, 16));
-    command->add_option("--out", options->out, "Output PNG")->required();
-    command->add_option("--hdr", options->hdr, "Also write the linear image (PFM), before exposure and tone map");
-    command->add_option("--environment-method", options->environmentMethod,
-                        "How an environment lights the mesh: split-sum (Karis 2013, the default), dominant (the split "
-                        "sum along the dominant direction) or stochastic (filtered importance samples; docs/LIGHTING.md)")
+    command.add_option("--msaa", options.samples, "Samples per pixel (1 = none)")->check(CLI::Range(1, 16));
+    command.add_option("--out", options.out, "Output PNG")->required();
+    command.add_option("--hdr", options.hdr, "Also write the linear image (PFM), before exposure and tone map");
+    command.add_option("--environment-method", options.environmentMethod,
+                       "How an environment lights the mesh: split-sum (Karis 2013, the default), dominant (the split "
+                       "sum along the dominant direction) or stochastic (filtered importance samples; docs/LIGHTING.md)")
         ->check(CLI::IsMember({"split-sum", "dominant", "stochastic"}));
-    command->add_option("--environment-samples", options->environmentSamples,
-                        "--environment-method stochastic: samples per pixel")
+    command.add_option("--environment-samples", options.environmentSamples,
+                       "--environment-method stochastic: samples per pixel")
         ->check(CLI::Range(1, 256));
-    command->add_flag("--reference", options->reference,
-                      "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights "
-                      "exactly), pass by pass; Ctrl+C writes what is done");
-    command->add_option("--reference-samples", options->referenceSamples,
-                        "--reference: estimator iterations per pixel (3 directions each)")
+    command.add_flag("--reference", options.reference,
+                     "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights "
+                     "exactly), pass by pass; Ctrl+C writes what is done");
+    command.add_option("--reference-samples", options.referenceSamples,
+                       "--reference: estimator iterations per pixel (3 directions each)")
         ->check(CLI::Range(1, 1 << 20));
-    command->add_option("--channel", options->channel,
-                        "A debug channel instead of the radiance, as data (no exposure or tone map; docs/INSPECTOR.md): " +
+    command.add_option("--channel", options.channel,
+                       "A debug channel instead of the radiance, as data (no exposure or tone map; docs/INSPECTOR.md): " +
                             channelNameList())
         ->check(CLI::Validator(
             [](std::string& name) {
                 return channelFromName(name) ? std::string() : "unknown channel \"" + name + "\" (known: " + channelNameList() + ")";
             },
             "CHANNEL"));
-    command->add_flag("--channel-srgb", options->channelSrgb,
-                      "--channel: the PNG sRGB-encoded, for colour channels (default: the values themselves)");
-    command->add_flag("--pbr-strict", options->pbrStrict,
-                      "--channel pbr-validation: the strict ranges (dielectric 50-240 sRGB, metal from 180)");
-    return [options] {
-        if (!options->channel.empty()) {
-            ChannelRequest request = *channelFromName(options->channel);   // the option's check passed it
-            request.srgb = options->channelSrgb;
-            request.strictPbr = options->pbrStrict;
-            renderChannel(options->inputs, request, options->width, options->height, options->reference, options->out,
-                          options->hdr);
-            return;
-        }
-        // The context first when the GPU renders: an environment the scene names is then
-        // prefiltered on it too.
-        std::optional<HeadlessContext> context;
-        if (!options->reference) {
-            context.emplace();
-        }
-        Scene scene = options->inputs.load();
-        AssetCache assets;
-        const PreparedScene prepared = options->inputs.prepare(scene, assets);
-        options->inputs.putMaterialOnParts(scene, prepared.model.get());   // `prepared` reads `scene`
-        if (options->reference) {
-            const RenderOutput output =
-                renderReferenceImage(prepared, options->width, options->height, options->referenceSamples);
-            const std::vector<uint8_t> png = encodePng(output.ldr);
-            if (!options->hdr.empty()) {
-                writeOutput(options->hdr, encodePfm(output.hdr));
-            }
-            writeOutput(options->out, png);
-            return;
-        }
-        Renderer renderer;
-        RenderSettings settings;
-        settings.width = options->width;
-        settings.height = options->height;
-        settings.path = *renderPathFromName(options->passes);
-        settings.samples = options->samples;
-        settings.environment = {*environmentMethodFromName(options->environmentMethod), options->environmentSamples};
-        // A one-off render keeps its peak memory down: strips of at most 16 MiB of
-        // multisampled colour, and the linear image read back only when asked for.
-        settings.maxTargetBytes = kOneOffTargetBytes;
-        settings.readHdr = !options->hdr.empty();
-        const RenderOutput output = renderer.render(prepared, settings);
-        // Encode both before writing either, so a failure leaves no output behind.
-        const std::vector<uint8_t> png = encodePng(output.ldr);
-        const std::vector<uint8_t> pfm = options->hdr.empty() ? std::vector<uint8_t>{} : encodePfm(output.hdr);
-        if (!options->hdr.empty()) {
-            writeOutput(options->hdr, pfm);
-        }
-        writeOutput(options->out, png);
-    };
+    command.add_flag("--channel-srgb", options.channelSrgb,
+                     "--channel: the PNG sRGB-encoded, for colour channels (default: the values themselves)");
+    command.add_flag("--pbr-strict", options.pbrStrict,
+                     "--channel pbr-validation: the strict ranges (dielectric 50-240 sRGB, metal from 180)");
+}
+
+// The PNG (and the PFM when asked for) of what `render` drew, both encoded before either is
+// written, so that a failure leaves no output behind.
+void writeRenderOutput(const RenderOptions& options, const RenderOutput& output) {
+    const std::vector<uint8_t> png = encodePng(output.ldr);
+    const std::vector<uint8_t> pfm = options.hdr.empty() ? std::vector<uint8_t>{} : encodePfm(output.hdr);
+    if (!options.hdr.empty()) {
+        writeOutput(options.hdr, pfm);
+    }
+    writeOutput(options.out, png);
+}
+
+RenderOutput renderOnGpu(const RenderOptions& options, const PreparedScene& prepared) {
+    Renderer renderer;
+    RenderSettings settings;
+    settings.width = options.width;
+    settings.height = options.height;
+    settings.path = *renderPathFromName(options.passes);
+    settings.samples = options.samples;
+    settings.environment = {*environmentMethodFromName(options.environmentMethod), options.environmentSamples};
+    // A one-off render keeps its peak memory down: strips of at most 16 MiB of
+    // multisampled colour, and the linear image read back only when asked for.
+    settings.maxTargetBytes = kOneOffTargetBytes;
+    settings.readHdr = !options.hdr.empty();
+    return renderer.render(prepared, settings);
+}
+
+void runRender(const RenderOptions& options) {
+    if (!options.channel.empty()) {
+        ChannelRequest request = *channelFromName(options.channel);   // the option's check passed it
+        request.srgb = options.channelSrgb;
+        request.strictPbr = options.pbrStrict;
+        renderChannel(options.inputs, request, options.width, options.height, options.reference, options.out,
+                      options.hdr);
+        return;
+    }
+    // The context first when the GPU renders: an environment the scene names is then
+    // prefiltered on it too.
+    std::optional<HeadlessContext> context;
+    if (!options.reference) {
+        context.emplace();
+    }
+    Scene scene = options.inputs.load();
+    AssetCache assets;
+    const PreparedScene prepared = options.inputs.prepare(scene, assets);
+    options.inputs.putMaterialOnParts(scene, prepared.model.get());   // `prepared` reads `scene`
+    writeRenderOutput(options, options.reference
+                                   ? renderReferenceImage(prepared, options.width, options.height, options.referenceSamples)
+                                   : renderOnGpu(options, prepared));
+}
+}  // namespace
+
+Command addRenderCommand(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command = app.add_subcommand("render", "Render a scene to an sRGB PNG (headless)");
+    addRenderOptions(*command, *options);
+    return [options] { runRender(*options); };
 }
 
 }  // namespace patina::cli

@@ -253,7 +253,7 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
                        RenderBenchResult& result) {
     RenderSettings specialised = settings;
     specialised.path = RenderPath::Specialised;
-    const std::shared_ptr<const Environment> studio = prepareEnvironment(*builtinEnvironment("studio"), "builtin:studio");
+    const std::shared_ptr<const Environment> studio = prepareEnvironment(*builtinEnvironment("studio"), builtinSource("studio"));
     for (const bool environment : {false, true}) {
         for (const BrdfModelId model : {BrdfModelId::Epic, BrdfModelId::Gltf}) {
             Scene scene = environment ? defaultScene() : renderBenchScene(8);

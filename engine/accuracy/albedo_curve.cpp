@@ -19,7 +19,7 @@ namespace {
 // image for the ground truth).
 const Environment& whiteFurnace() {
     static const std::shared_ptr<const Environment> white =
-        prepareEnvironment(*builtinEnvironment("white"), "builtin:white");
+        prepareEnvironment(*builtinEnvironment("white"), builtinSource("white"));
     return *white;
 }
 }  // namespace

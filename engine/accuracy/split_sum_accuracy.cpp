@@ -124,6 +124,7 @@ Grid gridFor(bool quick) {
 struct PointEstimates {
     glm::vec3 truth0, truth1, truthSe0, truthSe1;   // the ground truth at F0 = 0 and F0 = 1
     glm::vec3 ldChain, ldDominant, ldExact, ldMoreSamples;
+    bool hasMoreSamples = false;   // ldMoreSamples measured (full runs)
     glm::vec2 abExact, abShipped;
     std::vector<std::vector<glm::vec3>> stochastic;   // [count][F0 index], mean |error| kept apart
 };
@@ -155,19 +156,160 @@ std::vector<std::string> splitSumMethods(bool quick) {
     return methods;
 }
 
+namespace {
+constexpr unsigned kExactSamples = 4096;   // GGX samples for the exact LD and (A, B)
+
+// One environment as each point reads it: the source it is prefiltered from, that source
+// prefiltered at more samples (full runs only), and the ground truth's view of it.
+struct MeasuredEnvironment {
+    const Environment& environment;
+    const CubeChain& source;
+    const CubeChain& moreSamples;   // empty in --quick
+    const ReferenceEnvironment& reference;
+    int referenceSamples;
+};
+
+// The stochastic mode's mean |error| over the grid's jitters at each F0, against the truth
+// (linear in F0), kept as (mean |error| of the luminance, 0, 0).
+std::vector<glm::vec3> stochasticErrors(const Grid& grid, const MeasuredEnvironment& measured, const PointEstimates& e,
+                                        float roughness, unsigned count, glm::vec3 N, glm::vec3 V) {
+    std::vector<glm::vec3> perF0;
+    for (float f0 : grid.f0) {
+        const glm::vec3 truth = e.truth0 + f0 * (e.truth1 - e.truth0);
+        double error = 0.0;
+        for (int j = 0; j < grid.jitters; ++j) {
+            const glm::vec2 jitter(std::fmod(0.618034f * float(j + 1), 1.0f),
+                                   std::fmod(0.754878f * float(j + 1) + 0.31f, 1.0f));
+            const glm::vec3 s = stochasticEnvironmentOnCpu(BrdfModelId::Epic, metal(f0, roughness), measured.environment,
+                                                           measured.source, 1.0f, 0.0f, N, V, count, jitter);
+            error += std::abs(double(luminance(s)) - double(luminance(truth)));
+        }
+        perF0.emplace_back(float(error / grid.jitters), 0.0f, 0.0f);
+    }
+    return perF0;
+}
+
+// Everything measured at grid point `index` (normal, NoV, r: r fastest).
+PointEstimates estimatePoint(const Grid& grid, const MeasuredEnvironment& measured, size_t index) {
+    const size_t r = index % grid.roughness.size();
+    const size_t v = index / grid.roughness.size() % grid.NoV.size();
+    const size_t n = index / grid.roughness.size() / grid.NoV.size();
+    const glm::vec3 N = grid.normals[n];
+    const glm::vec3 V = viewAt(N, grid.NoV[v], int(n));
+    const float NoV = std::max(glm::dot(N, V), 1e-4f);
+    PointEstimates e;
+    ReferenceOptions referenceOptions;
+    referenceOptions.samples = measured.referenceSamples;
+    referenceOptions.seed = 0x5851F42D4C957F2Dull * (index + 1);
+    referenceOptions.diffuse = false;
+    const ReferenceEstimate t0 = referenceRadiance(BrdfModelId::Epic, metal(0.0f, grid.roughness[r]), measured.reference,
+                                                   {}, glm::vec3(0), N, V, referenceOptions);
+    const ReferenceEstimate t1 = referenceRadiance(BrdfModelId::Epic, metal(1.0f, grid.roughness[r]), measured.reference,
+                                                   {}, glm::vec3(0), N, V, referenceOptions);
+    e.truth0 = t0.value;
+    e.truth1 = t1.value;
+    e.truthSe0 = t0.standardError;
+    e.truthSe1 = t1.standardError;
+    const Environment& environment = measured.environment;
+    const shader::SurfaceMaterial m = metal(1.0f, grid.roughness[r]);
+    const glm::vec3 R = glm::reflect(-V, N);
+    const float lod = shader::roughnessToLod(m.roughness, environment.maxLod());
+    const std::function<glm::vec3(glm::vec3, float)> readSource = [&](glm::vec3 d, float l) {
+        return sampleCube(measured.source, d, l);
+    };
+    e.ldChain = sampleCube(environment.prefiltered, R, lod);
+    e.ldDominant = sampleCube(environment.prefiltered, shader::environmentReflection(m, N, V, true), lod);
+    e.ldExact = shader::prefilterEnvironment(readSource, R, m.roughness, kExactSamples,
+                                             float(measured.source.front().size));
+    if (!measured.moreSamples.empty()) {
+        e.ldMoreSamples = sampleCube(measured.moreSamples, R, lod);
+        e.hasMoreSamples = true;
+    }
+    e.abShipped = environmentBrdf(BrdfModelId::Epic, NoV, m.roughness);
+    e.abExact = integrateEnvironmentBrdf(BrdfModelId::Epic, NoV, m.roughness, kExactSamples);
+    for (unsigned count : grid.stochasticCounts) {
+        e.stochastic.push_back(stochasticErrors(grid, measured, e, grid.roughness[r], count, N, V));
+    }
+    return e;
+}
+
+// Each method's relative error summed over methods in the order first met.
+class MethodSums {
+public:
+    void add(const std::string& method, double error) {
+        auto found = std::find_if(sums_.begin(), sums_.end(), [&](auto& p) { return p.first == method; });
+        if (found == sums_.end()) {
+            sums_.emplace_back(method, error);
+        } else {
+            found->second += error;
+        }
+    }
+    const std::vector<std::pair<std::string, double>>& sums() const { return sums_; }
+
+private:
+    std::vector<std::pair<std::string, double>> sums_;
+};
+
+// One point's error by every method at F0 index `f`, relative to the truth; returns the truth's
+// own relative standard error.
+double addPointErrors(const Grid& grid, const std::vector<TableVariant>& tables, const PointEstimates& e, size_t v,
+                      size_t r, size_t f, MethodSums& sums) {
+    const float f0 = grid.f0[f];
+    const double truth = luminance(e.truth0 + f0 * (e.truth1 - e.truth0));
+    const double se = luminance(e.truthSe0 + f0 * (e.truthSe1 - e.truthSe0));
+    const double floor = std::max(truth, 1e-6);
+    auto split = [&](glm::vec3 ld, glm::vec2 ab) { return double(luminance(ld * (f0 * ab.x + ab.y))); };
+    const double exact = split(e.ldExact, e.abExact);
+    sums.add(kSplitSum, std::abs(split(e.ldChain, e.abShipped) - truth) / floor);
+    sums.add(kDominant, std::abs(split(e.ldDominant, e.abShipped) - truth) / floor);
+    for (size_t c = 0; c < grid.stochasticCounts.size(); ++c) {
+        sums.add(stochasticName(grid.stochasticCounts[c]), double(e.stochastic[c][f].x) / floor);
+    }
+    sums.add(kSplit, std::abs(exact - truth) / floor);
+    sums.add(kMips, std::abs(split(e.ldChain, e.abExact) - exact) / floor);
+    if (e.hasMoreSamples) {
+        sums.add(kMoreSamples, std::abs(split(e.ldMoreSamples, e.abExact) - exact) / floor);
+    }
+    const float NoV = std::max(grid.NoV[v], 1e-4f);
+    const float roughness = metal(1.0f, grid.roughness[r]).roughness;
+    for (const TableVariant& table : tables) {
+        sums.add(table.name, std::abs(split(e.ldExact, lookup(table, NoV, roughness)) - exact) / floor);
+    }
+    return se / floor;
+}
+
+// Rows: each method at each (NoV, r, F0), the mean over normals.
+void appendRows(const Grid& grid, const std::vector<TableVariant>& tables, const std::string& environment,
+                const std::vector<PointEstimates>& estimates, std::vector<SplitSumErrorRow>& rows) {
+    for (size_t v = 0; v < grid.NoV.size(); ++v) {
+        for (size_t r = 0; r < grid.roughness.size(); ++r) {
+            for (size_t f = 0; f < grid.f0.size(); ++f) {
+                MethodSums sums;
+                double truthSe = 0.0;
+                for (size_t n = 0; n < grid.normals.size(); ++n) {
+                    const PointEstimates& e = estimates[(n * grid.NoV.size() + v) * grid.roughness.size() + r];
+                    truthSe += addPointErrors(grid, tables, e, v, r, f, sums);
+                }
+                const double count = double(grid.normals.size());
+                for (const auto& [method, sum] : sums.sums()) {
+                    rows.push_back(
+                        {environment, method, grid.NoV[v], grid.roughness[r], grid.f0[f], sum / count, truthSe / count});
+                }
+            }
+        }
+    }
+}
+}  // namespace
+
 SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environments,
                                  const SplitSumAccuracyOptions& options) {
     const Grid grid = gridFor(options.quick);
     const int referenceSamples = options.referenceSamples > 0 ? options.referenceSamples : options.quick ? 256 : 4096;
     const std::vector<TableVariant> tables = tableVariants(options.quick);
-    constexpr unsigned kExactSamples = 4096;   // GGX samples for the exact LD and (A, B)
     SplitSumAccuracy result;
     for (const NamedEnvironment& named : environments) {
         const Environment& environment = *named.environment;
         const CubeChain source = sourceMipChain(environment);
-        const std::function<glm::vec3(glm::vec3, float)> readSource = [&](glm::vec3 d, float lod) {
-            return sampleCube(source, d, lod);
-        };
         CubeChain moreSamples;
         if (!options.quick) {
             PrefilterSettings settings = environment.settings.prefilter;
@@ -176,113 +318,11 @@ SplitSumAccuracy measureSplitSum(const std::vector<NamedEnvironment>& environmen
         }
         const EnvironmentDistribution distribution(environment.image);
         const ReferenceEnvironment reference{&environment, &distribution, 1.0f, 0.0f};
-        const float maxLod = environment.maxLod();
-        const float faceSize = float(source.front().size);
-
+        const MeasuredEnvironment measured{environment, source, moreSamples, reference, referenceSamples};
         // Every (normal, NoV, r) on every core.
-        const size_t points = grid.normals.size() * grid.NoV.size() * grid.roughness.size();
-        std::vector<PointEstimates> estimates(points);
-        parallelFor(points, [&](size_t index) {
-            const size_t r = index % grid.roughness.size();
-            const size_t v = index / grid.roughness.size() % grid.NoV.size();
-            const size_t n = index / grid.roughness.size() / grid.NoV.size();
-            const glm::vec3 N = grid.normals[n];
-            const glm::vec3 V = viewAt(N, grid.NoV[v], int(n));
-            const float NoV = std::max(glm::dot(N, V), 1e-4f);
-            PointEstimates& e = estimates[index];
-            ReferenceOptions referenceOptions;
-            referenceOptions.samples = referenceSamples;
-            referenceOptions.seed = 0x5851F42D4C957F2Dull * (index + 1);
-            referenceOptions.diffuse = false;
-            const ReferenceEstimate t0 =
-                referenceRadiance(BrdfModelId::Epic, metal(0.0f, grid.roughness[r]), reference, {}, glm::vec3(0), N, V,
-                                  referenceOptions);
-            const ReferenceEstimate t1 =
-                referenceRadiance(BrdfModelId::Epic, metal(1.0f, grid.roughness[r]), reference, {}, glm::vec3(0), N, V,
-                                  referenceOptions);
-            e.truth0 = t0.value;
-            e.truth1 = t1.value;
-            e.truthSe0 = t0.standardError;
-            e.truthSe1 = t1.standardError;
-            const shader::SurfaceMaterial m = metal(1.0f, grid.roughness[r]);
-            const glm::vec3 R = glm::reflect(-V, N);
-            const float lod = shader::roughnessToLod(m.roughness, maxLod);
-            e.ldChain = sampleCube(environment.prefiltered, R, lod);
-            e.ldDominant = sampleCube(environment.prefiltered, shader::environmentReflection(m, N, V, true), lod);
-            e.ldExact = shader::prefilterEnvironment(readSource, R, m.roughness, kExactSamples, faceSize);
-            if (!moreSamples.empty()) {
-                e.ldMoreSamples = sampleCube(moreSamples, R, lod);
-            }
-            e.abShipped = environmentBrdf(BrdfModelId::Epic, NoV, m.roughness);
-            e.abExact = integrateEnvironmentBrdf(BrdfModelId::Epic, NoV, m.roughness, kExactSamples);
-            for (unsigned count : grid.stochasticCounts) {
-                std::vector<glm::vec3> perF0;
-                for (float f0 : grid.f0) {
-                    // The mean |error| over jitters, kept as (sum of |error| lum, 0, 0).
-                    glm::vec3 truth = t0.value + f0 * (t1.value - t0.value);
-                    double error = 0.0;
-                    for (int j = 0; j < grid.jitters; ++j) {
-                        const glm::vec2 jitter(std::fmod(0.618034f * float(j + 1), 1.0f),
-                                               std::fmod(0.754878f * float(j + 1) + 0.31f, 1.0f));
-                        const glm::vec3 s = stochasticEnvironmentOnCpu(BrdfModelId::Epic, metal(f0, grid.roughness[r]),
-                                                                       environment, source, 1.0f, 0.0f, N, V, count,
-                                                                       jitter);
-                        error += std::abs(double(luminance(s)) - double(luminance(truth)));
-                    }
-                    perF0.emplace_back(float(error / grid.jitters), 0.0f, 0.0f);
-                }
-                e.stochastic.push_back(std::move(perF0));
-            }
-        });
-
-        // Rows: each method at each (NoV, r, F0), the mean over normals.
-        for (size_t v = 0; v < grid.NoV.size(); ++v) {
-            for (size_t r = 0; r < grid.roughness.size(); ++r) {
-                for (size_t f = 0; f < grid.f0.size(); ++f) {
-                    const float f0 = grid.f0[f];
-                    std::vector<std::pair<std::string, double>> sums;
-                    double truthSe = 0.0;
-                    auto add = [&](const std::string& method, double error) {
-                        auto found = std::find_if(sums.begin(), sums.end(), [&](auto& p) { return p.first == method; });
-                        if (found == sums.end()) {
-                            sums.emplace_back(method, error);
-                        } else {
-                            found->second += error;
-                        }
-                    };
-                    for (size_t n = 0; n < grid.normals.size(); ++n) {
-                        const PointEstimates& e =
-                            estimates[(n * grid.NoV.size() + v) * grid.roughness.size() + r];
-                        const double truth = luminance(e.truth0 + f0 * (e.truth1 - e.truth0));
-                        const double se = luminance(e.truthSe0 + f0 * (e.truthSe1 - e.truthSe0));
-                        const double floor = std::max(truth, 1e-6);
-                        truthSe += se / floor;
-                        auto split = [&](glm::vec3 ld, glm::vec2 ab) { return double(luminance(ld * (f0 * ab.x + ab.y))); };
-                        const double exact = split(e.ldExact, e.abExact);
-                        add(kSplitSum, std::abs(split(e.ldChain, e.abShipped) - truth) / floor);
-                        add(kDominant, std::abs(split(e.ldDominant, e.abShipped) - truth) / floor);
-                        for (size_t c = 0; c < grid.stochasticCounts.size(); ++c) {
-                            add(stochasticName(grid.stochasticCounts[c]), double(e.stochastic[c][f].x) / floor);
-                        }
-                        add(kSplit, std::abs(exact - truth) / floor);
-                        add(kMips, std::abs(split(e.ldChain, e.abExact) - exact) / floor);
-                        if (!moreSamples.empty()) {
-                            add(kMoreSamples, std::abs(split(e.ldMoreSamples, e.abExact) - exact) / floor);
-                        }
-                        const float NoV = std::max(grid.NoV[v], 1e-4f);
-                        const float roughness = metal(1.0f, grid.roughness[r]).roughness;
-                        for (const TableVariant& table : tables) {
-                            add(table.name, std::abs(split(e.ldExact, lookup(table, NoV, roughness)) - exact) / floor);
-                        }
-                    }
-                    const double count = double(grid.normals.size());
-                    for (const auto& [method, sum] : sums) {
-                        result.rows.push_back(
-                            {named.name, method, grid.NoV[v], grid.roughness[r], f0, sum / count, truthSe / count});
-                    }
-                }
-            }
-        }
+        std::vector<PointEstimates> estimates(grid.normals.size() * grid.NoV.size() * grid.roughness.size());
+        parallelFor(estimates.size(), [&](size_t index) { estimates[index] = estimatePoint(grid, measured, index); });
+        appendRows(grid, tables, named.name, estimates, result.rows);
     }
     return result;
 }

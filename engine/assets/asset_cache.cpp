@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/content_hash.h"
+#include "environment/builtin_environments.h"
 #include "files/input_error.h"
 #include "gltf/files.h"
 #include "gltf/images.h"
@@ -228,7 +229,7 @@ std::shared_ptr<const Environment> AssetCache::environment(const std::string& so
                                                            const Progress& progress) {
     const EnvironmentSource read = readEnvironmentSource(source, settings);
     const Key key{source, read.key};
-    const bool builtin = source.starts_with("builtin:");
+    const bool builtin = builtinName(source).has_value();
     std::shared_ptr<const Environment> environment;
     {
         std::lock_guard lock(mutex_);

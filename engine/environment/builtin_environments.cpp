@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <glm/geometric.hpp>
 
@@ -79,6 +80,13 @@ std::optional<HdrImage> builtinEnvironment(std::string_view name) {
         return studio();
     }
     return std::nullopt;
+}
+
+std::string environmentName(std::string_view source) {
+    if (const auto name = builtinName(source)) {
+        return std::string(*name);
+    }
+    return std::filesystem::path(source).stem().string();
 }
 
 }  // namespace patina

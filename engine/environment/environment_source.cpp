@@ -108,8 +108,8 @@ bool deserialise(const std::vector<uint8_t>& bytes, Environment& environment) {
 }
 
 HdrImage decodeSource(const EnvironmentSource& read) {
-    if (read.source.starts_with("builtin:")) {
-        return *builtinEnvironment(std::string_view(read.source).substr(8));
+    if (const auto name = builtinName(read.source)) {
+        return *builtinEnvironment(*name);
     }
     return decodeEnvironmentImage(read.bytes, read.source);
 }
@@ -171,10 +171,10 @@ std::filesystem::path environmentCacheFolder() {
 }
 
 EnvironmentSource readEnvironmentSource(const std::string& source, const EnvironmentSettings& settings) {
-    if (source.starts_with("builtin:")) {
+    if (const auto name = builtinName(source)) {
         // Known by name: the image is generated once, by makeEnvironment, and only on a miss.
         const auto names = builtinEnvironmentNames();
-        if (std::find(names.begin(), names.end(), std::string_view(source).substr(8)) == names.end()) {
+        if (std::find(names.begin(), names.end(), *name) == names.end()) {
             throw InputError(source + ": no such built-in environment");
         }
         return {source, {}, settingsHash(settings, hashBytes(source.data(), source.size()))};

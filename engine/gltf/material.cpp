@@ -4,6 +4,7 @@
 
 #include "gltf/values.h"
 #include "files/input_error.h"
+#include "shading/shading.h"
 
 namespace patina::gltf {
 
@@ -56,7 +57,7 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
         throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1 (and not 0)");
     }
     const double f0 = std::min(f0FromIor(ior) * largestColor, 1.0) * specularFactor;
-    result.specular = unit(f0 / kF0PerSpecular);
+    result.specular = unit(f0 / double(shader::F0_PER_SPECULAR));
     // KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor, both 0 by default
     // (no coat). Its maps are read beside the core maps (model_materials.cpp).
     const std::string clearcoatAt = what + "/extensions/" + kClearcoat;
@@ -67,7 +68,7 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
 }
 
 Json materialToGltf(const Material& material) {
-    const double color = exact(float(kF0PerSpecular * double(material.specular) / f0FromIor(kExportIor)));
+    const double color = exact(float(double(shader::F0_PER_SPECULAR) * double(material.specular) / f0FromIor(kExportIor)));
     const glm::vec3& base = material.baseColor;
     Json json{
         {"name", material.name},

@@ -13,7 +13,6 @@
 
 namespace patina::gltf {
 
-constexpr double kF0PerSpecular = 0.08;   // Karis 2013, as in shaders/shared/brdf.glsl
 constexpr double kExportIor = 1.5;        // glTF's own default: F0 = 0.04
 
 // ((ior - 1) / (ior + 1))^2: normal-incidence reflectance against air.

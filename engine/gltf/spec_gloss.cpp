@@ -142,7 +142,7 @@ void convertSpecularGlossiness(Model& model, const std::vector<SpecGlossMaterial
             material.baseColor = {};
             material.metallicRoughness = {};
         }
-        material.factors.specular = float(kDielectricF0 / kF0PerSpecular);   // the conversion's dielectric F0
+        material.factors.specular = float(kDielectricF0 / double(shader::F0_PER_SPECULAR));   // the conversion's dielectric F0
         model.notes.push_back("material \"" + material.name +
                               "\": specular-glossiness (KHR_materials_pbrSpecularGlossiness) converted to "
                               "metallic-roughness by the Khronos conversion, " + how);

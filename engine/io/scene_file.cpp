@@ -59,15 +59,14 @@ bool nestsDeeperThan(const Json& value, int levels) {
 
 // "builtin:NAME" of a known built-in, or a path made absolute against the scene's folder.
 std::string environmentSource(JsonObjectReader& reader, const std::filesystem::path& baseDirectory) {
-    const std::string value = reader.string("source", "builtin:studio");
-    if (value.starts_with("builtin:")) {
-        const std::string_view name = std::string_view(value).substr(8);
+    const std::string value = reader.string("source", builtinSource("studio"));
+    if (const auto name = builtinName(value)) {
         std::string known;
         for (std::string_view builtin : builtinEnvironmentNames()) {
-            if (builtin == name) {
+            if (builtin == *name) {
                 return value;
             }
-            known += (known.empty() ? "builtin:" : ", builtin:") + std::string(builtin);
+            known += (known.empty() ? "" : ", ") + builtinSource(builtin);
         }
         reader.fail("source", "unknown built-in environment " + shortJson(value) + " (known: " + known + ")");
     }

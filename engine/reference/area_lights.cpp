@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -186,118 +187,137 @@ glm::dvec3 areaLightRadiance(const shader::PackedLight& light, glm::vec3 P) {
     return glm::dvec3(light.radiance) * falloff / (std::numbers::pi * c.radius * (c.radius + 0.5 * c.length()));
 }
 
-ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMaterial& material,
-                                     const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
-                                     glm::vec3 V, const ReferenceOptions& options) {
-    N = shader::safeNormalize(N);
-    V = shader::safeNormalize(V);
-    ReferenceEstimate estimate;
-    std::vector<shader::PackedLight> areaLights;
-    for (const shader::PackedLight& light : lights) {
-        if (isAreaLight(light)) {
-            areaLights.push_back(light);
-        }
-    }
-    if (areaLights.empty() || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
-        return estimate;
-    }
+namespace {
+// One sphere or tube light made ready for the estimate at a point x.
+struct PreparedAreaLight {
+    Capsule shape;
+    glm::dvec3 radiance;
+    bool inside = false;   // x within the light
+    // Outside a sphere: the cone towards it, sampled uniformly in solid angle.
+    bool cone = false;
+    glm::dvec3 axis{0.0};
+    double oneMinusCosMax = 0.0, conePdf = 0.0;
+};
+
+PreparedAreaLight prepareAreaLight(const shader::PackedLight& light, glm::vec3 P) {
     const glm::dvec3 x(P);
-    const glm::dvec3 n(N);
-    struct Prepared {
-        Capsule shape;
-        glm::dvec3 radiance;
-        bool inside;
-        // Outside a sphere: the cone towards it.
-        bool cone;
-        glm::dvec3 axis;
-        double oneMinusCosMax, conePdf;
-    };
-    std::vector<Prepared> prepared;
-    for (const shader::PackedLight& light : areaLights) {
-        Prepared p{capsuleOf(light), areaLightRadiance(light, P), false, false, glm::dvec3(0.0), 0.0, 0.0};
-        p.inside = contains(p.shape, x);
-        if (light.type == shader::LIGHT_SPHERE && !p.inside && p.shape.radius > 0.0) {
-            const glm::dvec3 toCentre = p.shape.a - x;
-            const double d = glm::length(toCentre);
-            const double sinSquared = std::min(p.shape.radius * p.shape.radius / (d * d), 1.0);
-            p.cone = true;
-            p.axis = toCentre / d;
-            // 1 - cos theta_max without cancelling: sin^2 / (1 + cos).
-            p.oneMinusCosMax = sinSquared / (1.0 + std::sqrt(1.0 - sinSquared));
-            p.conePdf = 1.0 / (2.0 * std::numbers::pi * p.oneMinusCosMax);
-        }
-        prepared.push_back(p);
+    PreparedAreaLight p{capsuleOf(light), areaLightRadiance(light, P)};
+    p.inside = contains(p.shape, x);
+    if (light.type == shader::LIGHT_SPHERE && !p.inside && p.shape.radius > 0.0) {
+        const glm::dvec3 toCentre = p.shape.a - x;
+        const double d = glm::length(toCentre);
+        const double sinSquared = std::min(p.shape.radius * p.shape.radius / (d * d), 1.0);
+        p.cone = true;
+        p.axis = toCentre / d;
+        // 1 - cos theta_max without cancelling: sin^2 / (1 + cos).
+        p.oneMinusCosMax = sinSquared / (1.0 + std::sqrt(1.0 - sinSquared));
+        p.conePdf = 1.0 / (2.0 * std::numbers::pi * p.oneMinusCosMax);
     }
-    const shader::Clearcoat coat = referenceCoat(options, N, V);
-    auto integrand = [&](const Prepared& light, glm::dvec3 L) {
-        const float NoL = float(glm::dot(n, L));
+    return p;
+}
+
+// The light strategy's pdf of direction L from x, 0 where L misses the light.
+double lightPdf(const PreparedAreaLight& light, glm::dvec3 x, glm::dvec3 L) {
+    if (light.cone) {
+        const glm::dvec3 across = glm::cross(L, light.axis);
+        const double sinSquared = glm::dot(across, across);
+        const double maxSinSquared = light.oneMinusCosMax * (2.0 - light.oneMinusCosMax);
+        return glm::dot(L, light.axis) > 0.0 && sinSquared <= maxSinSquared ? light.conePdf : 0.0;
+    }
+    const SurfaceHit hit = firstHit(light.shape, x, L);
+    return hit.found ? areaPdf(light.shape, hit.distance, hit.normal, L) : 0.0;
+}
+
+// The shading point's side of the estimate: f(L) NoL by the lobes asked for, and the GGX pdf.
+struct AreaLightIntegrand {
+    BrdfModelId model;
+    const shader::SurfaceMaterial& material;
+    glm::vec3 N, V;
+    const ReferenceOptions& options;
+    shader::Clearcoat coat;
+
+    glm::dvec3 operator()(const PreparedAreaLight& light, glm::dvec3 L) const {
+        const float NoL = float(glm::dot(glm::dvec3(N), L));
         if (!(NoL > 0.0f)) {
             return glm::dvec3(0.0);
         }
         const shader::BrdfValue f = evaluateBrdf(model, material, N, V, glm::vec3(L));
         return light.radiance * glm::dvec3(coatedBrdf(f, coat, V, glm::vec3(L), options)) * double(std::min(NoL, 1.0f));
-    };
-    auto ggxPdfOf = [&](glm::dvec3 L) { return double(ggxPdf(N, V, glm::vec3(L), material.alpha)); };
-    // The light strategy's pdf of direction L, and whether L reaches the light at all.
-    auto lightPdf = [&](const Prepared& light, glm::dvec3 L) {
-        if (light.cone) {
-            const glm::dvec3 across = glm::cross(L, light.axis);
-            const double sinSquared = glm::dot(across, across);
-            const double maxSinSquared = light.oneMinusCosMax * (2.0 - light.oneMinusCosMax);
-            return glm::dot(L, light.axis) > 0.0 && sinSquared <= maxSinSquared ? light.conePdf : 0.0;
-        }
-        const SurfaceHit hit = firstHit(light.shape, x, L);
-        return hit.found ? areaPdf(light.shape, hit.distance, hit.normal, L) : 0.0;
-    };
+    }
+    double ggx(glm::dvec3 L) const { return double(ggxPdf(N, V, glm::vec3(L), material.alpha)); }
+};
 
+using Uniform = std::function<double()>;
+
+// The light's own strategy: one direction towards it, MIS-weighted against GGX sampling.
+glm::dvec3 sampleLight(const PreparedAreaLight& light, glm::dvec3 x, const AreaLightIntegrand& f, const Uniform& u) {
+    if (light.cone) {
+        const double oneMinusCos = u() * light.oneMinusCosMax;
+        const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
+        const double phi = 2.0 * std::numbers::pi * u();
+        glm::dvec3 e1, e2;
+        frameAround(light.axis, e1, e2);
+        const glm::dvec3 L =
+            glm::normalize(sinTheta * (std::cos(phi) * e1 + std::sin(phi) * e2) + (1.0 - oneMinusCos) * light.axis);
+        return f(light, L) * misWeightOverPdf(light.conePdf, f.ggx(L));
+    }
+    const double u0 = u(), u1 = u(), u2 = u();
+    const SurfacePoint q = sampleCapsule(light.shape, {u0, u1, u2});
+    const glm::dvec3 toPoint = q.position - x;
+    const double distance = glm::length(toPoint);
+    const glm::dvec3 L = toPoint / distance;
+    // From outside, a point facing away lies behind the capsule's near side.
+    if (distance > 0.0 && (light.inside || glm::dot(q.normal, L) < 0.0)) {
+        const double pdf = areaPdf(light.shape, distance, q.normal, L);
+        return f(light, L) * misWeightOverPdf(pdf, f.ggx(L));
+    }
+    return glm::dvec3(0.0);
+}
+
+// GGX half-vector sampling (Karis 2013's sampler, shaders/shared/ibl.glsl): the ray counts where
+// it reaches the light, MIS-weighted against the light's strategy.
+glm::dvec3 sampleGgx(const PreparedAreaLight& light, glm::dvec3 x, const AreaLightIntegrand& f, const Uniform& u) {
+    // Drawn in a fixed order: as two arguments of one call their order was the compiler's (GCC's,
+    // second first, is kept: the same estimates as before).
+    const float u1 = float(u()), u0 = float(u());
+    const glm::vec3 H = shader::importanceSampleGGX(glm::vec2(u0, u1), f.material.alpha, f.N);
+    const glm::dvec3 L = glm::normalize(glm::dvec3(2.0f * glm::dot(f.V, H) * H - f.V));
+    const double ggx = f.ggx(L);
+    const double other = lightPdf(light, x, L);
+    return ggx > 0.0 && other > 0.0 ? f(light, L) * misWeightOverPdf(ggx, other) : glm::dvec3(0.0);
+}
+}  // namespace
+
+ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                     const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
+                                     glm::vec3 V, const ReferenceOptions& options) {
+    N = shader::safeNormalize(N);
+    V = shader::safeNormalize(V);
+    std::vector<PreparedAreaLight> prepared;
+    for (const shader::PackedLight& light : lights) {
+        if (isAreaLight(light)) {
+            prepared.push_back(prepareAreaLight(light, P));
+        }
+    }
+    if (prepared.empty() || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
+        return {};
+    }
+    const glm::dvec3 x(P);
+    const AreaLightIntegrand integrand{model, material, N, V, options, referenceCoat(options, N, V)};
     std::mt19937_64 random(options.seed ^ 0xA5EA11A5EA11A5EAull);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    glm::dvec3 sum(0.0), sumSquares(0.0);
+    const Uniform u = [&] { return uniform(random); };
+    SampleMoments moments;
     for (int i = 0; i < options.samples; ++i) {
         glm::dvec3 sample(0.0);
-        for (const Prepared& light : prepared) {
-            // The light's own strategy.
-            if (light.cone) {
-                const double oneMinusCos = uniform(random) * light.oneMinusCosMax;
-                const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
-                const double phi = 2.0 * std::numbers::pi * uniform(random);
-                glm::dvec3 e1, e2;
-                frameAround(light.axis, e1, e2);
-                const glm::dvec3 L = glm::normalize(sinTheta * (std::cos(phi) * e1 + std::sin(phi) * e2) +
-                                                    (1.0 - oneMinusCos) * light.axis);
-                sample += integrand(light, L) * misWeightOverPdf(light.conePdf, ggxPdfOf(L));
-            } else {
-                const SurfacePoint q = sampleCapsule(light.shape, {uniform(random), uniform(random), uniform(random)});
-                const glm::dvec3 toPoint = q.position - x;
-                const double distance = glm::length(toPoint);
-                const glm::dvec3 L = toPoint / distance;
-                // From outside, a point facing away lies behind the capsule's near side.
-                if (distance > 0.0 && (light.inside || glm::dot(q.normal, L) < 0.0)) {
-                    const double pdf = areaPdf(light.shape, distance, q.normal, L);
-                    sample += integrand(light, L) * misWeightOverPdf(pdf, ggxPdfOf(L));
-                }
-            }
-            // GGX half-vector sampling (Karis 2013's sampler, shaders/shared/ibl.glsl); the ray
-            // counts where it reaches the light.
-            const glm::vec3 H = shader::importanceSampleGGX(glm::vec2(float(uniform(random)), float(uniform(random))),
-                                                            material.alpha, N);
-            const glm::dvec3 L = glm::normalize(glm::dvec3(2.0f * glm::dot(V, H) * H - V));
-            const double ggx = ggxPdfOf(L);
-            const double other = lightPdf(light, L);
-            if (ggx > 0.0 && other > 0.0) {
-                sample += integrand(light, L) * misWeightOverPdf(ggx, other);
-            }
+        for (const PreparedAreaLight& light : prepared) {
+            sample += sampleLight(light, x, integrand, u);
+            sample += sampleGgx(light, x, integrand, u);
         }
-        sum += sample;
-        sumSquares += sample * sample;
+        moments.add(sample);
     }
     const double count = double(options.samples);
-    const glm::dvec3 mean = sum / count;
-    const glm::dvec3 variance =
-        glm::max(sumSquares / count - mean * mean, glm::dvec3(0.0)) / std::max(count - 1.0, 1.0);
-    estimate.value = glm::vec3(mean);
-    estimate.standardError = glm::vec3(glm::sqrt(variance));
-    return estimate;
+    return {glm::vec3(moments.mean(count)), glm::vec3(glm::sqrt(moments.varianceOfMean(count)))};
 }
 
 }  // namespace patina

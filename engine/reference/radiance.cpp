@@ -114,7 +114,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     const int strategies = coated ? 4 : 3;
     std::mt19937_64 random(options.seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    glm::dvec3 sum(0.0), sumSquares(0.0);
+    SampleMoments moments;
     for (int i = 0; i < options.samples; ++i) {
         glm::vec3 L[4];
         const glm::vec3 H = shader::importanceSampleGGX(glm::vec2(uniform(random), uniform(random)), material.alpha, N);
@@ -135,15 +135,12 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
                 x += glm::dvec3(integrand(L[k]) * (own / squares));   // (own^2 / squares) / own
             }
         }
-        sum += x;
-        sumSquares += x * x;
+        moments.add(x);
     }
     const double n = double(options.samples);
-    const glm::dvec3 mean = sum / n;
     const double occlusion = options.indirectOcclusion;
-    const glm::dvec3 variance = glm::max(sumSquares / n - mean * mean, glm::dvec3(0.0)) / std::max(n - 1.0, 1.0) *
-                                (occlusion * occlusion);
-    estimate.value += glm::vec3(mean * occlusion);
+    const glm::dvec3 variance = moments.varianceOfMean(n) * (occlusion * occlusion);
+    estimate.value += glm::vec3(moments.mean(n) * occlusion);
     // Independent estimates: their variances add.
     estimate.standardError = glm::vec3(glm::sqrt(variance + glm::dvec3(estimate.standardError * estimate.standardError)));
     return estimate;

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -38,6 +39,21 @@ struct ReferenceOptions {
 struct ReferenceEstimate {
     glm::vec3 value{0.0f};
     glm::vec3 standardError{0.0f};
+};
+
+// A Monte Carlo estimate's running sums: its mean, and the variance of that mean (the sample
+// variance over n - 1, divided by n).
+struct SampleMoments {
+    glm::dvec3 sum{0.0}, sumSquares{0.0};
+    void add(glm::dvec3 x) {
+        sum += x;
+        sumSquares += x * x;
+    }
+    glm::dvec3 mean(double n) const { return sum / n; }
+    glm::dvec3 varianceOfMean(double n) const {
+        const glm::dvec3 m = mean(n);
+        return glm::max(sumSquares / n - m * m, glm::dvec3(0.0)) / std::max(n - 1.0, 1.0);
+    }
 };
 
 // The pdf of direction L under GGX half-vector sampling (importanceSampleGGX, ibl.glsl):

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/json_value.h"
+#include "environment/builtin_environments.h"
 
 namespace patina {
 
@@ -42,7 +43,7 @@ struct Light {
     // environment (PreparedScene::environment holds it made ready): "builtin:NAME" or a file's
     // absolute path; turned about +Y, lighting and background alike. Radiance = image * intensity
     // (colour is not used).
-    std::string source = "builtin:studio";
+    std::string source = builtinSource("studio");
     float rotationDegrees = 0.0f;
     // Keys of the file Patina does not know (another type's too), written back on save.
     Json extras = Json::object();

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "common/enum_names.h"
+#include "environment/builtin_environments.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -76,7 +77,7 @@ Scene defaultScene() {
     studio.type = LightType::Environment;
     studio.name = "studio";
     studio.intensity = 0.8f;
-    studio.source = "builtin:studio";
+    studio.source = builtinSource("studio");
 
     // A faint sky above and warm ground below (Karis's hemisphere light, diffuse only): every
     // light type of the model in one scene, each switchable.

@@ -47,12 +47,16 @@ struct SpecularTerms {
     vec3 F;
 };
 
+// Karis 2013, p. 3 ("Material model"): a dielectric's F0 is 0.08 s (0.04 at the default s = 0.5,
+// ior 1.5). The one definition: glTF's import and export convert through it.
+const real F0_PER_SPECULAR = 0.08f;
+
 // Karis 2013, p. 3 ("Material model"): c_diff, c_spec = mix(0.08 s, c_base, m), alpha = r^2.
 PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, real roughness, real specular, real metallic) {
     real r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
     return SurfaceMaterial((1.0f - metallic) * baseColor,
-                           mix(vec3(0.08f * specular), baseColor, metallic),
-                           r, r * r, vec3(0.08f * specular), baseColor, metallic);
+                           mix(vec3(F0_PER_SPECULAR * specular), baseColor, metallic),
+                           r, r * r, vec3(F0_PER_SPECULAR * specular), baseColor, metallic);
 }
 
 // Lambert: c_diff / pi (Karis 2013, eq. 1).

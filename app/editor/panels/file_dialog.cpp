@@ -181,6 +181,40 @@ void startPathDialog(Prompts& prompts, Prompts::PathDialog kind, const std::file
     prompts.pathFieldTaken = prompts.pathTypedEarly = false;
 }
 
+// The path field, `width` wide, with the keys typed before it had them; true when Enter let go
+// of it (or came before it had the keys: Ctrl+Alt+S, Enter takes the name offered at once).
+bool pathFieldEntered(Prompts& prompts, float width) {
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::IsWindowAppearing()) {
+        ImGui::SetKeyboardFocusHere();
+    }
+    // Written as typed, so the list follows; Enter lets go of the field (single-line fields do).
+    // After Enter on a folder the field takes the keys again, its cursor after the new '/'.
+    prompts.pathCursorToEnd = takeEarlyKeys(prompts) || prompts.pathCursorToEnd;
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, "%s", prompts.pathDialogText.c_str());
+    const auto moveCursor = [](ImGuiInputTextCallbackData* data) {
+        bool& toEnd = *static_cast<bool*>(data->UserData);
+        if (toEnd) {
+            data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
+            toEnd = false;
+        }
+        return 0;
+    };
+    ImGui::PushID(prompts.pathDialogOpenings);
+    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor,
+                         &prompts.pathCursorToEnd)) {
+        prompts.pathDialogText = buffer;
+    }
+    ImGui::PopID();
+    // Enter lets go of the field, or comes before the field had the keys (Ctrl+Alt+S, Enter: the
+    // name offered, at once).
+    const bool early = !prompts.pathFieldTaken;
+    prompts.pathFieldTaken = prompts.pathFieldTaken || ImGui::IsItemActive();
+    return (ImGui::IsItemDeactivated() || early) && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                                                     ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+}
+
 void drawPathDialog(EditorState& state, EditorServices& services) {
     const PathDialogKind& kind = pathDialogKind(state.pathDialog);
     // One popup whatever the action ("###path"), titled by it.
@@ -199,35 +233,7 @@ void drawPathDialog(EditorState& state, EditorServices& services) {
     ImGui::PushTextWrapPos(width);
     ImGui::TextUnformatted(kind.prompt);
     ImGui::PopTextWrapPos();
-    ImGui::SetNextItemWidth(width);
-    if (ImGui::IsWindowAppearing()) {
-        ImGui::SetKeyboardFocusHere();
-    }
-    // Written as typed, so the list follows; Enter lets go of the field (single-line fields do).
-    // After Enter on a folder the field takes the keys again, its cursor after the new '/'.
-    state.pathCursorToEnd = takeEarlyKeys(state) || state.pathCursorToEnd;
-    char buffer[1024];
-    std::snprintf(buffer, sizeof buffer, "%s", state.pathDialogText.c_str());
-    const auto moveCursor = [](ImGuiInputTextCallbackData* data) {
-        bool& toEnd = *static_cast<bool*>(data->UserData);
-        if (toEnd) {
-            data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
-            toEnd = false;
-        }
-        return 0;
-    };
-    ImGui::PushID(state.pathDialogOpenings);
-    if (ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_CallbackAlways, moveCursor,
-                         &state.pathCursorToEnd)) {
-        state.pathDialogText = buffer;
-    }
-    ImGui::PopID();
-    // Enter lets go of the field, or comes before the field had the keys (Ctrl+Alt+S, Enter: the
-    // name offered, at once).
-    const bool early = !state.pathFieldTaken;
-    state.pathFieldTaken = state.pathFieldTaken || ImGui::IsItemActive();
-    bool entered = (ImGui::IsItemDeactivated() || early) && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
-                                                              ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+    bool entered = pathFieldEntered(state, width);
     recordItem("path:text", "The file's path; Enter on a folder opens it, the list below follows what you type");
     const std::filesystem::path base = relativeBase(state, state.pathDialog);
     if (entered && enterFolder(&state.pathDialogText, base)) {

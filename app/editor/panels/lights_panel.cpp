@@ -78,7 +78,7 @@ void editEnvironment(Document& document, Interaction& interaction, Jobs& jobs, P
                      EditorServices& services, Light& light) {
     if (ImGui::BeginCombo("Source", environmentName(light.source).c_str())) {
         for (std::string_view builtin : builtinEnvironmentNames()) {
-            const std::string source = "builtin:" + std::string(builtin);
+            const std::string source = builtinSource(builtin);
             if (ImGui::Selectable(("built-in " + std::string(builtin)).c_str(), light.source == source)) {
                 setEnvironmentSource(document, interaction, jobs, prompts, source);
             }

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "environment/builtin_environments.h"
 #include "window/editor_services.h"
 #include "state/editor_state.h"
 #include "state/part_picking.h"

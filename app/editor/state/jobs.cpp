@@ -1,6 +1,7 @@
 #include "state/jobs.h"
 
 #include "state/editor_state.h"
+#include "environment/builtin_environments.h"
 
 namespace patina::editor {
 
@@ -34,7 +35,7 @@ void applyEnvironment(Document& document, Interaction& interaction, Jobs& jobs, 
 bool setEnvironmentSource(Document& document, Interaction& interaction, Jobs& jobs, Prompts& prompts,
                           const std::string& source) {
     jobs.environmentLoad.reset();   // a newer choice replaces one under way (cancelled)
-    if (!source.starts_with("builtin:")) {
+    if (!builtinName(source)) {
         jobs.environmentLoad = std::make_shared<EnvironmentLoad>(source, jobs.assets);
         prompts.status = "Preparing the environment " + environmentName(source) + "...";
         return true;

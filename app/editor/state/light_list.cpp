@@ -111,11 +111,5 @@ Light* editedEnvironment(Document& document) {
     return index < 0 ? nullptr : &document.scene.lights[size_t(index)];
 }
 
-std::string environmentName(const std::string& source) {
-    if (source.starts_with("builtin:")) {
-        return source.substr(8);
-    }
-    return std::filesystem::path(source).stem().string();
-}
 
 }  // namespace patina::editor

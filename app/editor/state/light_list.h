@@ -18,7 +18,5 @@ void deleteLight(Document& document, Interaction& interaction, int index);
 void moveLight(Document& document, Interaction& interaction, int index, int delta);
 // The scene's environment light, or null.
 Light* editedEnvironment(Document& document);
-// "studio" for builtin:studio, a file's stem.
-std::string environmentName(const std::string& source);
 
 }  // namespace patina::editor

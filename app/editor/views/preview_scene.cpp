@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "environment/builtin_environments.h"
+
 namespace patina::editor {
 
 Scene previewScene(const Material& material) {
@@ -18,7 +20,7 @@ Scene previewScene(const Material& material) {
     Light studio;
     studio.type = LightType::Environment;
     studio.name = "studio";
-    studio.source = "builtin:studio";
+    studio.source = builtinSource("studio");
     Light key;
     key.type = LightType::Directional;
     key.name = "key";

@@ -10,6 +10,7 @@
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
@@ -193,9 +194,22 @@ void drawFrame(Loop& loop) {
     glfwSwapBuffers(loop.window);
 }
 
+// A window that opened in this frame is measured hidden and placed in the next (a centred
+// prompt has no size yet): draw that frame, or a prompt that comes as the loop goes to sleep
+// stays hidden, or where a click on it misses, until the next input.
+bool windowsSettling() {
+    for (const ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
+        if (window->Active && (window->Appearing || window->HiddenFramesCannotSkipItems > 0 ||
+                               window->HiddenFramesCanSkipItems > 0)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // Through a temporary file and a rename: a reader never sees half a dump.
-void dumpLayout(const char* path) {
-    const std::string json = layoutJson();
+void dumpLayout(const char* path, bool asleep) {
+    const std::string json = layoutJson(asleep);
     try {
         writeFileAtomic(path, std::vector<uint8_t>(json.begin(), json.end()));
     } catch (const std::exception&) {
@@ -210,9 +224,6 @@ void afterFrame(Loop& loop) {
         glfwSetWindowTitle(loop.window, wanted.c_str());
         loop.title = wanted;
     }
-    if (loop.layoutDump) {
-        dumpLayout(loop.layoutDump);
-    }
     loop.autosaveDue = updateAutosave(state, state.autosave, state, AutosaveClock::now());
     glfwGetWindowSize(loop.window, &loop.geometry.width, &loop.geometry.height);
     loop.settingsDue = loop.settingsWriter.update(state, state, state, loop.geometry, SettingsWriter::Clock::now());
@@ -221,6 +232,12 @@ void afterFrame(Loop& loop) {
     if (std::string messages = shownText(state, loop.services); messages != loop.shownMessages) {
         loop.shownMessages = std::move(messages);
         loop.framesLeft = std::max(loop.framesLeft, kFramesAfterInput);
+    }
+    if (windowsSettling()) {
+        loop.framesLeft = std::max(loop.framesLeft, 1);
+    }
+    if (loop.layoutDump) {
+        dumpLayout(loop.layoutDump, loop.framesLeft <= 0);
     }
 }
 

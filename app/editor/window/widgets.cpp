@@ -210,9 +210,11 @@ float labelledWidth(float fieldWidth, const char* label) {
     return fieldWidth + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
 }
 
-std::string layoutJson() {
-    // The frame it was written after: automation waits for its input to have been drawn.
-    std::string json = "{\"frame\": " + std::to_string(ImGui::GetFrameCount());
+std::string layoutJson(bool asleep) {
+    // The frame it was written after: automation waits for its input to have been drawn; and
+    // whether the editor sleeps after it (what it drew stays as it is until the next input).
+    std::string json = "{\"frame\": " + std::to_string(ImGui::GetFrameCount()) +
+                       ", \"asleep\": " + (asleep ? "true" : "false");
     for (const auto& [name, item] : recorded()) {
         char entry[256];
         std::snprintf(entry, sizeof entry, ", \"%s\": [%.1f, %.1f, %.1f, %.1f]",

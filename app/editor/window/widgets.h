@@ -81,6 +81,6 @@ bool resetButton(const char* name, T* value, const T& fileValue, const T& defaul
     return false;
 }
 
-std::string layoutJson();
+std::string layoutJson(bool asleep);
 
 }  // namespace patina::editor
