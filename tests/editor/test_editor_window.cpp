@@ -239,6 +239,15 @@ protected:
         step("mouseup 1");
     }
 
+    // With PATINA_FRAME_DELAY_MS set: moves the mouse to (x, y), which wakes the loop for its
+    // slow frames, and returns once the first is drawn: input sent now comes while the second is
+    // drawn, so the third, the last before the loop sleeps, polls all of it.
+    void moveIntoTheLastSlowFrame(int x, int y) {
+        const int woken = frameDrawn();
+        xdotool("mousemove --window " + window_ + " " + std::to_string(x) + " " + std::to_string(y));
+        ASSERT_TRUE(waitFor([&] { return frameDrawn() >= woken + 1; }, 10s));
+    }
+
     // Whether the editor sleeps after the frame it last drew (the layout dump's "asleep").
     bool asleep() { return readText(dir_ / "layout.json").find("\"asleep\": true") != std::string::npos; }
 
@@ -609,11 +618,7 @@ TEST_F(EditorWindow, TypingAfterCtrlAInOneSlowFrameIsKept) {
     typeInto("Screenshot width", "123");
     std::this_thread::sleep_for(3s);   // asleep, the field active
     const std::vector<float> field = rect("Screenshot width");
-    const int woken = frameDrawn();
-    xdotool("mousemove --window " + window_ + " " + std::to_string(int(field[0]) + 22) + " " +
-            std::to_string(int((field[1] + field[3]) / 2)));
-    ASSERT_TRUE(waitFor([&] { return frameDrawn() >= woken + 1; }, 10s));
-    // Now the second frame of the move's sleeps 700 ms: the keys all reach the third's poll.
+    moveIntoTheLastSlowFrame(int(field[0]) + 22, int((field[1] + field[3]) / 2));
     xdotool("key --window " + window_ + " ctrl+a");
     xdotool("type --window " + window_ + " 640");
     std::this_thread::sleep_for(5s);
@@ -635,12 +640,7 @@ TEST_F(EditorWindow, AClickInTheLastFrameAfterInputIsFinished) {
     ASSERT_TRUE(waitFor([&] { return rect("Lobe panel").size() == 4; }, 20s));
     std::this_thread::sleep_for(3s);   // asleep again, the menu open
     const std::vector<float> item = rect("Lobe panel");
-    const int woken = frameDrawn();
-    // The move wakes the loop for its frames (each 700 ms); the click comes while the second
-    // is drawn, so the third, the last, polls it.
-    xdotool("mousemove --window " + window_ + " " + std::to_string(int((item[0] + item[2]) / 2)) + " " +
-            std::to_string(int((item[1] + item[3]) / 2)));
-    ASSERT_TRUE(waitFor([&] { return frameDrawn() >= woken + 1; }, 10s));
+    moveIntoTheLastSlowFrame(int((item[0] + item[2]) / 2), int((item[1] + item[3]) / 2));
     std::this_thread::sleep_for(200ms);
     xdotool("click 1");
     const fs::path settings = dir_ / "config" / "patina" / "settings.json";
