@@ -15,6 +15,7 @@
 #include "accuracy/diffuse_accuracy.h"
 #include "accuracy/furnace.h"
 #include "environment/builtin_environments.h"
+#include "gl/gpu_prefilter.h"
 #include "gl/headless_context.h"
 #include "image/image.h"
 #include "files/input_error.h"
@@ -111,7 +112,7 @@ namespace {
 // Blender's studio-light HDRIs (Debian's blender-data): one with a sun, one interior.
 constexpr const char* kBlenderWorlds = "/usr/share/blender/datafiles/studiolights/world/";
 
-std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string>& files) {
+std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string>& files, PrefilterFunction prefilter) {
     std::vector<std::string> sources = files;
     if (sources.empty()) {
         sources = {builtinSource("studio")};
@@ -131,7 +132,7 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
         std::vector<std::string> warnings;
         const std::string absolute =
             builtinName(source) ? source : std::filesystem::absolute(source).lexically_normal().string();
-        std::shared_ptr<const Environment> environment = assets.environment(absolute, warnings);
+        std::shared_ptr<const Environment> environment = assets.environment(absolute, warnings, {}, {}, prefilter);
         printWarnings(warnings);
         environments.push_back({environmentName(source), std::move(environment)});
     }
@@ -139,7 +140,7 @@ std::vector<NamedEnvironment> lightingEnvironments(const std::vector<std::string
 }
 // What diffuse-accuracy measures under by default: the built-in studio, every Blender HDRI
 // installed, and a small sun 10^4 times its sky's radiance (sunEnvironment), made here.
-std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>& files) {
+std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>& files, PrefilterFunction prefilter) {
     std::vector<std::string> sources = files;
     if (sources.empty()) {
         sources = {builtinSource("studio")};
@@ -155,14 +156,14 @@ std::vector<NamedEnvironment> diffuseEnvironments(const std::vector<std::string>
                       << " holds no HDRIs (apt-get install blender-data); measured without them\n";
         }
     }
-    std::vector<NamedEnvironment> environments = lightingEnvironments(sources);
+    std::vector<NamedEnvironment> environments = lightingEnvironments(sources, prefilter);
     for (NamedEnvironment& environment : environments) {
         if (builtinName(environment.environment->source)) {
             environment.name = "built-in " + environment.name;   // beside Blender's studio.exr
         }
     }
     if (files.empty()) {
-        environments.push_back({"sun", prepareEnvironment(sunEnvironment(1024), "generated:sun")});
+        environments.push_back({"sun", prepareEnvironment(sunEnvironment(1024), "generated:sun", {}, {}, prefilter)});
     }
     return environments;
 }
@@ -197,7 +198,7 @@ Command addDiffuseAccuracyCommand(CLI::App& app) {
         "builtin:studio, every Blender HDRI installed and a generated sun",
         [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
             HeadlessContext context;
-            const std::vector<NamedEnvironment> environments = diffuseEnvironments(files);
+            const std::vector<NamedEnvironment> environments = diffuseEnvironments(files, prefilterCubeOnGpu);   // the context is current
             std::vector<IrradianceErrorRow> irradiance;
             std::vector<MatteRow> matte;
             for (const NamedEnvironment& environment : environments) {
@@ -230,7 +231,7 @@ Command addLightingAccuracyCommand(CLI::App& app) {
         "and sphere and tube lights as area-accuracy measures them",
         "builtin:studio and Blender's sunrise.exr and interior.exr when installed",
         [](const std::filesystem::path& folder, bool quick, const std::vector<std::string>& files) {
-            const std::vector<NamedEnvironment> environments = lightingEnvironments(files);
+            const std::vector<NamedEnvironment> environments = lightingEnvironments(files, prefilterCube);
             HeadlessContext context;
             const LightingAccuracyResult result = runLightingAccuracy(environments, quick);
             writeOutputText((folder / "split_sum.csv").string(), splitSumCsv(result.accuracy.rows));

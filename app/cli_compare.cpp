@@ -35,9 +35,8 @@ Command addCompareCommand(CLI::App& app) {
         inputs.scenePath = options->scenePath;
         inputs.mesh = options->mesh;
         inputs.view = options->view;
-        Scene scene = inputs.load();
-        AssetCache assets;
-        const PreparedScene prepared = inputs.prepare(scene, assets);
+        const LoadedScene loaded(inputs);
+        const PreparedScene& prepared = loaded.prepared;
         const std::vector<Material> materials = loadMaterials({options->a, options->b});
         std::vector<LdrImage> panels =
             renderMaterials(prepared, materials, {options->width, options->height, options->part});

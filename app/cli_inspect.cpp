@@ -87,10 +87,8 @@ Command addInspectCommand(CLI::App& app) {
         }
     });
     return [options] {
-        Scene scene = options->inputs.load();
-        AssetCache assets;
-        const PreparedScene prepared = options->inputs.prepare(scene, assets);
-        options->inputs.putMaterialOnParts(scene, prepared.model.get());
+        const LoadedScene loaded(options->inputs);
+        const PreparedScene& prepared = loaded.prepared;
         const PixelSurfaces surfaces = rasterizeSurfaces(prepared, options->width, options->height);
         const std::optional<PixelStory> story = pixelStory(prepared, surfaces, options->x, options->y);
         Json report{{"x", options->x}, {"y", options->y}, {"width", options->width}, {"height", options->height}};

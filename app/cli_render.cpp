@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "gl/gpu_prefilter.h"
 #include "gl/headless_context.h"
 #include "gl/renderer.h"
 #include "image/display_image.h"
@@ -70,11 +71,9 @@ void renderChannel(const SceneInputs& inputs, const ChannelRequest& request, int
     if (!reference) {
         context.emplace();
     }
-    Scene scene = inputs.load();
-    AssetCache assets;
-    const PreparedScene prepared = inputs.prepare(scene, assets);
-    inputs.putMaterialOnParts(scene, prepared.model.get());
-    channelLights(scene.lights, request);   // a light the scene lacks: said before anything is drawn
+    const LoadedScene loaded(inputs, context ? prefilterCubeOnGpu : prefilterCube);
+    const PreparedScene& prepared = loaded.prepared;
+    channelLights(loaded.scene.lights, request);   // a light the scene lacks: said before anything is drawn
     HdrImage image;
     if (reference) {
         image = channelImage(prepared, rasterizeSurfaces(prepared, width, height), request);
@@ -190,10 +189,8 @@ void runRender(const RenderOptions& options) {
     if (!options.reference) {
         context.emplace();
     }
-    Scene scene = options.inputs.load();
-    AssetCache assets;
-    const PreparedScene prepared = options.inputs.prepare(scene, assets);
-    options.inputs.putMaterialOnParts(scene, prepared.model.get());   // `prepared` reads `scene`
+    const LoadedScene loaded(options.inputs, context ? prefilterCubeOnGpu : prefilterCube);
+    const PreparedScene& prepared = loaded.prepared;
     writeRenderOutput(options, options.reference
                                    ? renderReferenceImage(prepared, options.width, options.height, options.referenceSamples)
                                    : renderOnGpu(options, prepared));

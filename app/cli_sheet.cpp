@@ -37,9 +37,8 @@ Command addSheetCommand(CLI::App& app) {
         inputs.scenePath = options->scenePath;
         inputs.mesh = options->mesh;
         inputs.view = options->view;
-        Scene scene = inputs.load();
-        AssetCache assets;
-        const PreparedScene prepared = inputs.prepare(scene, assets);
+        const LoadedScene loaded(inputs);
+        const PreparedScene& prepared = loaded.prepared;
         const std::vector<Material> materials = loadMaterials(options->materials);
         std::vector<std::string> names;
         for (const Material& material : materials) {

@@ -83,10 +83,10 @@ void SceneInputs::replaceMesh(Scene& scene) const {
     }
 }
 
-PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets) const {
+PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets, PrefilterFunction prefilter) const {
     std::vector<std::string> warnings;
     if (mesh.empty()) {
-        PreparedScene prepared = prepareScene(scene, assets, warnings);
+        PreparedScene prepared = prepareScene(scene, assets, warnings, prefilter);
         printWarnings(warnings);
         view.apply(scene, prepared);
         return prepared;
@@ -105,7 +105,7 @@ PreparedScene SceneInputs::prepare(Scene& scene, AssetCache& assets) const {
     }
     const BoundingSphere before = shapeBounds(scene, own.get());
     replaceMesh(scene);
-    PreparedScene prepared = prepareScene(scene, assets, warnings);
+    PreparedScene prepared = prepareScene(scene, assets, warnings, prefilter);
     printWarnings(warnings);
     fitSceneTo(scene, before, shapeBounds(scene, prepared.mesh.get()));   // `prepared` reads `scene`
     view.apply(scene, prepared);
@@ -217,6 +217,11 @@ void SceneInputs::putMaterialOnParts(Scene& scene, const Model* model) const {
     }
     const Material material = scene.material;   // setPartMaterials adds to `scene`
     cli::putMaterialOnParts(scene, model, material, part);
+}
+
+LoadedScene::LoadedScene(const SceneInputs& inputs, PrefilterFunction prefilter)
+    : scene(inputs.load()), prepared(inputs.prepare(scene, assets, prefilter)) {
+    inputs.putMaterialOnParts(scene, prepared.model.get());   // `prepared` reads `scene`
 }
 
 void writeOutput(const std::string& path, const std::vector<uint8_t>& bytes) {

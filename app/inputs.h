@@ -51,13 +51,29 @@ struct SceneInputs {
     // (assets/prepare_scene.h), for the commands that draw it. --mesh is shown as the editor
     // opens a model: the camera frames it and the positional lights follow its size
     // (fitSceneTo); without --mesh the scene's camera and lights stay as its file says. Then
-    // `view` is applied. Warnings go to stderr; errors throw InputError.
-    PreparedScene prepare(Scene& scene, AssetCache& assets) const;
+    // `view` is applied. An environment made afresh is prefiltered by `prefilter` (the GPU's
+    // pass where the command made its GL context first). Warnings go to stderr; errors throw
+    // InputError.
+    PreparedScene prepare(Scene& scene, AssetCache& assets, PrefilterFunction prefilter = prefilterCube) const;
     // --material over `model` (the scene's, null for a built-in mesh): its factors on every
     // part, or on --part's, as the scene's edits of them (setPartMaterials). InputError for a
     // --part the model lacks, or given without a model (without --material the command line
     // refuses it).
     void putMaterialOnParts(Scene& scene, const Model* model) const;
+};
+
+// What a command that draws works on, from its SceneInputs: the scene (load), the cache that
+// loaded what it names, the scene prepared (prepare, the environment prefiltered by `prefilter`)
+// and --material put on the model's parts (putMaterialOnParts). `prepared` refers to `scene`:
+// made in place, never copied or moved.
+struct LoadedScene {
+    explicit LoadedScene(const SceneInputs& inputs, PrefilterFunction prefilter = prefilterCube);
+    LoadedScene(const LoadedScene&) = delete;
+    LoadedScene& operator=(const LoadedScene&) = delete;
+
+    Scene scene;
+    AssetCache assets;
+    PreparedScene prepared;
 };
 
 // --mesh (SceneInputs::mesh) for a command that sets up its own options.

@@ -10,6 +10,7 @@
 
 #include "assets/prepare_scene.h"
 #include "shading/cpu_shading.h"
+#include "gl/gpu_prefilter.h"
 #include "gl/gpu_probe.h"
 #include "gl/renderer.h"
 #include "bench/timing.h"
@@ -116,7 +117,7 @@ BenchResult runBench(const BenchOptions& options) {
     scene.material.model = BrdfModelId::Reference;
     AssetCache assets;
     std::vector<std::string> notes;   // a built-in environment has none
-    const PreparedScene prepared = prepareScene(scene, assets, notes);   // the model changes below, nothing loaded
+    const PreparedScene prepared = prepareScene(scene, assets, notes, prefilterCubeOnGpu);   // the model changes below
     const HdrImage reference = renderer.render(prepared, imageSettings).hdr;
     for (const BrdfModelInfo& model : brdfModels()) {
         BenchRow row;

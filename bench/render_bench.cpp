@@ -21,6 +21,7 @@
 #include "gltf/export.h"
 #include "gltf/model_export.h"
 #include "environment/environment_files.h"
+#include "gl/gpu_prefilter.h"
 #include "assets/prepare_scene.h"
 #include "files/file_bytes.h"
 #include "files/input_error.h"
@@ -253,7 +254,8 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
                        RenderBenchResult& result) {
     RenderSettings specialised = settings;
     specialised.path = RenderPath::Specialised;
-    const std::shared_ptr<const Environment> studio = prepareEnvironment(*builtinEnvironment("studio"), builtinSource("studio"));
+    const std::shared_ptr<const Environment> studio = prepareEnvironment(*builtinEnvironment("studio"), builtinSource("studio"), {}, {},
+                                                                           prefilterCubeOnGpu);
     for (const bool environment : {false, true}) {
         for (const BrdfModelId model : {BrdfModelId::Epic, BrdfModelId::Gltf}) {
             Scene scene = environment ? defaultScene() : renderBenchScene(8);
@@ -478,7 +480,7 @@ void measureEnvironment(BenchRenderer& renderer, const RenderBenchOptions& optio
     AssetCache assets;
     std::vector<std::string> notes;   // the built-in studio has none
     const PreparedScene preparedDirectional = analyticPrepared(directional);
-    const PreparedScene preparedEnvironment = prepareScene(environment, assets, notes);
+    const PreparedScene preparedEnvironment = prepareScene(environment, assets, notes, prefilterCubeOnGpu);
     struct Kind {
         const char* name;
         const PreparedScene* scene;
@@ -540,7 +542,7 @@ void measurePrefilter(const RenderBenchOptions& options, RenderBenchResult& resu
         for (std::vector<double>* times : {&cold, &warm}) {
             const Clock::time_point start = Clock::now();
             // A cache of its own each time: the second load reads the disk cache, not memory.
-            const std::shared_ptr<const Environment> environment = AssetCache().environment(source.string(), warnings);
+            const std::shared_ptr<const Environment> environment = AssetCache().environment(source.string(), warnings, {}, {}, prefilterCubeOnGpu);
             times->push_back(std::chrono::duration<double>(Clock::now() - start).count());
             result.prefilterFaceSize = environment->prefiltered.front().size;
         }

@@ -226,7 +226,8 @@ std::shared_ptr<const Model> AssetCache::retextured(std::shared_ptr<const Model>
 std::shared_ptr<const Environment> AssetCache::environment(const std::string& source,
                                                            std::vector<std::string>& warnings,
                                                            const EnvironmentSettings& settings,
-                                                           const Progress& progress) {
+                                                           const Progress& progress,
+                                                           PrefilterFunction prefilter) {
     const EnvironmentSource read = readEnvironmentSource(source, settings);
     const Key key{source, read.key};
     const bool builtin = builtinName(source).has_value();
@@ -242,7 +243,7 @@ std::shared_ptr<const Environment> AssetCache::environment(const std::string& so
         }
     }
     if (!environment) {
-        environment = makeEnvironment(read, settings, progress);
+        environment = makeEnvironment(read, settings, progress, prefilter);
         if (!environment) {
             return nullptr;   // stopped
         }

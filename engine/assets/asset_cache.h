@@ -60,12 +60,14 @@ public:
     // A model this made counts as the one it was made from: retexturing it again starts over.
     std::shared_ptr<const Model> retextured(std::shared_ptr<const Model> model, const Scene& scene);
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
-    // the disk cache of environment/environment_source.h. A note about replaced pixels goes to
-    // `warnings` each time. InputError naming the file when it cannot be read or decoded;
-    // null when `progress` stopped it.
+    // the disk cache of environment/environment_source.h; one made afresh is prefiltered by
+    // `prefilter` (the GPU's pass only where the caller's thread has a GL context). A note about
+    // replaced pixels goes to `warnings` each time. InputError naming the file when it cannot be
+    // read or decoded; null when `progress` stopped it.
     std::shared_ptr<const Environment> environment(const std::string& source, std::vector<std::string>& warnings,
                                                    const EnvironmentSettings& settings = {},
-                                                   const Progress& progress = {});
+                                                   const Progress& progress = {},
+                                                   PrefilterFunction prefilter = prefilterCube);
 
 private:
     using Key = std::pair<std::string, uint64_t>;   // the path or source, the contents' hash

@@ -11,8 +11,11 @@ namespace patina {
 // it draws), and its enabled environment light's environment (none without one). Throws
 // InputError naming the file for a mesh or an environment that cannot be read; notes (replaced
 // pixels, what the model's file left out, a replaced map that cannot be used) go to
-// `warnings`. The result refers to `scene`, which must outlive it.
-PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings);
-PreparedScene prepareScene(Scene&& scene, AssetCache& cache, std::vector<std::string>& warnings) = delete;
+// `warnings`. An environment made afresh is prefiltered by `prefilter` (AssetCache::environment).
+// The result refers to `scene`, which must outlive it.
+PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings,
+                           PrefilterFunction prefilter = prefilterCube);
+PreparedScene prepareScene(Scene&& scene, AssetCache& cache, std::vector<std::string>& warnings,
+                           PrefilterFunction prefilter = prefilterCube) = delete;
 
 }  // namespace patina

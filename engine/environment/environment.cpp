@@ -9,13 +9,14 @@
 namespace patina {
 
 std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::string source,
-                                                      const EnvironmentSettings& settings, const Progress& progress) {
+                                                      const EnvironmentSettings& settings, const Progress& progress,
+                                                      PrefilterFunction prefilter) {
     auto environment = std::make_shared<Environment>();
     environment->source = std::move(source);
     environment->settings = settings;
     environment->replacedPixels = replaceInvalidPixels(image);
     const CubeChain cube = cubeMipChain(equirectToCube(image, cubeFaceSizeFor(image.width)));
-    environment->prefiltered = threadPrefilter()(cube, settings.prefilter, progress);
+    environment->prefiltered = prefilter(cube, settings.prefilter, progress);
     if (environment->prefiltered.empty()) {
         return nullptr;
     }

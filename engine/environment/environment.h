@@ -33,10 +33,12 @@ struct Environment {
     float maxLod() const { return float(prefiltered.size() - 1); }
 };
 
-// Everything above from an equirect image; null when `progress` stopped it.
+// Everything above from an equirect image, prefiltered by `prefilter`; null when `progress`
+// stopped it.
 std::shared_ptr<const Environment> prepareEnvironment(HdrImage image, std::string source,
                                                       const EnvironmentSettings& settings = {},
-                                                      const Progress& progress = {});
+                                                      const Progress& progress = {},
+                                                      PrefilterFunction prefilter = prefilterCube);
 
 // What a scene's environment light shows: `prepared`, which must have been made from `source`.
 // Nothing is made here (assets/ prepares a scene): std::invalid_argument for any other.

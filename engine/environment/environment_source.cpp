@@ -187,13 +187,13 @@ EnvironmentSource readEnvironmentSource(const std::string& source, const Environ
 }
 
 std::shared_ptr<const Environment> makeEnvironment(const EnvironmentSource& read, const EnvironmentSettings& settings,
-                                                   const Progress& progress) {
+                                                   const Progress& progress, PrefilterFunction prefilter) {
     // Built-ins go through the disk cache too: generating the studio takes milliseconds, its
     // prefilter a third of a second, reading it back a few milliseconds.
     HdrImage image = decodeSource(read);
     std::shared_ptr<const Environment> environment = fromDiskCache(image, read.key, read.source, settings);
     if (!environment) {
-        environment = prepareEnvironment(std::move(image), read.source, settings, progress);
+        environment = prepareEnvironment(std::move(image), read.source, settings, progress, prefilter);
         if (environment) {
             toDiskCache(*environment, read.key);
         }

@@ -22,10 +22,12 @@ EnvironmentSource readEnvironmentSource(const std::string& source, const Environ
 
 // `read` made ready to light with: decoded, and its prefiltered chain and coefficients read
 // from the disk cache (environmentCacheFolder, by key) or made and kept there, so a second start
-// only decodes. Keeps nothing in memory: assets/AssetCache shares what is made. Throws
-// InputError for a file that cannot be decoded; null when `progress` stopped it.
+// only decodes (a chain made is prefiltered by `prefilter`). Keeps nothing in memory:
+// assets/AssetCache shares what is made. Throws InputError for a file that cannot be decoded;
+// null when `progress` stopped it.
 std::shared_ptr<const Environment> makeEnvironment(const EnvironmentSource& read, const EnvironmentSettings& settings,
-                                                   const Progress& progress = {});
+                                                   const Progress& progress = {},
+                                                   PrefilterFunction prefilter = prefilterCube);
 
 // $PATINA_CACHE_DIR, else $XDG_CACHE_HOME/patina, else ~/.cache/patina; empty when none of
 // these can be named (then nothing is kept on disk).

@@ -9,18 +9,6 @@
 
 namespace patina {
 
-namespace {
-thread_local PrefilterFunction prefilterOfThisThread = nullptr;
-}  // namespace
-
-void setThreadPrefilter(PrefilterFunction function) {
-    prefilterOfThisThread = function;
-}
-
-PrefilterFunction threadPrefilter() {
-    return prefilterOfThisThread ? prefilterOfThisThread : prefilterCube;
-}
-
 int prefilterLevelCount(int faceSize, const PrefilterSettings& settings) {
     int levels = 1;
     while (levels < settings.levels && (faceSize >> levels) >= 1) {

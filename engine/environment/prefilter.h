@@ -16,12 +16,11 @@ struct PrefilterSettings {
 // empty when `progress` stopped it.
 CubeChain prefilterCube(const CubeChain& source, const PrefilterSettings& settings, const Progress& progress = {});
 
-// Where prefilterCube's work runs on the calling thread: the CPU, unless a GL context current on
-// this thread offered the GPU's pass (gl/gpu_prefilter.h; the headless context and the editor's
-// window set it). prepareEnvironment asks this.
+// Where an environment's prefilter runs: prefilterCube (the CPU, needs nothing) or the GPU's pass
+// (gl/gpu_prefilter.h, needs a GL context current on the calling thread). The caller that makes
+// an environment says which, through prepareEnvironment, makeEnvironment, AssetCache and
+// prepareScene.
 using PrefilterFunction = CubeChain (*)(const CubeChain&, const PrefilterSettings&, const Progress&);
-void setThreadPrefilter(PrefilterFunction function);   // null: the CPU
-PrefilterFunction threadPrefilter();
 
 // How many levels the chain of a source of `faceSize` texels has: settings.levels, fewer when
 // the faces run out of texels (each level halves them, down to 1).

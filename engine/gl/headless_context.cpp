@@ -1,6 +1,5 @@
 #include "gl/headless_context.h"
 
-#include "gl/gpu_prefilter.h"
 
 #include <stdexcept>
 #include <string_view>
@@ -75,7 +74,6 @@ HeadlessContext::HeadlessContext() : state_(std::make_unique<State>()) {
 }
 
 HeadlessContext::~HeadlessContext() {
-    setThreadPrefilter(nullptr);   // no context left to run the GPU's pass
     if (state_->display != EGL_NO_DISPLAY) {
         eglMakeCurrent(state_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (state_->context != EGL_NO_CONTEXT) {
@@ -89,9 +87,6 @@ void HeadlessContext::makeCurrent() {
     if (!eglMakeCurrent(state_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, state_->context)) {
         eglFail("eglMakeCurrent(surfaceless)");
     }
-    // Environments made ready on this thread prefilter on the GPU: on llvmpipe too, where the
-    // pass runs vectorised on every core, 2-3x the CPU twin's speed.
-    setThreadPrefilter(prefilterCubeOnGpu);
 }
 
 std::string HeadlessContext::rendererName() const {

@@ -175,6 +175,35 @@ TEST_F(Assets, BuiltInsAreKeptForTheCachesLifeAndNoOtherCacheShares) {
     EXPECT_TRUE(warnings.empty());
 }
 
+// Where a chain is prefiltered is the caller's word, passed down (no thread-wide hook): the
+// function given makes a chain made afresh, and a chain found in memory or on disk is not made.
+int prefiltersRun = 0;
+CubeChain countingPrefilter(const CubeChain& source, const PrefilterSettings& settings, const Progress& progress) {
+    ++prefiltersRun;
+    return prefilterCube(source, settings, progress);
+}
+
+TEST_F(Assets, AnEnvironmentIsPrefilteredWhereItsCallerSays) {
+    prefiltersRun = 0;
+    test::writeFlatHdr(path("sky.hdr"), 64, 32, 100);
+    AssetCache cache;
+    std::vector<std::string> warnings;
+    const Scene scene = sceneOf("", path("sky.hdr").string());
+    const PreparedScene prepared = prepareScene(scene, cache, warnings, countingPrefilter);
+    ASSERT_TRUE(prepared.environment);
+    EXPECT_EQ(prefiltersRun, 1);
+    prepareScene(scene, cache, warnings, countingPrefilter);   // held in memory
+    AssetCache().environment(path("sky.hdr").string(), warnings, {}, {}, countingPrefilter);   // on disk
+    EXPECT_EQ(prefiltersRun, 1);
+    // A built-in, made afresh by another cache, through the function given, and by default on
+    // the CPU without it.
+    AssetCache().environment("builtin:studio", warnings, {}, {}, countingPrefilter);
+    EXPECT_EQ(prefiltersRun, 2);
+    fs::remove_all(path("cache"));
+    AssetCache().environment("builtin:studio", warnings);
+    EXPECT_EQ(prefiltersRun, 2);
+}
+
 TEST_F(Assets, AMissingOrBrokenFileIsAnInputErrorNamingIt) {
     AssetCache cache;
     std::vector<std::string> warnings;

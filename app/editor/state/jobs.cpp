@@ -42,8 +42,8 @@ bool setEnvironmentSource(Document& document, Interaction& interaction, Jobs& jo
     }
     std::vector<std::string> warnings;
     try {
-        applyEnvironment(document, interaction, jobs, prompts, source, jobs.assets->environment(source, warnings),
-                         warnings);
+        applyEnvironment(document, interaction, jobs, prompts, source,
+                         jobs.assets->environment(source, warnings, {}, {}, jobs.uiPrefilter), warnings);
         return true;
     } catch (const std::exception& error) {
         prompts.error = error.what();   // the previous environment stays
@@ -83,7 +83,7 @@ void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts) {
     }
     std::vector<std::string> warnings;
     try {
-        document.environment = jobs.assets->environment(source, warnings);
+        document.environment = jobs.assets->environment(source, warnings, {}, {}, jobs.uiPrefilter);
         jobs.environmentFailed.clear();
     } catch (const std::exception& error) {
         prompts.error = error.what();

@@ -22,6 +22,10 @@ struct Prompts;
 struct Jobs {
     // The cache of loaded files the editor owns; the environment's worker shares it.
     std::shared_ptr<AssetCache> assets = std::make_shared<AssetCache>();
+    // Where an environment made on the UI thread (a scene opened, a built-in chosen) prefilters:
+    // the CPU, or the GPU's pass once the window's context is current there (runEditor). The
+    // environment's worker has no context: it prefilters on the CPU.
+    PrefilterFunction uiPrefilter = prefilterCube;
     Autosave autosave;                       // crash recovery (autosave.h)
     std::optional<Recoverable> recoverable;  // the last session's work, offered at start
     // An environment file that could not be loaded for the light naming it (its error shown

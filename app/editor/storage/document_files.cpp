@@ -176,7 +176,7 @@ struct DocumentFile {
     std::vector<std::string> warnings;
 };
 
-DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& path) {
+DocumentFile readDocumentFile(AssetCache& assets, PrefilterFunction prefilter, const std::filesystem::path& path) {
     std::error_code kind;
     if (std::filesystem::is_directory(path, kind)) {
         throw InputError(path.string() +
@@ -206,7 +206,7 @@ DocumentFile readDocumentFile(AssetCache& assets, const std::filesystem::path& p
     // A scene's glTF and environment are read now, so a missing or bad one fails the open
     // instead of every later frame.
     if (file.scene) {
-        const PreparedScene prepared = prepareScene(*file.scene, assets, file.warnings);
+        const PreparedScene prepared = prepareScene(*file.scene, assets, file.warnings, prefilter);
         if (!file.scene->meshFile.empty()) {
             file.shape = {prepared.mesh, prepared.model};
         }
@@ -275,7 +275,7 @@ bool openFile(EditorState& state, const std::filesystem::path& path) {
                                     std::filesystem::absolute(path).lexically_normal().string());
     }
     try {
-        applyDocumentFile(state, path, readDocumentFile(*state.assets, path));
+        applyDocumentFile(state, path, readDocumentFile(*state.assets, state.uiPrefilter, path));
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();
@@ -322,7 +322,7 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
         if (model) {
             RegularFile(path, 0, path.string());
         } else {
-            file = readDocumentFile(*state.assets, path);
+            file = readDocumentFile(*state.assets, state.uiPrefilter, path);
         }
     } catch (const std::exception& error) {
         state.error = error.what();

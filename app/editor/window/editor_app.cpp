@@ -280,7 +280,7 @@ int runEditor(const EditorOptions& options) {
     }
     // Environments made ready on this (the UI) thread, as a scene opens, prefilter on the GPU;
     // files chosen in the light list are prepared on a worker, on the CPU, while this draws.
-    setThreadPrefilter(prefilterCubeOnGpu);
+    state.uiPrefilter = prefilterCubeOnGpu;
     glfwSwapInterval(1);
     WindowInput input;
     installInputCallbacksBeforeImGui(window, input);

@@ -6,6 +6,7 @@
 #include <ctime>
 
 #include "assets/prepare_scene.h"
+#include "gl/gpu_prefilter.h"
 #include "image/compositing.h"
 #include "image/display_image.h"
 #include "image/png_text.h"
@@ -156,7 +157,7 @@ const EditorServices::Preset* EditorServices::preset(const std::filesystem::path
             std::vector<std::string> warnings;
             const Material loaded = loadMaterialFile(material, warnings);
             const Scene preview = previewScene(loaded);
-            const PreparedScene prepared = prepareScene(preview, *assets_, warnings);   // its built-in studio, once
+            const PreparedScene prepared = prepareScene(preview, *assets_, warnings, prefilterCubeOnGpu);   // its built-in studio, once
             entry.preset = Preset{std::make_unique<Texture>(renderImage(prepared, 64, 64, RenderPath::Single, EnvironmentShading{}).ldr),
                                   loaded.name};
         } catch (const std::exception&) {
