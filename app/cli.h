@@ -3,7 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 
 namespace patina {
 struct BenchResult;

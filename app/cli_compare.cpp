@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "cli.h"
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "inputs.h"
 #include "material_renders.h"
 

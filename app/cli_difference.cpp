@@ -12,9 +12,9 @@
 #include "environment/environment_files.h"
 #include "files/file_bytes.h"
 #include "files/input_error.h"
-#include "image/compositing.h"
-#include "image/display_image.h"
-#include "image/linear_difference.h"
+#include "picture/compositing.h"
+#include "picture/display_image.h"
+#include "picture/linear_difference.h"
 #include "inputs.h"
 
 namespace patina::cli {

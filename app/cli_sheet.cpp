@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "cli.h"
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "files/input_error.h"
 #include "inputs.h"
 #include "material_renders.h"

@@ -7,7 +7,7 @@
 #include "shading/brdf_models.h"
 #include "assets/prepare_scene.h"
 #include "image/image.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/file_kinds.h"
 #include "files/input_error.h"
 #include "io/scene_file.h"

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "accuracy/accuracy.h"
-#include "accuracy/chart.h"
+#include "image/chart.h"
 #include "bench/csv_read.h"
 
 namespace patina {

@@ -12,8 +12,8 @@
 #include "common/luminance.h"
 #include "files/input_error.h"
 #include "gl/renderer.h"
-#include "image/compositing.h"
-#include "image/display_image.h"
+#include "picture/compositing.h"
+#include "picture/display_image.h"
 #include "reference/pixel_surfaces.h"
 #include "reference/reference_render.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 #include "accuracy/split_sum_accuracy.h"
 #include "bench/csv_read.h"
 #include "gl/environment_method.h"

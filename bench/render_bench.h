@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 #include "bench/csv_read.h"
 #include "gl/renderer.h"
 #include "scene/scene.h"

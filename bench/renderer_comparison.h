@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 #include "bench/csv_read.h"
 
 namespace patina {

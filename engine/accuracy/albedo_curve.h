@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 #include "shading/material_parameters.h"
 
 namespace patina {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 #include "image/image.h"
 
 namespace patina {

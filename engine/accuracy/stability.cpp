@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "accuracy/accuracy.h"
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "accuracy/edge_cases.h"
 #include "gl/gpu_probe.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "shading/brdf_models.h"
-#include "accuracy/chart.h"
+#include "image/chart.h"
 
 namespace patina {
 

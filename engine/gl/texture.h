@@ -1,5 +1,5 @@
 #pragma once
-#include "image/image.h"
+#include "common/ldr_image.h"
 
 namespace patina {
 

@@ -4,15 +4,9 @@
 #include <vector>
 
 #include "common/hdr_image.h"
+#include "common/ldr_image.h"
 
 namespace patina {
-
-// Display-referred sRGB bytes, RGBA, rows top to bottom.
-struct LdrImage {
-    int width = 0;
-    int height = 0;
-    std::vector<uint8_t> rgba;   // width * height * 4
-};
 
 // PNG bytes of the image (opaque RGB), or an exception on failure. Compressed on up to
 // `threads` threads (0: one per core, at most 8), each a band of rows (png_stream.h).

@@ -14,7 +14,7 @@
 #include "gltf_builder.h"
 #include "gltf/model_export.h"
 #include "image/image.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/json_writer.h"
 #include "io/scene_file.h"
 #include "scratch_test.h"

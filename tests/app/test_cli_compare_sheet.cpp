@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_runner.h"
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "image/image.h"
 #include "scratch_test.h"
 #include "files/file_bytes.h"

@@ -11,7 +11,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "scene/camera_control.h"
 #include "scene/camera_placement.h"
 #include "state/camera_choice.h"
@@ -23,7 +23,7 @@
 #include "panels/file_dialog.h"
 #include "panels/panels.h"
 #include "views/preview_scene.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "scratch_test.h"
 #include "io/scene_file.h"
 #include "test_support.h"

@@ -15,7 +15,7 @@
 #include "geometry/mesh.h"
 #include "gltf/export.h"
 #include "image/image.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/json_reader.h"
 #include "files/file_bytes.h"
 #include "io/scene_file.h"

@@ -8,7 +8,7 @@
 #include <cstdlib>
 
 #include "png_crc.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/scene_file.h"
 
 namespace {

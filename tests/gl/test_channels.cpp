@@ -9,8 +9,8 @@
 
 #include "files/input_error.h"
 #include "gl/renderer.h"
-#include "image/display_image.h"
-#include "image/pbr_tally.h"
+#include "picture/display_image.h"
+#include "picture/pbr_tally.h"
 #include "model/pbr_validation.h"
 #include "reference/channel_image.h"
 #include "reference/pixel_surfaces.h"

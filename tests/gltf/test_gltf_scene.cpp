@@ -7,7 +7,7 @@
 #include "cli_runner.h"
 #include "gltf_builder.h"
 #include "image/image.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/scene_file.h"
 #include "scratch_test.h"
 #include "files/file_bytes.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "io/json_writer.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/scene_file.h"
 #include "scratch_test.h"
 

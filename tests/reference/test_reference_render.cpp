@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image/display_image.h"
+#include "picture/display_image.h"
 #include "reference/pixel_surfaces.h"
 #include "reference/reference_render.h"
 #include "test_support.h"

@@ -8,7 +8,7 @@
 #include "assets/prepare_scene.h"
 #include "gltf/import.h"
 #include "gltf/model_export.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/file_kinds.h"
 #include "files/input_error.h"
 #include "files/regular_file.h"

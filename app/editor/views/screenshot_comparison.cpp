@@ -1,6 +1,6 @@
 #include "views/screenshot_comparison.h"
 
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/json_reader.h"
 #include "files/regular_file.h"
 #include "io/scene_file.h"

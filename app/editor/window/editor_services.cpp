@@ -7,9 +7,9 @@
 
 #include "assets/prepare_scene.h"
 #include "gl/gpu_prefilter.h"
-#include "image/compositing.h"
-#include "image/display_image.h"
-#include "image/png_text.h"
+#include "picture/compositing.h"
+#include "picture/display_image.h"
+#include "picture/png_text.h"
 #include "io/scene_file.h"
 #include "files/file_bytes.h"
 #include "views/preview_scene.h"

@@ -10,7 +10,7 @@
 #include "accuracy/albedo_curve.h"
 #include "state/editor_state.h"
 #include "gl/texture.h"
-#include "image/pbr_tally.h"
+#include "picture/pbr_tally.h"
 #include "reference/pixel_story.h"
 #include "scene/render_inputs.h"
 #include "window/keys.h"

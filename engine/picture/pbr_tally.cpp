@@ -1,4 +1,4 @@
-#include "image/pbr_tally.h"
+#include "picture/pbr_tally.h"
 
 #include "shading/shading.h"
 

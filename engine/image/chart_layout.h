@@ -6,7 +6,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "accuracy/chart.h"
+#include "image/chart.h"
 
 namespace patina {
 

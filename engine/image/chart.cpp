@@ -1,4 +1,4 @@
-#include "accuracy/chart.h"
+#include "image/chart.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 
-#include "accuracy/chart_layout.h"
+#include "image/chart_layout.h"
 #include "image/cairo_image.h"
 #include "image/text.h"
 

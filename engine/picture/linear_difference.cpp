@@ -1,11 +1,11 @@
-#include "image/linear_difference.h"
+#include "picture/linear_difference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "shading/shading.h"
 
 namespace patina {

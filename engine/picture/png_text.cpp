@@ -1,4 +1,4 @@
-#include "image/png_text.h"
+#include "picture/png_text.h"
 
 #include <algorithm>
 #include <array>

@@ -15,7 +15,7 @@
 #include "io/json_writer.h"
 #include "image/png_chunks.h"
 #include "image/png_stream.h"
-#include "image/png_text.h"
+#include "picture/png_text.h"
 #include "io/scene_file.h"
 #include "files/file_bytes.h"
 

@@ -1,4 +1,4 @@
-#include "image/display_image.h"
+#include "picture/display_image.h"
 
 #include <algorithm>
 #include <cmath>

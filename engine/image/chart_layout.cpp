@@ -1,4 +1,4 @@
-#include "accuracy/chart_layout.h"
+#include "image/chart_layout.h"
 
 #include <algorithm>
 #include <cmath>

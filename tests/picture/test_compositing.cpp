@@ -3,7 +3,7 @@
 
 #include "common/luminance.h"
 #include "image/caption.h"
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "image/text.h"
 
 namespace patina {

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "accuracy/chart.h"
-#include "accuracy/chart_layout.h"
+#include "image/chart.h"
+#include "image/chart_layout.h"
 
 namespace patina {
 namespace {

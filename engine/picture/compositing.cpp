@@ -1,4 +1,4 @@
-#include "image/compositing.h"
+#include "picture/compositing.h"
 
 #include <algorithm>
 #include <array>

@@ -11,9 +11,9 @@
 
 #include "cli_runner.h"
 #include "files/file_bytes.h"
-#include "image/compositing.h"
+#include "picture/compositing.h"
 #include "image/image.h"
-#include "image/linear_difference.h"
+#include "picture/linear_difference.h"
 #include "scratch_test.h"
 
 namespace patina {
