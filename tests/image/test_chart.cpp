@@ -1,4 +1,4 @@
-// Charts (engine/accuracy/chart.h): one drawing onto PNG, SVG and PDF, read from the layout
+// Charts (engine/image/chart.h): one drawing onto PNG, SVG and PDF, read from the layout
 // where that is enough (text boxes) and from the PNG's pixels where it is not (error bars).
 #include <cmath>
 #include <cstdlib>
