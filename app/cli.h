@@ -18,6 +18,8 @@ namespace patina::cli {
 using Command = std::function<void()>;
 
 Command addRenderCommand(CLI::App& app);
+// `patina turntable`: a whole turn of the camera as PNGs or an animated PNG.
+Command addTurntableCommand(CLI::App& app);
 Command addProbeCommand(CLI::App& app);
 Command addLobeCommand(CLI::App& app);
 Command addSliceCommand(CLI::App& app);

@@ -15,6 +15,7 @@
 #include "image/image.h"
 #include "picture/pbr_tally.h"
 #include "inputs.h"
+#include "picture_options.h"
 #include "reference/channel_image.h"
 #include "reference/reference_render.h"
 
@@ -98,36 +99,19 @@ void renderChannel(const SceneInputs& inputs, const ChannelRequest& request, int
 }
 
 struct RenderOptions {
-    SceneInputs inputs;
-    int width = 800, height = 800, samples = 4;
-    std::string passes = "single", out, hdr;
+    PictureOptions picture;
+    std::string out, hdr;
     bool reference = false;
     int referenceSamples = 256;
-    std::string environmentMethod = "split-sum";
-    int environmentSamples = 16;
     std::string channel;
     bool channelSrgb = false;
     bool pbrStrict = false;
 };
 
 void addRenderOptions(CLI::App& command, RenderOptions& options) {
-    options.inputs.addOptions(command, true, true);
-    options.inputs.view.addOptions(command);
-    command.add_option("--width", options.width, "Image width")->check(CLI::Range(1, 16384));
-    command.add_option("--height", options.height, "Image height")->check(CLI::Range(1, 16384));
-    command.add_option("--passes", options.passes, "single: all lights in one pass; multi: one pass per light; "
-                       "specialised: one pass compiled for the scene's lights")
-        ->check(CLI::IsMember({"single", "multi", "specialised"}));
-    command.add_option("--msaa", options.samples, "Samples per pixel (1 = none)")->check(CLI::Range(1, 16));
+    options.picture.addOptions(command);
     command.add_option("--out", options.out, "Output PNG")->required();
     command.add_option("--hdr", options.hdr, "Also write the linear image (PFM), before exposure and tone map");
-    command.add_option("--environment-method", options.environmentMethod,
-                       "How an environment lights the mesh: split-sum (Karis 2013, the default), dominant (the split "
-                       "sum along the dominant direction) or stochastic (filtered importance samples; docs/LIGHTING.md)")
-        ->check(CLI::IsMember({"split-sum", "dominant", "stochastic"}));
-    command.add_option("--environment-samples", options.environmentSamples,
-                       "--environment-method stochastic: samples per pixel")
-        ->check(CLI::Range(1, 256));
     command.add_flag("--reference", options.reference,
                      "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights "
                      "exactly), pass by pass; Ctrl+C writes what is done");
@@ -159,28 +143,13 @@ void writeRenderOutput(const RenderOptions& options, const RenderOutput& output)
     writeOutput(options.out, png);
 }
 
-RenderOutput renderOnGpu(const RenderOptions& options, const PreparedScene& prepared) {
-    Renderer renderer;
-    RenderSettings settings;
-    settings.width = options.width;
-    settings.height = options.height;
-    settings.path = *renderPathFromName(options.passes);
-    settings.samples = options.samples;
-    settings.environment = {*environmentMethodFromName(options.environmentMethod), options.environmentSamples};
-    // A one-off render keeps its peak memory down: strips of at most 16 MiB of
-    // multisampled colour, and the linear image read back only when asked for.
-    settings.maxTargetBytes = kOneOffTargetBytes;
-    settings.readHdr = !options.hdr.empty();
-    return renderer.render(prepared, settings);
-}
-
 void runRender(const RenderOptions& options) {
     if (!options.channel.empty()) {
         ChannelRequest request = *channelFromName(options.channel);   // the option's check passed it
         request.srgb = options.channelSrgb;
         request.strictPbr = options.pbrStrict;
-        renderChannel(options.inputs, request, options.width, options.height, options.reference, options.out,
-                      options.hdr);
+        renderChannel(options.picture.inputs, request, options.picture.width, options.picture.height,
+                      options.reference, options.out, options.hdr);
         return;
     }
     // The context first when the GPU renders: an environment the scene names is then
@@ -189,11 +158,11 @@ void runRender(const RenderOptions& options) {
     if (!options.reference) {
         context.emplace();
     }
-    const LoadedScene loaded(options.inputs, context ? prefilterCubeOnGpu : prefilterCube);
+    const LoadedScene loaded(options.picture.inputs, context ? prefilterCubeOnGpu : prefilterCube);
     const PreparedScene& prepared = loaded.prepared;
-    writeRenderOutput(options, options.reference
-                                   ? renderReferenceImage(prepared, options.width, options.height, options.referenceSamples)
-                                   : renderOnGpu(options, prepared));
+    writeRenderOutput(options, options.reference ? renderReferenceImage(prepared, options.picture.width,
+                                                                        options.picture.height, options.referenceSamples)
+                                                 : Renderer().render(prepared, options.picture.settings(!options.hdr.empty())));
 }
 }  // namespace
 

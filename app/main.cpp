@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     app.add_flag("--stats", editor.stats, "Editor: log time to first frame, frame times while dragging and peak "
                                           "memory to stderr");
     std::vector<std::pair<CLI::App*, patina::cli::Command>> commands;
-    for (auto add : {patina::cli::addRenderCommand, patina::cli::addProbeCommand,
+    for (auto add : {patina::cli::addRenderCommand, patina::cli::addTurntableCommand, patina::cli::addProbeCommand,
                      patina::cli::addLobeCommand, patina::cli::addSliceCommand,
                      patina::cli::addAlbedoCommand, patina::cli::addCompareCommand,
                      patina::cli::addSheetCommand, patina::cli::addBenchCommand,

@@ -141,6 +141,24 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     return light;
 }
 
+// The objects of the array at top-level `key`, each read in turn by read(reader, pointer,
+// earlier) with `earlier` the ones read before it (to refuse a repeat); InputError "SOURCE: /KEY:
+// expected an array of WHAT" for anything but an array.
+template <typename T, typename Read>
+std::vector<T> objectsFromJson(const Json& json, const std::string& key, const char* what, const std::string& source,
+                               Read read) {
+    if (!json.is_array()) {
+        throw InputError(source + ": /" + key + ": expected an array of " + what);
+    }
+    std::vector<T> objects;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const std::string pointer = "/" + key + "/" + std::to_string(i);
+        JsonObjectReader reader(json[i], pointer, source);
+        objects.push_back(read(reader, pointer, static_cast<const std::vector<T>&>(objects)));
+    }
+    return objects;
+}
+
 Camera cameraFromJson(const Json& json, const std::string& pointer, const std::string& source,
                       std::vector<std::string>& warnings) {
     JsonObjectReader reader(json, pointer, source);
@@ -153,6 +171,30 @@ Camera cameraFromJson(const Json& json, const std::string& pointer, const std::s
     }
     camera.extras = reader.keepUnknown(warnings);
     return camera;
+}
+
+// "bookmarks": [{"name": "Front", "camera": {a camera, as "camera"}}, ...]: each named, no name
+// twice.
+std::vector<CameraBookmark> bookmarksFromJson(const Json& json, const std::string& source,
+                                              std::vector<std::string>& warnings) {
+    return objectsFromJson<CameraBookmark>(
+        json, "bookmarks", "camera bookmarks", source,
+        [&](JsonObjectReader& reader, const std::string&, const std::vector<CameraBookmark>& earlier) {
+            CameraBookmark bookmark;
+            reader.required("name");
+            bookmark.name = reader.string("name", "");
+            if (bookmark.name.empty()) {
+                reader.fail("name", "a bookmark needs a name");
+            }
+            for (const CameraBookmark& before : earlier) {
+                if (before.name == bookmark.name) {
+                    reader.fail("name", "the name " + shortJson(bookmark.name) + " is used twice");
+                }
+            }
+            bookmark.camera = cameraFromJson(reader.required("camera"), reader.pointerOf("camera"), source, warnings);
+            bookmark.extras = reader.keepUnknown(warnings);
+            return bookmark;
+        });
 }
 
 DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
@@ -347,34 +389,30 @@ std::map<std::string, std::string> replacedMapsFromJson(const Json& json, const 
 std::vector<ModelMaterialEdit> modelMaterialsFromJson(const Json& json, const std::string& source,
                                                       const std::filesystem::path& baseDirectory,
                                                       std::vector<std::string>& warnings) {
-    if (!json.is_array()) {
-        throw InputError(source + ": /modelMaterials: expected an array of edited model materials");
-    }
-    std::vector<ModelMaterialEdit> edits;
-    for (size_t i = 0; i < json.size(); ++i) {
-        const std::string pointer = "/modelMaterials/" + std::to_string(i);
-        JsonObjectReader reader(json[i], pointer, source);
-        ModelMaterialEdit edit;
-        reader.required("index");
-        edit.index = reader.integer("index", 0, {0.0, double(1 << 20)});
-        edit.material = materialFromJson(reader.required("material"), pointer + "/material", source, false, warnings);
-        if (const Json* off = reader.child("mapsOff")) {
-            edit.mapsOff = mapKeysFromJson(*off, reader.pointerOf("mapsOff"), source);
-        }
-        if (const Json* replaced = reader.child("mapsReplaced")) {
-            edit.mapsReplaced =
-                replacedMapsFromJson(*replaced, reader.pointerOf("mapsReplaced"), source, baseDirectory,
-                                     edit.mapsReplacedExtras, warnings);
-        }
-        for (const ModelMaterialEdit& earlier : edits) {
-            if (earlier.index == edit.index) {
-                reader.fail("index", "material " + std::to_string(edit.index) + " is edited twice");
+    return objectsFromJson<ModelMaterialEdit>(
+        json, "modelMaterials", "edited model materials", source,
+        [&](JsonObjectReader& reader, const std::string& pointer, const std::vector<ModelMaterialEdit>& earlier) {
+            ModelMaterialEdit edit;
+            reader.required("index");
+            edit.index = reader.integer("index", 0, {0.0, double(1 << 20)});
+            edit.material =
+                materialFromJson(reader.required("material"), pointer + "/material", source, false, warnings);
+            if (const Json* off = reader.child("mapsOff")) {
+                edit.mapsOff = mapKeysFromJson(*off, reader.pointerOf("mapsOff"), source);
             }
-        }
-        edit.extras = reader.keepUnknown(warnings);
-        edits.push_back(std::move(edit));
-    }
-    return edits;
+            if (const Json* replaced = reader.child("mapsReplaced")) {
+                edit.mapsReplaced =
+                    replacedMapsFromJson(*replaced, reader.pointerOf("mapsReplaced"), source, baseDirectory,
+                                         edit.mapsReplacedExtras, warnings);
+            }
+            for (const ModelMaterialEdit& before : earlier) {
+                if (before.index == edit.index) {
+                    reader.fail("index", "material " + std::to_string(edit.index) + " is edited twice");
+                }
+            }
+            edit.extras = reader.keepUnknown(warnings);
+            return edit;
+        });
 }
 }  // namespace
 
@@ -411,6 +449,9 @@ Scene sceneFromJson(const Json& json, const std::string& source,
     }
     if (const Json* camera = reader.child("camera")) {
         scene.camera = cameraFromJson(*camera, "/camera", source, warnings);
+    }
+    if (const Json* bookmarks = reader.child("bookmarks")) {
+        scene.bookmarks = bookmarksFromJson(*bookmarks, source, warnings);
     }
     if (const Json* lights = reader.child("lights")) {
         if (!lights->is_array()) {
@@ -490,6 +531,13 @@ void saveSceneFile(const std::filesystem::path& path, const Scene& scene) {
 }
 
 namespace {
+Json cameraToJson(const Camera& camera) {
+    return withExtras({{"position", toJson(camera.position)},
+                       {"target", toJson(camera.target)},
+                       {"fovYDegrees", toJson(camera.fovYDegrees)}},
+                      camera.extras);
+}
+
 Json displayToJson(const DisplaySettings& display) {
     Json json{{"exposure", toJson(display.exposure)},
               {"tonemap", tonemapName(display.tonemap)},
@@ -507,21 +555,25 @@ Json sceneToJson(const Scene& scene) {
     for (const Light& light : scene.lights) {
         lights.push_back(lightToJson(light));
     }
-    const Camera& camera = scene.camera;
     const DisplaySettings& display = scene.display;
     Json json =
         Json{{"format", "patina-scene"},
              {"version", kSceneFormatVersion},
              {"mesh", scene.meshFile.empty() ? std::string(meshKindName(scene.mesh)) : scene.meshFile},
              {"material", materialToJson(scene.material)},
-             {"camera", withExtras({{"position", toJson(camera.position)},
-                                    {"target", toJson(camera.target)},
-                                    {"fovYDegrees", toJson(camera.fovYDegrees)}},
-                                   camera.extras)},
+             {"camera", cameraToJson(scene.camera)},
              {"lights", lights},
              {"display", withExtras(displayToJson(display), display.extras)}};
     if (scene.modelBrdf) {
         json["modelBrdf"] = brdfModel(*scene.modelBrdf).name;
+    }
+    if (!scene.bookmarks.empty()) {   // only a scene with bookmarks has the key
+        Json bookmarks = Json::array();
+        for (const CameraBookmark& bookmark : scene.bookmarks) {
+            bookmarks.push_back(
+                withExtras({{"name", bookmark.name}, {"camera", cameraToJson(bookmark.camera)}}, bookmark.extras));
+        }
+        json["bookmarks"] = bookmarks;
     }
     if (!scene.modelMaterials.empty()) {   // only a tuned model's scene has the key
         Json edits = Json::array();

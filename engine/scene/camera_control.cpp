@@ -40,6 +40,20 @@ void orbitCamera(Camera& camera, float deltaAzimuth, float deltaElevation) {
                                                            std::cos(elevation) * std::cos(azimuth));
 }
 
+Camera turntableCamera(const Camera& start, float degrees) {
+    const float turned = std::fmod(degrees, 360.0f);
+    if (turned == 0.0f) {
+        return start;   // target + (position - target) need not be position to the last bit
+    }
+    const float radians = glm::radians(turned);
+    const float c = std::cos(radians), s = std::sin(radians);
+    const glm::vec3 offset = start.position - start.target;
+    Camera camera = start;
+    // A rotation about +y by the angle: x' = x cos + z sin, z' = z cos - x sin.
+    camera.position = start.target + glm::vec3(offset.x * c + offset.z * s, offset.y, offset.z * c - offset.x * s);
+    return camera;
+}
+
 void panCamera(Camera& camera, float rightFraction, float upFraction) {
     const ViewBasis basis = viewBasis(camera);
     const float distance = glm::length(camera.target - camera.position);

@@ -11,6 +11,11 @@ namespace patina {
 // Turntable camera moves, all about camera.target with +y up. Angles in radians, distances in
 // scene units; the elevation stays inside (-89, 89) degrees so "up" never flips.
 void orbitCamera(Camera& camera, float deltaAzimuth, float deltaElevation);
+// The turntable's camera: `start` turned `degrees` about the vertical (+y) axis through its
+// target, the eye moving from +z towards +x as model-viewer's camera-orbit theta grows; the
+// height, distance and field of view stay. The angle is taken modulo 360 first, so a whole turn
+// (360, 720, ...) gives `start` back exactly: the frame after a turntable's last is its first.
+Camera turntableCamera(const Camera& start, float degrees);
 // Moves position and target together, in the view plane, by a fraction of the view height.
 void panCamera(Camera& camera, float rightFraction, float upFraction);
 // Multiplies the distance to the target by `factor` (clamped to [0.05, 1000]).

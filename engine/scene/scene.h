@@ -22,6 +22,16 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
+// A camera saved under a name, to come back to (the editor's Bookmarks; the scene file's
+// "bookmarks"). Names are not empty and differ within a scene.
+struct CameraBookmark {
+    std::string name;
+    Camera camera;
+    Json extras = Json::object();   // unknown keys of the file, as Material::extras
+
+    bool operator==(const CameraBookmark&) const = default;
+};
+
 // The view transforms (shaders/shared/display.glsl has each one's source). The ACES fits are
 // two: Narkowicz's (named "aces" before Hill's joined it, a name still read as his) and Hill's
 // as three.js and the Khronos viewer apply it.
@@ -87,6 +97,7 @@ struct Scene {
     // by a scene written before version 3, which shaded the whole model with `material`'s model.
     std::optional<BrdfModelId> modelBrdf;
     Camera camera;
+    std::vector<CameraBookmark> bookmarks;   // in the order they were saved
     std::vector<Light> lights;
     DisplaySettings display;
     Json extras = Json::object();   // top-level unknown keys; the parts keep their own

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <system_error>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <thread>
 
@@ -25,6 +26,7 @@
 #include "gltf/import.h"
 #include "gltf/model_export.h"
 #include "gltf/model_import.h"
+#include "state/camera_choice.h"
 #include "state/part_picking.h"
 #include "scene/camera_control.h"
 #include "scene/view.h"
@@ -1568,6 +1570,113 @@ TEST_F(EditorStateTest, RenamingTheDocumentsPresetTakesTheDocumentAlong) {
     EXPECT_TRUE(state.presets.deleting.empty());
     EXPECT_TRUE(state.materialPath.empty()) << "its file is gone";
     EXPECT_NE(state.status.find("warm clay.json.bak"), std::string::npos) << state.status;
+}
+
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+
+// View > Turntable turns the camera about its target at its speed, frame by frame, a whole turn
+// bringing back the start; an edit made in a frame (a slider writes straight into the scene, so
+// before any commit) pauses it in the next, leaving the camera where the turn had it.
+TEST_F(EditorStateTest, TheTurntableTurnsTheCameraUntilAnEditPausesIt) {
+    const Camera start = state.scene.camera;
+    state.turntable.degreesPerSecond = 30.0f;
+    startTurntable(state.turntable, state);
+    advanceTurntable(state.turntable, state, state, 1.0);
+    EXPECT_TRUE(state.turntable.on);
+    EXPECT_EQ(state.scene.camera, turntableCamera(start, 30.0f));
+    state.turntable.degreesPerSecond = 60.0f;   // the speed is no edit
+    advanceTurntable(state.turntable, state, state, 1.0);
+    EXPECT_TRUE(state.turntable.on);
+    EXPECT_EQ(state.scene.camera, turntableCamera(start, 90.0f));
+    advanceTurntable(state.turntable, state, state, 4.5);
+    EXPECT_EQ(state.scene.camera, start) << "a whole turn";
+    advanceTurntable(state.turntable, state, state, 0.5);
+    const Camera turned = state.scene.camera;
+    EXPECT_EQ(turned, turntableCamera(start, 30.0f));
+
+    state.scene.material.roughness = 0.85f;   // a slider, held
+    advanceTurntable(state.turntable, state, state, 1.0);
+    EXPECT_FALSE(state.turntable.on);
+    EXPECT_EQ(state.scene.camera, turned);
+    EXPECT_NE(state.status.find("Turntable paused"), std::string::npos) << state.status;
+    advanceTurntable(state.turntable, state, state, 1.0);
+    EXPECT_EQ(state.scene.camera, turned) << "paused, it stays paused";
+}
+
+// Whatever else changes the document pauses it too: an undo, a file opened, the camera moved by
+// a drag or a bookmark.
+TEST_F(EditorStateTest, AnUndoAFileOpenedOrTheCameraMovedPausesTheTurntable) {
+    saveBookmark(state, state, state, "Top");
+    state.scene.material.metallic = 1.0f;
+    commitEdits(state);
+    const std::vector<std::pair<std::string, std::function<void()>>> edits = {
+        {"undo", [&] { undo(state, state, state); }},
+        {"bookmark", [&] { goToBookmark(state, state, state, 0); }},
+        {"orbit", [&] { orbitCamera(state.scene.camera, 0.2f, 0.1f); }},
+        {"open", [&] { ASSERT_TRUE(openFile(state, writeMaterial("copper", 0.3f))) << state.error; }},
+    };
+    for (const auto& [name, edit] : edits) {
+        startTurntable(state.turntable, state);
+        advanceTurntable(state.turntable, state, state, 0.5);
+        ASSERT_TRUE(state.turntable.on) << name;
+        edit();
+        const Camera after = state.scene.camera;
+        advanceTurntable(state.turntable, state, state, 0.5);
+        EXPECT_FALSE(state.turntable.on) << name;
+        EXPECT_EQ(state.scene.camera, after) << name;
+    }
+}
+
+// Camera bookmarks: saved under a trimmed name (an undoable step; the same name again takes the
+// view as it is now), gone to (a view, no step), deleted (a step, undone), and saved with the
+// scene and read back.
+TEST_F(EditorStateTest, BookmarksAreSavedGoneToDeletedUndoneAndSavedWithTheScene) {
+    const Camera front = state.scene.camera;
+    saveBookmark(state, state, state, "  Front ");
+    ASSERT_EQ(state.scene.bookmarks.size(), 1u);
+    EXPECT_EQ(state.scene.bookmarks[0].name, "Front");
+    EXPECT_EQ(state.scene.bookmarks[0].camera, front);
+    EXPECT_TRUE(state.dirty());
+    EXPECT_NE(unsavedParts(state).find("the camera bookmarks"), std::string::npos) << unsavedParts(state);
+    orbitCamera(state.scene.camera, 1.0f, 0.3f);
+    const Camera side = state.scene.camera;
+    saveBookmark(state, state, state, "Side");
+    EXPECT_EQ(currentCameraName(state, state), "Side");
+    goToBookmark(state, state, state, 0);
+    EXPECT_EQ(state.scene.camera, front);
+    EXPECT_EQ(currentCameraName(state, state), "Front");
+    EXPECT_EQ(state.history.undoSteps(), 2u) << "going to a bookmark is no step";
+
+    saveBookmark(state, state, state, " \t");
+    EXPECT_EQ(state.scene.bookmarks.size(), 2u);
+    EXPECT_NE(state.status.find("needs a name"), std::string::npos) << state.status;
+    saveBookmark(state, state, state, "Side");   // again, from the front
+    EXPECT_EQ(state.scene.bookmarks.size(), 2u);
+    EXPECT_EQ(state.scene.bookmarks[1].camera, front);
+    undo(state, state, state);
+    EXPECT_EQ(state.scene.bookmarks[1].camera, side);
+    EXPECT_EQ(state.status, "Undid saving the bookmark Side");
+
+    deleteBookmark(state, state, 0);
+    ASSERT_EQ(state.scene.bookmarks.size(), 1u);
+    EXPECT_EQ(state.scene.bookmarks[0].name, "Side");
+    undo(state, state, state);
+    EXPECT_EQ(state.status, "Undid deleting the bookmark Front");
+    ASSERT_EQ(state.scene.bookmarks.size(), 2u);
+    EXPECT_EQ(state.scene.bookmarks[0].name, "Front");
+    deleteBookmark(state, state, 7);   // out of range: nothing
+    EXPECT_EQ(state.scene.bookmarks.size(), 2u);
+
+    const fs::path file = dir_ / "views.json";
+    ASSERT_TRUE(saveScene(state, state, state, file)) << state.error;
+    EXPECT_FALSE(state.dirty());
+    EditorState reopened;
+    ASSERT_TRUE(openFile(reopened, file)) << reopened.error;
+    EXPECT_EQ(reopened.scene.bookmarks, state.scene.bookmarks);
 }
 
 }  // namespace

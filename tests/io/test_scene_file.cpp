@@ -114,6 +114,43 @@ void expectRefused(const Json& bad, const std::string& message) {
     }
 }
 
+// Camera bookmarks travel with the scene, each a name and a camera as "camera" is written; a
+// scene without any writes no key (files saved before keep their bytes). A bookmark without a
+// name, with a name used twice, or with a camera that looks at its own eye is refused.
+TEST(SceneFile, BookmarksRoundTripAndAreOnlyWrittenWhenThere) {
+    std::vector<std::string> warnings;
+    Scene scene = defaultScene();
+    EXPECT_FALSE(sceneToJson(scene).contains("bookmarks"));
+    Camera side = scene.camera;
+    side.position = glm::vec3(3.1f, 0.25f, -0.7f);
+    side.target = glm::vec3(0.0f, 0.1f, 0.0f);
+    side.fovYDegrees = 30.0f;
+    scene.bookmarks = {{"Front", scene.camera}, {"Side view", side}};
+    const Json json = sceneToJson(scene);
+    ASSERT_TRUE(json.contains("bookmarks"));
+    EXPECT_EQ(json["bookmarks"][1]["name"], "Side view");
+    EXPECT_EQ(json["bookmarks"][1]["camera"]["fovYDegrees"], 30.0);
+    EXPECT_EQ(json["bookmarks"][1]["camera"]["position"][0], 3.1);   // the shortest decimal, as "camera"
+    EXPECT_EQ(sceneFromJson(json, "x", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+
+    Json twice = json;
+    twice["bookmarks"][1]["name"] = "Front";
+    expectRefused(twice, "x.json: /bookmarks/1/name: the name \"Front\" is used twice");
+    Json unnamed = json;
+    unnamed["bookmarks"][0]["name"] = "";
+    expectRefused(unnamed, "x.json: /bookmarks/0/name: a bookmark needs a name");
+    Json noCamera = json;
+    noCamera["bookmarks"][0].erase("camera");
+    expectRefused(noCamera, "x.json: /bookmarks/0: missing required key 'camera'");
+    Json blind = json;
+    blind["bookmarks"][1]["camera"]["target"] = blind["bookmarks"][1]["camera"]["position"];
+    expectRefused(blind, "x.json: /bookmarks/1/camera/target: the camera target equals its position");
+    Json notArray = json;
+    notArray["bookmarks"] = Json::object();
+    expectRefused(notArray, "x.json: /bookmarks: expected an array of camera bookmarks");
+}
+
 // The maps a scene leaves out of a model's material: written only where there are some, each
 // one of the five by glTF's name, once.
 TEST(SceneFile, MapsLeftOutRoundTripByTheirGltfNames) {

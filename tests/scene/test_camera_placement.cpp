@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/camera_control.h"
 #include "scene/camera_placement.h"
 #include "scene/light_rig.h"
 #include "scene/view.h"
@@ -17,6 +18,28 @@ void expectNear(glm::vec3 got, glm::vec3 want, float tolerance, const char* what
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(got[c], want[c], tolerance) << what << ", component " << c;
     }
+}
+
+// The turntable turns the eye about the vertical axis through the target as model-viewer's
+// theta grows (from +Z towards +X), keeping its height and distance; a whole turn, and any
+// number of them, is the start bit for bit, so the frame after a turntable's last is its first.
+TEST(Turntable, TurnsTheEyeAboutTheTargetsVerticalAxisAndAWholeTurnIsTheStart) {
+    Camera start;
+    start.target = glm::vec3(0.3f, -0.2f, 0.1f);
+    start.position = start.target + orbitOffset({0.0f, 70.0f, 2.5f});
+    start.fovYDegrees = 38.0f;
+    for (const float theta : {90.0f, 180.0f, 250.0f, -45.0f}) {
+        const Camera turned = turntableCamera(start, theta);
+        expectNear(turned.position, start.target + orbitOffset({theta, 70.0f, 2.5f}), 1e-5f, "turned eye");
+        EXPECT_EQ(turned.target, start.target);
+        EXPECT_EQ(turned.fovYDegrees, start.fovYDegrees);
+        EXPECT_NE(turned.position, start.position) << theta;
+    }
+    for (const float whole : {0.0f, 360.0f, 720.0f, -360.0f}) {
+        EXPECT_EQ(turntableCamera(start, whole), start) << whole;
+    }
+    // 360 k / N for the frames of a turn: N / N is the start again.
+    EXPECT_EQ(turntableCamera(start, float(360.0 * 7 / 7)), start);
 }
 
 // modelviewer.dev: theta about +Y from +Z, phi down from +Y; theta 0 and phi 90 look from +Z

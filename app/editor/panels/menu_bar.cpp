@@ -170,6 +170,26 @@ void drawChannelMenu(const Document& document, Interaction& interaction) {
     ImGui::EndMenu();
 }
 
+// View > Turntable and its speed.
+void drawTurntableItems(const Document& document, Interaction& interaction) {
+    Turntable& turntable = interaction.turntable;
+    bool turning = turntable.on;
+    if (ImGui::MenuItem("Turntable", nullptr, &turning)) {
+        if (turning) {
+            startTurntable(turntable, document);
+        } else {
+            turntable.on = false;
+        }
+    }
+    recordItem("Turntable", "Turn the camera about its target, round the vertical axis, at the speed below; any "
+                            "edit pauses it (patina turntable writes the frames of a turn)");
+    ImGui::SetNextItemWidth(px(120));
+    ImGui::DragFloat("Turntable speed", &turntable.degreesPerSecond, 0.5f, -360.0f, 360.0f, "%.0f deg/s",
+                     ImGuiSliderFlags_AlwaysClamp);
+    recordItem("Turntable speed", "Degrees a second the turntable turns (negative: the other way). Ctrl+click or "
+                                  "double-click to type");
+}
+
 void drawViewMenu(Document& document, Interaction& interaction, Preferences& preferences) {
     const bool viewMenu = ImGui::BeginMenu("View");
     if (!viewMenu) {
@@ -180,6 +200,7 @@ void drawViewMenu(Document& document, Interaction& interaction, Preferences& pre
         frameMesh(document);
     }
     recordItem("Frame mesh", "Aim the camera at the whole mesh");
+    drawTurntableItems(document, interaction);
     ImGui::MenuItem("Light gizmos", nullptr, &preferences.showGizmos);
     recordItem("Light gizmos", "Show the lights' dots and arrows over the viewport");
     ImGui::MenuItem("Lobe panel", nullptr, &preferences.layout.showLobe);

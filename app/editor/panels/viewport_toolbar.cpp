@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 
 #include "state/camera_choice.h"
 #include "state/editor_state.h"
+#include "views/text_match.h"
 #include "window/ui_scale.h"
 #include "window/widgets.h"
 
@@ -57,6 +59,49 @@ const char* tonemapSummary(Tonemap tonemap) {
     return "";
 }
 
+// The Camera list's bookmarks: each to go to, with its delete button, then a name and Save view
+// (Enter in the name saves too).
+void drawBookmarks(Document& document, Interaction& interaction, Prompts& prompts, const std::string& current) {
+    ImGui::Separator();
+    ImGui::TextDisabled("Bookmarks (saved with the scene)");
+    std::optional<size_t> deleted;
+    const std::vector<CameraBookmark>& bookmarks = document.scene.bookmarks;
+    for (size_t i = 0; i < bookmarks.size(); ++i) {
+        const std::string index = std::to_string(i);
+        const float deleteWidth = ImGui::CalcTextSize("x").x + ImGui::GetStyle().FramePadding.x * 2.0f;
+        const std::string label = bookmarks[i].name + "##bookmark" + index;
+        if (ImGui::Selectable(label.c_str(), bookmarks[i].name == current, 0,
+                              ImVec2(std::max(px(140), ImGui::GetContentRegionAvail().x - deleteWidth -
+                                                           ImGui::GetStyle().ItemSpacing.x), 0.0f))) {
+            goToBookmark(document, interaction, prompts, i);
+        }
+        recordItem("bookmark:" + index, "Look from this saved view");
+        ImGui::SameLine();
+        if (ImGui::SmallButton(("x##bookmark delete" + index).c_str())) {
+            deleted = i;
+        }
+        recordItem("bookmark delete:" + index, "Delete this bookmark (Ctrl+Z brings it back)");
+    }
+    if (deleted) {
+        deleteBookmark(document, prompts, *deleted);
+    }
+    ImGui::SetNextItemWidth(px(140));
+    inputString("##bookmark name", &interaction.bookmarkName, 0, "bookmark name");
+    recordItem("Bookmark name", "The name to save the view under (a name saved again takes the view as it is now)");
+    const bool entered = ImGui::IsItemDeactivated() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                                                        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+    ImGui::SameLine();
+    if (ImGui::Button("Save view") || entered) {
+        saveBookmark(document, interaction, prompts, interaction.bookmarkName);
+        if (!trimmed(interaction.bookmarkName).empty()) {
+            interaction.bookmarkName.clear();
+            ImGui::CloseCurrentPopup();
+        }
+    }
+    recordItem("Save view", "Save the camera as it is now under the name typed beside: it comes back from this "
+                            "list, and is saved with the scene");
+}
+
 // The Camera list (model-viewer's framing, then the model's own cameras; the view is made when
 // one is chosen, so no frame measures the mesh) and the field of view.
 void drawCameraControls(Document& document, Interaction& interaction, Prompts& prompts) {
@@ -82,10 +127,12 @@ void drawCameraControls(Document& document, Interaction& interaction, Prompts& p
         if (choices.size() == 1) {
             ImGui::TextDisabled("a glTF model's own cameras are listed here");
         }
+        drawBookmarks(document, interaction, prompts, current);
         ImGui::EndCombo();
     }
-    recordItem("Camera", "Look from model-viewer's framing (the front, the whole shape in view) or from one of the "
-                         "glTF file's own cameras (render --camera takes the same)");
+    recordItem("Camera", "Look from model-viewer's framing (the front, the whole shape in view), from one of the "
+                         "glTF file's own cameras (render --camera takes the same) or from a bookmark; save the "
+                         "view as a bookmark");
     sameLineIfFits(labelledWidth(px(80), "FOV"));
     ImGui::SetNextItemWidth(px(80));
     ImGui::DragFloat("FOV", &document.scene.camera.fovYDegrees, 0.2f, 1.0f, 179.0f, "%.1f deg",

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/camera_placement.h"
+#include "views/text_match.h"
 
 namespace patina::editor {
 
@@ -69,6 +70,45 @@ void chooseCamera(Document& document, Interaction& interaction, Prompts& prompts
         std::snprintf(text, sizeof text, " (rolled %.1f degrees in the file: shown level, +Y up)", double(roll));
         prompts.status += text;
     }
+}
+
+void saveBookmark(Document& document, Interaction& interaction, Prompts& prompts, const std::string& name) {
+    const std::string named = trimmed(name);
+    if (named.empty()) {
+        prompts.status = "A bookmark needs a name: type one beside Save view";
+        return;
+    }
+    applyEdit(document, [&](Document& d) {
+        std::vector<CameraBookmark>& bookmarks = d.scene.bookmarks;
+        const auto same = std::find_if(bookmarks.begin(), bookmarks.end(),
+                                       [&](const CameraBookmark& bookmark) { return bookmark.name == named; });
+        if (same != bookmarks.end()) {
+            same->camera = d.scene.camera;
+        } else {
+            bookmarks.push_back({named, d.scene.camera});
+        }
+    });
+    rememberCamera(interaction, document.scene.camera, named);
+    prompts.status = "Saved the view as the bookmark " + named;
+}
+
+void goToBookmark(Document& document, Interaction& interaction, Prompts& prompts, size_t index) {
+    if (index >= document.scene.bookmarks.size()) {
+        return;
+    }
+    const CameraBookmark& bookmark = document.scene.bookmarks[index];
+    document.scene.camera = bookmark.camera;
+    rememberCamera(interaction, bookmark.camera, bookmark.name);
+    prompts.status = "Camera: the bookmark " + bookmark.name;
+}
+
+void deleteBookmark(Document& document, Prompts& prompts, size_t index) {
+    if (index >= document.scene.bookmarks.size()) {
+        return;
+    }
+    const std::string name = document.scene.bookmarks[index].name;
+    applyEdit(document, [&](Document& d) { d.scene.bookmarks.erase(d.scene.bookmarks.begin() + std::ptrdiff_t(index)); });
+    prompts.status = "Deleted the bookmark " + name + " (Ctrl+Z brings it back)";
 }
 
 }  // namespace patina::editor

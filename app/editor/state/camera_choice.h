@@ -31,6 +31,13 @@ std::string currentCameraName(const Document& document, const Interaction& inter
 // scene's field of view, a file's camera with its own; the status says which, and the roll of a
 // rolled camera, which is not shown. An unusable choice changes nothing and says why.
 void chooseCamera(Document& document, Interaction& interaction, Prompts& prompts, const CameraChoice& choice);
+// Camera bookmarks (Scene::bookmarks), listed after the choices. Saving the camera under a name
+// (trimmed; an empty one is refused, the status says so) is an undoable step, as is deleting
+// one; a name saved again takes the camera as it is now. Going to one is a view, as a choice
+// is; the list names it while the camera stays there. An index out of range changes nothing.
+void saveBookmark(Document& document, Interaction& interaction, Prompts& prompts, const std::string& name);
+void goToBookmark(Document& document, Interaction& interaction, Prompts& prompts, size_t index);
+void deleteBookmark(Document& document, Prompts& prompts, size_t index);
 // The scene's camera is now `camera`, the view named `name` (a model opened and framed): the list
 // names it.
 void rememberCamera(Interaction& interaction, const Camera& camera, const std::string& name);

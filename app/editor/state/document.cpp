@@ -14,7 +14,7 @@ bool Document::sceneChanged() const {
     return scene.lights != savedScene.lights || scene.camera != savedScene.camera ||
            scene.display != savedScene.display || scene.mesh != savedScene.mesh ||
            scene.meshFile != savedScene.meshFile || scene.modelMaterials != savedScene.modelMaterials ||
-           scene.modelBrdf != savedScene.modelBrdf;
+           scene.modelBrdf != savedScene.modelBrdf || scene.bookmarks != savedScene.bookmarks;
 }
 
 int Document::environmentIndex() const {
@@ -46,6 +46,9 @@ std::string unsavedParts(const Document& document) {
     }
     if (now.camera != saved.camera) {
         parts.push_back("the camera");
+    }
+    if (now.bookmarks != saved.bookmarks) {
+        parts.push_back("the camera bookmarks");
     }
     if (now.display != saved.display) {
         parts.push_back("the display settings");
@@ -96,6 +99,7 @@ void restore(Document& document, Interaction& interaction, const EditSnapshot& s
     document.scene.display = snapshot.display;
     document.scene.modelMaterials = snapshot.modelMaterials;
     document.scene.modelBrdf = snapshot.modelBrdf;
+    document.scene.bookmarks = snapshot.bookmarks;
     document.model = snapshot.shape.model;   // the same file with the maps it had replaced, or another
     if (!(document.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
         document.scene.mesh = snapshot.shape.kind;

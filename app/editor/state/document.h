@@ -42,7 +42,8 @@ struct Document {
     bool dirty() const { return materialChanged() || sceneChanged(); }
     ShownShape shownShape() const { return {scene.mesh, scene.meshFile, mesh, model, scene.camera}; }
     EditSnapshot snapshot() const {
-        return {scene.material, scene.lights, scene.display, scene.modelMaterials, scene.modelBrdf, shownShape()};
+        return {scene.material,       scene.lights,    scene.display,
+                scene.modelMaterials, scene.modelBrdf, shownShape(), scene.bookmarks};
     }
     // Whether `index` is one of the scene's lights.
     bool hasLight(int index) const { return index >= 0 && index < int(scene.lights.size()); }

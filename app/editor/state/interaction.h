@@ -11,6 +11,7 @@
 #include "gl/render_path.h"
 #include "scene/channel.h"
 #include "scene/scene.h"
+#include "state/turntable.h"
 
 namespace patina::editor {
 
@@ -59,6 +60,8 @@ struct Interaction {
     // named while the scene's camera stays on it; a drag leaves it "free".
     std::string cameraName;
     Camera cameraView;
+    std::string bookmarkName;                // typed in the Camera list, for Save view
+    Turntable turntable;                     // View > Turntable
     RenderPath renderPath = RenderPath::Single;
 
     std::optional<Material> compareA;        // "Set A"; B is the current material

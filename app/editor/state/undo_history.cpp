@@ -1,5 +1,7 @@
 #include "state/undo_history.h"
 
+#include <algorithm>
+
 namespace patina::editor {
 
 namespace {
@@ -44,6 +46,31 @@ std::string lightsChange(const std::vector<Light>& a, const std::vector<Light>& 
         }
     }
     return fields.size() == 1 ? fields[0] : "the lights";
+}
+
+// "saving the bookmark Front", "deleting the bookmark Front", "the bookmarks".
+std::string bookmarksChange(const std::vector<CameraBookmark>& a, const std::vector<CameraBookmark>& b) {
+    auto missingFrom = [](const std::vector<CameraBookmark>& from, const std::vector<CameraBookmark>& other) {
+        for (const CameraBookmark& bookmark : other) {
+            if (std::none_of(from.begin(), from.end(),
+                             [&](const CameraBookmark& kept) { return kept.name == bookmark.name; })) {
+                return bookmark.name;
+            }
+        }
+        return std::string();
+    };
+    if (b.size() == a.size() + 1) {
+        return "saving the bookmark " + missingFrom(a, b);
+    }
+    if (a.size() == b.size() + 1) {
+        return "deleting the bookmark " + missingFrom(b, a);
+    }
+    for (size_t i = 0; i < a.size() && a.size() == b.size(); ++i) {
+        if (a[i] != b[i] && a[i].name == b[i].name) {
+            return "saving the bookmark " + b[i].name;   // saved again over itself
+        }
+    }
+    return "the bookmarks";
 }
 
 std::string displayChange(const DisplaySettings& a, const DisplaySettings& b) {
@@ -108,6 +135,9 @@ std::string describeChange(const EditSnapshot& before, const EditSnapshot& after
     }
     if (before.modelBrdf != after.modelBrdf) {
         parts.push_back("the BRDF model of every part");
+    }
+    if (before.bookmarks != after.bookmarks) {
+        parts.push_back(bookmarksChange(before.bookmarks, after.bookmarks));
     }
     if (before.shape != after.shape) {
         const ShownShape& shown = after.shape.file.empty() && !before.shape.file.empty() ? before.shape : after.shape;

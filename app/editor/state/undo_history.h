@@ -24,8 +24,9 @@ struct ShownShape {
 };
 
 // What undo restores: the material, the light list and the display settings (exposure, tone
-// map, background), each a choice an artist makes and may want back, the model's tuning, and
-// the shape shown (opening a model and fitting the lights to it is one step).
+// map, background), each a choice an artist makes and may want back, the model's tuning, the
+// shape shown (opening a model and fitting the lights to it is one step), and the camera
+// bookmarks (saving one is a step; going to one is a view, as orbiting is).
 struct EditSnapshot {
     Material material;
     std::vector<Light> lights;
@@ -33,6 +34,7 @@ struct EditSnapshot {
     std::vector<ModelMaterialEdit> modelMaterials;   // the scene's model's materials as tuned
     std::optional<BrdfModelId> modelBrdf;            // Scene::modelBrdf
     ShownShape shape;
+    std::vector<CameraBookmark> bookmarks;           // Scene::bookmarks
 
     bool operator==(const EditSnapshot&) const = default;
 };

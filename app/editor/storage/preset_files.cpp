@@ -10,11 +10,6 @@
 namespace patina::editor {
 
 namespace {
-std::string trimmed(const std::string& text) {
-    const size_t first = text.find_first_not_of(" \t");
-    return first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
 std::filesystem::path withBak(const std::filesystem::path& file) {
     return std::filesystem::path(file) += ".bak";
 }

@@ -109,8 +109,8 @@ struct Loop {
     std::string shownMessages = shownText(state, services);
 };
 
-// A few frames after input, then asleep until input, or until a change waiting to be written
-// is due.
+// A few frames after input (every frame while the turntable turns), then asleep until input, or
+// until a change waiting to be written is due.
 void waitForEvents(Loop& loop) {
     if (loop.framesLeft > 0) {
         glfwPollEvents();
@@ -233,7 +233,8 @@ void afterFrame(Loop& loop) {
         loop.shownMessages = std::move(messages);
         loop.framesLeft = std::max(loop.framesLeft, kFramesAfterInput);
     }
-    if (windowsSettling()) {
+    // A window settling, or the turntable turning: the next frame is drawn without waiting.
+    if (windowsSettling() || state.turntable.on) {
         loop.framesLeft = std::max(loop.framesLeft, 1);
     }
     if (loop.layoutDump) {

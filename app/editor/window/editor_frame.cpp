@@ -103,6 +103,9 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         finishModelLoad(state);
     }
     resolveEnvironmentShown(state, state, state);
+    // Before anything draws the camera; an edit in the last frame (or a file just opened) pauses
+    // it instead. A frame after a long wait turns it a tenth of a second at most.
+    advanceTurntable(state.turntable, state, state, std::min(double(ImGui::GetIO().DeltaTime), 0.1));
     drawGuarded(state, "The screenshot", [&] { takeRequestedScreenshot(state, services); });
     drawGuarded(state, "The menu", [&] { drawMenuBar(state, services); });
     // Before the panels and dialogs, so a dialog a key opens (Ctrl+O) appears, and takes the
