@@ -81,6 +81,7 @@ TEST(SheenRender, AtTheSpheresCentreTheGpuIsTheCpuTwin) {
         light.direction = {-std::sqrt(0.75f), 0.0f, -0.5f};
         light.intensity = 2.0f;
         light.sky = {0.5f, 0.5f, 0.5f};
+        light.ground = {0.4f, 0.4f, 0.4f};   // what N = +z sees (up is +y)
         scene.lights = {light};
         const glm::vec3 color(0.9f, 0.6f, 1.0f);
         auto centre = [&](glm::vec3 sheenColor, RenderPath path) {
