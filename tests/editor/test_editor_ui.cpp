@@ -223,7 +223,7 @@ TEST_F(EditorUi, APartsSheenIsDraggedOnUndoneAndSaved) {
     const Json saved = sceneToJson(state_.scene);
     ASSERT_TRUE(saved.contains("modelMaterials"));
     EXPECT_EQ(saved["modelMaterials"][0]["material"]["sheenRoughness"], 1.0);
-    EXPECT_EQ(saved["modelMaterials"][0]["material"]["sheenColor"][0], double(dragged.r));
+    EXPECT_NEAR(saved["modelMaterials"][0]["material"]["sheenColor"][0].get<double>(), dragged.r, 1e-6);
     press(kKeyZ, true);
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenRoughness, 0.0f);
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, dragged);
