@@ -47,6 +47,10 @@ Model twoBalls();
 glm::vec3 pixel(const HdrImage& image, int x, int y);
 glm::ivec2 pixelOf(const Camera& camera, glm::vec3 point, int width, int height);
 
+// One light of every type and the studio environment around the default scene's unit sphere:
+// the scene the material layers' render tests draw (ClearcoatRender, SheenRender).
+std::vector<Light> everyLightType();
+
 // Default settings but for the image size, path and MSAA samples.
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples);
 
@@ -62,6 +66,9 @@ glm::dvec3 vectorAtCosine(glm::dvec3 axis, double cosine, std::mt19937& rng);
 // |a - b| / |b| per channel where |b| > floor; the largest one.
 double maxRelativeError(const std::vector<glm::vec3>& values,
                         const std::vector<reference::Vec3>& reference, double floor);
+
+// |a - b| / max(|b|, 0.01) over every channel of two images of one size: the largest.
+double maxRelativeDifference(const HdrImage& a, const HdrImage& b);
 
 // An equirect image of radiance `f(direction)` at its pixel centres (environment tests).
 template <typename F>

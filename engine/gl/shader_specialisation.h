@@ -41,6 +41,12 @@ bool hasNoDiffuse(const MaterialParameters& material);
 // items whose programs compile the coat in (PATINA_CLEARCOAT).
 inline bool hasClearcoat(const MaterialParameters& material) { return material.clearcoat > 0.0f; }
 
+// Whether `material` has a sheen to draw (KHR_materials_sheen's colour above 0 in a channel):
+// the items whose programs compile the sheen in (PATINA_SHEEN).
+inline bool hasSheen(const MaterialParameters& material) {
+    return material.sheenColor.r > 0.0f || material.sheenColor.g > 0.0f || material.sheenColor.b > 0.0f;
+}
+
 // `lights` as packEnabledLights gives them (the uniform block's order); `noDiffuse` when every
 // material drawn has none (hasNoDiffuse). `flatSlots`: how many lights the vertex stage can
 // hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).

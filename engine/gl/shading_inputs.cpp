@@ -20,6 +20,8 @@ extern const char* const channels_glsl;
 extern const char* const channel_model_glsl;
 extern const char* const lights_glsl;
 extern const char* const clearcoat_glsl;
+extern const char* const sheen_texel_glsl;
+extern const char* const sheen_glsl;
 extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
 extern const char* const energy_table_glsl;
@@ -43,6 +45,7 @@ std::vector<const char*> shadingFragmentParts(bool channels) {
     std::vector<const char*> parts{
         shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
         shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::clearcoat_glsl,
+        shader_sources::sheen_texel_glsl,  shader_sources::sheen_glsl,
         shader_sources::energy_texel_glsl,
         shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
         shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::texture_glsl,
@@ -103,7 +106,8 @@ void setEnvironmentUniforms(const GlProgram& program, const Environment& environ
 MaterialUniforms::MaterialUniforms(const GlProgram& program)
     : baseColor_(program.uniform("uBaseColor")), roughness_(program.uniform("uRoughness")),
       specular_(program.uniform("uSpecular")), metallic_(program.uniform("uMetallic")),
-      clearcoat_(program.uniform("uClearcoat")), clearcoatRoughness_(program.uniform("uClearcoatRoughness")) {}
+      clearcoat_(program.uniform("uClearcoat")), clearcoatRoughness_(program.uniform("uClearcoatRoughness")),
+      sheenColor_(program.uniform("uSheenColor")), sheenRoughness_(program.uniform("uSheenRoughness")) {}
 
 void MaterialUniforms::set(const MaterialParameters& material) const {
     glUniform3f(baseColor_, material.baseColor.x, material.baseColor.y, material.baseColor.z);
@@ -113,6 +117,10 @@ void MaterialUniforms::set(const MaterialParameters& material) const {
     if (clearcoat_ >= 0) {   // only a coated program has them (PATINA_CLEARCOAT)
         glUniform1f(clearcoat_, material.clearcoat);
         glUniform1f(clearcoatRoughness_, material.clearcoatRoughness);
+    }
+    if (sheenColor_ >= 0) {   // only a sheened program has them (PATINA_SHEEN)
+        glUniform3f(sheenColor_, material.sheenColor.x, material.sheenColor.y, material.sheenColor.z);
+        glUniform1f(sheenRoughness_, material.sheenRoughness);
     }
 }
 

@@ -46,7 +46,8 @@ public:
     void set(const MaterialParameters& material) const;   // its program in use
 
 private:
-    GLint baseColor_, roughness_, specular_, metallic_, clearcoat_, clearcoatRoughness_;
+    GLint baseColor_, roughness_, specular_, metallic_, clearcoat_, clearcoatRoughness_, sheenColor_,
+        sheenRoughness_;
 };
 // The same, for one draw (program must be in use).
 void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material);

@@ -6,6 +6,7 @@
 
 #include "shading/brdf_models.h"
 #include "shading/energy_table.h"
+#include "shading/sheen_table.h"
 #include "shading/environment_brdf.h"
 #include "scene/light_packing.h"
 #include "gl/shading_inputs.h"
@@ -38,6 +39,9 @@ ShadingPrograms::~ShadingPrograms() {
             glDeleteTextures(1, &texture);
         }
     }
+    if (sheenTexture_) {
+        glDeleteTextures(1, &sheenTexture_);
+    }
 }
 
 std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output output, Surface surface,
@@ -48,11 +52,14 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (output == Output::LinearAndDisplay) {
         defines.push_back("PATINA_DISPLAY_OUTPUT");
     }
-    if (surface == Surface::Maps || surface == Surface::CoatedMaps) {
+    if (has(surface, Surface::Maps)) {
         defines.push_back("PATINA_TEXTURED");
     }
-    if (surface == Surface::CoatedFactors || surface == Surface::CoatedMaps) {
+    if (has(surface, Surface::Clearcoat)) {
         defines.push_back("PATINA_CLEARCOAT");
+    }
+    if (has(surface, Surface::Sheen)) {
+        defines.push_back("PATINA_SHEEN");
     }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {
@@ -76,6 +83,13 @@ const GlProgram& ShadingPrograms::bind(BrdfModelId model, const GlProgram& progr
         glActiveTexture(GL_TEXTURE0);
     }
     glUniform1i(program.uniform("uEnergyTable"), kEnergyUnit);
+    // Only a sheened program reads the sheen's table (the others have no such uniform).
+    if (const GLint sheenTable = program.uniform("uSheenTable"); sheenTable >= 0) {
+        glActiveTexture(GL_TEXTURE0 + kSheenTableUnit);
+        glBindTexture(GL_TEXTURE_2D, sheenTexture());
+        glActiveTexture(GL_TEXTURE0);
+        glUniform1i(sheenTable, kSheenTableUnit);
+    }
     if (environment) {
         glActiveTexture(GL_TEXTURE0 + kEnvironmentBrdfUnit);
         glBindTexture(GL_TEXTURE_2D, environmentBrdfTexture(model));
@@ -218,6 +232,13 @@ unsigned ShadingPrograms::environmentBrdfTexture(BrdfModelId model) {
         texture = tableTexture(GL_RG32F, GL_RG, kEnvironmentBrdfSize, environmentBrdfTable(model).data());
     }
     return texture;
+}
+
+unsigned ShadingPrograms::sheenTexture() {
+    if (!sheenTexture_) {
+        sheenTexture_ = tableTexture(GL_R32F, GL_RED, kSheenTableSize, sheenAlbedoTable().data());
+    }
+    return sheenTexture_;
 }
 
 unsigned ShadingPrograms::energyTexture(BrdfModelId model) {

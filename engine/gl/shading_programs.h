@@ -44,11 +44,15 @@ public:
     // and emission (PATINA_TEXTURED: mesh.vert hands on UVs and tangents, surface_maps.glsl
     // reads the maps; docs/FORMATS.md, "glTF").
     // Either also with KHR_materials_clearcoat's coat (PATINA_CLEARCOAT, shaders/shared/
-    // clearcoat.glsl): compiled only for items whose material has one (hasClearcoat).
-    enum class Surface { Factors, Maps, CoatedFactors, CoatedMaps };
-    static Surface surfaceOf(bool maps, bool clearcoat) {
-        return clearcoat ? (maps ? Surface::CoatedMaps : Surface::CoatedFactors) : (maps ? Surface::Maps : Surface::Factors);
+    // clearcoat.glsl) and with KHR_materials_sheen's sheen (PATINA_SHEEN, shaders/shared/
+    // sheen.glsl), each compiled only for items whose material has one (hasClearcoat,
+    // hasSheen). Bits: Maps, Clearcoat and Sheen combine (surfaceOf).
+    enum class Surface { Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4 };
+    static Surface surfaceOf(bool maps, bool clearcoat, bool sheen) {
+        return Surface((maps ? int(Surface::Maps) : 0) | (clearcoat ? int(Surface::Clearcoat) : 0) |
+                       (sheen ? int(Surface::Sheen) : 0));
     }
+    static bool has(Surface surface, Surface part) { return (int(surface) & int(part)) != 0; }
 
     ShadingPrograms() = default;
     ~ShadingPrograms();
@@ -67,6 +71,9 @@ public:
     static constexpr int kEnvironmentSourceUnit = 4;       // the stochastic mode's source chain
     static constexpr int kEnvironmentIrradianceUnit = 5;   // the irradiance map
     static constexpr int kFirstMapUnit = 6;                // Surface::Maps: the maps' units (SurfaceMap order)
+    // The sheen's albedo table (Surface::Sheen), after the maps' ten units: 16, which every
+    // GL 3.3 fragment stage has (GL_MAX_TEXTURE_IMAGE_UNITS is 16 at least).
+    static constexpr int kSheenTableUnit = 16;
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);
@@ -102,8 +109,10 @@ private:
     unsigned long long frameStart_ = ~0ull;   // uses from here on are the current frame's (none before a frame)
     EnvironmentShading environmentShading_;
     std::map<BrdfModelId, unsigned> energyTextures_, environmentBrdfTextures_;
+    unsigned sheenTexture_ = 0;   // sheen_table.h's, made on the first sheened program's use
 
     unsigned energyTexture(BrdfModelId model);
+    unsigned sheenTexture();
     unsigned environmentBrdfTexture(BrdfModelId model);
     std::unique_ptr<GlProgram> build(BrdfModelId model, Output output, Surface surface,
                                      const std::vector<const char*>& vertexParts, std::vector<std::string> defines);

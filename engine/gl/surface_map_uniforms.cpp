@@ -7,7 +7,8 @@ namespace patina {
 namespace {
 constexpr const char* kSamplerNames[kSurfaceMapCount] = {
     "uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",      "uOcclusionMap",
-    "uEmissiveMap",  "uClearcoatMap",         "uClearcoatRoughnessMap", "uClearcoatNormalMap"};
+    "uEmissiveMap",  "uClearcoatMap",         "uClearcoatRoughnessMap", "uClearcoatNormalMap",
+    "uSheenColorMap", "uSheenRoughnessMap"};
 
 }  // namespace
 

@@ -15,7 +15,8 @@ namespace patina {
 // The maps in surface_maps.glsl's order; each on texture unit firstUnit + its index.
 enum class SurfaceMap {
     BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
-    Clearcoat, ClearcoatRoughness, ClearcoatNormal   // KHR_materials_clearcoat's
+    Clearcoat, ClearcoatRoughness, ClearcoatNormal,   // KHR_materials_clearcoat's
+    SheenColor, SheenRoughness                        // KHR_materials_sheen's
 };
 inline constexpr int kSurfaceMapCount = kMapCount;   // model/model.h's mapsOf order
 

@@ -13,6 +13,7 @@ namespace {
 constexpr const char* kSpecular = "KHR_materials_specular";
 constexpr const char* kIor = "KHR_materials_ior";
 constexpr const char* kClearcoat = "KHR_materials_clearcoat";
+constexpr const char* kSheen = "KHR_materials_sheen";
 
 float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
 
@@ -23,6 +24,7 @@ double exact(float value) { return double(value); }
 
 const char* const kMaterialExtensions[2] = {kSpecular, kIor};
 const char* const kClearcoatExtension = kClearcoat;
+const char* const kSheenExtension = kSheen;
 
 double f0FromIor(double ior) {
     const double r = (ior - 1.0) / (ior + 1.0);
@@ -64,6 +66,15 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     const tinygltf::Value* clearcoat = extensionOf(material.extensions, kClearcoat);
     result.clearcoat = unit(numberField(clearcoat, "clearcoatFactor", 0.0, clearcoatAt, source));
     result.clearcoatRoughness = unit(numberField(clearcoat, "clearcoatRoughnessFactor", 0.0, clearcoatAt, source));
+    // KHR_materials_sheen: sheenColorFactor (linear RGB) and sheenRoughnessFactor, both 0 by
+    // default (no sheen). Its maps are read beside the core maps (model_materials.cpp).
+    const std::string sheenAt = what + "/extensions/" + kSheen;
+    const tinygltf::Value* sheen = extensionOf(material.extensions, kSheen);
+    const std::vector<double> sheenColor = numbersField(sheen, "sheenColorFactor", 3, sheenAt, source);
+    for (size_t i = 0; i < sheenColor.size(); ++i) {
+        result.sheenColor[int(i)] = unit(sheenColor[i]);
+    }
+    result.sheenRoughness = unit(numberField(sheen, "sheenRoughnessFactor", 0.0, sheenAt, source));
     return result;
 }
 
@@ -83,6 +94,12 @@ Json materialToGltf(const Material& material) {
     if (material.clearcoat > 0.0f || material.clearcoatRoughness > 0.0f) {
         json["extensions"][kClearcoat] = {{"clearcoatFactor", exact(material.clearcoat)},
                                           {"clearcoatRoughnessFactor", exact(material.clearcoatRoughness)}};
+    }
+    // A sheen only where there is one, as the coat.
+    if (material.sheenColor != glm::vec3(0.0f) || material.sheenRoughness > 0.0f) {
+        const glm::vec3& sheen = material.sheenColor;
+        json["extensions"][kSheen] = {{"sheenColorFactor", {exact(sheen.r), exact(sheen.g), exact(sheen.b)}},
+                                      {"sheenRoughnessFactor", exact(material.sheenRoughness)}};
     }
     return json;
 }

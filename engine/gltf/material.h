@@ -26,9 +26,11 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
 
 // pbrMetallicRoughness plus KHR_materials_specular (specularFactor 1, so that F90 stays 1, and
 // specularColorFactor 0.08 * specular / f0FromIor(1.5) = 2 * specular) and KHR_materials_ior 1.5,
-// and KHR_materials_clearcoat's factors where the material has a coat (either factor above 0).
+// KHR_materials_clearcoat's factors where the material has a coat (either factor above 0), and
+// KHR_materials_sheen's where it has a sheen (its colour or roughness above 0).
 Json materialToGltf(const Material& material);
 extern const char* const kMaterialExtensions[2];   // the extensions materialToGltf always uses
 extern const char* const kClearcoatExtension;      // "KHR_materials_clearcoat", where it has a coat
+extern const char* const kSheenExtension;          // "KHR_materials_sheen", where it has a sheen
 
 }  // namespace patina::gltf

@@ -226,6 +226,27 @@ void clearcoatJson(const ModelMaterial& material, Textures& textures, Json& json
     textures.extensions.insert(name);
 }
 
+// KHR_materials_sheen where the material has a sheen: the factors materialToGltf wrote, and
+// the sheen's two maps (model_materials.cpp reads them back).
+void sheenJson(const ModelMaterial& material, Textures& textures, Json& json) {
+    const char* name = gltf::kSheenExtension;
+    const bool maps = material.sheenColor.present() || material.sheenRoughness.present();
+    if (!maps && !(json.contains("extensions") && json["extensions"].contains(name))) {
+        return;
+    }
+    Json& sheen = json["extensions"][name];
+    if (!sheen.is_object()) {   // maps on a sheen of colour 0
+        sheen = {{"sheenColorFactor", {0.0, 0.0, 0.0}}, {"sheenRoughnessFactor", 0.0}};
+    }
+    if (material.sheenColor.present()) {
+        sheen["sheenColorTexture"] = textures.info(material.sheenColor);
+    }
+    if (material.sheenRoughness.present()) {
+        sheen["sheenRoughnessTexture"] = textures.info(material.sheenRoughness);
+    }
+    textures.extensions.insert(name);
+}
+
 // The material as glTF writes it (3.9): the factors as materialToGltf maps them, and every
 // map, alpha, emission and sidedness the model read (the inverse of model_materials.cpp).
 Json materialJson(const ModelMaterial& material, Textures& textures) {
@@ -271,6 +292,7 @@ Json materialJson(const ModelMaterial& material, Textures& textures) {
         json["doubleSided"] = true;
     }
     clearcoatJson(material, textures, json);
+    sheenJson(material, textures, json);
     return json;
 }
 

@@ -82,6 +82,7 @@ private:
     TextureSampler samplerOf(const tinygltf::Texture& texture, int index) const;
     void transform(const tinygltf::ExtensionMap& extensions, const std::string& where, TextureSlot& slot) const;
     void clearcoatMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
+    void sheenMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
 
     const tinygltf::Model& document_;
     const std::string& source_;
@@ -263,6 +264,7 @@ ModelMaterial MaterialReader::read(int index) {
     result.alphaCutoff = float(material.alphaCutoff);
     result.doubleSided = material.doubleSided;
     clearcoatMaps(material, where, result);
+    sheenMaps(material, where, result);
     return result;
 }
 
@@ -285,6 +287,20 @@ void MaterialReader::clearcoatMaps(const tinygltf::Material& material, const std
         const tinygltf::Value& normal = object->Get("clearcoatNormalTexture");
         result.clearcoatNormalScale = float(numberField(&normal, "scale", 1.0, at + "/clearcoatNormalTexture", source_));
     }
+}
+
+// KHR_materials_sheen's two maps (its factors are materialFromGltf's), each a textureInfo read
+// as the core maps are: the colour's RGB (sRGB), the roughness's A.
+void MaterialReader::sheenMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result) {
+    const char* name = "KHR_materials_sheen";
+    const tinygltf::Value* object = extensionOf(material.extensions, name);
+    if (!object) {
+        return;
+    }
+    const std::string at = where + "/extensions/" + name;
+    result.sheenColor = slot(textureInfoOf(object, "sheenColorTexture", at, source_), at + "/sheenColorTexture");
+    result.sheenRoughness =
+        slot(textureInfoOf(object, "sheenRoughnessTexture", at, source_), at + "/sheenRoughnessTexture");
 }
 
 }  // namespace

@@ -287,6 +287,8 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.metallic = reader.number("metallic", material.metallic, kUnit);
     material.clearcoat = reader.number("clearcoat", material.clearcoat, kUnit);
     material.clearcoatRoughness = reader.number("clearcoatRoughness", material.clearcoatRoughness, kUnit);
+    material.sheenColor = reader.vec3("sheenColor", material.sheenColor, kUnit);
+    material.sheenRoughness = reader.number("sheenRoughness", material.sheenRoughness, kUnit);
     if (reader.has("model")) {
         material.model = brdfModelFromJson(reader, "model");
     }
@@ -500,6 +502,11 @@ Json materialToJson(const Material& material) {
     if (material.clearcoat != 0.0f || material.clearcoatRoughness != 0.0f) {
         json["clearcoat"] = toJson(material.clearcoat);
         json["clearcoatRoughness"] = toJson(material.clearcoatRoughness);
+    }
+    // KHR_materials_sheen's the same way.
+    if (material.sheenColor != glm::vec3(0.0f) || material.sheenRoughness != 0.0f) {
+        json["sheenColor"] = toJson(material.sheenColor);
+        json["sheenRoughness"] = toJson(material.sheenRoughness);
     }
     if (!material.notes.empty()) {
         json["notes"] = material.notes;

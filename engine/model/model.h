@@ -62,6 +62,10 @@ struct ModelMaterial {
     TextureSlot clearcoatRoughness;         // linear; G
     TextureSlot clearcoatNormal;            // linear
     float clearcoatNormalScale = 1.0f;
+    // KHR_materials_sheen's maps (its factors are `factors.sheenColor` and
+    // `factors.sheenRoughness`): RGB scales the sheen's colour, A its roughness.
+    TextureSlot sheenColor;                 // sRGB; RGB
+    TextureSlot sheenRoughness;             // linear; A
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
@@ -69,8 +73,9 @@ struct ModelMaterial {
 };
 
 // A material's maps in their one order (the shaders' too: surface_maps.glsl): glTF 2.0's five,
-// then KHR_materials_clearcoat's three; each with whether its texels are sRGB (base colour and
-// emissive; the others are data, glTF 2.0 3.9.2-3.9.3), its name for people and its key
+// then KHR_materials_clearcoat's three, then KHR_materials_sheen's two; each with whether its
+// texels are sRGB (base colour, emissive and sheen colour; the others are data, glTF 2.0
+// 3.9.2-3.9.3), its name for people and its key
 // (glTF's name of the property, which scene files use too).
 template <typename Slot>
 struct MapOf {
@@ -80,7 +85,7 @@ struct MapOf {
     const char* key;
 };
 inline constexpr int kCoreMapCount = 5;   // glTF 2.0's own maps, the first of mapsOf
-inline constexpr int kMapCount = 8;
+inline constexpr int kMapCount = 10;
 template <typename Material>   // ModelMaterial or const ModelMaterial
 auto mapsOf(Material& material) {
     using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
@@ -92,7 +97,9 @@ auto mapsOf(Material& material) {
          {&material.emissive, true, "emissive", "emissiveTexture"},
          {&material.clearcoat, false, "clear coat", "clearcoatTexture"},
          {&material.clearcoatRoughness, false, "clear coat roughness", "clearcoatRoughnessTexture"},
-         {&material.clearcoatNormal, false, "clear coat normal", "clearcoatNormalTexture"}}};
+         {&material.clearcoatNormal, false, "clear coat normal", "clearcoatNormalTexture"},
+         {&material.sheenColor, true, "sheen colour", "sheenColorTexture"},
+         {&material.sheenRoughness, false, "sheen roughness", "sheenRoughnessTexture"}}};
 }
 // The map of `material` whose key is `key`, or nothing: what a scene file's key names.
 template <typename Material>

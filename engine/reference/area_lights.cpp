@@ -234,7 +234,7 @@ struct AreaLightIntegrand {
     const shader::SurfaceMaterial& material;
     glm::vec3 N, V;
     const ReferenceOptions& options;
-    shader::Clearcoat coat;
+    ReferenceLayers layers;
 
     glm::dvec3 operator()(const PreparedAreaLight& light, glm::dvec3 L) const {
         const float NoL = float(glm::dot(glm::dvec3(N), L));
@@ -242,7 +242,7 @@ struct AreaLightIntegrand {
             return glm::dvec3(0.0);
         }
         const shader::BrdfValue f = evaluateBrdf(model, material, N, V, glm::vec3(L));
-        return light.radiance * glm::dvec3(coatedBrdf(f, coat, V, glm::vec3(L), options)) * double(std::min(NoL, 1.0f));
+        return light.radiance * glm::dvec3(coatedBrdf(f, layers, N, V, glm::vec3(L), options)) * double(std::min(NoL, 1.0f));
     }
     double ggx(glm::dvec3 L) const { return double(ggxPdf(N, V, glm::vec3(L), material.alpha)); }
 };
@@ -303,7 +303,8 @@ ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMat
         return {};
     }
     const glm::dvec3 x(P);
-    const AreaLightIntegrand integrand{model, material, N, V, options, referenceCoat(options, N, V)};
+    const AreaLightIntegrand integrand{model, material, N, V, options,
+                                       {referenceCoat(options, N, V), referenceSheen(options, N, V)}};
     std::mt19937_64 random(options.seed ^ 0xA5EA11A5EA11A5EAull);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     const Uniform u = [&] { return uniform(random); };

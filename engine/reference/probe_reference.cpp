@@ -45,6 +45,8 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         const size_t m = size_t(materialOfSample[i]);
         options.clearcoat = materials[m].clearcoat;
         options.clearcoatRoughness = materials[m].clearcoatRoughness;
+        options.sheenColor = materials[m].sheenColor;
+        options.sheenRoughness = materials[m].sheenRoughness;
         const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,
                                                       options);

@@ -40,13 +40,29 @@ shader::Clearcoat referenceCoat(const ReferenceOptions& options, glm::vec3 N, gl
     return shader::deriveClearcoat(options.clearcoat, options.clearcoatRoughness, N, V);
 }
 
-glm::vec3 coatedBrdf(const shader::BrdfValue& f, const shader::Clearcoat& coat, glm::vec3 V, glm::vec3 L,
-                     const ReferenceOptions& options) {
-    const glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
-                            (options.specular ? f.specular : glm::vec3(0.0f));
+shader::Sheen referenceSheen(const ReferenceOptions& options, glm::vec3 N, glm::vec3 V) {
+    return shader::deriveSheen(options.sheenColor, options.sheenRoughness, N, V);
+}
+
+namespace {
+bool hasReferenceSheen(const ReferenceOptions& options) {
+    return options.sheenColor != glm::vec3(0.0f);
+}
+}  // namespace
+
+glm::vec3 coatedBrdf(const shader::BrdfValue& f, const ReferenceLayers& layers, glm::vec3 N, glm::vec3 V,
+                     glm::vec3 L, const ReferenceOptions& options) {
+    glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
+                      (options.specular ? f.specular : glm::vec3(0.0f));
+    if (hasReferenceSheen(options)) {
+        // The extension's f_sheen + f_base sheenAlbedoScaling, E at N.V and N.L both.
+        const glm::vec3 lobe = options.specular ? shader::sheenBrdf(layers.sheen, N, V, L) : glm::vec3(0.0f);
+        lobes = shader::sheenOver(lobes, shader::SheenShare(lobe, shader::sheenBaseWeight(layers.sheen, glm::dot(N, L))));
+    }
     if (options.clearcoat <= 0.0f) {
         return lobes;
     }
+    const shader::Clearcoat& coat = layers.coat;
     const float layer = options.specular ? shader::clearcoatBrdf(coat, V, L) : 0.0f;
     return shader::clearcoatOver(lobes, glm::vec3(layer), coat);
 }
@@ -68,9 +84,22 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
         }
     }
     const bool coated = options.clearcoat > 0.0f;
-    const shader::Clearcoat coat = referenceCoat(options, N, V);
-    // The coat over the lights added exactly (clearcoat.glsl's, a hemisphere light's none).
-    auto overExact = [&](glm::vec3 base, const std::vector<shader::PackedLight>& some) {
+    const ReferenceLayers layers{referenceCoat(options, N, V), referenceSheen(options, N, V)};
+    const shader::Clearcoat& coat = layers.coat;
+    // The lights added exactly: with a sheen, each light's base weighed by its albedo scaling and
+    // the sheen's lobe added (sheen.glsl's sheenLight), then the coat over them all
+    // (clearcoat.glsl's, a hemisphere light's none).
+    auto overExact = [&](const std::vector<shader::PackedLight>& some) {
+        glm::vec3 base(0.0f);
+        if (hasReferenceSheen(options)) {
+            for (const shader::PackedLight& light : some) {
+                shader::SheenShare share = shader::sheenLight(light, layers.sheen, P, N, V);
+                share.sheen = options.specular ? share.sheen : glm::vec3(0.0f);
+                base += shader::sheenOver(shadePoint(model, material, {light}, P, N, V), share);
+            }
+        } else {
+            base = shadePoint(model, material, some, P, N, V);
+        }
         if (!coated) {
             return base;
         }
@@ -80,9 +109,9 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
         }
         return shader::clearcoatOver(base, layer, coat);
     };
-    estimate.value += overExact(shadePoint(model, material, exact, P, N, V), exact);
+    estimate.value += overExact(exact);
     if (!hemispheres.empty()) {
-        estimate.value += options.indirectOcclusion * overExact(shadePoint(model, material, hemispheres, P, N, V), hemispheres);
+        estimate.value += options.indirectOcclusion * overExact(hemispheres);
     }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
@@ -99,7 +128,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
             return glm::vec3(0.0f);
         }
         const shader::BrdfValue f = evaluateBrdfUnderEnvironment(model, material, N, V, L);
-        return radianceFrom(L) * coatedBrdf(f, coat, V, L, options) * std::min(NoL, 1.0f);
+        return radianceFrom(L) * coatedBrdf(f, layers, N, V, L, options) * std::min(NoL, 1.0f);
     };
     // The strategies' pdfs of one direction (0 where a strategy cannot make it): the coat's
     // GGX fourth, 0 without a coat.

@@ -34,6 +34,11 @@ struct ReferenceOptions {
     // perceptual roughness. Every estimate takes the coated BRDF sample by sample.
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
+    // KHR_materials_sheen beneath the coat (docs/SHADING.md S6) on the sample's normal: its
+    // colour (0: none, and every estimate is as without) and its perceptual roughness. Every
+    // estimate takes the extension's sheened BRDF sample by sample, E at N.V and N.L.
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
 };
 
 struct ReferenceEstimate {
@@ -63,11 +68,21 @@ float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha);
 // The coat of `options` at (N, V): factor 0 where there is none.
 shader::Clearcoat referenceCoat(const ReferenceOptions& options, glm::vec3 N, glm::vec3 V);
 
-// The BRDF every estimate integrates towards unit L (times N.L, the coat's normal being N): the
-// lobes of `f` that `options` asks for, the coat (if any) over them, f (1 - clearcoat fr_c) +
-// the coat's term (clearcoat.glsl). Without a coat, the lobes' sum as it always was.
-glm::vec3 coatedBrdf(const shader::BrdfValue& f, const shader::Clearcoat& coat, glm::vec3 V, glm::vec3 L,
-                     const ReferenceOptions& options);
+// The sheen of `options` at (N, V): colour 0 where there is none.
+shader::Sheen referenceSheen(const ReferenceOptions& options, glm::vec3 N, glm::vec3 V);
+
+// The layers over the base at one shading point.
+struct ReferenceLayers {
+    shader::Clearcoat coat;
+    shader::Sheen sheen;
+};
+
+// The BRDF every estimate integrates towards unit L (times N.L, the layers' normal being N): the
+// lobes of `f` that `options` asks for; the sheen (if any) over them, f sheenAlbedoScaling(N.V,
+// N.L) + f_sheen (sheen.glsl); the coat (if any) over that, (1 - clearcoat fr_c) + the coat's
+// term (clearcoat.glsl). Without either, the lobes' sum as it always was.
+glm::vec3 coatedBrdf(const shader::BrdfValue& f, const ReferenceLayers& layers, glm::vec3 N, glm::vec3 V,
+                     glm::vec3 L, const ReferenceOptions& options);
 
 // Lo(V) = integral over the hemisphere of Env(L) f(L, V) NoL dL (docs/LIGHTING.md L3), by Monte
 // Carlo with multiple importance sampling (Veach 1997, power heuristic) of GGX half-vector,

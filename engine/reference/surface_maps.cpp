@@ -69,6 +69,9 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
     // normal map is the GPU's alone: the ground truth lays the coat on the shading normal).
     surface.material.clearcoat *= texel(maps->clearcoat, false, glm::vec4(1.0f)).x;
     surface.material.clearcoatRoughness *= texel(maps->clearcoatRoughness, false, glm::vec4(1.0f)).y;
+    // KHR_materials_sheen's: RGB (sRGB) scales the sheen's colour, A its roughness.
+    surface.material.sheenColor *= glm::vec3(texel(maps->sheenColor, true, glm::vec4(1.0f)));
+    surface.material.sheenRoughness *= texel(maps->sheenRoughness, false, glm::vec4(1.0f)).w;
     if (maps->normal.present()) {
         const glm::vec4 n = texel(maps->normal, false, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
         surface.normal =

@@ -18,6 +18,11 @@ struct MaterialParameters {
     // (PATINA_CLEARCOAT), and the material shades as without the extension.
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
+    // KHR_materials_sheen's factors (docs/SHADING.md S6): the sheen's colour (linear RGB, each in
+    // [0, 1]) and its perceptual roughness. A colour of 0 is none: nothing of it is compiled
+    // (PATINA_SHEEN), and the material shades as without the extension.
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
     bool operator==(const MaterialParameters&) const = default;
 };
 

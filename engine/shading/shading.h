@@ -14,6 +14,9 @@ using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #include "brdf.glsl"
 #include "lights.glsl"
 #include "clearcoat.glsl"
+// sheen.glsl's table (engine/shading/sheen_table.cpp): E at N.V = x / 31, r = y / 31.
+real sheenTexel(int x, int y);
+#include "sheen.glsl"
 #include "display.glsl"
 #include "channels.glsl"
 #include "texture.glsl"

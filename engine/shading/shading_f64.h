@@ -25,5 +25,8 @@ using real = double;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #include "brdf.glsl"
 #include "lights.glsl"
 #include "clearcoat.glsl"
+// sheen.glsl's table (engine/shading/sheen_table.cpp): E at N.V = x / 31, r = y / 31.
+real sheenTexel(int x, int y);
+#include "sheen.glsl"
 #undef PATINA_INLINE
 }  // namespace patina::shader_f64

@@ -20,6 +20,10 @@
 // base's light, environment and emission weighed by 1 - clearcoat fr_c, the coat's own lobe
 // added light by light and from the environment (COATED). Without it not one instruction of the
 // coat is compiled.
+// PATINA_SHEEN: KHR_materials_sheen (sheen.glsl), only for an item with a sheen: each light's
+// share of the base weighed by the extension's albedo scaling and the sheen's lobe added, the
+// environment's by E(N.V) with the sheen lit by the irradiance (SHEENED). Without it not one
+// instruction of the sheen is compiled.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -80,6 +84,14 @@ uniform float uClearcoatRoughness;   // clearcoatRoughnessFactor
 #define COATED(term)
 #endif
 
+#ifdef PATINA_SHEEN
+uniform vec3 uSheenColor;        // sheenColorFactor
+uniform float uSheenRoughness;   // sheenRoughnessFactor
+#define SHEENED(base, share) sheenOver((base), (share))
+#else
+#define SHEENED(base, share) (base)
+#endif
+
 // Light that skips the surface's crevices: the environment's and the hemisphere lights'
 // (glTF 2.0 section 3.9.3: occlusion applies to indirect lighting).
 #ifdef PATINA_TEXTURED
@@ -118,6 +130,16 @@ vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
 vec3 clearcoatEnvironmentRadiance(Clearcoat coat, vec3 V) {
     return uEnvironmentIntensity * clearcoatEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentRotation.x,
                                                         uEnvironmentRotation.y, coat, V);
+}
+#endif
+
+#if defined(PATINA_ENVIRONMENT) && defined(PATINA_SHEEN)
+// The sheen under the environment (sheen.glsl's sheenIrradianceShare): lit by the irradiance at
+// N, whatever the base's method.
+SheenShare sheenEnvironmentShare(Sheen sheen, vec3 N) {
+    vec3 irradiance =
+        irradianceFromMap(uEnvironmentIrradiance, toEnvironmentFrame(N, uEnvironmentRotation.x, uEnvironmentRotation.y));
+    return sheenIrradianceShare(sheen, uEnvironmentIntensity * irradiance);
 }
 #endif
 
@@ -201,6 +223,14 @@ void main() {
 #ifdef PATINA_TEXTURED
     N = mappedNormal(N);
 #endif
+#ifdef PATINA_SHEEN
+    // The sheen lies on the base's normal, its map's included.
+#ifdef PATINA_TEXTURED
+    Sheen sheen = deriveSheen(mappedSheenColor(uSheenColor), mappedSheenRoughness(uSheenRoughness), N, V);
+#else
+    Sheen sheen = deriveSheen(uSheenColor, uSheenRoughness, N, V);
+#endif
+#endif
 #ifdef PATINA_CHANNEL
 #ifdef PATINA_TEXTURED
     vec3 channel = inspectedChannel(mapped.baseColor, mapped.alpha, mapped.roughness, mapped.metallic, occlusion,
@@ -222,14 +252,19 @@ void main() {
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
-#define SHADE_POINT(light, windowed, karis) radiance += shadePointLight(light, windowed, karis, material, vPosition, N, V); \
+#define SHADE_POINT(light, windowed, karis) radiance += SHEENED(shadePointLight(light, windowed, karis, material, vPosition, N, V), \
+    sheenPointLight(light, windowed, karis, sheen, vPosition, N, V)); \
     COATED(clearcoatPointLight(light, windowed, karis, coat, vPosition, V))
-#define SHADE_DIRECTIONAL(light) radiance += shadeDirectionalLight(light, material, N, V); \
+#define SHADE_DIRECTIONAL(light) radiance += SHEENED(shadeDirectionalLight(light, material, N, V), \
+    sheenDirectionalLight(light, sheen, N, V)); \
     COATED(clearcoatDirectionalLight(light, coat, V))
-#define SHADE_HEMISPHERE(light) radiance += OCCLUDED(shadeHemisphereLight(light, material, N, V));
-#define SHADE_SPHERE(light, windowed, karis) radiance += shadeSphereLight(light, windowed, karis, material, vPosition, N, V); \
+#define SHADE_HEMISPHERE(light) radiance += OCCLUDED(SHEENED(shadeHemisphereLight(light, material, N, V), \
+    sheenHemisphereLight(light, sheen, N)));
+#define SHADE_SPHERE(light, windowed, karis) radiance += SHEENED(shadeSphereLight(light, windowed, karis, material, vPosition, N, V), \
+    sheenSphereLight(light, windowed, karis, sheen, vPosition, N, V)); \
     COATED(clearcoatSphereLight(light, windowed, karis, coat, vPosition, V))
-#define SHADE_TUBE(light, windowed, karis) radiance += shadeTubeLight(light, windowed, karis, material, vPosition, N, V); \
+#define SHADE_TUBE(light, windowed, karis) radiance += SHEENED(shadeTubeLight(light, windowed, karis, material, vPosition, N, V), \
+    sheenTubeLight(light, windowed, karis, sheen, vPosition, N, V)); \
     COATED(clearcoatTubeLight(light, windowed, karis, coat, vPosition, V))
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
@@ -249,7 +284,8 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+            radiance += SHEENED(shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V),
+                                sheenPointLight(uLights[i], true, karisPoints, sheen, vPosition, N, V));
             COATED(clearcoatPointLight(uLights[i], true, karisPoints, coat, vPosition, V))
         } while (++i < end);
     }
@@ -260,7 +296,8 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += shadeDirectionalLight(uLights[i], material, N, V);
+            radiance += SHEENED(shadeDirectionalLight(uLights[i], material, N, V),
+                                sheenDirectionalLight(uLights[i], sheen, N, V));
             COATED(clearcoatDirectionalLight(uLights[i], coat, V))
         } while (++i < end);
     }
@@ -271,7 +308,8 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += OCCLUDED(shadeHemisphereLight(uLights[i], material, N, V));
+            radiance += OCCLUDED(SHEENED(shadeHemisphereLight(uLights[i], material, N, V),
+                                         sheenHemisphereLight(uLights[i], sheen, N)));
         } while (++i < end);
     }
 #endif
@@ -281,7 +319,8 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+            radiance += SHEENED(shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V),
+                                sheenSphereLight(uLights[i], true, karisPoints, sheen, vPosition, N, V));
             COATED(clearcoatSphereLight(uLights[i], true, karisPoints, coat, vPosition, V))
         } while (++i < end);
     }
@@ -292,7 +331,8 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V);
+            radiance += SHEENED(shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V),
+                                sheenTubeLight(uLights[i], true, karisPoints, sheen, vPosition, N, V));
             COATED(clearcoatTubeLight(uLights[i], true, karisPoints, coat, vPosition, V))
         } while (++i < end);
     }
@@ -300,7 +340,7 @@ void main() {
 #endif
 #if defined(PATINA_SPECIALISED) || defined(PATINA_SINGLE_PASS)
 #ifdef PATINA_ENVIRONMENT
-    radiance += OCCLUDED(environmentRadiance(material, N, V));
+    radiance += OCCLUDED(SHEENED(environmentRadiance(material, N, V), sheenEnvironmentShare(sheen, N)));
     COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
 #endif
 #ifdef PATINA_TEXTURED
@@ -309,13 +349,13 @@ void main() {
 #else
 #if defined(PATINA_ENVIRONMENT)
     if (uLightIndex < 0) {
-        radiance = OCCLUDED(environmentRadiance(material, N, V));
+        radiance = OCCLUDED(SHEENED(environmentRadiance(material, N, V), sheenEnvironmentShare(sheen, N)));
         COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
     } else
 #endif
     {
         PackedLight light = uLights[max(uLightIndex, 0)];
-        radiance = shadeLight(light, material, vPosition, N, V);
+        radiance = SHEENED(shadeLight(light, material, vPosition, N, V), sheenLight(light, sheen, vPosition, N, V));
         COATED(clearcoatLight(light, coat, vPosition, V))
         if (light.type == LIGHT_HEMISPHERE) {
             radiance = OCCLUDED(radiance);

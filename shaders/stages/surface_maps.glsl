@@ -11,7 +11,8 @@ in vec4 vTangent;   // world space; w = 0: the vertex has none
 
 // The maps in SurfaceMap order (engine/gl/surface_map_uniforms.h): 0 base colour,
 // 1 metallic-roughness, 2 normal, 3 occlusion, 4 emissive, then KHR_materials_clearcoat's
-// 5 coat, 6 coat roughness, 7 coat normal (read only with PATINA_CLEARCOAT). A sampler array
+// 5 coat, 6 coat roughness, 7 coat normal (read only with PATINA_CLEARCOAT), then
+// KHR_materials_sheen's 8 sheen colour, 9 sheen roughness (only with PATINA_SHEEN). A sampler array
 // could be indexed only by constants in GLSL 3.30, so each has its own name.
 uniform sampler2D uBaseColorMap;
 uniform sampler2D uMetallicRoughnessMap;
@@ -21,8 +22,10 @@ uniform sampler2D uEmissiveMap;
 uniform sampler2D uClearcoatMap;
 uniform sampler2D uClearcoatRoughnessMap;
 uniform sampler2D uClearcoatNormalMap;
-uniform vec4 uMapPlacement[8];   // KHR_texture_transform: offset (xy), scale (zw)
-uniform vec2 uMapRotationSet[8];   // its rotation; the UV set read, -1 where there is no map
+uniform sampler2D uSheenColorMap;
+uniform sampler2D uSheenRoughnessMap;
+uniform vec4 uMapPlacement[10];   // KHR_texture_transform: offset (xy), scale (zw)
+uniform vec2 uMapRotationSet[10];   // its rotation; the UV set read, -1 where there is no map
 uniform float uBaseAlpha;          // baseColorFactor's alpha
 uniform float uAlphaCutoff;        // MASK's; negative for OPAQUE and BLEND
 uniform float uNormalScale;
@@ -93,6 +96,17 @@ vec3 mappedClearcoatNormal(vec3 N) {
     }
     vec3 texel = mapTexel(uClearcoatNormalMap, mapCoordinate(7)).xyz;
     return normalMappedNormal(N, vTangent, tangentSpaceNormal(texel, uClearcoatNormalScale));
+}
+#endif
+
+#ifdef PATINA_SHEEN
+// KHR_materials_sheen's maps: the sheen's colour times its map's RGB (sRGB, decoded by the
+// texture), its roughness times its map's A.
+vec3 mappedSheenColor(vec3 factor) {
+    return factor * MAP_TEXEL(8, uSheenColorMap, vec4(1.0f)).xyz;
+}
+float mappedSheenRoughness(float roughness) {
+    return roughness * MAP_TEXEL(9, uSheenRoughnessMap, vec4(1.0f)).w;
 }
 #endif
 

@@ -193,6 +193,51 @@ TEST_F(EditorUi, APartsClearcoatIsDraggedOnUndoneAndSaved) {
     EXPECT_TRUE(itemsOfLastFrame().count("Coat"));
 }
 
+// KHR_materials_sheen in the editor: a part's Sheen section under its Clearcoat, closed on a part
+// without one; its colour's red dragged up puts a sheen on the part (the picture changes), the
+// drag is one undo step, the roughness another, and the part's sheen is what the scene saves.
+TEST_F(EditorUi, APartsSheenIsDraggedOnUndoneAndSaved) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    ASSERT_EQ(state_.selectedModelMaterial, 0);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.0f));
+    EXPECT_FALSE(itemsOfLastFrame().count("Sheen roughness")) << "closed on a part without a sheen";
+    click(centreOf("Sheen"));
+    frames(1);
+    const LdrImage bare = services_->viewportPixels(EditorServices::Shown::Edited);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Sheen colour", &min, &max));
+    const float y = (min.y + max.y) * 0.5f;
+    drag(ImVec2(min.x + 4.0f, y), ImVec2(min.x + 124.0f, y));   // the red field, 120 pixels right
+    const glm::vec3 dragged = modelMaterial(state_, state_.scene, 0).sheenColor;
+    EXPECT_GT(dragged.r, 0.0f);
+    EXPECT_EQ(dragged.g, 0.0f);
+    frames(1);
+    EXPECT_GT(differingPixels(bare, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    ASSERT_TRUE(itemRect("Sheen roughness", &min, &max));
+    drag(ImVec2(min.x + 2.0f, (min.y + max.y) * 0.5f), ImVec2(max.x + 40.0f, (min.y + max.y) * 0.5f));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenRoughness, 1.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 2u);
+    const Json saved = sceneToJson(state_.scene);
+    ASSERT_TRUE(saved.contains("modelMaterials"));
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["sheenRoughness"], 1.0);
+    EXPECT_NEAR(saved["modelMaterials"][0]["material"]["sheenColor"][0].get<double>(), dragged.r, 1e-6);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenRoughness, 0.0f);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, dragged);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.0f));
+    // A part with a sheen shows its section open when it is first picked.
+    Material sheened = modelMaterial(state_, state_.scene, 1);
+    sheened.sheenColor = glm::vec3(0.5f);
+    setModelMaterial(state_, state_.scene, 1, sheened);
+    state_.selectedModelMaterial = 1;
+    frames(2);
+    EXPECT_TRUE(itemsOfLastFrame().count("Sheen roughness"));
+}
+
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     const size_t before = state_.scene.lights.size();
     click(centreOf("Add point"));
@@ -434,14 +479,14 @@ TEST_F(EditorUi, ThePartsListTellsPartsApartSearchesAndGrows) {
 // in amber beside the status line, and the File extensions section lists it.
 TEST_F(EditorUi, AnExtensionNotDrawnIsCountedInTheStatusAndListed) {
     test::GltfBuilder coated = test::cubeModel();
-    coated.json["extensionsUsed"] = {"KHR_materials_sheen", "KHR_texture_transform"};
-    coated.json["materials"][0]["extensions"]["KHR_materials_sheen"] = {{"sheenColorFactor", {1.0, 1.0, 1.0}}};
+    coated.json["extensionsUsed"] = {"KHR_materials_transmission", "KHR_texture_transform"};
+    coated.json["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
     coated.writeGlb(path("coated.glb"));
     ASSERT_TRUE(openFile(state_, path("coated.glb"))) << state_.error;
     frames(3);
     std::map<std::string, RecordedItem> items = itemsOfLastFrame();
     ASSERT_TRUE(items.count("status notes")) << state_.status;
-    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_sheen (not drawn)"), std::string::npos);
+    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_transmission (not drawn)"), std::string::npos);
     ASSERT_TRUE(items.count("File extensions"));
     ASSERT_EQ(state_.model->extensions.size(), 2u);
     click(centreOf("File extensions"));

@@ -32,44 +32,8 @@ Material coatedMaterial(float clearcoat) {
 Scene everyLight(float clearcoat) {
     Scene scene = defaultScene();
     scene.material = coatedMaterial(clearcoat);
-    scene.lights.clear();
-    Light point;
-    point.type = LightType::Point;
-    point.position = {1.5f, 1.0f, 2.0f};
-    point.range = 8.0f;
-    point.intensity = 4.0f;
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = {-0.4f, -0.5f, -1.0f};
-    sun.intensity = 1.5f;
-    Light sky;
-    sky.type = LightType::Hemisphere;
-    sky.sky = {0.2f, 0.2f, 0.3f};
-    Light sphere;
-    sphere.type = LightType::Sphere;
-    sphere.position = {-1.5f, 1.2f, 1.5f};
-    sphere.sourceRadius = 0.2f;
-    sphere.intensity = 3.0f;
-    Light tube;
-    tube.type = LightType::Tube;
-    tube.start = {1.0f, -0.8f, 1.8f};
-    tube.end = {1.5f, 0.2f, 1.8f};
-    tube.sourceRadius = 0.05f;
-    tube.intensity = 2.0f;
-    Light environment;
-    environment.type = LightType::Environment;
-    environment.source = "builtin:studio";
-    environment.intensity = 0.5f;
-    scene.lights = {point, sun, sky, sphere, tube, environment};
+    scene.lights = test::everyLightType();
     return scene;
-}
-
-double maxRelativeDifference(const HdrImage& a, const HdrImage& b) {
-    double worst = 0.0;
-    for (size_t i = 0; i < a.rgb.size(); ++i) {
-        worst = std::max(worst, double(std::abs(a.rgb[i] - b.rgb[i])) / std::max(1e-2, double(std::abs(b.rgb[i]))));
-    }
-    return worst;
 }
 
 TEST(ClearcoatRender, TheThreePathsDrawTheCoatAlikeAndItChangesThePicture) {
@@ -79,7 +43,7 @@ TEST(ClearcoatRender, TheThreePathsDrawTheCoatAlikeAndItChangesThePicture) {
     const HdrImage single = renderer.render(test::prepared(coated), test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;
     for (RenderPath path : {RenderPath::Multi, RenderPath::Specialised}) {
         const HdrImage other = renderer.render(test::prepared(coated), test::renderSettings(96, 96, path, 1)).hdr;
-        EXPECT_LE(maxRelativeDifference(other, single), 1e-4) << renderPathName(path);
+        EXPECT_LE(test::maxRelativeDifference(other, single), 1e-4) << renderPathName(path);
     }
     const Scene bare = everyLight(0.0f);
     const HdrImage uncoated = renderer.render(test::prepared(bare), test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;

@@ -57,6 +57,29 @@ TEST(MaterialFile, TheClearcoatRoundTripsAndIsLeftOutWithoutACoat) {
               std::string::npos);
 }
 
+// KHR_materials_sheen's factors, as the coat's: written only where there is a sheen, read back
+// the same, checked as every factor.
+TEST(MaterialFile, TheSheenRoundTripsAndIsLeftOutWithoutOne) {
+    Material material;
+    EXPECT_FALSE(materialToJson(material).contains("sheenColor"));
+    EXPECT_FALSE(materialToJson(material).contains("sheenRoughness"));
+    material.sheenColor = {0.75f, 0.5f, 0.125f};
+    material.sheenRoughness = 0.375f;
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["sheenColor"], Json::array({0.75, 0.5, 0.125}));
+    EXPECT_EQ(json["sheenRoughness"], 0.375);
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    Material roughOnly;
+    roughOnly.sheenRoughness = 0.5f;   // a roughness without colour is kept too
+    EXPECT_EQ(materialFromJson(materialToJson(roughOnly), "", "x", true, warnings), roughOnly);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "sheenColor": [1, 2, 0]})").find("m.json: /sheenColor"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "sheenRoughness": -1})").find("m.json: /sheenRoughness"),
+              std::string::npos);
+}
+
 TEST(MaterialFile, UnknownKeysAreWarnedAboutAndWrittenBack) {
     std::vector<std::string> warnings;
     const Material material = read(R"({"format": "patina-material", "version": 1,

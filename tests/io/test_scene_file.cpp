@@ -74,11 +74,15 @@ TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
     edited.roughness = 0.2f;
     edited.clearcoat = 0.5f;   // a part's coat (KHR_materials_clearcoat) travels with it
     edited.clearcoatRoughness = 0.25f;
+    edited.sheenColor = {0.5f, 0.25f, 1.0f};   // and its sheen (KHR_materials_sheen)
+    edited.sheenRoughness = 0.75f;
     scene.modelMaterials = {{3, edited}};
     const Json json = sceneToJson(scene);
     ASSERT_TRUE(json.contains("modelMaterials"));
     EXPECT_EQ(json["modelMaterials"][0]["index"], 3);
     EXPECT_EQ(json["modelMaterials"][0]["material"]["clearcoat"], 0.5);
+    EXPECT_EQ(json["modelMaterials"][0]["material"]["sheenColor"], Json::array({0.5, 0.25, 1.0}));
+    EXPECT_EQ(json["modelMaterials"][0]["material"]["sheenRoughness"], 0.75);
     EXPECT_EQ(sceneFromJson(json, "x", ".", warnings), scene);
     EXPECT_TRUE(warnings.empty());
     Json twice = json;

@@ -157,6 +157,29 @@ void drawClearcoat(Material& material, const Material& file, const Material& def
     ImGui::PopID();
 }
 
+// KHR_materials_sheen's colour and roughness in a section of their own under the coat's, first
+// shown open where the part has a sheen (each part keeps its own open state); its maps are
+// among the part's maps above. A colour of 0 is none.
+void drawSheen(Material& material, const Material& file, const Material& defaults, int part) {
+    ImGui::PushID(part);
+    ImGui::SetNextItemOpen(material.sheenColor != glm::vec3(0.0f), ImGuiCond_Once);
+    const bool open = ImGui::CollapsingHeader("Sheen");
+    recordItem("Sheen", "A fuzz of fibres over the part (KHR_materials_sheen), as on velvet or satin");
+    if (open) {
+        ImGui::TextUnformatted("Sheen colour (sRGB)");
+        ImGui::SetNextItemWidth(widthBesideReset(""));
+        colorEditLinear("##Sheen colour", "The colour of the light the fibres reflect, brightest at grazing angles: "
+                                          "black is no sheen (click the swatch to pick)",
+                        &material.sheenColor);
+        ImGui::SameLine();
+        resetButton("Sheen colour", &material.sheenColor, file.sheenColor, defaults.sheenColor);
+        sliderWithReset("Sheen roughness", "0: a thin bright rim at grazing angles; 1: a broad soft glow. "
+                                           "Ctrl+click to type",
+                        &material.sheenRoughness, 0.0f, 1.0f, file.sheenRoughness, defaults.sheenRoughness);
+    }
+    ImGui::PopID();
+}
+
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names) {
     std::string text;
@@ -366,6 +389,7 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     const Material defaults = modelMaterial(document, untuned, selected);
     drawFactors(material, saved, defaults);
     drawClearcoat(material, saved, defaults, selected);
+    drawSheen(material, saved, defaults, selected);
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
     }
