@@ -156,6 +156,20 @@ RenderSettings renderSettings(int width, int height, RenderPath passes, int samp
     return settings;
 }
 
+Scene sphereSeenDownZ(const Light& light) {
+    Scene scene = defaultScene();
+    scene.camera.position = {0.0f, 0.0f, 3.4f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    scene.lights = {light};
+    return scene;
+}
+
+float centreBlue(Renderer& renderer, const Scene& scene, int size, RenderPath path) {
+    const HdrImage image = renderer.render(prepared(scene), renderSettings(size, size, path, 1)).hdr;
+    const int centre = size / 2;
+    return image.rgb[size_t((centre * size + centre) * 3 + 2)];
+}
+
 glm::vec3 randomUnitVector(std::mt19937& rng) {
     std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
     for (;;) {

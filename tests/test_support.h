@@ -54,6 +54,13 @@ std::vector<Light> everyLightType();
 // Default settings but for the image size, path and MSAA samples.
 RenderSettings renderSettings(int width, int height, RenderPath passes, int samples);
 
+// The default scene's unit sphere seen down -z from 3.4 units, lit by `light` alone: at the
+// centre of the image N = V = +z (the layers' GPU-against-CPU-twin tests).
+Scene sphereSeenDownZ(const Light& light);
+// Blue, the strongest channel of the layers' bases, at the centre of a `size` x `size` render of
+// `scene` (size odd) on `path`, one sample a pixel.
+float centreBlue(Renderer& renderer, const Scene& scene, int size, RenderPath path);
+
 reference::Vec3 toReference(glm::vec3 v);
 reference::Material toReference(const Material& material);
 std::vector<reference::Light> toReference(const std::vector<Light>& lights);

@@ -63,19 +63,15 @@ TEST(ClearcoatRender, AtTheSpheresCentreTheGpuIsTheCpuTwin) {
     test::glContext();
     Renderer renderer;
     for (bool hemisphere : {false, true}) {
-        Scene scene = defaultScene();
-        scene.camera.position = {0.0f, 0.0f, 3.4f};
-        scene.camera.target = {0.0f, 0.0f, 0.0f};
         Light light;
         light.type = hemisphere ? LightType::Hemisphere : LightType::Directional;
         light.direction = {0.0f, 0.0f, -1.0f};
         light.sky = {0.5f, 0.5f, 0.5f};
-        scene.lights = {light};
+        Scene scene = test::sphereSeenDownZ(light);
         auto centre = [&](float clearcoat, RenderPath path) {
             scene.material = coatedMaterial(clearcoat);
             scene.material.clearcoatRoughness = 0.5f;   // a lobe broad against the mesh's facets
-            const HdrImage image = renderer.render(test::prepared(scene), test::renderSettings(31, 31, path, 1)).hdr;
-            return image.rgb[(15 * 31 + 15) * 3 + 2];   // blue, the base's strongest
+            return test::centreBlue(renderer, scene, 31, path);
         };
         const glm::vec3 N(0.0f, 0.0f, 1.0f);
         const shader::Clearcoat coat = shader::deriveClearcoat(1.0f, 0.5f, N, N);

@@ -73,21 +73,17 @@ TEST(SheenRender, AtTheSpheresCentreTheGpuIsTheCpuTwin) {
     test::glContext();
     Renderer renderer;
     for (bool hemisphere : {false, true}) {
-        Scene scene = defaultScene();
-        scene.camera.position = {0.0f, 0.0f, 3.4f};
-        scene.camera.target = {0.0f, 0.0f, 0.0f};
         Light light;
         light.type = hemisphere ? LightType::Hemisphere : LightType::Directional;
         light.direction = {-std::sqrt(0.75f), 0.0f, -0.5f};
         light.intensity = 2.0f;
         light.sky = {0.5f, 0.5f, 0.5f};
         light.ground = {0.4f, 0.4f, 0.4f};   // what N = +z sees (up is +y)
-        scene.lights = {light};
+        Scene scene = test::sphereSeenDownZ(light);
         const glm::vec3 color(0.9f, 0.6f, 1.0f);
         auto centre = [&](glm::vec3 sheenColor, RenderPath path) {
             scene.material = sheenMaterial(sheenColor, 0.7f);
-            const HdrImage image = renderer.render(test::prepared(scene), test::renderSettings(31, 31, path, 1)).hdr;
-            return image.rgb[(15 * 31 + 15) * 3 + 2];   // blue
+            return test::centreBlue(renderer, scene, 31, path);
         };
         const glm::vec3 N(0.0f, 0.0f, 1.0f);
         const shader::Sheen sheen = shader::deriveSheen(color, 0.7f, N, N);
