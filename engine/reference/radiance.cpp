@@ -67,15 +67,14 @@ glm::vec3 coatedBrdf(const shader::BrdfValue& f, const ReferenceLayers& layers, 
     return shader::clearcoatOver(lobes, glm::vec3(layer), coat);
 }
 
-ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
-                                    const ReferenceEnvironment& environment,
-                                    const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
-                                    glm::vec3 V, const ReferenceOptions& options) {
-    N = shader::safeNormalize(N);
-    V = shader::safeNormalize(V);
-    // Sphere and tube lights by their own Monte Carlo (area_lights.h), the others exactly.
-    ReferenceEstimate estimate = areaLightReference(model, material, lights, P, N, V, options);
-    // Hemisphere lights apart only where something occludes them: one sum is the same bits.
+namespace {
+// The lights added exactly (every one but sphere and tube lights) into `value`: with a sheen,
+// each light's base weighed by its albedo scaling and the sheen's lobe added (sheen.glsl's
+// sheenLight), then the coat over them all (clearcoat.glsl's, a hemisphere light's none).
+// Hemisphere lights apart only where something occludes them: one sum is the same bits.
+void addExactLights(glm::vec3& value, BrdfModelId model, const shader::SurfaceMaterial& material,
+                    const std::vector<shader::PackedLight>& lights, const ReferenceLayers& layers, glm::vec3 P,
+                    glm::vec3 N, glm::vec3 V, const ReferenceOptions& options) {
     const bool occluded = options.indirectOcclusion != 1.0f;
     std::vector<shader::PackedLight> exact, hemispheres;
     for (const shader::PackedLight& light : lights) {
@@ -83,12 +82,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
             (occluded && light.type == shader::LIGHT_HEMISPHERE ? hemispheres : exact).push_back(light);
         }
     }
-    const bool coated = options.clearcoat > 0.0f;
-    const ReferenceLayers layers{referenceCoat(options, N, V), referenceSheen(options, N, V)};
     const shader::Clearcoat& coat = layers.coat;
-    // The lights added exactly: with a sheen, each light's base weighed by its albedo scaling and
-    // the sheen's lobe added (sheen.glsl's sheenLight), then the coat over them all
-    // (clearcoat.glsl's, a hemisphere light's none).
     auto overExact = [&](const std::vector<shader::PackedLight>& some) {
         glm::vec3 base(0.0f);
         if (hasReferenceSheen(options)) {
@@ -100,7 +94,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
         } else {
             base = shadePoint(model, material, some, P, N, V);
         }
-        if (!coated) {
+        if (options.clearcoat <= 0.0f) {
             return base;
         }
         glm::vec3 layer(0.0f);
@@ -109,13 +103,20 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
         }
         return shader::clearcoatOver(base, layer, coat);
     };
-    estimate.value += overExact(exact);
+    value += overExact(exact);
     if (!hemispheres.empty()) {
-        estimate.value += options.indirectOcclusion * overExact(hemispheres);
+        value += options.indirectOcclusion * overExact(hemispheres);
     }
-    if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
-        return estimate;
-    }
+}
+
+// The environment's light by multiple importance sampling over the full-resolution image:
+// GGX, cosine and the image's own distribution, and the coat's GGX fourth where there is a coat
+// (balance by the power heuristic, each sample's sum of strategies one value of `moments`).
+SampleMoments environmentMoments(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                 const ReferenceEnvironment& environment, const ReferenceLayers& layers, glm::vec3 N,
+                                 glm::vec3 V, const ReferenceOptions& options) {
+    const bool coated = options.clearcoat > 0.0f;
+    const shader::Clearcoat& coat = layers.coat;
     const HdrImage& image = environment.environment->image;
     const glm::vec2 rotation = environmentRotation(environment.rotationDegrees);
     const float c = rotation.x, s = rotation.y;
@@ -166,6 +167,24 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
         }
         moments.add(x);
     }
+    return moments;
+}
+}  // namespace
+
+ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                    const ReferenceEnvironment& environment,
+                                    const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
+                                    glm::vec3 V, const ReferenceOptions& options) {
+    N = shader::safeNormalize(N);
+    V = shader::safeNormalize(V);
+    // Sphere and tube lights by their own Monte Carlo (area_lights.h), the others exactly.
+    ReferenceEstimate estimate = areaLightReference(model, material, lights, P, N, V, options);
+    const ReferenceLayers layers{referenceCoat(options, N, V), referenceSheen(options, N, V)};
+    addExactLights(estimate.value, model, material, lights, layers, P, N, V, options);
+    if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
+        return estimate;
+    }
+    const SampleMoments moments = environmentMoments(model, material, environment, layers, N, V, options);
     const double n = double(options.samples);
     const double occlusion = options.indirectOcclusion;
     const glm::dvec3 variance = moments.varianceOfMean(n) * (occlusion * occlusion);
