@@ -208,18 +208,6 @@ struct LightArrival {
     bool present;
 };
 
-PATINA_INLINE LightArrival pointLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
-    vec3 toLight = light.position - P;
-    real distanceSquared = dot(toLight, toLight);
-    // Clamped so the light on the shaded point still gives finite numbers; selected away by
-    // the callers.
-    real inverseDistance = inversesqrt(max(distanceSquared, MIN_LIGHT_DISTANCE_SQUARED));
-    real t = distanceSquared * inverseDistance;
-    real attenuation = lightFalloff(light, t, windowed, karis);
-    return LightArrival(light.radiance * attenuation, toLight * inverseDistance,
-                        distanceSquared > MIN_LIGHT_DISTANCE_SQUARED);
-}
-
 // What a sphere light sends to P: the vector to its centre, its distance t and 1 / t (clamped so
 // the centre on the shaded point still gives finite numbers; `present` false there: no light),
 // and its radiance after the point light's falloff at t.
@@ -238,6 +226,13 @@ PATINA_INLINE SphereArrival sphereLightArrival(PackedLight light, bool windowed,
     real t = distanceSquared * inverseDistance;
     return SphereArrival(toCentre, t, inverseDistance, light.radiance * lightFalloff(light, t, windowed, karis),
                          distanceSquared > MIN_LIGHT_DISTANCE_SQUARED);
+}
+
+// A point light is a sphere light of no size: its arrival is the sphere's, the direction its
+// vector to the centre made unit.
+PATINA_INLINE LightArrival pointLightArrival(PackedLight light, bool windowed, bool karis, vec3 P) {
+    SphereArrival sphere = sphereLightArrival(light, windowed, karis, P);
+    return LightArrival(sphere.radiance, sphere.toCentre * sphere.inverseDistance, sphere.present);
 }
 
 // What a tube light sends to P: its ends and the segment seen from P, its radiance after the
