@@ -67,7 +67,8 @@ std::pair<int, int> validateFile(const std::string& path, const PbrRanges& range
         const Material material = loadMaterialFile(path, warnings);
         return {reportColour(path, material.baseColor, material.metallic, ranges) ? 0 : 1, 1};
     }
-    const std::shared_ptr<const Model> model = assets.drawnModel(path);
+    const std::shared_ptr<const LoadedModel> file = assets.model(path);
+    const Model* model = &file->model;
     printWarnings(model->notes);   // what the picture lacks of the file, as render and the editor say
     int bad = 0;
     for (size_t i = 0; i < model->materials.size(); ++i) {

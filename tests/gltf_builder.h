@@ -11,8 +11,8 @@
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
+#include "assets/asset_cache.h"
 #include "gltf/glb.h"
-#include "gltf/import.h"
 #include "gltf/model_import.h"
 #include "files/input_error.h"
 #include "io/json_reader.h"
@@ -205,9 +205,27 @@ std::string errorOf(const Load& load) {
     return "(loaded)";
 }
 
-// The InputError importGltf / importGltfModel throws, or "(loaded)".
+// The model at `path` as a model opens (AssetCache::model, through a cache of its own): what it
+// draws and its draws flattened into one world-space mesh.
+inline std::shared_ptr<const LoadedModel> loadModel(const std::filesystem::path& path) {
+    return AssetCache().model(path);
+}
+// The flattened mesh of the model at `path` (loadModel).
+inline Mesh flatMesh(const std::filesystem::path& path) {
+    return loadModel(path)->mesh;
+}
+// The model's first material as a Patina material: its factors under its name.
+inline Material firstMaterial(const Model& model) {
+    Material material;
+    static_cast<MaterialParameters&>(material) = model.materials.at(0).factors;
+    material.name = model.materials[0].name;
+    return material;
+}
+
+// The InputError loading the model at `path` as a model opens (loadModel) / importGltfModel
+// throws, or "(loaded)".
 inline std::string importError(const std::filesystem::path& path) {
-    return errorOf([&] { importGltf(path); });
+    return errorOf([&] { loadModel(path); });
 }
 inline std::string modelError(const std::filesystem::path& path) {
     return errorOf([&] { importGltfModel(path); });

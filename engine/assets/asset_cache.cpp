@@ -1,11 +1,10 @@
 #include "assets/asset_cache.h"
 
-#include <cstdio>
-
 #include "common/content_hash.h"
 #include "environment/builtin_environments.h"
 #include "files/input_error.h"
 #include "gltf/files.h"
+#include "gltf/flatten.h"
 #include "gltf/images.h"
 #include "gltf/model_import.h"
 #include "scene/prepared_scene.h"
@@ -20,9 +19,8 @@ void dropExpired(Map& entries) {
     std::erase_if(entries, [](const auto& entry) { return entry.second.expired(); });
 }
 
-// A file known by its path and contents (its size bounded as a model's files are).
-std::pair<std::string, uint64_t> fileKey(const std::filesystem::path& path) {
-    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
+// The absolute, normal path and the hash of `bytes`: what the cache knows a file by.
+std::pair<std::string, uint64_t> fileKey(const std::filesystem::path& path, const std::vector<uint8_t>& bytes) {
     return {std::filesystem::absolute(path).lexically_normal().string(), hashBytes(bytes.data(), bytes.size())};
 }
 
@@ -41,77 +39,73 @@ void keepEntry(Map& entries, const typename Map::key_type& key, const Object& ob
 }
 }  // namespace
 
-struct AssetCache::LoadedModel {
-    GltfImport imported;
-    Model model;
-};
-
-std::shared_ptr<const AssetCache::LoadedModel> AssetCache::loaded(const std::filesystem::path& path,
-                                                                   const Progress& progress) {
-    const Key key = fileKey(path);
+// The file is read once (its size bounded as a model's files are), hashed, and imported from
+// those bytes only when the cache does not hold its contents.
+std::shared_ptr<const LoadedModel> AssetCache::model(const std::filesystem::path& path, const Progress& progress) {
+    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
+    const Key key = fileKey(path, bytes);
     {
         std::lock_guard lock(mutex_);
         if (std::shared_ptr<const LoadedModel> model = heldEntry(models_, key)) {
             return model;
         }
     }
-    std::optional<Model> drawn = importGltfModel(path, progress);
+    std::optional<Model> drawn = importGltfModel(path, bytes, progress);
     if (!drawn) {
         return nullptr;   // stopped: nothing kept
     }
-    GltfImport imported = flattenedImport(*drawn, path);
-    auto model = std::make_shared<const LoadedModel>(LoadedModel{std::move(imported), std::move(*drawn)});
+    Mesh mesh = gltf::flattenDraws(*drawn, path.string());
+    auto model =
+        std::make_shared<const LoadedModel>(LoadedModel{std::move(*drawn), std::move(mesh), key.first, key.second});
     std::lock_guard lock(mutex_);
     keepEntry(models_, key, model);
     return model;
 }
 
-// Each part of a loaded model shares its owner, so any one held keeps the cache entry alive.
-std::shared_ptr<const GltfImport> AssetCache::model(const std::filesystem::path& path, const Progress& progress) {
-    std::shared_ptr<const LoadedModel> model = loaded(path, progress);
-    return model ? std::shared_ptr<const GltfImport>(model, &model->imported) : nullptr;
-}
-
-std::shared_ptr<const Model> AssetCache::drawnModel(const std::filesystem::path& path) {
-    std::shared_ptr<const LoadedModel> model = loaded(path);
-    return {model, &model->model};
-}
-
+// Each part of the loaded model shares its owner, so any one held keeps the cache entry alive.
 AssetCache::Shape AssetCache::shape(const Scene& scene) {
     if (scene.meshFile.empty()) {
-        return {builtinMesh(scene.mesh), nullptr};
+        return {builtinMesh(scene.mesh), nullptr, nullptr};
     }
-    std::shared_ptr<const LoadedModel> model = loaded(scene.meshFile);
-    return {{model, &model->imported.mesh}, retextured({model, &model->model}, scene)};
+    std::shared_ptr<const LoadedModel> file = model(scene.meshFile);
+    return {{file, &file->mesh}, retextured(file, scene), file};
 }
 
 std::shared_ptr<const ModelImage> AssetCache::image(const std::filesystem::path& path) {
-    const Key key = fileKey(path);
+    return keyedImage(path).second;
+}
+
+std::pair<AssetCache::Key, std::shared_ptr<const ModelImage>> AssetCache::keyedImage(
+    const std::filesystem::path& path) {
+    const std::vector<uint8_t> bytes = gltf::readModelFile(path);
+    const Key key = fileKey(path, bytes);
     {
         std::lock_guard lock(mutex_);
         if (std::shared_ptr<const ModelImage> image = heldEntry(images_, key)) {
-            return image;
+            return {key, image};
         }
     }
-    auto image = std::make_shared<const ModelImage>(gltf::readImageFile(path));
+    auto image = std::make_shared<const ModelImage>(gltf::readImageFile(path, bytes));
     std::lock_guard lock(mutex_);
     keepEntry(images_, key, image);
-    return image;
+    return {key, image};
 }
 
 namespace {
-// One map of the model's material `material` the scene puts an image in place of: the image,
-// or why it cannot be used.
+// One map of the model's material `material` the scene puts an image in place of: the image and
+// the hash of its file's contents, or why it cannot be used.
 struct Replacement {
     int material = 0;
     const char* key = nullptr;
     std::string path;
     std::shared_ptr<const ModelImage> image;
+    uint64_t hash = 0;
     std::string problem;
 };
 
 // Each replacement `scene` makes on `model` (an edit matched by index and name), its image read
-// through `read`, in the materials' order and each material's maps' order.
+// through `read` (its contents' key and the image), in the materials' order and each material's
+// maps' order.
 template <typename Read>
 std::vector<Replacement> replacementsOf(const Model& model, const Scene& scene, Read&& read) {
     std::vector<Replacement> found;
@@ -123,12 +117,14 @@ std::vector<Replacement> replacementsOf(const Model& model, const Scene& scene, 
             if (!edit || path == edit->mapsReplaced.end()) {
                 continue;
             }
-            Replacement replacement{int(i), map.key, path->second, nullptr, ""};
+            Replacement replacement{int(i), map.key, path->second, nullptr, 0, ""};
             if (!map.slot->present()) {
                 replacement.problem = "the material has no " + std::string(map.key) + " to replace";
             } else {
                 try {
-                    replacement.image = read(path->second);
+                    auto [key, image] = read(path->second);
+                    replacement.hash = key.second;
+                    replacement.image = std::move(image);
                 } catch (const InputError& error) {
                     replacement.problem = error.what();
                 }
@@ -139,15 +135,13 @@ std::vector<Replacement> replacementsOf(const Model& model, const Scene& scene, 
     return found;
 }
 
-// What tells two sets of replacements on one model apart: each map, file and image.
-std::string replacementsKey(const Model& model, const std::vector<Replacement>& replacements) {
-    char address[32];
-    std::snprintf(address, sizeof address, "%p", static_cast<const void*>(&model));
-    std::string key = address;
+// What tells two sets of replacements on one file apart, by contents: the file's key, then each
+// replacement's material, map, path and image contents (0: an image that could not be read).
+std::string replacementsKey(const LoadedModel& file, const std::vector<Replacement>& replacements) {
+    std::string key = file.path + "\n" + std::to_string(file.hash);
     for (const Replacement& replacement : replacements) {
-        std::snprintf(address, sizeof address, "%p", static_cast<const void*>(replacement.image.get()));
-        key.append("|").append(std::to_string(replacement.material)).append(":").append(replacement.key);
-        key.append(":").append(replacement.path).append(":").append(address);
+        key.append("\n").append(std::to_string(replacement.material)).append("\n").append(replacement.key);
+        key.append("\n").append(replacement.path).append("\n").append(std::to_string(replacement.hash));
     }
     return key;
 }
@@ -181,31 +175,22 @@ Model withReplacements(const Model& model, const std::vector<Replacement>& repla
 }
 }  // namespace
 
-// The model and images it was made from are held: their addresses are part of its key, and the
-// images' cache entries (made again each call otherwise) keep theirs.
+// The file and the images it was made from are held: the images' cache entries (made again each
+// call otherwise) keep theirs.
 struct AssetCache::RetexturedModel {
-    std::shared_ptr<const Model> from;
+    std::shared_ptr<const LoadedModel> from;
     std::vector<std::shared_ptr<const ModelImage>> images;
     Model model;
 };
 
-std::shared_ptr<const Model> AssetCache::retextured(std::shared_ptr<const Model> model, const Scene& scene) {
-    {
-        std::lock_guard lock(mutex_);   // one this made: from the file's model again
-        for (const auto& [key, entry] : retextured_) {
-            const std::shared_ptr<const RetexturedModel> made = entry.lock();
-            if (made && &made->model == model.get()) {
-                model = made->from;
-                break;
-            }
-        }
-    }
+std::shared_ptr<const Model> AssetCache::retextured(const std::shared_ptr<const LoadedModel>& file,
+                                                    const Scene& scene) {
     const std::vector<Replacement> replacements =
-        replacementsOf(*model, scene, [&](const std::string& path) { return image(path); });
+        replacementsOf(file->model, scene, [&](const std::string& path) { return keyedImage(path); });
     if (replacements.empty()) {
-        return model;
+        return {file, &file->model};
     }
-    const std::string key = replacementsKey(*model, replacements);
+    const std::string key = replacementsKey(*file, replacements);
     {
         std::lock_guard lock(mutex_);
         if (std::shared_ptr<const RetexturedModel> made = heldEntry(retextured_, key)) {
@@ -217,7 +202,7 @@ std::shared_ptr<const Model> AssetCache::retextured(std::shared_ptr<const Model>
         images.push_back(replacement.image);
     }
     auto made = std::make_shared<const RetexturedModel>(
-        RetexturedModel{model, std::move(images), withReplacements(*model, replacements)});
+        RetexturedModel{file, std::move(images), withReplacements(file->model, replacements)});
     std::lock_guard lock(mutex_);
     keepEntry(retextured_, key, made);
     return {made, &made->model};

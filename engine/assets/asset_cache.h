@@ -10,7 +10,7 @@
 
 #include "environment/environment.h"
 #include "geometry/mesh.h"
-#include "gltf/import.h"
+#include "assets/loaded_model.h"
 #include "model/model.h"
 #include "scene/scene.h"
 
@@ -20,9 +20,9 @@ namespace patina {
 // the cache (a CLI command one for its run, the editor one for its session, each test its
 // own); nothing is cached process-wide, and the renderer never loads.
 //
-// A file is known by its path and its contents (a hash of its bytes, read on every call), an
-// environment also by its settings: the same file asked again is the same object, a file
-// rewritten is loaded again. A .gltf's external buffers count through the .gltf itself only.
+// A file is known by its path and its contents (a hash of its bytes, read once on every call,
+// and for a model not held, imported from those same bytes), an environment also by its
+// settings: the same file asked again is the same object, a file rewritten is loaded again. A .gltf's external buffers count through the .gltf itself only.
 // Files are shared while someone holds them (a weak entry each); built-in environments, few
 // and costly to make, are kept for the cache's life. Safe to use from several threads (the
 // editor's environment worker): loading runs outside the lock.
@@ -32,33 +32,34 @@ public:
     AssetCache(const AssetCache&) = delete;
     AssetCache& operator=(const AssetCache&) = delete;
 
-    // A glTF model (gltf/import.h); InputError naming the file when it cannot be loaded. A model
-    // loaded afresh tells `progress` how many of its images are decoded; null when it stops it.
-    std::shared_ptr<const GltfImport> model(const std::filesystem::path& path, const Progress& progress = {});
-    // The shape `scene` shows, its file read once: the triangles (its glTF file's, flattened
-    // into world space, else the built-in kind's) and what its glTF file draws
-    // (gltf/model_import.h; null for a built-in mesh), each keeping the other's entry. Where the
-    // scene replaces maps (ModelMaterialEdit::mapsReplaced), the model is the file's with those
-    // images in their place (retextured, below).
+    // The one door to a glTF model: the file at `path` read and hashed once, and when the cache
+    // does not hold those contents, imported as the model it draws and that model flattened
+    // (loaded_model.h). InputError naming the file when it cannot be loaded. A model loaded
+    // afresh tells `progress` how many of its images are decoded; null when it stops it.
+    std::shared_ptr<const LoadedModel> model(const std::filesystem::path& path, const Progress& progress = {});
+    // The shape `scene` shows, through model() for a glTF file: the triangles (its file's,
+    // flattened into world space, else the built-in kind's), what it draws (null for a built-in
+    // mesh) and the file's model as loaded (null for a built-in mesh), each keeping the others'
+    // entry. Where the scene replaces maps (ModelMaterialEdit::mapsReplaced), `model` is the
+    // file's with those images in their place (retextured, below).
     struct Shape {
         std::shared_ptr<const Mesh> mesh;
         std::shared_ptr<const Model> model;
+        std::shared_ptr<const LoadedModel> fileModel;
     };
     Shape shape(const Scene& scene);
-    // The model the glTF file at `path` draws (shares its entry with model(path)).
-    std::shared_ptr<const Model> drawnModel(const std::filesystem::path& path);
     std::shared_ptr<const Mesh> mesh(const Scene& scene) { return shape(scene).mesh; }
     // An image file put in place of a map (gltf/images.h readImageFile), decoded once while
     // someone holds it; InputError naming the file when it cannot be had.
     std::shared_ptr<const ModelImage> image(const std::filesystem::path& path);
-    // `model` (the file's, as drawnModel gives it) with the images `scene` puts in place of its
-    // maps, each edit matched by index and name as sceneDraws matches them: the image is added
-    // and the map points at it, keeping its UV set, sampler and transform. `model` itself where
-    // the scene replaces none. A replacement that cannot be used (a map the material lacks, an
-    // image that cannot be read, one past kGltfMaxImageBytes) leaves the file's map drawn, with
-    // a note in the result's notes. The same replacements give the same object while it is held.
-    // A model this made counts as the one it was made from: retexturing it again starts over.
-    std::shared_ptr<const Model> retextured(std::shared_ptr<const Model> model, const Scene& scene);
+    // The model of `file` (model()'s) with the images `scene` puts in place of its maps, each
+    // edit matched by index and name as sceneDraws matches them: the image is added and the map
+    // points at it, keeping its UV set, sampler and transform. The file's model itself where the
+    // scene replaces none. A replacement that cannot be used (a map the material lacks, an image
+    // that cannot be read, one past kGltfMaxImageBytes) leaves the file's map drawn, with a note
+    // in the result's notes. Known by the file's key and each replacement's map, path and image
+    // contents: the same replacements give the same object while it is held.
+    std::shared_ptr<const Model> retextured(const std::shared_ptr<const LoadedModel>& file, const Scene& scene);
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
     // the disk cache of environment/environment_source.h; one made afresh is prefiltered by
     // `prefilter` (the GPU's pass only where the caller's thread has a GL context). A note about
@@ -71,15 +72,15 @@ public:
 
 private:
     using Key = std::pair<std::string, uint64_t>;   // the path or source, the contents' hash
-    struct LoadedModel;   // a file's import and its Model, loaded together
-    std::shared_ptr<const LoadedModel> loaded(const std::filesystem::path& path, const Progress& progress = {});
+    // An image file's contents' key and the image, decoded once while someone holds it.
+    std::pair<Key, std::shared_ptr<const ModelImage>> keyedImage(const std::filesystem::path& path);
     std::mutex mutex_;
     std::map<Key, std::weak_ptr<const LoadedModel>> models_;
     std::map<Key, std::weak_ptr<const Environment>> environments_;
     std::map<Key, std::shared_ptr<const Environment>> builtins_;
     std::map<Key, std::weak_ptr<const ModelImage>> images_;
     struct RetexturedModel;   // a retextured copy, holding the model it was made from
-    std::map<std::string, std::weak_ptr<const RetexturedModel>> retextured_;   // by model and replacements
+    std::map<std::string, std::weak_ptr<const RetexturedModel>> retextured_;   // by file and replacements
 };
 
 }  // namespace patina

@@ -2,16 +2,34 @@
 
 namespace patina {
 
-PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings,
-                           PrefilterFunction prefilter) {
+namespace {
+// The enabled environment light's environment, or null without one.
+std::shared_ptr<const Environment> environmentOf(const Scene& scene, AssetCache& cache,
+                                                 std::vector<std::string>& warnings, PrefilterFunction prefilter) {
     const Light* light = enabledEnvironment(scene);
-    std::shared_ptr<const Environment> environment =
-        light ? cache.environment(light->source, warnings, {}, {}, prefilter) : nullptr;
-    AssetCache::Shape shape = cache.shape(scene);
+    return light ? cache.environment(light->source, warnings, {}, {}, prefilter) : nullptr;
+}
+
+// `scene` with its shape and environment; the model's notes to `warnings`.
+PreparedScene withLoaded(const Scene& scene, const AssetCache::Shape& shape,
+                         std::shared_ptr<const Environment> environment, std::vector<std::string>& warnings) {
     if (shape.model) {   // what its file left out (a map whose image is missing, ...), and its replacements
         warnings.insert(warnings.end(), shape.model->notes.begin(), shape.model->notes.end());
     }
-    return {scene, std::move(shape.mesh), std::move(environment), std::move(shape.model)};
+    return {scene, shape.mesh, std::move(environment), shape.model};
+}
+
+}  // namespace
+
+PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings,
+                           PrefilterFunction prefilter) {
+    std::shared_ptr<const Environment> environment = environmentOf(scene, cache, warnings, prefilter);
+    return withLoaded(scene, cache.shape(scene), std::move(environment), warnings);
+}
+
+PreparedScene prepareScene(const Scene& scene, const AssetCache::Shape& shape, AssetCache& cache,
+                           std::vector<std::string>& warnings, PrefilterFunction prefilter) {
+    return withLoaded(scene, shape, environmentOf(scene, cache, warnings, prefilter), warnings);
 }
 
 }  // namespace patina

@@ -17,5 +17,8 @@ PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<st
                            PrefilterFunction prefilter = prefilterCube);
 PreparedScene prepareScene(Scene&& scene, AssetCache& cache, std::vector<std::string>& warnings,
                            PrefilterFunction prefilter = prefilterCube) = delete;
+// The same with `shape`, cache.shape(scene)'s, loaded already (the editor keeps its file model).
+PreparedScene prepareScene(const Scene& scene, const AssetCache::Shape& shape, AssetCache& cache,
+                           std::vector<std::string>& warnings, PrefilterFunction prefilter = prefilterCube);
 
 }  // namespace patina

@@ -47,8 +47,8 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
 
 }  // namespace
 
-tinygltf::Model loadDocument(const std::filesystem::path& path, const std::string& source) {
-    const std::vector<uint8_t> bytes = readModelFile(path);
+tinygltf::Model loadDocument(const std::filesystem::path& path, const std::vector<uint8_t>& bytes,
+                             const std::string& source) {
     ModelFolder folder(path, source);
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(folder.callbacks());

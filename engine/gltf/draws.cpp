@@ -5,7 +5,6 @@
 #include <glm/mat3x3.hpp>
 
 #include "gltf/cameras.h"
-#include "gltf/import.h"
 #include "gltf/nodes.h"
 #include "gltf/primitives.h"
 #include "files/input_error.h"

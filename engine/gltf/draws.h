@@ -10,7 +10,7 @@
 namespace patina::gltf {
 
 // The primitives, draws, cameras and notes of a Model (its materials and images are left empty). The
-// counts are checked against the kGltfMax* limits of import.h, instances counted, before any
+// counts are checked against the kGltfMax* limits of primitives.h, instances counted, before any
 // primitive is read. Points and lines are skipped with a note. Throws InputError, also for a
 // scene without triangles.
 Model modelGeometry(const tinygltf::Model& document, const std::string& source);

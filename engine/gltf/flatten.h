@@ -1,5 +1,6 @@
 #pragma once
-// A model's draws as one mesh in world space: what importGltf returns.
+// A model's draws as one mesh in world space: what the asset cache loads beside the model
+// (assets/asset_cache.h), what the camera frames and the one-material view draws.
 #include <string>
 
 #include "geometry/mesh.h"

@@ -146,7 +146,10 @@ std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, co
 }
 
 ModelImage readImageFile(const std::filesystem::path& path) {
-    const std::vector<uint8_t> bytes = readModelFile(path);
+    return readImageFile(path, readModelFile(path));
+}
+
+ModelImage readImageFile(const std::filesystem::path& path, const std::vector<uint8_t>& bytes) {
     ModelImage image;
     image.name = path.filename().string();
     uint64_t size = 0;

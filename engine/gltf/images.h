@@ -33,5 +33,8 @@ std::optional<std::vector<int>> decodeImages(const tinygltf::Model& document, co
 // image once carried the user's whole path), and the scene keeps the path. Throws InputError
 // naming the file and why it cannot be had.
 ModelImage readImageFile(const std::filesystem::path& path);
+// The same from the file's `bytes`, read already (files.h readModelFile: the asset cache reads a
+// file once, to hash it and to decode it).
+ModelImage readImageFile(const std::filesystem::path& path, const std::vector<uint8_t>& bytes);
 
 }  // namespace patina::gltf

@@ -5,6 +5,7 @@
 #include "gltf/document.h"
 #include "gltf/draws.h"
 #include "gltf/extensions.h"
+#include "gltf/files.h"
 #include "gltf/images.h"
 #include "gltf/model_materials.h"
 #include "geometry/tangents.h"
@@ -76,9 +77,10 @@ void tellExtensions(const tinygltf::Model& document, Model& model) {
 
 }  // namespace
 
-std::optional<Model> importGltfModel(const std::filesystem::path& path, const Progress& progress) {
+std::optional<Model> importGltfModel(const std::filesystem::path& path, const std::vector<uint8_t>& bytes,
+                                     const Progress& progress) {
     const std::string source = path.string();
-    const tinygltf::Model document = gltf::loadDocument(path, source);
+    const tinygltf::Model document = gltf::loadDocument(path, bytes, source);
     Model model = gltf::modelGeometry(document, source);
     tellExtensions(document, model);
     std::vector<gltf::SpecGlossMaterial> specGloss;
@@ -89,6 +91,10 @@ std::optional<Model> importGltfModel(const std::filesystem::path& path, const Pr
     gltf::convertSpecularGlossiness(model, specGloss, gltf::kGltfMaxImageBytes);
     addMissingTangents(model);
     return model;
+}
+
+std::optional<Model> importGltfModel(const std::filesystem::path& path, const Progress& progress) {
+    return importGltfModel(path, gltf::readModelFile(path), progress);
 }
 
 Model importGltfModel(const std::filesystem::path& path) {

@@ -8,7 +8,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "gltf/import.h"
 #include "files/input_error.h"
 
 namespace patina::gltf {

@@ -1,6 +1,7 @@
 #pragma once
 // Mesh primitives (glTF 2.0 section 3.7.2) as Patina's meshes, each in its mesh's own space:
 // checked and counted first, read only once the whole model is known to fit the limits.
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -8,6 +9,14 @@
 
 #include "geometry/mesh.h"
 #include "gltf/accessor.h"
+
+namespace patina {
+
+constexpr size_t kGltfMaxVertices = size_t(16) << 20;     // over all node instances
+constexpr size_t kGltfMaxTriangles = size_t(16) << 20;
+constexpr size_t kGltfMaxPrimitives = size_t(256) << 10;    // mesh primitives drawn, instances counted
+
+}  // namespace patina
 
 namespace patina::gltf {
 

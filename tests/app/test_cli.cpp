@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "cli_runner.h"
+#include "file_reads.h"
 #include "gltf_builder.h"
 #include "gltf/model_export.h"
 #include "image/image.h"
@@ -269,6 +270,17 @@ TEST_F(Cli, MeshReplacesAModelTheSceneCannotRead) {
     EXPECT_NE(r.stderrText.find("gone.glb: cannot open"), std::string::npos) << r.stderrText;
     EXPECT_NE(r.stderrText.find("--mesh replaces it"), std::string::npos) << r.stderrText;
     EXPECT_TRUE(fs::exists(path("x.png")));
+}
+
+// A model drawn is read once: hashed and imported from the same bytes (AssetCache::model; it
+// was read twice).
+TEST_F(Cli, AModelsFileIsReadOnceForAPicture) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    test::FileReads reads(path("two.glb"));
+    const test::CliRun r = run("render --width 32 --height 24 --mesh " + path("two.glb").string() + " --out " +
+                               path("x.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_EQ(reads.count(), 1);
 }
 
 TEST_F(Cli, AMeshThatIsNoMeshIsRefused) {

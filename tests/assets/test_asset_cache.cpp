@@ -18,6 +18,7 @@
 #include "gltf/model_import.h"
 #include "image/image.h"
 #include "files/input_error.h"
+#include "file_reads.h"
 #include "gltf_builder.h"
 #include "scratch_test.h"
 #include "test_support.h"
@@ -86,6 +87,28 @@ TEST_F(Assets, TheSameFileIsLoadedOnce) {
     const Scene scene = sceneOf(path("torus.glb").string(), "builtin:white");
     EXPECT_EQ(cache.mesh(scene).get(), &model->mesh);
     EXPECT_EQ(cache.mesh(scene)->positions.size(), makeTorus().positions.size());
+    EXPECT_EQ(cache.shape(scene).model.get(), &model->model);
+    EXPECT_EQ(cache.shape(scene).fileModel, model);
+}
+
+// One door: each ask reads the model's file once, to hash it and, when it is not held, to
+// import it (it was read twice, three times through the editor's load).
+TEST_F(Assets, AModelsFileIsReadOnceEachTimeItIsAskedFor) {
+    exportGltf(path("torus.glb"), makeTorus(), Material{});
+    AssetCache cache;
+    test::FileReads reads(path("torus.glb"));
+    const std::shared_ptr<const LoadedModel> model = cache.model(path("torus.glb"));
+    EXPECT_EQ(reads.count(), 1) << "loaded";
+    EXPECT_EQ(model->mesh.positions.size(), makeTorus().positions.size());
+    EXPECT_EQ(cache.model(path("torus.glb")), model);
+    EXPECT_EQ(reads.count(), 1) << "held: hashed only";
+
+    AssetCache fresh;
+    const Scene scene = sceneOf(path("torus.glb").string(), "builtin:white");
+    std::vector<std::string> warnings;
+    const PreparedScene prepared = prepareScene(scene, fresh, warnings);
+    EXPECT_EQ(reads.count(), 1) << "a scene prepared";
+    EXPECT_EQ(prepared.mesh->positions.size(), makeTorus().positions.size());
 }
 
 // A model's images decoded report their share done, and a stop leaves nothing loaded or kept:
@@ -116,9 +139,9 @@ TEST_F(Assets, AModelsImageDecodingReportsProgressAndStopsWhenAsked) {
 
     AssetCache assets;
     EXPECT_EQ(assets.model(path("maps.glb"), [](float) { return false; }), nullptr);
-    const std::shared_ptr<const GltfImport> whole = assets.model(path("maps.glb"));   // nothing stale was kept
+    const std::shared_ptr<const LoadedModel> whole = assets.model(path("maps.glb"));   // nothing stale was kept
     ASSERT_NE(whole, nullptr);
-    EXPECT_EQ(assets.drawnModel(path("maps.glb"))->images.size(), 4u);
+    EXPECT_EQ(whole->model.images.size(), 4u);
 }
 
 TEST_F(Assets, AChangedFileIsLoadedAgain) {
@@ -324,8 +347,9 @@ TEST_F(Assets, AReplacedMapIsDrawnInPlaceOfTheFilesForThatMaterialOnly) {
     scene.modelMaterials[0].mapsReplaced = {{"baseColorTexture", path("red.png").string()}};
     const PreparedScene prepared = prepareScene(scene, cache, warnings);
     EXPECT_TRUE(warnings.empty()) << warnings.at(0);
-    const std::shared_ptr<const Model> fromFile = cache.drawnModel(scene.meshFile);
-    ASSERT_NE(prepared.model, fromFile);
+    const std::shared_ptr<const LoadedModel> loaded = cache.model(scene.meshFile);
+    const Model* fromFile = &loaded->model;
+    ASSERT_NE(prepared.model.get(), fromFile);
     const Model& model = *prepared.model;
     ASSERT_EQ(model.images.size(), 2u);
     EXPECT_EQ(model.images[1].rgba, red.rgba);
@@ -338,7 +362,8 @@ TEST_F(Assets, AReplacedMapIsDrawnInPlaceOfTheFilesForThatMaterialOnly) {
     EXPECT_EQ(cache.shape(scene).model, prepared.model) << "made once while held";
     Scene untouched = scene;
     untouched.modelMaterials[0].mapsReplaced.clear();
-    EXPECT_EQ(cache.retextured(prepared.model, untouched), fromFile) << "retexturing starts from the file's model";
+    EXPECT_EQ(cache.retextured(loaded, untouched).get(), fromFile) << "no replacement: the file's model";
+    EXPECT_EQ(cache.retextured(loaded, scene), prepared.model) << "found by its key";
 
     Scene expected = scene;
     expected.meshFile = path("red-left.glb").string();
@@ -392,7 +417,7 @@ TEST_F(Assets, AReplacementThatCannotBeUsedKeepsTheFilesMapWithANote) {
         EXPECT_NE(warnings[0].find(note), std::string::npos) << warnings[0];
         EXPECT_NE(warnings[0].find("the file's map is drawn"), std::string::npos) << warnings[0];
         EXPECT_EQ(prepared.model->images.size(), 1u);
-        EXPECT_EQ(prepared.model->materials, cache.drawnModel(scene.meshFile)->materials);
+        EXPECT_EQ(prepared.model->materials, cache.model(scene.meshFile)->model.materials);
     }
     EXPECT_NE(inputErrorOf([&] { cache.image(path("text.png")); }).find("text.png: the image is neither PNG nor JPEG"),
               std::string::npos);

@@ -23,7 +23,6 @@
 #include "window/ui_scale.h"
 #include "window/widgets.h"
 #include "gltf/export.h"
-#include "gltf/import.h"
 #include "gltf/model_export.h"
 #include "gltf/model_import.h"
 #include "state/camera_choice.h"
@@ -31,6 +30,7 @@
 #include "scene/camera_control.h"
 #include "scene/view.h"
 #include "io/json_writer.h"
+#include "file_reads.h"
 #include "scratch_test.h"
 #include "test_support.h"
 #include "files/file_bytes.h"
@@ -677,7 +677,7 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     ASSERT_EQ(state.scene.modelMaterials.size(), 1u);
     EXPECT_EQ(state.scene.modelMaterials[0].material.name, "model gold");
     const Scene shown = renderedScene(state, state);
-    const PreparedScene prepared = preparedScene(state, shown);
+    const PreparedScene prepared = sceneToDraw(state, shown);
     ASSERT_NE(prepared.model, nullptr);
     const std::vector<SceneDraw> draws = sceneDraws(prepared);
     ASSERT_EQ(draws.size(), 1u);
@@ -750,7 +750,7 @@ TEST_F(EditorStateTest, ExportAsGltfWritesTheTunedModelAndLeavesTheDocumentAlone
 
     newDocument(state, state, state, state);
     ASSERT_TRUE(exportGltfFile(state, state, dir_ / "sphere.gltf")) << state.error;
-    EXPECT_EQ(importGltf(dir_ / "sphere.gltf").material->name, state.scene.material.name);
+    EXPECT_EQ(importGltfModel(dir_ / "sphere.gltf").materials.at(0).name, state.scene.material.name);
     EXPECT_FALSE(exportGltfFile(state, state, dir_ / "no" / "such" / "x.glb"));
     EXPECT_NE(state.error.find("x.glb"), std::string::npos) << state.error;
 }
@@ -789,7 +789,7 @@ TEST_F(EditorStateTest, AMapTickedOffIsAnUndoableEditThatTheExportKeeps) {
     commitEdits(state);
     EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture"));
     EXPECT_EQ(editedMaterial(state, state), factors);
-    const std::vector<SceneDraw> draws = sceneDraws(preparedScene(state, renderedScene(state, state)));
+    const std::vector<SceneDraw> draws = sceneDraws(sceneToDraw(state, renderedScene(state, state)));
     ASSERT_EQ(draws.size(), 1u);
     EXPECT_EQ(draws[0].maps, nullptr);
     ASSERT_TRUE(exportGltfFile(state, state, dir_ / "plain.glb")) << state.error;
@@ -802,10 +802,12 @@ TEST_F(EditorStateTest, AMapTickedOffIsAnUndoableEditThatTheExportKeeps) {
     EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture"));
 }
 
-// A model opened from the window is read on a worker: the mesh shown stays until it is ready;
-// a broken one says why and changes nothing; a cancelled one never arrives.
+// A model opened from the window is read on a worker, its file once (hashed and imported from
+// the same bytes: it was read three times): the mesh shown stays until it is ready; a broken
+// one says why and changes nothing; a cancelled one never arrives.
 TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled) {
     exportGltf(dir_ / "torus.glb", makeTorus(), Material{});
+    test::FileReads reads(dir_ / "torus.glb");
     requestOpen(state, dir_ / "torus.glb");
     ASSERT_NE(state.modelLoad, nullptr);
     EXPECT_TRUE(state.scene.meshFile.empty()) << "the sphere stays until the model is read";
@@ -813,7 +815,9 @@ TEST_F(EditorStateTest, AModelOpenedFromTheWindowLoadsOnAWorkerAndCanBeCancelled
     ASSERT_TRUE(finishModelLoad(state, true)) << state.error;
     EXPECT_EQ(fs::path(state.scene.meshFile).filename(), "torus.glb");
     EXPECT_EQ(state.modelLoad, nullptr);
-    EXPECT_EQ(state.mesh->positions.size(), makeTorus().positions.size());
+    EXPECT_EQ(state.mesh()->positions.size(), makeTorus().positions.size());
+    EXPECT_EQ(reads.count(), 1) << "the file read once";
+    EXPECT_EQ(state.model.get(), &state.fileModel->model) << "no map replaced: the file's model is drawn";
 
     std::ofstream(dir_ / "broken.glb") << "not a model";
     requestOpen(state, dir_ / "broken.glb");
@@ -878,7 +882,7 @@ TEST_F(EditorStateTest, EachPartHasItsOwnBrdfModelAndAnOldSceneKeepsItsOne) {
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
     auto shaded = [&] {
         std::vector<BrdfModelId> models;
-        for (const SceneDraw& draw : sceneDraws(preparedScene(state, renderedScene(state, state)))) {
+        for (const SceneDraw& draw : sceneDraws(sceneToDraw(state, renderedScene(state, state)))) {
             models.push_back(draw.material.model);
         }
         return models;

@@ -394,8 +394,8 @@ TEST_F(EditorUi, OpeningAGltfShowsItsMeshAndABadOneKeepsThePrevious) {
     // A scene naming a glTF brings its mesh; one naming a missing file fails and changes nothing.
     write("with-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "torus.glb"})");
     ASSERT_TRUE(openFile(state_, path("with-mesh.json"))) << state_.error;
-    EXPECT_TRUE(state_.mesh != nullptr);
-    EXPECT_EQ(state_.mesh->positions.size(), makeTorus().positions.size());
+    ASSERT_TRUE(state_.mesh() != nullptr);
+    EXPECT_EQ(state_.mesh()->positions.size(), makeTorus().positions.size());
     frames(1);
     write("missing-mesh.json", R"({"format": "patina-scene", "version": 1, "mesh": "gone.glb", "lights": []})");
     const EditSnapshot snapshot = state_.snapshot();
@@ -1127,7 +1127,7 @@ TEST_F(EditorUi, ThePixelReadOutListsTheLightsInThePanelsOrder) {
     point.position = {-0.5f, 0.5f, 2.0f};
     state_.scene.lights = {sphere, point};
     const Scene shown = renderedScene(state_, state_);
-    const PixelStory* story = services_->pixelStory(preparedScene(state_, shown), 64, 64, 32, 32);
+    const PixelStory* story = services_->pixelStory(sceneToDraw(state_, shown), 64, 64, 32, 32);
     ASSERT_NE(story, nullptr);
     std::vector<std::string> names;
     for (const LightShare& light : story->lights) {
@@ -1187,17 +1187,17 @@ TEST_F(EditorUi, FrameMeshFromTheViewMenuAimsAtTheMesh) {
 TEST_F(EditorUi, TheEditorHoldsTheMeshItDraws) {
     exportGltf(path("torus.glb"), makeTorus(), Material{});
     ASSERT_TRUE(openFile(state_, path("torus.glb"))) << state_.error;
-    const std::shared_ptr<const Mesh> torus = state_.mesh;
+    const std::shared_ptr<const LoadedModel> torus = state_.fileModel;
     ASSERT_TRUE(torus);
     frames(2);
     const LdrImage shown = services_->viewportPixels(EditorServices::Shown::Edited);
     state_.scene.meshFile.clear();
-    state_.mesh.reset();
+    state_.fileModel.reset();
     frames(2);
     EXPECT_GT(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 1000)
         << "the sphere again";
     state_.scene.meshFile = path("torus.glb").string();
-    state_.mesh = torus;
+    state_.fileModel = torus;
     frames(2);
     EXPECT_EQ(differingPixels(shown, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
 }

@@ -1,17 +1,18 @@
 // glTF import of one model file, written for each input to PATINA_FUZZ_MODEL in a folder of
-// its own (the imports read files only, inside the model's folder): the flattened mesh
-// (importGltf) and the whole model (importGltfModel), exported again. Refusals are
-// InputErrors; anything else, or a result that breaks the import's promises, is a bug.
+// its own (the import reads files only, inside the model's folder): the whole model
+// (importGltfModel), exported again, and its draws flattened into one mesh (gltf/flatten.h).
+// Refusals are InputErrors; anything else, or a result that breaks the import's promises, is a bug.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "gltf/import.h"
+#include "gltf/flatten.h"
 #include "gltf/model_export.h"
 #include "gltf/model_import.h"
 #include "geometry/hidden_faces.h"
@@ -83,27 +84,29 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             std::abort();
         }
     }
+    std::optional<patina::Model> imported;
     try {
-        const patina::Model imported = patina::importGltfModel(modelPath());
-        if (!wellFormed(imported)) {
-            std::abort();
-        }
-        // Whatever imports exports (its images as PNG too): the export refuses only a model
-        // with no triangles to draw.
-        try {
-            patina::encodeGltfModel("fuzz.glb", imported);
-        } catch (const patina::InputError&) {
-        }
-    } catch (const patina::InputError&) {
-    }
-    patina::GltfImport model;
-    try {
-        model = patina::importGltf(modelPath());
+        imported = patina::importGltfModel(modelPath());
     } catch (const patina::InputError&) {
         return 0;
     }
-    // gltf_import.h: triangles, a unit normal for every position, indices in range.
-    const patina::Mesh& mesh = model.mesh;
+    if (!wellFormed(*imported)) {
+        std::abort();
+    }
+    // Whatever imports exports (its images as PNG too): the export refuses only a model with no
+    // triangles to draw.
+    try {
+        patina::encodeGltfModel("fuzz.glb", *imported);
+    } catch (const patina::InputError&) {
+    }
+    // Its draws flattened, as the asset cache loads them beside it.
+    patina::Mesh mesh;
+    try {
+        mesh = patina::gltf::flattenDraws(*imported, modelPath().string());
+    } catch (const patina::InputError&) {
+        return 0;
+    }
+    // gltf/flatten.h: triangles, a unit normal for every position, indices in range.
     if (mesh.indices.empty() || mesh.indices.size() % 3 != 0 || mesh.normals.size() != mesh.positions.size()) {
         std::abort();
     }

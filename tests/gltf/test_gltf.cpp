@@ -1,5 +1,5 @@
-// glTF import (engine/gltf/import.h) of valid files: geometry through the node hierarchy,
-// index widths, strips and fans, flat normals, the material mapping, framing and speed.
+// glTF import of valid files, as a model opens (assets/asset_cache.h: gltf/model_import.h and
+// its draws flattened, gltf/flatten.h): geometry through the node hierarchy, index widths, strips and fans, flat normals, the material mapping, framing and speed.
 // Hostile files are in test_gltf_hostile.cpp, export in test_gltf_export.cpp.
 #include <chrono>
 #include <cmath>
@@ -9,7 +9,6 @@
 
 #include "gltf_builder.h"
 #include "gltf/export.h"
-#include "gltf/import.h"
 #include "scratch_test.h"
 
 namespace patina {
@@ -46,19 +45,19 @@ TEST_F(Gltf, CubeWithNormalsFromGltfGlbAndDataUri) {
     model.writeGlb(path("cube.glb"));
     const Cube cube;
     for (const char* name : {"cube.gltf", "cube.glb"}) {
-        const GltfImport imported = importGltf(path(name));
-        EXPECT_EQ(imported.mesh.positions, cube.positions) << name;
-        EXPECT_EQ(imported.mesh.normals, cube.normals) << name;
-        EXPECT_EQ(imported.mesh.indices, cube.indices) << name;
-        ASSERT_TRUE(imported.material.has_value());
-        EXPECT_EQ(imported.material->name, "cube");
+        const std::shared_ptr<const LoadedModel> imported = test::loadModel(path(name));
+        EXPECT_EQ(imported->mesh.positions, cube.positions) << name;
+        EXPECT_EQ(imported->mesh.normals, cube.normals) << name;
+        EXPECT_EQ(imported->mesh.indices, cube.indices) << name;
+        ASSERT_EQ(imported->model.materials.size(), 1u);
+        EXPECT_EQ(imported->model.materials[0].name, "cube");
     }
 }
 
 // glTF 2.0 section 3.7.2.1: without NORMAL, flat normals.
 TEST_F(Gltf, MissingNormalsAreFlat) {
     cubeModel(false).writeGltf(path("cube.gltf"));
-    const Mesh mesh = importGltf(path("cube.gltf")).mesh;
+    const Mesh mesh = test::flatMesh(path("cube.gltf"));
     const Cube cube;
     ASSERT_EQ(mesh.normals.size(), cube.normals.size());   // split by face already: no copies
     for (size_t i = 0; i < cube.normals.size(); ++i) {
@@ -71,7 +70,7 @@ TEST_F(Gltf, MissingNormalsAreFlat) {
     const int indices = model.data(std::vector<uint16_t>{0, 1, 2, 0, 3, 4}, test::kUnsignedShort, "SCALAR", 1);
     model.meshNode({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
     model.writeGltf(path("fan.gltf"));
-    const Mesh fan = importGltf(path("fan.gltf")).mesh;
+    const Mesh fan = test::flatMesh(path("fan.gltf"));
     ASSERT_EQ(fan.positions.size(), 6u);
     EXPECT_EQ(fan.normals[fan.indices[0]], glm::vec3(0, 0, 1));
     EXPECT_EQ(fan.normals[fan.indices[3]], glm::vec3(1, 0, 0));
@@ -80,16 +79,16 @@ TEST_F(Gltf, MissingNormalsAreFlat) {
     GltfBuilder point;
     point.meshNode({{"attributes", {{"POSITION", point.positions({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}})}}}});
     point.writeGltf(path("point.gltf"));
-    EXPECT_EQ(importGltf(path("point.gltf")).mesh.normals, std::vector<glm::vec3>(3, glm::vec3(0, 1, 0)));
+    EXPECT_EQ(test::flatMesh(path("point.gltf")).normals, std::vector<glm::vec3>(3, glm::vec3(0, 1, 0)));
 }
 
 TEST_F(Gltf, EveryIndexWidthAndNoIndicesGiveTheSameTriangles) {
     cubeModel(true, test::kUnsignedShort).writeGltf(path("reference.gltf"));
-    const std::vector<glm::vec3> expected = trianglePoints(importGltf(path("reference.gltf")).mesh);
+    const std::vector<glm::vec3> expected = trianglePoints(test::flatMesh(path("reference.gltf")));
     for (const int type : {test::kUnsignedByte, test::kUnsignedShort, test::kUnsignedInt, 0}) {
         const fs::path file = path("cube" + std::to_string(type) + ".glb");
         cubeModel(true, type).writeGlb(file);
-        const Mesh mesh = importGltf(file).mesh;
+        const Mesh mesh = test::flatMesh(file);
         EXPECT_EQ(trianglePoints(mesh), expected) << type;
         EXPECT_EQ(mesh.indices.size(), 36u) << type;
     }
@@ -99,7 +98,7 @@ TEST_F(Gltf, NodeTransformsMoveTheVertices) {
     GltfBuilder model = cubeModel();
     model.json["nodes"][0]["translation"] = {5, 0, 0};
     model.writeGltf(path("moved.gltf"));
-    const Mesh moved = importGltf(path("moved.gltf")).mesh;
+    const Mesh moved = test::flatMesh(path("moved.gltf"));
     const Cube cube;
     for (size_t i = 0; i < cube.positions.size(); ++i) {
         EXPECT_EQ(moved.positions[i], cube.positions[i] + glm::vec3(5, 0, 0));
@@ -110,7 +109,7 @@ TEST_F(Gltf, NodeTransformsMoveTheVertices) {
     model.add("nodes", {{"children", {0}}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 10, 0, 1}}});
     model.json["scenes"][0]["nodes"] = {1};
     model.writeGltf(path("nested.gltf"));
-    const Mesh nested = importGltf(path("nested.gltf")).mesh;
+    const Mesh nested = test::flatMesh(path("nested.gltf"));
     for (size_t i = 0; i < cube.positions.size(); ++i) {
         const glm::vec3 p = cube.positions[i];
         EXPECT_NEAR(glm::distance(nested.positions[i], glm::vec3(-p.y, p.x + 10.0f, p.z)), 0.0f, 1e-5f) << i;
@@ -123,7 +122,7 @@ TEST_F(Gltf, NormalsGoThroughTheInverseTransposeAndMirrorsKeepWindingOutward) {
     GltfBuilder model = cubeModel();
     model.json["nodes"][0]["scale"] = {3, 1, 0.5};
     model.writeGltf(path("squashed.gltf"));
-    const Mesh squashed = importGltf(path("squashed.gltf")).mesh;
+    const Mesh squashed = test::flatMesh(path("squashed.gltf"));
     for (size_t i = 0; i < squashed.normals.size(); ++i) {   // axis normals stay axis normals
         EXPECT_NEAR(glm::distance(squashed.normals[i], Cube().normals[i]), 0.0f, 1e-6f);
     }
@@ -134,7 +133,7 @@ TEST_F(Gltf, NormalsGoThroughTheInverseTransposeAndMirrorsKeepWindingOutward) {
                                          {std::sqrt(0.5f), std::sqrt(0.5f), 0}});
     slope.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}}, {{"scale", {2, 1, 1}}});
     slope.writeGltf(path("slope.gltf"));
-    const Mesh sloped = importGltf(path("slope.gltf")).mesh;
+    const Mesh sloped = test::flatMesh(path("slope.gltf"));
     const glm::vec3 edge = sloped.positions[1] - sloped.positions[0];
     EXPECT_NEAR(glm::dot(sloped.normals[0], edge), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::length(sloped.normals[0]), 1.0f, 1e-6f);
@@ -143,7 +142,7 @@ TEST_F(Gltf, NormalsGoThroughTheInverseTransposeAndMirrorsKeepWindingOutward) {
         GltfBuilder mirrored = cubeModel(withNormals);
         mirrored.json["nodes"][0]["scale"] = {-1, 1, 1};
         mirrored.writeGltf(path("mirrored.gltf"));
-        const Mesh mesh = importGltf(path("mirrored.gltf")).mesh;
+        const Mesh mesh = test::flatMesh(path("mirrored.gltf"));
         expectOutwardWinding(mesh);
         EXPECT_GT(glm::dot(mesh.normals[0], mesh.positions[0]), 0.0f);   // points away from the centre
     }
@@ -159,7 +158,7 @@ TEST_F(Gltf, NormalsOfAnySizeKeepTheirDirectionAtUnitLength) {
         given.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}});
         given.writeGltf(path("given.gltf"));
         const std::vector<glm::vec3> expected{{1, 0, 0}, {0, std::sqrt(0.5f), std::sqrt(0.5f)}, {0, 0, -1}};
-        const Mesh mesh = importGltf(path("given.gltf")).mesh;
+        const Mesh mesh = test::flatMesh(path("given.gltf"));
         for (size_t i = 0; i < expected.size(); ++i) {
             EXPECT_NEAR(glm::distance(mesh.normals[i], expected[i]), 0.0f, 1e-6f) << size << ", normal " << i;
         }
@@ -175,7 +174,7 @@ TEST_F(Gltf, NormalsOfAnySizeKeepTheirDirectionAtUnitLength) {
         scaled.writeGltf(path("scaled.gltf"));
         const float x = scale < 0.0f ? -1.0f : 1.0f;
         const std::vector<glm::vec3> expected{{x, 0, 0}, {0, std::sqrt(0.5f), std::sqrt(0.5f)}, {0, 0, -1}};
-        const Mesh mesh = importGltf(path("scaled.gltf")).mesh;
+        const Mesh mesh = test::flatMesh(path("scaled.gltf"));
         for (size_t i = 0; i < expected.size(); ++i) {
             EXPECT_NEAR(glm::distance(mesh.normals[i], expected[i]), 0.0f, 1e-6f) << scale << ", normal " << i;
         }
@@ -189,7 +188,7 @@ TEST_F(Gltf, NormalsOfAnySizeKeepTheirDirectionAtUnitLength) {
         generated.meshNode(
             {{"attributes", {{"POSITION", generated.positions({{0, 0, 0}, {size, 0, 0}, {0, size, 0}})}}}});
         generated.writeGltf(path("generated.gltf"));
-        EXPECT_EQ(importGltf(path("generated.gltf")).mesh.normals, std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)))
+        EXPECT_EQ(test::flatMesh(path("generated.gltf")).normals, std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)))
             << size;
     }
 }
@@ -205,7 +204,7 @@ TEST_F(Gltf, StripsAndFansBecomeTrianglesAndPointsAndLinesAreSkipped) {
         model.meshNode({{"attributes", {{"POSITION", strip}}}, {"mode", mode}});
     }
     model.writeGltf(path("modes.gltf"));
-    const Mesh mesh = importGltf(path("modes.gltf")).mesh;
+    const Mesh mesh = test::flatMesh(path("modes.gltf"));
     EXPECT_EQ(mesh.indices.size(), 12u);   // two triangles from each of the strip and the fan
     for (const glm::vec3& n : mesh.normals) {
         EXPECT_NEAR(glm::distance(n, glm::vec3(0, 0, 1)), 0.0f, 1e-6f);   // all counter-clockwise
@@ -217,23 +216,23 @@ TEST_F(Gltf, TheDefaultSceneOrElseTheRootNodesAreDrawn) {
     GltfBuilder model = cubeModel();
     model.add("nodes", {{"mesh", 0}, {"translation", {0, 7, 0}}});   // in no scene: not drawn
     model.writeGltf(path("scene0.gltf"));
-    EXPECT_EQ(importGltf(path("scene0.gltf")).mesh.positions.size(), 24u);
+    EXPECT_EQ(test::flatMesh(path("scene0.gltf")).positions.size(), 24u);
     model.json["scenes"].push_back({{"nodes", {1}}});
     model.json["scene"] = 1;
     model.writeGltf(path("scene1.gltf"));
-    const Mesh second = importGltf(path("scene1.gltf")).mesh;
+    const Mesh second = test::flatMesh(path("scene1.gltf"));
     EXPECT_EQ(second.positions[0], Cube().positions[0] + glm::vec3(0, 7, 0));
     model.json.erase("scene");
     model.json.erase("scenes");   // both nodes are roots
     model.writeGltf(path("roots.gltf"));
-    EXPECT_EQ(importGltf(path("roots.gltf")).mesh.positions.size(), 48u);
+    EXPECT_EQ(test::flatMesh(path("roots.gltf")).positions.size(), 48u);
 }
 
 TEST_F(Gltf, BoundingSphereFramesTheModel) {
     GltfBuilder model = cubeModel();
     model.json["nodes"][0]["translation"] = {1, 2, 3};
     model.writeGlb(path("cube.glb"));
-    const BoundingSphere sphere = boundingSphere(importGltf(path("cube.glb")).mesh);
+    const BoundingSphere sphere = boundingSphere(test::flatMesh(path("cube.glb")));
     EXPECT_NEAR(glm::distance(sphere.center, glm::vec3(1, 2, 3)), 0.0f, 1e-6f);
     EXPECT_NEAR(sphere.radius, std::sqrt(3.0f) / 2.0f, 1e-6f);
 }
@@ -243,13 +242,13 @@ Material importMaterial(const fs::path& file, const Json& material) {
     GltfBuilder model = cubeModel();
     model.json["materials"][0] = material;
     model.writeGltf(file);
-    return *importGltf(file).material;
+    return test::firstMaterial(importGltfModel(file));
 }
 
 TEST_F(Gltf, MaterialFactorsAndSpecularMapping) {
     const fs::path file = path("m.gltf");
     const Material plain = importMaterial(file, Json::object());   // glTF's defaults
-    EXPECT_EQ(plain.name, "m");   // no name: the file's
+    EXPECT_EQ(plain.name, "material 0");   // no name: its index
     EXPECT_EQ(plain.baseColor, glm::vec3(1.0f));
     EXPECT_EQ(plain.metallic, 1.0f);
     EXPECT_EQ(plain.roughness, 1.0f);
@@ -294,23 +293,11 @@ TEST_F(Gltf, AMillionTrianglesLoadInSeconds) {
     model.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}, {"indices", indices}});
     model.writeGlb(path("big.glb"));
     const auto start = std::chrono::steady_clock::now();
-    const Mesh mesh = importGltf(path("big.glb")).mesh;
+    const Mesh mesh = test::flatMesh(path("big.glb"));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(mesh.indices, sphere.indices);
     EXPECT_LT(seconds, 5.0);
     std::cout << "1M triangles loaded in " << seconds << " s\n";
-}
-
-// What the editor reports as not used: how many materials and textures the file has.
-TEST(GltfImport, CountsTheFilesMaterialsAndTextures) {
-    const std::filesystem::path file = std::filesystem::temp_directory_path() / "patina_counts.glb";
-    Material material;
-    material.name = "one";
-    exportGltf(file, makeTorus(), material);
-    const GltfImport imported = importGltf(file);
-    EXPECT_EQ(imported.materialCount, 1u);
-    EXPECT_EQ(imported.textureCount, 0u);
-    std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include "cli_runner.h"
 #include "gltf_builder.h"
 #include "gltf/export.h"
-#include "gltf/import.h"
 #include "image/image.h"
 #include "io/json_writer.h"
 #include "io/scene_file.h"
@@ -59,14 +58,13 @@ TEST_F(GltfExport, ImportGivesBackTheMaterialAndTheTriangles) {
                                            std::pair{"t b.gltf", GltfBuffer::BinFile},
                                            std::pair{"t.glb", GltfBuffer::Embedded}}) {
             exportGltf(path(name), torus, material, buffer);
-            const GltfImport back = importGltf(path(name));
-            ASSERT_TRUE(back.material.has_value());
-            expectSameMaterial(*back.material, material);
-            EXPECT_EQ(back.mesh.indices, torus.indices) << name;
-            EXPECT_EQ(back.mesh.positions, torus.positions) << name;
-            ASSERT_EQ(back.mesh.normals.size(), torus.normals.size());
+            const std::shared_ptr<const LoadedModel> back = test::loadModel(path(name));
+            expectSameMaterial(test::firstMaterial(back->model), material);
+            EXPECT_EQ(back->mesh.indices, torus.indices) << name;
+            EXPECT_EQ(back->mesh.positions, torus.positions) << name;
+            ASSERT_EQ(back->mesh.normals.size(), torus.normals.size());
             for (size_t i = 0; i < torus.normals.size(); ++i) {   // normalised again on import
-                ASSERT_NEAR(glm::distance(back.mesh.normals[i], torus.normals[i]), 0.0f, 1e-6f) << name << " " << i;
+                ASSERT_NEAR(glm::distance(back->mesh.normals[i], torus.normals[i]), 0.0f, 1e-6f) << name << " " << i;
             }
         }
     }
@@ -113,13 +111,13 @@ TEST_F(GltfExport, TheCommandTakesAMeshFileAndRefusesBadArguments) {
     const test::CliRun again = run("export --material " + path("m.json").string() + " --mesh " +
                                    path("t.glb").string() + " --out " + path("again.gltf").string());
     ASSERT_EQ(again.exitCode, 0) << again.stderrText;
-    const GltfImport back = importGltf(path("again.gltf"));
-    EXPECT_EQ(back.mesh.indices, makeTorus().indices);
+    const std::shared_ptr<const LoadedModel> back = test::loadModel(path("again.gltf"));
+    EXPECT_EQ(back->mesh.indices, makeTorus().indices);
     // A model's part takes the material's factors and keeps its own name.
     Material expected = unusualMaterial();
     expected.name = defaultScene().material.name;
-    expectSameMaterial(*back.material, expected);
-    EXPECT_EQ(importGltf(path("t.glb")).material->name, defaultScene().material.name);
+    expectSameMaterial(test::firstMaterial(back->model), expected);
+    EXPECT_EQ(importGltfModel(path("t.glb")).materials.at(0).name, defaultScene().material.name);
 
     EXPECT_EQ(run("export --out " + path("x.obj").string()).exitCode, 2);
     EXPECT_EQ(run("export").exitCode, 2);

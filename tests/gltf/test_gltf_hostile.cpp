@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include "gltf_builder.h"
-#include "gltf/import.h"
 #include "image/image.h"
 #include "scratch_test.h"
 #include "files/file_bytes.h"

@@ -353,7 +353,8 @@ TEST_F(GltfModel, TheLimitsCountEveryInstance) {
     EXPECT_ERROR(errorOf(model), "the scene has more than 16777216 vertices");
 }
 
-// importGltf is the model's draws in world space: the same traversal, the same primitives.
+// The mesh a model opens with (AssetCache::model) is the model's draws in world space: the same
+// traversal, the same primitives.
 TEST_F(GltfModel, TheFlattenedMeshIsTheDrawsInWorldSpace) {
     GltfBuilder model = cubeModel();
     model.json["nodes"][0]["rotation"] = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
@@ -361,7 +362,7 @@ TEST_F(GltfModel, TheFlattenedMeshIsTheDrawsInWorldSpace) {
         model.add("nodes", {{"children", {0}}, {"translation", {0, 3, 0}}, {"scale", {2, 2, 2}}}),
         model.add("nodes", {{"mesh", 0}, {"scale", {1, -1, 1}}})};
     const Model imported = load(model);
-    const Mesh flat = importGltf(path("model.gltf")).mesh;
+    const Mesh flat = test::flatMesh(path("model.gltf"));
     std::vector<glm::vec3> expected;
     for (const DrawItem& draw : imported.draws) {
         for (const glm::vec3& p : imported.primitives[size_t(draw.primitive)].positions) {

@@ -52,13 +52,13 @@ void drawPictures(const Document& document, const Interaction& interaction, Edit
     const int samples = ImGui::IsAnyItemActive() ? 1 : 4;
     const PictureRequest request{
         area.width, area.height, interaction.renderPath, samples, interaction.environmentShading, interaction.channel};
-    const PreparedScene& preparedB = preparedScene(document, b);
+    const PreparedScene& preparedB = sceneToDraw(document, b);
     if (interaction.compareA && interaction.compareView == CompareView::SideBySide) {
         PictureRequest half = request;
         half.width = std::max(area.width / 2, 8);
         const ImVec2 halfSize(float(half.width), area.size.y);
         const Scene a = withMaterial(document, interaction, *interaction.compareA);
-        const PreparedScene& preparedA = preparedScene(document, a);
+        const PreparedScene& preparedA = sceneToDraw(document, a);
         image(services.viewportTexture(preparedA, half, Shown::A), halfSize);
         ImGui::SameLine(0.0f, 0.0f);
         image(services.viewportTexture(preparedB, half, Shown::Edited), halfSize);
@@ -72,7 +72,7 @@ void drawPictures(const Document& document, const Interaction& interaction, Edit
     if (interaction.compareA && interaction.compareView == CompareView::Split) {
         // A left of the divider, B right, one camera: A's image drawn over B's left part.
         const Scene sceneA = withMaterial(document, interaction, *interaction.compareA);
-        const PreparedScene& preparedA = preparedScene(document, sceneA);
+        const PreparedScene& preparedA = sceneToDraw(document, sceneA);
         const unsigned a = services.viewportTexture(preparedA, request, Shown::A);
         const float split = std::clamp(interaction.splitPosition, 0.0f, 1.0f);
         const ImVec2 sizeA(area.size.x * split, area.size.y);
@@ -208,14 +208,14 @@ void drawViewportPanel(EditorState& state, EditorServices& services) {
     drawEnvironmentProgress(state, area);
     drawChannelLabel(state, area);
     // The read-out tells the story of the picture under the mouse: B, or A and B.
-    const PreparedScene preparedB = preparedScene(state, b);
+    const PreparedScene preparedB = sceneToDraw(state, b);
     std::optional<Scene> sceneA;   // outlives preparedA, which refers to it
     std::optional<PreparedScene> preparedA;
     std::vector<ReadOutPicture> pictures;
     const ImVec2 end(area.origin.x + area.size.x, area.origin.y + area.size.y);
     if (state.pixelReadOut && state.compareA && state.compareView != CompareView::Single) {
         sceneA = withMaterial(state, state, *state.compareA);
-        preparedA.emplace(preparedScene(state, *sceneA));
+        preparedA.emplace(sceneToDraw(state, *sceneA));
         if (state.compareView == CompareView::SideBySide) {
             const float half = float(std::max(area.width / 2, 8));
             const ImVec2 size(half, area.size.y), middle(area.origin.x + half, area.origin.y);

@@ -104,7 +104,7 @@ void restore(Document& document, Interaction& interaction, const EditSnapshot& s
     if (!(document.shownShape() == snapshot.shape)) {   // the shape it had, as it was framed
         document.scene.mesh = snapshot.shape.kind;
         document.scene.meshFile = snapshot.shape.file;
-        document.mesh = snapshot.shape.mesh;
+        document.fileModel = snapshot.shape.fileModel;
         document.model = snapshot.shape.model;
         document.scene.camera = snapshot.shape.camera;
         interaction.selectedModelMaterial = 0;
@@ -144,7 +144,7 @@ void redo(Document& document, Interaction& interaction, Prompts& prompts) {
 }
 
 BoundingSphere meshBounds(const Document& document) {
-    return shapeBounds(document.scene, document.mesh.get());
+    return shapeBounds(document.scene, document.mesh().get());
 }
 
 float intensityScale(const Document& document, const Light& light) {
@@ -167,7 +167,7 @@ void chooseBuiltinMesh(Document& document, MeshKind kind) {
         const BoundingSphere before = meshBounds(d);
         d.scene.mesh = kind;
         d.scene.meshFile.clear();
-        d.mesh.reset();   // the built-in kind's
+        d.fileModel.reset();   // the built-in kind's mesh
         d.model.reset();
         if (fromFile) {   // back from a model: the camera and the lights return to the unit scale
             frameMesh(d);
@@ -176,9 +176,9 @@ void chooseBuiltinMesh(Document& document, MeshKind kind) {
     });
 }
 
-PreparedScene preparedScene(const Document& document, const Scene& shown) {
+PreparedScene sceneToDraw(const Document& document, const Scene& shown) {
     const bool file = !shown.meshFile.empty();
-    return {shown, file ? document.mesh : builtinMesh(shown.mesh), document.environment,
+    return {shown, file ? document.mesh() : builtinMesh(shown.mesh), document.environment,
             file ? document.model : nullptr};
 }
 

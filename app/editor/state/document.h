@@ -19,11 +19,13 @@ struct Prompts;
 // them, and the history of its edits. Everything Save writes and Undo restores is here.
 struct Document {
     Scene scene = defaultScene();
-    // What the scene names, loaded (assets/, through Jobs::assets): its glTF file's mesh (null:
-    // the built-in kind's), and its environment light's environment (kept while the light is
-    // off, for the checkbox).
-    std::shared_ptr<const Mesh> mesh;
-    std::shared_ptr<const Model> model;   // what the glTF file draws (null: a built-in mesh)
+    // What the scene names, loaded (assets/, through Jobs::assets): its glTF file's model as
+    // loaded, with its flattened mesh (null: a built-in mesh); what is drawn, that model with
+    // the images the scene puts in place of its maps (AssetCache::retextured; the file's model
+    // itself without any; null: a built-in mesh); and its environment light's environment
+    // (kept while the light is off, for the checkbox).
+    std::shared_ptr<const LoadedModel> fileModel;
+    std::shared_ptr<const Model> model;
     std::shared_ptr<const Environment> environment;
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
@@ -40,7 +42,11 @@ struct Document {
     bool materialChanged() const { return scene.material != savedMaterial; }
     bool sceneChanged() const;
     bool dirty() const { return materialChanged() || sceneChanged(); }
-    ShownShape shownShape() const { return {scene.mesh, scene.meshFile, mesh, model, scene.camera}; }
+    // The glTF file's flattened mesh; null: the built-in kind's.
+    std::shared_ptr<const Mesh> mesh() const {
+        return fileModel ? std::shared_ptr<const Mesh>(fileModel, &fileModel->mesh) : nullptr;
+    }
+    ShownShape shownShape() const { return {scene.mesh, scene.meshFile, fileModel, model, scene.camera}; }
     EditSnapshot snapshot() const {
         return {scene.material,       scene.lights,    scene.display,
                 scene.modelMaterials, scene.modelBrdf, shownShape(), scene.bookmarks};
@@ -87,8 +93,9 @@ void frameMesh(Document& document);
 // return to the unit scale (an undoable step).
 void chooseBuiltinMesh(Document& document, MeshKind kind);
 // `shown` (renderedScene, withMaterial) with the document's loaded mesh, model and environment:
-// what the renderer draws. Refers to `shown`, which must outlive it.
-PreparedScene preparedScene(const Document& document, const Scene& shown);
+// what the renderer draws (prepareScene's result, made from what the document holds, loading
+// nothing). Refers to `shown`, which must outlive it.
+PreparedScene sceneToDraw(const Document& document, const Scene& shown);
 
 // --- A model's materials ----------------------------------------------------------------
 // How many materials the shown model has (0 for a built-in mesh).

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "assets/loaded_model.h"
 #include "model/model.h"
 #include "scene/scene.h"
 
@@ -17,8 +18,8 @@ namespace patina::editor {
 struct ShownShape {
     MeshKind kind = MeshKind::Sphere;
     std::string file;
-    std::shared_ptr<const Mesh> mesh;
-    std::shared_ptr<const Model> model;
+    std::shared_ptr<const LoadedModel> fileModel;   // Document::fileModel
+    std::shared_ptr<const Model> model;              // Document::model
     Camera camera;
     bool operator==(const ShownShape& other) const { return kind == other.kind && file == other.file; }
 };

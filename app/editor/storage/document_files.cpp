@@ -6,7 +6,6 @@
 #include "state/camera_choice.h"
 #include "state/editor_state.h"
 #include "assets/prepare_scene.h"
-#include "gltf/import.h"
 #include "gltf/model_export.h"
 #include "picture/png_text.h"
 #include "io/file_kinds.h"
@@ -47,25 +46,26 @@ std::string modelSummary(const Model& model) {
 // place: a model of hundreds of units used to swallow every point light), the display and the
 // environment; the camera frames the model. Its materials start as its file says (the scene's
 // material stays the built-in meshes').
-void applyMesh(EditorState& state, const std::filesystem::path& path, const ModelLoad::Result& loaded) {
-    const std::shared_ptr<const GltfImport>& imported = loaded.imported;
-    const std::shared_ptr<const Mesh> mesh(imported, &imported->mesh);
+void applyMesh(EditorState& state, const std::filesystem::path& path,
+               const std::shared_ptr<const LoadedModel>& loaded) {
+    const std::shared_ptr<const Mesh> mesh(loaded, &loaded->mesh);
+    const std::shared_ptr<const Model> model(loaded, &loaded->model);   // no map replaced yet
     Scene scene = state.scene;
     scene.meshFile = std::filesystem::absolute(path).lexically_normal().string();
     scene.modelMaterials.clear();
     scene.modelBrdf.reset();   // shaded as its file says (glTF's BRDF), whatever the last one chose
     fitSceneTo(scene, meshBounds(state), shapeBounds(scene, mesh.get()));   // as `render --mesh` fits it
-    startDocument(state, state, state, scene, {}, {}, {mesh, loaded.model}, state.environment);
+    startDocument(state, state, state, scene, {}, {}, {mesh, model, loaded}, state.environment);
     rememberCamera(state, state.scene.camera, kFrontCamera);
     state.error.clear();
-    state.status = "Opened " + path.filename().string() + modelSummary(*loaded.model);
+    state.status = "Opened " + path.filename().string() + modelSummary(*model);
     rememberRecent(state, path);
 }
 
 bool openMesh(EditorState& state, const std::filesystem::path& path) {
     try {
         // Before anything changes: a bad file changes nothing.
-        applyMesh(state, path, {state.assets->model(path), state.assets->drawnModel(path)});
+        applyMesh(state, path, state.assets->model(path));
         return true;
     } catch (const std::exception& error) {
         state.error = error.what();   // the previous mesh stays
@@ -129,7 +129,7 @@ void startDocument(Document& document, Interaction& interaction, Jobs& jobs, con
                    const std::filesystem::path& scenePath, const std::filesystem::path& materialPath,
                    AssetCache::Shape shape, std::shared_ptr<const Environment> environment) {
     document.scene = scene;
-    document.mesh = std::move(shape.mesh);
+    document.fileModel = std::move(shape.fileModel);
     document.model = std::move(shape.model);
     interaction.selectedModelMaterial = 0;
     interaction.partFilter.clear();
@@ -206,9 +206,10 @@ DocumentFile readDocumentFile(AssetCache& assets, PrefilterFunction prefilter, c
     // A scene's glTF and environment are read now, so a missing or bad one fails the open
     // instead of every later frame.
     if (file.scene) {
-        const PreparedScene prepared = prepareScene(*file.scene, assets, file.warnings, prefilter);
+        const AssetCache::Shape shape = assets.shape(*file.scene);
+        const PreparedScene prepared = prepareScene(*file.scene, shape, assets, file.warnings, prefilter);
         if (!file.scene->meshFile.empty()) {
-            file.shape = {prepared.mesh, prepared.model};
+            file.shape = shape;
         }
         file.environment = prepared.environment;
     }
@@ -408,7 +409,7 @@ template <typename Change>
 void changeMaps(Document& document, AssetCache& assets, Change&& change) {
     Scene scene = document.scene;
     change(scene);
-    std::shared_ptr<const Model> model = assets.retextured(document.model, scene);
+    std::shared_ptr<const Model> model = assets.retextured(document.fileModel, scene);
     applyEdit(document, [&](Document& d) {
         d.scene.modelMaterials = scene.modelMaterials;
         d.model = std::move(model);

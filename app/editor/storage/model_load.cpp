@@ -6,11 +6,10 @@ ModelLoad::ModelLoad(std::filesystem::path path, std::shared_ptr<AssetCache> ass
     // The worker holds the cache too: it may outlive the state that started it. Cancel stops the
     // decoding at the next image; the UI drops the load and never asks for the result.
     result_ = std::async(std::launch::async, [path = path_, assets = std::move(assets), shared = shared_] {
-        std::shared_ptr<const GltfImport> imported = assets->model(path, [&](float fraction) {
+        return assets->model(path, [&](float fraction) {
             shared->fraction = fraction;
             return !shared->cancelled;
         });
-        return imported ? Result{imported, assets->drawnModel(path)} : Result{};   // drawn: from the entry held
     });
 }
 
@@ -28,7 +27,7 @@ bool ModelLoad::ready() const {
     return result_.valid() && result_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
-ModelLoad::Result ModelLoad::take() {
+std::shared_ptr<const LoadedModel> ModelLoad::take() {
     return result_.get();
 }
 

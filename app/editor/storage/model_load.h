@@ -9,8 +9,7 @@
 #include <memory>
 
 #include "assets/asset_cache.h"
-#include "gltf/import.h"
-#include "model/model.h"
+#include "assets/loaded_model.h"
 
 namespace patina::editor {
 
@@ -29,13 +28,10 @@ public:
     // Stops the decoding at the next image: the worker ends soon, and take() gives nothing.
     void cancel() { shared_->cancelled = true; }
 
-    struct Result {
-        std::shared_ptr<const GltfImport> imported;
-        std::shared_ptr<const Model> model;
-    };
-    // Once ready (waits otherwise): the model, or the import's error rethrown (InputError for a
-    // file that cannot be read); both null when cancelled. Once only.
-    Result take();
+    // Once ready (waits otherwise): the model as the cache loaded it (AssetCache::model, its
+    // file read once), or the import's error rethrown (InputError for a file that cannot be
+    // read); null when cancelled. Once only.
+    std::shared_ptr<const LoadedModel> take();
 
 private:
     std::filesystem::path path_;
@@ -45,7 +41,7 @@ private:
         std::atomic<bool> cancelled{false};
     };
     std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
-    std::future<Result> result_;
+    std::future<std::shared_ptr<const LoadedModel>> result_;
 };
 
 }  // namespace patina::editor

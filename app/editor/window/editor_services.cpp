@@ -234,7 +234,7 @@ const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const 
 LdrImage EditorServices::sideImage(const Document& document, const Interaction& interaction, const Material* a,
                                    int width, int height) {
     const Scene scene = a ? withMaterial(document, interaction, *a) : renderedScene(document, interaction);
-    const PreparedScene prepared = preparedScene(document, scene);
+    const PreparedScene prepared = sceneToDraw(document, scene);
     return renderImage(prepared, width, height, interaction.renderPath, interaction.environmentShading).ldr;
 }
 
