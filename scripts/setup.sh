@@ -10,6 +10,8 @@ packages=(
   libcli11-dev libgtest-dev libbenchmark-dev libopenexr-dev
   # Cairo (with fontconfig) draws the charts and the captions in DejaVu Sans below.
   libcairo2-dev
+  # Draco decodes KHR_draco_mesh_compression's meshes (engine/gltf/draco.cpp).
+  libdraco-dev
   xvfb xdotool
   # The editor's UI font, the captions' and the charts' (DejaVu Sans, read at run time), Droid
   # Sans Fallback for the CJK characters DejaVu lacks (fontconfig finds it for a caption), and

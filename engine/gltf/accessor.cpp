@@ -133,7 +133,7 @@ std::span<const uint8_t> bufferViewBytes(const tinygltf::Model& model, int index
 
 CheckedAccessor checkAccessor(const tinygltf::Model& model, int index, int type,
                               const std::vector<AccessorForm>& forms, const std::string& what,
-                              const std::string& source) {
+                              const std::string& source, bool compressed) {
     if (index < 0 || size_t(index) >= model.accessors.size()) {
         throw InputError(source + ": " + what + ": accessor " + std::to_string(index) + " does not exist");
     }
@@ -153,6 +153,9 @@ CheckedAccessor checkAccessor(const tinygltf::Model& model, int index, int type,
     checked.componentType = accessor.componentType;
     checked.normalized = accessor.normalized;
     checked.where = at;
+    if (compressed) {
+        return checked;
+    }
     const size_t elementSize = componentSize(accessor.componentType) * size_t(checked.components);
     if (accessor.sparse.isSparse) {
         checkSparse(model, accessor, elementSize, path, what, source, checked);

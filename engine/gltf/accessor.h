@@ -41,10 +41,13 @@ struct CheckedAccessor {
 
 // The accessor `index` for the use `what` ("/meshes/0/primitives/1/attributes/POSITION"): of
 // `type` (TINYGLTF_TYPE_*) in one of `forms`, with a buffer view unless it is sparse, every
-// view in its buffer. Throws InputError("SOURCE: WHERE: ...") naming what is wrong.
+// view in its buffer. A `compressed` one (KHR_draco_mesh_compression: a stream holds its
+// elements) is checked for its type and form only; its view, if it has one, is the file's
+// uncompressed fallback and is not read. Throws InputError("SOURCE: WHERE: ...") naming what is
+// wrong.
 CheckedAccessor checkAccessor(const tinygltf::Model& model, int index, int type,
                               const std::vector<AccessorForm>& forms, const std::string& what,
-                              const std::string& source);
+                              const std::string& source, bool compressed = false);
 
 // Every number of every element (count * components), normalized integers mapped to [0, 1] or
 // [-1, 1] as section 3.11 says, sparse values substituted. Throws InputError for a sparse index

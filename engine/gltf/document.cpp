@@ -3,6 +3,7 @@
 #include <new>
 
 #include "common/one_line.h"
+#include "gltf/draco.h"
 #include "gltf/extensions.h"
 #include "gltf/files.h"
 #include "gltf/glb.h"
@@ -31,9 +32,12 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
     if (looksLikeGlb(bytes)) {
         const GlbChunks glb = splitGlb(bytes, source);
         refuseUndrawnRequired(checkGltfJson(glb.json, true, source), source);
+        const std::optional<std::string> draco = withDracoIndicesInTheExtension(glb.json, source);
         // tinygltf reads the layout again from the header: give it one without other chunks.
-        const std::vector<uint8_t> joined = glb.onlyJsonAndBin ? std::vector<uint8_t>() : joinGlb(glb.json, glb.bin, glb.binSize);
-        const std::vector<uint8_t>& clean = glb.onlyJsonAndBin ? bytes : joined;
+        const bool asIs = glb.onlyJsonAndBin && !draco;
+        const std::vector<uint8_t> joined =
+            asIs ? std::vector<uint8_t>() : joinGlb(draco ? std::string_view(*draco) : glb.json, glb.bin, glb.binSize);
+        const std::vector<uint8_t>& clean = asIs ? bytes : joined;
         return loader.LoadBinaryFromMemory(&model, &error, &warning, clean.data(), unsigned(clean.size()), baseDir);
     }
     const std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
@@ -42,7 +46,9 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
                                   "a JSON object)");
     }
     refuseUndrawnRequired(checkGltfJson(json, false, source), source);
-    return loader.LoadASCIIFromString(&model, &error, &warning, json.data(), unsigned(json.size()), baseDir);
+    const std::optional<std::string> draco = withDracoIndicesInTheExtension(json, source);
+    const std::string_view text = draco ? std::string_view(*draco) : json;
+    return loader.LoadASCIIFromString(&model, &error, &warning, text.data(), unsigned(text.size()), baseDir);
 }
 
 }  // namespace

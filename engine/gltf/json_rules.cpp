@@ -105,6 +105,12 @@ void sceneGraph(Rules& rules) {
     rules[primitive + "/indices"] = index("accessor");
     rules[primitive + "/material"] = index("material");
     rules[primitive + "/mode"] = kInteger;
+    rules[primitive + "/extensions"] = kObject;
+    const std::string draco = primitive + "/extensions/KHR_draco_mesh_compression";
+    rules[draco] = kObject;
+    rules[draco + "/bufferView"] = index("buffer view");
+    rules[draco + "/attributes"] = kObject;
+    rules[draco + "/attributes/{}"] = kUnsigned;   // Draco's own attribute ids
 }
 
 // Cameras (sections 5.12-5.14): what a camera node's view is made of.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include <glm/geometric.hpp>
@@ -19,33 +20,63 @@ namespace {
 }
 
 constexpr AccessorForm kFloat{TINYGLTF_COMPONENT_TYPE_FLOAT};
+constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE, kUnsignedByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+              kShort = TINYGLTF_COMPONENT_TYPE_SHORT, kUnsignedShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
 
-// Section 3.7.2.1's attribute table: what each attribute Patina reads may be, and what a
-// message calls its elements.
+// Section 3.7.2.1's attribute table: what each attribute Patina reads may be, what
+// KHR_mesh_quantization adds to that where the file uses it, and what a message calls its
+// elements.
 struct Attribute {
     const char* name;
     int type;
     std::vector<AccessorForm> forms;
+    std::vector<AccessorForm> quantized;
     const char* elements;
 };
 
-const Attribute kNormal{"NORMAL", TINYGLTF_TYPE_VEC3, {kFloat}, "normals"};
-const Attribute kTangent{"TANGENT", TINYGLTF_TYPE_VEC4, {kFloat}, "tangents"};
-const std::vector<AccessorForm> kTexCoordForms{
-    kFloat, {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true}, {TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true}};
-const Attribute kTexCoords[2] = {{"TEXCOORD_0", TINYGLTF_TYPE_VEC2, kTexCoordForms, "texture coordinates"},
-                                 {"TEXCOORD_1", TINYGLTF_TYPE_VEC2, kTexCoordForms, "texture coordinates"}};
+// KHR_mesh_quantization's table: a position or a texture coordinate may be any 8- or 16-bit
+// integer, normalized or not (the node's transform or KHR_texture_transform scales it back); a
+// normal or a tangent a normalized signed one.
+const std::vector<AccessorForm> kAnyInteger{{kByte, false},         {kByte, true},          {kUnsignedByte, false},
+                                            {kUnsignedByte, true},  {kShort, false},        {kShort, true},
+                                            {kUnsignedShort, false}, {kUnsignedShort, true}};
+const std::vector<AccessorForm> kSignedNormalized{{kByte, true}, {kShort, true}};
+
+const Attribute kPosition{"POSITION", TINYGLTF_TYPE_VEC3, {kFloat}, kAnyInteger, "positions"};
+const Attribute kNormal{"NORMAL", TINYGLTF_TYPE_VEC3, {kFloat}, kSignedNormalized, "normals"};
+const Attribute kTangent{"TANGENT", TINYGLTF_TYPE_VEC4, {kFloat}, kSignedNormalized, "tangents"};
+const std::vector<AccessorForm> kTexCoordForms{kFloat, {kUnsignedByte, true}, {kUnsignedShort, true}};
+const std::vector<AccessorForm> kQuantizedTexCoordForms{{kByte, false}, {kByte, true}, {kUnsignedByte, false},
+                                                        {kShort, false}, {kShort, true}, {kUnsignedShort, false}};
+const Attribute kTexCoords[2] = {
+    {"TEXCOORD_0", TINYGLTF_TYPE_VEC2, kTexCoordForms, kQuantizedTexCoordForms, "texture coordinates"},
+    {"TEXCOORD_1", TINYGLTF_TYPE_VEC2, kTexCoordForms, kQuantizedTexCoordForms, "texture coordinates"}};
+
+// Whether the plan's Draco stream holds the attribute `name`.
+bool compressed(const PrimitivePlan& plan, const std::string& name) {
+    return plan.draco && plan.draco->attributes.count(name);
+}
+
+// The forms `attribute` may take in a file that does or does not use KHR_mesh_quantization.
+std::vector<AccessorForm> formsOf(const Attribute& attribute, bool quantized) {
+    std::vector<AccessorForm> forms = attribute.forms;
+    if (quantized) {
+        forms.insert(forms.end(), attribute.quantized.begin(), attribute.quantized.end());
+    }
+    return forms;
+}
 
 // The attribute's accessor when the primitive has one, as many elements as positions.
 std::optional<CheckedAccessor> planAttribute(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                                             const Attribute& attribute, const PrimitivePlan& plan,
+                                             const Attribute& attribute, bool quantized, const PrimitivePlan& plan,
                                              const std::string& source) {
     const auto found = primitive.attributes.find(attribute.name);
     if (found == primitive.attributes.end()) {
         return std::nullopt;
     }
     const std::string what = plan.where + "/attributes/" + attribute.name;
-    CheckedAccessor accessor = checkAccessor(model, found->second, attribute.type, attribute.forms, what, source);
+    CheckedAccessor accessor = checkAccessor(model, found->second, attribute.type, formsOf(attribute, quantized), what,
+                                             source, compressed(plan, attribute.name));
     if (accessor.count != plan.positions.count) {
         fail(source, what + ": " + std::to_string(accessor.count) + " " + attribute.elements + " for " +
                          std::to_string(plan.positions.count) + " positions");
@@ -158,6 +189,78 @@ void flatNormals(Mesh& mesh, const PrimitivePlan& plan, const std::string& sourc
     }
 }
 
+// A Draco primitive's plan with its compressed accessors pointing at the decoded values, which
+// `values` holds (a move keeps them where they are); the indices are the decoded corners.
+struct Decompressed {
+    PrimitivePlan plan;
+    DecodedDraco values;
+};
+
+// The planned attributes by their glTF names.
+std::vector<std::pair<const char*, CheckedAccessor*>> plannedAttributes(PrimitivePlan& plan) {
+    std::vector<std::pair<const char*, CheckedAccessor*>> attributes{{"POSITION", &plan.positions}};
+    for (auto [name, accessor] : {std::pair{kNormal.name, &plan.normals}, std::pair{kTangent.name, &plan.tangents},
+                                  std::pair{kTexCoords[0].name, &plan.texCoords[0]},
+                                  std::pair{kTexCoords[1].name, &plan.texCoords[1]}}) {
+        if (*accessor) {
+            attributes.emplace_back(name, &**accessor);
+        }
+    }
+    return attributes;
+}
+
+// Points `accessor` at `bytes`: `count` elements packed as its form says (3.6.2.4: no stride).
+void pointAt(CheckedAccessor& accessor, const std::vector<uint8_t>& bytes, size_t count, const std::string& what,
+             const std::string& source) {
+    if (count != accessor.count) {
+        fail(source, what + ": the compressed mesh has " + std::to_string(count) + " where the accessor says " +
+                         std::to_string(accessor.count));
+    }
+    const size_t stride = size_t(accessor.components) * size_t(tinygltf::GetComponentSizeInBytes(accessor.componentType));
+    accessor.dense = {bytes.data(), count, stride};
+    accessor.sparseIndices = accessor.sparseValues = {};
+}
+
+Decompressed decompress(const PrimitivePlan& compressed, const std::string& source) {
+    Decompressed out{compressed, {}};
+    PrimitivePlan& plan = out.plan;
+    plan.draco.reset();
+    const std::vector<std::pair<const char*, CheckedAccessor*>> attributes = plannedAttributes(plan);
+    std::map<std::string, DracoAttributeForm> forms;
+    for (const auto& [name, accessor] : attributes) {
+        forms[name] = {accessor->componentType, accessor->components};
+    }
+    out.values = decodeDraco(*compressed.draco, forms, plan.where, source);
+    for (const auto& [name, accessor] : attributes) {
+        const auto decoded = out.values.attributes.find(name);
+        if (decoded != out.values.attributes.end()) {
+            pointAt(*accessor, decoded->second.bytes, decoded->second.count,
+                    plan.where + "/attributes/" + name + " (compressed)", source);
+        }
+    }
+    // Draco holds triangles whatever the mode says (the extension allows a strip): the corners
+    // are a triangle list.
+    if (!plan.indices) {
+        plan.indices = CheckedAccessor{};
+        plan.indices->count = out.values.corners.size();
+        plan.indices->components = 1;
+        plan.indices->where = source + ": " + plan.where + "/extensions/" + kDraco;
+    }
+    plan.indices->componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    plan.indices->normalized = false;
+    plan.indices->dense = {reinterpret_cast<const uint8_t*>(out.values.corners.data()), out.values.corners.size(),
+                           sizeof(uint32_t)};
+    if (out.values.corners.size() != plan.indices->count) {
+        fail(source, plan.where + "/indices (compressed): the compressed mesh has " +
+                         std::to_string(out.values.corners.size()) + " corners where the accessor says " +
+                         std::to_string(plan.indices->count));
+    }
+    plan.indices->sparseIndices = plan.indices->sparseValues = {};
+    plan.mode = TINYGLTF_MODE_TRIANGLES;
+    plan.triangles = out.values.corners.size() / 3;
+    return out;
+}
+
 }  // namespace
 
 std::string whyNotDrawn(const tinygltf::Primitive& primitive, const std::string& where, const std::string& source) {
@@ -183,19 +286,27 @@ PrimitivePlan planPrimitive(const tinygltf::Model& model, int mesh, int index, c
         fail(source, plan.where + "/material: material " + std::to_string(primitive.material) + " does not exist");
     }
     plan.material = primitive.material;
-    plan.positions = checkAccessor(model, primitive.attributes.at("POSITION"), TINYGLTF_TYPE_VEC3, {kFloat},
-                                   plan.where + "/attributes/POSITION", source);
-    plan.normals = planAttribute(model, primitive, kNormal, plan, source);
-    plan.tangents = planAttribute(model, primitive, kTangent, plan, source);
-    for (int set = 0; set < 2; ++set) {
-        plan.texCoords[set] = planAttribute(model, primitive, kTexCoords[set], plan, source);
+    int indices = primitive.indices;
+    if (std::optional<DracoPrimitive> draco = dracoPrimitive(model, primitive, plan.where, source)) {
+        plan.draco = std::move(draco->stream);
+        indices = indices != -1 ? indices : draco->indices;
     }
-    if (primitive.indices != -1) {
-        plan.indices = checkAccessor(model, primitive.indices, TINYGLTF_TYPE_SCALAR,
+    const bool quantized = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(),
+                                     "KHR_mesh_quantization") != model.extensionsUsed.end();
+    plan.positions = checkAccessor(model, primitive.attributes.at("POSITION"), TINYGLTF_TYPE_VEC3,
+                                   formsOf(kPosition, quantized), plan.where + "/attributes/POSITION", source,
+                                   compressed(plan, "POSITION"));
+    plan.normals = planAttribute(model, primitive, kNormal, quantized, plan, source);
+    plan.tangents = planAttribute(model, primitive, kTangent, quantized, plan, source);
+    for (int set = 0; set < 2; ++set) {
+        plan.texCoords[set] = planAttribute(model, primitive, kTexCoords[set], quantized, plan, source);
+    }
+    if (indices != -1) {
+        plan.indices = checkAccessor(model, indices, TINYGLTF_TYPE_SCALAR,
                                      {{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE},
                                       {TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
                                       {TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT}},
-                                     plan.where + "/indices", source);
+                                     plan.where + "/indices", source, plan.draco.has_value());
     }
     const size_t corners = plan.indices ? plan.indices->count : plan.positions.count;
     plan.triangles = plan.mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : corners >= 3 ? corners - 2 : 0;
@@ -203,6 +314,10 @@ PrimitivePlan planPrimitive(const tinygltf::Model& model, int mesh, int index, c
 }
 
 Mesh readPrimitive(const PrimitivePlan& plan, const std::string& source) {
+    if (plan.draco) {
+        const Decompressed decompressed = decompress(plan, source);
+        return readPrimitive(decompressed.plan, source);
+    }
     Mesh mesh;
     const std::string attributes = plan.where + "/attributes/";
     mesh.positions = readVectors<glm::vec3>(plan.positions, attributes + "POSITION", source);

@@ -9,6 +9,7 @@
 
 #include "geometry/mesh.h"
 #include "gltf/accessor.h"
+#include "gltf/draco.h"
 
 namespace patina {
 
@@ -29,20 +30,26 @@ struct PrimitivePlan {
     std::optional<CheckedAccessor> normals, tangents, indices;
     std::optional<CheckedAccessor> texCoords[2];
     size_t triangles = 0;
+    // KHR_draco_mesh_compression: the stream the compressed accessors are decoded from when the
+    // primitive is read (their own views, if any, are the file's uncompressed fallback).
+    std::optional<DracoStream> draco;
 };
 
 // Why the primitive draws no triangles ("points", "lines", "no POSITION"), or "" when it does.
 // Throws InputError for a mode glTF does not define.
 std::string whyNotDrawn(const tinygltf::Primitive& primitive, const std::string& where, const std::string& source);
 
-// A primitive that draws triangles, planned. Throws InputError naming the accessor or index.
+// A primitive that draws triangles, planned: a Draco-compressed one by its accessors' counts,
+// its stream checked inside its buffer but not yet decoded. Throws InputError naming the
+// accessor or index.
 PrimitivePlan planPrimitive(const tinygltf::Model& model, int mesh, int primitive, const std::string& source);
 
 // The planned primitive read: triangles counter-clockwise (strips and fans in glTF's order),
 // unit normals, TEXCOORD_0 / _1 into uv0 / uv1 and TANGENT, each attribute either absent or one
 // per position. Without NORMAL, flat normals (section 3.7.2.1), which may copy vertices: more
-// than kGltfMaxVertices is refused. Throws InputError for an index out of range or a number that
-// is not finite.
+// than kGltfMaxVertices is refused. A Draco-compressed primitive is decoded first, its stream
+// holding as many points and corners as its accessors say. Throws InputError for an index out
+// of range or a number that is not finite.
 Mesh readPrimitive(const PrimitivePlan& plan, const std::string& source);
 
 }  // namespace patina::gltf
