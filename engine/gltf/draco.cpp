@@ -9,7 +9,7 @@
 
 #include "files/input_error.h"
 #include "gltf/accessor.h"
-#include "gltf/import.h"
+#include "gltf/primitives.h"
 #include "io/json_reader.h"
 
 namespace patina::gltf {
