@@ -293,23 +293,15 @@ void measureLayers(BenchRenderer& renderer, const RenderBenchOptions& options, c
     specialised.path = RenderPath::Specialised;
     const std::shared_ptr<const Environment> studio = preparedStudio();
     for (const bool environment : {false, true}) {
-        const char* const kLayers[] = {"", "-clearcoat", "-sheen"};
+        const char* const kLayers[] = {"", "clearcoat", "sheen"};
         std::vector<Scene> scenes;   // PreparedScene holds its scene by reference: all made first
-        for (const std::string layer : kLayers) {
-            Scene scene = brdfBenchScene(environment);
-            scene.material.model = BrdfModelId::Gltf;
-            if (layer == "-clearcoat") {
-                scene.material.clearcoat = 1.0f;
-                scene.material.clearcoatRoughness = 0.1f;
-            } else if (layer == "-sheen") {
-                scene.material.sheenColor = {0.8f, 0.2f, 0.4f};
-                scene.material.sheenRoughness = 0.5f;
-            }
-            scenes.push_back(scene);
+        for (const char* layer : kLayers) {
+            scenes.push_back(withBenchLayer(brdfBenchScene(environment), layer));
         }
         std::vector<std::pair<std::string, PreparedScene>> layers;
         for (size_t k = 0; k < scenes.size(); ++k) {
-            layers.emplace_back("specialised-gltf" + std::string(kLayers[k]) + (environment ? "-default-scene" : ""),
+            layers.emplace_back("specialised-gltf" + std::string(*kLayers[k] ? "-" : "") + kLayers[k] +
+                                    (environment ? "-default-scene" : ""),
                                 PreparedScene{scenes[k], builtinMesh(scenes[k].mesh), environment ? studio : nullptr});
         }
         std::vector<Samples> samples(layers.size());
@@ -485,6 +477,18 @@ std::string_view addedLightsName(AddedLights added) {
 Scene analyticDefaultScene() {
     Scene scene = defaultScene();
     std::erase_if(scene.lights, [](const Light& light) { return light.type == LightType::Environment; });
+    return scene;
+}
+
+Scene withBenchLayer(Scene scene, std::string_view layer) {
+    scene.material.model = BrdfModelId::Gltf;
+    if (layer == "clearcoat") {
+        scene.material.clearcoat = 1.0f;
+        scene.material.clearcoatRoughness = 0.1f;
+    } else if (layer == "sheen") {
+        scene.material.sheenColor = {0.8f, 0.2f, 0.4f};
+        scene.material.sheenRoughness = 0.5f;
+    }
     return scene;
 }
 

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bench/render_bench.h"
 #include "files/input_error.h"
 #include "gl/renderer.h"
 #include "picture/display_image.h"
@@ -280,19 +281,10 @@ TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
     }
 }
 
-// The default scene (its lights and environment) with the `gltf` model and a layer: a car
-// paint's coat (docs/SHADING.md S5) or a velvet's sheen (S6).
+// The default scene (its lights and environment) with the `gltf` model and a layer: the
+// bench's car paint coat or velvet sheen (docs/SHADING.md S5, S6).
 Scene layeredScene(const std::string& layer) {
-    Scene scene = defaultScene();
-    scene.material.model = BrdfModelId::Gltf;
-    if (layer == "clearcoat") {
-        scene.material.clearcoat = 1.0f;
-        scene.material.clearcoatRoughness = 0.1f;
-    } else if (layer == "sheen") {
-        scene.material.sheenColor = {0.8f, 0.2f, 0.4f};
-        scene.material.sheenRoughness = 0.5f;
-    }
-    return scene;
+    return withBenchLayer(defaultScene(), layer);
 }
 
 // The layers' channels (issue 36): a coated part's clearcoat channel and a sheened part's sheen
