@@ -58,6 +58,8 @@ Json storyJson(const PixelStory& s) {
             {"F", array(c.F)},
             {"lights", lights},
             {"environment", s.environment ? shareJson(*s.environment) : Json(nullptr)},
+            {"clearcoat", array(c.clearcoat)},
+            {"sheen", array(c.sheen)},
             {"radiance", array(c.radiance)},
             {"display", {s.display[0], s.display[1], s.display[2]}}};
 }

@@ -246,6 +246,16 @@ void measureCulling(BenchRenderer& renderer, const RenderBenchOptions& options, 
     }
 }
 
+// The brdf-model and layers rows' environment: the built-in studio, prefiltered.
+std::shared_ptr<const Environment> preparedStudio() {
+    return prepareEnvironment(*builtinEnvironment("studio"), builtinSource("studio"), {}, {}, prefilterCubeOnGpu);
+}
+
+// Their scenes: the sphere under 8 lights, or the default scene with its environment.
+Scene brdfBenchScene(bool environment) {
+    return environment ? defaultScene() : renderBenchScene(8);
+}
+
 // The specialised path at 8 lights and under the default scene's environment, the sphere shaded
 // with each BRDF model a file's material may have: the seed's epic and glTF's (issue 35: within
 // 10% of epic's frame).
@@ -253,11 +263,10 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
                        RenderBenchResult& result) {
     RenderSettings specialised = settings;
     specialised.path = RenderPath::Specialised;
-    const std::shared_ptr<const Environment> studio = prepareEnvironment(*builtinEnvironment("studio"), builtinSource("studio"), {}, {},
-                                                                           prefilterCubeOnGpu);
+    const std::shared_ptr<const Environment> studio = preparedStudio();
     for (const bool environment : {false, true}) {
         for (const BrdfModelId model : {BrdfModelId::Epic, BrdfModelId::Gltf}) {
-            Scene scene = environment ? defaultScene() : renderBenchScene(8);
+            Scene scene = brdfBenchScene(environment);
             scene.material.model = model;
             const PreparedScene prepared{scene, builtinMesh(scene.mesh), environment ? studio : nullptr};
             const FrameTiming time = interleavedMedians(renderer, prepared, {specialised}, options.runs).front();
@@ -265,6 +274,45 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
                                         "specialised-" + std::string(brdfModel(model).name) +
                                             (environment ? "-default-scene" : ""),
                                         environment ? int(scene.lights.size()) : 8});
+        }
+    }
+}
+
+// The layers of the `gltf` model (issue 36: "cost only where used"), on the specialised path as
+// the brdf-model rows: the gltf sphere bare, with KHR_materials_clearcoat's coat (factor 1,
+// roughness 0.1, a car paint's) and with KHR_materials_sheen's sheen (a velvet's colour 0.8, 0.2,
+// 0.4 at roughness 0.5), rounds interleaved, under 8 lights and in the default scene with its
+// environment. The bare material's program has no instruction of either layer (shade.frag's
+// PATINA_CLEARCOAT and PATINA_SHEEN are keys of its program; compare_outputs draws it to the
+// byte); its frame here, interleaved with the layered ones, against the brdf-model row's of the
+// same run is the target that it costs what it did.
+void measureLayers(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                   RenderBenchResult& result) {
+    RenderSettings specialised = settings;
+    specialised.path = RenderPath::Specialised;
+    const std::shared_ptr<const Environment> studio = preparedStudio();
+    for (const bool environment : {false, true}) {
+        const char* const kLayers[] = {"", "clearcoat", "sheen"};
+        std::vector<Scene> scenes;   // PreparedScene holds its scene by reference: all made first
+        for (const char* layer : kLayers) {
+            scenes.push_back(withBenchLayer(brdfBenchScene(environment), layer));
+        }
+        std::vector<std::pair<std::string, PreparedScene>> layers;
+        for (size_t k = 0; k < scenes.size(); ++k) {
+            layers.emplace_back("specialised-gltf" + std::string(*kLayers[k] ? "-" : "") + kLayers[k] +
+                                    (environment ? "-default-scene" : ""),
+                                PreparedScene{scenes[k], builtinMesh(scenes[k].mesh), environment ? studio : nullptr});
+        }
+        std::vector<Samples> samples(layers.size());
+        interleaved(options.runs, [&](bool keep) {
+            for (size_t k = 0; k < layers.size(); ++k) {
+                timeFrame(renderer, layers[k].second, specialised, keep ? &samples[k] : nullptr);
+            }
+        });
+        for (size_t k = 0; k < layers.size(); ++k) {
+            result.scaleRows.push_back({"layers", settings.width, settings.height, result.triangles,
+                                        samples[k].medians(), layers[k].first,
+                                        int(layers[k].second.scene.lights.size())});
         }
     }
 }
@@ -433,6 +481,18 @@ Scene analyticDefaultScene() {
     return scene;
 }
 
+Scene withBenchLayer(Scene scene, std::string_view layer) {
+    scene.material.model = BrdfModelId::Gltf;
+    if (layer == "clearcoat") {
+        scene.material.clearcoat = 1.0f;
+        scene.material.clearcoatRoughness = 0.1f;
+    } else if (layer == "sheen") {
+        scene.material.sheenColor = {0.8f, 0.2f, 0.4f};
+        scene.material.sheenRoughness = 0.5f;
+    }
+    return scene;
+}
+
 Scene renderBenchScene(int lights, AddedLights added) {
     Scene scene = analyticDefaultScene();
     if (lights <= int(scene.lights.size())) {
@@ -573,6 +633,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     measureCulling(renderer, options, settings, result);
     measureEnvironment(renderer, options, settings, result);
     measureBrdfModels(renderer, options, settings, result);
+    measureLayers(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
     measureTextured(renderer, options, settings, result);
     measureGltfLoad(options, result);
@@ -627,19 +688,25 @@ std::vector<TargetCheck> renderBenchTargets(const RenderBenchResult& result) {
         perLight(BenchPath::Specialised, AddedLights::Points) / floor, 1.3);
     add("specialised's cost per added point light with other coefficients / the BRDF floor's" + range,
         perLight(BenchPath::Specialised, AddedLights::PointsOtherCoefficients) / floor, 1.3);
-    // glTF's BRDF against the seed's on the specialised path (issue 35: within 10%).
+    // glTF's BRDF against the seed's on the specialised path (issue 35: within 10%); the gltf
+    // material without a layer, drawn beside the layered ones, against its brdf-model frame
+    // (issue 36: a material without a layer costs what it did).
     for (const char* shown : {"", "-default-scene"}) {
-        auto model = [&](const std::string& name) {
+        auto frame = [&](const char* axis, const std::string& name) {
             for (const ScaleRow& row : result.scaleRows) {
-                if (row.axis == "brdf-model" && row.path == "specialised-" + name + shown) {
+                if (row.axis == axis && row.path == "specialised-" + name + shown) {
                     return row.time.frame;
                 }
             }
             return std::nan("");
         };
-        if (!std::isnan(model("epic"))) {
-            add(std::string("specialised gltf / epic, ") + (*shown ? "the default scene with its environment" : "8 lights"),
-                model("gltf") / model("epic"), 1.1);
+        const std::string scene = *shown ? "the default scene with its environment" : "8 lights";
+        if (!std::isnan(frame("brdf-model", "epic"))) {
+            add("specialised gltf / epic, " + scene, frame("brdf-model", "gltf") / frame("brdf-model", "epic"), 1.1);
+        }
+        if (!std::isnan(frame("layers", "gltf"))) {
+            add("specialised gltf without layers, beside the layered frames / the brdf-model row's, " + scene,
+                frame("layers", "gltf") / frame("brdf-model", "gltf"), 1.1);
         }
     }
     // Area lights against point lights, path by path (issue 19: "a small multiple").

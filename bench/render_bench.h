@@ -105,6 +105,11 @@ Scene analyticDefaultScene();
 // That scene with `lights` lights: its first `lights` for up to 3, then the ring.
 Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
 
+// `scene` with the `gltf` model and the layers rows' `layer`: "clearcoat", a car paint's coat
+// (factor 1, roughness 0.1), "sheen", a velvet's sheen (colour 0.8, 0.2, 0.4, roughness 0.5), or
+// "" none.
+Scene withBenchLayer(Scene scene, std::string_view layer);
+
 RenderBenchResult runRenderBench(const RenderBenchOptions& options);
 
 struct TargetCheck {

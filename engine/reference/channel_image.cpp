@@ -19,6 +19,10 @@ ChannelPoint channelPoint(const PixelSurfaces& surfaces, const std::vector<Scene
     point.roughness = material.roughness;
     point.specular = material.specular;
     point.metallic = material.metallic;
+    point.clearcoat = material.clearcoat;
+    point.clearcoatRoughness = material.clearcoatRoughness;
+    point.sheenColor = material.sheenColor;
+    point.sheenRoughness = material.sheenRoughness;
     point.alpha = mapped ? surfaces.alpha[i] : draws[draw].alpha;
     if (mapped) {
         point.occlusion = surfaces.occlusion[i];

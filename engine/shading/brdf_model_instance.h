@@ -28,8 +28,9 @@ inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vecto
                                          int key, const ChannelEnvironment* environment) {
     ChannelInputs c = channelSurface(p.baseColor, p.alpha, p.roughness, p.specular, p.metallic, p.occlusion,
                                      p.emission, p.uv0, p.uv1, p.tangent, p.geometryNormal, p.N, p.V);
+    const ChannelLayers layers = channelPointLayers(p);
     for (int i = 0; i < int(lights.size()); ++i) {
-        c = channelWithLight(c, lights[size_t(i)], i == asked, i == key, p.P, p.V);
+        c = channelWithLight(c, layers, lights[size_t(i)], i == asked, i == key, p.P, p.V);
     }
     if (environment) {
         SurfaceMaterial material = deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic);
@@ -37,8 +38,10 @@ inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vecto
         LightShares shares = environmentShares(environment->prefiltered, environment->maxLod, environment->irradiance,
                                                rotation.x, rotation.y, material, p.N, p.V, false);
         c = channelWithEnvironment(c, shares, environment->intensity, asked == -2);
+        c = channelWithEnvironmentLayers(c, layers, environment->prefiltered, environment->maxLod,
+                                         environment->irradiance, environment->intensity, rotation.x, rotation.y, p.V);
     }
-    return channelFinished(c);
+    return channelFinished(c, layers);
 }
 #endif
 

@@ -25,7 +25,28 @@ struct ChannelPoint {
     glm::vec2 uv0{0.0f}, uv1{0.0f};
     glm::vec4 tangent{0.0f};
     glm::vec3 geometryNormal{0.0f}, N{0.0f}, V{0.0f}, P{0.0f};
+    // KHR_materials_clearcoat's and KHR_materials_sheen's factors after their maps (0: none). The
+    // coat lies on the geometry normal, as shade.frag lays it where the coat has no normal map of
+    // its own (that map is the GPU's alone), the sheen on N.
+    float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
 };
+
+// The point's layers as shade.frag derives them for a part that has them (PATINA_CLEARCOAT,
+// PATINA_SHEEN); a factor of 0 is none, which shades the same as the layer at 0.
+inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
+    shader::ChannelLayers layers = shader::noChannelLayers();
+    if (p.clearcoat > 0.0f) {
+        layers.coated = true;
+        layers.coat = shader::deriveClearcoat(p.clearcoat, p.clearcoatRoughness, p.geometryNormal, p.V);
+    }
+    if (p.sheenColor != glm::vec3(0.0f)) {
+        layers.sheened = true;
+        layers.sheen = shader::deriveSheen(p.sheenColor, p.sheenRoughness, p.N, p.V);
+    }
+    return layers;
+}
 
 // The environment as environment.glsl's uniforms give it: its prefiltered chain (any trilinear
 // lookup of direction and level), its irradiance map (a lookup of direction), intensity and

@@ -15,13 +15,14 @@ PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roug
     return ChannelInputs(baseColor, alpha, metallic, roughness, specular, m.f0, m.diffuseColor, occlusion, emission,
                          uv0, uv1, geometryNormal, N, vec4(t.x, t.y, t.z, handedness), max(dot(N, V), MIN_N_DOT_V),
                          0.0f, 0.0f, vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f),
-                         vec3(0.0f));
+                         vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f));
 }
 
-// One light's lobes added at P (occlusion on a hemisphere light, as the renderer applies it).
-// `asked`: the light of CHANNEL_LIGHT; `key`: the light D, G and F are read towards.
-PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, PackedLight light, bool asked, bool key, vec3 P,
-                                             vec3 V) {
+// One light's lobes added at P (occlusion on a hemisphere light, as the renderer applies it),
+// then the layers' (channelLayersOfLight). `asked`: the light of CHANNEL_LIGHT (its lobes on the
+// base); `key`: the light D, G and F are read towards.
+PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, ChannelLayers layers, PackedLight light, bool asked,
+                                             bool key, vec3 P, vec3 V) {
     SurfaceMaterial m = deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic);
     LightShares shares = lightShares(light, m, P, c.shadingNormal, V);
     if (light.type == LIGHT_HEMISPHERE) {
@@ -38,7 +39,7 @@ PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, PackedLight light,
         c.G = terms.G;
         c.F = terms.F;
     }
-    return c;
+    return channelLayersOfLight(c, layers, light, shares.diffuse + shares.specular, P, V);
 }
 
 // The environment's split-sum lobes (environmentShares, before the intensity) added, occluded.
@@ -53,8 +54,39 @@ PATINA_INLINE ChannelInputs channelWithEnvironment(ChannelInputs c, LightShares 
     return c;
 }
 
-// The pixel's radiance once every light is in: the lobes and the emission.
-PATINA_INLINE ChannelInputs channelFinished(ChannelInputs c) {
-    c.radiance = c.diffuse + c.specularLighting + c.emission;
+// The layers under the environment, after channelWithEnvironment, as the renderer draws them:
+// the sheen lit by the irradiance at N and the base weighed by E(N.V) (sheenIrradianceShare), the
+// coat's split sum about its own mirror direction (clearcoatEnvironment), both occluded.
+PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, ChannelLayers layers,
+                                                         EnvironmentSource prefiltered, real maxLod,
+                                                         EnvironmentSource irradianceMap, real intensity,
+                                                         real cosRotation, real sinRotation, vec3 V) {
+    vec3 base = c.environmentDiffuse + c.environmentSpecular;
+    if (layers.sheened) {
+        vec3 irradiance =
+            irradianceFromMap(irradianceMap, toEnvironmentFrame(c.shadingNormal, cosRotation, sinRotation));
+        SheenShare share = sheenIrradianceShare(layers.sheen, intensity * irradiance);
+        share.sheen = c.occlusion * share.sheen;
+        c.sheen = c.sheen + share.sheen;
+        base = sheenOver(base, share);
+    }
+    if (layers.coated) {
+        vec3 coat = clearcoatEnvironment(prefiltered, maxLod, cosRotation, sinRotation, layers.coat, V);
+        c.clearcoat = c.clearcoat + c.occlusion * (intensity * coat);
+    }
+    c.layeredLighting = c.layeredLighting + base;
+    return c;
+}
+
+// The pixel's radiance once every light is in: the lobes and the emission; with layers, the
+// base and sheen (layeredLighting) and the emission seen through the coat, plus the coat's own
+// (clearcoatOver), as shade.frag sums them.
+PATINA_INLINE ChannelInputs channelFinished(ChannelInputs c, ChannelLayers layers) {
+    if (!layers.coated && !layers.sheened) {
+        c.radiance = c.diffuse + c.specularLighting + c.emission;
+        return c;
+    }
+    vec3 base = c.layeredLighting + c.emission;
+    c.radiance = layers.coated ? clearcoatOver(base, c.clearcoat, layers.coat) : base;
     return c;
 }

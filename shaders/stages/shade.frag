@@ -154,20 +154,23 @@ uniform vec3 uPbrRanges;     // CHANNEL_PBR_VALIDATION's (pbrVerdict)
 uniform float uChannelAlpha;   // the item's alpha (BLEND's factor), which only maps otherwise read
 #endif
 
+// `layers`: the part's coat and sheen (CHANNEL_CLEARCOAT, CHANNEL_SHEEN), as main derives them.
 vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metallic, float occlusion, vec3 emission,
-                      vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal, vec3 N, vec3 V) {
+                      vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal, vec3 N, vec3 V, ChannelLayers layers) {
     ChannelInputs c = channelSurface(baseColor, alpha, roughness, uSpecular, metallic, occlusion, emission, uv0, uv1,
                                      tangent, geometryNormal, N, V);
     for (int i = 0; i < uLightCount.x; ++i) {
-        c = channelWithLight(c, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
+        c = channelWithLight(c, layers, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
     }
 #ifdef PATINA_ENVIRONMENT
     SurfaceMaterial material = deriveSurfaceMaterial(baseColor, roughness, uSpecular, metallic);
     LightShares shares = environmentShares(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
                                            uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, false);
     c = channelWithEnvironment(c, shares, uEnvironmentIntensity, uChannelLight == -2);
+    c = channelWithEnvironmentLayers(c, layers, uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
+                                     uEnvironmentIntensity, uEnvironmentRotation.x, uEnvironmentRotation.y, V);
 #endif
-    return channelValue(PATINA_CHANNEL, channelFinished(c), uPbrRanges);
+    return channelValue(PATINA_CHANNEL, channelFinished(c, layers), uPbrRanges);
 }
 #endif
 
@@ -232,12 +235,21 @@ void main() {
 #endif
 #endif
 #ifdef PATINA_CHANNEL
+    ChannelLayers layers = noChannelLayers();
+#ifdef PATINA_CLEARCOAT
+    layers.coated = true;
+    layers.coat = coat;
+#endif
+#ifdef PATINA_SHEEN
+    layers.sheened = true;
+    layers.sheen = sheen;
+#endif
 #ifdef PATINA_TEXTURED
     vec3 channel = inspectedChannel(mapped.baseColor, mapped.alpha, mapped.roughness, mapped.metallic, occlusion,
-                                    surfaceEmission(), vUv0, vUv1, vTangent, geometryNormal, N, V);
+                                    surfaceEmission(), vUv0, vUv1, vTangent, geometryNormal, N, V, layers);
 #else
     vec3 channel = inspectedChannel(uBaseColor, uChannelAlpha, uRoughness, uMetallic, 1.0f, vec3(0.0f), vec2(0.0f), vec2(0.0f),
-                                    vec4(0.0f), geometryNormal, N, V);
+                                    vec4(0.0f), geometryNormal, N, V, layers);
 #endif
     // Data, not light: no exposure or tone map in the display value either.
 #ifdef PATINA_STAMPED

@@ -129,6 +129,12 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "brdf-model specialised-epic-default-scene ", "brdf-model specialised-gltf-default-scene "}) {
         EXPECT_EQ(perSeries[series], 1) << series;   // glTF's BRDF against the seed's, one row each
     }
+    for (const char* layer : {"", "-clearcoat", "-sheen"}) {   // issue 36: each layer against the bare gltf
+        for (const char* shown : {"", "-default-scene"}) {
+            const std::string series = std::string("layers specialised-gltf") + layer + shown + " ";
+            EXPECT_EQ(perSeries[series], 1) << series;
+        }
+    }
     const std::string targets = read("render_targets.csv");
     for (const char* target : {"single / multi at 8 lights", "specialised / single", "per added directional light",
                                "single's cost per added point light /",
@@ -137,6 +143,8 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "single's cost per added sphere light / per added point light",
                                "specialised's cost per added tube light / per added point light", "separate renders",
                                "specialised gltf / epic, 8 lights", "specialised gltf / epic, the default scene",
+                               "specialised gltf without layers, beside the layered frames / the brdf-model row's, 8 lights",
+                               "specialised gltf without layers, beside the layered frames / the brdf-model row's, the default scene",
                                "peak RSS"}) {
         EXPECT_NE(targets.find(target), std::string::npos) << target;
     }

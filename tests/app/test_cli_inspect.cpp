@@ -196,6 +196,24 @@ TEST_F(CliInspect, InspectAgreesWithTheRenderedPixel) {
     }
 }
 
+// `inspect` lists the layers' own light (issue 36): the hand-written velvet's sheen at its
+// centre, no coat there; on the default scene's bare sphere both are 0.
+TEST_F(CliInspect, InspectListsTheLayersOfAPartThatHasThem) {
+    const std::string velvet = std::string(PATINA_SOURCE_DIR) + "/tests/data/sheen/velvet.gltf";
+    const test::CliRun sheened = run("inspect --mesh " + velvet + " --width 64 --height 64 --x 32 --y 32");
+    ASSERT_EQ(sheened.exitCode, 0) << sheened.stderrText;
+    const Json story = Json::parse(sheened.stdoutText);
+    ASSERT_TRUE(story.at("surface").get<bool>()) << sheened.stdoutText;
+    const glm::vec3 sheen = vec3Of(story.at("sheen"));
+    EXPECT_GT(sheen.x + sheen.y + sheen.z, 0.0f) << sheened.stdoutText;
+    EXPECT_EQ(vec3Of(story.at("clearcoat")), glm::vec3(0.0f));
+    const test::CliRun bare = run("inspect --width 120 --height 90 --x 60 --y 45");
+    ASSERT_EQ(bare.exitCode, 0) << bare.stderrText;
+    const Json plain = Json::parse(bare.stdoutText);
+    EXPECT_EQ(vec3Of(plain.at("sheen")), glm::vec3(0.0f));
+    EXPECT_EQ(vec3Of(plain.at("clearcoat")), glm::vec3(0.0f));
+}
+
 TEST_F(CliInspect, APixelOutsideTheImageIsAUsageErrorAndTheBackgroundHasNoSurface) {
     const test::CliRun outside = run("inspect --width 100 --height 50 --x 10 --y 50");
     EXPECT_EQ(outside.exitCode, 2);

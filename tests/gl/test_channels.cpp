@@ -2,17 +2,21 @@
 // PATINA_CHANNEL) against the CPU twin (reference/channel_image.h), which gathers the same
 // inputs through the same shared functions; and against what the channels must be by their
 // definition (the lobes add up to the rendered radiance, a sphere's normal is its position).
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "bench/render_bench.h"
 #include "files/input_error.h"
 #include "gl/renderer.h"
 #include "picture/display_image.h"
 #include "picture/pbr_tally.h"
 #include "model/pbr_validation.h"
 #include "reference/channel_image.h"
+#include "reference/pixel_story.h"
 #include "reference/pixel_surfaces.h"
 #include "scene/channel.h"
 #include "shading/shading.h"
@@ -274,6 +278,75 @@ TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
                 EXPECT_EQ(int(centre[1]), check.value);
             }
         }
+    }
+}
+
+// The default scene (its lights and environment) with the `gltf` model and a layer: the
+// bench's car paint coat or velvet sheen (docs/SHADING.md S5, S6).
+Scene layeredScene(const std::string& layer) {
+    return withBenchLayer(defaultScene(), layer);
+}
+
+// The layers' channels (issue 36): a coated part's clearcoat channel and a sheened part's sheen
+// channel are the coat's and the sheen's own light, the GPU's the CPU twin's, bright where the
+// layer shows (the coat's highlight, the sheen's rim); the same channel of the bare part, and
+// the other layer's channel of each, is 0 everywhere, on the GPU and the CPU.
+TEST_F(Channels, TheLayersChannelsAreTheirOwnLightAndZeroWithoutTheLayer) {
+    for (const std::string layer : {"clearcoat", "sheen"}) {
+        const Scene layered = layeredScene(layer), bare = layeredScene("");
+        const PreparedScene layeredPrepared{layered, test::preparedDefault().mesh, test::preparedDefault().environment};
+        const PreparedScene barePrepared{bare, test::preparedDefault().mesh, test::preparedDefault().environment};
+        const PixelSurfaces surfaces = rasterizeSurfaces(layeredPrepared, kSize, kSize);
+        const ChannelRequest request = *channelFromName(layer);
+        const ChannelRequest other = *channelFromName(layer == "clearcoat" ? "sheen" : "clearcoat");
+        const HdrImage a = gpu(layeredPrepared, request), b = channelImage(layeredPrepared, surfaces, request);
+        int covered = 0, agreeing = 0;
+        float brightest = 0.0f;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (inside(surfaces, x, y)) {
+                    ++covered;
+                    agreeing += near(test::pixel(a, x, y), test::pixel(b, x, y), 1e-2f, 2e-3f);
+                    const glm::vec3 v = test::pixel(b, x, y);
+                    brightest = std::max({brightest, v.x, v.y, v.z});
+                }
+            }
+        }
+        EXPECT_GT(covered, 2000) << layer;
+        EXPECT_GE(agreeing, covered * 99 / 100) << layer << ": " << agreeing << " of " << covered;
+        EXPECT_GT(brightest, 0.05f) << layer;
+        const char* const kZeros[] = {"the bare part's on the GPU", "the bare part's on the CPU",
+                                      "the other layer's on the GPU", "the other layer's on the CPU"};
+        const PixelSurfaces bareSurfaces = rasterizeSurfaces(barePrepared, kSize, kSize);   // they hold the materials
+        const HdrImage zeros[] = {gpu(barePrepared, request), channelImage(barePrepared, bareSurfaces, request),
+                                  gpu(layeredPrepared, other), channelImage(layeredPrepared, surfaces, other)};
+        for (size_t k = 0; k < std::size(zeros); ++k) {
+            EXPECT_EQ(*std::max_element(zeros[k].rgb.begin(), zeros[k].rgb.end()), 0.0f) << layer << ": " << kZeros[k];
+        }
+    }
+}
+
+// With a layer the CPU twin's radiance (what `inspect` and the read-out show) is the render's:
+// the base seen through the coat and weighed by the sheen's albedo scaling, the layer's own
+// light added; without the layers in the sum a coat's highlight or a sheen's rim would be missing.
+TEST_F(Channels, TheCpuTwinsRadianceWithALayerIsTheRenders) {
+    for (const std::string layer : {"clearcoat", "sheen"}) {
+        const Scene scene = layeredScene(layer);
+        const PreparedScene prepared{scene, test::preparedDefault().mesh, test::preparedDefault().environment};
+        const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+        const HdrImage shown = renderer_.render(prepared, test::renderSettings(kSize, kSize, RenderPath::Single, 1)).hdr;
+        int covered = 0, agreeing = 0;
+        for (int y = 0; y < kSize; y += 2) {
+            for (int x = 0; x < kSize; x += 2) {
+                if (inside(surfaces, x, y)) {
+                    ++covered;
+                    const std::optional<PixelStory> story = pixelStory(prepared, surfaces, x, y);
+                    agreeing += story && near(story->inputs.radiance, test::pixel(shown, x, y), 1e-2f, 2e-3f);
+                }
+            }
+        }
+        EXPECT_GT(covered, 500) << layer;
+        EXPECT_GE(agreeing, covered * 99 / 100) << layer << ": " << agreeing << " of " << covered;
     }
 }
 
