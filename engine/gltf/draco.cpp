@@ -103,8 +103,10 @@ std::optional<DracoPrimitive> dracoPrimitive(const tinygltf::Model& model, const
     }
     const std::string at = where + "/extensions/" + kDraco;
     const tinygltf::Value& extension = found->second;
-    const std::optional<int> view = wholeNumber<int>(extension.Get("bufferView"));
-    if (!extension.IsObject() || !view) {
+    // tinygltf's Get asserts an object: the JSON rules make the extension one, asked first anyway.
+    const std::optional<int> view =
+        extension.IsObject() ? wholeNumber<int>(extension.Get("bufferView")) : std::nullopt;
+    if (!view) {
         fail(source, at + "/bufferView: the index of the buffer view holding the compressed mesh is missing");
     }
     DracoPrimitive draco;
@@ -122,7 +124,11 @@ std::optional<DracoPrimitive> dracoPrimitive(const tinygltf::Model& model, const
         draco.stream.attributes[name] = *id;
     }
     if (extension.Has("indices")) {   // moved here by withDracoIndicesInTheExtension
-        draco.indices = extension.Get("indices").GetNumberAsInt();
+        const std::optional<int> indices = wholeNumber<int>(extension.Get("indices"));
+        if (!indices) {
+            fail(source, where + "/indices: not the index of an accessor");
+        }
+        draco.indices = *indices;
     }
     return draco;
 }

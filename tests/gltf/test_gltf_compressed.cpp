@@ -214,6 +214,14 @@ TEST_F(GltfCompressed, ABrokenStreamOrExtensionIsRefusedByName) {
     EXPECT_ERROR(errorOf(outside), "/bufferViews/0: bytes 1048576 + " + std::to_string(stream.bytes.size()) +
                                        " run past the end of buffer 0");
 
+    // Patina moves a primitive's `indices` into the extension for tinygltf; one a file put there
+    // itself must name an accessor too.
+    GltfBuilder strayIndices = dracoCube(stream);
+    Json& primitive = strayIndices.json["meshes"][0]["primitives"][0];
+    primitive.erase("indices");
+    primitive["extensions"]["KHR_draco_mesh_compression"]["indices"] = "three";
+    EXPECT_ERROR(errorOf(strayIndices), "/meshes/0/primitives/0/indices: not the index of an accessor");
+
     GltfBuilder noView = dracoCube(stream);
     noView.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = "zero";
     EXPECT_ERROR(errorOf(noView), at + "/bufferView");
