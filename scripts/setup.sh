@@ -12,6 +12,9 @@ packages=(
   libcairo2-dev
   # Draco decodes KHR_draco_mesh_compression's meshes (engine/gltf/draco.cpp).
   libdraco-dev
+  # meshoptimizer decodes EXT_meshopt_compression's buffer views (engine/gltf/meshopt.cpp),
+  # libwebp EXT_texture_webp's images (engine/gltf/images.cpp).
+  libmeshoptimizer-dev libwebp-dev
   xvfb xdotool
   # The editor's UI font, the captions' and the charts' (DejaVu Sans, read at run time), Droid
   # Sans Fallback for the CJK characters DejaVu lacks (fontconfig finds it for a caption), and

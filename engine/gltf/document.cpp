@@ -7,6 +7,7 @@
 #include "gltf/extensions.h"
 #include "gltf/files.h"
 #include "gltf/glb.h"
+#include "gltf/meshopt.h"
 #include "gltf/json_check.h"
 #include "io/json_reader.h"
 #include "files/input_error.h"
@@ -27,16 +28,29 @@ bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string
     return true;
 }
 
+// The JSON tinygltf is given: nothing where it is the file's, else the file's rewritten where
+// an extension needs it (Draco's indices moved, meshopt's fallback buffers stood in for).
+std::optional<std::string> jsonForTinygltf(std::string_view json, const std::string& source) {
+    if (json.find(kDraco) == std::string_view::npos && json.find(kMeshopt) == std::string_view::npos) {
+        return std::nullopt;
+    }
+    Json document = parseJsonText(std::string(json), source);
+    const bool moved = moveDracoIndicesIntoTheExtension(document);
+    const bool stoodIn = standInForMeshoptFallbacks(document);
+    return moved || stoodIn ? std::optional(document.dump()) : std::nullopt;
+}
+
 bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector<uint8_t>& bytes,
            const std::string& baseDir, std::string& error, std::string& warning, const std::string& source) {
     if (looksLikeGlb(bytes)) {
         const GlbChunks glb = splitGlb(bytes, source);
         refuseUndrawnRequired(checkGltfJson(glb.json, true, source), source);
-        const std::optional<std::string> draco = withDracoIndicesInTheExtension(glb.json, source);
+        const std::optional<std::string> rewritten = jsonForTinygltf(glb.json, source);
         // tinygltf reads the layout again from the header: give it one without other chunks.
-        const bool asIs = glb.onlyJsonAndBin && !draco;
+        const bool asIs = glb.onlyJsonAndBin && !rewritten;
         const std::vector<uint8_t> joined =
-            asIs ? std::vector<uint8_t>() : joinGlb(draco ? std::string_view(*draco) : glb.json, glb.bin, glb.binSize);
+            asIs ? std::vector<uint8_t>()
+                 : joinGlb(rewritten ? std::string_view(*rewritten) : glb.json, glb.bin, glb.binSize);
         const std::vector<uint8_t>& clean = asIs ? bytes : joined;
         return loader.LoadBinaryFromMemory(&model, &error, &warning, clean.data(), unsigned(clean.size()), baseDir);
     }
@@ -46,8 +60,8 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
                                   "a JSON object)");
     }
     refuseUndrawnRequired(checkGltfJson(json, false, source), source);
-    const std::optional<std::string> draco = withDracoIndicesInTheExtension(json, source);
-    const std::string_view text = draco ? std::string_view(*draco) : json;
+    const std::optional<std::string> rewritten = jsonForTinygltf(json, source);
+    const std::string_view text = rewritten ? std::string_view(*rewritten) : json;
     return loader.LoadASCIIFromString(&model, &error, &warning, text.data(), unsigned(text.size()), baseDir);
 }
 
@@ -78,6 +92,7 @@ tinygltf::Model loadDocument(const std::filesystem::path& path, const std::vecto
         const std::string message = oneLine(error.empty() ? warning : error, ';');
         throw InputError(source + ": " + (message.empty() ? "cannot be loaded" : message));
     }
+    decodeMeshoptViews(model, source);
     return model;
 }
 

@@ -10,6 +10,7 @@
 #include "files/input_error.h"
 #include "gltf/accessor.h"
 #include "gltf/primitives.h"
+#include "gltf/values.h"
 #include "io/json_reader.h"
 
 namespace patina::gltf {
@@ -18,20 +19,6 @@ namespace {
 
 [[noreturn]] void fail(const std::string& source, const std::string& what) {
     throw InputError(source + ": " + what);
-}
-
-// A whole number of at least 0 that fits `Limit`, from tinygltf's value (an int, or a real
-// where the JSON's number did not fit one); else nothing.
-template <typename Limit>
-std::optional<Limit> wholeNumber(const tinygltf::Value& value) {
-    if (!value.IsNumber()) {
-        return std::nullopt;
-    }
-    const double number = value.GetNumberAsDouble();
-    if (!(number >= 0.0 && number <= double(std::numeric_limits<Limit>::max())) || number != double(Limit(number))) {
-        return std::nullopt;
-    }
-    return Limit(number);
 }
 
 // Every point's value of `attribute` as `T`, `components` numbers each, in point order (the
@@ -66,33 +53,27 @@ bool convertAttribute(const draco::Mesh& mesh, const draco::PointAttribute& attr
 
 }  // namespace
 
-std::optional<std::string> withDracoIndicesInTheExtension(std::string_view json, const std::string& source) {
-    if (json.find(kDraco) == std::string_view::npos) {
-        return std::nullopt;
-    }
-    Json document = parseJsonText(std::string(json), source);
+bool moveDracoIndicesIntoTheExtension(Json& document) {
     bool moved = false;
-    if (document.contains("meshes") && document["meshes"].is_array()) {
-        for (Json& mesh : document["meshes"]) {
-            if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) {
+    if (!document.is_object() || !document.contains("meshes") || !document["meshes"].is_array()) {
+        return false;
+    }
+    for (Json& mesh : document["meshes"]) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) {
+            continue;
+        }
+        for (Json& primitive : mesh["primitives"]) {
+            if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions") ||
+                !primitive["extensions"].is_object() || !primitive["extensions"].contains(kDraco) ||
+                !primitive["extensions"][kDraco].is_object()) {
                 continue;
             }
-            for (Json& primitive : mesh["primitives"]) {
-                if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions") ||
-                    !primitive["extensions"].is_object() || !primitive["extensions"].contains(kDraco) ||
-                    !primitive["extensions"][kDraco].is_object()) {
-                    continue;
-                }
-                primitive["extensions"][kDraco]["indices"] = primitive["indices"];
-                primitive.erase("indices");
-                moved = true;
-            }
+            primitive["extensions"][kDraco]["indices"] = primitive["indices"];
+            primitive.erase("indices");
+            moved = true;
         }
     }
-    if (!moved) {
-        return std::nullopt;
-    }
-    return document.dump();
+    return moved;
 }
 
 std::optional<DracoPrimitive> dracoPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
@@ -123,7 +104,7 @@ std::optional<DracoPrimitive> dracoPrimitive(const tinygltf::Model& model, const
         }
         draco.stream.attributes[name] = *id;
     }
-    if (extension.Has("indices")) {   // moved here by withDracoIndicesInTheExtension
+    if (extension.Has("indices")) {   // moved here by moveDracoIndicesIntoTheExtension
         const std::optional<int> indices = wholeNumber<int>(extension.Get("indices"));
         if (!indices) {
             fail(source, where + "/indices: not the index of an accessor");

@@ -12,6 +12,8 @@
 
 #include <tiny_gltf.h>
 
+#include "io/json_reader.h"
+
 namespace patina::gltf {
 
 inline constexpr const char* kDraco = "KHR_draco_mesh_compression";
@@ -23,12 +25,11 @@ struct DracoStream {
     std::map<std::string, uint32_t> attributes;
 };
 
-// The JSON with each Draco primitive's `indices` moved into its extension object (as
-// "indices"), or nothing when no primitive has the extension. A compressed primitive's index
-// accessor has no buffer view of its own, which tinygltf refuses ("accessor[N] invalid
-// bufferView") before Patina could decode it; moved, tinygltf keeps it in the extension's value
-// and planPrimitive reads it back. Throws InputError for JSON it cannot parse.
-std::optional<std::string> withDracoIndicesInTheExtension(std::string_view json, const std::string& source);
+// Moves each Draco primitive's `indices` into its extension object (as "indices") in
+// `document`; true when it moved any. A compressed primitive's index accessor has no buffer view
+// of its own, which tinygltf refuses ("accessor[N] invalid bufferView") before Patina could
+// decode it; moved, tinygltf keeps it in the extension's value and dracoPrimitive reads it back.
+bool moveDracoIndicesIntoTheExtension(Json& document);
 
 // The primitive's Draco stream and its index accessor (-1: none), when it has the extension.
 // Throws InputError("SOURCE: WHERE/extensions/KHR_draco_mesh_compression...") for a buffer view

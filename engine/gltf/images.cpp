@@ -9,6 +9,7 @@
 #include <span>
 
 #include <stb_image.h>
+#include <webp/decode.h>
 
 #include "common/parallel_for.h"
 #include "files/input_error.h"
@@ -19,13 +20,30 @@ namespace patina::gltf {
 
 namespace {
 
-// Section 3.8.3: images are PNG or JPEG; told apart by their signatures, not by mimeType or the
-// file's extension. Nothing else reaches stb_image, which would read BMP, GIF, PSD and more.
+// Section 3.8.3: images are PNG or JPEG, and EXT_texture_webp's WebP; told apart by their
+// signatures, not by mimeType or the file's extension. Nothing else reaches stb_image, which
+// would read BMP, GIF, PSD and more.
 bool isPngOrJpeg(std::span<const uint8_t> bytes) {
     static constexpr uint8_t kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     static constexpr uint8_t kJpeg[3] = {0xFF, 0xD8, 0xFF};
     return (bytes.size() >= sizeof kPng && std::memcmp(bytes.data(), kPng, sizeof kPng) == 0) ||
            (bytes.size() >= sizeof kJpeg && std::memcmp(bytes.data(), kJpeg, sizeof kJpeg) == 0);
+}
+
+// RIFF's header, its size, then "WEBP" (the WebP container specification, "RIFF Header").
+bool isWebp(std::span<const uint8_t> bytes) {
+    return bytes.size() >= 12 && std::memcmp(bytes.data(), "RIFF", 4) == 0 &&
+           std::memcmp(bytes.data() + 8, "WEBP", 4) == 0;
+}
+
+// The image's size from its header through the decoder its signature names: false when it
+// cannot be read.
+bool imageSize(std::span<const uint8_t> bytes, int& width, int& height) {
+    if (isWebp(bytes)) {
+        return WebPGetInfo(bytes.data(), bytes.size(), &width, &height) != 0;
+    }
+    int channels = 0;
+    return stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) != 0;
 }
 
 std::string imageName(const tinygltf::Image& image, size_t index) {
@@ -37,15 +55,16 @@ std::string imageName(const tinygltf::Image& image, size_t index) {
 class ImageBudget {
 public:
     std::string admit(std::span<const uint8_t> bytes, uint64_t& size) {
-        if (!isPngOrJpeg(bytes)) {
-            return "is neither PNG nor JPEG";
+        if (!isPngOrJpeg(bytes) && !isWebp(bytes)) {
+            return "is neither PNG, JPEG nor WebP";
         }
         if (bytes.size() > size_t(INT_MAX)) {   // stb_image takes an int
             return "is over 2 GiB";
         }
-        int width = 0, height = 0, channels = 0;
-        if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels)) {
-            return std::string("cannot be read: ") + decoderReason(stbi_failure_reason());
+        int width = 0, height = 0;
+        if (!imageSize(bytes, width, height)) {
+            return std::string("cannot be read: ") +
+                   (isWebp(bytes) ? "not a WebP image libwebp reads" : decoderReason(stbi_failure_reason()));
         }
         if (width > kGltfMaxImageSide || height > kGltfMaxImageSide) {
             return "is " + std::to_string(width) + " x " + std::to_string(height) + " pixels, over Patina's limit of " +
@@ -64,9 +83,26 @@ private:
     uint64_t decoded_ = 0;
 };
 
+// A WebP image (lossy or lossless, with or without alpha) as RGBA, through libwebp.
+std::string decodeWebp(std::span<const uint8_t> bytes, uint64_t size, ModelImage& out) {
+    const std::unique_ptr<uint8_t, void (*)(void*)> pixels(
+        WebPDecodeRGBA(bytes.data(), bytes.size(), &out.width, &out.height), WebPFree);
+    if (!pixels) {
+        return "cannot be decoded: libwebp refuses it";
+    }
+    if (uint64_t(out.width) * uint64_t(out.height) * 4 != size) {
+        return "decodes to another size than its header gives";
+    }
+    out.rgba.assign(pixels.get(), pixels.get() + size);
+    return "";
+}
+
 // Decodes an admitted image of `size` bytes decoded into `out`: why it failed, or "". Safe on
 // several threads at once (stb_image keeps its failure reason per thread).
 std::string decode(std::span<const uint8_t> bytes, uint64_t size, ModelImage& out) {
+    if (isWebp(bytes)) {
+        return decodeWebp(bytes, size, out);
+    }
     int channels = 0;
     // Four channels asked for: grey, grey-alpha, RGB and palettes all become RGBA, 16 bits 8.
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(

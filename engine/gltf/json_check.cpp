@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gltf/json_rules.h"
+#include "gltf/meshopt.h"
 #include "files/input_error.h"
 
 namespace patina::gltf {
@@ -127,7 +128,12 @@ public:
     explicit Checker(bool glb) : glb_(glb) {}
 
     bool null() override { return value({Found::Null, "null"}); }
-    bool boolean(bool b) override { return value({Found::Boolean, b ? "true" : "false"}); }
+    bool boolean(bool b) override {
+        if (inBuffers_ && depth_ == 5 && fallbackKey_ && b) {
+            bufferIsFallback_ = true;
+        }
+        return value({Found::Boolean, b ? "true" : "false"});
+    }
     bool number_integer(number_integer_t n) override {
         return value({n < 0 ? Found::Negative : Found::Unsigned, std::to_string(n), double(n)});
     }
@@ -151,7 +157,7 @@ public:
             return false;
         }
         if (inBuffers_ && depth_ == 3) {
-            bufferHasUri_ = false;
+            bufferHasUri_ = bufferIsFallback_ = false;
         }
         return true;
     }
@@ -161,12 +167,18 @@ public:
             rootKey_ = key;
         } else if (inBuffers_ && depth_ == 3 && key == "uri") {
             bufferHasUri_ = true;
+        } else if (inBuffers_ && depth_ == 4) {
+            bufferExtension_ = key;
+        } else if (inBuffers_ && depth_ == 5) {
+            fallbackKey_ = bufferExtension_ == kMeshopt && key == "fallback";
         }
         return true;
     }
     bool end_object() override {
         if (inBuffers_ && depth_ == 3) {
-            if (glb_ && !bufferHasUri_ && buffer_ > 0) {
+            // EXT_meshopt_compression's fallback buffer has no data at all: its views are
+            // read compressed (gltf/meshopt.h).
+            if (glb_ && !bufferHasUri_ && !bufferIsFallback_ && buffer_ > 0) {
                 return stop("/buffers/" + std::to_string(buffer_) +
                             ": only buffers[0] may take its data from the GLB's BIN chunk "
                             "(this buffer has no uri)");
@@ -232,7 +244,8 @@ private:
     bool glb_;
     size_t depth_ = 0, values_ = 0, objects_ = 0;
     std::string rootKey_;
-    bool inBuffers_ = false, bufferHasUri_ = false;
+    bool inBuffers_ = false, bufferHasUri_ = false, bufferIsFallback_ = false, fallbackKey_ = false;
+    std::string bufferExtension_;   // the key of the extension a buffer's parse is in
     size_t buffer_ = 0;
     TypedPath path_;
     std::string problem_;

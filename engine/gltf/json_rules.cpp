@@ -77,6 +77,7 @@ void textures(Rules& rules) {
     for (const char* other : {"KHR_texture_basisu", "EXT_texture_webp", "MSFT_texture_dds"}) {
         rules[std::string("/textures/*/extensions/") + other] = kObject;
     }
+    rules["/textures/*/extensions/EXT_texture_webp/source"] = index("image");
     for (const char* filter : {"magFilter", "minFilter", "wrapS", "wrapT"}) {
         rules[std::string("/samplers/*/") + filter] = kInteger;
     }
@@ -145,6 +146,19 @@ void data(Rules& rules) {
     }
     rules["/buffers/*/uri"] = kString;
     rules["/buffers/*/byteLength"] = kUnsigned;
+    // EXT_meshopt_compression: a view's compressed stream, and the buffer that only stands in.
+    const std::string meshopt = "/bufferViews/*/extensions/EXT_meshopt_compression";
+    rules["/bufferViews/*/extensions"] = kObject;
+    rules[meshopt] = kObject;
+    rules[meshopt + "/buffer"] = index("buffer");
+    for (const char* size : {"byteOffset", "byteLength", "byteStride", "count"}) {
+        rules[meshopt + "/" + size] = kUnsigned;
+    }
+    rules[meshopt + "/mode"] = kString;
+    rules[meshopt + "/filter"] = kString;
+    rules["/buffers/*/extensions"] = kObject;
+    rules["/buffers/*/extensions/EXT_meshopt_compression"] = kObject;
+    rules["/buffers/*/extensions/EXT_meshopt_compression/fallback"] = kBoolean;
 }
 
 Rules makeRules() {

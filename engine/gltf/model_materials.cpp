@@ -61,8 +61,9 @@ int texCoordFrom(double value, const std::string& where, const std::string& sour
 }
 
 // The extensions that hold an image in a format Patina does not decode, in a texture (each
-// has its own `source`; glTF's `source` is the fallback for readers without them).
-constexpr const char* kOtherImageFormats[] = {"KHR_texture_basisu", "EXT_texture_webp", "MSFT_texture_dds"};
+// has its own `source`; glTF's `source` is the fallback for readers without them). WebP's,
+// EXT_texture_webp, is decoded.
+constexpr const char* kOtherImageFormats[] = {"KHR_texture_basisu", "MSFT_texture_dds"};
 
 class MaterialReader {
 public:
@@ -97,6 +98,16 @@ int MaterialReader::imageOf(int index, const std::string& where) {
     const tinygltf::Texture& texture = document_.textures[size_t(index)];
     if (texture.source != -1 && (texture.source < 0 || size_t(texture.source) >= document_.images.size())) {
         fail(source_, at("textures", index) + "/source: image " + std::to_string(texture.source) + " does not exist");
+    }
+    // EXT_texture_webp: a reader that decodes WebP takes the extension's image, glTF's `source`
+    // being the fallback for those that do not.
+    if (const tinygltf::Value* webp = extensionOf(texture.extensions, "EXT_texture_webp"); webp && webp->Has("source")) {
+        const std::string where = at("textures", index) + "/extensions/EXT_texture_webp/source";
+        const std::optional<int> image = wholeNumber<int>(webp->Get("source"));
+        if (!image || size_t(*image) >= document_.images.size()) {
+            fail(source_, where + ": not the index of an image");
+        }
+        return *image;
     }
     if (texture.source == -1 && !noted_[size_t(index)]) {
         noted_[size_t(index)] = true;

@@ -2,6 +2,8 @@
 // Reading tinygltf's untyped values (extension objects) with an InputError naming the JSON
 // pointer for a value of the wrong type. json_rules.h has checked the types of those Patina
 // reads already; these check again, so that no caller depends on that.
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,5 +24,19 @@ double numberField(const tinygltf::Value* object, const char* key, double fallba
 // object[key] as an array of `size` numbers; empty when there is no object or no such key.
 std::vector<double> numbersField(const tinygltf::Value* object, const char* key, size_t size,
                                  const std::string& what, const std::string& source);
+
+// A whole number of at least 0 that fits `Limit`, from tinygltf's value (an int, or a real
+// where the JSON's number did not fit one); else nothing.
+template <typename Limit>
+std::optional<Limit> wholeNumber(const tinygltf::Value& value) {
+    if (!value.IsNumber()) {
+        return std::nullopt;
+    }
+    const double number = value.GetNumberAsDouble();
+    if (!(number >= 0.0 && number <= double(std::numeric_limits<Limit>::max())) || number != double(Limit(number))) {
+        return std::nullopt;
+    }
+    return Limit(number);
+}
 
 }  // namespace patina::gltf

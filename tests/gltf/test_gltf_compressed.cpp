@@ -17,28 +17,24 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "compressed_cube.h"
 #include "gltf_builder.h"
 #include "scratch_test.h"
 
 namespace patina {
 namespace {
 
+using test::Corner;
+using test::cubeUvs;
+using test::expectNear;
+using test::plainCube;
+using test::triangleSoup;
 using test::Cube;
 using test::GltfBuilder;
 using test::kFloat;
 using test::kUnsignedByte;
 using test::kUnsignedInt;
 constexpr int kByte = 5120, kShort = 5122;
-
-// Each face's texture coordinates: the square's corners.
-std::vector<glm::vec2> cubeUvs(const Cube& cube) {
-    std::vector<glm::vec2> uvs;
-    for (size_t i = 0; i < cube.positions.size(); ++i) {
-        const int corner = int(i % 4);
-        uvs.emplace_back(corner == 1 || corner == 2 ? 1.0f : 0.0f, corner >= 2 ? 1.0f : 0.0f);
-    }
-    return uvs;
-}
 
 // The cube's triangles as one Draco stream (no quantization: lossless), and its attributes' ids.
 struct Stream {
@@ -102,43 +98,6 @@ GltfBuilder dracoCube(const Stream& stream) {
     gltf.json["extensionsUsed"] = {"KHR_draco_mesh_compression"};
     gltf.json["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     return gltf;
-}
-
-// The same cube uncompressed.
-GltfBuilder plainCube(const Cube& cube, const std::vector<glm::vec2>& uvs) {
-    GltfBuilder gltf;
-    const int position = gltf.positions(cube.positions);
-    const int normal = gltf.data(GltfBuilder::flatten(cube.normals), kFloat, "VEC3", 3);
-    std::vector<float> uvNumbers;
-    for (const glm::vec2& uv : uvs) {
-        uvNumbers.insert(uvNumbers.end(), {uv.x, uv.y});
-    }
-    const int uv = gltf.data(uvNumbers, kFloat, "VEC2", 2);
-    const int indices = gltf.data(cube.indices, kUnsignedInt, "SCALAR", 1);
-    gltf.meshNode({{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}},
-                   {"indices", indices}});
-    return gltf;
-}
-
-// A mesh's triangles, each as its corners' position, normal and UV in winding order starting
-// at its least corner, sorted: the same surface gives the same list whatever the order of its
-// vertices and triangles (Draco's edgebreaker reorders both).
-using Corner = std::array<float, 8>;
-std::vector<std::array<Corner, 3>> triangleSoup(const Mesh& mesh) {
-    std::vector<std::array<Corner, 3>> soup;
-    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        std::array<Corner, 3> triangle;
-        for (size_t k = 0; k < 3; ++k) {
-            const uint32_t v = mesh.indices[t + k];
-            const glm::vec3 p = mesh.positions[v], n = mesh.normals[v];
-            const glm::vec2 uv = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[v];
-            triangle[k] = {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y};
-        }
-        std::rotate(triangle.begin(), std::min_element(triangle.begin(), triangle.end()), triangle.end());
-        soup.push_back(triangle);
-    }
-    std::sort(soup.begin(), soup.end());
-    return soup;
 }
 
 // The sum of the mesh's triangles' areas.
@@ -225,19 +184,6 @@ TEST_F(GltfCompressed, ABrokenStreamOrExtensionIsRefusedByName) {
     GltfBuilder noView = dracoCube(stream);
     noView.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["bufferView"] = "zero";
     EXPECT_ERROR(errorOf(noView), at + "/bufferView");
-}
-
-// Every number of two triangle soups alike within `tolerance`.
-void expectNear(const std::vector<std::array<Corner, 3>>& a, const std::vector<std::array<Corner, 3>>& b,
-                float tolerance) {
-    ASSERT_EQ(a.size(), b.size());
-    for (size_t t = 0; t < a.size(); ++t) {
-        for (size_t k = 0; k < 3; ++k) {
-            for (size_t i = 0; i < a[t][k].size(); ++i) {
-                EXPECT_NEAR(a[t][k][i], b[t][k][i], tolerance) << "triangle " << t << " corner " << k << " number " << i;
-            }
-        }
-    }
 }
 
 // An integer accessor over `numbers` times `scale`, rounded to `T`, each element on a 4-byte

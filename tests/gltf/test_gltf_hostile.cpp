@@ -251,8 +251,8 @@ TEST_F(GltfHostile, WrongTypesAreRefusedWithThePlace) {
          "/specularColorFactor/1: must be a number"},
         {"/materials/0/extensions", {{"KHR_materials_specular", {{"specularFactor", "1"}}}},
          "/specularFactor: must be a number"},
-        {"/extensionsRequired", {"EXT_meshopt_compression"},
-         "requires the extension EXT_meshopt_compression, which Patina does not draw"},
+        {"/extensionsRequired", {"EXT_mesh_gpu_instancing"},
+         "requires the extension EXT_mesh_gpu_instancing, which Patina does not draw"},
         {"/asset", nullptr, "asset"},
         {"/nodes/0/translation", {1e308, 0, 0}, "/nodes/0: its world transform is not finite in single precision"},
     };

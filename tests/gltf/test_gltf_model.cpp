@@ -749,10 +749,11 @@ TEST_F(GltfModel, EveryExtensionTheFileUsesIsToldWithWhatIsDrawnOfIt) {
 // "accessor[0] invalid bufferView").
 TEST_F(GltfModel, ARequiredExtensionPatinaCannotDrawIsRefusedByItsName) {
     GltfBuilder model = cubeModel();
-    model.json["extensionsUsed"] = {"EXT_meshopt_compression"};
-    model.json["extensionsRequired"] = {"EXT_meshopt_compression"};
-    EXPECT_ERROR(errorOf(model), "requires the extension EXT_meshopt_compression, which Patina does not draw "
-                                 "(meshopt-compressed buffers are not decoded); the file cannot be shown without it");
+    model.json["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    model.json["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+    EXPECT_ERROR(errorOf(model), "requires the extension EXT_mesh_gpu_instancing, which Patina does not draw "
+                                 "(each mesh is drawn once, at its node, without its instances); the file cannot be "
+                                 "shown without it");
     model.json["extensionsRequired"] = {"KHR_xmp_json_ld"};   // metadata: nothing to draw, nothing missing
     model.json["extensionsUsed"] = {"KHR_xmp_json_ld"};
     EXPECT_EQ(errorOf(model), "(loaded)");
