@@ -404,7 +404,7 @@ TEST_F(Assets, AReplacementThatCannotBeUsedKeepsTheFilesMapWithANote) {
     scene.modelMaterials = {{0, left}, {1, other}};
     for (const auto& [key, file, note] :
          {std::tuple{"baseColorTexture", "missing.png", "missing.png: cannot open"},
-          std::tuple{"baseColorTexture", "text.png", "text.png: the image is neither PNG nor JPEG"},
+          std::tuple{"baseColorTexture", "text.png", "text.png: the image is neither PNG, JPEG nor WebP"},
           std::tuple{"normalTexture", "text.png", "the material has no normalTexture to replace"}}) {
         scene.modelMaterials[0].mapsReplaced = {{key, path(file).string()}};
         scene.modelMaterials[1].mapsReplaced = {{"baseColorTexture", path(file).string()}};
@@ -419,7 +419,7 @@ TEST_F(Assets, AReplacementThatCannotBeUsedKeepsTheFilesMapWithANote) {
         EXPECT_EQ(prepared.model->images.size(), 1u);
         EXPECT_EQ(prepared.model->materials, cache.model(scene.meshFile)->model.materials);
     }
-    EXPECT_NE(inputErrorOf([&] { cache.image(path("text.png")); }).find("text.png: the image is neither PNG nor JPEG"),
+    EXPECT_NE(inputErrorOf([&] { cache.image(path("text.png")); }).find("text.png: the image is neither PNG, JPEG nor WebP"),
               std::string::npos);
 }
 

@@ -604,7 +604,7 @@ TEST_F(EditorUi, AMapIsReplacedByAnImageFileAndRestored) {
     write("notes.png", "not a picture");
     const EditSnapshot before = state_.snapshot();
     EXPECT_FALSE(replaceMap(state_, *state_.assets, state_, 0, "baseColorTexture", path("notes.png")));
-    EXPECT_NE(state_.error.find("notes.png: the image is neither PNG nor JPEG"), std::string::npos) << state_.error;
+    EXPECT_NE(state_.error.find("notes.png: the image is neither PNG, JPEG nor WebP"), std::string::npos) << state_.error;
     EXPECT_EQ(state_.snapshot(), before);
     frames(1);
 }

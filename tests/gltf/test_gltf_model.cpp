@@ -431,7 +431,7 @@ TEST_F(GltfModel, AMissingOrBrokenImageLeavesItsMapOutWithANote) {
     const std::pair<std::string, std::string> cases[] = {
         {"absent.png", "/images/0 (absent.png): is not found in the model's folder; the maps that use it are left out"},
         {"cut.png", "/images/0 (cut.png): cannot be decoded: "},
-        {"text.png", "/images/0 (text.png): is neither PNG nor JPEG; the maps that use it are left out"},
+        {"text.png", "/images/0 (text.png): is neither PNG, JPEG nor WebP; the maps that use it are left out"},
     };
     for (const auto& [uri, note] : cases) {
         GltfBuilder model = texturedCube({{"uri", uri}});
@@ -695,24 +695,24 @@ TEST_F(GltfModel, IndicesOutOfRangeAreRefusedNamingThem) {
 }
 
 TEST_F(GltfModel, ExtensionsPatinaDoesNotReadAreNotedOrRefused) {
-    GltfBuilder webp = texturedCube({{"uri", "map.png"}});
-    webp.json["textures"][0] = {{"extensions", {{"EXT_texture_webp", {{"source", 0}}}}}};
-    const Model imported = load(webp);
-    EXPECT_EQ(imported.notes, std::vector<std::string>{"/textures/0: its image is in EXT_texture_webp, which Patina "
+    GltfBuilder basisu = texturedCube({{"uri", "map.png"}});
+    basisu.json["textures"][0] = {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}};
+    const Model imported = load(basisu);
+    EXPECT_EQ(imported.notes, std::vector<std::string>{"/textures/0: its image is in KHR_texture_basisu, which Patina "
                                                        "does not read; the materials that use it take their factors "
                                                        "alone"});
     EXPECT_FALSE(imported.materials[0].baseColor.present());
     // With a fallback image, as the extension asks writers to give: that one, and no note.
-    webp.json["textures"][0]["source"] = 0;
-    EXPECT_TRUE(load(webp).materials[0].baseColor.present());
-    EXPECT_TRUE(load(webp).notes.empty());
+    basisu.json["textures"][0]["source"] = 0;
+    EXPECT_TRUE(load(basisu).materials[0].baseColor.present());
+    EXPECT_TRUE(load(basisu).notes.empty());
 
-    webp.json["extensionsRequired"] = {"KHR_materials_emissive_strength", "KHR_texture_transform",
-                                       "KHR_materials_specular", "KHR_materials_ior"};
-    EXPECT_EQ(errorOf(webp), "(loaded)");
-    webp.json["extensionsRequired"] = {"KHR_texture_basisu"};
-    EXPECT_ERROR(errorOf(webp), "requires the extension KHR_texture_basisu, which Patina does not draw (KTX2 images "
-                                "are not decoded); the file cannot be shown without it");
+    basisu.json["extensionsRequired"] = {"KHR_materials_emissive_strength", "KHR_texture_transform",
+                                        "KHR_materials_specular", "KHR_materials_ior"};
+    EXPECT_EQ(errorOf(basisu), "(loaded)");
+    basisu.json["extensionsRequired"] = {"KHR_texture_basisu"};
+    EXPECT_ERROR(errorOf(basisu), "requires the extension KHR_texture_basisu, which Patina does not draw (KTX2 images "
+                                  "are not decoded); the file cannot be shown without it");
 }
 
 // Every extension a file uses is listed with what Patina draws of it, and each whose effect the

@@ -115,9 +115,9 @@ const PathDialogKind& pathDialogKind(Prompts::PathDialog dialog) {
         "Export", {".glb", ".gltf"}};
     static const PathDialogKind replaceMap{
         "Replace map",
-        "Draw an image (.png, .jpg) in place of the map: it keeps the map's UV set, sampling and transform, and "
+        "Draw an image (.png, .jpg, .webp) in place of the map: it keeps the map's UV set, sampling and transform, and "
         "is saved with the scene and exported with the model:",
-        "Replace", {".png", ".jpg", ".jpeg"}, true};
+        "Replace", {".png", ".jpg", ".jpeg", ".webp"}, true};
     switch (dialog) {
     case Prompts::PathDialog::ReplaceMap: return replaceMap;
     case Prompts::PathDialog::ExportGltf: return exportGltf;

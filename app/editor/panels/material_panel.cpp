@@ -305,7 +305,7 @@ void drawMapReplace(Document& document, AssetCache& assets, Prompts& prompts, in
         startPathDialog(prompts, Prompts::PathDialog::ReplaceMap, near.parent_path() / "");
     }
     recordItem("map replace: " + std::string(name),
-               ("Draw an image file (PNG or JPEG) in place of the " + std::string(name) +
+               ("Draw an image file (PNG, JPEG or WebP) in place of the " + std::string(name) +
                 " map, with its UV set, sampling and transform" +
                 (replaced.empty()
                      ? std::string()
