@@ -166,6 +166,22 @@ TEST(ShippedPresets, DielectricSpecularMatchesTheIorItsNotesCite) {
     }
 }
 
+// Issue 36: presets carry layers. A coat and a sheen each have a shipped preset, on the `gltf`
+// model that draws them.
+TEST(ShippedPresets, TheLayersHavePresetsOnTheModelThatDrawsThem) {
+    int coated = 0, sheened = 0;
+    for (const auto& [file, material] : shippedPresets()) {
+        const bool coat = material.clearcoat > 0.0f, sheen = material.sheenColor != glm::vec3(0.0f);
+        coated += coat;
+        sheened += sheen;
+        if (coat || sheen) {
+            EXPECT_EQ(material.model, BrdfModelId::Gltf) << file;
+        }
+    }
+    EXPECT_GE(coated, 1);
+    EXPECT_GE(sheened, 1);
+}
+
 }  // namespace
 }  // namespace patina
 
