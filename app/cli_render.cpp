@@ -30,11 +30,12 @@ extern "C" void stopAfterThisPass(int) {
 
 // The ground truth through pixel centres, pass by pass (reference/reference_render.h), with the
 // progress on stderr; stoppable with Ctrl+C.
-RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int height, int samples) {
+RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int height, int samples, bool visibility) {
     const Scene& scene = prepared.scene;
     const PixelSurfaces surfaces = rasterizeSurfaces(prepared, width, height);
     ReferenceRenderOptions options;
     options.samplesPerPixel = samples;
+    options.visibility = visibility;
     options.samplesPerPass = std::min(samples, 16);
     const auto start = std::chrono::steady_clock::now();
     const bool terminal = isatty(STDERR_FILENO) != 0;
@@ -103,6 +104,7 @@ struct RenderOptions {
     std::string out, hdr;
     bool reference = false;
     int referenceSamples = 256;
+    bool visibility = false;
     std::string channel;
     bool channelSrgb = false;
     bool pbrStrict = false;
@@ -112,12 +114,17 @@ void addRenderOptions(CLI::App& command, RenderOptions& options) {
     options.picture.addOptions(command);
     command.add_option("--out", options.out, "Output PNG")->required();
     command.add_option("--hdr", options.hdr, "Also write the linear image (PFM), before exposure and tone map");
-    command.add_flag("--reference", options.reference,
-                     "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights "
-                     "exactly), pass by pass; Ctrl+C writes what is done");
+    CLI::Option* reference = command.add_flag(
+        "--reference", options.reference,
+        "The ground truth instead: each pixel centre by Monte Carlo (the environment by MIS, the lights exactly), pass "
+        "by pass; Ctrl+C writes what is done");
     command.add_option("--reference-samples", options.referenceSamples,
                        "--reference: estimator iterations per pixel (3 directions each)")
         ->check(CLI::Range(1, 1 << 20));
+    command.add_flag("--visibility", options.visibility,
+                     "--reference: with shadows and occlusion, every light and the environment blocked by the scene's "
+                     "own surfaces (shadow rays through Embree); hemisphere lights are not shadowed")
+        ->needs(reference);
     command.add_option("--channel", options.channel,
                        "A debug channel instead of the radiance, as data (no exposure or tone map; docs/INSPECTOR.md): " +
                             channelNameList())
@@ -161,7 +168,8 @@ void runRender(const RenderOptions& options) {
     const LoadedScene loaded(options.picture.inputs, context ? prefilterCubeOnGpu : prefilterCube);
     const PreparedScene& prepared = loaded.prepared;
     writeRenderOutput(options, options.reference ? renderReferenceImage(prepared, options.picture.width,
-                                                                        options.picture.height, options.referenceSamples)
+                                                                        options.picture.height, options.referenceSamples,
+                                                                        options.visibility)
                                                  : Renderer().render(prepared, options.picture.settings(!options.hdr.empty())));
 }
 }  // namespace

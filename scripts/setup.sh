@@ -15,6 +15,8 @@ packages=(
   # meshoptimizer decodes EXT_meshopt_compression's buffer views (engine/gltf/meshopt.cpp),
   # libwebp EXT_texture_webp's images (engine/gltf/images.cpp).
   libmeshoptimizer-dev libwebp-dev
+  # Embree 3 casts the ground truth's shadow and occlusion rays (engine/reference/ray_caster.cpp).
+  libembree-dev
   xvfb xdotool
   # The editor's UI font, the captions' and the charts' (DejaVu Sans, read at run time), Droid
   # Sans Fallback for the CJK characters DejaVu lacks (fontconfig finds it for a caption), and

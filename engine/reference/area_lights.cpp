@@ -232,13 +232,22 @@ double lightPdf(const PreparedAreaLight& light, glm::dvec3 x, glm::dvec3 L) {
 struct AreaLightIntegrand {
     BrdfModelId model;
     const shader::SurfaceMaterial& material;
-    glm::vec3 N, V;
+    glm::vec3 P, N, V;
     const ReferenceOptions& options;
     ReferenceLayers layers;
 
+    // Whether the light's surface along L is in sight of P (options.occluders).
+    bool sees(const PreparedAreaLight& light, glm::dvec3 L) const {
+        if (!options.occluders) {
+            return true;
+        }
+        const SurfaceHit hit = firstHit(light.shape, glm::dvec3(P), L);
+        return hit.found && unoccluded(options.occluders, P, N, glm::vec3(L), float(hit.distance));
+    }
+
     glm::dvec3 operator()(const PreparedAreaLight& light, glm::dvec3 L) const {
         const float NoL = float(glm::dot(glm::dvec3(N), L));
-        if (!(NoL > 0.0f)) {
+        if (!(NoL > 0.0f) || !sees(light, L)) {
             return glm::dvec3(0.0);
         }
         const shader::BrdfValue f = evaluateBrdf(model, material, N, V, glm::vec3(L));
@@ -303,7 +312,7 @@ ReferenceEstimate areaLightReference(BrdfModelId model, const shader::SurfaceMat
         return {};
     }
     const glm::dvec3 x(P);
-    const AreaLightIntegrand integrand{model, material, N, V, options,
+    const AreaLightIntegrand integrand{model, material, P, N, V, options,
                                        {referenceCoat(options, N, V), referenceSheen(options, N, V)}};
     std::mt19937_64 random(options.seed ^ 0xA5EA11A5EA11A5EAull);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);

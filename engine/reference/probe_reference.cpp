@@ -21,7 +21,8 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
                                          const std::vector<int32_t>& materialOfSample,
                                          const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
-                                         uint64_t pass, const std::vector<float>& occlusion) {
+                                         uint64_t pass, const std::vector<float>& occlusion,
+                                         const RayCaster* occluders) {
     std::vector<shader::SurfaceMaterial> surfaces;
     for (const MaterialParameters& material : materials) {
         surfaces.push_back(surfaceMaterial(material));
@@ -42,6 +43,7 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         options.samples = samplesPerRow;
         options.seed = 0x9E3779B97F4A7C15ull * (i + 1) + 0xD1B54A32D192ED03ull * pass;
         options.indirectOcclusion = occlusion.empty() ? 1.0f : occlusion[i];
+        options.occluders = occluders;
         const size_t m = size_t(materialOfSample[i]);
         options.clearcoat = materials[m].clearcoat;
         options.clearcoatRoughness = materials[m].clearcoatRoughness;

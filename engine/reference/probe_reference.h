@@ -9,6 +9,8 @@
 
 namespace patina {
 
+class RayCaster;
+
 // The ground truth of probeOnCpu's rows (scene/probe.h), by referenceRadiance (radiance.h): the
 // lights exactly, the environment by Monte Carlo with `samples` iterations a row, each row with
 // its own seed, on every core. value and standard error per row. Estimates with another `pass` draw other
@@ -23,11 +25,13 @@ std::vector<ReferenceRow> probeReference(const MaterialParameters& material, con
                                          uint64_t pass = 0);
 // The same with each row's own material: samples[i] shaded with materials[materialOfSample[i]]
 // (the same seeds as above, so one material gives the same rows), and where `occlusion` is not
-// empty, its environment and hemisphere light scaled by occlusion[i] (ReferenceOptions).
+// empty, its environment and hemisphere light scaled by occlusion[i] (ReferenceOptions), and
+// with `occluders`, the light each row's point cannot see left out (ReferenceOptions::occluders).
 std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& materials,
                                          const std::vector<int32_t>& materialOfSample,
                                          const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
-                                         uint64_t pass = 0, const std::vector<float>& occlusion = {});
+                                         uint64_t pass = 0, const std::vector<float>& occlusion = {},
+                                         const RayCaster* occluders = nullptr);
 
 }  // namespace patina

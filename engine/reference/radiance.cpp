@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -78,7 +79,7 @@ void addExactLights(glm::vec3& value, BrdfModelId model, const shader::SurfaceMa
     const bool occluded = options.indirectOcclusion != 1.0f;
     std::vector<shader::PackedLight> exact, hemispheres;
     for (const shader::PackedLight& light : lights) {
-        if (!isAreaLight(light)) {
+        if (!isAreaLight(light) && lightReaches(options.occluders, light, P, N)) {
             (occluded && light.type == shader::LIGHT_HEMISPHERE ? hemispheres : exact).push_back(light);
         }
     }
@@ -113,8 +114,8 @@ void addExactLights(glm::vec3& value, BrdfModelId model, const shader::SurfaceMa
 // GGX, cosine and the image's own distribution, and the coat's GGX fourth where there is a coat
 // (balance by the power heuristic, each sample's sum of strategies one value of `moments`).
 SampleMoments environmentMoments(BrdfModelId model, const shader::SurfaceMaterial& material,
-                                 const ReferenceEnvironment& environment, const ReferenceLayers& layers, glm::vec3 N,
-                                 glm::vec3 V, const ReferenceOptions& options) {
+                                 const ReferenceEnvironment& environment, const ReferenceLayers& layers, glm::vec3 P,
+                                 glm::vec3 N, glm::vec3 V, const ReferenceOptions& options) {
     const bool coated = options.clearcoat > 0.0f;
     const shader::Clearcoat& coat = layers.coat;
     const HdrImage& image = environment.environment->image;
@@ -125,7 +126,7 @@ SampleMoments environmentMoments(BrdfModelId model, const shader::SurfaceMateria
     };
     auto integrand = [&](glm::vec3 L) {
         const float NoL = glm::dot(N, L);
-        if (NoL <= 0.0f) {
+        if (NoL <= 0.0f || !unoccluded(options.occluders, P, N, L, std::numeric_limits<float>::infinity())) {
             return glm::vec3(0.0f);
         }
         const shader::BrdfValue f = evaluateBrdfUnderEnvironment(model, material, N, V, L);
@@ -184,7 +185,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
     }
-    const SampleMoments moments = environmentMoments(model, material, environment, layers, N, V, options);
+    const SampleMoments moments = environmentMoments(model, material, environment, layers, P, N, V, options);
     const double n = double(options.samples);
     const double occlusion = options.indirectOcclusion;
     const glm::dvec3 variance = moments.varianceOfMean(n) * (occlusion * occlusion);

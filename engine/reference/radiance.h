@@ -7,6 +7,7 @@
 
 #include "environment/environment.h"
 #include "reference/environment_distribution.h"
+#include "reference/ray_caster.h"
 #include "shading/brdf_model_id.h"
 #include "shading/shading.h"
 
@@ -39,6 +40,11 @@ struct ReferenceOptions {
     // estimate takes the extension's sheened BRDF sample by sample, E at N.V and N.L.
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
+    // What blocks the light (the scene's triangles, ray_caster.h): each point and directional
+    // light by one shadow ray, every sample of the environment and of sphere and tube lights by
+    // its own; hemisphere lights, which have no direction, are not shadowed. Null: nothing
+    // blocks anything, the estimate of a point alone in its lights.
+    const RayCaster* occluders = nullptr;
 };
 
 struct ReferenceEstimate {

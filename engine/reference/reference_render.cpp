@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "environment/environment.h"
 #include "reference/probe_reference.h"
+#include "reference/ray_caster.h"
 #include "shading/environment_brdf.h"
 
 namespace patina {
@@ -57,14 +59,19 @@ ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurface
         ownMaterial.resize(surfaces.samples.size());
         std::iota(ownMaterial.begin(), ownMaterial.end(), 0);
     }
+    std::optional<RayCaster> occluders;
+    if (options.visibility) {
+        occluders.emplace(prepared.mesh->positions, prepared.mesh->indices);
+    }
+    const RayCaster* blocking = occluders ? &*occluders : nullptr;
     const int perPass = std::max(1, options.samplesPerPass);
     for (uint64_t pass = 0; image.samplesPerPixel < options.samplesPerPixel; ++pass) {
         const int n = std::min(perPass, options.samplesPerPixel - image.samplesPerPixel);
         std::vector<ReferenceRow> rows =
             mapped ? probeReference(surfaces.sampleMaterials, ownMaterial, scene.lights, surfaces.samples, environment, n,
-                                    pass, surfaces.occlusion)
+                                    pass, surfaces.occlusion, blocking)
                    : probeReference(surfaces.materials, surfaces.drawOfSample, scene.lights, surfaces.samples,
-                                    environment, n, pass);
+                                    environment, n, pass, {}, blocking);
         for (size_t i = 0; i < surfaces.emission.size(); ++i) {
             rows[i].value += surfaces.emission[i];   // exact: no error added
         }
