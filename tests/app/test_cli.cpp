@@ -83,6 +83,39 @@ TEST_F(Cli, TheReferenceRenderConvergesToTheRender) {
     EXPECT_NEAR(sumReference / sumSplit, 1.0, 0.05);
 }
 
+// `render --reference --visibility` (issue 37): a floor under a small roof, in the default scene's
+// lights and studio, takes the roof's shadow and occlusion, so the picture's light drops; the
+// flag without --reference is refused by name.
+TEST_F(Cli, TheReferenceWithVisibilityShadowsWhatStandsInTheWay) {
+    test::GltfBuilder model;
+    const auto quad = [&](float y, float half) {
+        const int positions = model.positions({{-half, y, half}, {half, y, half}, {half, y, -half}, {-half, y, -half}});
+        const int normals = model.positions({{0, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}});
+        const int indices = model.data(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, test::kUnsignedShort, "SCALAR", 1);
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}, {"indices", indices}});
+    };
+    quad(0.0f, 2.0f);
+    quad(0.4f, 0.6f);
+    model.writeGlb(path("roofed.glb"));
+    const std::string common = "render --mesh " + path("roofed.glb").string() +
+                               " --width 64 --height 48 --reference --reference-samples 16 --out ";
+    ASSERT_EQ(run(common + path("open.png").string() + " --hdr " + path("open.pfm").string()).exitCode, 0);
+    const test::CliRun shadowed = run(common + path("seen.png").string() + " --hdr " + path("seen.pfm").string() +
+                                      " --visibility");
+    ASSERT_EQ(shadowed.exitCode, 0) << shadowed.stderrText;
+    const HdrImage open = decodePfm(readFileBytes(path("open.pfm")));
+    const HdrImage seen = decodePfm(readFileBytes(path("seen.pfm")));
+    double sumOpen = 0.0, sumSeen = 0.0;
+    for (size_t i = 0; i < open.rgb.size(); ++i) {
+        sumOpen += open.rgb[i];
+        sumSeen += seen.rgb[i];
+    }
+    EXPECT_LT(sumSeen, 0.97 * sumOpen);
+    const test::CliRun alone = run("render --visibility --out " + path("x.png").string());
+    EXPECT_NE(alone.exitCode, 0);
+    EXPECT_NE(alone.stderrText.find("--reference"), std::string::npos) << alone.stderrText;
+}
+
 // The ground truth measures the coat (KHR_materials_clearcoat): `render --reference` of a coated
 // `gltf` sphere in the default studio (its lights and environment) takes the coated BRDF sample
 // by sample, and the split sum's render is within the same 5% of it as the bare material's;
