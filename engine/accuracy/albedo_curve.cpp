@@ -8,8 +8,10 @@
 #include "common/luminance.h"
 #include "common/parallel_for.h"
 #include "environment/builtin_environments.h"
+#include "environment/cube_map.h"
 #include "environment/environment.h"
 #include "reference/radiance.h"
+#include "shading/channel_inputs.h"
 #include "shading/cpu_shading.h"
 
 namespace patina {
@@ -21,6 +23,31 @@ const Environment& whiteFurnace() {
     static const std::shared_ptr<const Environment> white =
         prepareEnvironment(*builtinEnvironment("white"), builtinSource("white"));
     return *white;
+}
+bool layered(const MaterialParameters& material) {
+    return material.clearcoat > 0.0f || material.sheenColor != glm::vec3(0.0f);
+}
+
+// A material with a coat or a sheen as the renderer shades it under the furnace: the CPU twin's
+// radiance (shade.frag's environment with its layers, channel_inputs.h), no lights.
+glm::vec3 layeredProduct(const MaterialParameters& material, const Environment& white, glm::vec3 N, glm::vec3 V) {
+    ChannelPoint point;
+    point.baseColor = material.baseColor;
+    point.roughness = material.roughness;
+    point.alpha = 1.0f;
+    point.specular = material.specular;
+    point.metallic = material.metallic;
+    point.geometryNormal = point.N = N;
+    point.V = V;
+    point.clearcoat = material.clearcoat;
+    point.clearcoatRoughness = material.clearcoatRoughness;
+    point.sheenColor = material.sheenColor;
+    point.sheenRoughness = material.sheenRoughness;
+    ChannelEnvironment environment;
+    environment.prefiltered = [&white](glm::vec3 d, float lod) { return sampleCube(white.prefiltered, d, lod); };
+    environment.maxLod = white.maxLod();
+    environment.irradiance = irradianceReader(white);
+    return gatherChannelInputs(material.model, point, {}, -1, -1, &environment).radiance;
 }
 }  // namespace
 
@@ -34,10 +61,15 @@ AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, in
     const glm::vec3 V(std::sin(theta), 0.0f, std::cos(theta));
     AlbedoPoint point;
     point.thetaVDegrees = thetaVDegrees;
-    point.product = shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
+    point.product = layered(material) ? layeredProduct(material, white, N, V)
+                                      : shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
     ReferenceOptions options;
     options.samples = samples;
     options.seed = seed;
+    options.clearcoat = material.clearcoat;
+    options.clearcoatRoughness = material.clearcoatRoughness;
+    options.sheenColor = material.sheenColor;
+    options.sheenRoughness = material.sheenRoughness;
     const ReferenceEstimate truth = referenceRadiance(material.model, surface, reference, {}, glm::vec3(0.0f), N, V,
                                                       options);
     point.truth = truth.value;

@@ -14,6 +14,7 @@
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
 #include "shading/environment_brdf.h"
+#include "shading/layered_brdf.h"
 
 namespace patina {
 
@@ -53,19 +54,10 @@ bool hasReferenceSheen(const ReferenceOptions& options) {
 
 glm::vec3 coatedBrdf(const shader::BrdfValue& f, const ReferenceLayers& layers, glm::vec3 N, glm::vec3 V,
                      glm::vec3 L, const ReferenceOptions& options) {
-    glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
-                      (options.specular ? f.specular : glm::vec3(0.0f));
-    if (hasReferenceSheen(options)) {
-        // The extension's f_sheen + f_base sheenAlbedoScaling, E at N.V and N.L both.
-        const glm::vec3 lobe = options.specular ? shader::sheenBrdf(layers.sheen, N, V, L) : glm::vec3(0.0f);
-        lobes = shader::sheenOver(lobes, shader::SheenShare(lobe, shader::sheenBaseWeight(layers.sheen, glm::dot(N, L))));
-    }
-    if (options.clearcoat <= 0.0f) {
-        return lobes;
-    }
-    const shader::Clearcoat& coat = layers.coat;
-    const float layer = options.specular ? shader::clearcoatBrdf(coat, V, L) : 0.0f;
-    return shader::clearcoatOver(lobes, glm::vec3(layer), coat);
+    const glm::vec3 lobes = (options.diffuse ? f.diffuse : glm::vec3(0.0f)) +
+                            (options.specular ? f.specular : glm::vec3(0.0f));
+    const BrdfLayers over{options.clearcoat > 0.0f, hasReferenceSheen(options), layers.coat, layers.sheen};
+    return layeredBrdf(lobes, over, N, V, L, options.specular);
 }
 
 namespace {

@@ -1,10 +1,12 @@
 #include "shading/lobe.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
+#include "shading/layered_brdf.h"
 
 namespace patina {
 
@@ -20,24 +22,38 @@ std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float t
         const float thetaOut = glm::radians(thetaOutDegrees);
         const glm::vec3 V(std::sin(thetaOut), 0.0f, std::cos(thetaOut));
         const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
-        lobe.push_back({thetaOutDegrees, f.diffuse, f.specular});
+        const BrdfLayers layers = brdfLayers(material, N, V);
+        const glm::vec3 diffuse = layeredBrdf(f.diffuse, layers, N, V, L, false);
+        const glm::vec3 specular = layeredBrdf(f.specular, layers, N, V, L, false);
+        // The layers' own terms alone (the sheen's under the coat): layeredBrdf is linear in the
+        // base's lobes, so over no base it is what the layers add.
+        const glm::vec3 own = layeredBrdf(glm::vec3(0.0f), layers, N, V, L);
+        lobe.push_back({thetaOutDegrees, diffuse, specular, own});
     }
     return lobe;
 }
 
 std::string formatLobeCsv(const std::vector<LobeSample>& lobe) {
-    std::string out =
-        "theta_out_deg,diffuse_r,diffuse_g,diffuse_b,specular_r,specular_g,specular_b,"
-        "total_r,total_g,total_b\n";
-    char row[256];
+    const bool layered =
+        std::any_of(lobe.begin(), lobe.end(), [](const LobeSample& sample) { return sample.layers != glm::vec3(0.0f); });
+    std::string out = "theta_out_deg,diffuse_r,diffuse_g,diffuse_b,specular_r,specular_g,specular_b,";
+    out += layered ? "layers_r,layers_g,layers_b,total_r,total_g,total_b\n" : "total_r,total_g,total_b\n";
+    char cell[32];
     for (const LobeSample& sample : lobe) {
-        const glm::vec3 t = sample.total();
-        std::snprintf(row, sizeof row, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-                      double(sample.thetaOutDegrees), double(sample.diffuse.r),
-                      double(sample.diffuse.g), double(sample.diffuse.b),
-                      double(sample.specular.r), double(sample.specular.g),
-                      double(sample.specular.b), double(t.r), double(t.g), double(t.b));
-        out += row;
+        std::vector<glm::vec3> columns{sample.diffuse, sample.specular};
+        if (layered) {
+            columns.push_back(sample.layers);
+        }
+        columns.push_back(sample.total());
+        std::snprintf(cell, sizeof cell, "%.9g", double(sample.thetaOutDegrees));
+        out += cell;
+        for (const glm::vec3& column : columns) {
+            for (int c = 0; c < 3; ++c) {
+                std::snprintf(cell, sizeof cell, ",%.9g", double(column[c]));
+                out += cell;
+            }
+        }
+        out += "\n";
     }
     return out;
 }

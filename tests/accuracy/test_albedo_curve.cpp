@@ -46,6 +46,39 @@ TEST(AlbedoCurve, TheSplitSumFollowsTheTruthUnderTheWhiteFurnace) {
     EXPECT_LT(normal.truth.x, 0.6f);
 }
 
+// Issue 36: the albedo view draws a part's layers. A white dielectric under a full clear coat
+// or a white sheen: the truth integrates the layered BRDF (coatedBrdf), the product is the CPU
+// twin of shade.frag with its layers; they agree as the bare material's do, and each differs
+// from the bare material's own curve by what the layer adds or takes.
+TEST(AlbedoCurve, TheCurvesCarryTheLayers) {
+    MaterialParameters bare;
+    bare.model = BrdfModelId::Gltf;
+    bare.baseColor = glm::vec3(0.2f);
+    bare.roughness = 0.6f;
+    MaterialParameters coated = bare;
+    coated.clearcoat = 1.0f;
+    coated.clearcoatRoughness = 0.1f;
+    MaterialParameters sheened = bare;
+    sheened.sheenColor = glm::vec3(1.0f);
+    sheened.sheenRoughness = 0.5f;
+    const std::vector<AlbedoPoint> plain = albedoCurve(bare, 4, 1024);
+    for (const MaterialParameters& material : {coated, sheened}) {
+        const std::vector<AlbedoPoint> curve = albedoCurve(material, 4, 1024);
+        for (size_t i = 0; i < curve.size(); ++i) {
+            const AlbedoPoint& p = curve[i];
+            EXPECT_NEAR(p.product.x, p.truth.x, 0.03f + 3.0f * p.standardError.x)
+                << material.clearcoat << " at " << p.thetaVDegrees;
+            EXPECT_LE(p.truth.x, 1.0f + 3.0f * p.standardError.x);
+        }
+        // Grazing, over a dark base, the coat's and the fibres' own reflection add more than
+        // they take, in the truth and the product alike (at normal view a sheen takes about
+        // what it adds).
+        const AlbedoPoint& grazing = curve.back();
+        EXPECT_GT(grazing.truth.x, plain.back().truth.x + 3.0f * (grazing.standardError.x + plain.back().standardError.x));
+        EXPECT_GT(grazing.product.x, plain.back().product.x + 0.02f);
+    }
+}
+
 // The chart names each material's two series in full and carries the truth's errors as bars.
 TEST(AlbedoCurve, TheChartCarriesTheTruthsErrorBars) {
     MaterialParameters gold;

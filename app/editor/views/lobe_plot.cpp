@@ -8,6 +8,7 @@
 #include "common/luminance.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
+#include "shading/layered_brdf.h"
 #include "shading/lobe.h"
 #include "shading/shading.h"
 
@@ -114,7 +115,7 @@ std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interac
                 const float phi = glm::radians(360.0f * float(meridian) / float(kLobeMeridians));
                 const glm::vec3 V(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
                 const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
-                v.push_back(luminance(f.diffuse + f.specular) * cosine);
+                v.push_back(luminance(layeredBrdf(f.diffuse + f.specular, brdfLayers(material, N, V), N, V, L)) * cosine);
                 lobe3d.points.push_back(V);
                 maxValue = std::max(maxValue, v.back());
             }

@@ -1,0 +1,83 @@
+// The lobe views with layers (issue 36): evaluateLobe's samples under a clear coat and a sheen
+// (shading/layered_brdf.h), the same composition the ground truth integrates. A bare material's
+// lobe and its CSV are what they always were.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "shading/brdf_models.h"
+#include "shading/cpu_shading.h"
+#include "shading/layered_brdf.h"
+#include "shading/lobe.h"
+
+namespace patina {
+namespace {
+
+constexpr int kSamples = 181;   // one a degree: sample i at i - 90 degrees
+
+MaterialParameters gltfBase() {
+    MaterialParameters material;
+    material.model = BrdfModelId::Gltf;
+    material.baseColor = {0.5f, 0.1f, 0.1f};
+    material.roughness = 0.5f;
+    return material;
+}
+
+TEST(LayeredLobe, ABareMaterialHasNoLayersAndItsCsvIsUnchanged) {
+    const MaterialParameters bare = gltfBase();
+    const std::vector<LobeSample> lobe = evaluateLobe(bare, 30.0f, kSamples);
+    const shader::SurfaceMaterial surface = surfaceMaterial(bare);
+    for (const LobeSample& sample : lobe) {
+        EXPECT_EQ(sample.layers, glm::vec3(0.0f));
+        const float t = glm::radians(sample.thetaOutDegrees);
+        const shader::BrdfValue f = evaluateBrdf(bare.model, surface, {0, 0, 1}, {std::sin(t), 0, std::cos(t)},
+                                                 {std::sin(glm::radians(30.0f)), 0, std::cos(glm::radians(30.0f))});
+        EXPECT_EQ(sample.diffuse, f.diffuse);
+        EXPECT_EQ(sample.specular, f.specular);
+    }
+    EXPECT_EQ(formatLobeCsv(lobe).substr(0, formatLobeCsv(lobe).find('\n')),
+              "theta_out_deg,diffuse_r,diffuse_g,diffuse_b,specular_r,specular_g,specular_b,total_r,total_g,total_b");
+}
+
+// KHR_materials_clearcoat: the base's lobes are what 1 - clearcoat fr_c(N.V) lets through, and
+// the coat's own lobe peaks at the mirror direction, over the rough base's there.
+TEST(LayeredLobe, ACoatWeighsTheBaseByItsFresnelAndAddsItsMirrorLobe) {
+    const MaterialParameters bare = gltfBase();
+    MaterialParameters coated = bare;
+    coated.clearcoat = 1.0f;
+    coated.clearcoatRoughness = 0.05f;
+    const std::vector<LobeSample> under = evaluateLobe(bare, 30.0f, kSamples);
+    const std::vector<LobeSample> lobe = evaluateLobe(coated, 30.0f, kSamples);
+    for (size_t i = 10; i + 10 < lobe.size(); ++i) {
+        const float NoV = std::cos(glm::radians(lobe[i].thetaOutDegrees));
+        const float through = 1.0f - shader::clearcoatFresnel(NoV);
+        EXPECT_NEAR(lobe[i].diffuse.r, under[i].diffuse.r * through, 1e-6f * under[i].diffuse.r) << i;
+        EXPECT_NEAR(lobe[i].specular.r, under[i].specular.r * through, 1e-5f * under[i].specular.r + 1e-9f) << i;
+        EXPECT_EQ(lobe[i].total(), lobe[i].diffuse + lobe[i].specular + lobe[i].layers);
+    }
+    const LobeSample& mirror = lobe[60];   // -30 degrees
+    ASSERT_EQ(mirror.thetaOutDegrees, -30.0f);
+    EXPECT_GT(mirror.layers.r, 10.0f * mirror.specular.r);
+    EXPECT_GT(mirror.layers.r, 100.0f * lobe[120].layers.r) << "the coat's lobe is narrow";
+    const std::string csv = formatLobeCsv(lobe);
+    EXPECT_NE(csv.find("layers_r,layers_g,layers_b,total_r"), std::string::npos);
+}
+
+// KHR_materials_sheen: the fibres' lobe grows towards grazing, and takes from the base there.
+TEST(LayeredLobe, ASheenGrowsTowardsGrazingAndTakesFromTheBase) {
+    const MaterialParameters bare = gltfBase();
+    MaterialParameters sheened = bare;
+    sheened.sheenColor = glm::vec3(1.0f);
+    sheened.sheenRoughness = 0.4f;
+    const std::vector<LobeSample> under = evaluateLobe(bare, 30.0f, kSamples);
+    const std::vector<LobeSample> lobe = evaluateLobe(sheened, 30.0f, kSamples);
+    EXPECT_GT(lobe[175].layers.r, 5.0f * lobe[90].layers.r) << "85 degrees against normal";
+    for (size_t i = 1; i + 1 < lobe.size(); ++i) {
+        EXPECT_LE(lobe[i].diffuse.r, under[i].diffuse.r) << i;
+        EXPECT_GE(lobe[i].layers.r, 0.0f) << i;
+    }
+    EXPECT_LT(lobe[175].diffuse.r, under[175].diffuse.r);
+}
+
+}  // namespace
+}  // namespace patina
