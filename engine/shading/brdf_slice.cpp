@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "shading/brdf_models.h"
+#include "shading/layered_brdf.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
 
@@ -51,10 +52,15 @@ BrdfSlice brdfSlice(const MaterialParameters& material, float phiDDegrees, int s
             if (pair.L.z <= 0.0f || pair.V.z <= 0.0f) {
                 continue;   // no light arrives from below the surface, none leaves below it
             }
-            const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, glm::normalize(pair.V),
-                                                     glm::normalize(pair.L));
+            const glm::vec3 V = glm::normalize(pair.V), L = glm::normalize(pair.L);
+            const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
+            // A clear coat's or a sheen's own terms belong to the specular and total slices; the
+            // base's lobes are what gets through them (layered_brdf.h).
+            const BrdfLayers layers = brdfLayers(material, N, V);
+            const glm::vec3 diffuse = layeredBrdf(f.diffuse, layers, N, V, L, false);
+            const glm::vec3 specular = layeredBrdf(f.specular, layers, N, V, L);
             slice.values[size_t(y) * size_t(size) + size_t(x)] =
-                lobe == SliceLobe::Diffuse ? f.diffuse : lobe == SliceLobe::Specular ? f.specular : f.diffuse + f.specular;
+                lobe == SliceLobe::Diffuse ? diffuse : lobe == SliceLobe::Specular ? specular : diffuse + specular;
         }
     }
     return slice;

@@ -1,11 +1,13 @@
 // The lobe views with layers (issue 36): evaluateLobe's samples under a clear coat and a sheen
 // (shading/layered_brdf.h), the same composition the ground truth integrates. A bare material's
 // lobe and its CSV are what they always were.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "shading/brdf_models.h"
+#include "shading/brdf_slice.h"
 #include "shading/cpu_shading.h"
 #include "shading/layered_brdf.h"
 #include "shading/lobe.h"
@@ -77,6 +79,37 @@ TEST(LayeredLobe, ASheenGrowsTowardsGrazingAndTakesFromTheBase) {
         EXPECT_GE(lobe[i].layers.r, 0.0f) << i;
     }
     EXPECT_LT(lobe[175].diffuse.r, under[175].diffuse.r);
+}
+
+// BRDF Explorer's slice of a coated material: the coat's narrow lobe at theta_h = 0 in the
+// specular and total slices, the diffuse slice the base's through the coat (a bare material's
+// slices are unchanged: ALambertLobe... in test_brdf_slice.cpp).
+TEST(LayeredLobe, TheSliceShowsTheCoatsLobeAtThetaHZero) {
+    MaterialParameters coated = gltfBase();
+    coated.roughness = 0.7f;
+    MaterialParameters bare = coated;
+    coated.clearcoat = 1.0f;
+    coated.clearcoatRoughness = 0.15f;
+    const int size = 32;
+    const BrdfSlice plain = brdfSlice(bare, 90.0f, size, SliceLobe::Specular);
+    const BrdfSlice layered = brdfSlice(coated, 90.0f, size, SliceLobe::Specular);
+    const BrdfSlice diffuse = brdfSlice(coated, 90.0f, size, SliceLobe::Diffuse);
+    const BrdfSlice plainDiffuse = brdfSlice(bare, 90.0f, size, SliceLobe::Diffuse);
+    float layeredPeak = 0.0f, plainPeak = 0.0f;
+    for (size_t i = 0; i < layered.values.size(); ++i) {
+        layeredPeak = std::max(layeredPeak, layered.values[i].g);
+        plainPeak = std::max(plainPeak, plain.values[i].g);
+        if (plainDiffuse.values[i].r > 0.0f) {   // above the horizon
+            EXPECT_LT(diffuse.values[i].r, plainDiffuse.values[i].r) << i;
+        }
+    }
+    EXPECT_GT(layeredPeak, 10.0f * plainPeak);
+    // The peak lies in the first column, theta_h = 0.
+    size_t peak = 0;
+    for (size_t i = 0; i < layered.values.size(); ++i) {
+        peak = layered.values[i].g > layered.values[peak].g ? i : peak;
+    }
+    EXPECT_EQ(peak % size_t(size), 0u);
 }
 
 }  // namespace
