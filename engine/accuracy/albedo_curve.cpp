@@ -31,18 +31,9 @@ bool layered(const MaterialParameters& material) {
 // A material with a coat or a sheen as the renderer shades it under the furnace: the CPU twin's
 // radiance (shade.frag's environment with its layers, channel_inputs.h), no lights.
 glm::vec3 layeredProduct(const MaterialParameters& material, const Environment& white, glm::vec3 N, glm::vec3 V) {
-    ChannelPoint point;
-    point.baseColor = material.baseColor;
-    point.roughness = material.roughness;
-    point.alpha = 1.0f;
-    point.specular = material.specular;
-    point.metallic = material.metallic;
+    ChannelPoint point = channelPointOf(material);
     point.geometryNormal = point.N = N;
     point.V = V;
-    point.clearcoat = material.clearcoat;
-    point.clearcoatRoughness = material.clearcoatRoughness;
-    point.sheenColor = material.sheenColor;
-    point.sheenRoughness = material.sheenRoughness;
     ChannelEnvironment environment;
     environment.prefiltered = [&white](glm::vec3 d, float lod) { return sampleCube(white.prefiltered, d, lod); };
     environment.maxLod = white.maxLod();

@@ -14,15 +14,7 @@ ChannelPoint channelPoint(const PixelSurfaces& surfaces, const std::vector<Scene
     const size_t draw = size_t(surfaces.drawOfSample[i]);
     const bool mapped = !surfaces.sampleMaterials.empty();
     const MaterialParameters& material = mapped ? surfaces.sampleMaterials[i] : surfaces.materials[draw];
-    ChannelPoint point;
-    point.baseColor = material.baseColor;
-    point.roughness = material.roughness;
-    point.specular = material.specular;
-    point.metallic = material.metallic;
-    point.clearcoat = material.clearcoat;
-    point.clearcoatRoughness = material.clearcoatRoughness;
-    point.sheenColor = material.sheenColor;
-    point.sheenRoughness = material.sheenRoughness;
+    ChannelPoint point = channelPointOf(material);
     point.alpha = mapped ? surfaces.alpha[i] : draws[draw].alpha;
     if (mapped) {
         point.occlusion = surfaces.occlusion[i];

@@ -241,6 +241,19 @@ double specularLobeF64(BrdfModelId id, double roughness, glm::dvec3 N, glm::dvec
     return 0.0;
 }
 
+ChannelPoint channelPointOf(const MaterialParameters& material) {
+    ChannelPoint point;
+    point.baseColor = material.baseColor;
+    point.roughness = material.roughness;
+    point.specular = material.specular;
+    point.metallic = material.metallic;
+    point.clearcoat = material.clearcoat;
+    point.clearcoatRoughness = material.clearcoatRoughness;
+    point.sheenColor = material.sheenColor;
+    point.sheenRoughness = material.sheenRoughness;
+    return point;
+}
+
 shader::ChannelInputs gatherChannelInputs(BrdfModelId id, const ChannelPoint& point,
                                           const std::vector<shader::PackedLight>& lights, int asked, int key,
                                           const ChannelEnvironment* environment) {

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "shading/material_parameters.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -32,6 +33,10 @@ struct ChannelPoint {
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
 };
+
+// A point of `material`'s factors (its maps already applied, if any), the rest at ChannelPoint's
+// defaults: the caller places it (normals, V, P) and adds what its maps gave.
+ChannelPoint channelPointOf(const MaterialParameters& material);
 
 // The point's layers as shade.frag derives them for a part that has them (PATINA_CLEARCOAT,
 // PATINA_SHEEN); a factor of 0 is none, which shades the same as the layer at 0.
