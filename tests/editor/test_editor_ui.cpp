@@ -238,6 +238,44 @@ TEST_F(EditorUi, APartsSheenIsDraggedOnUndoneAndSaved) {
     EXPECT_TRUE(itemsOfLastFrame().count("Sheen roughness"));
 }
 
+// Issue 36: a layer is put on or taken off a part whole, each one step to undo: Add coat gives a
+// full, nearly smooth coat; Remove coat takes both factors to 0; the same for the sheen.
+TEST_F(EditorUi, ALayerIsAddedAndRemovedWholeInOneStep) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    click(centreOf("Clearcoat"));
+    frames(1);
+    const LdrImage bare = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Add coat"));
+    frames(1);
+    Material part = modelMaterial(state_, state_.scene, 0);
+    EXPECT_EQ(part.clearcoat, 1.0f);
+    EXPECT_EQ(part.clearcoatRoughness, 0.03f);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    EXPECT_GT(differingPixels(bare, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    EXPECT_TRUE(itemsOfLastFrame().count("Remove coat"));
+    click(centreOf("Remove coat"));
+    part = modelMaterial(state_, state_.scene, 0);
+    EXPECT_EQ(part.clearcoat, 0.0f);
+    EXPECT_EQ(part.clearcoatRoughness, 0.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 2u);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).clearcoatRoughness, 0.03f) << "the coat back whole";
+    click(centreOf("Sheen"));
+    frames(1);
+    click(centreOf("Add sheen"));
+    part = modelMaterial(state_, state_.scene, 0);
+    EXPECT_EQ(part.sheenColor, glm::vec3(0.5f));
+    EXPECT_EQ(part.sheenRoughness, 0.5f);
+    frames(1);
+    click(centreOf("Remove sheen"));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.0f));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenRoughness, 0.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.5f));
+}
+
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     const size_t before = state_.scene.lights.size();
     click(centreOf("Add point"));

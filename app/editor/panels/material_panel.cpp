@@ -1,4 +1,7 @@
 #include <algorithm>
+#include <string>
+#include <tuple>
+#include <utility>
 
 #include <imgui.h>
 
@@ -139,6 +142,22 @@ void drawFactors(Material& material, const Material& file, const Material& defau
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
 }
 
+// A layer put on or taken off the part whole, in one step to undo: `on` holds its factors as
+// added (a visible layer to tune from), `off` as none.
+template <typename Layer>
+void layerButton(const char* add, const char* remove, bool present, const char* what, Layer& factors, Layer on,
+                 Layer off) {
+    const char* label = present ? remove : add;
+    if (ImGui::Button(label)) {
+        factors = present ? off : on;
+    }
+    const std::string tooltip = present ? std::string("Take the ") + what + " off the part (its factors to 0; Ctrl+Z "
+                                                                         "puts it back)"
+                                        : std::string("Put a ") + what + " on the part, to tune from here (Ctrl+Z "
+                                                                         "takes it off)";
+    recordItem(label, tooltip.c_str());
+}
+
 // KHR_materials_clearcoat's two factors in a section of their own under the factors, first
 // shown open where the part has a coat (each part keeps its own open state); its maps are among
 // the part's maps above. A coat of 0 is none.
@@ -148,6 +167,10 @@ void drawClearcoat(Material& material, const Material& file, const Material& def
     const bool open = ImGui::CollapsingHeader("Clearcoat");
     recordItem("Clearcoat", "A clear lacquer over the part (KHR_materials_clearcoat), as on a car's paint");
     if (open) {
+        std::pair<float, float> coat{material.clearcoat, material.clearcoatRoughness};
+        layerButton("Add coat", "Remove coat", material.clearcoat > 0.0f, "clear coat", coat, {1.0f, 0.03f},
+                    {0.0f, 0.0f});
+        std::tie(material.clearcoat, material.clearcoatRoughness) = coat;
         sliderWithReset("Coat", "How much clear coat lies over the part: 0 none, 1 a full coat (index 1.5)",
                         &material.clearcoat, 0.0f, 1.0f, file.clearcoat, defaults.clearcoat);
         sliderWithReset("Coat roughness", "0: the coat's highlight mirror-sharp; 1: broad. Ctrl+click to type",
@@ -166,6 +189,10 @@ void drawSheen(Material& material, const Material& file, const Material& default
     const bool open = ImGui::CollapsingHeader("Sheen");
     recordItem("Sheen", "A fuzz of fibres over the part (KHR_materials_sheen), as on velvet or satin");
     if (open) {
+        std::pair<glm::vec3, float> sheen{material.sheenColor, material.sheenRoughness};
+        layerButton("Add sheen", "Remove sheen", material.sheenColor != glm::vec3(0.0f), "sheen", sheen,
+                    {glm::vec3(0.5f), 0.5f}, {glm::vec3(0.0f), 0.0f});
+        std::tie(material.sheenColor, material.sheenRoughness) = sheen;
         ImGui::TextUnformatted("Sheen colour (sRGB)");
         ImGui::SetNextItemWidth(widthBesideReset(""));
         colorEditLinear("##Sheen colour", "The colour of the light the fibres reflect, brightest at grazing angles: "
