@@ -81,8 +81,41 @@ TEST(ShadowRender, TheFloorUnderTheSphereIsDarkerWithShadowsAndUnchangedFarFromI
                     1e-5f * luminanceAt(without, lit.camera, kFarAway))
             << renderPathName(path);
     }
-    // The floor is lit: brighter than the background where nothing shadows it.
-    EXPECT_GT(luminanceAt(without, lit.camera, kFarAway), 0.5f);
+    // The floor is lit: brighter than the background (luminance 0.286) where nothing shadows it.
+    EXPECT_GT(luminanceAt(without, lit.camera, kFarAway), 0.3f);
+}
+
+// A point light and a sphere light above the sphere, outside its bounds: a perspective map from
+// the light darkens the floor under the sphere; a point light inside the bounds casts none
+// (a cube map's job, not done) and changes nothing.
+TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
+    test::glContext();
+    Renderer renderer;
+    for (LightType type : {LightType::Point, LightType::Sphere}) {
+        Scene lit = sphereOverGround(Ground::Floor, false);
+        lit.lights[0].type = type;
+        lit.lights[0].position = {0.0f, 5.0f, 0.2f};
+        lit.lights[0].intensity = 40.0f;
+        Scene shadowed = lit;
+        shadowed.lights[0].shadows = true;
+        for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
+            const RenderSettings settings = test::renderSettings(kSize, kSize, path, 1);
+            const HdrImage without = renderer.render(test::prepared(lit), settings).hdr;
+            const HdrImage with = renderer.render(test::prepared(shadowed), settings).hdr;
+            EXPECT_LT(luminanceAt(with, shadowed.camera, kUnderSphere), 0.3f * luminanceAt(without, lit.camera, kUnderSphere))
+                << lightTypeName(type) << " " << renderPathName(path);
+            EXPECT_NEAR(luminanceAt(with, shadowed.camera, kFarAway), luminanceAt(without, lit.camera, kFarAway),
+                        1e-5f * luminanceAt(without, lit.camera, kFarAway));
+        }
+    }
+    Scene inside = sphereOverGround(Ground::Floor, true);
+    inside.lights[0].type = LightType::Point;
+    inside.lights[0].position = {0.0f, 0.0f, 0.0f};
+    Scene insideOff = inside;
+    insideOff.lights[0].shadows = false;
+    const RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Single, 1);
+    EXPECT_EQ(renderer.render(test::prepared(inside), settings).hdr.rgb,
+              renderer.render(test::prepared(insideOff), settings).hdr.rgb);
 }
 
 TEST(ShadowRender, TheCatcherDarkensTheBackgroundUnderTheSphereOnlyOnEveryPath) {
