@@ -1956,7 +1956,7 @@ TEST_F(EditorUi, TheToneMapListOffersEveryViewTransform) {
 // each change the picture (the sphere's shadow falls on the floor), and undo takes each back.
 TEST_F(EditorUi, TheGroundListAndALightsShadowsCheckboxChangeThePictureAndUndo) {
     const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
-    click(centreOf("Ground"));
+    click(centreOf("Ground plane"));
     ImVec2 min, max;
     for (const Ground ground : kGrounds) {
         EXPECT_TRUE(itemRect("ground:" + std::string(groundName(ground)), &min, &max)) << groundName(ground);

@@ -166,7 +166,8 @@ void drawGroundControls(DisplaySettings& display) {
         }
         ImGui::EndCombo();
     }
-    recordItem("Ground", "A plane under the model at its lowest point: none, a shadow catcher over the background, "
+    // Named apart from the hemisphere light's Ground colour in the lights panel.
+    recordItem("Ground plane", "A plane under the model at its lowest point: none, a shadow catcher over the background, "
                          "or a floor (saved with the scene)");
     if (display.ground != Ground::Floor) {
         return;
