@@ -14,6 +14,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include "scene/ground.h"
 #include "scene/light_packing.h"
 #include "scene/view.h"
 #include "gl/environment_texture.h"
@@ -24,6 +25,7 @@
 #include "gl/render_targets.h"
 #include "gl/shading_inputs.h"
 #include "gl/shading_programs.h"
+#include "gl/shadow_maps.h"
 
 namespace patina {
 
@@ -96,16 +98,23 @@ struct Renderer::State {
                                  {"PATINA_TEXTURED"}};
     LazyProgram& prepass(bool maps) { return maps ? depthPrepassMaps : depthPrepass; }
     LazyProgram display{{shader_sources::fullscreen_vert}, {shader_sources::display_glsl, shader_sources::display_frag}};
-    std::map<int, LazyProgram> resolves;   // by the sample count the GL made
+    // With a shadow catcher over the flat background (display.frag's PATINA_CAUGHT_BACKGROUND).
+    LazyProgram displayCaught{{shader_sources::fullscreen_vert},
+                              {shader_sources::display_glsl, shader_sources::display_frag},
+                              {"PATINA_CAUGHT_BACKGROUND"}};
+    // By the sample count the GL made, and whether a catcher darkened the flat background.
+    std::map<std::pair<int, bool>, LazyProgram> resolves;
 
-    LazyProgram& resolve(int samples) {
-        auto found = resolves.find(samples);
+    LazyProgram& resolve(int samples, bool caught) {
+        auto found = resolves.find({samples, caught});
         if (found == resolves.end()) {
             const std::vector<const char*> vertex{shader_sources::fullscreen_vert};
             const std::vector<const char*> fragment{shader_sources::display_glsl, shader_sources::display_frag};
-            const std::vector<std::string> defines{"PATINA_MULTISAMPLED",
-                                                   "PATINA_SAMPLE_COUNT " + std::to_string(samples)};
-            found = resolves.try_emplace(samples, vertex, fragment, defines).first;
+            std::vector<std::string> defines{"PATINA_MULTISAMPLED", "PATINA_SAMPLE_COUNT " + std::to_string(samples)};
+            if (caught) {
+                defines.push_back("PATINA_CAUGHT_BACKGROUND");
+            }
+            found = resolves.try_emplace(std::pair{samples, caught}, vertex, fragment, defines).first;
         }
         return found->second;
     }
@@ -134,6 +143,21 @@ struct Renderer::State {
     // reused by another while these stand for it.
     std::vector<std::unique_ptr<MeshBuffers>> primitives;
     ModelTextures textures;   // the shown model's maps' images
+    // The ground (scene/ground.h): the box of the mesh it lies under, taken once per mesh
+    // (`boundsOf` holds the mesh, so its address stands for it), and its plane uploaded.
+    std::shared_ptr<const Mesh> boundsOf;
+    BoundingBox modelBounds;
+    std::optional<GroundPlane> groundPlane;
+    Mesh groundMesh;
+    MeshBuffers groundBuffers;
+    ShadowMaps shadowMaps;
+    const BoundingBox& boundsOfMesh(const std::shared_ptr<const Mesh>& mesh) {
+        if (boundsOf != mesh) {
+            modelBounds = boundingBox(*mesh);
+            boundsOf = mesh;
+        }
+        return modelBounds;
+    }
     std::shared_ptr<const void> shapeShown;
     GLuint emptyVertexArray = 0;
     GLuint timerQueries[2] = {0, 0};   // GL_TIMESTAMP before and after a draw
@@ -255,7 +279,12 @@ struct Renderer::Frame {
 private:
     using Items = std::span<const DrawPlan>;
     void planDraw();
+    void addGround();
+    void assignShadowMaps();
     void choosePrograms();
+    void drawShadowMaps() const;
+    void drawCatcher() const;
+    const MeshBuffers& buffersOf(const SceneDraw& item) const;
     void environmentUniforms(const GlProgram& program) const;
     void prepare(const GlProgram& program) const;   // the per-draw uniforms of a mesh pass
     void clearAroundMesh() const;
@@ -295,7 +324,12 @@ private:
     const RenderSettings& settings;
     RenderTargets& t;
     const int w, h;
-    const std::vector<SceneDraw> draws;   // what is drawn, in the list's order
+    std::vector<SceneDraw> draws;   // what is drawn, in the list's order, the ground last
+    // Ground::Shadow's catcher, drawn after the opaque items and before the blended ones (its
+    // plan taken out of plan.items); only where some light casts a shadow.
+    std::optional<DrawPlan> catcherPlan;
+    const GlProgram* catcherProgram = nullptr;
+    std::vector<ShadowView> shadowViews;   // by layer of the shadow maps
     const Light* environmentLight = nullptr;
     std::shared_ptr<const Environment> environmentMap;
     bool environment = false;
@@ -334,6 +368,7 @@ Renderer::Frame::Frame(State& state, const PreparedScene& prepared, const Render
     : s(state), prepared(prepared), scene(prepared.scene), settings(settings), t(targets), w(settings.width),
       h(settings.height), draws(drawnItems(prepared, settings)) {
     uploadShape(s, prepared);
+    addGround();
     planDraw();
     // Until this draw succeeds the target has nothing to read back.
     t.drawn = false;
@@ -355,7 +390,7 @@ void Renderer::Frame::planDraw() {
     planned.cropToMesh = settings.cropToMesh && !environmentBackground;   // nothing left to fill around the mesh
     std::vector<DrawFacts> facts;
     for (const SceneDraw& item : draws) {
-        const MeshBuffers& buffers = *s.primitives[size_t(item.primitive)];
+        const MeshBuffers& buffers = buffersOf(item);
         facts.push_back({{buffers.bounds(), buffers.culling(), buffers.triangleCount()},
                          item.transform,
                          item.doubleSided,
@@ -366,6 +401,17 @@ void Renderer::Frame::planDraw() {
     const size_t flatSlots = maps ? s.flatLightSlots - std::min<size_t>(s.flatLightSlots, 2) : s.flatLightSlots;
     plan = planFrame(planned, scene.camera, facts, s.maxSamples, flatSlots);
     packed = packEnabledLights(scene.lights);
+    assignShadowMaps();
+    if (scene.display.ground == Ground::Shadow && !draws.empty() && draws.back().primitive < 0) {
+        // The catcher multiplies what is behind it: drawn on its own, between opaque and blended.
+        const auto catcher = std::find_if(plan.items.begin(), plan.items.end(),
+                                          [&](const DrawPlan& item) { return item.item == draws.size() - 1; });
+        catcherPlan = *catcher;
+        plan.items.erase(catcher);
+        if (shadowViews.empty()) {
+            catcherPlan.reset();   // no shadow to catch: the background unchanged
+        }
+    }
     if (settings.channel.channel >= 0) {
         channelLights = patina::channelLights(scene.lights, settings.channel);
     }
@@ -373,10 +419,58 @@ void Renderer::Frame::planDraw() {
     s.lights.bind();
 }
 
+// The ground under the model (DisplaySettings::ground, scene/ground.h) as one more item, last:
+// the floor, opaque with its own material, or the shadow catcher, blended (what is behind it
+// must be there first). A channel shows the floor's data but no catcher, which is no surface.
+void Renderer::Frame::addGround() {
+    const Ground ground = scene.display.ground;
+    if (ground == Ground::None || (ground == Ground::Shadow && settings.channel.channel >= 0)) {
+        return;
+    }
+    const GroundPlane plane = groundUnder(s.boundsOfMesh(prepared.mesh));
+    if (s.groundPlane != plane) {
+        s.groundMesh = groundMesh(plane);
+        s.groundBuffers.upload(s.groundMesh);
+        s.groundPlane = plane;
+    }
+    SceneDraw draw;
+    draw.mesh = &s.groundMesh;
+    draw.primitive = -1;   // buffersOf: the ground's
+    draw.material = groundMaterial(scene.display);
+    draw.doubleSided = false;   // seen from above only
+    draw.blend = ground == Ground::Shadow;
+    draws.push_back(draw);
+}
+
+// Each enabled light with shadows on gets a layer of the shadow maps and its view of the model
+// (its packed row's shadowMap says which), up to kMaxShadowMaps; a light no view can hold
+// (shadowViewOf) casts none. None for a channel, which shows no shadow.
+void Renderer::Frame::assignShadowMaps() {
+    if (settings.channel.channel >= 0 ||
+        std::none_of(scene.lights.begin(), scene.lights.end(), [](const Light& light) { return light.shadows; })) {
+        return;
+    }
+    const BoundingBox& bounds = s.boundsOfMesh(prepared.mesh);
+    const glm::vec3 centre = 0.5f * (bounds.low + bounds.high);
+    const float radius = bounds.empty() ? 0.0f : 0.5f * glm::length(bounds.high - bounds.low);
+    const std::vector<size_t> order = enabledLightOrder(scene.lights);
+    for (size_t i = 0; i < packed.size() && shadowViews.size() < size_t(kMaxShadowMaps); ++i) {
+        if (!scene.lights[order[i]].shadows) {
+            continue;
+        }
+        if (const auto view = shadowViewOf(packed[i], centre, radius, kShadowMapSize)) {
+            shadowViews.push_back(*view);
+            packed[i].shadowMap = float(shadowViews.size());
+        }
+    }
+}
+
 // The display, shading and background programs (compiled on first use), the environment bound.
 void Renderer::Frame::choosePrograms() {
-    displayPass = plan.msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1)).get()
+    const bool caught = catcherPlan && !environmentBackground;
+    displayPass = plan.msaa            ? &s.resolve(std::max(t.samples.actualSamples, 1), caught).get()
                   : plan.displayInPass ? nullptr
+                  : caught             ? &s.displayCaught.get()
                                        : &s.display.get();
     const ShadingPrograms::Output output =
         plan.displayInPass ? ShadingPrograms::Output::LinearAndDisplay : ShadingPrograms::Output::Linear;
@@ -386,6 +480,8 @@ void Renderer::Frame::choosePrograms() {
     ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
     singlePass.environment = environment;
     singlePass.channel = settings.channel.channel;
+    const bool shadows = !shadowViews.empty();
+    singlePass.shadows = shadows;
     // The specialised shader leaves out diffuse only where no item has any.
     // A metallic-roughness map can lower metallic below its factor's 1 (a base colour map can
     // only darken a black factor's nothing).
@@ -416,10 +512,16 @@ void Renderer::Frame::choosePrograms() {
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
                   : settings.path == RenderPath::Multi
-                      ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface)
+                      ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface, shadows)
                       : &s.shading.useSpecialised(model, key, output, surface);
     }
-    if (settings.path == RenderPath::Multi) {
+    if (catcherPlan) {
+        ShadingPrograms::SinglePass catcher = singlePass;
+        catcher.catcher = true;
+        catcherProgram = &s.shading.useSingle(draws.back().material.model, catcher, ShadingPrograms::Output::Linear,
+                                              ShadingPrograms::surfaceOf(maps, false, false));
+    }
+    if (settings.path == RenderPath::Multi || shadows) {
         s.prepass(maps).get();
     }
     backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
@@ -452,6 +554,18 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
     if (plan.displayInPass) {
         glUniform1f(program.uniform("uExposure"), scene.display.exposure);
         glUniform1i(program.uniform("uTonemap"), exposureTonemap);
+    }
+    if (!shadowViews.empty()) {
+        std::vector<glm::mat4> transforms;
+        std::vector<glm::vec4> texels;
+        for (const ShadowView& view : shadowViews) {
+            transforms.push_back(view.texture);
+            texels.push_back(view.texel);
+        }
+        glUniform1i(program.uniform("uShadowMaps"), ShadingPrograms::kShadowMapUnit);
+        glUniformMatrix4fv(program.uniform("uShadowTransforms"), GLsizei(transforms.size()), GL_FALSE,
+                           glm::value_ptr(transforms[0]));
+        glUniform4fv(program.uniform("uShadowTexels"), GLsizei(texels.size()), glm::value_ptr(texels[0]));
     }
 }
 
@@ -489,6 +603,7 @@ void Renderer::Frame::draw() {
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
+    drawShadowMaps();
     clearAroundMesh();
     for (int top = 0; top < h; top += plan.stripRows) {
         drawStrip(top);
@@ -518,6 +633,65 @@ void Renderer::Frame::drawStrip(int top) {
     }
 }
 
+// The glPolygonOffset of the shadow maps' depth (docs/LIGHTING.md "Shadows"): the slope-scaled
+// bias, in units of the depth's slope across a texel, and the constant one, in the depth's
+// smallest steps. The lookup's normal offset (shade.frag) does the rest.
+constexpr float kShadowSlopeBias = 2.0f;
+constexpr float kShadowConstantBias = 4.0f;
+
+// Each shadowed light's map: the depth of every opaque item but the ground, seen from the
+// light, both sides (a model's open surfaces cast too); then the maps bound for the shading.
+void Renderer::Frame::drawShadowMaps() const {
+    if (shadowViews.empty()) {
+        return;
+    }
+    const GlProgram& program = s.prepass(maps).get();
+    program.use();
+    const DrawUniforms uniforms(program, mapTextures());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(kShadowSlopeBias, kShadowConstantBias);
+    for (size_t layer = 0; layer < shadowViews.size(); ++layer) {
+        s.shadowMaps.beginLayer(int(shadowViews.size()), int(layer));
+        glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(shadowViews[layer].clip));
+        for (const SceneDraw& item : draws) {
+            if (item.primitive >= 0 && !item.blend) {
+                uniforms.set(item);
+                buffersOf(item).draw();
+            }
+        }
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glActiveTexture(GL_TEXTURE0 + ShadingPrograms::kShadowMapUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, s.shadowMaps.texture());
+    glActiveTexture(GL_TEXTURE0);
+}
+
+// The shadow catcher: what is behind it (the background, drawn or cleared) times the share of
+// its light its shadows leave (shade.frag's PATINA_SHADOW_CATCHER); alpha takes its stamp, so
+// the sample counts as drawn (over the environment), or the stamp negated over the flat colour,
+// which the display pass then shows as it shows that colour. Leaves blending on and depth
+// writes off.
+void Renderer::Frame::drawCatcher() const {
+    if (!catcherPlan) {
+        return;
+    }
+    s.shading.bind(draws.back().material.model, *catcherProgram, environment);
+    prepare(*catcherProgram);
+    if (!environmentBackground) {
+        // The flat background darkened is background still (display.frag's PATINA_CAUGHT_BACKGROUND).
+        glUniform1f(catcherProgram->uniform("uSampleStamp"), -stamp);
+    }
+    const DrawUniforms uniforms(*catcherProgram, mapTextures());
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ZERO);
+    useItem(uniforms, *catcherPlan);
+    drawItem(*catcherPlan);
+}
+
 // Every item of the plan: the opaque ones, then the blended ones over them.
 void Renderer::Frame::drawItems() const {
     const Items items(plan.items);
@@ -544,7 +718,11 @@ void Renderer::Frame::useItem(const DrawUniforms& uniforms, const DrawPlan& item
 }
 
 void Renderer::Frame::drawItem(const DrawPlan& item) const {
-    s.primitives[size_t(draws[item.item].primitive)]->draw();
+    buffersOf(draws[item.item]).draw();
+}
+
+const MeshBuffers& Renderer::Frame::buffersOf(const SceneDraw& item) const {
+    return item.primitive < 0 ? s.groundBuffers : *s.primitives[size_t(item.primitive)];
 }
 
 namespace {
@@ -594,6 +772,10 @@ void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
     for (const DrawPlan& item : opaque) {
         drawWithItsProgram(item);
     }
+    if (catcherPlan) {
+        drawCatcher();
+        current = nullptr;
+    }
     glDepthMask(GL_FALSE);
     for (const DrawPlan& item : blended) {
         blendOver(draws[item.item].alpha);
@@ -639,6 +821,10 @@ void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
         useShading(item);
         useItem(*uniforms, item);
         lightPasses(*current, item);
+    }
+    if (catcherPlan) {
+        drawCatcher();
+        current = nullptr;
     }
     glDepthFunc(GL_LESS);   // against the opaque items' depth; the blended ones write none
     for (const DrawPlan& item : blended) {

@@ -11,6 +11,20 @@ void append(std::string& list, const std::string& entry) {
         list += (list.empty() ? "" : " ") + entry;
     }
 }
+
+// `call` weighed by the light's shadow map (shade.frag's SHADOWED), given the direction towards
+// the light from `light`, the fragment's expression for it, as its map looks.
+std::string shadowed(const std::string& call, const shader::PackedLight& light, const std::string& source) {
+    std::string towards;
+    if (light.type == shader::LIGHT_DIRECTIONAL) {
+        towards = source + ".directionToLight";
+    } else if (light.type == shader::LIGHT_TUBE) {
+        towards = "safeNormalize(0.5f * (" + source + ".position + " + source + ".tubeEnd) - vPosition)";
+    } else {
+        towards = "safeNormalize(" + source + ".position - vPosition)";
+    }
+    return "SHADOWED(" + towards + ", " + std::to_string(int(light.shadowMap) - 1) + ", " + call + ")";
+}
 }  // namespace
 
 LightSource sourceOf(size_t i, size_t flatSlots, const char* flatWrite) {
@@ -43,6 +57,9 @@ std::vector<std::string> ShaderSpecialisation::defines() const {
     }
     if (mapSet >= 0) {
         result.push_back("PATINA_MAP_SET " + std::to_string(mapSet));
+    }
+    if (shadows) {
+        result.push_back("PATINA_SHADOWS");
     }
     return result;
 }
@@ -77,6 +94,10 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
         } else if (!key.noDiffuse) {
             source = sourceOf(i, flatSlots, "FLAT_HEMISPHERE");
             call = "SHADE_HEMISPHERE(" + source.fragment + ")";
+        }
+        if (!call.empty() && light.shadowMap > 0.0f) {
+            call = shadowed(call, light, source.fragment);
+            key.shadows = true;
         }
         if (!call.empty()) {
             addLight(key, i, call, source);

@@ -28,6 +28,9 @@ struct ShaderSpecialisation {
     // PATINA_MAP_SET (a textured program's): the maps the item drawn has (mapSetOf); the code of
     // every other map is left out. -1: whichever maps the uniforms say.
     int mapSet = -1;
+    // PATINA_SHADOWS: a light of the list has a shadow map (PackedLight::shadowMap, set by the
+    // renderer), and its entry weighs it by its map (SHADOWED).
+    bool shadows = false;
 
     auto operator<=>(const ShaderSpecialisation&) const = default;
     std::vector<std::string> defines() const;

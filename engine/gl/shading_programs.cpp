@@ -144,6 +144,12 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
     if (channel >= 0) {
         defines.push_back("PATINA_CHANNEL " + std::to_string(channel));
     }
+    if (shadows) {
+        defines.push_back("PATINA_SHADOWS");
+    }
+    if (catcher) {
+        defines.push_back("PATINA_SHADOW_CATCHER");
+    }
     for (const auto& [present, define] : {std::pair{points, "PATINA_NO_POINT_LIGHTS"},
                                           std::pair{directionals, "PATINA_NO_DIRECTIONAL_LIGHTS"},
                                           std::pair{hemispheres, "PATINA_NO_HEMISPHERE_LIGHTS"},
@@ -157,12 +163,15 @@ std::vector<std::string> ShadingPrograms::SinglePass::defines() const {
 }
 
 const GlProgram& ShadingPrograms::use(BrdfModelId model, Use use, Output output, bool environment,
-                                      Surface surface) {
-    std::unique_ptr<GlProgram>& program = programs_[{model, use, output, environment, surface}];
+                                      Surface surface, bool shadows) {
+    std::unique_ptr<GlProgram>& program = programs_[{model, use, output, environment, surface, shadows}];
     if (!program) {
         std::vector<std::string> defines;
         if (environment) {
             defines.push_back("PATINA_ENVIRONMENT");
+        }
+        if (shadows && use == Use::MultiPass) {
+            defines.push_back("PATINA_SHADOWS");
         }
         if (use == Use::Probe) {
             defines.insert(defines.end(), {"PATINA_SINGLE_PASS", "PATINA_PROBE"});

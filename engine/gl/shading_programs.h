@@ -30,6 +30,10 @@ public:
         // An inspector channel (shaders/shared/channels.glsl) written instead of the radiance;
         // -1: the radiance.
         int channel = -1;
+        // PATINA_SHADOWS: some light has a shadow map (PackedLight::shadowMap); with `catcher`,
+        // PATINA_SHADOW_CATCHER, the shadow catcher's program (Ground::Shadow).
+        bool shadows = false;
+        bool catcher = false;
         std::vector<std::string> defines() const;
         auto operator<=>(const SinglePass&) const = default;
     };
@@ -62,8 +66,9 @@ public:
     // Makes the program current (with its energy table, and with `environment` its environment
     // BRDF table, bound) and returns it. Multi with `environment` shades the environment when
     // uLightIndex < 0.
+    // `shadows`: PATINA_SHADOWS (multi: a light's pass reads its shadow map, if it has one).
     const GlProgram& use(BrdfModelId model, Use use, Output output = Output::Linear, bool environment = false,
-                         Surface surface = Surface::Factors);
+                         Surface surface = Surface::Factors, bool shadows = false);
     // Texture units of the environment's cube maps and BRDF table (unit 0 is the display pass's,
     // 1 the energy table's).
     static constexpr int kEnvironmentMapUnit = 2;
@@ -74,6 +79,7 @@ public:
     // The sheen's albedo table (Surface::Sheen), after the maps' ten units: 16, which every
     // GL 3.3 fragment stage has (GL_MAX_TEXTURE_IMAGE_UNITS is 16 at least).
     static constexpr int kSheenTableUnit = 16;
+    static constexpr int kShadowMapUnit = 17;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);
@@ -100,7 +106,7 @@ private:
         std::unique_ptr<GlProgram> program;
         unsigned long long lastUse = 0;
     };
-    std::map<std::tuple<BrdfModelId, Use, Output, bool, Surface>, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::tuple<BrdfModelId, Use, Output, bool, Surface, bool>, std::unique_ptr<GlProgram>> programs_;
     // 48 shapes at most (with no point, sphere or tube light, karisPoints is always true), each
     // with and without the environment.
     std::map<std::tuple<BrdfModelId, SinglePass, Output, Surface>, std::unique_ptr<GlProgram>> singles_;

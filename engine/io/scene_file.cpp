@@ -96,6 +96,7 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
         light.color = reader.vec3("color", light.color, kNonNegative);
     }
     light.intensity = reader.number("intensity", light.intensity, kNonNegative);
+    light.shadows = reader.boolean("shadows", false);
     switch (light.type) {
     case LightType::Point:
         light.position = reader.vec3("position", light.position);
@@ -218,6 +219,14 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     }
     display.backgroundFromEnvironment = reader.boolean("backgroundEnvironment", environmentNamed);
     display.backgroundBlur = reader.number("backgroundBlur", display.backgroundBlur, kUnit);
+    const std::string ground = reader.string("ground", "none");
+    const auto groundParsed = groundFromName(ground);
+    if (!groundParsed) {
+        reader.fail("ground", "unknown ground " + shortJson(ground) + " (known: " + groundNames() + ")");
+    }
+    display.ground = *groundParsed;
+    display.groundColor = reader.vec3("groundColor", display.groundColor, kNonNegative);
+    display.groundRoughness = reader.number("groundRoughness", display.groundRoughness, kUnit);
     display.extras = reader.keepUnknown(warnings);
     return display;
 }
@@ -228,6 +237,9 @@ Json lightToJson(const Light& light) {
               {"enabled", light.enabled},
               {"color", toJson(light.color)},
               {"intensity", toJson(light.intensity)}};
+    if (light.shadows) {
+        json["shadows"] = true;
+    }
     switch (light.type) {
     case LightType::Point:
         json["position"] = toJson(light.position);
@@ -552,6 +564,14 @@ Json displayToJson(const DisplaySettings& display) {
     if (display.backgroundFromEnvironment || display.backgroundBlur != 0.0f) {
         json["backgroundEnvironment"] = display.backgroundFromEnvironment;
         json["backgroundBlur"] = toJson(display.backgroundBlur);
+    }
+    // Written only where set, so that a scene without a ground saves as it always has.
+    const DisplaySettings defaults;
+    if (display.ground != Ground::None || display.groundColor != defaults.groundColor ||
+        display.groundRoughness != defaults.groundRoughness) {
+        json["ground"] = groundName(display.ground);
+        json["groundColor"] = toJson(display.groundColor);
+        json["groundRoughness"] = toJson(display.groundRoughness);
     }
     return json;
 }

@@ -23,6 +23,9 @@ struct Light {
     bool enabled = true;
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
+    // point, directional, sphere, tube: the model casts shadows of this light (a shadow map,
+    // docs/LIGHTING.md "Shadows"); the scene file's "shadows", written only when true.
+    bool shadows = false;
     // point; sphere: its centre
     glm::vec3 position{0.0f, 2.0f, 2.0f};
     // point, sphere, tube: the attenuation window: the light reaches this far (Karis 2013 eq. 9);

@@ -19,6 +19,11 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
     inputs.cameraTarget = scene.camera.target;
     inputs.fovYDegrees = scene.camera.fovYDegrees;
     inputs.lights = packEnabledLights(scene.lights);
+    // Whether each casts shadows, in the row the renderer fills with its map (any value but 0).
+    const std::vector<size_t> order = enabledLightOrder(scene.lights);
+    for (size_t i = 0; i < inputs.lights.size(); ++i) {
+        inputs.lights[i].shadowMap = scene.lights[order[i]].shadows ? 1.0f : 0.0f;
+    }
     inputs.exposure = scene.display.exposure;
     inputs.tonemap = scene.display.tonemap;
     inputs.background = scene.display.background;
@@ -30,6 +35,9 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
     }
     inputs.backgroundFromEnvironment = scene.display.backgroundFromEnvironment;
     inputs.backgroundBlur = scene.display.backgroundBlur;
+    inputs.ground = scene.display.ground;
+    inputs.groundColor = scene.display.groundColor;
+    inputs.groundRoughness = scene.display.groundRoughness;
     return inputs;
 }
 
@@ -42,6 +50,7 @@ bool RenderInputs::operator==(const RenderInputs& other) const {
            environmentSource == other.environmentSource && environmentIntensity == other.environmentIntensity &&
            environmentRotation == other.environmentRotation &&
            backgroundFromEnvironment == other.backgroundFromEnvironment && backgroundBlur == other.backgroundBlur &&
+           ground == other.ground && groundColor == other.groundColor && groundRoughness == other.groundRoughness &&
            lights.size() == other.lights.size() &&
            (lights.empty() ||
             std::memcmp(lights.data(), other.lights.data(), lights.size() * sizeof(shader::PackedLight)) == 0);

@@ -32,6 +32,9 @@ struct RenderInputs {
     float environmentIntensity = 0.0f, environmentRotation = 0.0f;
     bool backgroundFromEnvironment = false;
     float backgroundBlur = 0.0f;
+    Ground ground = Ground::None;   // and the floor's material
+    glm::vec3 groundColor{0.0f};
+    float groundRoughness = 0.0f;
 
     // Light rows compared as their bytes: plain floats and ints, so equal bytes are equal
     // lights (a -0 against a 0 only costs one render more).

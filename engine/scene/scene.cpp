@@ -41,6 +41,23 @@ std::string tonemapNames() {
     return enumNameList(kTonemaps, tonemapName);
 }
 
+std::string_view groundName(Ground ground) {
+    switch (ground) {
+    case Ground::None: return "none";
+    case Ground::Shadow: return "shadow";
+    case Ground::Floor: return "floor";
+    }
+    return "none";
+}
+
+std::optional<Ground> groundFromName(std::string_view name) {
+    return enumFromName(name, kGrounds, groundName);
+}
+
+std::string groundNames() {
+    return enumNameList(kGrounds, groundName);
+}
+
 const Light* enabledEnvironment(const std::vector<Light>& lights) {
     for (const Light& light : lights) {
         if (light.enabled && light.type == LightType::Environment) {

@@ -50,6 +50,15 @@ std::string tonemapNames();
 // The shaders' TONEMAP_* value (shaders/shared/display.glsl) of a tone map.
 int tonemapShaderIndex(Tonemap tonemap);
 
+// What lies under the model (DisplaySettings::ground): nothing; a shadow catcher (the
+// background darkened by the light the ground loses to shadows); or a floor drawn with its own
+// material. "none", "shadow", "floor" in files and the editor.
+enum class Ground { None, Shadow, Floor };
+inline constexpr Ground kGrounds[] = {Ground::None, Ground::Shadow, Ground::Floor};
+std::string_view groundName(Ground ground);
+std::optional<Ground> groundFromName(std::string_view name);
+std::string groundNames();   // "none, shadow, floor"
+
 struct DisplaySettings {
     float exposure = 0.0f;                         // stops
     Tonemap tonemap = Tonemap::None;
@@ -58,6 +67,11 @@ struct DisplaySettings {
     // colour where the scene has none), read from the prefiltered chain at this roughness.
     bool backgroundFromEnvironment = false;
     float backgroundBlur = 0.0f;
+    // A plane under the model at its lowest point (scene/ground.h), and the floor's material:
+    // a dielectric of this base colour (linear) and roughness.
+    Ground ground = Ground::None;
+    glm::vec3 groundColor{0.5f};
+    float groundRoughness = 0.8f;
     Json extras = Json::object();
 
     bool operator==(const DisplaySettings&) const = default;

@@ -24,6 +24,13 @@
 // share of the base weighed by the extension's albedo scaling and the sheen's lobe added, the
 // environment's by E(N.V) with the sheen lit by the irradiance (SHEENED). Without it not one
 // instruction of the sheen is compiled.
+// PATINA_SHADOWS: some light casts shadows (engine/gl/shadow_maps.h, docs/LIGHTING.md
+// "Shadows"): its light is weighed by the share of its shadow map's PCF taps that see the
+// surface. Single and multi read a light's map from PackedLight::shadowMap; specialised names it
+// in the list, SHADOWED(towards the light, map, SHADE_...). Without it not one instruction of it is compiled.
+// PATINA_SHADOW_CATCHER (single, with PATINA_SHADOWS): the ground of Ground::Shadow, which
+// writes no light but the share of its light that its shadows leave, which the renderer
+// multiplies the background by.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -51,7 +58,7 @@ flat in vec4 vFlatLight[2 * PATINA_FLAT_LIGHT_COUNT];
 PackedLight flatLight(int i) {
     PackedLight light;
     light.type = -1;   // not read: each SHADE_* macro names its type
-    light.unused1 = 0.0f;
+    light.shadowMap = 0.0f;   // the specialised list names a flat light's map (SHADOWED)
     light.unused2 = 0.0f;
     light.unused3 = 0.0f;
     light.unused4 = 0.0f;
@@ -90,6 +97,66 @@ uniform float uSheenRoughness;   // sheenRoughnessFactor
 #define SHEENED(base, share) sheenOver((base), (share))
 #else
 #define SHEENED(base, share) (base)
+#endif
+
+#ifdef PATINA_SHADOWS
+const int MAX_SHADOW_MAPS = 4;   // engine/gl/shadow_maps.h's kMaxShadowMaps
+uniform sampler2DArrayShadow uShadowMaps;
+uniform mat4 uShadowTransforms[MAX_SHADOW_MAPS];   // world to a map's [0, 1] coordinates and depth
+uniform vec4 uShadowTexels[MAX_SHADOW_MAPS];   // x a texel's world size at w 1, y 1 / size, z tap spacing
+float lightShadow = 1.0f;                       // the visibility of the light being added
+vec3 shadowNormal = vec3(0.0f, 1.0f, 0.0f);     // the geometric normal (no normal map), as shaded
+
+// The share of map k's 3x3 PCF taps (each a bilinear 2x2 comparison, GL_LINEAR) that see the
+// surface, L towards the light. The lookup moves out along the geometric normal by about a
+// texel's world size, more where the light grazes (normal offset, Holbein 2011); the map's own
+// depth carries the slope-scaled offset (glPolygonOffset when drawn, engine/gl/renderer.cpp).
+float shadowVisibility(int k, vec3 L) {
+    vec4 texel = uShadowTexels[k];
+    float cosine = clamp(dot(shadowNormal, L), 0.0f, 1.0f);
+    float w = (uShadowTransforms[k] * vec4(vPosition, 1.0f)).w;
+    float offset = texel.x * w * (1.0f + 2.0f * sqrt(1.0f - cosine * cosine));
+    vec4 p = uShadowTransforms[k] * vec4(vPosition + offset * shadowNormal, 1.0f);
+    vec3 coordinates = p.xyz / p.w;
+    vec2 step = vec2(texel.y * texel.z);
+    float seen = 0.0f;
+    for (int y = -1; y <= 1; ++y) {
+        for (int x = -1; x <= 1; ++x) {
+            seen += texture(uShadowMaps, vec4(coordinates.xy + vec2(x, y) * step, float(k), coordinates.z));
+        }
+    }
+    return seen / 9.0f;
+}
+
+// Towards the light from the surface (a tube's from its segment's middle, as its map looks).
+vec3 towardsShadowedLight(PackedLight light) {
+    if (light.type == LIGHT_DIRECTIONAL) {
+        return light.directionToLight;
+    }
+    vec3 source = light.type == LIGHT_TUBE ? 0.5f * (light.position + light.tubeEnd) : light.position;
+    return safeNormalize(source - vPosition);
+}
+
+float shadowOf(PackedLight light) {
+    int k = int(light.shadowMap) - 1;
+    return k < 0 ? 1.0f : shadowVisibility(k, towardsShadowedLight(light));
+}
+#define SHADOW_OF(light) lightShadow = shadowOf(light);
+#define SHADOWED(L, k, shade) lightShadow = shadowVisibility(k, L); shade lightShadow = 1.0f;
+#ifdef PATINA_SHADOW_CATCHER
+vec3 catcherShadowed = vec3(0.0f), catcherUnshadowed = vec3(0.0f);   // the lights' sums with and without
+vec3 catcherLit(vec3 term) {
+    catcherUnshadowed += term;
+    catcherShadowed += lightShadow * term;
+    return lightShadow * term;
+}
+#define LIT(term) catcherLit(term)
+#else
+#define LIT(term) (lightShadow * (term))
+#endif
+#else
+#define SHADOW_OF(light)
+#define LIT(term) (term)
 #endif
 
 // Light that skips the surface's crevices: the environment's and the hemisphere lights'
@@ -210,6 +277,9 @@ void main() {
     }
     vec3 V = safeNormalize(uCameraPosition - vPosition);
 #endif
+#ifdef PATINA_SHADOWS
+    shadowNormal = N;
+#endif
 #ifdef PATINA_CHANNEL
     vec3 geometryNormal = N;
 #endif
@@ -264,20 +334,20 @@ void main() {
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
-#define SHADE_POINT(light, windowed, karis) radiance += SHEENED(shadePointLight(light, windowed, karis, material, vPosition, N, V), \
-    sheenPointLight(light, windowed, karis, sheen, vPosition, N, V)); \
-    COATED(clearcoatPointLight(light, windowed, karis, coat, vPosition, V))
-#define SHADE_DIRECTIONAL(light) radiance += SHEENED(shadeDirectionalLight(light, material, N, V), \
-    sheenDirectionalLight(light, sheen, N, V)); \
-    COATED(clearcoatDirectionalLight(light, coat, V))
+#define SHADE_POINT(light, windowed, karis) radiance += LIT(SHEENED(shadePointLight(light, windowed, karis, material, vPosition, N, V), \
+    sheenPointLight(light, windowed, karis, sheen, vPosition, N, V))); \
+    COATED(LIT(clearcoatPointLight(light, windowed, karis, coat, vPosition, V)))
+#define SHADE_DIRECTIONAL(light) radiance += LIT(SHEENED(shadeDirectionalLight(light, material, N, V), \
+    sheenDirectionalLight(light, sheen, N, V))); \
+    COATED(LIT(clearcoatDirectionalLight(light, coat, V)))
 #define SHADE_HEMISPHERE(light) radiance += OCCLUDED(SHEENED(shadeHemisphereLight(light, material, N, V), \
     sheenHemisphereLight(light, sheen, N)));
-#define SHADE_SPHERE(light, windowed, karis) radiance += SHEENED(shadeSphereLight(light, windowed, karis, material, vPosition, N, V), \
-    sheenSphereLight(light, windowed, karis, sheen, vPosition, N, V)); \
-    COATED(clearcoatSphereLight(light, windowed, karis, coat, vPosition, V))
-#define SHADE_TUBE(light, windowed, karis) radiance += SHEENED(shadeTubeLight(light, windowed, karis, material, vPosition, N, V), \
-    sheenTubeLight(light, windowed, karis, sheen, vPosition, N, V)); \
-    COATED(clearcoatTubeLight(light, windowed, karis, coat, vPosition, V))
+#define SHADE_SPHERE(light, windowed, karis) radiance += LIT(SHEENED(shadeSphereLight(light, windowed, karis, material, vPosition, N, V), \
+    sheenSphereLight(light, windowed, karis, sheen, vPosition, N, V))); \
+    COATED(LIT(clearcoatSphereLight(light, windowed, karis, coat, vPosition, V)))
+#define SHADE_TUBE(light, windowed, karis) radiance += LIT(SHEENED(shadeTubeLight(light, windowed, karis, material, vPosition, N, V), \
+    sheenTubeLight(light, windowed, karis, sheen, vPosition, N, V))); \
+    COATED(LIT(clearcoatTubeLight(light, windowed, karis, coat, vPosition, V)))
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
     // Lights come grouped by type (engine/scene/light_packing.h): a loop per type, no type branch.
@@ -296,9 +366,10 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += SHEENED(shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V),
-                                sheenPointLight(uLights[i], true, karisPoints, sheen, vPosition, N, V));
-            COATED(clearcoatPointLight(uLights[i], true, karisPoints, coat, vPosition, V))
+            SHADOW_OF(uLights[i])
+            radiance += LIT(SHEENED(shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V),
+                                    sheenPointLight(uLights[i], true, karisPoints, sheen, vPosition, N, V)));
+            COATED(LIT(clearcoatPointLight(uLights[i], true, karisPoints, coat, vPosition, V)))
         } while (++i < end);
     }
 #endif
@@ -308,9 +379,10 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += SHEENED(shadeDirectionalLight(uLights[i], material, N, V),
-                                sheenDirectionalLight(uLights[i], sheen, N, V));
-            COATED(clearcoatDirectionalLight(uLights[i], coat, V))
+            SHADOW_OF(uLights[i])
+            radiance += LIT(SHEENED(shadeDirectionalLight(uLights[i], material, N, V),
+                                    sheenDirectionalLight(uLights[i], sheen, N, V)));
+            COATED(LIT(clearcoatDirectionalLight(uLights[i], coat, V)))
         } while (++i < end);
     }
 #endif
@@ -331,9 +403,10 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += SHEENED(shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V),
-                                sheenSphereLight(uLights[i], true, karisPoints, sheen, vPosition, N, V));
-            COATED(clearcoatSphereLight(uLights[i], true, karisPoints, coat, vPosition, V))
+            SHADOW_OF(uLights[i])
+            radiance += LIT(SHEENED(shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V),
+                                    sheenSphereLight(uLights[i], true, karisPoints, sheen, vPosition, N, V)));
+            COATED(LIT(clearcoatSphereLight(uLights[i], true, karisPoints, coat, vPosition, V)))
         } while (++i < end);
     }
 #endif
@@ -343,9 +416,10 @@ void main() {
     if (first < end) {
         int i = first;
         do {
-            radiance += SHEENED(shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V),
-                                sheenTubeLight(uLights[i], true, karisPoints, sheen, vPosition, N, V));
-            COATED(clearcoatTubeLight(uLights[i], true, karisPoints, coat, vPosition, V))
+            SHADOW_OF(uLights[i])
+            radiance += LIT(SHEENED(shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V),
+                                    sheenTubeLight(uLights[i], true, karisPoints, sheen, vPosition, N, V)));
+            COATED(LIT(clearcoatTubeLight(uLights[i], true, karisPoints, coat, vPosition, V)))
         } while (++i < end);
     }
 #endif
@@ -367,8 +441,9 @@ void main() {
 #endif
     {
         PackedLight light = uLights[max(uLightIndex, 0)];
-        radiance = SHEENED(shadeLight(light, material, vPosition, N, V), sheenLight(light, sheen, vPosition, N, V));
-        COATED(clearcoatLight(light, coat, vPosition, V))
+        SHADOW_OF(light)
+        radiance = LIT(SHEENED(shadeLight(light, material, vPosition, N, V), sheenLight(light, sheen, vPosition, N, V)));
+        COATED(LIT(clearcoatLight(light, coat, vPosition, V)))
         if (light.type == LIGHT_HEMISPHERE) {
             radiance = OCCLUDED(radiance);
         }
@@ -382,6 +457,13 @@ void main() {
 #ifdef PATINA_CLEARCOAT
     // The base, its emission too, seen through the coat, and the coat's own light.
     radiance = clearcoatOver(radiance, coatRadiance, coat);
+#endif
+#ifdef PATINA_SHADOW_CATCHER
+    // The share of the ground's light (its luminance, so the background keeps its hue) that
+    // its shadows leave: what reaches it over what would without them, the environment in both.
+    const vec3 rec709 = vec3(0.2126f, 0.7152f, 0.0722f);
+    float unshadowed = dot(radiance - catcherShadowed + catcherUnshadowed, rec709);
+    radiance = vec3(unshadowed > 0.0f ? clamp(dot(radiance, rec709) / unshadowed, 0.0f, 1.0f) : 1.0f);
 #endif
 #ifdef PATINA_STAMPED
     fragColor = vec4(radiance, uSampleStamp);

@@ -1990,6 +1990,33 @@ TEST_F(EditorUi, TheToneMapListOffersEveryViewTransform) {
     EXPECT_EQ(state_.scene.display.tonemap, Tonemap::PbrNeutral);
 }
 
+// Issue 37: the Ground list offers its three names; the floor and a light's Shadows checkbox
+// each change the picture (the sphere's shadow falls on the floor), and undo takes each back.
+TEST_F(EditorUi, TheGroundListAndALightsShadowsCheckboxChangeThePictureAndUndo) {
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Ground plane"));
+    ImVec2 min, max;
+    for (const Ground ground : kGrounds) {
+        EXPECT_TRUE(itemRect("ground:" + std::string(groundName(ground)), &min, &max)) << groundName(ground);
+    }
+    click(centreOf("ground:floor"));
+    ASSERT_EQ(state_.scene.display.ground, Ground::Floor);
+    frames(2);
+    const LdrImage floor = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(differingPixels(before, floor), 1000);
+    state_.selectedLight = 1;   // the cool fill, directional
+    frames(2);
+    click(centreOf("Light shadows"));
+    ASSERT_TRUE(state_.scene.lights[1].shadows);
+    frames(2);
+    EXPECT_GT(differingPixels(floor, services_->viewportPixels(EditorServices::Shown::Edited)), 200);
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+    press(kKeyZ, true);
+    EXPECT_FALSE(state_.scene.lights[1].shadows);
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.display.ground, Ground::None);
+}
+
 // A model opened is framed as model-viewer frames it, wherever the camera looked before; the
 // Camera list offers that framing and the file's own cameras (an orthographic one listed,
 // dimmed, not taken), and the field of view drags.

@@ -295,6 +295,40 @@ TEST(SceneFile, TheOldAcesNameReadsAsNarkowiczAndEveryToneMapRoundTrips) {
         << refused;
 }
 
+// Issue 37: a light's "shadows" and the display's ground round-trip, are written only where
+// set (an older scene saves as it did), and a ground of another name is refused by its key.
+TEST(SceneFile, ShadowsAndTheGroundRoundTripAndAreOnlyWrittenWhenSet) {
+    std::vector<std::string> warnings;
+    const Json plain = sceneToJson(defaultScene());
+    EXPECT_FALSE(plain["display"].contains("ground"));
+    for (const Json& light : plain["lights"]) {
+        EXPECT_FALSE(light.contains("shadows"));
+    }
+    const Scene old = sceneFromJson(plain, "old.json", ".", warnings);
+    EXPECT_EQ(old.display.ground, Ground::None);
+    for (const Light& light : old.lights) {
+        EXPECT_FALSE(light.shadows);
+    }
+    for (const Ground ground : kGrounds) {
+        Scene scene = defaultScene();
+        scene.display.ground = ground;
+        scene.display.groundColor = {0.2f, 0.3f, 0.4f};
+        scene.display.groundRoughness = 0.25f;
+        scene.lights[1].shadows = true;
+        const Json saved = sceneToJson(scene);
+        EXPECT_EQ(saved["display"]["ground"], std::string(groundName(ground)));
+        EXPECT_EQ(saved["lights"][1]["shadows"], true);
+        EXPECT_EQ(sceneFromJson(saved, "saved.json", ".", warnings), scene);
+    }
+    EXPECT_TRUE(warnings.empty());
+    const std::string refused = errorOf(R"({"format": "patina-scene", "version": 2, "display": {"ground": "grass"}})");
+    EXPECT_NE(refused.find("/display/ground: unknown ground \"grass\" (known: none, shadow, floor)"), std::string::npos)
+        << refused;
+    const std::string notBoolean = errorOf(
+        R"({"format": "patina-scene", "version": 2, "lights": [{"type": "directional", "shadows": "yes"}]})");
+    EXPECT_NE(notBoolean.find("/lights/0/shadows"), std::string::npos) << notBoolean;
+}
+
 // A version 1 file with a "range" key (unknown there) must not turn it into the window when
 // written as version 2, nor lose the round trip: found by fuzz_png (the seed corpus keeps it).
 TEST(SceneFile, ARangeKeyInVersion1IsIgnoredWithAWarning) {

@@ -49,6 +49,10 @@ TEST(RenderInputs, EverythingDrawnChangesThem) {
         {"background", [](Scene& s) { s.display.background = glm::vec3(1.0f); }},
         {"built-in mesh", [](Scene& s) { s.mesh = MeshKind::Torus; }},
         {"environment source", [](Scene& s) { s.lights[2].source = "builtin:white"; }},
+        {"light shadows", [](Scene& s) { s.lights[1].shadows = true; }},
+        {"ground", [](Scene& s) { s.display.ground = Ground::Floor; }},
+        {"ground colour", [](Scene& s) { s.display.groundColor = glm::vec3(0.1f); }},
+        {"ground roughness", [](Scene& s) { s.display.groundRoughness = 0.3f; }},
     };
     const RenderInputs original = inputsOf(scene);
     for (const auto& [what, change] : changes) {

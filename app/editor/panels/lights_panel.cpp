@@ -200,6 +200,11 @@ void editLight(Light& light, float intensityScale) {
     recordItem("Light name", "The light's name in the list and the scene file");
     ImGui::Checkbox("Enabled", &light.enabled);
     recordItem("Light enabled", "Whether this light shines");
+    if (light.type != LightType::Hemisphere && light.type != LightType::Environment) {
+        ImGui::Checkbox("Shadows", &light.shadows);
+        recordItem("Light shadows", "Whether the model casts shadows of this light, on itself and on the ground "
+                                    "(the viewport's Ground list); a shadow map, saved with the scene");
+    }
     if (light.type != LightType::Environment) {   // an environment's colour is its image's
         colorEditLinear("Colour", "The light's colour; values above 1 are kept", &light.color, true);
     }

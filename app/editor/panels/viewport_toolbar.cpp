@@ -141,6 +141,45 @@ void drawCameraControls(Document& document, Interaction& interaction, Prompts& p
                       "scene): a wider lens from the same place. Ctrl+click or double-click to type");
 }
 
+// What each ground is, for its entry's tooltip (docs/FORMATS.md, display.ground).
+const char* groundSummary(Ground ground) {
+    switch (ground) {
+    case Ground::None: return "Nothing under the model";
+    case Ground::Shadow: return "A shadow catcher: the background, darkened where the model shadows the ground "
+                                "(lights with Shadows on)";
+    case Ground::Floor: return "A floor with its own colour and roughness, lit by every light and the environment";
+    }
+    return "";
+}
+
+// The Ground list, and the floor's colour and roughness while it is the floor.
+void drawGroundControls(DisplaySettings& display) {
+    sameLineIfFits(labelledWidth(px(80), "Ground"));
+    ImGui::SetNextItemWidth(px(80));
+    if (ImGui::BeginCombo("Ground", std::string(groundName(display.ground)).c_str())) {
+        for (const Ground ground : kGrounds) {
+            const std::string name(groundName(ground));
+            if (ImGui::Selectable(name.c_str(), ground == display.ground)) {
+                display.ground = ground;
+            }
+            recordItem("ground:" + name, groundSummary(ground));
+        }
+        ImGui::EndCombo();
+    }
+    // Named apart from the hemisphere light's Ground colour in the lights panel.
+    recordItem("Ground plane", "A plane under the model at its lowest point: none, a shadow catcher over the background, "
+                         "or a floor (saved with the scene)");
+    if (display.ground != Ground::Floor) {
+        return;
+    }
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Floor"));
+    colorEditLinear("Floor", "The floor's colour", &display.groundColor, false, ImGuiColorEditFlags_NoInputs);
+    sameLineIfFits(labelledWidth(px(80), "Floor roughness"));
+    ImGui::SetNextItemWidth(px(80));
+    ImGui::SliderFloat("Floor roughness", &display.groundRoughness, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    recordItem("Floor roughness", "The floor's roughness: 0 a mirror, 1 matte. Ctrl+click to type");
+}
+
 }  // namespace
 
 // The toolbar's controls wrap onto a second line when the viewport is narrow, rather than
@@ -191,6 +230,7 @@ void drawViewportToolbar(Document& document, Interaction& interaction, Jobs& job
     sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Background"));
     colorEditLinear("Background", "The colour behind the mesh", &display.background, false,
                     ImGuiColorEditFlags_NoInputs);
+    drawGroundControls(display);
 
     const ImGuiStyle& style = ImGui::GetStyle();
     auto radioWidth = [&](const char* label) { return labelledWidth(ImGui::GetFrameHeight(), label); };

@@ -1,0 +1,101 @@
+#include "gl/shadow_maps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace patina {
+
+namespace {
+// Clip space's [-1, 1] to the map's [0, 1], depth included.
+const glm::mat4 kClipToTexture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+
+glm::vec3 upFor(glm::vec3 forward) {
+    return std::abs(forward.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+}
+
+// The PCF taps' spacing: one texel, widened for a sphere or tube light by its size as seen
+// from the casters (its radius over the distance, in texels of the map's view): a larger
+// light, a softer edge. Capped, since wide taps under-sample thin casters.
+float tapSpacing(float sourceRadius, float distance, float texelAtUnitW) {
+    const float widened = texelAtUnitW > 0.0f ? 0.25f * sourceRadius / std::max(distance, 1e-6f) / texelAtUnitW : 0.0f;
+    return std::clamp(1.0f + widened, 1.0f, 4.0f);
+}
+}  // namespace
+
+std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius, int size) {
+    if (!(radius > 0.0f) || light.type == shader::LIGHT_HEMISPHERE) {
+        return std::nullopt;
+    }
+    ShadowView view;
+    if (light.type == shader::LIGHT_DIRECTIONAL) {
+        const glm::vec3 forward = -glm::normalize(light.directionToLight);
+        const glm::mat4 look = glm::lookAt(centre - 2.0f * radius * forward, centre, upFor(forward));
+        view.clip = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius) * look;
+        view.texel = {2.0f * radius / float(size), 1.0f / float(size), 1.0f, 0.0f};
+    } else {
+        // A tube looks from its segment's middle.
+        const glm::vec3 eye = light.type == shader::LIGHT_TUBE ? 0.5f * (light.position + light.tubeEnd) : light.position;
+        const float distance = glm::length(centre - eye);
+        if (distance <= 1.01f * radius) {
+            return std::nullopt;
+        }
+        const float halfAngle = std::asin(radius / distance);
+        const glm::vec3 forward = (centre - eye) / distance;
+        const glm::mat4 look = glm::lookAt(eye, centre, upFor(forward));
+        const float nearPlane = std::max(distance - radius, 0.01f * distance);
+        view.clip = glm::perspective(2.0f * halfAngle, 1.0f, nearPlane, distance + radius) * look;
+        const float texelAtUnitW = 2.0f * std::tan(halfAngle) / float(size);
+        const float source = light.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
+        view.texel = {texelAtUnitW, 1.0f / float(size), tapSpacing(source, distance, texelAtUnitW), 0.0f};
+    }
+    view.texture = kClipToTexture * view.clip;
+    return view;
+}
+
+ShadowMaps::~ShadowMaps() {
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteTextures(1, &texture_);
+}
+
+void ShadowMaps::beginLayer(int layers, int layer) {
+    layers = std::max(layers, 1);
+    if (layers > layers_) {
+        glDeleteTextures(1, &texture_);
+        glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, texture_);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, kShadowMapSize, kShadowMapSize, layers, 0,
+                     GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+        // Hardware PCF: each tap compares the four nearest texels and filters the results.
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        // Outside the map: the far depth, lit.
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        const GLfloat far[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+        glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, far);
+        layers_ = layers;
+    }
+    if (!framebuffer_) {
+        glGenFramebuffers(1, &framebuffer_);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_, 0, layer);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        throw std::runtime_error("the shadow map's framebuffer is incomplete");
+    }
+    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    const GLfloat clearDepth = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &clearDepth);
+}
+
+}  // namespace patina

@@ -1,0 +1,175 @@
+// Issue 37: shadow maps (shade.frag's PATINA_SHADOWS, gl/shadow_maps.h) and the ground under the
+// model (scene/ground.h): the floor darkens under a sphere lit from straight above with shadows
+// on and nowhere else, alike on every path; the shadow catcher darkens the background under the
+// sphere and leaves it, to the bit, everywhere else; without a shadowed light or a ground the
+// picture is the one without them.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gl/renderer.h"
+#include "gl/render_path.h"
+#include "scene/ground.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+constexpr int kSize = 96;
+// On the ground (the unit sphere's lowest point is y = -1): in the sphere's shadow from a light
+// straight above and in view, and far from it.
+const glm::vec3 kUnderSphere{0.0f, -1.0f, 0.8f};
+const glm::vec3 kFarAway{2.2f, -1.0f, 1.2f};
+
+// The unit sphere over a ground, seen from above and in front, lit from straight above and by
+// a faint sky.
+Scene sphereOverGround(Ground ground, bool shadows) {
+    Scene scene = defaultScene();
+    scene.camera.position = {0.0f, 2.5f, 5.0f};
+    scene.camera.target = {0.0f, -0.6f, 0.0f};
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = {0.0f, -1.0f, 0.0f};
+    sun.intensity = 2.0f;
+    sun.shadows = shadows;
+    Light sky;
+    sky.type = LightType::Hemisphere;
+    sky.sky = glm::vec3(0.2f);
+    sky.ground = glm::vec3(0.05f);
+    scene.lights = {sun, sky};
+    scene.display.ground = ground;
+    scene.display.background = {0.2f, 0.3f, 0.4f};
+    return scene;
+}
+
+float luminanceAt(const HdrImage& image, const Camera& camera, glm::vec3 point) {
+    const glm::ivec2 at = test::pixelOf(camera, point, image.width, image.height);
+    const glm::vec3 value = test::pixel(image, at.x, at.y);
+    return 0.2126f * value.r + 0.7152f * value.g + 0.0722f * value.b;
+}
+
+TEST(Ground, LiesUnderTheModelsLowestPointAndReachesWellPastIt) {
+    BoundingBox box;
+    box.low = {-1.0f, -2.0f, 0.0f};
+    box.high = {3.0f, 1.0f, 2.0f};
+    const GroundPlane plane = groundUnder(box);
+    EXPECT_EQ(plane.centre, glm::vec3(1.0f, -2.0f, 1.0f));
+    EXPECT_GT(plane.halfSize, 4.0f * 0.5f * glm::length(box.high - box.low));
+    const Mesh mesh = groundMesh(plane);
+    ASSERT_EQ(mesh.indices.size(), 6u);
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        const glm::vec3 a = mesh.positions[mesh.indices[i]], b = mesh.positions[mesh.indices[i + 1]],
+                        c = mesh.positions[mesh.indices[i + 2]];
+        EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f);   // counter-clockwise seen from above
+    }
+}
+
+TEST(ShadowRender, TheFloorUnderTheSphereIsDarkerWithShadowsAndUnchangedFarFromIt) {
+    test::glContext();
+    Renderer renderer;
+    const Scene lit = sphereOverGround(Ground::Floor, false);
+    const Scene shadowed = sphereOverGround(Ground::Floor, true);
+    const HdrImage without = renderer.render(test::prepared(lit), test::renderSettings(kSize, kSize, RenderPath::Single, 1)).hdr;
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        const HdrImage with = renderer.render(test::prepared(shadowed), test::renderSettings(kSize, kSize, path, 1)).hdr;
+        const float under = luminanceAt(with, shadowed.camera, kUnderSphere);
+        const float underLit = luminanceAt(without, lit.camera, kUnderSphere);
+        // In the shadow only the sky lights it: far less than the sun and the sky together.
+        EXPECT_LT(under, 0.3f * underLit) << renderPathName(path);
+        EXPECT_GT(under, 0.0f) << renderPathName(path);
+        EXPECT_NEAR(luminanceAt(with, shadowed.camera, kFarAway), luminanceAt(without, lit.camera, kFarAway),
+                    1e-5f * luminanceAt(without, lit.camera, kFarAway))
+            << renderPathName(path);
+    }
+    // The floor is lit: brighter than the background (luminance 0.286) where nothing shadows it.
+    EXPECT_GT(luminanceAt(without, lit.camera, kFarAway), 0.3f);
+}
+
+// A point light and a sphere light above the sphere, outside its bounds: a perspective map from
+// the light darkens the floor under the sphere; a point light inside the bounds casts none
+// (a cube map's job, not done) and changes nothing.
+TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
+    test::glContext();
+    Renderer renderer;
+    for (LightType type : {LightType::Point, LightType::Sphere}) {
+        Scene lit = sphereOverGround(Ground::Floor, false);
+        lit.lights[0].type = type;
+        lit.lights[0].position = {0.0f, 5.0f, 0.2f};
+        lit.lights[0].intensity = 40.0f;
+        Scene shadowed = lit;
+        shadowed.lights[0].shadows = true;
+        for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
+            const RenderSettings settings = test::renderSettings(kSize, kSize, path, 1);
+            const HdrImage without = renderer.render(test::prepared(lit), settings).hdr;
+            const HdrImage with = renderer.render(test::prepared(shadowed), settings).hdr;
+            EXPECT_LT(luminanceAt(with, shadowed.camera, kUnderSphere), 0.3f * luminanceAt(without, lit.camera, kUnderSphere))
+                << lightTypeName(type) << " " << renderPathName(path);
+            EXPECT_NEAR(luminanceAt(with, shadowed.camera, kFarAway), luminanceAt(without, lit.camera, kFarAway),
+                        1e-5f * luminanceAt(without, lit.camera, kFarAway));
+        }
+    }
+    Scene inside = sphereOverGround(Ground::Floor, true);
+    inside.lights[0].type = LightType::Point;
+    inside.lights[0].position = {0.0f, 0.0f, 0.0f};
+    Scene insideOff = inside;
+    insideOff.lights[0].shadows = false;
+    const RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Single, 1);
+    EXPECT_EQ(renderer.render(test::prepared(inside), settings).hdr.rgb,
+              renderer.render(test::prepared(insideOff), settings).hdr.rgb);
+}
+
+TEST(ShadowRender, TheCatcherDarkensTheBackgroundUnderTheSphereOnlyOnEveryPath) {
+    test::glContext();
+    Renderer renderer;
+    const Scene none = sphereOverGround(Ground::None, true);
+    const Scene catcher = sphereOverGround(Ground::Shadow, true);
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        for (int samples : {1, 4}) {
+            const RenderSettings settings = test::renderSettings(kSize, kSize, path, samples);
+            const RenderOutput plainOutput = renderer.render(test::prepared(none), settings);
+            const RenderOutput caughtOutput = renderer.render(test::prepared(catcher), settings);
+            const HdrImage& plain = plainOutput.hdr;
+            const HdrImage& caught = caughtOutput.hdr;
+            // Shown as the flat background is (its swatch, no tone map): the same bytes away
+            // from the sphere, whatever the tone map (the default scene's PBR Neutral).
+            const glm::ivec2 far = test::pixelOf(catcher.camera, kFarAway, kSize, kSize);
+            const size_t at = (size_t(far.y) * kSize + size_t(far.x)) * 4;
+            for (size_t c = 0; c < 3; ++c) {
+                EXPECT_EQ(caughtOutput.ldr.rgba[at + c], plainOutput.ldr.rgba[at + c]) << renderPathName(path);
+            }
+            const float background = luminanceAt(plain, none.camera, kFarAway);
+            EXPECT_FLOAT_EQ(background, 0.2126f * 0.2f + 0.7152f * 0.3f + 0.0722f * 0.4f);
+            // Away from the sphere the background, to the bit; under it, darkened by the sun's share.
+            EXPECT_EQ(luminanceAt(caught, catcher.camera, kFarAway), background) << renderPathName(path);
+            EXPECT_LT(luminanceAt(caught, catcher.camera, kUnderSphere), 0.3f * background) << renderPathName(path);
+            // The sphere itself is drawn as without the catcher.
+            EXPECT_EQ(luminanceAt(caught, catcher.camera, {0.0f, 0.5f, 0.9f}), luminanceAt(plain, none.camera, {0.0f, 0.5f, 0.9f}));
+        }
+    }
+}
+
+TEST(ShadowRender, WithoutAShadowedLightTheCatcherChangesNothingAndShadowsOffMeanTheSamePicture) {
+    test::glContext();
+    Renderer renderer;
+    const RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Specialised, 4);
+    const Scene none = sphereOverGround(Ground::None, false);
+    const RenderOutput plain = renderer.render(test::prepared(none), settings);
+    const Scene catcher = sphereOverGround(Ground::Shadow, false);
+    EXPECT_EQ(renderer.render(test::prepared(catcher), settings).ldr.rgba, plain.ldr.rgba);
+    // The default sphere casts on itself only where its own side turns from the light, which
+    // shades that side nothing anyway: no acne on the lit side, so almost no pixel changes.
+    Scene selfShadowed = defaultScene();
+    const HdrImage defaultPicture = renderer.render(test::prepared(selfShadowed), settings).hdr;
+    for (Light& light : selfShadowed.lights) {
+        light.shadows = true;
+    }
+    const HdrImage shadowedPicture = renderer.render(test::prepared(selfShadowed), settings).hdr;
+    int changed = 0;
+    for (size_t i = 0; i < defaultPicture.rgb.size(); ++i) {
+        changed += std::abs(shadowedPicture.rgb[i] - defaultPicture.rgb[i]) > 0.02f * defaultPicture.rgb[i] + 1e-4f;
+    }
+    EXPECT_LT(changed, int(0.02 * double(defaultPicture.rgb.size()))) << changed;
+}
+
+}  // namespace
+}  // namespace patina
