@@ -17,6 +17,7 @@
 #include "inputs.h"
 #include "picture_options.h"
 #include "reference/channel_image.h"
+#include "reference/reference_draws.h"
 #include "reference/reference_render.h"
 
 namespace patina::cli {
@@ -32,10 +33,14 @@ extern "C" void stopAfterThisPass(int) {
 // progress on stderr; stoppable with Ctrl+C.
 RenderOutput renderReferenceImage(const PreparedScene& prepared, int width, int height, int samples, bool visibility) {
     const Scene& scene = prepared.scene;
-    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, width, height);
+    // The floor the display puts under the model is drawn, and a scene staged with shadows
+    // (a light casting them, a ground) counts what blocks the light.
+    const std::optional<Mesh> ground = groundOf(prepared);
+    const PixelSurfaces surfaces =
+        rasterizeSurfaces(referenceDraws(prepared, ground), scene.camera, width, height, prepared.model.get());
     ReferenceRenderOptions options;
     options.samplesPerPixel = samples;
-    options.visibility = visibility;
+    options.visibility = visibility || stagedWithShadows(scene);
     options.samplesPerPass = std::min(samples, 16);
     const auto start = std::chrono::steady_clock::now();
     const bool terminal = isatty(STDERR_FILENO) != 0;
@@ -123,7 +128,8 @@ void addRenderOptions(CLI::App& command, RenderOptions& options) {
         ->check(CLI::Range(1, 1 << 20));
     command.add_flag("--visibility", options.visibility,
                      "--reference: with shadows and occlusion, every light and the environment blocked by the scene's "
-                     "own surfaces (shadow rays through Embree); hemisphere lights are not shadowed")
+                     "own surfaces (shadow rays through Embree; hemisphere lights are not shadowed), as it is without "
+                     "asking where a light casts shadows or the display has a ground")
         ->needs(reference);
     command.add_option("--channel", options.channel,
                        "A debug channel instead of the radiance, as data (no exposure or tone map; docs/INSPECTOR.md): " +

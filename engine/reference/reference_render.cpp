@@ -8,6 +8,7 @@
 #include "environment/environment.h"
 #include "reference/probe_reference.h"
 #include "reference/ray_caster.h"
+#include "reference/reference_draws.h"
 #include "shading/environment_brdf.h"
 
 namespace patina {
@@ -61,7 +62,18 @@ ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurface
     }
     std::optional<RayCaster> occluders;
     if (options.visibility) {
-        occluders.emplace(prepared.mesh->positions, prepared.mesh->indices);
+        // The model's triangles and the ground's, which the model's shadows fall on and which
+        // hides what lies below it.
+        std::vector<glm::vec3> positions = prepared.mesh->positions;
+        std::vector<uint32_t> indices = prepared.mesh->indices;
+        if (const std::optional<Mesh> ground = groundOf(prepared)) {
+            const uint32_t first = uint32_t(positions.size());
+            positions.insert(positions.end(), ground->positions.begin(), ground->positions.end());
+            for (const uint32_t i : ground->indices) {
+                indices.push_back(first + i);
+            }
+        }
+        occluders.emplace(positions, indices);
     }
     const RayCaster* blocking = occluders ? &*occluders : nullptr;
     const int perPass = std::max(1, options.samplesPerPass);

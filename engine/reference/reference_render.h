@@ -18,7 +18,8 @@ struct ReferenceRenderOptions {
     int samplesPerPixel = 256;   // estimator iterations (one direction of each strategy each)
     int samplesPerPass = 16;     // the image is complete, and reported, after each pass
     // Shadows and occlusion: every light and the environment blocked by the scene's own
-    // triangles (ReferenceOptions::occluders, Embree). Off: each point lit as if alone.
+    // triangles and its ground's (ReferenceOptions::occluders, Embree). Off: each point lit as
+    // if alone.
     bool visibility = false;
 };
 

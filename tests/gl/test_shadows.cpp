@@ -4,11 +4,15 @@
 // sphere and leaves it, to the bit, everywhere else; without a shadowed light or a ground the
 // picture is the one without them.
 #include <cmath>
+#include <optional>
 
 #include <gtest/gtest.h>
 
 #include "gl/renderer.h"
 #include "gl/render_path.h"
+#include "reference/pixel_surfaces.h"
+#include "reference/reference_draws.h"
+#include "reference/reference_render.h"
 #include "scene/ground.h"
 #include "test_support.h"
 
@@ -83,6 +87,36 @@ TEST(ShadowRender, TheFloorUnderTheSphereIsDarkerWithShadowsAndUnchangedFarFromI
     }
     // The floor is lit: brighter than the background (luminance 0.286) where nothing shadows it.
     EXPECT_GT(luminanceAt(without, lit.camera, kFarAway), 0.3f);
+}
+
+// The shadow is the one the ground truth gives (issue 37, item 5): the reference of the staged
+// scene draws the floor and counts what blocks the sun (Embree's shadow rays, stagedWithShadows
+// turning visibility on by itself); under the sphere both leave the sky's light alone, far from
+// it both give the sun's and the sky's, the map's PCF and bias costing nothing there.
+TEST(ShadowRender, TheShadowOnTheFloorIsTheOneTheGroundTruthGives) {
+    test::glContext();
+    const Scene scene = sphereOverGround(Ground::Floor, true);
+    ASSERT_TRUE(stagedWithShadows(scene));
+    const PreparedScene prepared = test::prepared(scene);
+    const HdrImage gpu =
+        Renderer().render(prepared, test::renderSettings(kSize, kSize, RenderPath::Specialised, 1)).hdr;
+    const std::optional<Mesh> ground = groundOf(prepared);
+    ASSERT_TRUE(ground);
+    const PixelSurfaces surfaces =
+        rasterizeSurfaces(referenceDraws(prepared, ground), scene.camera, kSize, kSize, prepared.model.get());
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = 1;   // no environment: every light is exact
+    options.visibility = true;
+    const HdrImage truth = renderReference(prepared, surfaces, options).value;
+    for (const glm::vec3 point : {kUnderSphere, kFarAway}) {
+        const float expected = luminanceAt(truth, scene.camera, point);
+        EXPECT_GT(expected, 0.0f);
+        EXPECT_NEAR(luminanceAt(gpu, scene.camera, point), expected, 0.02f * expected) << point.x;
+    }
+    // Without visibility the truth has no shadow: the floor under the sphere takes the sun.
+    options.visibility = false;
+    const HdrImage open = renderReference(prepared, surfaces, options).value;
+    EXPECT_GT(luminanceAt(open, scene.camera, kUnderSphere), 3.0f * luminanceAt(truth, scene.camera, kUnderSphere));
 }
 
 // A point light and a sphere light above the sphere, outside its bounds: a perspective map from
