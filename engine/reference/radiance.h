@@ -8,6 +8,7 @@
 #include "environment/environment.h"
 #include "reference/environment_distribution.h"
 #include "shading/brdf_model_id.h"
+#include "shading/material_parameters.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -39,7 +40,17 @@ struct ReferenceOptions {
     // estimate takes the extension's sheened BRDF sample by sample, E at N.V and N.L.
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
+    // KHR_materials_transmission's factor (0: none, and every estimate is as without) and
+    // KHR_materials_volume's attenuation T (docs/SHADING.md S7), thin-walled: that fraction of the
+    // diffuse gone, the environment's light through the wall estimated by sampling the mirrored
+    // GGX lobe (transmission.glsl's f_t), the other lights' by transmission.glsl exactly as the
+    // GPU (sphere and tube lights at their centres, a hemisphere light along -V).
+    float transmission = 0.0f;
+    glm::vec3 transmissionAttenuation{1.0f};
 };
+
+// T of KHR_materials_volume for `material` (its thickness already in world units).
+glm::vec3 volumeAttenuationOf(const MaterialParameters& material);
 
 struct ReferenceEstimate {
     glm::vec3 value{0.0f};
