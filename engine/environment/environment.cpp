@@ -42,6 +42,16 @@ glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial
                             material, N, V, dominant);
 }
 
+glm::vec3 transmissionEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                       const shader::Transmission& transmission, const Environment& environment,
+                                       float intensity, float rotationDegrees, glm::vec3 V) {
+    const std::function<glm::vec3(glm::vec3, float)> read = [&](glm::vec3 d, float lod) {
+        return sampleCube(environment.prefiltered, d, lod);
+    };
+    return transmissionEnvironment(model, read, environment.maxLod(), intensity, rotationDegrees, material, transmission,
+                                   V);
+}
+
 glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,
                                      const Environment& environment, const CubeChain& sourceChain, float intensity,
                                      float rotationDegrees, glm::vec3 N, glm::vec3 V, unsigned count,

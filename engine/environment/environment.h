@@ -50,6 +50,13 @@ std::shared_ptr<const Environment> environmentShown(const std::shared_ptr<const 
 glm::vec3 shadeEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material, const Environment& environment,
                                 float intensity, float rotationDegrees, glm::vec3 N, glm::vec3 V, bool dominant = false);
 
+// KHR_materials_transmission's light through the wall under the environment on the CPU
+// (transmissionEnvironment of ibl_model.glsl, the GPU's), reading the chain as the split sum
+// does; `material` as deriveSurfaceMaterial made it.
+glm::vec3 transmissionEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,
+                                       const shader::Transmission& transmission, const Environment& environment,
+                                       float intensity, float rotationDegrees, glm::vec3 V);
+
 // The stochastic mode on the CPU (shadeEnvironmentStochastic of ibl_model.glsl), reading
 // `sourceChain`: the environment's source cube and its box-filtered mips (sourceMipChain).
 glm::vec3 stochasticEnvironmentOnCpu(BrdfModelId model, const shader::SurfaceMaterial& material,

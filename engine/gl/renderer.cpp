@@ -292,13 +292,15 @@ private:
     void drawItems() const;
     void drawSinglePass(Items opaque, Items blended) const;
     // The shading program of `item`: the one for its BRDF model, whether it has a clear coat
-    // (PATINA_CLEARCOAT: only a coated item pays for the coat) and a sheen (PATINA_SHEEN), and, in the specialised path
+    // (PATINA_CLEARCOAT: only a coated item pays for the coat), a sheen (PATINA_SHEEN) and a
+    // transmission (PATINA_TRANSMISSION), and, in the specialised path
     // with maps, its map set (programKeyOf).
     struct ProgramKey {
         BrdfModelId model;
         int mapSet;
         bool clearcoat;
         bool sheen;
+        bool transmission;
         auto operator<=>(const ProgramKey&) const = default;
     };
     struct ItemProgram {
@@ -340,7 +342,7 @@ private:
     ChannelLights channelLights;   // with a channel: its lights in `packed`
     const GlImage* linear = nullptr;
     const GlProgram* displayPass = nullptr;
-    // By (BRDF model, map set, coat, sheen): each item's, programKeyOf. One model, no maps and
+    // By (BRDF model, map set, coat, sheen, transmission): each item's, programKeyOf. One model, no maps and
     // no layer: one program.
     std::map<ProgramKey, const GlProgram*> shading;
     const GlProgram* backgroundPass = nullptr;
@@ -507,7 +509,8 @@ void Renderer::Frame::choosePrograms() {
             continue;
         }
         const BrdfModelId model = itemKey.model;
-        const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(maps, itemKey.clearcoat, itemKey.sheen);
+        const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(maps, itemKey.clearcoat, itemKey.sheen,
+                                                                            itemKey.transmission);
         ShaderSpecialisation key = specialised;
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
@@ -739,7 +742,7 @@ void blendOver(float alpha) {
 Renderer::Frame::ProgramKey Renderer::Frame::programKeyOf(const SceneDraw& draw) const {
     const bool byMapSet = settings.path == RenderPath::Specialised && maps;
     return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet,
-            hasClearcoat(draw.material), hasSheen(draw.material)};
+            hasClearcoat(draw.material), hasSheen(draw.material), hasTransmission(draw.material)};
 }
 
 Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {

@@ -50,6 +50,10 @@ inline bool hasSheen(const MaterialParameters& material) {
     return material.sheenColor.r > 0.0f || material.sheenColor.g > 0.0f || material.sheenColor.b > 0.0f;
 }
 
+// Whether `material` passes light through (KHR_materials_transmission's factor above 0): the
+// items whose programs compile the transmission and the volume in (PATINA_TRANSMISSION).
+inline bool hasTransmission(const MaterialParameters& material) { return material.transmission > 0.0f; }
+
 // `lights` as packEnabledLights gives them (the uniform block's order); `noDiffuse` when every
 // material drawn has none (hasNoDiffuse). `flatSlots`: how many lights the vertex stage can
 // hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).

@@ -22,6 +22,7 @@ extern const char* const lights_glsl;
 extern const char* const clearcoat_glsl;
 extern const char* const sheen_texel_glsl;
 extern const char* const sheen_glsl;
+extern const char* const transmission_glsl;
 extern const char* const light_block_glsl;
 extern const char* const energy_texel_glsl;
 extern const char* const energy_table_glsl;
@@ -45,7 +46,7 @@ std::vector<const char*> shadingFragmentParts(bool channels) {
     std::vector<const char*> parts{
         shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
         shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::clearcoat_glsl,
-        shader_sources::sheen_texel_glsl,  shader_sources::sheen_glsl,
+        shader_sources::sheen_texel_glsl,  shader_sources::sheen_glsl,       shader_sources::transmission_glsl,
         shader_sources::energy_texel_glsl,
         shader_sources::energy_table_glsl, shader_sources::brdf_terms_glsl,   shader_sources::brdf_model_glsl,
         shader_sources::ibl_model_glsl,    shader_sources::display_glsl,      shader_sources::texture_glsl,
@@ -107,7 +108,10 @@ MaterialUniforms::MaterialUniforms(const GlProgram& program)
     : baseColor_(program.uniform("uBaseColor")), roughness_(program.uniform("uRoughness")),
       specular_(program.uniform("uSpecular")), metallic_(program.uniform("uMetallic")),
       clearcoat_(program.uniform("uClearcoat")), clearcoatRoughness_(program.uniform("uClearcoatRoughness")),
-      sheenColor_(program.uniform("uSheenColor")), sheenRoughness_(program.uniform("uSheenRoughness")) {}
+      sheenColor_(program.uniform("uSheenColor")), sheenRoughness_(program.uniform("uSheenRoughness")),
+      transmission_(program.uniform("uTransmission")), thickness_(program.uniform("uThickness")),
+      attenuationColor_(program.uniform("uAttenuationColor")),
+      attenuationDistance_(program.uniform("uAttenuationDistance")) {}
 
 void MaterialUniforms::set(const MaterialParameters& material) const {
     glUniform3f(baseColor_, material.baseColor.x, material.baseColor.y, material.baseColor.z);
@@ -122,6 +126,13 @@ void MaterialUniforms::set(const MaterialParameters& material) const {
         glUniform3f(sheenColor_, material.sheenColor.x, material.sheenColor.y, material.sheenColor.z);
         glUniform1f(sheenRoughness_, material.sheenRoughness);
     }
+    if (transmission_ >= 0) {   // only a transmitting program has them (PATINA_TRANSMISSION)
+        glUniform1f(transmission_, material.transmission);
+        glUniform1f(thickness_, material.thickness);
+        const glm::vec3& c = material.attenuationColor;
+        glUniform3f(attenuationColor_, c.x, c.y, c.z);
+        glUniform1f(attenuationDistance_, material.attenuationDistance);
+    }
 }
 
 void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material) {
@@ -131,6 +142,7 @@ void setMaterialUniforms(const GlProgram& program, const MaterialParameters& mat
 DrawUniforms::DrawUniforms(const GlProgram& program, ModelTextures* textures)
     : model_(program.uniform("uModel")), normalMatrix_(program.uniform("uNormalMatrix")),
       reverseBackNormals_(program.uniform("uReverseBackNormals")), channelAlpha_(program.uniform("uChannelAlpha")),
+      thicknessScale_(program.uniform("uThicknessScale")),
       material_(program), textures_(textures) {
     if (textures_) {
         maps_.emplace(program, ShadingPrograms::kFirstMapUnit);
@@ -143,6 +155,9 @@ void DrawUniforms::set(const SceneDraw& draw) const {
     glUniform1i(reverseBackNormals_, draw.reverseBackNormals ? 1 : 0);
     if (channelAlpha_ >= 0) {   // only a channel program without maps has it
         glUniform1f(channelAlpha_, draw.alpha);
+    }
+    if (thicknessScale_ >= 0) {   // PATINA_TRANSMISSION: the volume's thickness times the node's scale
+        glUniform1f(thicknessScale_, thicknessScaleOf(draw.transform));
     }
     material_.set(draw.material);
     if (maps_) {

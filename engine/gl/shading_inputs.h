@@ -47,7 +47,7 @@ public:
 
 private:
     GLint baseColor_, roughness_, specular_, metallic_, clearcoat_, clearcoatRoughness_, sheenColor_,
-        sheenRoughness_;
+        sheenRoughness_, transmission_, thickness_, attenuationColor_, attenuationDistance_;
 };
 // The same, for one draw (program must be in use).
 void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material);
@@ -63,7 +63,7 @@ public:
     void set(const SceneDraw& draw) const;   // its program in use
 
 private:
-    GLint model_, normalMatrix_, reverseBackNormals_, channelAlpha_;
+    GLint model_, normalMatrix_, reverseBackNormals_, channelAlpha_, thicknessScale_;
     MaterialUniforms material_;
     ModelTextures* textures_;
     std::optional<SurfaceMapUniforms> maps_;

@@ -61,6 +61,9 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (has(surface, Surface::Sheen)) {
         defines.push_back("PATINA_SHEEN");
     }
+    if (has(surface, Surface::Transmission)) {
+        defines.push_back("PATINA_TRANSMISSION");
+    }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {
             defines.push_back("PATINA_ENVIRONMENT_DOMINANT");

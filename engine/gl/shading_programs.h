@@ -50,11 +50,13 @@ public:
     // Either also with KHR_materials_clearcoat's coat (PATINA_CLEARCOAT, shaders/shared/
     // clearcoat.glsl) and with KHR_materials_sheen's sheen (PATINA_SHEEN, shaders/shared/
     // sheen.glsl), each compiled only for items whose material has one (hasClearcoat,
-    // hasSheen). Bits: Maps, Clearcoat and Sheen combine (surfaceOf).
-    enum class Surface { Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4 };
-    static Surface surfaceOf(bool maps, bool clearcoat, bool sheen) {
+    // hasSheen), and with KHR_materials_transmission's and _volume's light through the surface
+    // (PATINA_TRANSMISSION, shaders/shared/transmission.glsl; hasTransmission). Bits: Maps,
+    // Clearcoat, Sheen and Transmission combine (surfaceOf).
+    enum class Surface { Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4, Transmission = 8 };
+    static Surface surfaceOf(bool maps, bool clearcoat, bool sheen, bool transmission = false) {
         return Surface((maps ? int(Surface::Maps) : 0) | (clearcoat ? int(Surface::Clearcoat) : 0) |
-                       (sheen ? int(Surface::Sheen) : 0));
+                       (sheen ? int(Surface::Sheen) : 0) | (transmission ? int(Surface::Transmission) : 0));
     }
     static bool has(Surface surface, Surface part) { return (int(surface) & int(part)) != 0; }
 

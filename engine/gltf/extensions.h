@@ -18,8 +18,8 @@ ModelExtension modelExtension(const std::string& name, bool required);
 std::vector<ModelExtension> modelExtensions(const std::vector<std::string>& used,
                                             const std::vector<std::string>& required);
 
-// "KHR_materials_transmission (not drawn): light through the surface is left out; the material
-// shows opaque".
+// "KHR_materials_diffuse_transmission (not drawn): light through the surface is left out; the
+// material shows opaque".
 std::string extensionLine(const ModelExtension& extension);
 
 // Throws InputError("SOURCE: requires the extension NAME, which Patina does not draw (...)")

@@ -14,6 +14,8 @@ constexpr const char* kSpecular = "KHR_materials_specular";
 constexpr const char* kIor = "KHR_materials_ior";
 constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr const char* kSheen = "KHR_materials_sheen";
+constexpr const char* kTransmission = "KHR_materials_transmission";
+constexpr const char* kVolume = "KHR_materials_volume";
 
 float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
 
@@ -25,11 +27,42 @@ double exact(float value) { return double(value); }
 const char* const kMaterialExtensions[2] = {kSpecular, kIor};
 const char* const kClearcoatExtension = kClearcoat;
 const char* const kSheenExtension = kSheen;
+const char* const kTransmissionExtension = kTransmission;
+const char* const kVolumeExtension = kVolume;
 
 double f0FromIor(double ior) {
     const double r = (ior - 1.0) / (ior + 1.0);
     return r * r;
 }
+
+namespace {
+// KHR_materials_transmission's transmissionFactor (0 by default: none) and KHR_materials_volume's
+// thicknessFactor (0: thin), attenuationColor (white) and attenuationDistance (infinite by
+// default, Patina's 0; the schema wants it above 0). Their maps are model_materials.cpp's.
+void volumeFromGltf(const tinygltf::Material& material, const std::string& what, const std::string& source,
+                    Material& result) {
+    const std::string transmissionAt = what + "/extensions/" + kTransmission;
+    const tinygltf::Value* transmission = extensionOf(material.extensions, kTransmission);
+    result.transmission = unit(numberField(transmission, "transmissionFactor", 0.0, transmissionAt, source));
+    const std::string volumeAt = what + "/extensions/" + kVolume;
+    const tinygltf::Value* volume = extensionOf(material.extensions, kVolume);
+    const double thickness = numberField(volume, "thicknessFactor", 0.0, volumeAt, source);
+    if (thickness < 0.0) {
+        throw InputError(source + ": " + volumeAt + "/thicknessFactor: " + std::to_string(thickness) + " is below 0");
+    }
+    result.thickness = float(std::min(thickness, double(kMaxThickness)));
+    const std::vector<double> color = numbersField(volume, "attenuationColor", 3, volumeAt, source);
+    for (size_t i = 0; i < color.size(); ++i) {
+        result.attenuationColor[int(i)] = unit(color[i]);
+    }
+    const double distance = numberField(volume, "attenuationDistance", 0.0, volumeAt, source);
+    if (volume && volume->Has("attenuationDistance") && !(distance > 0.0)) {
+        throw InputError(source + ": " + volumeAt + "/attenuationDistance: " + std::to_string(distance) +
+                         " is not above 0 (leave it out for no attenuation)");
+    }
+    result.attenuationDistance = float(std::min(distance, double(kMaxThickness)));
+}
+}  // namespace
 
 Material materialFromGltf(const tinygltf::Material& material, const std::string& what,
                           const std::string& source, const std::string& fallbackName) {
@@ -75,6 +108,7 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
         result.sheenColor[int(i)] = unit(sheenColor[i]);
     }
     result.sheenRoughness = unit(numberField(sheen, "sheenRoughnessFactor", 0.0, sheenAt, source));
+    volumeFromGltf(material, what, source, result);
     return result;
 }
 
@@ -100,6 +134,20 @@ Json materialToGltf(const Material& material) {
         const glm::vec3& sheen = material.sheenColor;
         json["extensions"][kSheen] = {{"sheenColorFactor", {exact(sheen.r), exact(sheen.g), exact(sheen.b)}},
                                       {"sheenRoughnessFactor", exact(material.sheenRoughness)}};
+    }
+    // A transmission only where there is one, and its volume only beside it (the volume
+    // extension requires a transmission); an infinite distance (0) is left out, as glTF's default.
+    if (material.transmission > 0.0f) {
+        json["extensions"][kTransmission] = {{"transmissionFactor", exact(material.transmission)}};
+        if (material.thickness > 0.0f) {
+            const glm::vec3& c = material.attenuationColor;
+            Json volume{{"thicknessFactor", exact(material.thickness)},
+                        {"attenuationColor", {exact(c.r), exact(c.g), exact(c.b)}}};
+            if (material.attenuationDistance > 0.0f) {
+                volume["attenuationDistance"] = exact(material.attenuationDistance);
+            }
+            json["extensions"][kVolume] = volume;
+        }
     }
     return json;
 }

@@ -27,10 +27,17 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
 // pbrMetallicRoughness plus KHR_materials_specular (specularFactor 1, so that F90 stays 1, and
 // specularColorFactor 0.08 * specular / f0FromIor(1.5) = 2 * specular) and KHR_materials_ior 1.5,
 // KHR_materials_clearcoat's factors where the material has a coat (either factor above 0), and
-// KHR_materials_sheen's where it has a sheen (its colour or roughness above 0).
+// KHR_materials_sheen's where it has a sheen (its colour or roughness above 0), and
+// KHR_materials_transmission's and KHR_materials_volume's where it passes light (the volume
+// where it has a thickness).
 Json materialToGltf(const Material& material);
 extern const char* const kMaterialExtensions[2];   // the extensions materialToGltf always uses
 extern const char* const kClearcoatExtension;      // "KHR_materials_clearcoat", where it has a coat
 extern const char* const kSheenExtension;          // "KHR_materials_sheen", where it has a sheen
+extern const char* const kTransmissionExtension;   // "KHR_materials_transmission", where it has one
+extern const char* const kVolumeExtension;         // "KHR_materials_volume", beside a transmission with a thickness
+// The largest thickness and attenuation distance kept (model units): beyond it a float's
+// exponent stays finite and nothing visible changes.
+inline constexpr float kMaxThickness = 1.0e6f;
 
 }  // namespace patina::gltf

@@ -247,6 +247,29 @@ void sheenJson(const ModelMaterial& material, Textures& textures, Json& json) {
     textures.extensions.insert(name);
 }
 
+// KHR_materials_transmission and KHR_materials_volume where the material has them: the factors
+// materialToGltf wrote, and their maps (model_materials.cpp reads them back). A map without
+// its extension's factors (a transmission of 0) is not written: the volume needs the
+// transmission, and a transmission of 0 passes nothing whatever its map.
+void volumeJson(const ModelMaterial& material, Textures& textures, Json& json) {
+    if (!json.contains("extensions")) {
+        return;
+    }
+    Json& extensions = json["extensions"];
+    if (extensions.contains(gltf::kTransmissionExtension)) {
+        if (material.transmissionMap.present()) {
+            extensions[gltf::kTransmissionExtension]["transmissionTexture"] = textures.info(material.transmissionMap);
+        }
+        textures.extensions.insert(gltf::kTransmissionExtension);
+    }
+    if (extensions.contains(gltf::kVolumeExtension)) {
+        if (material.thicknessMap.present()) {
+            extensions[gltf::kVolumeExtension]["thicknessTexture"] = textures.info(material.thicknessMap);
+        }
+        textures.extensions.insert(gltf::kVolumeExtension);
+    }
+}
+
 // The material as glTF writes it (3.9): the factors as materialToGltf maps them, and every
 // map, alpha, emission and sidedness the model read (the inverse of model_materials.cpp).
 Json materialJson(const ModelMaterial& material, Textures& textures) {
@@ -293,6 +316,7 @@ Json materialJson(const ModelMaterial& material, Textures& textures) {
     }
     clearcoatJson(material, textures, json);
     sheenJson(material, textures, json);
+    volumeJson(material, textures, json);
     return json;
 }
 

@@ -18,25 +18,33 @@ namespace {
 // lose their map when the image could not be had).
 // False when `progress` stopped the decoding.
 bool attachImages(const tinygltf::Model& document, Model& model, const std::string& source, const Progress& progress) {
-    std::vector<bool> used(document.images.size(), false);
-    for (ModelMaterial& material : model.materials) {
-        for (const auto& map : mapsOf(material)) {
-            if (map.slot->present()) {
-                used[size_t(map.slot->image)] = true;
+    // The drawn maps and the slots kept beside them, not drawn (KHR_materials_transmission's and
+    // KHR_materials_volume's maps, model/model.h): their images are exported all the same.
+    auto forEachSlot = [&](auto visit) {
+        for (ModelMaterial& material : model.materials) {
+            for (const auto& map : mapsOf(material)) {
+                visit(*map.slot);
+            }
+            for (TextureSlot* slot : {&material.transmissionMap, &material.thicknessMap}) {
+                visit(*slot);
             }
         }
-    }
+    };
+    std::vector<bool> used(document.images.size(), false);
+    forEachSlot([&](const TextureSlot& slot) {
+        if (slot.present()) {
+            used[size_t(slot.image)] = true;
+        }
+    });
     const std::optional<std::vector<int>> decoded = gltf::decodeImages(document, used, model, source, progress);
     if (!decoded) {
         return false;
     }
-    for (ModelMaterial& material : model.materials) {
-        for (const auto& map : mapsOf(material)) {
-            if (map.slot->present()) {
-                map.slot->image = (*decoded)[size_t(map.slot->image)];
-            }
+    forEachSlot([&](TextureSlot& slot) {
+        if (slot.present()) {
+            slot.image = (*decoded)[size_t(slot.image)];
         }
-    }
+    });
     return true;
 }
 

@@ -84,6 +84,7 @@ private:
     void transform(const tinygltf::ExtensionMap& extensions, const std::string& where, TextureSlot& slot) const;
     void clearcoatMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
     void sheenMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
+    void volumeMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
 
     const tinygltf::Model& document_;
     const std::string& source_;
@@ -276,6 +277,7 @@ ModelMaterial MaterialReader::read(int index) {
     result.doubleSided = material.doubleSided;
     clearcoatMaps(material, where, result);
     sheenMaps(material, where, result);
+    volumeMaps(material, where, result);
     return result;
 }
 
@@ -312,6 +314,22 @@ void MaterialReader::sheenMaps(const tinygltf::Material& material, const std::st
     result.sheenColor = slot(textureInfoOf(object, "sheenColorTexture", at, source_), at + "/sheenColorTexture");
     result.sheenRoughness =
         slot(textureInfoOf(object, "sheenRoughnessTexture", at, source_), at + "/sheenRoughnessTexture");
+}
+
+// KHR_materials_transmission's transmissionTexture and KHR_materials_volume's thicknessTexture
+// (their factors are materialFromGltf's), each a textureInfo read as the core maps are.
+void MaterialReader::volumeMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result) {
+    const char* transmissionName = "KHR_materials_transmission";
+    if (const tinygltf::Value* object = extensionOf(material.extensions, transmissionName)) {
+        const std::string at = where + "/extensions/" + transmissionName;
+        result.transmissionMap =
+            slot(textureInfoOf(object, "transmissionTexture", at, source_), at + "/transmissionTexture");
+    }
+    const char* volumeName = "KHR_materials_volume";
+    if (const tinygltf::Value* object = extensionOf(material.extensions, volumeName)) {
+        const std::string at = where + "/extensions/" + volumeName;
+        result.thicknessMap = slot(textureInfoOf(object, "thicknessTexture", at, source_), at + "/thicknessTexture");
+    }
 }
 
 }  // namespace

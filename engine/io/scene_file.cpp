@@ -17,6 +17,8 @@ namespace patina {
 namespace {
 constexpr Range kUnit{0.0, 1.0};
 constexpr Range kNonNegative{0.0, 3.4e38};
+// KHR_materials_volume's thickness and attenuation distance, in model units (0: none, infinite).
+constexpr Range kThickness{0.0, 1.0e6};
 
 // The shortest decimal that reads back as the same float, so files say 0.8, not
 // 0.800000011920929.
@@ -301,6 +303,10 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.clearcoatRoughness = reader.number("clearcoatRoughness", material.clearcoatRoughness, kUnit);
     material.sheenColor = reader.vec3("sheenColor", material.sheenColor, kUnit);
     material.sheenRoughness = reader.number("sheenRoughness", material.sheenRoughness, kUnit);
+    material.transmission = reader.number("transmission", material.transmission, kUnit);
+    material.thickness = reader.number("thickness", material.thickness, kThickness);
+    material.attenuationColor = reader.vec3("attenuationColor", material.attenuationColor, kUnit);
+    material.attenuationDistance = reader.number("attenuationDistance", material.attenuationDistance, kThickness);
     if (reader.has("model")) {
         material.model = brdfModelFromJson(reader, "model");
     }
@@ -519,6 +525,13 @@ Json materialToJson(const Material& material) {
     if (material.sheenColor != glm::vec3(0.0f) || material.sheenRoughness != 0.0f) {
         json["sheenColor"] = toJson(material.sheenColor);
         json["sheenRoughness"] = toJson(material.sheenRoughness);
+    }
+    // KHR_materials_transmission's and KHR_materials_volume's only where light passes.
+    if (material.transmission != 0.0f) {
+        json["transmission"] = toJson(material.transmission);
+        json["thickness"] = toJson(material.thickness);
+        json["attenuationColor"] = toJson(material.attenuationColor);
+        json["attenuationDistance"] = toJson(material.attenuationDistance);
     }
     if (!material.notes.empty()) {
         json["notes"] = material.notes;

@@ -66,6 +66,11 @@ struct ModelMaterial {
     // `factors.sheenRoughness`): RGB scales the sheen's colour, A its roughness.
     TextureSlot sheenColor;                 // sRGB; RGB
     TextureSlot sheenRoughness;             // linear; A
+    // KHR_materials_transmission's map (R scales `factors.transmission`) and KHR_materials_volume's
+    // (G scales `factors.thickness`): read, kept and exported, not drawn (docs/SHADING.md S7), so
+    // not among mapsOf's.
+    TextureSlot transmissionMap;            // linear; R
+    TextureSlot thicknessMap;               // linear; G
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;

@@ -246,7 +246,10 @@ PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camer
     surfaces.height = height;
     surfaces.sampleOfPixel.assign(pixels, -1);
     for (const SceneDraw& draw : draws) {
-        surfaces.materials.push_back(draw.material);
+        // The volume's thickness in world units, as the GPU scales it (uThicknessScale).
+        MaterialParameters material = draw.material;
+        material.thickness *= thicknessScaleOf(draw.transform);
+        surfaces.materials.push_back(material);
     }
     for (size_t pixel = 0; pixel < pixels; ++pixel) {
         if (std::isfinite(raster.depth[pixel])) {

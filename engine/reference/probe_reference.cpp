@@ -49,6 +49,8 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         options.clearcoatRoughness = materials[m].clearcoatRoughness;
         options.sheenColor = materials[m].sheenColor;
         options.sheenRoughness = materials[m].sheenRoughness;
+        options.transmission = materials[m].transmission;
+        options.transmissionAttenuation = volumeAttenuationOf(materials[m]);
         const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,
                                                       options);

@@ -46,6 +46,10 @@ shader::Sheen referenceSheen(const ReferenceOptions& options, glm::vec3 N, glm::
     return shader::deriveSheen(options.sheenColor, options.sheenRoughness, N, V);
 }
 
+glm::vec3 volumeAttenuationOf(const MaterialParameters& material) {
+    return shader::volumeAttenuation(material.attenuationColor, material.attenuationDistance, material.thickness);
+}
+
 namespace {
 bool hasReferenceSheen(const ReferenceOptions& options) {
     return options.sheenColor != glm::vec3(0.0f);
@@ -162,26 +166,80 @@ SampleMoments environmentMoments(BrdfModelId model, const shader::SurfaceMateria
     }
     return moments;
 }
+
+// KHR_materials_transmission's light through the wall from the environment (transmission.glsl's
+// f_t, thin-walled): f_t is the reflection lobe mirrored through the surface plane, so GGX
+// half-vector sampling's L, mirrored, samples it with the same pdf (ggxPdf of the unmirrored L).
+// Its own random stream: the base's estimate draws what it drew without a transmission.
+SampleMoments transmissionMoments(const shader::Transmission& transmission, const ReferenceEnvironment& environment,
+                                  glm::vec3 N, glm::vec3 V, const ReferenceOptions& options) {
+    const glm::vec2 rotation = environmentRotation(environment.rotationDegrees);
+    std::mt19937_64 random(options.seed ^ 0x5DEECE66Dull);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    SampleMoments moments;
+    for (int i = 0; i < options.samples; ++i) {
+        const glm::vec3 H =
+            shader::importanceSampleGGX(glm::vec2(uniform(random), uniform(random)), transmission.alpha, N);
+        const glm::vec3 reflected = 2.0f * glm::dot(V, H) * H - V;
+        const float NoR = glm::dot(N, reflected);
+        const float pdf = NoR > 0.0f ? ggxPdf(N, V, reflected, transmission.alpha) : 0.0f;
+        if (!(pdf > 0.0f)) {
+            moments.add(glm::dvec3(0.0));
+            continue;
+        }
+        const glm::vec3 L = reflected - 2.0f * NoR * N;   // through the wall
+        const glm::vec3 radiance = environment.intensity * sampleEquirect(environment.environment->image,
+                                                                          shader::toEnvironmentFrame(L, rotation.x, rotation.y));
+        moments.add(glm::dvec3(radiance * shader::transmissionBtdf(transmission, N, V, L) * (std::min(NoR, 1.0f) / pdf)));
+    }
+    return moments;
+}
+
+// The lights but the environment through the wall, as transmission.glsl gives them (the
+// hemisphere lights' share occluded as their reflected light is).
+glm::vec3 transmittedLights(const shader::Transmission& transmission, const std::vector<shader::PackedLight>& lights,
+                            glm::vec3 P, glm::vec3 N, glm::vec3 V, const ReferenceOptions& options) {
+    glm::vec3 sum(0.0f);
+    for (const shader::PackedLight& light : lights) {
+        const float occlusion = light.type == shader::LIGHT_HEMISPHERE ? options.indirectOcclusion : 1.0f;
+        sum += occlusion * shader::transmissionLight(light, transmission, P, N, V);
+    }
+    return sum;
+}
 }  // namespace
 
-ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& material,
+ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMaterial& surface,
                                     const ReferenceEnvironment& environment,
                                     const std::vector<shader::PackedLight>& lights, glm::vec3 P, glm::vec3 N,
                                     glm::vec3 V, const ReferenceOptions& options) {
     N = shader::safeNormalize(N);
     V = shader::safeNormalize(V);
+    // A transmission takes its fraction of the diffuse (transmission.glsl's transmissionDiffuse).
+    const bool transmits = options.transmission > 0.0f;
+    const shader::Transmission transmission = shader::deriveTransmission(
+        surface, options.transmission, options.transmissionAttenuation, N, V);
+    const shader::SurfaceMaterial material =
+        transmits ? shader::transmissionDiffuse(surface, options.transmission) : surface;
     // Sphere and tube lights by their own Monte Carlo (area_lights.h), the others exactly.
     ReferenceEstimate estimate = areaLightReference(model, material, lights, P, N, V, options);
     const ReferenceLayers layers{referenceCoat(options, N, V), referenceSheen(options, N, V)};
     addExactLights(estimate.value, model, material, lights, layers, P, N, V, options);
+    if (transmits) {
+        estimate.value += transmittedLights(transmission, lights, P, N, V, options);
+    }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
     }
     const SampleMoments moments = environmentMoments(model, material, environment, layers, P, N, V, options);
     const double n = double(options.samples);
     const double occlusion = options.indirectOcclusion;
-    const glm::dvec3 variance = moments.varianceOfMean(n) * (occlusion * occlusion);
+    glm::dvec3 variance = moments.varianceOfMean(n) * (occlusion * occlusion);
     estimate.value += glm::vec3(moments.mean(n) * occlusion);
+    if (transmits) {
+        const SampleMoments through = transmissionMoments(transmission, environment, N, V, options);
+        variance += through.varianceOfMean(n) * (occlusion * occlusion);
+        estimate.value += glm::vec3(through.mean(n) * occlusion);
+    }
     // Independent estimates: their variances add.
     estimate.standardError = glm::vec3(glm::sqrt(variance + glm::dvec3(estimate.standardError * estimate.standardError)));
     return estimate;

@@ -9,6 +9,7 @@
 #include "reference/environment_distribution.h"
 #include "reference/ray_caster.h"
 #include "shading/brdf_model_id.h"
+#include "shading/material_parameters.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -45,7 +46,17 @@ struct ReferenceOptions {
     // its own; hemisphere lights, which have no direction, are not shadowed. Null: nothing
     // blocks anything, the estimate of a point alone in its lights.
     const RayCaster* occluders = nullptr;
+    // KHR_materials_transmission's factor (0: none, and every estimate is as without) and
+    // KHR_materials_volume's attenuation T (docs/SHADING.md S7), thin-walled: that fraction of the
+    // diffuse gone, the environment's light through the wall estimated by sampling the mirrored
+    // GGX lobe (transmission.glsl's f_t), the other lights' by transmission.glsl exactly as the
+    // GPU (sphere and tube lights at their centres, a hemisphere light along -V).
+    float transmission = 0.0f;
+    glm::vec3 transmissionAttenuation{1.0f};
 };
+
+// T of KHR_materials_volume for `material` (its thickness already in world units).
+glm::vec3 volumeAttenuationOf(const MaterialParameters& material);
 
 struct ReferenceEstimate {
     glm::vec3 value{0.0f};

@@ -180,6 +180,21 @@ glm::vec3 clearcoatEnvironment(BrdfModelId id, shader::EnvironmentSource prefilt
     return glm::vec3(0.0f);
 }
 
+glm::vec3 transmissionEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod, float intensity,
+                                  float rotationDegrees, const shader::SurfaceMaterial& material,
+                                  const shader::Transmission& transmission, glm::vec3 V) {
+    const glm::vec2 rotation = environmentRotation(rotationDegrees);
+    switch (id) {
+#define PATINA_SHADE(model, name, summary)                                                                         \
+    PATINA_CASE(shader, model,                                                                                     \
+                transmissionEnvironment(prefiltered, maxLod, rotation.x, rotation.y, material, transmission, V) * \
+                    intensity)
+        PATINA_BRDF_MODELS(PATINA_SHADE)
+#undef PATINA_SHADE
+    }
+    return glm::vec3(0.0f);
+}
+
 glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,
                                      shader::EnvironmentSource irradiance, float intensity, float rotationDegrees,
                                      const shader::SurfaceMaterial& material, glm::vec3 N, glm::vec3 V,

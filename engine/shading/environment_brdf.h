@@ -40,6 +40,13 @@ glm::vec3 shadeEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered
 glm::vec3 clearcoatEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod, float intensity,
                                float rotationDegrees, const shader::Clearcoat& coat, glm::vec3 V);
 
+// transmissionEnvironment of ibl_model.glsl for `id` times `intensity`: KHR_materials_
+// transmission's light through the wall under the environment (the GPU's, whichever method
+// shades the base); `material` as deriveSurfaceMaterial made it.
+glm::vec3 transmissionEnvironment(BrdfModelId id, shader::EnvironmentSource prefiltered, float maxLod, float intensity,
+                                  float rotationDegrees, const shader::SurfaceMaterial& material,
+                                  const shader::Transmission& transmission, glm::vec3 V);
+
 // shadeEnvironmentStochastic of ibl_model.glsl for `id`: `count` filtered importance samples at
 // the real N and V read from `source`, the box-filtered mip chain of the environment's source.
 glm::vec3 shadeEnvironmentStochastic(BrdfModelId id, shader::EnvironmentSource source, float sourceFaceSize,

@@ -1,4 +1,8 @@
 #pragma once
+#include <cmath>
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec3.hpp>
 
 #include "shading/brdf_model_id.h"
@@ -23,7 +27,25 @@ struct MaterialParameters {
     // (PATINA_SHEEN), and the material shades as without the extension.
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
+    // KHR_materials_transmission's factor (docs/SHADING.md S7): the fraction of the dielectric's
+    // diffuse that passes through the (thin-walled) surface instead, in [0, 1]. 0 is none:
+    // nothing of it is compiled (PATINA_TRANSMISSION), and the material shades as without it.
+    float transmission = 0.0f;
+    // KHR_materials_volume's (docs/SHADING.md S7), read only where there is a transmission: the
+    // thickness in the mesh's units (scaled by the node's scale), and the Beer-Lambert
+    // attenuation colour (linear RGB, each in [0, 1]) reached at attenuationDistance (0: the
+    // extension's infinite distance, no attenuation).
+    float thickness = 0.0f;
+    glm::vec3 attenuationColor{1.0f};
+    float attenuationDistance = 0.0f;
     bool operator==(const MaterialParameters&) const = default;
 };
+
+// KHR_materials_volume's thickness is in the mesh's own units: a draw's transform scales it by
+// this, the cube root of |det| of its linear part (a uniform scale exactly; the geometric mean
+// of a non-uniform one, where the extension would scale along the ray).
+inline float thicknessScaleOf(const glm::mat4& transform) {
+    return std::cbrt(std::abs(glm::determinant(glm::mat3(transform))));
+}
 
 }  // namespace patina

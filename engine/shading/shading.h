@@ -17,6 +17,7 @@ using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 // sheen.glsl's table (engine/shading/sheen_table.cpp): E at N.V = x / 31, r = y / 31.
 real sheenTexel(int x, int y);
 #include "sheen.glsl"
+#include "transmission.glsl"
 #include "display.glsl"
 #include "channels.glsl"
 #include "texture.glsl"

@@ -114,6 +114,23 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
 #endif
 }
 
+// KHR_materials_transmission under an environment (transmission.glsl's transmissionThrough):
+// what the dielectric's reflection leaves to the light through the wall, weighted as the split
+// sum above weighs the diffuse (1 - the dielectric's FssEss and, with PATINA_MS_FDEZ_AGUERA,
+// Fms Ems, for glTF's models; 1 - (F0 A + B) for the others).
+PATINA_INLINE vec3 transmittedEnvironmentWeight(SurfaceMaterial material, real NoV) {
+    vec2 ab = environmentBrdfLookup(NoV, material.roughness);
+#if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
+    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, ab, NoV, material.roughness);
+#if PATINA_MS != PATINA_MS_FDEZ_AGUERA
+    dielectric.multiple = vec3(0.0f);
+#endif
+    return vec3(1.0f) - dielectric.single - dielectric.multiple;
+#else
+    return vec3(1.0f) - (material.dielectricF0 * ab.x + vec3(ab.y));
+#endif
+}
+
 PATINA_INLINE vec3 splitSum(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
     LightShares shares = splitSumShares(material, NoV, prefiltered, irradiance);
 #if defined(PATINA_NO_DIFFUSE)
@@ -157,6 +174,17 @@ PATINA_INLINE vec3 clearcoatEnvironment(EnvironmentSource prefiltered, real maxL
     vec3 R = toEnvironmentFrame(clearcoatReflection(coat, V), cosRotation, sinRotation);
     vec3 ld = sampleEnvironmentSource(prefiltered, R, roughnessToLod(coat.roughness, maxLod));
     return clearcoatSplitSum(coat, ld, environmentBrdfLookup(coat.NoV, coat.roughness));
+}
+
+// KHR_materials_transmission under an environment (transmission.glsl, before the intensity),
+// thin-walled: the environment along -V read from the prefiltered chain at the wall's roughness
+// (blurred as the reflection is), weighted by transmittedEnvironmentWeight at N.V. Include
+// transmission.glsl first.
+PATINA_INLINE vec3 transmissionEnvironment(EnvironmentSource prefiltered, real maxLod, real cosRotation,
+                                           real sinRotation, SurfaceMaterial material, Transmission t, vec3 V) {
+    vec3 through = sampleEnvironmentSource(prefiltered, toEnvironmentFrame(-V, cosRotation, sinRotation),
+                                           roughnessToLod(material.roughness, maxLod));
+    return transmissionThrough(t, through, transmittedEnvironmentWeight(material, t.NoV));
 }
 
 // The stochastic alternative to the split sum: the specular integral itself at the real N and

@@ -31,6 +31,11 @@
 // PATINA_SHADOW_CATCHER (single, with PATINA_SHADOWS): the ground of Ground::Shadow, which
 // writes no light but the share of its light that its shadows leave, which the renderer
 // multiplies the background by.
+// PATINA_TRANSMISSION: KHR_materials_transmission and KHR_materials_volume (transmission.glsl),
+// thin-walled, only for an item with a transmission: that fraction of the diffuse gone, each
+// light behind the surface seen through it and the environment along -V (TRANSMITTED), tinted
+// by the base colour and attenuated over the thickness; beneath the coat. Without it not one
+// instruction of the transmission is compiled.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -158,6 +163,18 @@ vec3 catcherLit(vec3 term) {
 #define SHADOW_OF(light)
 #define LIT(term) (term)
 #endif
+#ifdef PATINA_TRANSMISSION
+uniform float uTransmission;          // transmissionFactor
+uniform float uThickness;             // thicknessFactor, in the mesh's units
+uniform vec3 uAttenuationColor;       // attenuationColor
+uniform float uAttenuationDistance;   // attenuationDistance; 0: infinite
+#ifndef PATINA_PROBE
+uniform float uThicknessScale;        // the draw's scale (thicknessScaleOf)
+#endif
+#define TRANSMITTED(term) transmitted += (term);
+#else
+#define TRANSMITTED(term)
+#endif
 
 // Light that skips the surface's crevices: the environment's and the hemisphere lights'
 // (glTF 2.0 section 3.9.3: occlusion applies to indirect lighting).
@@ -207,6 +224,15 @@ SheenShare sheenEnvironmentShare(Sheen sheen, vec3 N) {
     vec3 irradiance =
         irradianceFromMap(uEnvironmentIrradiance, toEnvironmentFrame(N, uEnvironmentRotation.x, uEnvironmentRotation.y));
     return sheenIrradianceShare(sheen, uEnvironmentIntensity * irradiance);
+}
+#endif
+
+#if defined(PATINA_ENVIRONMENT) && defined(PATINA_TRANSMISSION)
+// The environment through the wall (ibl_model.glsl's transmissionEnvironment), whatever the
+// base's method.
+vec3 transmissionEnvironmentRadiance(Transmission transmission, SurfaceMaterial material, vec3 V) {
+    return uEnvironmentIntensity * transmissionEnvironment(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentRotation.x,
+                                                           uEnvironmentRotation.y, material, transmission, V);
 }
 #endif
 
@@ -332,21 +358,39 @@ void main() {
 #endif
     return;
 #endif
+#ifdef PATINA_TRANSMISSION
+    // What passes is the diffuse's share (before transmissionDiffuse takes it away).
+#ifdef PATINA_PROBE
+    const float thicknessScale = 1.0f;
+#else
+    float thicknessScale = uThicknessScale;
+#endif
+    Transmission transmission = deriveTransmission(
+        material, uTransmission, volumeAttenuation(uAttenuationColor, uAttenuationDistance, uThickness * thicknessScale),
+        N, V);
+    material = transmissionDiffuse(material, uTransmission);
+    vec3 transmitted = vec3(0.0f);
+#endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
 #define SHADE_POINT(light, windowed, karis) radiance += LIT(SHEENED(shadePointLight(light, windowed, karis, material, vPosition, N, V), \
     sheenPointLight(light, windowed, karis, sheen, vPosition, N, V))); \
+    TRANSMITTED(LIT(transmissionPointLight(light, windowed, karis, transmission, vPosition, N, V))) \
     COATED(LIT(clearcoatPointLight(light, windowed, karis, coat, vPosition, V)))
 #define SHADE_DIRECTIONAL(light) radiance += LIT(SHEENED(shadeDirectionalLight(light, material, N, V), \
     sheenDirectionalLight(light, sheen, N, V))); \
+    TRANSMITTED(LIT(transmissionDirectionalLight(light, transmission, N, V))) \
     COATED(LIT(clearcoatDirectionalLight(light, coat, V)))
 #define SHADE_HEMISPHERE(light) radiance += OCCLUDED(SHEENED(shadeHemisphereLight(light, material, N, V), \
-    sheenHemisphereLight(light, sheen, N)));
+    sheenHemisphereLight(light, sheen, N))); \
+    TRANSMITTED(OCCLUDED(transmissionHemisphereLight(light, transmission, V)))
 #define SHADE_SPHERE(light, windowed, karis) radiance += LIT(SHEENED(shadeSphereLight(light, windowed, karis, material, vPosition, N, V), \
     sheenSphereLight(light, windowed, karis, sheen, vPosition, N, V))); \
+    TRANSMITTED(LIT(transmissionSphereLight(light, windowed, karis, transmission, vPosition, N, V))) \
     COATED(LIT(clearcoatSphereLight(light, windowed, karis, coat, vPosition, V)))
 #define SHADE_TUBE(light, windowed, karis) radiance += LIT(SHEENED(shadeTubeLight(light, windowed, karis, material, vPosition, N, V), \
     sheenTubeLight(light, windowed, karis, sheen, vPosition, N, V))); \
+    TRANSMITTED(LIT(transmissionTubeLight(light, windowed, karis, transmission, vPosition, N, V))) \
     COATED(LIT(clearcoatTubeLight(light, windowed, karis, coat, vPosition, V)))
     PATINA_LIGHTS
 #elif defined(PATINA_SINGLE_PASS)
@@ -369,6 +413,7 @@ void main() {
             SHADOW_OF(uLights[i])
             radiance += LIT(SHEENED(shadePointLight(uLights[i], true, karisPoints, material, vPosition, N, V),
                                     sheenPointLight(uLights[i], true, karisPoints, sheen, vPosition, N, V)));
+            TRANSMITTED(LIT(transmissionPointLight(uLights[i], true, karisPoints, transmission, vPosition, N, V)))
             COATED(LIT(clearcoatPointLight(uLights[i], true, karisPoints, coat, vPosition, V)))
         } while (++i < end);
     }
@@ -382,6 +427,7 @@ void main() {
             SHADOW_OF(uLights[i])
             radiance += LIT(SHEENED(shadeDirectionalLight(uLights[i], material, N, V),
                                     sheenDirectionalLight(uLights[i], sheen, N, V)));
+            TRANSMITTED(LIT(transmissionDirectionalLight(uLights[i], transmission, N, V)))
             COATED(LIT(clearcoatDirectionalLight(uLights[i], coat, V)))
         } while (++i < end);
     }
@@ -394,6 +440,7 @@ void main() {
         do {
             radiance += OCCLUDED(SHEENED(shadeHemisphereLight(uLights[i], material, N, V),
                                          sheenHemisphereLight(uLights[i], sheen, N)));
+            TRANSMITTED(OCCLUDED(transmissionHemisphereLight(uLights[i], transmission, V)))
         } while (++i < end);
     }
 #endif
@@ -406,6 +453,7 @@ void main() {
             SHADOW_OF(uLights[i])
             radiance += LIT(SHEENED(shadeSphereLight(uLights[i], true, karisPoints, material, vPosition, N, V),
                                     sheenSphereLight(uLights[i], true, karisPoints, sheen, vPosition, N, V)));
+            TRANSMITTED(LIT(transmissionSphereLight(uLights[i], true, karisPoints, transmission, vPosition, N, V)))
             COATED(LIT(clearcoatSphereLight(uLights[i], true, karisPoints, coat, vPosition, V)))
         } while (++i < end);
     }
@@ -419,6 +467,7 @@ void main() {
             SHADOW_OF(uLights[i])
             radiance += LIT(SHEENED(shadeTubeLight(uLights[i], true, karisPoints, material, vPosition, N, V),
                                     sheenTubeLight(uLights[i], true, karisPoints, sheen, vPosition, N, V)));
+            TRANSMITTED(LIT(transmissionTubeLight(uLights[i], true, karisPoints, transmission, vPosition, N, V)))
             COATED(LIT(clearcoatTubeLight(uLights[i], true, karisPoints, coat, vPosition, V)))
         } while (++i < end);
     }
@@ -427,6 +476,7 @@ void main() {
 #if defined(PATINA_SPECIALISED) || defined(PATINA_SINGLE_PASS)
 #ifdef PATINA_ENVIRONMENT
     radiance += OCCLUDED(SHEENED(environmentRadiance(material, N, V), sheenEnvironmentShare(sheen, N)));
+    TRANSMITTED(OCCLUDED(transmissionEnvironmentRadiance(transmission, material, V)))
     COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
 #endif
 #ifdef PATINA_TEXTURED
@@ -436,6 +486,7 @@ void main() {
 #if defined(PATINA_ENVIRONMENT)
     if (uLightIndex < 0) {
         radiance = OCCLUDED(SHEENED(environmentRadiance(material, N, V), sheenEnvironmentShare(sheen, N)));
+        TRANSMITTED(OCCLUDED(transmissionEnvironmentRadiance(transmission, material, V)))
         COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
     } else
 #endif
@@ -444,8 +495,14 @@ void main() {
         SHADOW_OF(light)
         radiance = LIT(SHEENED(shadeLight(light, material, vPosition, N, V), sheenLight(light, sheen, vPosition, N, V)));
         COATED(LIT(clearcoatLight(light, coat, vPosition, V)))
+#ifdef PATINA_TRANSMISSION
+        transmitted = LIT(transmissionLight(light, transmission, vPosition, N, V));
+#endif
         if (light.type == LIGHT_HEMISPHERE) {
             radiance = OCCLUDED(radiance);
+#ifdef PATINA_TRANSMISSION
+            transmitted = OCCLUDED(transmitted);
+#endif
         }
     }
 #ifdef PATINA_TEXTURED
@@ -453,6 +510,10 @@ void main() {
         radiance += surfaceEmission();
     }
 #endif
+#endif
+#ifdef PATINA_TRANSMISSION
+    // Through the base's wall, beneath the coat as the base's own light.
+    radiance += transmitted;
 #endif
 #ifdef PATINA_CLEARCOAT
     // The base, its emission too, seen through the coat, and the coat's own light.

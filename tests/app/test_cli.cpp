@@ -443,11 +443,11 @@ TEST_F(Cli, ClearCoatTestsCoatedColumnShowsItsCoat) {
 // same lines; a file that requires one Patina cannot draw exits 3 naming it.
 TEST_F(Cli, RenderAndValidateNameTheExtensionsPatinaDoesNotDraw) {
     test::GltfBuilder coated = test::cubeModel();
-    coated.json["extensionsUsed"] = {"KHR_materials_transmission"};
-    coated.json["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+    coated.json["extensionsUsed"] = {"KHR_materials_diffuse_transmission"};
+    coated.json["materials"][0]["extensions"]["KHR_materials_diffuse_transmission"] = {{"diffuseTransmissionFactor", 1.0}};
     coated.writeGlb(path("coated.glb"));
     const std::string line =
-        "warning: uses KHR_materials_transmission (not drawn): light through the surface is left out; the material "
+        "warning: uses KHR_materials_diffuse_transmission (not drawn): light through the surface is left out; the material "
         "shows opaque";
     const test::CliRun rendered = run("render --mesh " + path("coated.glb").string() + " --width 32 --height 24 --out " +
                                       path("coated.png").string());
@@ -456,12 +456,12 @@ TEST_F(Cli, RenderAndValidateNameTheExtensionsPatinaDoesNotDraw) {
     const test::CliRun validated = run("validate " + path("coated.glb").string());
     EXPECT_NE(validated.stderrText.find(line), std::string::npos) << validated.stderrText;
 
-    coated.json["extensionsRequired"] = {"KHR_materials_transmission"};
+    coated.json["extensionsRequired"] = {"KHR_materials_diffuse_transmission"};
     coated.writeGlb(path("required.glb"));
     const test::CliRun refused = run("render --mesh " + path("required.glb").string() + " --out " +
                                      path("required.png").string());
     EXPECT_EQ(refused.exitCode, 3);
-    EXPECT_NE(refused.stderrText.find("requires the extension KHR_materials_transmission, which Patina does not draw"),
+    EXPECT_NE(refused.stderrText.find("requires the extension KHR_materials_diffuse_transmission, which Patina does not draw"),
               std::string::npos) << refused.stderrText;
     EXPECT_FALSE(std::filesystem::exists(path("required.png")));
 }

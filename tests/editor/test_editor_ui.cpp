@@ -276,6 +276,43 @@ TEST_F(EditorUi, ALayerIsAddedAndRemovedWholeInOneStep) {
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.5f));
 }
 
+// KHR_materials_transmission and _volume in the editor: a part's Transmission and Volume
+// sections under its Sheen, closed on a part without them; the transmission dragged to 1 changes
+// the picture, each drag is one undo step, and the part's values are what the scene saves.
+TEST_F(EditorUi, APartsTransmissionAndVolumeAreDraggedUndoneAndSaved) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    ASSERT_EQ(state_.selectedModelMaterial, 0);
+    EXPECT_FALSE(itemsOfLastFrame().count("Transmission factor")) << "closed on a part without one";
+    EXPECT_FALSE(itemsOfLastFrame().count("Thickness"));
+    click(centreOf("Transmission"));
+    frames(1);
+    const LdrImage opaque = services_->viewportPixels(EditorServices::Shown::Edited);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Transmission factor", &min, &max));
+    drag(ImVec2(min.x + 2.0f, (min.y + max.y) * 0.5f), ImVec2(max.x + 40.0f, (min.y + max.y) * 0.5f));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).transmission, 1.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    frames(1);
+    EXPECT_GT(differingPixels(opaque, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    click(centreOf("Volume"));
+    frames(1);
+    ASSERT_TRUE(itemRect("Thickness", &min, &max));
+    drag(ImVec2(min.x + 2.0f, (min.y + max.y) * 0.5f), ImVec2(max.x + 40.0f, (min.y + max.y) * 0.5f));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).thickness, 10.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 2u);
+    const Json saved = sceneToJson(state_.scene);
+    ASSERT_TRUE(saved.contains("modelMaterials"));
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["transmission"], 1.0);
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["thickness"], 10.0);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).thickness, 0.0f);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).transmission, 1.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).transmission, 0.0f);
+}
+
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     const size_t before = state_.scene.lights.size();
     click(centreOf("Add point"));
@@ -517,14 +554,14 @@ TEST_F(EditorUi, ThePartsListTellsPartsApartSearchesAndGrows) {
 // in amber beside the status line, and the File extensions section lists it.
 TEST_F(EditorUi, AnExtensionNotDrawnIsCountedInTheStatusAndListed) {
     test::GltfBuilder coated = test::cubeModel();
-    coated.json["extensionsUsed"] = {"KHR_materials_transmission", "KHR_texture_transform"};
-    coated.json["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+    coated.json["extensionsUsed"] = {"KHR_materials_diffuse_transmission", "KHR_texture_transform"};
+    coated.json["materials"][0]["extensions"]["KHR_materials_diffuse_transmission"] = {{"diffuseTransmissionFactor", 1.0}};
     coated.writeGlb(path("coated.glb"));
     ASSERT_TRUE(openFile(state_, path("coated.glb"))) << state_.error;
     frames(3);
     std::map<std::string, RecordedItem> items = itemsOfLastFrame();
     ASSERT_TRUE(items.count("status notes")) << state_.status;
-    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_transmission (not drawn)"), std::string::npos);
+    EXPECT_NE(items.at("status notes").tooltip.find("uses KHR_materials_diffuse_transmission (not drawn)"), std::string::npos);
     ASSERT_TRUE(items.count("File extensions"));
     ASSERT_EQ(state_.model->extensions.size(), 2u);
     click(centreOf("File extensions"));

@@ -719,9 +719,9 @@ TEST_F(GltfModel, ExtensionsPatinaDoesNotReadAreNotedOrRefused) {
 // picture lacks is a note (the editor's status line, render and validate print them).
 TEST_F(GltfModel, EveryExtensionTheFileUsesIsToldWithWhatIsDrawnOfIt) {
     GltfBuilder model = cubeModel();
-    model.json["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_transmission", "EXT_made_up",
+    model.json["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_diffuse_transmission", "EXT_made_up",
                                     "KHR_xmp_json_ld"};
-    model.json["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+    model.json["materials"][0]["extensions"]["KHR_materials_diffuse_transmission"] = {{"diffuseTransmissionFactor", 1.0}};
     const Model loaded = load(model);
     ASSERT_EQ(loaded.extensions.size(), 4u);
     EXPECT_EQ(loaded.extensions[0].name, "KHR_texture_transform");
@@ -732,7 +732,7 @@ TEST_F(GltfModel, EveryExtensionTheFileUsesIsToldWithWhatIsDrawnOfIt) {
     EXPECT_FALSE(loaded.extensions[1].required);
     EXPECT_EQ(loaded.notes,
               (std::vector<std::string>{
-                  "uses KHR_materials_transmission (not drawn): light through the surface is left out; the material shows opaque",
+                  "uses KHR_materials_diffuse_transmission (not drawn): light through the surface is left out; the material shows opaque",
                   "uses EXT_made_up (unknown to Patina): whatever it adds is left out"}))
         << allNotes(loaded);
     // A required extension the file forgot to list as used is listed all the same.

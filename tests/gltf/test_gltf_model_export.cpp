@@ -2,6 +2,8 @@
 // validator finds no error and no warning, importing the export gives back every draw,
 // material, map and texel, renders the same image, and carries the scene's tuning.
 #include <filesystem>
+#include <fstream>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -69,6 +71,12 @@ void expectSameMaterial(const ModelMaterial& a, const ModelMaterial& b, const Mo
     }
     EXPECT_EQ(a.factors.sheenColor, b.factors.sheenColor) << a.name;
     EXPECT_EQ(a.factors.sheenRoughness, b.factors.sheenRoughness) << a.name;
+    EXPECT_EQ(a.factors.transmission, b.factors.transmission) << a.name;
+    EXPECT_EQ(a.factors.thickness, b.factors.thickness) << a.name;
+    EXPECT_EQ(a.factors.attenuationColor, b.factors.attenuationColor) << a.name;
+    EXPECT_EQ(a.factors.attenuationDistance, b.factors.attenuationDistance) << a.name;
+    EXPECT_EQ(a.transmissionMap.present(), b.transmissionMap.present()) << a.name;
+    EXPECT_EQ(a.thicknessMap.present(), b.thicknessMap.present()) << a.name;
     EXPECT_NEAR(a.baseAlpha, b.baseAlpha, 1e-6f) << a.name;
     // glTF holds the scale and the strength with their maps: without one they mean nothing.
     if (a.normal.present()) {
@@ -205,6 +213,66 @@ TEST_F(GltfModelExport, TheSheenAndItsMapsComeBackValidatorClean) {
     exportGltfModel(path("bare.gltf"), bare);
     const std::vector<uint8_t> bytes = readFileBytes(path("bare.gltf"));
     EXPECT_EQ(std::string(bytes.begin(), bytes.end()).find("KHR_materials_sheen"), std::string::npos);
+}
+
+// KHR_materials_transmission and KHR_materials_volume (tests/data/transmission/spheres.gltf, made
+// by its script): the factors, the volume's colour and distance and both maps come back from
+// .glb and .gltf, the validator finds nothing in either, and a material that passes no light
+// writes neither extension.
+TEST_F(GltfModelExport, TheTransmissionAndVolumeComeBackValidatorClean) {
+    const Model model = importGltfModel(fs::path(PATINA_SOURCE_DIR) / "tests/data/transmission/spheres.gltf");
+    ASSERT_EQ(model.materials.size(), 2u);
+    const ModelMaterial& clear = model.materials[0];
+    const ModelMaterial& amber = model.materials[1];
+    EXPECT_EQ(clear.factors.transmission, 1.0f);
+    EXPECT_TRUE(clear.transmissionMap.present());
+    EXPECT_EQ(clear.factors.thickness, 0.0f);
+    EXPECT_EQ(clear.factors.attenuationDistance, 0.0f);   // the extension's infinity
+    EXPECT_EQ(amber.factors.thickness, 1.5f);
+    EXPECT_EQ(amber.factors.attenuationColor, glm::vec3(1.0f, 0.6f, 0.2f));
+    EXPECT_EQ(amber.factors.attenuationDistance, 0.5f);
+    EXPECT_TRUE(amber.thicknessMap.present());
+    EXPECT_FALSE(amber.transmissionMap.present());
+    EXPECT_TRUE(model.notes.empty()) << model.notes.front();
+    for (const char* out : {"spheres.glb", "spheres.gltf"}) {
+        SCOPED_TRACE(out);
+        exportGltfModel(path(out), model);
+        test::expectValidGltf(path(out), dir_);
+        expectSameModel(model, importGltfModel(path(out)));
+    }
+    Model opaque = model;
+    for (ModelMaterial& material : opaque.materials) {
+        material.factors.transmission = 0.0f;
+    }
+    exportGltfModel(path("opaque.gltf"), opaque);
+    const std::vector<uint8_t> bytes = readFileBytes(path("opaque.gltf"));
+    const std::string text(bytes.begin(), bytes.end());
+    EXPECT_EQ(text.find("KHR_materials_transmission"), std::string::npos);
+    EXPECT_EQ(text.find("KHR_materials_volume"), std::string::npos);
+}
+
+// A volume's distance must be above 0 where the file gives one, and its thickness not below 0:
+// refused naming the value's place.
+TEST_F(GltfModelExport, AVolumesBadDistanceOrThicknessIsRefusedByName) {
+    std::vector<uint8_t> bytes = readFileBytes(fs::path(PATINA_SOURCE_DIR) / "tests/data/transmission/spheres.gltf");
+    const std::string text(bytes.begin(), bytes.end());
+    for (const auto& [from, to, named] :
+         {std::tuple<std::string, std::string, std::string>{"\"attenuationDistance\": 0.5", "\"attenuationDistance\": 0",
+                                                            "/materials/1/extensions/KHR_materials_volume/attenuationDistance"},
+          {"\"thicknessFactor\": 1.5", "\"thicknessFactor\": -1",
+           "/materials/1/extensions/KHR_materials_volume/thicknessFactor"}}) {
+        std::string broken = text;
+        const size_t at = broken.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        broken.replace(at, from.size(), to);
+        std::ofstream(path("broken.gltf")) << broken;
+        try {
+            importGltfModel(path("broken.gltf"));
+            ADD_FAILURE() << "accepted " << to;
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(named), std::string::npos) << error.what();
+        }
+    }
 }
 
 // The fuzzer's textured seed has what the sample models lack: MASK and BLEND, emission over 1,

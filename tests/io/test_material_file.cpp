@@ -80,6 +80,34 @@ TEST(MaterialFile, TheSheenRoundTripsAndIsLeftOutWithoutOne) {
               std::string::npos);
 }
 
+// KHR_materials_transmission's and KHR_materials_volume's factors: written only where light
+// passes, read back the same, checked as every factor (the thickness and distance not below 0).
+TEST(MaterialFile, TheTransmissionAndVolumeRoundTripAndAreLeftOutWithoutOne) {
+    Material material;
+    for (const char* key : {"transmission", "thickness", "attenuationColor", "attenuationDistance"}) {
+        EXPECT_FALSE(materialToJson(material).contains(key)) << key;
+    }
+    material.transmission = 0.75f;
+    material.thickness = 2.5f;
+    material.attenuationColor = {1.0f, 0.5f, 0.25f};
+    material.attenuationDistance = 0.125f;
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["transmission"], 0.75);
+    EXPECT_EQ(json["thickness"], 2.5);
+    EXPECT_EQ(json["attenuationColor"], Json::array({1.0, 0.5, 0.25}));
+    EXPECT_EQ(json["attenuationDistance"], 0.125);
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "transmission": 1.5})").find("m.json: /transmission"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "thickness": -1})").find("m.json: /thickness"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "attenuationColor": [1, 2, 0]})")
+                  .find("m.json: /attenuationColor"),
+              std::string::npos);
+}
+
 TEST(MaterialFile, UnknownKeysAreWarnedAboutAndWrittenBack) {
     std::vector<std::string> warnings;
     const Material material = read(R"({"format": "patina-material", "version": 1,

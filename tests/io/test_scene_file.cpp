@@ -76,6 +76,10 @@ TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
     edited.clearcoatRoughness = 0.25f;
     edited.sheenColor = {0.5f, 0.25f, 1.0f};   // and its sheen (KHR_materials_sheen)
     edited.sheenRoughness = 0.75f;
+    edited.transmission = 0.5f;   // and its light through (KHR_materials_transmission, _volume)
+    edited.thickness = 0.25f;
+    edited.attenuationColor = {0.5f, 1.0f, 0.75f};
+    edited.attenuationDistance = 2.0f;
     scene.modelMaterials = {{3, edited}};
     const Json json = sceneToJson(scene);
     ASSERT_TRUE(json.contains("modelMaterials"));
@@ -83,6 +87,8 @@ TEST(SceneFile, ModelMaterialEditsRoundTripAndAreOnlyWrittenWhenThere) {
     EXPECT_EQ(json["modelMaterials"][0]["material"]["clearcoat"], 0.5);
     EXPECT_EQ(json["modelMaterials"][0]["material"]["sheenColor"], Json::array({0.5, 0.25, 1.0}));
     EXPECT_EQ(json["modelMaterials"][0]["material"]["sheenRoughness"], 0.75);
+    EXPECT_EQ(json["modelMaterials"][0]["material"]["transmission"], 0.5);
+    EXPECT_EQ(json["modelMaterials"][0]["material"]["attenuationDistance"], 2.0);
     EXPECT_EQ(sceneFromJson(json, "x", ".", warnings), scene);
     EXPECT_TRUE(warnings.empty());
     Json twice = json;

@@ -207,6 +207,40 @@ void drawSheen(Material& material, const Material& file, const Material& default
     ImGui::PopID();
 }
 
+// KHR_materials_transmission's factor in a section of its own under the sheen's, first shown
+// open where the part passes light; KHR_materials_volume's three beside it in a Volume section,
+// which acts only on a transmission. Their maps are kept from the file, not drawn or switched.
+void drawTransmission(Material& material, const Material& file, const Material& defaults, int part) {
+    ImGui::PushID(part);
+    ImGui::SetNextItemOpen(material.transmission > 0.0f, ImGuiCond_Once);
+    const bool open = ImGui::CollapsingHeader("Transmission");
+    recordItem("Transmission", "Light through the part's thin wall (KHR_materials_transmission), as through glass");
+    if (open) {
+        sliderWithReset("Transmission factor", "How much of the diffuse light passes through instead, tinted by the base "
+                                        "colour: 0 none, 1 clear glass. The scene's own objects behind are not seen",
+                        &material.transmission, 0.0f, 1.0f, file.transmission, defaults.transmission);
+    }
+    ImGui::SetNextItemOpen(material.thickness > 0.0f, ImGuiCond_Once);
+    const bool volume = ImGui::CollapsingHeader("Volume");
+    recordItem("Volume", "What the light through the part loses inside it (KHR_materials_volume, Beer-Lambert)");
+    if (volume) {
+        sliderWithReset("Thickness", "The wall's thickness in the model's units (times the node's scale); 0: thin. "
+                                     "Acts only where there is a transmission",
+                        &material.thickness, 0.0f, 10.0f, file.thickness, defaults.thickness);
+        ImGui::TextUnformatted("Attenuation colour (sRGB)");
+        ImGui::SetNextItemWidth(widthBesideReset(""));
+        colorEditLinear("##Attenuation colour", "The colour white light turns after the attenuation distance inside",
+                        &material.attenuationColor);
+        ImGui::SameLine();
+        resetButton("Attenuation colour", &material.attenuationColor, file.attenuationColor, defaults.attenuationColor);
+        sliderWithReset("Attenuation distance", "How far inside the light travels to take the attenuation colour, in "
+                                                "the model's units; 0: infinitely far (no attenuation)",
+                        &material.attenuationDistance, 0.0f, 10.0f, file.attenuationDistance,
+                        defaults.attenuationDistance);
+    }
+    ImGui::PopID();
+}
+
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names) {
     std::string text;
@@ -417,6 +451,7 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     drawFactors(material, saved, defaults);
     drawClearcoat(material, saved, defaults, selected);
     drawSheen(material, saved, defaults, selected);
+    drawTransmission(material, saved, defaults, selected);
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
     }

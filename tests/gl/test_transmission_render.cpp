@@ -1,0 +1,154 @@
+// KHR_materials_transmission and KHR_materials_volume on the GPU (shade.frag's
+// PATINA_TRANSMISSION): the three paths draw them alike, a transmission changes the picture and
+// a material without one draws the bare program's bytes; at the centre of a sphere seen down -z
+// the environment behind it is seen through, tinted by the base colour and attenuated as
+// Beer-Lambert says, as transmission.glsl gives it on the CPU; and a light behind the sphere
+// shines through by the mirrored BTDF.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "environment/environment.h"
+#include "gl/renderer.h"
+#include "scene/light_packing.h"
+#include "shading/cpu_shading.h"
+#include "shading/shading.h"
+#include "test_support.h"
+
+namespace patina {
+namespace {
+
+Material glass(glm::vec3 baseColor, float transmission) {
+    Material material;
+    material.model = BrdfModelId::Gltf;
+    material.baseColor = baseColor;
+    material.roughness = 0.4f;
+    material.metallic = 0.0f;
+    material.transmission = transmission;
+    return material;
+}
+
+Light studio() {
+    Light environment;
+    environment.type = LightType::Environment;
+    environment.source = "builtin:studio";
+    environment.intensity = 1.0f;
+    return environment;
+}
+
+// A light behind the sphere (travelling +z, towards the camera), 20 degrees off the axis.
+Light behind() {
+    Light light;
+    light.type = LightType::Directional;
+    light.direction = {std::sin(0.35f), 0.0f, std::cos(0.35f)};
+    light.intensity = 3.0f;
+    return light;
+}
+
+glm::vec3 centre(Renderer& renderer, const Scene& scene, RenderPath path) {
+    const int size = 31;
+    const HdrImage image = renderer.render(test::prepared(scene), test::renderSettings(size, size, path, 1)).hdr;
+    return test::pixel(image, size / 2, size / 2);
+}
+
+TEST(TransmissionRender, TheThreePathsDrawItAlikeItChangesThePictureAndNoneIsTheBareProgram) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = defaultScene();
+    scene.lights = test::everyLightType();
+    scene.lights.push_back(behind());
+    scene.material = glass({0.9f, 0.8f, 0.7f}, 0.8f);
+    scene.material.thickness = 0.5f;
+    scene.material.attenuationColor = {0.9f, 0.6f, 0.3f};
+    scene.material.attenuationDistance = 1.0f;
+    const HdrImage single = renderer.render(test::prepared(scene), test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;
+    for (RenderPath path : {RenderPath::Multi, RenderPath::Specialised}) {
+        const HdrImage other = renderer.render(test::prepared(scene), test::renderSettings(96, 96, path, 1)).hdr;
+        EXPECT_LE(test::maxRelativeDifference(other, single), 1e-4) << renderPathName(path);
+    }
+    Scene opaque = scene;
+    opaque.material.transmission = 0.0f;
+    const HdrImage solid = renderer.render(test::prepared(opaque), test::renderSettings(96, 96, RenderPath::Single, 1)).hdr;
+    EXPECT_GT(test::maxRelativeDifference(single, solid), 0.2);
+    // A transmission of 0 is none (hasTransmission): the bare program, the same bytes, whatever
+    // the volume says.
+    Scene bare = opaque;
+    bare.material.thickness = 0.0f;
+    bare.material.attenuationColor = glm::vec3(1.0f);
+    bare.material.attenuationDistance = 0.0f;
+    for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
+        const HdrImage a = renderer.render(test::prepared(opaque), test::renderSettings(48, 48, path, 1)).hdr;
+        const HdrImage b = renderer.render(test::prepared(bare), test::renderSettings(48, 48, path, 1)).hdr;
+        EXPECT_EQ(a.rgb, b.rgb) << renderPathName(path);
+    }
+}
+
+// At the centre N = V = +z: a white clear glass less a black one (the reflection alike, the
+// diffuse gone in both) is the environment behind seen through, the CPU twin's value; a tinted
+// base and a volume scale it by the base colour and by attenuationColor^(thickness / distance).
+TEST(TransmissionRender, AtTheSpheresCentreTheEnvironmentBehindIsSeenThroughTintedAndAttenuated) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = test::sphereSeenDownZ(studio());
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const std::shared_ptr<const Environment> environment = test::madeEnvironment("builtin:studio");
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        auto at = [&](const Material& material) {
+            scene.material = material;
+            return centre(renderer, scene, path);
+        };
+        const glm::vec3 black = at(glass(glm::vec3(0.0f), 1.0f));
+        const glm::vec3 through = at(glass(glm::vec3(1.0f), 1.0f)) - black;
+        const shader::SurfaceMaterial white = surfaceMaterial(glass(glm::vec3(1.0f), 1.0f));
+        const shader::Transmission t = shader::deriveTransmission(white, 1.0f, glm::vec3(1.0f), N, N);
+        const glm::vec3 twin = transmissionEnvironmentOnCpu(BrdfModelId::Gltf, white, t, *environment, 1.0f, 0.0f, N);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(through[c], twin[c], 0.01f * twin[c] + 1e-4f) << renderPathName(path) << " channel " << c;
+        }
+        // The same white sphere opaque shows its diffuse, not what lies behind.
+        const glm::vec3 opaque = at(glass(glm::vec3(1.0f), 0.0f));
+        EXPECT_GT(glm::length(opaque - (through + black)), 0.1f * glm::length(through)) << renderPathName(path);
+        // Tinted by the base colour, channel by channel.
+        const glm::vec3 tint(0.9f, 0.5f, 0.2f);
+        const glm::vec3 tinted = at(glass(tint, 1.0f)) - black;
+        // Beer-Lambert: thickness 2 at distance 1 squares the attenuation colour.
+        Material volume = glass(glm::vec3(1.0f), 1.0f);
+        volume.thickness = 2.0f;
+        volume.attenuationColor = {1.0f, 0.5f, 0.25f};
+        volume.attenuationDistance = 1.0f;
+        const glm::vec3 attenuated = at(volume) - black;
+        const glm::vec3 T(1.0f, 0.25f, 0.0625f);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(tinted[c], tint[c] * through[c], 0.01f * through[c] + 1e-4f) << renderPathName(path) << c;
+            EXPECT_NEAR(attenuated[c], T[c] * through[c], 0.01f * through[c] + 1e-4f) << renderPathName(path) << c;
+        }
+    }
+}
+
+// A directional light behind the sphere: what passes towards the camera at the centre is the
+// CPU's transmissionDirectionalLight (the mirrored lobe, tinted).
+TEST(TransmissionRender, ALightBehindShinesThroughByTheMirroredBtdf) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = test::sphereSeenDownZ(behind());
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const glm::vec3 tint(0.9f, 0.6f, 0.3f);
+    const shader::SurfaceMaterial surface = surfaceMaterial(glass(tint, 0.7f));
+    const shader::Transmission t = shader::deriveTransmission(surface, 0.7f, glm::vec3(1.0f), N, N);
+    const glm::vec3 expected = shader::transmissionDirectionalLight(packEnabledLights(scene.lights).at(0), t, N, N);
+    EXPECT_GT(expected.x, 0.01f);
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        scene.material = glass(tint, 0.7f);
+        const glm::vec3 lit = centre(renderer, scene, path);
+        scene.material = glass(tint, 0.0f);
+        const glm::vec3 solid = centre(renderer, scene, path);
+        // The light behind does not reach the opaque front: all of it is through the wall.
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(solid[c], 0.0f, 1e-6f) << renderPathName(path);
+            EXPECT_NEAR(lit[c], expected[c], 2e-3f * expected[c] + 1e-5f) << renderPathName(path) << " channel " << c;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace patina
