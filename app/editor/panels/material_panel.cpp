@@ -1,7 +1,5 @@
 #include <algorithm>
 #include <string>
-#include <tuple>
-#include <utility>
 
 #include <imgui.h>
 
@@ -142,20 +140,17 @@ void drawFactors(Material& material, const Material& file, const Material& defau
                     &material.metallic, 0.0f, 1.0f, file.metallic, defaults.metallic);
 }
 
-// A layer put on or taken off the part whole, in one step to undo: `on` holds its factors as
-// added (a visible layer to tune from), `off` as none.
-template <typename Layer>
-void layerButton(const char* add, const char* remove, bool present, const char* what, Layer& factors, Layer on,
-                 Layer off) {
+// The button that puts a layer on the part whole or, where `present`, takes it off, one step to
+// undo: true when clicked.
+bool layerButton(const char* add, const char* remove, bool present, const char* what) {
     const char* label = present ? remove : add;
-    if (ImGui::Button(label)) {
-        factors = present ? off : on;
-    }
+    const bool clicked = ImGui::Button(label);
     const std::string tooltip = present ? std::string("Take the ") + what + " off the part (its factors to 0; Ctrl+Z "
                                                                          "puts it back)"
                                         : std::string("Put a ") + what + " on the part, to tune from here (Ctrl+Z "
                                                                          "takes it off)";
     recordItem(label, tooltip.c_str());
+    return clicked;
 }
 
 // KHR_materials_clearcoat's two factors in a section of their own under the factors, first
@@ -167,10 +162,11 @@ void drawClearcoat(Material& material, const Material& file, const Material& def
     const bool open = ImGui::CollapsingHeader("Clearcoat");
     recordItem("Clearcoat", "A clear lacquer over the part (KHR_materials_clearcoat), as on a car's paint");
     if (open) {
-        std::pair<float, float> coat{material.clearcoat, material.clearcoatRoughness};
-        layerButton("Add coat", "Remove coat", material.clearcoat > 0.0f, "clear coat", coat, {1.0f, 0.03f},
-                    {0.0f, 0.0f});
-        std::tie(material.clearcoat, material.clearcoatRoughness) = coat;
+        const bool coated = material.clearcoat > 0.0f;
+        if (layerButton("Add coat", "Remove coat", coated, "clear coat")) {   // added: a full, nearly smooth coat
+            material.clearcoat = coated ? 0.0f : 1.0f;
+            material.clearcoatRoughness = coated ? 0.0f : 0.03f;
+        }
         sliderWithReset("Coat", "How much clear coat lies over the part: 0 none, 1 a full coat (index 1.5)",
                         &material.clearcoat, 0.0f, 1.0f, file.clearcoat, defaults.clearcoat);
         sliderWithReset("Coat roughness", "0: the coat's highlight mirror-sharp; 1: broad. Ctrl+click to type",
@@ -189,10 +185,11 @@ void drawSheen(Material& material, const Material& file, const Material& default
     const bool open = ImGui::CollapsingHeader("Sheen");
     recordItem("Sheen", "A fuzz of fibres over the part (KHR_materials_sheen), as on velvet or satin");
     if (open) {
-        std::pair<glm::vec3, float> sheen{material.sheenColor, material.sheenRoughness};
-        layerButton("Add sheen", "Remove sheen", material.sheenColor != glm::vec3(0.0f), "sheen", sheen,
-                    {glm::vec3(0.5f), 0.5f}, {glm::vec3(0.0f), 0.0f});
-        std::tie(material.sheenColor, material.sheenRoughness) = sheen;
+        const bool sheened = material.sheenColor != glm::vec3(0.0f);
+        if (layerButton("Add sheen", "Remove sheen", sheened, "sheen")) {
+            material.sheenColor = glm::vec3(sheened ? 0.0f : 0.5f);
+            material.sheenRoughness = sheened ? 0.0f : 0.5f;
+        }
         ImGui::TextUnformatted("Sheen colour (sRGB)");
         ImGui::SetNextItemWidth(widthBesideReset(""));
         colorEditLinear("##Sheen colour", "The colour of the light the fibres reflect, brightest at grazing angles: "
