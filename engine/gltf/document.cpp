@@ -92,7 +92,12 @@ tinygltf::Model loadDocument(const std::filesystem::path& path, const std::vecto
         const std::string message = oneLine(error.empty() ? warning : error, ';');
         throw InputError(source + ": " + (message.empty() ? "cannot be loaded" : message));
     }
-    decodeMeshoptViews(model, source);
+    // A stream of a few bytes may declare up to kMaxMeshoptBytes: running out is bad input too.
+    try {
+        decodeMeshoptViews(model, source);
+    } catch (const std::bad_alloc&) {
+        throw InputError(source + ": out of memory while decoding its meshopt-compressed views");
+    }
     return model;
 }
 
