@@ -526,9 +526,15 @@ Json materialToJson(const Material& material) {
         json["sheenColor"] = toJson(material.sheenColor);
         json["sheenRoughness"] = toJson(material.sheenRoughness);
     }
-    // KHR_materials_transmission's and KHR_materials_volume's only where light passes.
+    // KHR_materials_transmission's only where light passes.
     if (material.transmission != 0.0f) {
         json["transmission"] = toJson(material.transmission);
+    }
+    // KHR_materials_volume's wherever one is set, with or without a transmission: a file that
+    // sets a volume first and the transmission later must not lose the volume when saved
+    // between (the fuzzer's amber glass with its "transmission" key misspelt did).
+    if (material.thickness != 0.0f || material.attenuationColor != glm::vec3(1.0f) ||
+        material.attenuationDistance != 0.0f) {
         json["thickness"] = toJson(material.thickness);
         json["attenuationColor"] = toJson(material.attenuationColor);
         json["attenuationDistance"] = toJson(material.attenuationDistance);

@@ -80,8 +80,23 @@ TEST(MaterialFile, TheSheenRoundTripsAndIsLeftOutWithoutOne) {
               std::string::npos);
 }
 
-// KHR_materials_transmission's and KHR_materials_volume's factors: written only where light
-// passes, read back the same, checked as every factor (the thickness and distance not below 0).
+// A volume set without a transmission (yet) is kept when the material is saved: the fuzzer's
+// amber glass, its "transmission" key misspelt, lost its thickness and attenuation on a save.
+TEST(MaterialFile, AVolumeWithoutATransmissionIsKeptWhenSaved) {
+    std::vector<std::string> warnings;
+    const Material read_back = read(R"({"format": "patina-material", "version": 1, "thickness": 0.5,
+        "attenuationColor": [1, 0.6, 0.2], "attenuationDistance": 0.25})", warnings);
+    const Json json = materialToJson(read_back);
+    EXPECT_FALSE(json.contains("transmission"));
+    EXPECT_EQ(json["thickness"], 0.5);
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), read_back);
+    Material colourOnly;
+    colourOnly.attenuationColor = {0.5f, 1.0f, 1.0f};
+    EXPECT_EQ(materialFromJson(materialToJson(colourOnly), "", "x", true, warnings), colourOnly);
+}
+
+// KHR_materials_transmission's and KHR_materials_volume's factors: written only where set,
+// read back the same, checked as every factor (the thickness and distance not below 0).
 TEST(MaterialFile, TheTransmissionAndVolumeRoundTripAndAreLeftOutWithoutOne) {
     Material material;
     for (const char* key : {"transmission", "thickness", "attenuationColor", "attenuationDistance"}) {
