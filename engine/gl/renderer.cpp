@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <span>
@@ -23,6 +24,7 @@
 #include "gl/model_textures.h"
 #include "gl/program.h"
 #include "gl/render_targets.h"
+#include "gl/scene_behind.h"
 #include "gl/shading_inputs.h"
 #include "gl/shading_programs.h"
 #include "gl/shadow_maps.h"
@@ -151,6 +153,7 @@ struct Renderer::State {
     Mesh groundMesh;
     MeshBuffers groundBuffers;
     ShadowMaps shadowMaps;
+    SceneBehind sceneBehind;
     const BoundingBox& boundsOfMesh(const std::shared_ptr<const Mesh>& mesh) {
         if (boundsOf != mesh) {
             modelBounds = boundingBox(*mesh);
@@ -283,6 +286,7 @@ private:
     void assignShadowMaps();
     void choosePrograms();
     void drawShadowMaps() const;
+    void drawSceneBehind();
     void drawCatcher() const;
     const MeshBuffers& buffersOf(const SceneDraw& item) const;
     void environmentUniforms(const GlProgram& program) const;
@@ -290,7 +294,7 @@ private:
     void clearAroundMesh() const;
     void drawStrip(int top);
     void drawItems() const;
-    void drawSinglePass(Items opaque, Items blended) const;
+    void drawSinglePass(Items opaque, Items blended, bool catcher = true) const;
     // The shading program of `item`: the one for its BRDF model, whether it has a clear coat
     // (PATINA_CLEARCOAT: only a coated item pays for the coat), a sheen (PATINA_SHEEN) and a
     // transmission (PATINA_TRANSMISSION), and, in the specialised path
@@ -349,6 +353,8 @@ private:
     int exposureTonemap = 0;
     glm::vec3 background{0.0f};
     float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
+    int stripTop = 0;     // the image row the strip drawn now starts at
+    bool sceneBehind = false;   // a transmitting item sees the scene behind it (drawSceneBehind)
 };
 
 namespace {
@@ -546,6 +552,10 @@ void Renderer::Frame::environmentUniforms(const GlProgram& program) const {
 void Renderer::Frame::prepare(const GlProgram& program) const {
     environmentUniforms(program);
     glUniform1f(program.uniform("uSampleStamp"), stamp);
+    if (sceneBehind) {   // the uniforms of transmitting programs; 0 (not drawn) elsewhere
+        glUniform1i(program.uniform("uSceneBehind"), ShadingPrograms::kSceneBehindUnit);
+        glUniform3f(program.uniform("uSceneBehindPlace"), float(stripTop), std::log2(float(w)), 1.0f);
+    }
     glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
     glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
     if (settings.channel.channel >= 0) {
@@ -607,14 +617,47 @@ void Renderer::Frame::draw() {
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
     drawShadowMaps();
+    drawSceneBehind();
     clearAroundMesh();
     for (int top = 0; top < h; top += plan.stripRows) {
         drawStrip(top);
     }
 }
 
+// What a transmitting item sees through its wall (gl/scene_behind.h): the opaque items that do
+// not transmit, drawn whole (not in strips) into an image of their own, their samples stamped 1
+// (coverage), the catcher left out (it only darkens the background, which is not drawn here).
+// Single and specialised only: the multi path's light passes sum into one sample each, so its
+// transmitting items see the environment alone. A channel shows data, not what is behind.
+void Renderer::Frame::drawSceneBehind() {
+    sceneBehind = settings.path != RenderPath::Multi && settings.channel.channel < 0 &&
+                  std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) {
+                      return hasTransmission(item.material);
+                  });
+    if (!sceneBehind) {
+        return;
+    }
+    std::vector<DrawPlan> behind;
+    for (const DrawPlan& item : plan.items) {
+        if (!draws[item.item].blend && !hasTransmission(draws[item.item].material)) {
+            behind.push_back(item);
+        }
+    }
+    s.sceneBehind.begin(w, h);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    const float stripStamp = std::exchange(stamp, 1.0f);
+    stripTop = 0;
+    drawSinglePass(behind, {}, false);
+    stamp = stripStamp;
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    s.sceneBehind.finish(ShadingPrograms::kSceneBehindUnit);
+}
+
 // The rows [top, top + stripRows) of the image, where they cross the mesh's area.
 void Renderer::Frame::drawStrip(int top) {
+    stripTop = top;
     const int rows = std::min(plan.stripRows, h - top);
     const PixelRect area{plan.meshArea.x0, std::max(plan.meshArea.y0, top), plan.meshArea.x1,
                          std::min(plan.meshArea.y1, top + rows)};
@@ -756,7 +799,7 @@ void Renderer::Frame::useProgram(const ItemProgram& program) const {
 
 // Single and specialised: each item in one pass of every light. Blended items test against
 // the opaque items' depth and write none, so each shows what lies behind it.
-void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
+void Renderer::Frame::drawSinglePass(Items opaque, Items blended, bool catcher) const {
     // Items keep the plan's order (the same depth ties as one program); the program changes
     // only where an item's BRDF model or map set does.
     const GlProgram* current = nullptr;
@@ -775,7 +818,7 @@ void Renderer::Frame::drawSinglePass(Items opaque, Items blended) const {
     for (const DrawPlan& item : opaque) {
         drawWithItsProgram(item);
     }
-    if (catcherPlan) {
+    if (catcherPlan && catcher) {
         drawCatcher();
         current = nullptr;
     }

@@ -78,10 +78,12 @@ public:
     static constexpr int kEnvironmentSourceUnit = 4;       // the stochastic mode's source chain
     static constexpr int kEnvironmentIrradianceUnit = 5;   // the irradiance map
     static constexpr int kFirstMapUnit = 6;                // Surface::Maps: the maps' units (SurfaceMap order)
-    // The sheen's albedo table (Surface::Sheen), after the maps' ten units: 16, which every
-    // GL 3.3 fragment stage has (GL_MAX_TEXTURE_IMAGE_UNITS is 16 at least).
-    static constexpr int kSheenTableUnit = 16;
-    static constexpr int kShadowMapUnit = 17;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
+    // The sheen's albedo table (Surface::Sheen), after the maps' twelve units: 18 and up are
+    // beyond GL 3.3's least GL_MAX_TEXTURE_IMAGE_UNITS (16) but within every GL 4 desktop
+    // driver's (32: Mesa, NVIDIA, AMD, Intel), and a program binds only the units it reads.
+    static constexpr int kSheenTableUnit = 18;
+    static constexpr int kShadowMapUnit = 19;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
+    static constexpr int kSceneBehindUnit = 20;   // PATINA_TRANSMISSION: gl/scene_behind.h's image
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);

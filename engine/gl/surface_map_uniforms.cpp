@@ -8,7 +8,7 @@ namespace {
 constexpr const char* kSamplerNames[kSurfaceMapCount] = {
     "uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",      "uOcclusionMap",
     "uEmissiveMap",  "uClearcoatMap",         "uClearcoatRoughnessMap", "uClearcoatNormalMap",
-    "uSheenColorMap", "uSheenRoughnessMap"};
+    "uSheenColorMap", "uSheenRoughnessMap",   "uTransmissionMap",       "uThicknessMap"};
 
 }  // namespace
 

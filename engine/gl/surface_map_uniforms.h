@@ -16,7 +16,8 @@ namespace patina {
 enum class SurfaceMap {
     BaseColor, MetallicRoughness, Normal, Occlusion, Emissive,
     Clearcoat, ClearcoatRoughness, ClearcoatNormal,   // KHR_materials_clearcoat's
-    SheenColor, SheenRoughness                        // KHR_materials_sheen's
+    SheenColor, SheenRoughness,                       // KHR_materials_sheen's
+    Transmission, Thickness                           // KHR_materials_transmission's, _volume's
 };
 inline constexpr int kSurfaceMapCount = kMapCount;   // model/model.h's mapsOf order
 

@@ -31,12 +31,12 @@ constexpr KnownExtension kKnown[] = {
     {"KHR_materials_sheen", ExtensionSupport::Drawn,
      "the sheen's colour, roughness and their maps, over the base as the extension layers it"},
     {"KHR_materials_transmission", ExtensionSupport::Drawn,
-     "thin-walled: the environment and the lights behind seen through, blurred by roughness; the "
-     "scene's own objects behind are not seen through, and the transmission map is kept, not drawn"},
+     "thin-walled: the environment, the lights and the scene's opaque parts behind seen through, "
+     "blurred by roughness, and the transmission map"},
     {"KHR_materials_diffuse_transmission", ExtensionSupport::NotDrawn,
      "light through the surface is left out; the material shows opaque"},
     {"KHR_materials_volume", ExtensionSupport::Drawn,
-     "Beer-Lambert attenuation over the thickness, thin-walled (no refraction); the thickness map is kept, not drawn"},
+     "Beer-Lambert attenuation over the thickness and its map, thin-walled (no refraction)"},
     {"KHR_materials_iridescence", ExtensionSupport::NotDrawn, "the thin-film colours are left out"},
     {"KHR_materials_anisotropy", ExtensionSupport::NotDrawn, "highlights are drawn isotropic"},
     {"KHR_materials_dispersion", ExtensionSupport::NotDrawn, "dispersion is left out"},

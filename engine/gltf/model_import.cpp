@@ -18,15 +18,10 @@ namespace {
 // lose their map when the image could not be had).
 // False when `progress` stopped the decoding.
 bool attachImages(const tinygltf::Model& document, Model& model, const std::string& source, const Progress& progress) {
-    // The drawn maps and the slots kept beside them, not drawn (KHR_materials_transmission's and
-    // KHR_materials_volume's maps, model/model.h): their images are exported all the same.
     auto forEachSlot = [&](auto visit) {
         for (ModelMaterial& material : model.materials) {
             for (const auto& map : mapsOf(material)) {
                 visit(*map.slot);
-            }
-            for (TextureSlot* slot : {&material.transmissionMap, &material.thicknessMap}) {
-                visit(*slot);
             }
         }
     };

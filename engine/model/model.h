@@ -67,8 +67,7 @@ struct ModelMaterial {
     TextureSlot sheenColor;                 // sRGB; RGB
     TextureSlot sheenRoughness;             // linear; A
     // KHR_materials_transmission's map (R scales `factors.transmission`) and KHR_materials_volume's
-    // (G scales `factors.thickness`): read, kept and exported, not drawn (docs/SHADING.md S7), so
-    // not among mapsOf's.
+    // (G scales `factors.thickness`), drawn where the material transmits (docs/SHADING.md S7).
     TextureSlot transmissionMap;            // linear; R
     TextureSlot thicknessMap;               // linear; G
     AlphaMode alphaMode = AlphaMode::Opaque;
@@ -78,7 +77,8 @@ struct ModelMaterial {
 };
 
 // A material's maps in their one order (the shaders' too: surface_maps.glsl): glTF 2.0's five,
-// then KHR_materials_clearcoat's three, then KHR_materials_sheen's two; each with whether its
+// then KHR_materials_clearcoat's three, KHR_materials_sheen's two, KHR_materials_transmission's
+// and KHR_materials_volume's one each; each with whether its
 // texels are sRGB (base colour, emissive and sheen colour; the others are data, glTF 2.0
 // 3.9.2-3.9.3), its name for people and its key
 // (glTF's name of the property, which scene files use too).
@@ -90,7 +90,7 @@ struct MapOf {
     const char* key;
 };
 inline constexpr int kCoreMapCount = 5;   // glTF 2.0's own maps, the first of mapsOf
-inline constexpr int kMapCount = 10;
+inline constexpr int kMapCount = 12;
 template <typename Material>   // ModelMaterial or const ModelMaterial
 auto mapsOf(Material& material) {
     using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
@@ -104,7 +104,9 @@ auto mapsOf(Material& material) {
          {&material.clearcoatRoughness, false, "clear coat roughness", "clearcoatRoughnessTexture"},
          {&material.clearcoatNormal, false, "clear coat normal", "clearcoatNormalTexture"},
          {&material.sheenColor, true, "sheen colour", "sheenColorTexture"},
-         {&material.sheenRoughness, false, "sheen roughness", "sheenRoughnessTexture"}}};
+         {&material.sheenRoughness, false, "sheen roughness", "sheenRoughnessTexture"},
+         {&material.transmissionMap, false, "transmission", "transmissionTexture"},
+         {&material.thicknessMap, false, "thickness", "thicknessTexture"}}};
 }
 // The map of `material` whose key is `key`, or nothing: what a scene file's key names.
 template <typename Material>

@@ -72,6 +72,9 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
     // KHR_materials_sheen's: RGB (sRGB) scales the sheen's colour, A its roughness.
     surface.material.sheenColor *= glm::vec3(texel(maps->sheenColor, true, glm::vec4(1.0f)));
     surface.material.sheenRoughness *= texel(maps->sheenRoughness, false, glm::vec4(1.0f)).w;
+    // KHR_materials_transmission's: R scales the factor; KHR_materials_volume's: G the thickness.
+    surface.material.transmission *= texel(maps->transmissionMap, false, glm::vec4(1.0f)).x;
+    surface.material.thickness *= texel(maps->thicknessMap, false, glm::vec4(1.0f)).y;
     if (maps->normal.present()) {
         const glm::vec4 n = texel(maps->normal, false, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
         surface.normal =

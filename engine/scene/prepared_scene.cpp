@@ -121,7 +121,8 @@ bool hasMaps(const ModelMaterial& material) {
     return material.baseColor.present() || material.metallicRoughness.present() || material.normal.present() ||
            material.occlusion.present() || material.emissive.present() || material.emissiveFactor != glm::vec3(0.0f) ||
            material.clearcoat.present() || material.clearcoatRoughness.present() || material.clearcoatNormal.present() ||
-           material.sheenColor.present() || material.sheenRoughness.present();
+           material.sheenColor.present() || material.sheenRoughness.present() || material.transmissionMap.present() ||
+           material.thicknessMap.present();
 }
 
 int mapSetOf(const ModelMaterial& material) {

@@ -172,6 +172,30 @@ uniform float uAttenuationDistance;   // attenuationDistance; 0: infinite
 uniform float uThicknessScale;        // the draw's scale (thicknessScaleOf)
 #endif
 #define TRANSMITTED(term) transmitted += (term);
+#ifndef PATINA_PROBE
+// The frame's opaque items that do not transmit, drawn first (engine/gl/scene_behind.h):
+// premultiplied by their coverage, with a mip chain. uSceneBehindPlace: x the strip's first
+// image row, y log2 of the image's width, z 1 where the renderer drew it (0: the multi path,
+// a channel), so that a pixel reads what lies behind it.
+uniform sampler2D uSceneBehind;
+uniform vec3 uSceneBehindPlace;
+// Thin-walled, the light leaves along -V: the scene behind is the one at this very pixel,
+// blurred by the wall's roughness as the Khronos glTF-Sample-Viewer blurs its transmission
+// framebuffer, at level log2(width) x roughness (the extension's thin-wall scale of the
+// roughness, clamp(2 ior - 2, 0, 1), is 1 at Patina's ior of 1.5).
+vec4 sceneBehind(float roughness) {
+    if (uSceneBehindPlace.z == 0.0f) {
+        return vec4(0.0f);
+    }
+    vec2 at = (gl_FragCoord.xy + vec2(0.0f, uSceneBehindPlace.x)) / vec2(textureSize(uSceneBehind, 0));
+    return textureLod(uSceneBehind, at, uSceneBehindPlace.y * roughness);
+}
+// Light from beyond the scene (the environment, a hemisphere light's sky) passes only where
+// none of the scene is behind the pixel.
+#define BEYOND(term) (beyond * (term))
+#else
+#define BEYOND(term) (term)
+#endif
 #else
 #define TRANSMITTED(term)
 #endif
@@ -365,11 +389,30 @@ void main() {
 #else
     float thicknessScale = uThicknessScale;
 #endif
+#ifdef PATINA_TEXTURED
+    float transmissionFactor = mappedTransmission(uTransmission);
+    float thickness = mappedThickness(uThickness);
+#else
+    float transmissionFactor = uTransmission;
+    float thickness = uThickness;
+#endif
     Transmission transmission = deriveTransmission(
-        material, uTransmission, volumeAttenuation(uAttenuationColor, uAttenuationDistance, uThickness * thicknessScale),
+        material, transmissionFactor, volumeAttenuation(uAttenuationColor, uAttenuationDistance, thickness * thicknessScale),
         N, V);
-    material = transmissionDiffuse(material, uTransmission);
+    material = transmissionDiffuse(material, transmissionFactor);
     vec3 transmitted = vec3(0.0f);
+#ifndef PATINA_PROBE
+    vec4 behind = sceneBehind(material.roughness);
+    float beyond = 1.0f - behind.a;
+    // The scene behind, weighted as the light beyond it is: as the split sum weighs the diffuse
+    // under an environment, by 1 - F(N.V) without one.
+#ifdef PATINA_ENVIRONMENT
+    transmitted += transmissionThrough(transmission, behind.rgb, transmittedEnvironmentWeight(material, transmission.NoV));
+#else
+    transmitted += transmissionThrough(transmission, behind.rgb,
+                                       vec3(1.0f) - transmissionFresnel(transmission.f0, transmission.NoV));
+#endif
+#endif
 #endif
     vec3 radiance = vec3(0.0f);
 #if defined(PATINA_SPECIALISED)
@@ -383,7 +426,7 @@ void main() {
     COATED(LIT(clearcoatDirectionalLight(light, coat, V)))
 #define SHADE_HEMISPHERE(light) radiance += OCCLUDED(SHEENED(shadeHemisphereLight(light, material, N, V), \
     sheenHemisphereLight(light, sheen, N))); \
-    TRANSMITTED(OCCLUDED(transmissionHemisphereLight(light, transmission, V)))
+    TRANSMITTED(OCCLUDED(BEYOND(transmissionHemisphereLight(light, transmission, V))))
 #define SHADE_SPHERE(light, windowed, karis) radiance += LIT(SHEENED(shadeSphereLight(light, windowed, karis, material, vPosition, N, V), \
     sheenSphereLight(light, windowed, karis, sheen, vPosition, N, V))); \
     TRANSMITTED(LIT(transmissionSphereLight(light, windowed, karis, transmission, vPosition, N, V))) \
@@ -440,7 +483,7 @@ void main() {
         do {
             radiance += OCCLUDED(SHEENED(shadeHemisphereLight(uLights[i], material, N, V),
                                          sheenHemisphereLight(uLights[i], sheen, N)));
-            TRANSMITTED(OCCLUDED(transmissionHemisphereLight(uLights[i], transmission, V)))
+            TRANSMITTED(OCCLUDED(BEYOND(transmissionHemisphereLight(uLights[i], transmission, V))))
         } while (++i < end);
     }
 #endif
@@ -476,7 +519,7 @@ void main() {
 #if defined(PATINA_SPECIALISED) || defined(PATINA_SINGLE_PASS)
 #ifdef PATINA_ENVIRONMENT
     radiance += OCCLUDED(SHEENED(environmentRadiance(material, N, V), sheenEnvironmentShare(sheen, N)));
-    TRANSMITTED(OCCLUDED(transmissionEnvironmentRadiance(transmission, material, V)))
+    TRANSMITTED(OCCLUDED(BEYOND(transmissionEnvironmentRadiance(transmission, material, V))))
     COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
 #endif
 #ifdef PATINA_TEXTURED
@@ -486,7 +529,7 @@ void main() {
 #if defined(PATINA_ENVIRONMENT)
     if (uLightIndex < 0) {
         radiance = OCCLUDED(SHEENED(environmentRadiance(material, N, V), sheenEnvironmentShare(sheen, N)));
-        TRANSMITTED(OCCLUDED(transmissionEnvironmentRadiance(transmission, material, V)))
+        TRANSMITTED(OCCLUDED(BEYOND(transmissionEnvironmentRadiance(transmission, material, V))))
         COATED(OCCLUDED(clearcoatEnvironmentRadiance(coat, V)))
     } else
 #endif

@@ -12,7 +12,8 @@ in vec4 vTangent;   // world space; w = 0: the vertex has none
 // The maps in SurfaceMap order (engine/gl/surface_map_uniforms.h): 0 base colour,
 // 1 metallic-roughness, 2 normal, 3 occlusion, 4 emissive, then KHR_materials_clearcoat's
 // 5 coat, 6 coat roughness, 7 coat normal (read only with PATINA_CLEARCOAT), then
-// KHR_materials_sheen's 8 sheen colour, 9 sheen roughness (only with PATINA_SHEEN). A sampler array
+// KHR_materials_sheen's 8 sheen colour, 9 sheen roughness (only with PATINA_SHEEN), then
+// KHR_materials_transmission's 10 and KHR_materials_volume's 11 (only with PATINA_TRANSMISSION). A sampler array
 // could be indexed only by constants in GLSL 3.30, so each has its own name.
 uniform sampler2D uBaseColorMap;
 uniform sampler2D uMetallicRoughnessMap;
@@ -24,8 +25,10 @@ uniform sampler2D uClearcoatRoughnessMap;
 uniform sampler2D uClearcoatNormalMap;
 uniform sampler2D uSheenColorMap;
 uniform sampler2D uSheenRoughnessMap;
-uniform vec4 uMapPlacement[10];   // KHR_texture_transform: offset (xy), scale (zw)
-uniform vec2 uMapRotationSet[10];   // its rotation; the UV set read, -1 where there is no map
+uniform sampler2D uTransmissionMap;
+uniform sampler2D uThicknessMap;
+uniform vec4 uMapPlacement[12];   // KHR_texture_transform: offset (xy), scale (zw)
+uniform vec2 uMapRotationSet[12];   // its rotation; the UV set read, -1 where there is no map
 uniform float uBaseAlpha;          // baseColorFactor's alpha
 uniform float uAlphaCutoff;        // MASK's; negative for OPAQUE and BLEND
 uniform float uNormalScale;
@@ -107,6 +110,17 @@ vec3 mappedSheenColor(vec3 factor) {
 }
 float mappedSheenRoughness(float roughness) {
     return roughness * MAP_TEXEL(9, uSheenRoughnessMap, vec4(1.0f)).w;
+}
+#endif
+
+#ifdef PATINA_TRANSMISSION
+// KHR_materials_transmission's map: the factor times its R; KHR_materials_volume's: the
+// thickness times its G (the glTF channels).
+float mappedTransmission(float factor) {
+    return factor * MAP_TEXEL(10, uTransmissionMap, vec4(1.0f)).x;
+}
+float mappedThickness(float thickness) {
+    return thickness * MAP_TEXEL(11, uThicknessMap, vec4(1.0f)).y;
 }
 #endif
 

@@ -136,6 +136,39 @@ TEST_F(ModelMaps, TheBaseColourMapMultipliesTheFactorTexelByTexel) {
     }
 }
 
+// KHR_materials_transmission's map scales the factor by its R, KHR_materials_volume's the
+// thickness by its G (one image holds both here): each quadrant is the quad drawn with the
+// factors its texel stands for, lit from the front and by a light behind it that shines through.
+TEST_F(ModelMaps, TheTransmissionAndThicknessMapsScaleTheirFactors) {
+    Scene scene = quadScene();
+    Light behind;
+    behind.type = LightType::Directional;
+    behind.direction = glm::normalize(glm::vec3(0.2f, 0.1f, 1.0f));   // travelling towards the camera
+    behind.intensity = 3.0f;
+    scene.lights.push_back(behind);
+    const std::vector<uint8_t> rgba{0, 255, 0, 255, 255, 255, 0, 255, 128, 64, 0, 255, 255, 0, 0, 255};
+    ModelMaterial glass = factors(glm::vec3(0.9f, 0.8f, 0.7f));
+    glass.factors.transmission = 1.0f;
+    glass.factors.thickness = 2.0f;
+    glass.factors.attenuationColor = {1.0f, 0.5f, 0.25f};
+    glass.factors.attenuationDistance = 1.0f;
+    ModelMaterial mapped = glass;
+    mapped.transmissionMap = nearestSlot();
+    mapped.thicknessMap = nearestSlot();
+    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
+    for (size_t q = 0; q < 4; ++q) {
+        ModelMaterial expected = glass;
+        expected.factors.transmission = rgba[q * 4] / 255.0f;
+        expected.factors.thickness = 2.0f * rgba[q * 4 + 1] / 255.0f;
+        expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
+    }
+    // Without the maps the quadrants differ: the maps did it.
+    const HdrImage plain = render(scene, oneQuad(quad(), glass), RenderPath::Single, 1);
+    const HdrImage shown = render(scene, model, RenderPath::Single, 1);
+    const glm::ivec2 opaque = pixelOf(scene, kQuadrants[0]);
+    EXPECT_GT(largestRelativeError(test::pixel(shown, opaque.x, opaque.y), test::pixel(plain, opaque.x, opaque.y)), 0.1f);
+}
+
 // The specialised path compiles a program for each set of maps the items have (PATINA_MAP_SET),
 // so a map an item lacks costs it nothing, and draws the same picture as the single path, whose
 // one program asks the uniforms which maps there are.

@@ -10,6 +10,7 @@
 
 #include "environment/environment.h"
 #include "gl/renderer.h"
+#include "model/model.h"
 #include "scene/light_packing.h"
 #include "shading/cpu_shading.h"
 #include "shading/shading.h"
@@ -146,6 +147,80 @@ TEST(TransmissionRender, ALightBehindShinesThroughByTheMirroredBtdf) {
         for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(solid[c], 0.0f, 1e-6f) << renderPathName(path);
             EXPECT_NEAR(lit[c], expected[c], 2e-3f * expected[c] + 1e-5f) << renderPathName(path) << " channel " << c;
+        }
+    }
+}
+
+// A quad facing +z at depth z over [x0, x1] x [-1, 1], with the material `material`.
+Mesh quadAt(float z, float x0, float x1) {
+    Mesh mesh;
+    mesh.positions = {{x0, -1, z}, {x1, -1, z}, {x1, 1, z}, {x0, 1, z}};
+    mesh.normals.assign(4, glm::vec3(0.0f, 0.0f, 1.0f));
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+}
+
+// The scene's opaque parts are seen through a transmitting one (engine/gl/scene_behind.h): a
+// clear white glass pane in front of a lit red quad that covers the left half of the view. Where
+// the quad is behind the pane, the pane shows what it shows alone plus the quad's own radiance
+// weighed by 1 - F(N.V) (no environment: docs/SHADING.md S7); where nothing is behind it, the
+// pane alone, to the bit. The multi path sees no scene behind.
+TEST(TransmissionRender, TheSceneBehindIsSeenThrough) {
+    test::glContext();
+    Renderer renderer;
+    Light front;
+    front.type = LightType::Directional;
+    front.direction = glm::normalize(glm::vec3(0.3f, -0.2f, -1.0f));   // travelling away from the camera
+    front.intensity = 2.0f;
+    Scene scene = test::sphereSeenDownZ(front);
+    scene.material.model = BrdfModelId::Gltf;
+    ModelMaterial pane;
+    pane.factors = glass(glm::vec3(1.0f), 1.0f);
+    pane.factors.roughness = 0.2f;
+    ModelMaterial red;
+    red.factors = glass({0.8f, 0.1f, 0.05f}, 0.0f);
+    auto modelOf = [](std::vector<Mesh> primitives, std::vector<ModelMaterial> materials) {
+        Model model;
+        for (size_t i = 0; i < primitives.size(); ++i) {
+            model.draws.push_back({int(i), int(i), glm::mat4(1.0f), "quad " + std::to_string(i)});
+        }
+        model.primitives = std::move(primitives);
+        model.materials = std::move(materials);
+        return std::make_shared<const Model>(std::move(model));
+    };
+    const auto both = modelOf({quadAt(0.5f, -1.0f, 1.0f), quadAt(-0.5f, -3.0f, 0.0f)}, {pane, red});
+    const auto paneAlone = modelOf({quadAt(0.5f, -1.0f, 1.0f)}, {pane});
+    const auto redAlone = modelOf({quadAt(-0.5f, -3.0f, 0.0f)}, {red});
+    // Framed by both quads, whichever is drawn.
+    auto frame = std::make_shared<Mesh>(quadAt(0.5f, -1.0f, 1.0f));
+    const Mesh back = quadAt(-0.5f, -3.0f, 0.0f);
+    for (glm::vec3 p : back.positions) {
+        frame->positions.push_back(p);
+        frame->normals.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
+    }
+    const int size = 64;
+    auto render = [&](const std::shared_ptr<const Model>& model, RenderPath path) {
+        const PreparedScene prepared{scene, frame, nullptr, model};
+        return renderer.render(prepared, test::renderSettings(size, size, path, 1)).hdr;
+    };
+    // Through the pane at x = -0.6 the view meets the red quad; at x = +0.6 nothing.
+    const glm::ivec2 overRed = test::pixelOf(scene.camera, {-0.6f, 0.0f, 0.5f}, size, size);
+    const glm::ivec2 overNothing = test::pixelOf(scene.camera, {0.6f, 0.0f, 0.5f}, size, size);
+    const glm::vec3 V = glm::normalize(scene.camera.position - glm::vec3(-0.6f, 0.0f, 0.5f));
+    const float F = shader::transmissionFresnel(glm::vec3(0.04f), V.z).x;
+    const HdrImage redImage = render(redAlone, RenderPath::Single);
+    const glm::vec3 redSeen = test::pixel(redImage, overRed.x, overRed.y);
+    ASSERT_GT(redSeen.x, 0.05f);
+    for (RenderPath path : {RenderPath::Single, RenderPath::Specialised, RenderPath::Multi}) {
+        const HdrImage shown = render(both, path), alone = render(paneAlone, path);
+        const glm::vec3 expected = test::pixel(alone, overRed.x, overRed.y) +
+                                   (path == RenderPath::Multi ? 0.0f : 1.0f - F) * redSeen;
+        const glm::vec3 seen = test::pixel(shown, overRed.x, overRed.y);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(seen[c], expected[c], 0.01f * expected[c] + 1e-4f) << renderPathName(path) << " channel " << c;
+            EXPECT_EQ(test::pixel(shown, overNothing.x, overNothing.y)[c],
+                      test::pixel(alone, overNothing.x, overNothing.y)[c])
+                << renderPathName(path) << " channel " << c;
         }
     }
 }

@@ -206,7 +206,7 @@ void drawSheen(Material& material, const Material& file, const Material& default
 
 // KHR_materials_transmission's factor in a section of its own under the sheen's, first shown
 // open where the part passes light; KHR_materials_volume's three beside it in a Volume section,
-// which acts only on a transmission. Their maps are kept from the file, not drawn or switched.
+// which acts only on a transmission. Their maps are in the part's map list with the others.
 void drawTransmission(Material& material, const Material& file, const Material& defaults, int part) {
     ImGui::PushID(part);
     ImGui::SetNextItemOpen(material.transmission > 0.0f, ImGuiCond_Once);
@@ -214,7 +214,7 @@ void drawTransmission(Material& material, const Material& file, const Material& 
     recordItem("Transmission", "Light through the part's thin wall (KHR_materials_transmission), as through glass");
     if (open) {
         sliderWithReset("Transmission factor", "How much of the diffuse light passes through instead, tinted by the base "
-                                        "colour: 0 none, 1 clear glass. The scene's own objects behind are not seen",
+                                        "colour: 0 none, 1 clear glass",
                         &material.transmission, 0.0f, 1.0f, file.transmission, defaults.transmission);
     }
     ImGui::SetNextItemOpen(material.thickness > 0.0f, ImGuiCond_Once);
