@@ -83,6 +83,23 @@ TEST_F(AccuracyCommands, AreaAccuracyMeasuresEveryMethodAgainstTheGroundTruth) {
     EXPECT_NE(missing.stderrText.find("no such folder"), std::string::npos) << missing.stderrText;
 }
 
+// shadow-accuracy (issue 37 item 5): a row per light, map size and bias, the CSV and the charts.
+TEST_F(AccuracyCommands, ShadowAccuracyWritesItsTableAndChart) {
+    const test::CliRun run = test::runPatina("shadow-accuracy --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("shadow_accuracy.csv"));
+    ASSERT_EQ(rows.size(), 1u + 3u * 3u * 3u);   // --quick: the sun and two spheres, 3 sizes, 3 biases
+    ASSERT_EQ(rows[0].size(), 14u);
+    EXPECT_EQ(rows[0][5], "floor_rmse");
+    for (size_t i = 1; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), rows[0].size());
+        EXPECT_TRUE(std::isfinite(std::stod(rows[i][5])) && std::stod(rows[i][5]) > 0.0) << "row " << i;
+    }
+    for (const char* file : {"shadow_accuracy.svg", "shadow_accuracy.pdf", "shadow_accuracy.png"}) {
+        EXPECT_TRUE(std::filesystem::exists(path(file))) << file;
+    }
+}
+
 // Every path at every light count, both scale axes, every target with a finite value, the
 // charts. Times are not checked: benchmarks, not timed tests.
 TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
