@@ -146,10 +146,19 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "brdf-model specialised-epic-default-scene ", "brdf-model specialised-gltf-default-scene "}) {
         EXPECT_EQ(perSeries[series], 1) << series;   // glTF's BRDF against the seed's, one row each
     }
-    for (const char* layer : {"", "-clearcoat", "-sheen"}) {   // issue 36: each layer against the bare gltf
+    for (const char* layer : {"", "-clearcoat", "-sheen", "-transmission"}) {   // issue 36: each layer against the bare gltf
         for (const char* shown : {"", "-default-scene"}) {
             const std::string series = std::string("layers specialised-gltf") + layer + shown + " ";
             EXPECT_EQ(perSeries[series], 1) << series;
+        }
+    }
+    // Issue 37: each light type's frame with its shadow map and without, over the floor, path by path.
+    for (const char* path : {"single-", "specialised-"}) {
+        for (const char* light : {"directional", "point", "sphere", "tube"}) {
+            for (const char* shadowed : {"", "-shadowed"}) {
+                const std::string series = std::string("shadows ") + path + light + shadowed + " ";
+                EXPECT_EQ(perSeries[series], 1) << series;
+            }
         }
     }
     const std::string targets = read("render_targets.csv");
