@@ -34,6 +34,8 @@ Command addLightingAccuracyCommand(CLI::App& app);
 Command addDiffuseAccuracyCommand(CLI::App& app);
 Command addExportCommand(CLI::App& app);
 Command addAreaAccuracyCommand(CLI::App& app);
+// `patina shadow-accuracy`: shadow maps against the ground truth with visibility.
+Command addShadowAccuracyCommand(CLI::App& app);
 // `patina inspect`: one pixel's story as JSON.
 Command addInspectCommand(CLI::App& app);
 // `patina chart`: a measurement's charts redrawn from the CSVs it wrote, measuring nothing.

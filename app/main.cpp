@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
                      patina::cli::addBenchRenderCommand,
                      patina::cli::addStabilityCommand, patina::cli::addFurnaceCommand,
                      patina::cli::addLightingAccuracyCommand, patina::cli::addDiffuseAccuracyCommand,
-                     patina::cli::addAreaAccuracyCommand,
+                     patina::cli::addAreaAccuracyCommand, patina::cli::addShadowAccuracyCommand,
                      patina::cli::addExportCommand, patina::cli::addValidateCommand,
                      patina::cli::addInspectCommand, patina::cli::addChartCommand,
                      patina::cli::addDifferenceCommand}) {

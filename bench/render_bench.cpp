@@ -280,8 +280,9 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
 
 // The layers of the `gltf` model (issue 36: "cost only where used"), on the specialised path as
 // the brdf-model rows: the gltf sphere bare, with KHR_materials_clearcoat's coat (factor 1,
-// roughness 0.1, a car paint's) and with KHR_materials_sheen's sheen (a velvet's colour 0.8, 0.2,
-// 0.4 at roughness 0.5), rounds interleaved, under 8 lights and in the default scene with its
+// roughness 0.1, a car paint's), with KHR_materials_sheen's sheen (a velvet's colour 0.8, 0.2,
+// 0.4 at roughness 0.5) and with KHR_materials_transmission's factor 1 (a clear glass), rounds
+// interleaved, under 8 lights and in the default scene with its
 // environment. The bare material's program has no instruction of either layer (shade.frag's
 // PATINA_CLEARCOAT and PATINA_SHEEN are keys of its program; compare_outputs draws it to the
 // byte); its frame here, interleaved with the layered ones, against the brdf-model row's of the
@@ -292,7 +293,7 @@ void measureLayers(BenchRenderer& renderer, const RenderBenchOptions& options, c
     specialised.path = RenderPath::Specialised;
     const std::shared_ptr<const Environment> studio = preparedStudio();
     for (const bool environment : {false, true}) {
-        const char* const kLayers[] = {"", "clearcoat", "sheen"};
+        const char* const kLayers[] = {"", "clearcoat", "sheen", "transmission"};
         std::vector<Scene> scenes;   // PreparedScene holds its scene by reference: all made first
         for (const char* layer : kLayers) {
             scenes.push_back(withBenchLayer(brdfBenchScene(environment), layer));
@@ -313,6 +314,57 @@ void measureLayers(BenchRenderer& renderer, const RenderBenchOptions& options, c
             result.scaleRows.push_back({"layers", settings.width, settings.height, result.triangles,
                                         samples[k].medians(), layers[k].first,
                                         int(layers[k].second.scene.lights.size())});
+        }
+    }
+}
+
+// The shadows rows' light of `type` (issue 37 item 6), above and beside the default scene's
+// sphere, outside its bounds as a point, sphere or tube light must be to cast (no cube maps).
+Light shadowBenchLight(LightType type) {
+    Light light;
+    light.type = type;
+    light.name = std::string(lightTypeName(type));
+    light.direction = {-0.4f, -1.0f, -0.3f};
+    light.intensity = type == LightType::Directional ? 2.0f : 30.0f;
+    light.position = {1.5f, 3.5f, 1.5f};
+    light.sourceRadius = type == LightType::Tube ? 0.05f : 0.3f;
+    light.start = {1.0f, 3.5f, 1.5f};
+    light.end = {2.0f, 3.5f, 1.5f};
+    return light;
+}
+
+// Shadows per light type (issue 37 item 6): the default scene's sphere over the floor
+// (display.ground "floor") under one light of each type and the default sky, with the light's
+// shadow map and without, rounds interleaved, on the single and specialised paths.
+void measureShadows(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                    RenderBenchResult& result) {
+    const LightType kTypes[] = {LightType::Directional, LightType::Point, LightType::Sphere, LightType::Tube};
+    std::vector<Scene> scenes;   // PreparedScene holds its scene by reference: all made first
+    std::vector<std::string> names;
+    for (const LightType type : kTypes) {
+        for (const bool shadows : {false, true}) {
+            Scene scene = analyticDefaultScene();
+            std::erase_if(scene.lights, [](const Light& light) { return light.type != LightType::Hemisphere; });
+            scene.lights.insert(scene.lights.begin(), shadowBenchLight(type));
+            scene.lights.front().shadows = shadows;
+            scene.display.ground = Ground::Floor;
+            scenes.push_back(scene);
+            names.push_back(std::string(lightTypeName(type)) + (shadows ? "-shadowed" : ""));
+        }
+    }
+    for (const RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
+        RenderSettings variant = settings;
+        variant.path = path;
+        std::vector<Samples> samples(scenes.size());
+        interleaved(options.runs, [&](bool keep) {
+            for (size_t k = 0; k < scenes.size(); ++k) {
+                timeFrame(renderer, analyticPrepared(scenes[k]), variant, keep ? &samples[k] : nullptr);
+            }
+        });
+        for (size_t k = 0; k < scenes.size(); ++k) {
+            result.scaleRows.push_back({"shadows", settings.width, settings.height, result.triangles,
+                                        samples[k].medians(), std::string(renderPathName(path)) + "-" + names[k],
+                                        int(scenes[k].lights.size())});
         }
     }
 }
@@ -489,6 +541,8 @@ Scene withBenchLayer(Scene scene, std::string_view layer) {
     } else if (layer == "sheen") {
         scene.material.sheenColor = {0.8f, 0.2f, 0.4f};
         scene.material.sheenRoughness = 0.5f;
+    } else if (layer == "transmission") {
+        scene.material.transmission = 1.0f;
     }
     return scene;
 }
@@ -634,6 +688,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     measureEnvironment(renderer, options, settings, result);
     measureBrdfModels(renderer, options, settings, result);
     measureLayers(renderer, options, settings, result);
+    measureShadows(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
     measureTextured(renderer, options, settings, result);
     measureGltfLoad(options, result);

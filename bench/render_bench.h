@@ -57,7 +57,9 @@ struct LightCountRow {
 struct ScaleRow {
     // "resolution", "triangles", "flat-lights", "culling", "environment", or "textured" and
     // "untextured" (a sphere with five maps, and without, as a model; path by path), and "base
-    // colour map" between them (its base colour map alone)
+    // colour map" between them (its base colour map alone); "layers" (the gltf sphere bare and
+    // with each layer); "shadows" (the sphere over the floor under one light of each type, path
+    // by path: "single-point" and "single-point-shadowed", ...)
     std::string axis;
     int width = 0, height = 0;
     size_t triangles = 0;
@@ -106,8 +108,8 @@ Scene analyticDefaultScene();
 Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
 
 // `scene` with the `gltf` model and the layers rows' `layer`: "clearcoat", a car paint's coat
-// (factor 1, roughness 0.1), "sheen", a velvet's sheen (colour 0.8, 0.2, 0.4, roughness 0.5), or
-// "" none.
+// (factor 1, roughness 0.1), "sheen", a velvet's sheen (colour 0.8, 0.2, 0.4, roughness 0.5),
+// "transmission", a clear glass's (factor 1), or "" none.
 Scene withBenchLayer(Scene scene, std::string_view layer);
 
 RenderBenchResult runRenderBench(const RenderBenchOptions& options);

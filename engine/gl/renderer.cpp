@@ -466,7 +466,7 @@ void Renderer::Frame::assignShadowMaps() {
         if (!scene.lights[order[i]].shadows) {
             continue;
         }
-        if (const auto view = shadowViewOf(packed[i], centre, radius, kShadowMapSize)) {
+        if (const auto view = shadowViewOf(packed[i], centre, radius, settings.shadowMaps)) {
             shadowViews.push_back(*view);
             packed[i].shadowMap = float(shadowViews.size());
         }
@@ -681,7 +681,8 @@ void Renderer::Frame::drawStrip(int top) {
 
 // The glPolygonOffset of the shadow maps' depth (docs/LIGHTING.md "Shadows"): the slope-scaled
 // bias, in units of the depth's slope across a texel, and the constant one, in the depth's
-// smallest steps. The lookup's normal offset (shade.frag) does the rest.
+// smallest steps, each times ShadowMapSettings::biasScale. The lookup's normal offset
+// (shade.frag) does the rest.
 constexpr float kShadowSlopeBias = 2.0f;
 constexpr float kShadowConstantBias = 4.0f;
 
@@ -698,9 +699,10 @@ void Renderer::Frame::drawShadowMaps() const {
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(kShadowSlopeBias, kShadowConstantBias);
+    const float bias = settings.shadowMaps.biasScale;
+    glPolygonOffset(bias * kShadowSlopeBias, bias * kShadowConstantBias);
     for (size_t layer = 0; layer < shadowViews.size(); ++layer) {
-        s.shadowMaps.beginLayer(int(shadowViews.size()), int(layer));
+        s.shadowMaps.beginLayer(int(shadowViews.size()), int(layer), settings.shadowMaps.size);
         glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(shadowViews[layer].clip));
         for (const SceneDraw& item : draws) {
             if (item.primitive >= 0 && !item.blend) {
@@ -1001,6 +1003,12 @@ unsigned Renderer::draw(const PreparedScene& prepared, const RenderSettings& set
         throw std::invalid_argument("image size " + std::to_string(settings.width) + "x" +
                                     std::to_string(settings.height) + " is outside 1.." +
                                     std::to_string(s.maxSize));
+    }
+    const ShadowMapSettings& maps = settings.shadowMaps;
+    if (maps.size < 1 || maps.size > s.maxSize || !(maps.biasScale >= 0.0f) || !std::isfinite(maps.biasScale)) {
+        throw std::invalid_argument("shadow maps of " + std::to_string(maps.size) + " texels (1.." +
+                                    std::to_string(s.maxSize) + ") and a bias scale of " +
+                                    std::to_string(maps.biasScale) + " (at least 0)");
     }
     const FramebufferKept kept;
     RenderTargets& t = *target.images_;

@@ -7,6 +7,7 @@
 #include "gl/environment_method.h"
 #include "gl/render_path.h"
 #include "gl/shader_specialisation.h"
+#include "gl/shadow_settings.h"
 #include "common/hdr_image.h"
 #include "common/ldr_image.h"
 #include "geometry/mesh.h"
@@ -82,6 +83,9 @@ struct RenderSettings {
     // environment by the split sum. The display image then holds the channel as channels.glsl's
     // shownChannel shows it (no exposure or tone map), the background as a value of 0.
     ChannelRequest channel;
+    // The shadowed lights' maps: their resolution and bias (docs/LIGHTING.md section 6). The
+    // defaults are every render's; the shadow measurement varies them.
+    ShadowMapSettings shadowMaps;
 };
 
 struct RenderOutput {
@@ -105,7 +109,8 @@ public:
     // The specialised programs compiled and kept (for tests and benchmarks).
     size_t specialisedProgramCount() const;
     // Renders into `target` and returns its display texture (RenderTarget::displayTexture).
-    // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size outside [1, max size],
+    // Leaves framebuffer 0 bound. Throws std::invalid_argument for a size (of the image or of
+    // the shadow maps) outside [1, max size], a negative or non-finite shadow bias,
     // or a prepared scene without the mesh or the environment its document names (or whose
     // model's items name what it lacks).
     unsigned draw(const PreparedScene& scene, const RenderSettings& settings, RenderTarget& target);

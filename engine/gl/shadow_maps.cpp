@@ -26,7 +26,9 @@ float tapSpacing(float sourceRadius, float distance, float texelAtUnitW) {
 }
 }  // namespace
 
-std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius, int size) {
+std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius,
+                                       const ShadowMapSettings& maps) {
+    const int size = maps.size;
     if (!(radius > 0.0f) || light.type == shader::LIGHT_HEMISPHERE) {
         return std::nullopt;
     }
@@ -35,7 +37,7 @@ std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::ve
         const glm::vec3 forward = -glm::normalize(light.directionToLight);
         const glm::mat4 look = glm::lookAt(centre - 2.0f * radius * forward, centre, upFor(forward));
         view.clip = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius) * look;
-        view.texel = {2.0f * radius / float(size), 1.0f / float(size), 1.0f, 0.0f};
+        view.texel = {maps.biasScale * 2.0f * radius / float(size), 1.0f / float(size), 1.0f, 0.0f};
     } else {
         // A tube looks from its segment's middle.
         const glm::vec3 eye = light.type == shader::LIGHT_TUBE ? 0.5f * (light.position + light.tubeEnd) : light.position;
@@ -50,7 +52,7 @@ std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::ve
         view.clip = glm::perspective(2.0f * halfAngle, 1.0f, nearPlane, distance + radius) * look;
         const float texelAtUnitW = 2.0f * std::tan(halfAngle) / float(size);
         const float source = light.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
-        view.texel = {texelAtUnitW, 1.0f / float(size), tapSpacing(source, distance, texelAtUnitW), 0.0f};
+        view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(size), tapSpacing(source, distance, texelAtUnitW), 0.0f};
     }
     view.texture = kClipToTexture * view.clip;
     return view;
@@ -61,13 +63,13 @@ ShadowMaps::~ShadowMaps() {
     glDeleteTextures(1, &texture_);
 }
 
-void ShadowMaps::beginLayer(int layers, int layer) {
+void ShadowMaps::beginLayer(int layers, int layer, int size) {
     layers = std::max(layers, 1);
-    if (layers > layers_) {
+    if (layers > layers_ || size != size_) {
         glDeleteTextures(1, &texture_);
         glGenTextures(1, &texture_);
         glBindTexture(GL_TEXTURE_2D_ARRAY, texture_);
-        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, kShadowMapSize, kShadowMapSize, layers, 0,
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, layers, 0,
                      GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
         // Hardware PCF: each tap compares the four nearest texels and filters the results.
         glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -80,6 +82,7 @@ void ShadowMaps::beginLayer(int layers, int layer) {
         const GLfloat far[4] = {1.0f, 1.0f, 1.0f, 1.0f};
         glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, far);
         layers_ = layers;
+        size_ = size;
     }
     if (!framebuffer_) {
         glGenFramebuffers(1, &framebuffer_);
@@ -91,7 +94,7 @@ void ShadowMaps::beginLayer(int layers, int layer) {
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         throw std::runtime_error("the shadow map's framebuffer is incomplete");
     }
-    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+    glViewport(0, 0, size, size);
     glDisable(GL_SCISSOR_TEST);
     glDepthMask(GL_TRUE);
     const GLfloat clearDepth = 1.0f;

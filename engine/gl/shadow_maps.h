@@ -14,27 +14,28 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "gl/shadow_settings.h"
 #include "shading/shading.h"
 
 namespace patina {
 
 // Layers at most (shade.frag's MAX_SHADOW_MAPS): a fifth shadowed light casts none.
 inline constexpr int kMaxShadowMaps = 4;
-inline constexpr int kShadowMapSize = 2048;
 
 // One light's view of the casters.
 struct ShadowView {
     glm::mat4 clip{1.0f};      // world to the light's clip space (drawing the map)
     glm::mat4 texture{1.0f};   // world to the map's [0, 1] coordinates and depth (reading it)
-    // uShadowTexels' row: x a texel's world size at clip w = 1 (the normal offset's scale),
-    // y 1 / the map's size, z the PCF taps' spacing in texels.
+    // uShadowTexels' row: x the normal offset's scale (a texel's world size at clip w = 1
+    // times the bias scale), y 1 / the map's size, z the PCF taps' spacing in texels.
     glm::vec4 texel{0.0f};
 };
 
 // The view of a sphere (centre, radius) around the casters from `light` (packed), a map of
-// `size` texels square; nothing for a hemisphere light, a light inside the sphere (a point
+// `maps.size` texels square, its normal offset scaled by `maps.biasScale`; nothing for a hemisphere light, a light inside the sphere (a point
 // light among the casters would need a cube map), or an empty sphere.
-std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius, int size);
+std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius,
+                                       const ShadowMapSettings& maps);
 
 // The depth texture array and the framebuffer that draws into it, made on first use and kept.
 class ShadowMaps {
@@ -44,14 +45,14 @@ public:
     ShadowMaps(const ShadowMaps&) = delete;
     ShadowMaps& operator=(const ShadowMaps&) = delete;
 
-    // Makes room for `layers` maps (at least 1) and binds the framebuffer to draw layer
-    // `layer`, cleared to the far depth, with the viewport the map's.
-    void beginLayer(int layers, int layer);
+    // Makes room for `layers` maps (at least 1) of `size` texels square and binds the
+    // framebuffer to draw layer `layer`, cleared to the far depth, with the viewport the map's.
+    void beginLayer(int layers, int layer, int size);
     GLuint texture() const { return texture_; }
 
 private:
     GLuint texture_ = 0, framebuffer_ = 0;
-    int layers_ = 0;
+    int layers_ = 0, size_ = 0;
 };
 
 }  // namespace patina

@@ -83,6 +83,23 @@ TEST_F(AccuracyCommands, AreaAccuracyMeasuresEveryMethodAgainstTheGroundTruth) {
     EXPECT_NE(missing.stderrText.find("no such folder"), std::string::npos) << missing.stderrText;
 }
 
+// shadow-accuracy (issue 37 item 5): a row per light, map size and bias, the CSV and the charts.
+TEST_F(AccuracyCommands, ShadowAccuracyWritesItsTableAndChart) {
+    const test::CliRun run = test::runPatina("shadow-accuracy --quick --out-dir " + dir_.string(), dir_);
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const auto rows = readCsv(path("shadow_accuracy.csv"));
+    ASSERT_EQ(rows.size(), 1u + 3u * 3u * 3u);   // --quick: the sun and two spheres, 3 sizes, 3 biases
+    ASSERT_EQ(rows[0].size(), 14u);
+    EXPECT_EQ(rows[0][5], "floor_rmse");
+    for (size_t i = 1; i < rows.size(); ++i) {
+        ASSERT_EQ(rows[i].size(), rows[0].size());
+        EXPECT_TRUE(std::isfinite(std::stod(rows[i][5])) && std::stod(rows[i][5]) > 0.0) << "row " << i;
+    }
+    for (const char* file : {"shadow_accuracy.svg", "shadow_accuracy.pdf", "shadow_accuracy.png"}) {
+        EXPECT_TRUE(std::filesystem::exists(path(file))) << file;
+    }
+}
+
 // Every path at every light count, both scale axes, every target with a finite value, the
 // charts. Times are not checked: benchmarks, not timed tests.
 TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
@@ -129,10 +146,19 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "brdf-model specialised-epic-default-scene ", "brdf-model specialised-gltf-default-scene "}) {
         EXPECT_EQ(perSeries[series], 1) << series;   // glTF's BRDF against the seed's, one row each
     }
-    for (const char* layer : {"", "-clearcoat", "-sheen"}) {   // issue 36: each layer against the bare gltf
+    for (const char* layer : {"", "-clearcoat", "-sheen", "-transmission"}) {   // issue 36: each layer against the bare gltf
         for (const char* shown : {"", "-default-scene"}) {
             const std::string series = std::string("layers specialised-gltf") + layer + shown + " ";
             EXPECT_EQ(perSeries[series], 1) << series;
+        }
+    }
+    // Issue 37: each light type's frame with its shadow map and without, over the floor, path by path.
+    for (const char* path : {"single-", "specialised-"}) {
+        for (const char* light : {"directional", "point", "sphere", "tube"}) {
+            for (const char* shadowed : {"", "-shadowed"}) {
+                const std::string series = std::string("shadows ") + path + light + shadowed + " ";
+                EXPECT_EQ(perSeries[series], 1) << series;
+            }
         }
     }
     const std::string targets = read("render_targets.csv");

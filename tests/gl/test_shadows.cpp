@@ -5,6 +5,7 @@
 // picture is the one without them.
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -150,6 +151,32 @@ TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
     const RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Single, 1);
     EXPECT_EQ(renderer.render(test::prepared(inside), settings).hdr.rgb,
               renderer.render(test::prepared(insideOff), settings).hdr.rgb);
+}
+
+// The maps' size and bias are the draw's (RenderSettings::shadowMaps, what the shadow
+// measurement varies): a coarse map moves the shadow's edge and nothing far from it; sizes the
+// GL cannot make and a negative or non-finite bias are refused before anything is drawn.
+TEST(ShadowRender, TheMapsSizeAndBiasAreTheDrawsAndAreChecked) {
+    test::glContext();
+    Renderer renderer;
+    const Scene scene = sphereOverGround(Ground::Floor, true);
+    RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Single, 1);
+    EXPECT_EQ(settings.shadowMaps, (ShadowMapSettings{2048, 1.0f}));
+    const HdrImage fine = renderer.render(test::prepared(scene), settings).hdr;
+    settings.shadowMaps.size = 32;
+    const HdrImage coarse = renderer.render(test::prepared(scene), settings).hdr;
+    EXPECT_NE(coarse.rgb, fine.rgb);
+    EXPECT_EQ(luminanceAt(coarse, scene.camera, kFarAway), luminanceAt(fine, scene.camera, kFarAway));
+    settings.shadowMaps = {};
+    EXPECT_EQ(renderer.render(test::prepared(scene), settings).hdr.rgb, fine.rgb);   // back to the default, unchanged
+    for (const ShadowMapSettings bad : {ShadowMapSettings{0, 1.0f}, ShadowMapSettings{1 << 20, 1.0f},
+                                        ShadowMapSettings{2048, -1.0f}, ShadowMapSettings{2048, NAN},
+                                        ShadowMapSettings{2048, INFINITY}}) {
+        settings.shadowMaps = bad;
+        EXPECT_THROW(renderer.render(test::prepared(scene), settings), std::invalid_argument) << bad.size;
+    }
+    settings.shadowMaps = {};
+    EXPECT_EQ(renderer.render(test::prepared(scene), settings).hdr.rgb, fine.rgb);
 }
 
 TEST(ShadowRender, TheCatcherDarkensTheBackgroundUnderTheSphereOnlyOnEveryPath) {
