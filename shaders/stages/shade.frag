@@ -113,14 +113,16 @@ float lightShadow = 1.0f;                       // the visibility of the light b
 vec3 shadowNormal = vec3(0.0f, 1.0f, 0.0f);     // the geometric normal (no normal map), as shaded
 
 // The share of map k's 3x3 PCF taps (each a bilinear 2x2 comparison, GL_LINEAR) that see the
-// surface, L towards the light. The lookup moves out along the geometric normal by about a
-// texel's world size, more where the light grazes (normal offset, Holbein 2011); the map's own
-// depth carries the slope-scaled offset (glPolygonOffset when drawn, engine/gl/renderer.cpp).
+// surface, L towards the light. The lookup moves out along the geometric normal by about the
+// taps' spacing in world units (a texel's, wider for a sphere or tube light), more where the
+// light grazes (normal offset, Holbein 2011): a tap s texels away on a surface tilted from the
+// light meets the surface's own depth s texels further on, so the offset grows with s. The
+// map's own depth carries the slope-scaled offset (glPolygonOffset when drawn, renderer.cpp).
 float shadowVisibility(int k, vec3 L) {
     vec4 texel = uShadowTexels[k];
     float cosine = clamp(dot(shadowNormal, L), 0.0f, 1.0f);
     float w = (uShadowTransforms[k] * vec4(vPosition, 1.0f)).w;
-    float offset = texel.x * w * (1.0f + 2.0f * sqrt(1.0f - cosine * cosine));
+    float offset = texel.x * texel.z * w * (1.0f + 2.0f * sqrt(1.0f - cosine * cosine));
     vec4 p = uShadowTransforms[k] * vec4(vPosition + offset * shadowNormal, 1.0f);
     vec3 coordinates = p.xyz / p.w;
     vec2 step = vec2(texel.y * texel.z);
