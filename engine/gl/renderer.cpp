@@ -349,6 +349,10 @@ private:
     // By (BRDF model, map set, coat, sheen, transmission): each item's, programKeyOf. One model, no maps and
     // no layer: one program.
     std::map<ProgramKey, const GlProgram*> shading;
+    // The multi path's scene behind a transmission is drawn by the single path's programs
+    // (drawSceneBehind): its passes sum into one sample each. Empty elsewhere.
+    std::map<ProgramKey, const GlProgram*> behindShading;
+    const std::map<ProgramKey, const GlProgram*>* drawing = &shading;   // what programOf reads
     const GlProgram* backgroundPass = nullptr;
     int exposureTonemap = 0;
     glm::vec3 background{0.0f};
@@ -524,6 +528,17 @@ void Renderer::Frame::choosePrograms() {
                       ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface, shadows)
                       : &s.shading.useSpecialised(model, key, output, surface);
     }
+    if (settings.path == RenderPath::Multi && settings.channel.channel < 0 &&
+        std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) { return hasTransmission(item.material); })) {
+        for (const SceneDraw& item : draws) {
+            const ProgramKey itemKey = programKeyOf(item);
+            if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
+                behindShading[itemKey] = &s.shading.useSingle(
+                    itemKey.model, singlePass, ShadingPrograms::Output::Linear,
+                    ShadingPrograms::surfaceOf(maps, itemKey.clearcoat, itemKey.sheen, false));
+            }
+        }
+    }
     if (catcherPlan) {
         ShadingPrograms::SinglePass catcher = singlePass;
         catcher.catcher = true;
@@ -627,10 +642,10 @@ void Renderer::Frame::draw() {
 // What a transmitting item sees through its wall (gl/scene_behind.h): the opaque items that do
 // not transmit, drawn whole (not in strips) into an image of their own, their samples stamped 1
 // (coverage), the catcher left out (it only darkens the background, which is not drawn here).
-// Single and specialised only: the multi path's light passes sum into one sample each, so its
-// transmitting items see the environment alone. A channel shows data, not what is behind.
+// The multi path draws it with the single path's programs (behindShading): its light passes
+// sum into one sample each. A channel shows data, not what is behind.
 void Renderer::Frame::drawSceneBehind() {
-    sceneBehind = settings.path != RenderPath::Multi && settings.channel.channel < 0 &&
+    sceneBehind = settings.channel.channel < 0 &&
                   std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) {
                       return hasTransmission(item.material);
                   });
@@ -648,7 +663,11 @@ void Renderer::Frame::drawSceneBehind() {
     glDepthFunc(GL_LESS);
     const float stripStamp = std::exchange(stamp, 1.0f);
     stripTop = 0;
+    if (settings.path == RenderPath::Multi) {
+        drawing = &behindShading;
+    }
     drawSinglePass(behind, {}, false);
+    drawing = &shading;
     stamp = stripStamp;
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
@@ -792,7 +811,7 @@ Renderer::Frame::ProgramKey Renderer::Frame::programKeyOf(const SceneDraw& draw)
 
 Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {
     const ProgramKey key = programKeyOf(draws[item.item]);
-    return {key.model, shading.at(key)};
+    return {key.model, drawing->at(key)};
 }
 
 void Renderer::Frame::useProgram(const ItemProgram& program) const {
@@ -896,13 +915,19 @@ void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
 void Renderer::Frame::lightPasses(const GlProgram& shading, const DrawPlan& item) const {
     const GLint lightIndex = shading.uniform("uLightIndex");
     const GLint emissionPass = maps ? shading.uniform("uEmissionPass") : -1;
+    // A transmitting item adds the scene behind it in its first pass only (shade.frag).
+    const GLint behindPlace = sceneBehind ? shading.uniform("uSceneBehindPlace") : -1;
+    auto firstPass = [&](bool first) {
+        glUniform1i(emissionPass, first ? 1 : 0);
+        glUniform3f(behindPlace, float(stripTop), std::log2(float(w)), first ? 1.0f : 2.0f);
+    };
     for (size_t i = 0; i < packed.size(); ++i) {
-        glUniform1i(emissionPass, i == 0 ? 1 : 0);
+        firstPass(i == 0);
         glUniform1i(lightIndex, GLint(i));
         drawItem(item);
     }
     if (environment) {
-        glUniform1i(emissionPass, packed.empty() ? 1 : 0);
+        firstPass(packed.empty());
         glUniform1i(lightIndex, -1);
         drawItem(item);
     }

@@ -177,8 +177,9 @@ uniform float uThicknessScale;        // the draw's scale (thicknessScaleOf)
 #ifndef PATINA_PROBE
 // The frame's opaque items that do not transmit, drawn first (engine/gl/scene_behind.h):
 // premultiplied by their coverage, with a mip chain. uSceneBehindPlace: x the strip's first
-// image row, y log2 of the image's width, z 1 where the renderer drew it (0: the multi path,
-// a channel), so that a pixel reads what lies behind it.
+// image row, y log2 of the image's width, z 0 where the renderer drew none (a channel), 1 where
+// this pass adds what is seen of it, 2 where it only hides the light beyond (the multi path's
+// passes after the first: the scene behind is added once).
 uniform sampler2D uSceneBehind;
 uniform vec3 uSceneBehindPlace;
 // Thin-walled, the light leaves along -V: the scene behind is the one at this very pixel,
@@ -408,12 +409,15 @@ void main() {
     float beyond = 1.0f - behind.a;
     // The scene behind, weighted as the light beyond it is: as the split sum weighs the diffuse
     // under an environment, by 1 - F(N.V) without one.
+    if (uSceneBehindPlace.z == 1.0f) {
 #ifdef PATINA_ENVIRONMENT
-    transmitted += transmissionThrough(transmission, behind.rgb, transmittedEnvironmentWeight(material, transmission.NoV));
+        transmitted += transmissionThrough(transmission, behind.rgb,
+                                           transmittedEnvironmentWeight(material, transmission.NoV));
 #else
-    transmitted += transmissionThrough(transmission, behind.rgb,
-                                       vec3(1.0f) - transmissionFresnel(transmission.f0, transmission.NoV));
+        transmitted += transmissionThrough(transmission, behind.rgb,
+                                           vec3(1.0f) - transmissionFresnel(transmission.f0, transmission.NoV));
 #endif
+    }
 #endif
 #endif
     vec3 radiance = vec3(0.0f);
@@ -541,13 +545,11 @@ void main() {
         radiance = LIT(SHEENED(shadeLight(light, material, vPosition, N, V), sheenLight(light, sheen, vPosition, N, V)));
         COATED(LIT(clearcoatLight(light, coat, vPosition, V)))
 #ifdef PATINA_TRANSMISSION
-        transmitted = LIT(transmissionLight(light, transmission, vPosition, N, V));
+        vec3 throughWall = LIT(transmissionLight(light, transmission, vPosition, N, V));
+        transmitted += light.type == LIGHT_HEMISPHERE ? OCCLUDED(BEYOND(throughWall)) : throughWall;
 #endif
         if (light.type == LIGHT_HEMISPHERE) {
             radiance = OCCLUDED(radiance);
-#ifdef PATINA_TRANSMISSION
-            transmitted = OCCLUDED(transmitted);
-#endif
         }
     }
 #ifdef PATINA_TEXTURED
