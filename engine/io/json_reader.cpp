@@ -213,6 +213,10 @@ glm::vec3 JsonObjectReader::vec3(const char* key, glm::vec3 fallback, Range rang
 }
 
 int JsonObjectReader::checkFormatAndVersion(const char* expectedFormat, int supportedVersion) {
+    if (!has("format") && has("asset")) {   // glTF 2.0's one required key: a model, not Patina's file
+        fail("format", std::string("missing: this is a glTF model, not a ") + expectedFormat +
+                           " file (a model is drawn with --mesh, or opened in the editor)");
+    }
     const Json& format = required("format");
     if (!format.is_string() || format.get<std::string>() != expectedFormat) {
         fail("format", std::string("expected \"") + expectedFormat + "\", got " + shortJson(format));

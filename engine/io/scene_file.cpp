@@ -564,8 +564,41 @@ void saveMaterialFile(const std::filesystem::path& path, const Material& materia
     saveWithBackup(path, materialToJson(material));
 }
 
+namespace {
+// `file` as the scene file in `folder` names it: relative where it lies in that folder or below
+// it (so the folder can move or be shared whole), as it is elsewhere (absolute) or when empty.
+std::string namedFrom(const std::filesystem::path& folder, const std::string& file) {
+    if (file.empty()) {
+        return file;
+    }
+    const std::filesystem::path whole = std::filesystem::absolute(file).lexically_normal();
+    const std::filesystem::path base = folder.empty() ? std::filesystem::current_path() : std::filesystem::absolute(folder);
+    const std::filesystem::path relative = whole.lexically_relative(base.lexically_normal());
+    const bool inside = !relative.empty() && *relative.begin() != "..";
+    return inside ? relative.generic_string() : file;
+}
+
+// The scene as a file at `path` writes it: the mesh, environment images and replaced maps it
+// reads named relative to its folder where they lie in it or below (loading makes every path
+// absolute against the file's folder, so either form reads back the same files).
+Scene withPathsFrom(const std::filesystem::path& folder, Scene scene) {
+    scene.meshFile = namedFrom(folder, scene.meshFile);
+    for (Light& light : scene.lights) {
+        if (light.type == LightType::Environment && !builtinName(light.source)) {
+            light.source = namedFrom(folder, light.source);
+        }
+    }
+    for (ModelMaterialEdit& edit : scene.modelMaterials) {
+        for (auto& [key, image] : edit.mapsReplaced) {
+            image = namedFrom(folder, image);
+        }
+    }
+    return scene;
+}
+}  // namespace
+
 void saveSceneFile(const std::filesystem::path& path, const Scene& scene) {
-    saveWithBackup(path, sceneToJson(scene));
+    saveWithBackup(path, sceneToJson(withPathsFrom(path.parent_path(), scene)));
 }
 
 namespace {

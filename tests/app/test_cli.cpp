@@ -204,6 +204,18 @@ TEST_F(Cli, BadSceneExitsThreeNamingTheProblemAndWritesNothing) {
     EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
+// A new user's slip: a glTF model given where a scene goes is named as a model, with where it goes.
+TEST_F(Cli, AModelGivenAsASceneSaysItIsAModel) {
+    write("model.gltf", R"({"asset": {"version": "2.0"}})");
+    const test::CliRun r = run("render --scene " + path("model.gltf").string() + " --out " + path("x.png").string());
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.stderrText.find("model.gltf: /format: missing: this is a glTF model, not a patina-scene file (a model is "
+                                "drawn with --mesh"),
+              std::string::npos)
+        << r.stderrText;
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
 TEST_F(Cli, ANegativeLightSizeExitsThreeNamingTheKey) {
     write("size.json", R"({"format": "patina-scene", "version": 2, "lights": [{"type": "sphere", "sourceRadius": -0.5}]})");
     const test::CliRun r = run("render --scene " + path("size.json").string() + " --out " + path("x.png").string());

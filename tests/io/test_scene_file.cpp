@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/json_reader.h"
 #include "io/json_writer.h"
 #include "io/scene_file.h"
 #include "scene/camera_control.h"
@@ -560,6 +561,37 @@ TEST(ShippedFiles, ExampleSceneIsWhatSavingTheDefaultWrites) {
     EXPECT_EQ(bytes(saved), shipped);
     EXPECT_NE(shipped.find(R"("tonemap": "pbr-neutral")"), std::string::npos);
     std::filesystem::remove(saved);
+}
+
+// A saved scene names the files in its folder (or below) relative to it, so the folder can be
+// moved or shared whole (a new user's review: it wrote absolute paths, and a moved folder lost
+// its model); a file elsewhere keeps its absolute path. Reading it back gives the same files.
+TEST(SceneFile, SavingNamesTheFilesInItsFolderRelativeToIt) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::temp_directory_path() / ("patina_relative_" + std::to_string(::getpid()));
+    fs::create_directories(folder / "models");
+    Scene scene = defaultScene();
+    scene.meshFile = (folder / "models" / "engine.glb").string();
+    std::erase_if(scene.lights, [](const Light& light) { return light.type == LightType::Environment; });
+    Light sky;
+    sky.type = LightType::Environment;
+    sky.source = "/usr/share/elsewhere/sky.hdr";
+    scene.lights.push_back(sky);
+    ModelMaterialEdit edit;
+    edit.index = 0;
+    edit.mapsReplaced = {{"baseColorTexture", (folder / "worn.png").string()}};
+    scene.modelMaterials = {edit};
+    saveSceneFile(folder / "scene.json", scene);
+    const Json json = readJsonFile(folder / "scene.json");
+    EXPECT_EQ(json["mesh"], "models/engine.glb");
+    EXPECT_EQ(json["lights"].back()["source"], "/usr/share/elsewhere/sky.hdr");
+    EXPECT_EQ(json["modelMaterials"][0]["mapsReplaced"]["baseColorTexture"], "worn.png");
+    std::vector<std::string> warnings;
+    const Scene read = loadSceneFile(folder / "scene.json", warnings);
+    EXPECT_EQ(read.meshFile, scene.meshFile);
+    EXPECT_EQ(read.lights.back().source, sky.source);
+    EXPECT_EQ(read.modelMaterials[0].mapsReplaced, edit.mapsReplaced);
+    fs::remove_all(folder);
 }
 
 // The default scene's point light is in the picture, so its gizmo can be grabbed.
