@@ -211,11 +211,26 @@ Rgb8 heatColour(int difference) {
 std::string materialCaption(const Material& material, int panelWidth) {
     // The base colour as the editor's field shows it: sRGB, and named so (files hold linear).
     const glm::vec3 base = shader::srgbColor(material.baseColor);
-    char full[128], parameters[80];
+    char full[256], parameters[192];
     // The BRDF model where it is not the seed's: A and B may differ in it alone (a glTF part
     // under `gltf` against the same under `epic`).
-    const std::string model =
+    std::string model =
         material.model == BrdfModelId::Epic ? std::string() : "  " + std::string(brdfModel(material.model).name);
+    // The layers a part has, so that A with a coat and B without are not captioned alike.
+    char layer[48];
+    if (material.clearcoat > 0.0f) {
+        std::snprintf(layer, sizeof layer, "  coat %.2f", double(material.clearcoat));
+        model += layer;
+    }
+    if (material.sheenColor != glm::vec3(0.0f)) {
+        const float sheen = std::max({material.sheenColor.r, material.sheenColor.g, material.sheenColor.b});
+        std::snprintf(layer, sizeof layer, "  sheen %.2f", double(sheen));
+        model += layer;
+    }
+    if (material.transmission > 0.0f) {
+        std::snprintf(layer, sizeof layer, "  transmission %.2f", double(material.transmission));
+        model += layer;
+    }
     std::snprintf(parameters, sizeof parameters, "  r %.2f s %.2f m %.2f%s", double(material.roughness),
                   double(material.specular), double(material.metallic), model.c_str());
     std::snprintf(full, sizeof full, "%s  base sRGB %.2f %.2f %.2f", parameters, double(base.r), double(base.g),

@@ -181,6 +181,13 @@ TEST(Compositing, ACaptionShowsTheBaseColourInSrgbAndNamesIt) {
     Material gltf = gold;   // another model than the seed's is named: A and B may differ in it alone
     gltf.model = BrdfModelId::Gltf;
     EXPECT_EQ(materialCaption(gltf, 1000), "gold  r 0.30 s 0.50 m 1.00  gltf  base sRGB 1.00 0.86 0.60");
+    // A part's layers are named, so that A with a coat and B without are not captioned alike.
+    Material layered = gltf;
+    layered.clearcoat = 1.0f;
+    layered.sheenColor = {0.2f, 0.5f, 0.1f};
+    layered.transmission = 0.75f;
+    EXPECT_EQ(materialCaption(layered, 2000),
+              "gold  r 0.30 s 0.50 m 1.00  gltf  coat 1.00  sheen 0.50  transmission 0.75  base sRGB 1.00 0.86 0.60");
 }
 
 // A side-by-side half is narrow: the name is what tells A from B, so numbers give way first.
