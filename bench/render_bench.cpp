@@ -369,6 +369,37 @@ void measureShadows(BenchRenderer& renderer, const RenderBenchOptions& options, 
     }
 }
 
+// Ambient occlusion's frame (issue 37 items 2 and 6): the default scene's sphere over a floor,
+// on the specialised path, without it and with it (its values baked once, before the rounds:
+// the frame draws one more vertex attribute and the environment's diffuse apart from its
+// specular), rounds interleaved.
+void measureAmbientOcclusion(BenchRenderer& renderer, const RenderBenchOptions& options, const RenderSettings& settings,
+                             RenderBenchResult& result) {
+    RenderSettings specialised = settings;
+    specialised.path = RenderPath::Specialised;
+    Scene floor = defaultScene();
+    floor.display.ground = Ground::Floor;
+    Scene occluded = floor;
+    occluded.display.ambientOcclusion = true;
+    const std::shared_ptr<const Mesh> mesh = builtinMesh(floor.mesh);
+    const std::shared_ptr<const Environment> studio = preparedStudio();
+    const std::vector<std::pair<std::string, PreparedScene>> scenes{
+        {"specialised-floor", PreparedScene{floor, mesh, studio}},
+        {"specialised-floor-ambient-occlusion",
+         PreparedScene{occluded, mesh, studio, nullptr,
+                       std::make_shared<const AmbientOcclusion>(bakeAmbientOcclusion(*mesh, nullptr, true))}}};
+    std::vector<Samples> samples(scenes.size());
+    interleaved(options.runs, [&](bool keep) {
+        for (size_t k = 0; k < scenes.size(); ++k) {
+            timeFrame(renderer, scenes[k].second, specialised, keep ? &samples[k] : nullptr);
+        }
+    });
+    for (size_t k = 0; k < scenes.size(); ++k) {
+        result.scaleRows.push_back({"ambient-occlusion", settings.width, settings.height, result.triangles,
+                                    samples[k].medians(), scenes[k].first, int(floor.lights.size())});
+    }
+}
+
 // The default scene's sphere with spherical UVs and MikkTSpace tangents, drawn once for each
 // material, with `images` maps of `side` x `side` busy pixels (the noise a PNG cannot shrink:
 // the most a decoder has to do) dealt out five a material, in mapsOf's order.
@@ -689,6 +720,7 @@ RenderBenchResult runRenderBench(const RenderBenchOptions& options) {
     measureBrdfModels(renderer, options, settings, result);
     measureLayers(renderer, options, settings, result);
     measureShadows(renderer, options, settings, result);
+    measureAmbientOcclusion(renderer, options, settings, result);
     measureScale(renderer, mesh, options, settings, result);
     measureTextured(renderer, options, settings, result);
     measureGltfLoad(options, result);

@@ -55,7 +55,8 @@ struct LightCountRow {
 };
 
 struct ScaleRow {
-    // "resolution", "triangles", "flat-lights", "culling", "environment", or "textured" and
+    // "resolution", "triangles", "flat-lights", "culling", "environment", "ambient-occlusion"
+    // (the default scene over a floor without and with it), or "textured" and
     // "untextured" (a sphere with five maps, and without, as a model; path by path), and "base
     // colour map" between them (its base colour map alone); "layers" (the gltf sphere bare and
     // with each layer); "shadows" (the sphere over the floor under one light of each type, path

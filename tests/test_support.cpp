@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include "assets/prepare_scene.h"
+#include "common/luminance.h"
 #include "scene/view.h"
 
 #include <fstream>
@@ -106,6 +107,11 @@ glm::vec3 pixel(const HdrImage& image, int x, int y) {
 glm::ivec2 pixelOf(const Camera& camera, glm::vec3 point, int width, int height) {
     const glm::vec4 clip = viewProjection(camera, float(width) / float(height)) * glm::vec4(point, 1.0f);
     return {int((clip.x / clip.w * 0.5f + 0.5f) * float(width)), int((0.5f - clip.y / clip.w * 0.5f) * float(height))};
+}
+
+float luminanceAt(const HdrImage& image, const Camera& camera, glm::vec3 point) {
+    const glm::ivec2 at = pixelOf(camera, point, image.width, image.height);
+    return luminance(pixel(image, at.x, at.y));
 }
 
 std::vector<Light> everyLightType() {

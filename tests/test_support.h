@@ -46,6 +46,8 @@ Model twoBalls();
 // width x height image.
 glm::vec3 pixel(const HdrImage& image, int x, int y);
 glm::ivec2 pixelOf(const Camera& camera, glm::vec3 point, int width, int height);
+// The Rec. 709 luminance of the pixel `point` lands in, seen by `camera`.
+float luminanceAt(const HdrImage& image, const Camera& camera, glm::vec3 point);
 
 // One light of every type and the studio environment around the default scene's unit sphere:
 // the scene the material layers' render tests draw (ClearcoatRender, SheenRender).

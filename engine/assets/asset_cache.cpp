@@ -71,6 +71,26 @@ AssetCache::Shape AssetCache::shape(const Scene& scene) {
     return {{file, &file->mesh}, retextured(file, scene), file};
 }
 
+std::shared_ptr<const AmbientOcclusion> AssetCache::ambientOcclusion(const Scene& scene, const Shape& shape) {
+    if (!shape.mesh) {
+        return nullptr;
+    }
+    const Key shapeKey = shape.fileModel ? Key{shape.fileModel->path, shape.fileModel->hash}
+                                         : Key{"builtin:" + std::string(meshKindName(scene.mesh)), 0};
+    const std::pair<Key, bool> key{shapeKey, scene.display.ground != Ground::None};
+    {
+        std::lock_guard lock(mutex_);
+        if (std::shared_ptr<const AmbientOcclusion> occlusion = heldEntry(occlusions_, key)) {
+            return occlusion;
+        }
+    }
+    auto occlusion = std::make_shared<const AmbientOcclusion>(
+        bakeAmbientOcclusion(*shape.mesh, shape.fileModel ? &shape.fileModel->model : nullptr, key.second));
+    std::lock_guard lock(mutex_);
+    keepEntry(occlusions_, key, occlusion);
+    return occlusion;
+}
+
 std::shared_ptr<const ModelImage> AssetCache::image(const std::filesystem::path& path) {
     return keyedImage(path).second;
 }

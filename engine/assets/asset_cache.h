@@ -12,6 +12,7 @@
 #include "geometry/mesh.h"
 #include "assets/loaded_model.h"
 #include "model/model.h"
+#include "scene/ambient_occlusion.h"
 #include "scene/scene.h"
 
 namespace patina {
@@ -60,6 +61,12 @@ public:
     // in the result's notes. Known by the file's key and each replacement's map, path and image
     // contents: the same replacements give the same object while it is held.
     std::shared_ptr<const Model> retextured(const std::shared_ptr<const LoadedModel>& file, const Scene& scene);
+    // The ambient occlusion of `shape` (shape(scene)'s, or one the caller loaded through it) with
+    // or without a ground under it (scene/ambient_occlusion.h), baked once while someone holds
+    // it: known by the file model's key (a retextured model has its file's triangles, so it
+    // shares its file's occlusion) or the built-in kind, and whether a ground lies under it.
+    // Null for a shape without its mesh.
+    std::shared_ptr<const AmbientOcclusion> ambientOcclusion(const Scene& scene, const Shape& shape);
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
     // the disk cache of environment/environment_source.h; one made afresh is prefiltered by
     // `prefilter` (the GPU's pass only where the caller's thread has a GL context). A note about
@@ -79,6 +86,8 @@ private:
     std::map<Key, std::weak_ptr<const Environment>> environments_;
     std::map<Key, std::shared_ptr<const Environment>> builtins_;
     std::map<Key, std::weak_ptr<const ModelImage>> images_;
+    // By the shape's key (a file's, or "builtin:" and the kind) and whether a ground lies under it.
+    std::map<std::pair<Key, bool>, std::weak_ptr<const AmbientOcclusion>> occlusions_;
     struct RetexturedModel;   // a retextured copy, holding the model it was made from
     std::map<std::string, std::weak_ptr<const RetexturedModel>> retextured_;   // by file and replacements
 };

@@ -10,13 +10,15 @@ std::shared_ptr<const Environment> environmentOf(const Scene& scene, AssetCache&
     return light ? cache.environment(light->source, warnings, {}, {}, prefilter) : nullptr;
 }
 
-// `scene` with its shape and environment; the model's notes to `warnings`.
-PreparedScene withLoaded(const Scene& scene, const AssetCache::Shape& shape,
+// `scene` with its shape and environment, and its ambient occlusion where the display has it
+// on; the model's notes to `warnings`.
+PreparedScene withLoaded(const Scene& scene, const AssetCache::Shape& shape, AssetCache& cache,
                          std::shared_ptr<const Environment> environment, std::vector<std::string>& warnings) {
     if (shape.model) {   // what its file left out (a map whose image is missing, ...), and its replacements
         warnings.insert(warnings.end(), shape.model->notes.begin(), shape.model->notes.end());
     }
-    return {scene, shape.mesh, std::move(environment), shape.model};
+    return {scene, shape.mesh, std::move(environment), shape.model,
+            scene.display.ambientOcclusion ? cache.ambientOcclusion(scene, shape) : nullptr};
 }
 
 }  // namespace
@@ -24,12 +26,12 @@ PreparedScene withLoaded(const Scene& scene, const AssetCache::Shape& shape,
 PreparedScene prepareScene(const Scene& scene, AssetCache& cache, std::vector<std::string>& warnings,
                            PrefilterFunction prefilter) {
     std::shared_ptr<const Environment> environment = environmentOf(scene, cache, warnings, prefilter);
-    return withLoaded(scene, cache.shape(scene), std::move(environment), warnings);
+    return withLoaded(scene, cache.shape(scene), cache, std::move(environment), warnings);
 }
 
 PreparedScene prepareScene(const Scene& scene, const AssetCache::Shape& shape, AssetCache& cache,
                            std::vector<std::string>& warnings, PrefilterFunction prefilter) {
-    return withLoaded(scene, shape, environmentOf(scene, cache, warnings, prefilter), warnings);
+    return withLoaded(scene, shape, cache, environmentOf(scene, cache, warnings, prefilter), warnings);
 }
 
 }  // namespace patina

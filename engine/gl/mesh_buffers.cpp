@@ -78,8 +78,16 @@ void MeshBuffers::upload(const Mesh& mesh) {
     culling_ = culling;
 }
 
-void MeshBuffers::draw() const {
+void MeshBuffers::draw(GLuint occlusion) const {
     glBindVertexArray(vertexArray_);
+    if (occlusion) {
+        glBindBuffer(GL_ARRAY_BUFFER, occlusion);
+        glEnableVertexAttribArray(kOcclusionAttribute);
+        glVertexAttribPointer(kOcclusionAttribute, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+    } else if (occlusionEnabled_) {
+        glDisableVertexAttribArray(kOcclusionAttribute);
+    }
+    occlusionEnabled_ = occlusion != 0;
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
 }

@@ -18,7 +18,10 @@ public:
     MeshBuffers& operator=(const MeshBuffers&) = delete;
 
     void upload(const Mesh& mesh);
-    void draw() const;
+    // Draws the triangles; `occlusion`, a buffer of a float per vertex, is attribute 5
+    // (mesh.vert's aAmbientOcclusion, gl/occlusion_buffers.h), 0 for none.
+    void draw(GLuint occlusion = 0) const;
+    static constexpr GLuint kOcclusionAttribute = 5;
     const BoundingBox& bounds() const { return bounds_; }
     const FaceCulling& culling() const { return culling_; }
     size_t triangleCount() const { return size_t(indexCount_) / 3; }
@@ -26,6 +29,7 @@ public:
 private:
     GLuint vertexArray_ = 0, vertices_ = 0, indices_ = 0;
     GLsizei indexCount_ = 0;
+    mutable bool occlusionEnabled_ = false;   // attribute 5 on in the vertex array
     BoundingBox bounds_;
     FaceCulling culling_;
 };

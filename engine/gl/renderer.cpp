@@ -22,6 +22,7 @@
 #include "gl/frame_plan.h"
 #include "gl/mesh_buffers.h"
 #include "gl/model_textures.h"
+#include "gl/occlusion_buffers.h"
 #include "gl/program.h"
 #include "gl/render_targets.h"
 #include "gl/scene_behind.h"
@@ -154,6 +155,7 @@ struct Renderer::State {
     MeshBuffers groundBuffers;
     ShadowMaps shadowMaps;
     SceneBehind sceneBehind;
+    OcclusionBuffers occlusion;   // the shown shape's ambient occlusion, where the display has it
     const BoundingBox& boundsOfMesh(const std::shared_ptr<const Mesh>& mesh) {
         if (boundsOf != mesh) {
             modelBounds = boundingBox(*mesh);
@@ -305,6 +307,7 @@ private:
         bool clearcoat;
         bool sheen;
         bool transmission;
+        bool ambientOcclusion;
         auto operator<=>(const ProgramKey&) const = default;
     };
     struct ItemProgram {
@@ -341,12 +344,13 @@ private:
     bool environment = false;
     bool environmentBackground = false;   // a drawn background covers every pixel
     bool maps = false;                    // an item has texture maps: the programs read them
+    bool ambientOcclusion = false;        // the items carry their ambient occlusion (SceneDraw::occlusion)
     FramePlan plan;
     std::vector<shader::PackedLight> packed;
     ChannelLights channelLights;   // with a channel: its lights in `packed`
     const GlImage* linear = nullptr;
     const GlProgram* displayPass = nullptr;
-    // By (BRDF model, map set, coat, sheen, transmission): each item's, programKeyOf. One model, no maps and
+    // By (BRDF model, map set, coat, sheen, transmission, occlusion): each item's, programKeyOf. One model, no maps and
     // no layer: one program.
     std::map<ProgramKey, const GlProgram*> shading;
     // The multi path's scene behind a transmission is drawn by the single path's programs
@@ -369,6 +373,7 @@ std::vector<SceneDraw> drawnItems(const PreparedScene& prepared, const RenderSet
     if (settings.channel.channel >= 0) {
         for (SceneDraw& draw : draws) {
             draw.blend = false;
+            draw.occlusion = nullptr;   // a channel is the surface's data: no occlusion, as no shadow
         }
     }
     return draws;
@@ -380,6 +385,8 @@ Renderer::Frame::Frame(State& state, const PreparedScene& prepared, const Render
     : s(state), prepared(prepared), scene(prepared.scene), settings(settings), t(targets), w(settings.width),
       h(settings.height), draws(drawnItems(prepared, settings)) {
     uploadShape(s, prepared);
+    ambientOcclusion = prepared.occlusion && settings.channel.channel < 0;
+    s.occlusion.upload(ambientOcclusion ? prepared.occlusion : nullptr);
     addGround();
     planDraw();
     // Until this draw succeeds the target has nothing to read back.
@@ -410,7 +417,9 @@ void Renderer::Frame::planDraw() {
     }
     maps = std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) { return item.maps != nullptr; });
     // The maps' three vertex outputs (surface_maps.glsl) take two flat lights' rows and more.
-    const size_t flatSlots = maps ? s.flatLightSlots - std::min<size_t>(s.flatLightSlots, 2) : s.flatLightSlots;
+    // The ambient occlusion's one output takes one more light's.
+    const size_t taken = (maps ? 2 : 0) + (ambientOcclusion ? 1 : 0);
+    const size_t flatSlots = s.flatLightSlots - std::min(s.flatLightSlots, taken);
     plan = planFrame(planned, scene.camera, facts, s.maxSamples, flatSlots);
     packed = packEnabledLights(scene.lights);
     assignShadowMaps();
@@ -420,8 +429,8 @@ void Renderer::Frame::planDraw() {
                                           [&](const DrawPlan& item) { return item.item == draws.size() - 1; });
         catcherPlan = *catcher;
         plan.items.erase(catcher);
-        if (shadowViews.empty()) {
-            catcherPlan.reset();   // no shadow to catch: the background unchanged
+        if (shadowViews.empty() && !ambientOcclusion) {
+            catcherPlan.reset();   // no shadow or occlusion to catch: the background unchanged
         }
     }
     if (settings.channel.channel >= 0) {
@@ -447,6 +456,10 @@ void Renderer::Frame::addGround() {
     }
     SceneDraw draw;
     draw.mesh = &s.groundMesh;
+    if (ambientOcclusion && s.occlusion.shown()->withGround) {   // the grid that carries its occlusion
+        draw.mesh = &s.occlusion.shown()->ground;
+        draw.occlusion = &s.occlusion.shown()->groundValues;
+    }
     draw.primitive = -1;   // buffersOf: the ground's
     draw.material = groundMaterial(scene.display);
     draw.doubleSided = false;   // seen from above only
@@ -519,8 +532,8 @@ void Renderer::Frame::choosePrograms() {
             continue;
         }
         const BrdfModelId model = itemKey.model;
-        const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(maps, itemKey.clearcoat, itemKey.sheen,
-                                                                            itemKey.transmission);
+        const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
+            maps, itemKey.clearcoat, itemKey.sheen, itemKey.transmission, itemKey.ambientOcclusion);
         ShaderSpecialisation key = specialised;
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
@@ -533,9 +546,10 @@ void Renderer::Frame::choosePrograms() {
         for (const SceneDraw& item : draws) {
             const ProgramKey itemKey = programKeyOf(item);
             if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
-                behindShading[itemKey] = &s.shading.useSingle(
-                    itemKey.model, singlePass, ShadingPrograms::Output::Linear,
-                    ShadingPrograms::surfaceOf(maps, itemKey.clearcoat, itemKey.sheen, false));
+                const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
+                    maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion);
+                behindShading[itemKey] =
+                    &s.shading.useSingle(itemKey.model, singlePass, ShadingPrograms::Output::Linear, surface);
             }
         }
     }
@@ -543,7 +557,8 @@ void Renderer::Frame::choosePrograms() {
         ShadingPrograms::SinglePass catcher = singlePass;
         catcher.catcher = true;
         catcherProgram = &s.shading.useSingle(draws.back().material.model, catcher, ShadingPrograms::Output::Linear,
-                                              ShadingPrograms::surfaceOf(maps, false, false));
+                                              ShadingPrograms::surfaceOf(maps, false, false, false,
+                                                                         draws.back().occlusion != nullptr));
     }
     if (settings.path == RenderPath::Multi || shadows) {
         s.prepass(maps).get();
@@ -631,6 +646,10 @@ void Renderer::Frame::draw() {
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
+    if (ambientOcclusion) {
+        // An item without values (baked for another shape) reads attribute 5's constant: none.
+        glVertexAttrib1f(MeshBuffers::kOcclusionAttribute, 1.0f);
+    }
     drawShadowMaps();
     drawSceneBehind();
     clearAroundMesh();
@@ -785,11 +804,15 @@ void Renderer::Frame::useItem(const DrawUniforms& uniforms, const DrawPlan& item
 }
 
 void Renderer::Frame::drawItem(const DrawPlan& item) const {
-    buffersOf(draws[item.item]).draw();
+    const SceneDraw& draw = draws[item.item];
+    buffersOf(draw).draw(draw.occlusion ? s.occlusion.bufferOf(draw.occlusion) : 0);
 }
 
 const MeshBuffers& Renderer::Frame::buffersOf(const SceneDraw& item) const {
-    return item.primitive < 0 ? s.groundBuffers : *s.primitives[size_t(item.primitive)];
+    if (item.primitive < 0) {   // the ground: its plane, or the grid that carries its occlusion
+        return item.mesh == &s.groundMesh ? s.groundBuffers : s.occlusion.ground();
+    }
+    return *s.primitives[size_t(item.primitive)];
 }
 
 namespace {
@@ -806,7 +829,8 @@ void blendOver(float alpha) {
 Renderer::Frame::ProgramKey Renderer::Frame::programKeyOf(const SceneDraw& draw) const {
     const bool byMapSet = settings.path == RenderPath::Specialised && maps;
     return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet,
-            hasClearcoat(draw.material), hasSheen(draw.material), hasTransmission(draw.material)};
+            hasClearcoat(draw.material), hasSheen(draw.material), hasTransmission(draw.material),
+            draw.occlusion != nullptr};
 }
 
 Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {

@@ -64,6 +64,9 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (has(surface, Surface::Transmission)) {
         defines.push_back("PATINA_TRANSMISSION");
     }
+    if (has(surface, Surface::AmbientOcclusion)) {
+        defines.push_back("PATINA_AMBIENT_OCCLUSION");
+    }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {
             defines.push_back("PATINA_ENVIRONMENT_DOMINANT");

@@ -51,12 +51,16 @@ public:
     // clearcoat.glsl) and with KHR_materials_sheen's sheen (PATINA_SHEEN, shaders/shared/
     // sheen.glsl), each compiled only for items whose material has one (hasClearcoat,
     // hasSheen), and with KHR_materials_transmission's and _volume's light through the surface
-    // (PATINA_TRANSMISSION, shaders/shared/transmission.glsl; hasTransmission). Bits: Maps,
-    // Clearcoat, Sheen and Transmission combine (surfaceOf).
-    enum class Surface { Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4, Transmission = 8 };
-    static Surface surfaceOf(bool maps, bool clearcoat, bool sheen, bool transmission = false) {
+    // (PATINA_TRANSMISSION, shaders/shared/transmission.glsl; hasTransmission), and with the
+    // ambient occlusion baked at its vertices (PATINA_AMBIENT_OCCLUSION: mesh.vert reads
+    // attribute 5; only for an item drawn with one, SceneDraw::occlusion). Bits: Maps,
+    // Clearcoat, Sheen, Transmission and AmbientOcclusion combine (surfaceOf).
+    enum class Surface { Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4, Transmission = 8, AmbientOcclusion = 16 };
+    static Surface surfaceOf(bool maps, bool clearcoat, bool sheen, bool transmission = false,
+                             bool ambientOcclusion = false) {
         return Surface((maps ? int(Surface::Maps) : 0) | (clearcoat ? int(Surface::Clearcoat) : 0) |
-                       (sheen ? int(Surface::Sheen) : 0) | (transmission ? int(Surface::Transmission) : 0));
+                       (sheen ? int(Surface::Sheen) : 0) | (transmission ? int(Surface::Transmission) : 0) |
+                       (ambientOcclusion ? int(Surface::AmbientOcclusion) : 0));
     }
     static bool has(Surface surface, Surface part) { return (int(surface) & int(part)) != 0; }
 

@@ -229,6 +229,7 @@ DisplaySettings displayFromJson(const Json& json, const std::string& pointer,
     display.ground = *groundParsed;
     display.groundColor = reader.vec3("groundColor", display.groundColor, kNonNegative);
     display.groundRoughness = reader.number("groundRoughness", display.groundRoughness, kUnit);
+    display.ambientOcclusion = reader.boolean("ambientOcclusion", false);
     display.extras = reader.keepUnknown(warnings);
     return display;
 }
@@ -624,6 +625,9 @@ Json displayToJson(const DisplaySettings& display) {
         json["ground"] = groundName(display.ground);
         json["groundColor"] = toJson(display.groundColor);
         json["groundRoughness"] = toJson(display.groundRoughness);
+    }
+    if (display.ambientOcclusion) {
+        json["ambientOcclusion"] = true;   // only where on, as the ground
     }
     return json;
 }

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "environment/equirect.h"
+#include "geometry/ambient_occlusion.h"
 #include "reference/area_lights.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
@@ -17,17 +18,6 @@
 #include "shading/layered_brdf.h"
 
 namespace patina {
-
-namespace {
-// A unit vector around N distributed as NoL / pi (Malley's method).
-glm::vec3 sampleCosine(glm::vec2 u, glm::vec3 N) {
-    const float r = std::sqrt(u.x), phi = 2.0f * std::numbers::pi_v<float> * u.y;
-    const glm::vec3 up = std::abs(N.z) < 0.999f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
-    const glm::vec3 tx = glm::normalize(glm::cross(up, N)), ty = glm::cross(N, tx);
-    return tx * (r * std::cos(phi)) + ty * (r * std::sin(phi)) + N * std::sqrt(std::max(0.0f, 1.0f - u.x));
-}
-
-}  // namespace
 
 float ggxPdf(glm::vec3 N, glm::vec3 V, glm::vec3 L, float alpha) {
     const glm::vec3 H = shader::safeNormalize(V + L);

@@ -7,7 +7,7 @@
 
 #include "environment/environment.h"
 #include "reference/environment_distribution.h"
-#include "reference/ray_caster.h"
+#include "reference/visibility.h"
 #include "shading/brdf_model_id.h"
 #include "shading/material_parameters.h"
 #include "shading/shading.h"

@@ -7,7 +7,7 @@
 
 #include "environment/environment.h"
 #include "reference/probe_reference.h"
-#include "reference/ray_caster.h"
+#include "reference/visibility.h"
 #include "reference/reference_draws.h"
 #include "shading/environment_brdf.h"
 

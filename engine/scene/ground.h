@@ -25,6 +25,11 @@ GroundPlane groundUnder(const BoundingBox& bounds);
 // UVs and tangent: drawn as any other primitive.
 Mesh groundMesh(const GroundPlane& plane);
 
+// The same plane as a grid of cells x cells squares (its vertices row by row from -x -z, each
+// square two triangles facing +y): what carries the ambient occlusion baked at its vertices
+// (scene/ambient_occlusion.h), the contact shadow a plane of four corners could not hold.
+Mesh groundGrid(const GroundPlane& plane, int cells);
+
 // The floor's material (Ground::Floor): a dielectric of the display's ground colour and
 // roughness, shaded as glTF's.
 MaterialParameters groundMaterial(const DisplaySettings& display);

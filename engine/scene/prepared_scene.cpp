@@ -153,12 +153,16 @@ std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared) {
         SceneDraw draw;
         draw.mesh = prepared.mesh.get();
         draw.material = prepared.scene.material;
+        draw.occlusion = prepared.occlusion ? itemOcclusion(*prepared.occlusion, -1, draw.mesh->positions.size()) : nullptr;
         return {draw};
     }
     std::vector<SceneDraw> draws;
     draws.reserve(prepared.model->draws.size());
     for (size_t i = 0; i < prepared.model->draws.size(); ++i) {
         if (std::optional<SceneDraw> draw = modelDraw(prepared.scene, *prepared.model, i)) {
+            if (prepared.occlusion) {
+                draw->occlusion = itemOcclusion(*prepared.occlusion, int(i), draw->mesh->positions.size());
+            }
             draws.push_back(*draw);
         }
     }

@@ -9,6 +9,7 @@
 #include "environment/environment.h"
 #include "geometry/mesh.h"
 #include "model/model.h"
+#include "scene/ambient_occlusion.h"
 #include "scene/scene.h"
 #include "shading/material_parameters.h"
 
@@ -29,6 +30,9 @@ struct PreparedScene {
     // The scene's glTF file as drawn: primitives, materials and draw items. Null: `mesh` is
     // drawn alone, with the document's material.
     std::shared_ptr<const Model> model = nullptr;
+    // The shape's ambient occlusion (DisplaySettings::ambientOcclusion), baked for this mesh or
+    // model and the display's ground; null where the display has it off.
+    std::shared_ptr<const AmbientOcclusion> occlusion = nullptr;
 };
 
 // One primitive drawn once, as both the renderer and the ground truth draw it.
@@ -55,6 +59,9 @@ struct SceneDraw {
     // glTF's MASK (§3.9.4): a pixel whose alpha (the factor times the base colour map's) is
     // below this is not drawn; negative for OPAQUE and BLEND.
     float alphaCutoff = -1.0f;
+    // The item's ambient occlusion, a value per vertex of `mesh` (scene/ambient_occlusion.h);
+    // null without. Points into the prepared scene's occlusion.
+    const std::vector<float>* occlusion = nullptr;
 };
 
 // Whether `material` needs its maps shaded: it has a texture map, or emits (emission is added

@@ -38,6 +38,7 @@ RenderInputs renderInputs(const PreparedScene& prepared) {
     inputs.ground = scene.display.ground;
     inputs.groundColor = scene.display.groundColor;
     inputs.groundRoughness = scene.display.groundRoughness;
+    inputs.occlusion = prepared.occlusion;
     return inputs;
 }
 
@@ -51,6 +52,7 @@ bool RenderInputs::operator==(const RenderInputs& other) const {
            environmentRotation == other.environmentRotation &&
            backgroundFromEnvironment == other.backgroundFromEnvironment && backgroundBlur == other.backgroundBlur &&
            ground == other.ground && groundColor == other.groundColor && groundRoughness == other.groundRoughness &&
+           occlusion == other.occlusion &&
            lights.size() == other.lights.size() &&
            (lights.empty() ||
             std::memcmp(lights.data(), other.lights.data(), lights.size() * sizeof(shader::PackedLight)) == 0);

@@ -35,6 +35,7 @@ struct RenderInputs {
     Ground ground = Ground::None;   // and the floor's material
     glm::vec3 groundColor{0.0f};
     float groundRoughness = 0.0f;
+    std::shared_ptr<const AmbientOcclusion> occlusion;   // the prepared one, while the display has it on
 
     // Light rows compared as their bytes: plain floats and ints, so equal bytes are equal
     // lights (a -0 against a 0 only costs one render more).

@@ -72,6 +72,10 @@ struct DisplaySettings {
     Ground ground = Ground::None;
     glm::vec3 groundColor{0.5f};
     float groundRoughness = 0.8f;
+    // The environment's and the hemisphere lights' light occluded by the model itself and the
+    // ground, as baked once per model (scene/ambient_occlusion.h), with the specular occlusion
+    // that keeps cavities from glowing with reflections. Off: nothing baked, nothing compiled.
+    bool ambientOcclusion = false;
     Json extras = Json::object();
 
     bool operator==(const DisplaySettings&) const = default;

@@ -158,3 +158,14 @@ PATINA_INLINE vec3 prefilterEnvironment(EnvironmentSource source, vec3 R, real r
 PATINA_INLINE vec3 irradianceFromMap(EnvironmentSource irradiance, vec3 n) {
     return sampleEnvironmentSource(irradiance, n, 0.0f);
 }
+
+// The specular occlusion of a surface whose ambient occlusion is `ao` (the share of the sky it
+// sees, cosine-weighted), seen at NoV, of roughness alpha = r^2 (as Filament passes it):
+// Lagarde and de Rousiers 2014, "Moving Frostbite to PBR", section 4.10.2, listing 26,
+// saturate((NoV + ao)^(2^(-16 alpha - 1)) - 1 + ao). It is about ao for a rough surface seen
+// face on, 1 where nothing occludes, and falls towards 0 at the grazing angles of a smooth one,
+// whose reflection comes from near its horizon, where a cavity's walls stand.
+PATINA_INLINE real specularOcclusion(real NoV, real ao, real alpha) {
+    real exponent = exp2(-16.0f * alpha - 1.0f);
+    return clamp(exp2(exponent * log2(NoV + ao)) - 1.0f + ao, 0.0f, 1.0f);
+}

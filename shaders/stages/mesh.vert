@@ -23,6 +23,13 @@ out vec2 vUv1;
 out vec4 vTangent;
 #endif
 
+#ifdef PATINA_AMBIENT_OCCLUSION
+// The item's ambient occlusion baked at its vertices (engine/scene/ambient_occlusion.h), handed
+// on for shade.frag; an item without reads the attribute's constant, 1 (the renderer sets it).
+layout(location = 5) in float aAmbientOcclusion;
+out float vAmbientOcclusion;
+#endif
+
 #ifdef PATINA_FLAT_LIGHT_COUNT
 // A specialised shader's first lights, handed on unchanged as flat inputs: on llvmpipe a vertex
 // shader loads a uniform scalar once per 8 vertices, a fragment shader gathers it lane by lane
@@ -61,6 +68,9 @@ void main() {
     // section 3.7.2.1 defines it in the mesh's own space).
     mat3 linear = mat3(uModel);
     vTangent = vec4(linear * aTangent.xyz, determinant(linear) < 0.0f ? -aTangent.w : aTangent.w);
+#endif
+#ifdef PATINA_AMBIENT_OCCLUSION
+    vAmbientOcclusion = aAmbientOcclusion;
 #endif
 #ifdef PATINA_FLAT_LIGHT_COUNT
     PATINA_FLAT_LIGHTS

@@ -36,6 +36,11 @@
 // light behind the surface seen through it and the environment along -V (TRANSMITTED), tinted
 // by the base colour and attenuated over the thickness; beneath the coat. Without it not one
 // instruction of the transmission is compiled.
+// PATINA_AMBIENT_OCCLUSION: the item's ambient occlusion baked at its vertices (mesh.vert's
+// vAmbientOcclusion, engine/scene/ambient_occlusion.h) times the file's occlusion map takes the
+// map's place on the environment's and the hemisphere lights' light (OCCLUDED), and the
+// environment's specular lobe takes the specular occlusion instead (ambientEnvironmentRadiance).
+// Without it not one instruction of it is compiled.
 #ifdef PATINA_PROBE
 flat in vec3 vPosition;
 flat in vec3 vNormal;
@@ -214,6 +219,28 @@ uniform bool uEmissionPass;
 #define OCCLUDED(radiance) (radiance)
 #endif
 
+#ifdef PATINA_AMBIENT_OCCLUSION
+// The ambient occlusion (PATINA_AMBIENT_OCCLUSION, docs/LIGHTING.md "Ambient occlusion").
+in float vAmbientOcclusion;
+float ambientOcclusion = 1.0f;         // the vertices' times the map's; main sets it
+float specularOcclusionShare = 1.0f;   // ibl.glsl's specularOcclusion over ambientOcclusion; main sets it
+#undef OCCLUDED
+#ifdef PATINA_SHADOW_CATCHER
+// The catcher takes the occlusion as it takes shadows: the light with and without it.
+#ifndef PATINA_SHADOWS
+vec3 catcherShadowed = vec3(0.0f), catcherUnshadowed = vec3(0.0f);
+#endif
+vec3 catcherOccluded(vec3 term) {
+    catcherUnshadowed += term;
+    catcherShadowed += ambientOcclusion * term;
+    return ambientOcclusion * term;
+}
+#define OCCLUDED(radiance) catcherOccluded(radiance)
+#else
+#define OCCLUDED(radiance) (ambientOcclusion * (radiance))
+#endif
+#endif
+
 #ifdef PATINA_ENVIRONMENT
 // PATINA_ENVIRONMENT_DOMINANT: the split sum along the dominant direction;
 // PATINA_ENVIRONMENT_STOCHASTIC N: N filtered importance samples a pixel instead
@@ -234,6 +261,25 @@ vec3 environmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
                             uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, dominant);
 #endif
 }
+#endif
+
+#if defined(PATINA_ENVIRONMENT) && defined(PATINA_AMBIENT_OCCLUSION)
+// The environment's light with its specular lobe weighed by specularOcclusionShare: after
+// OCCLUDED, the diffuse has the ambient occlusion and the specular the specular occlusion. The
+// diffuse is the split sum's in every method (shadeEnvironmentStochastic's too).
+vec3 ambientEnvironmentRadiance(SurfaceMaterial material, vec3 N, vec3 V) {
+    vec3 radiance = environmentRadiance(material, N, V);
+#ifdef PATINA_NO_DIFFUSE
+    vec3 diffuse = vec3(0.0f);
+#else
+    vec3 irradiance =
+        irradianceFromMap(uEnvironmentIrradiance, toEnvironmentFrame(N, uEnvironmentRotation.x, uEnvironmentRotation.y));
+    vec3 diffuse = uEnvironmentIntensity *
+                   splitSumShares(material, max(dot(N, V), MIN_N_DOT_V), vec3(0.0f), irradiance).diffuse;
+#endif
+    return diffuse + specularOcclusionShare * (radiance - diffuse);
+}
+#define environmentRadiance ambientEnvironmentRadiance
 #endif
 
 #if defined(PATINA_ENVIRONMENT) && defined(PATINA_CLEARCOAT)
@@ -348,6 +394,17 @@ void main() {
 #endif
 #ifdef PATINA_TEXTURED
     N = mappedNormal(N);
+#endif
+#ifdef PATINA_AMBIENT_OCCLUSION
+#ifdef PATINA_TEXTURED
+    ambientOcclusion = occlusion * vAmbientOcclusion;
+#else
+    ambientOcclusion = vAmbientOcclusion;
+#endif
+#ifndef PATINA_SHADOW_CATCHER
+    float specularShare = specularOcclusion(max(dot(N, V), MIN_N_DOT_V), ambientOcclusion, material.alpha);
+    specularOcclusionShare = ambientOcclusion > 0.0f ? specularShare / ambientOcclusion : 0.0f;
+#endif
 #endif
 #ifdef PATINA_SHEEN
     // The sheen lies on the base's normal, its map's included.

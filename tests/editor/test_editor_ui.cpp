@@ -2054,6 +2054,29 @@ TEST_F(EditorUi, TheGroundListAndALightsShadowsCheckboxChangeThePictureAndUndo) 
     EXPECT_EQ(state_.scene.display.ground, Ground::None);
 }
 
+// Issue 37 item 2: the Ambient occlusion checkbox beside the Ground list bakes the sphere's
+// occlusion and its floor's (the floor darkens under the sphere), and undo takes it back.
+TEST_F(EditorUi, TheAmbientOcclusionCheckboxDarkensTheFloorUnderTheSphereAndUndoes) {
+    click(centreOf("Ground plane"));
+    click(centreOf("ground:floor"));
+    ASSERT_EQ(state_.scene.display.ground, Ground::Floor);
+    frames(2);
+    const LdrImage floor = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Ambient occlusion"));
+    ASSERT_TRUE(state_.scene.display.ambientOcclusion);
+    frames(2);
+    ASSERT_TRUE(state_.occlusion);
+    EXPECT_TRUE(state_.occlusion->withGround);
+    const LdrImage occluded = services_->viewportPixels(EditorServices::Shown::Edited);
+    EXPECT_GT(differingPixels(floor, occluded), 500);
+    EXPECT_TRUE(state_.error.empty()) << state_.error;
+    press(kKeyZ, true);
+    EXPECT_FALSE(state_.scene.display.ambientOcclusion);
+    frames(2);
+    EXPECT_FALSE(state_.occlusion);
+    EXPECT_EQ(differingPixels(floor, services_->viewportPixels(EditorServices::Shown::Edited)), 0);
+}
+
 // A model opened is framed as model-viewer frames it, wherever the camera looked before; the
 // Camera list offers that framing and the file's own cameras (an orthographic one listed,
 // dimmed, not taken), and the field of view drags.

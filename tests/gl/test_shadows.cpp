@@ -47,11 +47,7 @@ Scene sphereOverGround(Ground ground, bool shadows) {
     return scene;
 }
 
-float luminanceAt(const HdrImage& image, const Camera& camera, glm::vec3 point) {
-    const glm::ivec2 at = test::pixelOf(camera, point, image.width, image.height);
-    const glm::vec3 value = test::pixel(image, at.x, at.y);
-    return 0.2126f * value.r + 0.7152f * value.g + 0.0722f * value.b;
-}
+using test::luminanceAt;
 
 TEST(Ground, LiesUnderTheModelsLowestPointAndReachesWellPastIt) {
     BoundingBox box;

@@ -336,6 +336,24 @@ TEST(SceneFile, ShadowsAndTheGroundRoundTripAndAreOnlyWrittenWhenSet) {
     EXPECT_NE(notBoolean.find("/lights/0/shadows"), std::string::npos) << notBoolean;
 }
 
+// Issue 37 item 2: display.ambientOcclusion is off and absent by default (an older scene saves
+// as it did), round-trips when on, and is refused when it is no boolean.
+TEST(SceneFile, AmbientOcclusionRoundTripsAndIsOnlyWrittenWhenOn) {
+    std::vector<std::string> warnings;
+    const Json plain = sceneToJson(defaultScene());
+    EXPECT_FALSE(plain["display"].contains("ambientOcclusion"));
+    EXPECT_FALSE(sceneFromJson(plain, "old.json", ".", warnings).display.ambientOcclusion);
+    Scene scene = defaultScene();
+    scene.display.ambientOcclusion = true;
+    const Json saved = sceneToJson(scene);
+    EXPECT_EQ(saved["display"]["ambientOcclusion"], true);
+    EXPECT_EQ(sceneFromJson(saved, "saved.json", ".", warnings), scene);
+    EXPECT_TRUE(warnings.empty());
+    const std::string refused =
+        errorOf(R"({"format": "patina-scene", "version": 2, "display": {"ambientOcclusion": "on"}})");
+    EXPECT_NE(refused.find("/display/ambientOcclusion"), std::string::npos) << refused;
+}
+
 // A version 1 file with a "range" key (unknown there) must not turn it into the window when
 // written as version 2, nor lose the round trip: found by fuzz_png (the seed corpus keeps it).
 TEST(SceneFile, ARangeKeyInVersion1IsIgnoredWithAWarning) {

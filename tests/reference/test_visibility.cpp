@@ -1,4 +1,4 @@
-// The ground truth with visibility (issue 37, item 5): Embree's ray casts (reference/ray_caster.h)
+// The ground truth with visibility (issue 37, item 5): Embree's ray casts (reference/visibility.h)
 // block each point and directional light by one shadow ray, sphere lights and the environment
 // sample by sample. Each checked where the answer is known exactly: a roof over a point takes
 // the sun, the lights above it and the half of the sky it covers; lights beside it or below the
@@ -12,7 +12,7 @@
 #include "reference/pixel_surfaces.h"
 #include "reference/probe_reference.h"
 #include "reference/radiance.h"
-#include "reference/ray_caster.h"
+#include "reference/visibility.h"
 #include "reference/reference_render.h"
 #include "scene/light_packing.h"
 #include "shading/cpu_shading.h"

@@ -63,6 +63,9 @@ TEST(RenderInputs, EverythingDrawnChangesThem) {
     // What was loaded for it: another mesh, another environment.
     EXPECT_FALSE(inputsOf(scene, std::make_shared<const Mesh>(makeUvSphere(8, 16))) == original);
     EXPECT_FALSE(inputsOf(scene, nullptr, std::make_shared<const Environment>()) == original);
+    // The ambient occlusion baked for it (display.ambientOcclusion on: prepareScene's).
+    EXPECT_FALSE(renderInputs({scene, builtinMesh(scene.mesh), nullptr, nullptr,
+                               std::make_shared<const AmbientOcclusion>()}) == original);
     // A disabled light draws nothing, whatever its values.
     Scene off = scene;
     off.lights[1].enabled = false;

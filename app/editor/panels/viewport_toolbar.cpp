@@ -169,6 +169,11 @@ void drawGroundControls(DisplaySettings& display) {
     // Named apart from the hemisphere light's Ground colour in the lights panel.
     recordItem("Ground plane", "A plane under the model at its lowest point: none, a shadow catcher over the background, "
                          "or a floor (saved with the scene)");
+    sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Ambient occlusion"));
+    ImGui::Checkbox("Ambient occlusion", &display.ambientOcclusion);
+    recordItem("Ambient occlusion", "The environment's and the hemisphere light's light hidden by the model itself and "
+                                    "the ground, baked once per model (a second for a large one), with specular "
+                                    "occlusion in cavities (saved with the scene)");
     if (display.ground != Ground::Floor) {
         return;
     }

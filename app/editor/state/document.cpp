@@ -179,7 +179,7 @@ void chooseBuiltinMesh(Document& document, MeshKind kind) {
 PreparedScene sceneToDraw(const Document& document, const Scene& shown) {
     const bool file = !shown.meshFile.empty();
     return {shown, file ? document.mesh() : builtinMesh(shown.mesh), document.environment,
-            file ? document.model : nullptr};
+            file ? document.model : nullptr, shown.display.ambientOcclusion ? document.occlusion : nullptr};
 }
 
 std::vector<std::string> partNodes(const Document& document, int index) {

@@ -27,6 +27,9 @@ struct Document {
     std::shared_ptr<const LoadedModel> fileModel;
     std::shared_ptr<const Model> model;
     std::shared_ptr<const Environment> environment;
+    // The shape's ambient occlusion while the display has it on (resolveAmbientOcclusion, baked
+    // once per shape and ground through Jobs::assets); null while off.
+    std::shared_ptr<const AmbientOcclusion> occlusion;
     std::filesystem::path materialPath;      // where Save writes the material; empty: never saved
     Material savedMaterial = scene.material; // what is on disk at materialPath
     // The scene as a document: where it was opened from or saved to (empty: none), and the

@@ -91,4 +91,25 @@ void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts) {
     }
 }
 
+void resolveAmbientOcclusion(Document& document, Jobs& jobs, Prompts& prompts) {
+    Scene& scene = document.scene;
+    if (!scene.display.ambientOcclusion) {
+        document.occlusion.reset();
+        return;
+    }
+    const bool file = !scene.meshFile.empty();
+    if (file && !document.fileModel) {
+        return;   // its model still loading
+    }
+    const AssetCache::Shape shape{file ? document.mesh() : builtinMesh(scene.mesh), file ? document.model : nullptr,
+                                  file ? document.fileModel : nullptr};
+    try {
+        document.occlusion = jobs.assets->ambientOcclusion(scene, shape);
+    } catch (const std::exception& error) {
+        prompts.error = std::string("Ambient occlusion is off: ") + error.what();
+        scene.display.ambientOcclusion = false;
+        document.occlusion.reset();
+    }
+}
+
 }  // namespace patina::editor

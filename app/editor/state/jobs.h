@@ -64,5 +64,10 @@ bool finishEnvironmentLoad(Document& document, Interaction& interaction, Jobs& j
 // light (open, undo, autosave restore): loaded through the assets cache when it does not match
 // (a built-in too: read back from the disk cache once). Run once a frame, before drawing.
 void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts);
+// The shape's ambient occlusion while the display has it on (Document::occlusion): the cache's
+// for the shape shown and its ground, baked on this thread the first time they are asked for
+// (about a second for 2CylinderEngine; a built-in mesh's in a few milliseconds), then looked up.
+// A bake that fails says why and turns the occlusion off.
+void resolveAmbientOcclusion(Document& document, Jobs& jobs, Prompts& prompts);
 
 }  // namespace patina::editor

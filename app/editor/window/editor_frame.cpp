@@ -103,6 +103,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
         finishModelLoad(state);
     }
     resolveEnvironmentShown(state, state, state);
+    resolveAmbientOcclusion(state, state, state);
     // Before anything draws the camera; an edit in the last frame (or a file just opened) pauses
     // it instead. A frame after a long wait turns it a tenth of a second at most.
     advanceTurntable(state.turntable, state, state, std::min(double(ImGui::GetIO().DeltaTime), 0.1));
@@ -138,6 +139,7 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     // The menu, a shortcut or a panel may have changed the document this frame (New, Open, an
     // undo): the viewport draws the environment its light names, never one not yet looked up.
     resolveEnvironmentShown(state, state, state);
+    resolveAmbientOcclusion(state, state, state);
     ImGui::SetNextWindowPos(ImVec2(at.viewport.x, at.viewport.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(at.viewport.width, at.viewport.height), ImGuiCond_Always);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(px(4), px(4)));

@@ -1,4 +1,4 @@
-#include "reference/ray_caster.h"
+#include "geometry/ray_caster.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,21 +93,6 @@ bool unoccluded(const RayCaster* occluders, glm::vec3 P, glm::vec3 N, glm::vec3 
     const glm::vec3 origin = rayOrigin(P, N, L);
     // The light's own end of the ray stops short of it by the same lift, for a light on a surface.
     return !occluders->occluded(origin, L, 0.0f, std::isinf(far) ? far : far - glm::length(origin - P));
-}
-
-bool lightReaches(const RayCaster* occluders, const shader::PackedLight& light, glm::vec3 P, glm::vec3 N) {
-    if (!occluders) {
-        return true;
-    }
-    if (light.type == shader::LIGHT_DIRECTIONAL) {
-        return unoccluded(occluders, P, N, light.directionToLight, std::numeric_limits<float>::infinity());
-    }
-    if (light.type != shader::LIGHT_POINT) {
-        return true;
-    }
-    const glm::vec3 toLight = light.position - P;
-    const float distance = glm::length(toLight);
-    return !(distance > 0.0f) || unoccluded(occluders, P, N, toLight / distance, distance);
 }
 
 }  // namespace patina

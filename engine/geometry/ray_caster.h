@@ -1,14 +1,13 @@
 #pragma once
 // What blocks a ray: the scene's triangles in world space, in Embree 3's BVH (Debian's
-// libembree). The ground truth's visibility (shadow rays to each light, the environment's
-// occlusion); queries are safe from many threads at once.
+// libembree). The product's ambient occlusion (scene/ambient_occlusion.h) and the ground
+// truth's visibility (reference/visibility.h: shadow rays to each light, the environment's
+// occlusion) both cast through it; queries are safe from many threads at once.
 #include <cstdint>
 #include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
-
-#include "shading/shading.h"
 
 namespace patina {
 
@@ -43,10 +42,5 @@ glm::vec3 rayOrigin(glm::vec3 P, glm::vec3 N, glm::vec3 direction);
 // Whether nothing of `occluders` lies between the surface point P (normal N) and the point
 // `far` along unit L from it; true without occluders.
 bool unoccluded(const RayCaster* occluders, glm::vec3 P, glm::vec3 N, glm::vec3 L, float far);
-
-// Whether a point or directional light reaches P: one shadow ray to the point light's position,
-// or along the directional light's direction to infinity; any other light is not shadowed here
-// (hemisphere lights have no direction; sphere and tube lights are sampled, area_lights.h).
-bool lightReaches(const RayCaster* occluders, const shader::PackedLight& light, glm::vec3 P, glm::vec3 N);
 
 }  // namespace patina
