@@ -58,6 +58,19 @@ TEST(SpecularOcclusion, IsTheAmbientOcclusionFaceOnAndFallsAtGrazingAnglesOfASmo
     EXPECT_EQ(shader::specularOcclusion(0.3f, 0.25f, 0.0025f), 0.0f);
 }
 
+// The mean luminance of the 3 x 3 pixels around where `point` lands.
+float meanLuminanceNear(const HdrImage& image, const Camera& camera, glm::vec3 point) {
+    const glm::ivec2 at = test::pixelOf(camera, point, image.width, image.height);
+    float sum = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const glm::vec3 value = test::pixel(image, at.x + dx, at.y + dy);
+            sum += 0.2126f * value.r + 0.7152f * value.g + 0.0722f * value.b;
+        }
+    }
+    return sum / 9.0f;
+}
+
 TEST(AmbientOcclusionRender, TheFloorUnderTheSphereIsDarkerWithItByWhatTheGroundTruthGives) {
     test::glContext();
     Renderer renderer;
@@ -80,9 +93,11 @@ TEST(AmbientOcclusionRender, TheFloorUnderTheSphereIsDarkerWithItByWhatTheGround
         const HdrImage with = renderer.render(prepared, test::renderSettings(kSize, kSize, path, 1)).hdr;
         const float under = luminanceAt(with, occluded.camera, kUnderSphere);
         EXPECT_LT(under, 0.7f * luminanceAt(without, open.camera, kUnderSphere)) << renderPathName(path);
+        // Over 3 x 3 pixels: one pixel of the truth at 256 samples is noisy by a few percent (a
+        // clang build's estimate at z = 1.4 came out 5.1% off where gcc's was 0.6%).
         for (const glm::vec3 point : {kUnderSphere, kBesideSphere, kFarAway}) {
-            const float expected = luminanceAt(truth, occluded.camera, point);
-            EXPECT_NEAR(luminanceAt(with, occluded.camera, point), expected, 0.05f * expected)
+            const float expected = meanLuminanceNear(truth, occluded.camera, point);
+            EXPECT_NEAR(meanLuminanceNear(with, occluded.camera, point), expected, 0.05f * expected)
                 << renderPathName(path) << " at z " << point.z;
         }
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,14 @@ Scene sphereOverGround(Ground ground, bool shadows) {
 }
 
 using test::luminanceAt;
+
+// `lit` drawn on `path` as it is and with its first light's shadows on.
+std::pair<HdrImage, HdrImage> withoutAndWithShadows(Renderer& renderer, const Scene& lit, RenderPath path) {
+    Scene shadowed = lit;
+    shadowed.lights[0].shadows = true;
+    const RenderSettings settings = test::renderSettings(kSize, kSize, path, 1);
+    return {renderer.render(test::prepared(lit), settings).hdr, renderer.render(test::prepared(shadowed), settings).hdr};
+}
 
 TEST(Ground, LiesUnderTheModelsLowestPointAndReachesWellPastIt) {
     BoundingBox box;
@@ -127,15 +136,11 @@ TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
         lit.lights[0].type = type;
         lit.lights[0].position = {0.0f, 5.0f, 0.2f};
         lit.lights[0].intensity = 40.0f;
-        Scene shadowed = lit;
-        shadowed.lights[0].shadows = true;
         for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
-            const RenderSettings settings = test::renderSettings(kSize, kSize, path, 1);
-            const HdrImage without = renderer.render(test::prepared(lit), settings).hdr;
-            const HdrImage with = renderer.render(test::prepared(shadowed), settings).hdr;
-            EXPECT_LT(luminanceAt(with, shadowed.camera, kUnderSphere), 0.3f * luminanceAt(without, lit.camera, kUnderSphere))
+            const auto [without, with] = withoutAndWithShadows(renderer, lit, path);
+            EXPECT_LT(luminanceAt(with, lit.camera, kUnderSphere), 0.3f * luminanceAt(without, lit.camera, kUnderSphere))
                 << lightTypeName(type) << " " << renderPathName(path);
-            EXPECT_NEAR(luminanceAt(with, shadowed.camera, kFarAway), luminanceAt(without, lit.camera, kFarAway),
+            EXPECT_NEAR(luminanceAt(with, lit.camera, kFarAway), luminanceAt(without, lit.camera, kFarAway),
                         1e-5f * luminanceAt(without, lit.camera, kFarAway));
         }
     }
@@ -164,12 +169,8 @@ TEST(ShadowRender, ASphereLightsWideTapsDoNotShadowTheCastersLitSide) {
     lit.lights[0].intensity = 40.0f;
     lit.lights.pop_back();   // the sun's share alone
     lit.display.ground = Ground::None;
-    Scene shadowed = lit;
-    shadowed.lights[0].shadows = true;
     for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
-        const RenderSettings settings = test::renderSettings(kSize, kSize, path, 1);
-        const HdrImage without = renderer.render(test::prepared(lit), settings).hdr;
-        const HdrImage with = renderer.render(test::prepared(shadowed), settings).hdr;
+        const auto [without, with] = withoutAndWithShadows(renderer, lit, path);
         float brightest = 0.0f;
         for (size_t i = 0; i < without.rgb.size(); i += 3) {
             brightest = std::max(brightest, without.rgb[i]);
