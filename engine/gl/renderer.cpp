@@ -289,6 +289,11 @@ private:
     void choosePrograms();
     void drawShadowMaps() const;
     void drawSceneBehind();
+    // shade.frag's uSceneBehindPlace: the strip's first row, log2 of the width, and whether this
+    // pass adds the scene behind (1) or only hides the light beyond it (2).
+    void setSceneBehindPlace(GLint location, bool adds) const {
+        glUniform3f(location, float(stripTop), std::log2(float(w)), adds ? 1.0f : 2.0f);
+    }
     void drawCatcher() const;
     const MeshBuffers& buffersOf(const SceneDraw& item) const;
     void environmentUniforms(const GlProgram& program) const;
@@ -362,7 +367,7 @@ private:
     glm::vec3 background{0.0f};
     float stamp = 1.0f;   // this strip's (RenderTargets::SampleStamp); 1 without MSAA
     int stripTop = 0;     // the image row the strip drawn now starts at
-    bool sceneBehind = false;   // a transmitting item sees the scene behind it (drawSceneBehind)
+    bool sceneBehind = false;   // a transmitting item sees the scene behind it (choosePrograms)
 };
 
 namespace {
@@ -541,8 +546,12 @@ void Renderer::Frame::choosePrograms() {
                       ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface, shadows)
                       : &s.shading.useSpecialised(model, key, output, surface);
     }
-    if (settings.path == RenderPath::Multi && settings.channel.channel < 0 &&
-        std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) { return hasTransmission(item.material); })) {
+    // A transmitting item sees the scene behind it (drawSceneBehind); a channel shows data.
+    sceneBehind = settings.channel.channel < 0 &&
+                  std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) {
+                      return hasTransmission(item.material);
+                  });
+    if (sceneBehind && settings.path == RenderPath::Multi) {
         for (const SceneDraw& item : draws) {
             const ProgramKey itemKey = programKeyOf(item);
             if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
@@ -584,7 +593,7 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
     glUniform1f(program.uniform("uSampleStamp"), stamp);
     if (sceneBehind) {   // the uniforms of transmitting programs; 0 (not drawn) elsewhere
         glUniform1i(program.uniform("uSceneBehind"), ShadingPrograms::kSceneBehindUnit);
-        glUniform3f(program.uniform("uSceneBehindPlace"), float(stripTop), std::log2(float(w)), 1.0f);
+        setSceneBehindPlace(program.uniform("uSceneBehindPlace"), true);
     }
     glUniformMatrix4fv(program.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(plan.transform));
     glUniform3fv(program.uniform("uCameraPosition"), 1, glm::value_ptr(scene.camera.position));
@@ -664,10 +673,6 @@ void Renderer::Frame::draw() {
 // The multi path draws it with the single path's programs (behindShading): its light passes
 // sum into one sample each. A channel shows data, not what is behind.
 void Renderer::Frame::drawSceneBehind() {
-    sceneBehind = settings.channel.channel < 0 &&
-                  std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) {
-                      return hasTransmission(item.material);
-                  });
     if (!sceneBehind) {
         return;
     }
@@ -943,7 +948,7 @@ void Renderer::Frame::lightPasses(const GlProgram& shading, const DrawPlan& item
     const GLint behindPlace = sceneBehind ? shading.uniform("uSceneBehindPlace") : -1;
     auto firstPass = [&](bool first) {
         glUniform1i(emissionPass, first ? 1 : 0);
-        glUniform3f(behindPlace, float(stripTop), std::log2(float(w)), first ? 1.0f : 2.0f);
+        setSceneBehindPlace(behindPlace, first);
     };
     for (size_t i = 0; i < packed.size(); ++i) {
         firstPass(i == 0);
