@@ -287,6 +287,9 @@ private:
     void addGround();
     void assignShadowMaps();
     void choosePrograms();
+    ShadingPrograms::SinglePass singlePassOf() const;
+    void chooseShadingPrograms(const ShadingPrograms::SinglePass& singlePass, ShadingPrograms::Output output);
+    void chooseSceneBehindPrograms(const ShadingPrograms::SinglePass& singlePass);
     void drawShadowMaps() const;
     void drawSceneBehind();
     // shade.frag's uSceneBehindPlace: the strip's first row, log2 of the width, and whether this
@@ -507,11 +510,44 @@ void Renderer::Frame::choosePrograms() {
     EnvironmentShading environmentShading = settings.environment;
     environmentShading.samples = std::clamp(environmentShading.samples, 1, 256);
     s.shading.setEnvironmentShading(environmentShading);
+    const ShadingPrograms::SinglePass singlePass = singlePassOf();
+    s.shading.beginFrame();
+    chooseShadingPrograms(singlePass, output);
+    chooseSceneBehindPrograms(singlePass);
+    if (catcherPlan) {
+        ShadingPrograms::SinglePass catcher = singlePass;
+        catcher.catcher = true;
+        catcherProgram = &s.shading.useSingle(draws.back().material.model, catcher, ShadingPrograms::Output::Linear,
+                                              ShadingPrograms::surfaceOf(maps, false, false, false,
+                                                                         draws.back().occlusion != nullptr));
+    }
+    if (settings.path == RenderPath::Multi || singlePass.shadows) {
+        s.prepass(maps).get();
+    }
+    backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
+    if (environment) {
+        s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit,
+                          ShadingPrograms::kEnvironmentIrradianceUnit);
+        if (environmentShading.method == EnvironmentMethod::Stochastic) {
+            s.environment.bindSource(environmentMap, ShadingPrograms::kEnvironmentSourceUnit);
+        }
+    }
+}
+
+// What the single path's program is compiled for: the packed lights, the environment, the
+// inspected channel and whether any light casts shadows.
+ShadingPrograms::SinglePass Renderer::Frame::singlePassOf() const {
     ShadingPrograms::SinglePass singlePass = ShadingPrograms::singlePassFor(packed);
     singlePass.environment = environment;
     singlePass.channel = settings.channel.channel;
-    const bool shadows = !shadowViews.empty();
-    singlePass.shadows = shadows;
+    singlePass.shadows = !shadowViews.empty();
+    return singlePass;
+}
+
+// A program for each BRDF model the items are shaded with and, specialised with maps, each set
+// of maps they have: a map an item lacks costs it nothing.
+void Renderer::Frame::chooseShadingPrograms(const ShadingPrograms::SinglePass& singlePass,
+                                            ShadingPrograms::Output output) {
     // The specialised shader leaves out diffuse only where no item has any.
     // A metallic-roughness map can lower metallic below its factor's 1 (a base colour map can
     // only darken a black factor's nothing).
@@ -525,9 +561,6 @@ void Renderer::Frame::choosePrograms() {
         key.environment = environment;
         return key;
     };
-    s.shading.beginFrame();
-    // A program for each BRDF model the items are shaded with and, specialised with maps, each
-    // set of maps they have: a map an item lacks costs it nothing.
     const ShaderSpecialisation specialised = settings.path == RenderPath::Specialised ? specialisation()
                                                                                       : ShaderSpecialisation{};
     for (const SceneDraw& item : draws) {
@@ -543,41 +576,29 @@ void Renderer::Frame::choosePrograms() {
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
                   : settings.path == RenderPath::Multi
-                      ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface, shadows)
+                      ? &s.shading.use(model, ShadingPrograms::Use::MultiPass, output, environment, surface,
+                                       singlePass.shadows)
                       : &s.shading.useSpecialised(model, key, output, surface);
     }
-    // A transmitting item sees the scene behind it (drawSceneBehind); a channel shows data.
+}
+
+// A transmitting item sees the scene behind it (drawSceneBehind); a channel shows data. The
+// multi path draws that scene with the single path's programs.
+void Renderer::Frame::chooseSceneBehindPrograms(const ShadingPrograms::SinglePass& singlePass) {
     sceneBehind = settings.channel.channel < 0 &&
                   std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) {
                       return hasTransmission(item.material);
                   });
-    if (sceneBehind && settings.path == RenderPath::Multi) {
-        for (const SceneDraw& item : draws) {
-            const ProgramKey itemKey = programKeyOf(item);
-            if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
-                const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-                    maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion);
-                behindShading[itemKey] =
-                    &s.shading.useSingle(itemKey.model, singlePass, ShadingPrograms::Output::Linear, surface);
-            }
-        }
+    if (!sceneBehind || settings.path != RenderPath::Multi) {
+        return;
     }
-    if (catcherPlan) {
-        ShadingPrograms::SinglePass catcher = singlePass;
-        catcher.catcher = true;
-        catcherProgram = &s.shading.useSingle(draws.back().material.model, catcher, ShadingPrograms::Output::Linear,
-                                              ShadingPrograms::surfaceOf(maps, false, false, false,
-                                                                         draws.back().occlusion != nullptr));
-    }
-    if (settings.path == RenderPath::Multi || shadows) {
-        s.prepass(maps).get();
-    }
-    backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
-    if (environment) {
-        s.environment.bind(environmentMap, ShadingPrograms::kEnvironmentMapUnit,
-                          ShadingPrograms::kEnvironmentIrradianceUnit);
-        if (environmentShading.method == EnvironmentMethod::Stochastic) {
-            s.environment.bindSource(environmentMap, ShadingPrograms::kEnvironmentSourceUnit);
+    for (const SceneDraw& item : draws) {
+        const ProgramKey itemKey = programKeyOf(item);
+        if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
+            const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
+                maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion);
+            behindShading[itemKey] =
+                &s.shading.useSingle(itemKey.model, singlePass, ShadingPrograms::Output::Linear, surface);
         }
     }
 }
