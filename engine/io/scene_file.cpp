@@ -99,6 +99,12 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     }
     light.intensity = reader.number("intensity", light.intensity, kNonNegative);
     light.shadows = reader.boolean("shadows", false);
+    // A hemisphere or an environment has no position or direction to cast from: said, not drawn.
+    if (light.shadows && (light.type == LightType::Hemisphere || light.type == LightType::Environment)) {
+        warnings.push_back(source + ": " + reader.pointerOf("shadows") + ": " + std::string(lightTypeName(light.type)) +
+                           " lights cast no shadows (only point, sphere, tube and directional lights do); ignored");
+        light.shadows = false;
+    }
     switch (light.type) {
     case LightType::Point:
         light.position = reader.vec3("position", light.position);

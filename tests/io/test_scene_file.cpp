@@ -336,6 +336,22 @@ TEST(SceneFile, ShadowsAndTheGroundRoundTripAndAreOnlyWrittenWhenSet) {
     EXPECT_NE(notBoolean.find("/lights/0/shadows"), std::string::npos) << notBoolean;
 }
 
+// A hemisphere or environment light has nothing to cast a shadow from: its "shadows" is named
+// in a warning (it used to be accepted without a word, and drew nothing).
+TEST(SceneFile, ShadowsOnALightWithoutAPlaceOrDirectionAreNamedAndIgnored) {
+    for (const char* type : {"hemisphere", "environment"}) {
+        std::vector<std::string> warnings;
+        const Json json = Json::parse(std::string(R"({"format": "patina-scene", "version": 2, "lights": [{"type": ")") +
+                                      type + R"(", "shadows": true}]})");
+        const Scene scene = sceneFromJson(json, "s.json", ".", warnings);
+        ASSERT_EQ(scene.lights.size(), 1u);
+        EXPECT_FALSE(scene.lights[0].shadows) << type;
+        ASSERT_EQ(warnings.size(), 1u) << type;
+        EXPECT_NE(warnings[0].find("/lights/0/shadows"), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("cast no shadows"), std::string::npos) << warnings[0];
+    }
+}
+
 // Issue 37 item 2: display.ambientOcclusion is off and absent by default (an older scene saves
 // as it did), round-trips when on, and is refused when it is no boolean.
 TEST(SceneFile, AmbientOcclusionRoundTripsAndIsOnlyWrittenWhenOn) {
