@@ -51,7 +51,8 @@ using Measurement = std::function<void(const std::filesystem::path& folder, bool
 Command addMeasurementCommand(CLI::App& app, const char* name, const char* description, Measurement measure);
 // STEM.png, and with `vector` STEM.svg and STEM.pdf: the same drawing on each surface.
 void writeChart(const std::filesystem::path& stem, const Chart& chart, bool vector);
-// `folder` as given (empty: the current one); InputError when it is no folder.
+// `folder` as given (empty: the current one), made with its parents where missing; InputError when
+// it is a file or cannot be made.
 std::filesystem::path outputFolder(const std::string& folder);
 // Each measurement's charts into `folder` under the names its command gives them, from a run
 // or from its CSVs (`patina chart`): one definition for both.

@@ -32,14 +32,14 @@ void writeChart(const std::filesystem::path& stem, const Chart& chart, bool vect
     writeOutput(stem.string() + ".png", encodePng(chartToImage(chart)));
 }
 
+// The folder named, made where missing (as turntable's --out is): a measurement that runs for
+// minutes should not end on a folder that was not there.
 std::filesystem::path outputFolder(const std::string& folder) {
     const std::filesystem::path path = folder.empty() ? "." : folder;
     std::error_code error;
-    if (!std::filesystem::exists(path, error)) {
-        throw InputError(path.string() + ": no such folder (make it first: mkdir -p " + path.string() + ")");
-    }
-    if (!std::filesystem::is_directory(path, error)) {
-        throw InputError(path.string() + ": not a folder");
+    std::filesystem::create_directories(path, error);
+    if (!std::filesystem::is_directory(path)) {
+        throw InputError(path.string() + ": not a folder" + (error ? " (" + error.message() + ")" : ""));
     }
     return path;
 }

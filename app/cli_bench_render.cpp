@@ -103,10 +103,7 @@ Command addBenchRenderCommand(CLI::App& app) {
     command->add_option("--msaa", options->samples, "Samples per pixel of the frames timed (1 = none)")
         ->check(CLI::Range(1, 16));
     return [options] {
-        const std::filesystem::path folder = options->outDir;
-        if (!std::filesystem::is_directory(folder)) {
-            throw InputError(folder.string() + ": not a folder");
-        }
+        const std::filesystem::path folder = outputFolder(options->outDir);
         // Child processes first, while this one is small: a child's peak RSS includes what
         // its parent had resident when it forked (child_process.h). Missing presets fail here,
         // before the long part.

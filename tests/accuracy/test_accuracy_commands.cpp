@@ -78,16 +78,19 @@ TEST_F(AccuracyCommands, AreaAccuracyMeasuresEveryMethodAgainstTheGroundTruth) {
         EXPECT_TRUE(std::filesystem::exists(path(file))) << file;
     }
     EXPECT_GT(decodePng(readFileBytes(path("area_spheres.png"))).width, 0);
-    const test::CliRun missing = test::runPatina("area-accuracy --quick --out-dir " + path("missing").string(), dir_);
-    EXPECT_EQ(missing.exitCode, 3);
-    EXPECT_NE(missing.stderrText.find("no such folder"), std::string::npos) << missing.stderrText;
+    // A file where the folder should be fails at once, before the measurement.
+    std::ofstream(path("a-file")) << "x";
+    const test::CliRun file = test::runPatina("area-accuracy --quick --out-dir " + path("a-file").string(), dir_);
+    EXPECT_EQ(file.exitCode, 3);
+    EXPECT_NE(file.stderrText.find("not a folder"), std::string::npos) << file.stderrText;
 }
 
 // shadow-accuracy (issue 37 item 5): a row per light, map size and bias, the CSV and the charts.
 TEST_F(AccuracyCommands, ShadowAccuracyWritesItsTableAndChart) {
-    const test::CliRun run = test::runPatina("shadow-accuracy --quick --out-dir " + dir_.string(), dir_);
+    // A folder that is not there yet is made (a run of minutes used to end on it).
+    const test::CliRun run = test::runPatina("shadow-accuracy --quick --out-dir " + path("new/folder").string(), dir_);
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
-    const auto rows = readCsv(path("shadow_accuracy.csv"));
+    const auto rows = readCsv(path("new/folder/shadow_accuracy.csv"));
     ASSERT_EQ(rows.size(), 1u + 3u * 3u * 3u);   // --quick: the sun and two spheres, 3 sizes, 3 biases
     ASSERT_EQ(rows[0].size(), 14u);
     EXPECT_EQ(rows[0][5], "floor_rmse");
@@ -96,7 +99,7 @@ TEST_F(AccuracyCommands, ShadowAccuracyWritesItsTableAndChart) {
         EXPECT_TRUE(std::isfinite(std::stod(rows[i][5])) && std::stod(rows[i][5]) > 0.0) << "row " << i;
     }
     for (const char* file : {"shadow_accuracy.svg", "shadow_accuracy.pdf", "shadow_accuracy.png"}) {
-        EXPECT_TRUE(std::filesystem::exists(path(file))) << file;
+        EXPECT_TRUE(std::filesystem::exists(path("new/folder") / file)) << file;
     }
 }
 
