@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <chrono>
 #include <thread>
 
 #include <epoxy/gl.h>
@@ -433,6 +434,27 @@ TEST_F(EditorUi, UnsavedChangesAreNotDroppedWithoutAskingAndNothingEditsBehindTh
     click(centreOf("Discard changes"));
     EXPECT_EQ(state_.scene.material.name, "other");
     EXPECT_FALSE(promptOpen(state_, state_));
+}
+
+// Discard drops the stage's edits too: a material file opened keeps the stage, and it used to
+// keep the display and lights just discarded (a new user's review).
+TEST_F(EditorUi, DiscardTakesTheStageBackToItsSavedStateBeforeTheNextFileKeepsIt) {
+    Material other;
+    other.name = "other";
+    std::ofstream(dir_ / "other.json") << materialToJson(other).dump();
+    const Scene saved = state_.savedScene;
+    state_.scene.material.metallic = 0.7f;
+    state_.scene.display.exposure = saved.display.exposure + 2.0f;
+    state_.scene.display.ground = Ground::Floor;
+    state_.scene.lights[0].intensity *= 3.0f;
+    frames(2);
+    requestOpen(state_, dir_ / "other.json");
+    frames(2);
+    click(centreOf("Discard changes"));
+    EXPECT_EQ(state_.scene.material.name, "other");
+    EXPECT_EQ(state_.scene.display, saved.display);
+    EXPECT_EQ(state_.scene.lights, saved.lights);
+    EXPECT_FALSE(state_.dirty());
 }
 
 TEST_F(EditorUi, ChoosingAModelChangesThePictureAndTheErrorNumbers) {
@@ -2064,8 +2086,14 @@ TEST_F(EditorUi, TheAmbientOcclusionCheckboxDarkensTheFloorUnderTheSphereAndUndo
     const LdrImage floor = services_->viewportPixels(EditorServices::Shown::Edited);
     click(centreOf("Ambient occlusion"));
     ASSERT_TRUE(state_.scene.display.ambientOcclusion);
-    frames(2);
+    // Baked on a worker: the frames go on meanwhile, and the one after it ends shows it.
+    for (int i = 0; i < 500 && !state_.occlusion; ++i) {
+        frames(1);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     ASSERT_TRUE(state_.occlusion);
+    EXPECT_FALSE(state_.occlusionBake);
+    frames(1);
     EXPECT_TRUE(state_.occlusion->withGround);
     const LdrImage occluded = services_->viewportPixels(EditorServices::Shown::Edited);
     EXPECT_GT(differingPixels(floor, occluded), 500);

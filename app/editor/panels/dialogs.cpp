@@ -101,6 +101,7 @@ void drawUnsavedPrompt(EditorState& state) {
     recordItem("Save changes");
     ImGui::SameLine();
     if (ImGui::Button("Discard changes")) {
+        discardStageAndMaterial(state);
         proceed(state);
         ImGui::CloseCurrentPopup();
     }

@@ -34,6 +34,15 @@ std::string windowTitle(const Document& document) {
     return (document.dirty() ? "*" : "") + name + " - Patina";
 }
 
+void discardStageAndMaterial(Document& document) {
+    Scene& scene = document.scene;
+    scene.material = document.savedMaterial;
+    scene.lights = document.savedScene.lights;
+    scene.camera = document.savedScene.camera;
+    scene.bookmarks = document.savedScene.bookmarks;
+    scene.display = document.savedScene.display;
+}
+
 std::string unsavedParts(const Document& document) {
     const Scene& now = document.scene;
     const Scene& saved = document.savedScene;

@@ -66,6 +66,12 @@ std::string windowTitle(const Document& document);
 // "the material", "the lights and the camera", ...: what is unsaved, for the prompt.
 std::string unsavedParts(const Document& document);
 
+// The prompt's Discard: the material and the stage (lights, camera and its bookmarks, display)
+// back as last saved, so that what the next document keeps of this one (a material or model
+// opened keeps the stage) is not the edits just discarded. The mesh and the model's parts stay:
+// the file opened next replaces or keeps them with what is loaded for them.
+void discardStageAndMaterial(Document& document);
+
 // --- Undoable edits ---------------------------------------------------------------------
 // Widgets write straight into the document's scene. Whatever changed since the last commit
 // becomes one undo step when commitEdits runs, which the editor does once no widget is active:
