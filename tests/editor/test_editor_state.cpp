@@ -445,6 +445,35 @@ TEST_F(EditorStateTest, UndoingAnEnvironmentBringsBackTheImageItNamed) {
     EXPECT_EQ(state.environmentFailed, second);
 }
 
+// Issue 37 item 2: the occlusion is baked on a worker (2CylinderEngine's took the window a
+// second): the frame that asks for it draws without it, a later one has it, and a screenshot
+// waits for it. Switched off while it bakes, the bake is dropped without waiting.
+TEST_F(EditorStateTest, AmbientOcclusionIsBakedOnAWorkerAndShownOnceDone) {
+    state.scene.display.ambientOcclusion = true;
+    state.scene.display.ground = Ground::Floor;
+    resolveAmbientOcclusion(state, state, state);
+    EXPECT_FALSE(state.occlusion) << "the frame asking does not wait for the rays";
+    ASSERT_TRUE(state.occlusionBake);
+    resolveAmbientOcclusion(state, state, state, true);
+    ASSERT_TRUE(state.occlusion) << state.error;
+    EXPECT_TRUE(state.occlusion->withGround);
+    EXPECT_FALSE(state.occlusionBake);
+    // Held by the document, it is looked up again, not baked.
+    const auto held = state.occlusion;
+    resolveAmbientOcclusion(state, state, state);
+    EXPECT_EQ(state.occlusion, held);
+    EXPECT_FALSE(state.occlusionBake);
+    // Another ground is another bake; off while it runs, it is dropped and nothing is shown.
+    state.scene.display.ground = Ground::None;
+    resolveAmbientOcclusion(state, state, state);
+    EXPECT_FALSE(state.occlusion);
+    state.scene.display.ambientOcclusion = false;
+    resolveAmbientOcclusion(state, state, state);
+    EXPECT_FALSE(state.occlusionBake);
+    EXPECT_FALSE(state.occlusion);
+    EXPECT_TRUE(state.error.empty()) << state.error;
+}
+
 TEST_F(EditorStateTest, OpeningAnEnvironmentImageWhileDirtyDoesNotAsk) {
     state.scene.material.roughness = 0.12f;
     requestOpen(state, writeHdr(dir_ / "sky.hdr", 64));
@@ -1683,5 +1712,34 @@ TEST_F(EditorStateTest, BookmarksAreSavedGoneToDeletedUndoneAndSavedWithTheScene
     EXPECT_EQ(reopened.scene.bookmarks, state.scene.bookmarks);
 }
 
+}  // namespace
+}  // namespace patina::editor
+
+namespace patina::editor {
+namespace {
+// A material file opened on a model goes onto the part the panel edits, undoably, as a preset
+// does: it used to become a document of the hidden sphere's material and drop the model (an
+// empty viewport, "model" null under the scene's mesh file).
+TEST_F(EditorStateTest, AMaterialFileOpenedOnAModelGoesOntoThePartAndKeepsTheModel) {
+    const fs::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    ASSERT_TRUE(openFile(state, box)) << state.error;
+    const auto model = state.model;
+    ASSERT_TRUE(model);
+    const fs::path mine = dir_ / "mine";
+    fs::create_directories(mine);
+    Material copper;
+    copper.name = "my copper";
+    copper.baseColor = {0.95f, 0.64f, 0.54f};
+    copper.metallic = 1.0f;
+    std::ofstream(mine / "copper.json") << materialToJson(copper).dump();
+    ASSERT_TRUE(openFile(state, mine / "copper.json")) << state.error;
+    EXPECT_EQ(state.model, model);
+    EXPECT_EQ(state.fileModel->path, fs::path(state.scene.meshFile));
+    EXPECT_EQ(editedMaterial(state, state).metallic, 1.0f);
+    EXPECT_EQ(editedMaterial(state, state).baseColor, copper.baseColor);
+    EXPECT_NE(state.status.find("my copper applied"), std::string::npos) << state.status;
+    undo(state, state, state);
+    EXPECT_NE(editedMaterial(state, state).metallic, 1.0f);
+}
 }  // namespace
 }  // namespace patina::editor

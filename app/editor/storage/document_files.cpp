@@ -224,6 +224,10 @@ bool startsADocument(const Preferences& preferences, const std::filesystem::path
 }
 
 void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
+    // A material onto a model goes onto the part the panel edits, as a preset does: the scene's
+    // own material is the built-in meshes', and a document of it would show nothing of it (it
+    // also dropped the model: an empty viewport).
+    const bool onPart = !file.scene && (isPreset(state, path) || modelMaterialCount(state) > 0);
     if (file.scene) {
         // A scene file is the document; a screenshot's scene is not a file to save into.
         startDocument(state, state, state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {},
@@ -238,7 +242,7 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
             state.compareView = file.comparison->view;
             state.splitPosition = file.comparison->split;
         }
-    } else if (isPreset(state, path)) {
+    } else if (onPart) {
         // A preset is a template: an undoable edit of the material; Save never writes into it
         // (Save as preset does, when asked to).
         // On a model, onto the material the panel edits: its factors, the part keeping its BRDF
@@ -252,13 +256,14 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
             state.partPresets[state.selectedModelMaterial] = {file.material->name, editedMaterial(state, state)};
         }
     } else {
-        Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh
+        Scene scene = state.scene;   // the stage stays: lights, camera, display and mesh, as loaded
         scene.material = *file.material;
-        startDocument(state, state, state, scene, {}, path);
+        startDocument(state, state, state, scene, {}, path, {state.mesh(), state.model, state.fileModel},
+                      state.environment);
     }
     state.error.clear();
-    const bool preset = !file.scene && isPreset(state, path);
-    state.status = (preset ? "Preset " + file.material->name + " applied" +
+    state.status = (onPart ? std::string(isPreset(state, path) ? "Preset " : "Material ") + file.material->name +
+                                 " applied" +
                                  (modelMaterialCount(state) > 0 ? " to " + editedMaterial(state, state).name : "") +
                                  " (Ctrl+Z undoes it)"
                            : "Opened " + path.filename().string()) +
