@@ -71,19 +71,25 @@ AssetCache::Shape AssetCache::shape(const Scene& scene) {
     return {{file, &file->mesh}, retextured(file, scene), file};
 }
 
-std::shared_ptr<const AmbientOcclusion> AssetCache::ambientOcclusion(const Scene& scene, const Shape& shape) {
+std::pair<AssetCache::Key, bool> AssetCache::occlusionKey(const Scene& scene, const Shape& shape) {
+    const Key shapeKey = shape.fileModel ? Key{shape.fileModel->path, shape.fileModel->hash}
+                                         : Key{"builtin:" + std::string(meshKindName(scene.mesh)), 0};
+    return {shapeKey, scene.display.ground != Ground::None};
+}
+
+std::shared_ptr<const AmbientOcclusion> AssetCache::heldAmbientOcclusion(const Scene& scene, const Shape& shape) {
     if (!shape.mesh) {
         return nullptr;
     }
-    const Key shapeKey = shape.fileModel ? Key{shape.fileModel->path, shape.fileModel->hash}
-                                         : Key{"builtin:" + std::string(meshKindName(scene.mesh)), 0};
-    const std::pair<Key, bool> key{shapeKey, scene.display.ground != Ground::None};
-    {
-        std::lock_guard lock(mutex_);
-        if (std::shared_ptr<const AmbientOcclusion> occlusion = heldEntry(occlusions_, key)) {
-            return occlusion;
-        }
+    std::lock_guard lock(mutex_);
+    return heldEntry(occlusions_, occlusionKey(scene, shape));
+}
+
+std::shared_ptr<const AmbientOcclusion> AssetCache::ambientOcclusion(const Scene& scene, const Shape& shape) {
+    if (std::shared_ptr<const AmbientOcclusion> held = heldAmbientOcclusion(scene, shape); held || !shape.mesh) {
+        return held;
     }
+    const std::pair<Key, bool> key = occlusionKey(scene, shape);
     auto occlusion = std::make_shared<const AmbientOcclusion>(
         bakeAmbientOcclusion(*shape.mesh, shape.fileModel ? &shape.fileModel->model : nullptr, key.second));
     std::lock_guard lock(mutex_);

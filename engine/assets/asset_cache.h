@@ -67,6 +67,9 @@ public:
     // shares its file's occlusion) or the built-in kind, and whether a ground lies under it.
     // Null for a shape without its mesh.
     std::shared_ptr<const AmbientOcclusion> ambientOcclusion(const Scene& scene, const Shape& shape);
+    // That occlusion where it is baked and held already, without baking it: null otherwise (the
+    // editor bakes on a worker and draws without it meanwhile).
+    std::shared_ptr<const AmbientOcclusion> heldAmbientOcclusion(const Scene& scene, const Shape& shape);
     // An environment light's source ("builtin:NAME", an .hdr or .exr path) made ready, through
     // the disk cache of environment/environment_source.h; one made afresh is prefiltered by
     // `prefilter` (the GPU's pass only where the caller's thread has a GL context). A note about
@@ -81,6 +84,8 @@ private:
     using Key = std::pair<std::string, uint64_t>;   // the path or source, the contents' hash
     // An image file's contents' key and the image, decoded once while someone holds it.
     std::pair<Key, std::shared_ptr<const ModelImage>> keyedImage(const std::filesystem::path& path);
+    // What ambientOcclusion knows a bake by: the shape's key and whether a ground lies under it.
+    static std::pair<Key, bool> occlusionKey(const Scene& scene, const Shape& shape);
     std::mutex mutex_;
     std::map<Key, std::weak_ptr<const LoadedModel>> models_;
     std::map<Key, std::weak_ptr<const Environment>> environments_;

@@ -54,6 +54,7 @@ void screenshot(const Preferences& preferences, Jobs& jobs, Prompts& prompts, co
 void takeRequestedScreenshot(EditorState& state, EditorServices& services) {
     if (const auto size = state.screenshotRequested) {
         state.screenshotRequested.reset();   // once, even when it fails
+        resolveAmbientOcclusion(state, state, state, true);   // a screenshot shows what the scene says
         services.screenshot(state, state, state, state, size->first, size->second);
     }
 }

@@ -43,6 +43,19 @@ void drawModelLoad(Jobs& jobs, Prompts& prompts) {
     recordItem("Model cancel", "Stop waiting for the model being read and keep the mesh shown");
 }
 
+// The ambient occlusion being baked, last on the toolbar as a model's load is; drawn without it
+// until then.
+void drawOcclusionBake(const Jobs& jobs) {
+    if (!jobs.occlusionBake) {
+        return;
+    }
+    char text[96];
+    std::snprintf(text, sizeof text, "Baking ambient occlusion (%.0f s)", jobs.occlusionBake->seconds());
+    sameLineIfFits(ImGui::CalcTextSize(text).x);
+    ImGui::TextDisabled("%s", text);
+    recordItem("Occlusion baking", "Rays from every vertex; the viewport shows the occlusion when they are done");
+}
+
 // What each tone map is, for its entry's tooltip (docs/FORMATS.md, display.tonemap).
 const char* tonemapSummary(Tonemap tonemap) {
     switch (tonemap) {
@@ -265,6 +278,7 @@ void drawViewportToolbar(Document& document, Interaction& interaction, Jobs& job
     recordItem("Clear A", "Forget A and show B alone");
     ImGui::EndDisabled();
     drawModelLoad(jobs, prompts);
+    drawOcclusionBake(jobs);
 }
 
 }  // namespace patina::editor

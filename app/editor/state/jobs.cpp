@@ -91,20 +91,40 @@ void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts) {
     }
 }
 
-void resolveAmbientOcclusion(Document& document, Jobs& jobs, Prompts& prompts) {
-    Scene& scene = document.scene;
-    if (!scene.display.ambientOcclusion) {
-        document.occlusion.reset();
-        return;
+namespace {
+// A bake no longer wanted ends on its own; dropping it never waits for it.
+void dropOcclusionBake(Jobs& jobs) {
+    std::erase_if(jobs.droppedOcclusionBakes, [](const auto& bake) { return bake->ready(); });
+    if (jobs.occlusionBake) {
+        jobs.droppedOcclusionBakes.push_back(std::move(jobs.occlusionBake));
     }
+}
+}  // namespace
+
+void resolveAmbientOcclusion(Document& document, Jobs& jobs, Prompts& prompts, bool wait) {
+    Scene& scene = document.scene;
     const bool file = !scene.meshFile.empty();
-    if (file && !document.fileModel) {
-        return;   // its model still loading
+    if (!scene.display.ambientOcclusion || (file && !document.fileModel)) {   // off, or its model still loading
+        document.occlusion.reset();
+        dropOcclusionBake(jobs);
+        return;
     }
     const AssetCache::Shape shape{file ? document.mesh() : builtinMesh(scene.mesh), file ? document.model : nullptr,
                                   file ? document.fileModel : nullptr};
+    if ((document.occlusion = jobs.assets->heldAmbientOcclusion(scene, shape))) {
+        dropOcclusionBake(jobs);
+        return;
+    }
+    const bool ground = scene.display.ground != Ground::None;
+    if (!jobs.occlusionBake || !jobs.occlusionBake->bakes(shape.mesh.get(), ground)) {
+        dropOcclusionBake(jobs);
+        jobs.occlusionBake = std::make_shared<OcclusionBake>(jobs.assets, scene, shape);
+    }
+    if (!wait && !jobs.occlusionBake->ready()) {
+        return;
+    }
     try {
-        document.occlusion = jobs.assets->ambientOcclusion(scene, shape);
+        document.occlusion = std::exchange(jobs.occlusionBake, nullptr)->take();
     } catch (const std::exception& error) {
         prompts.error = std::string("Ambient occlusion is off: ") + error.what();
         scene.display.ambientOcclusion = false;

@@ -8,6 +8,7 @@
 #include "storage/autosave.h"
 #include "storage/environment_load.h"
 #include "storage/model_load.h"
+#include "storage/occlusion_bake.h"
 #include "storage/open_folder.h"
 
 namespace patina::editor {
@@ -41,6 +42,10 @@ struct Jobs {
     // unsaved, it is not replaced without asking again.
     Scene modelReplaces;
     std::vector<std::shared_ptr<ModelLoad>> droppedModelLoads;
+    // The shown shape's ambient occlusion being baked on a worker (resolveAmbientOcclusion), and
+    // the bakes no longer wanted, kept until their workers end.
+    std::shared_ptr<OcclusionBake> occlusionBake;
+    std::vector<std::shared_ptr<OcclusionBake>> droppedOcclusionBakes;
     // F12's size, taken at the start of the next frame: the frame asking shows "Rendering..."
     // first, as a large screenshot keeps the window waiting for seconds.
     std::optional<std::pair<int, int>> screenshotRequested;
@@ -65,9 +70,10 @@ bool finishEnvironmentLoad(Document& document, Interaction& interaction, Jobs& j
 // (a built-in too: read back from the disk cache once). Run once a frame, before drawing.
 void resolveEnvironmentShown(Document& document, Jobs& jobs, Prompts& prompts);
 // The shape's ambient occlusion while the display has it on (Document::occlusion): the cache's
-// for the shape shown and its ground, baked on this thread the first time they are asked for
-// (about a second for 2CylinderEngine; a built-in mesh's in a few milliseconds), then looked up.
-// A bake that fails says why and turns the occlusion off.
-void resolveAmbientOcclusion(Document& document, Jobs& jobs, Prompts& prompts);
+// for the shape shown and its ground, looked up. One not baked yet is baked on a worker
+// (jobs.occlusionBake: about a second for 2CylinderEngine, a built-in mesh's in milliseconds),
+// and drawn from the frame after it ends; with `wait` (a screenshot), waited for. A bake that
+// fails says why and turns the occlusion off. Run once a frame, before drawing.
+void resolveAmbientOcclusion(Document& document, Jobs& jobs, Prompts& prompts, bool wait = false);
 
 }  // namespace patina::editor
