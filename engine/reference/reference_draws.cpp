@@ -15,7 +15,7 @@ std::optional<Mesh> groundOf(const PreparedScene& prepared) {
 
 std::vector<SceneDraw> referenceDraws(const PreparedScene& prepared, const std::optional<Mesh>& ground) {
     std::vector<SceneDraw> draws = sceneDraws(prepared);
-    if (ground && prepared.scene.display.ground == Ground::Floor) {
+    if (ground) {
         SceneDraw floor;
         floor.mesh = &*ground;
         floor.primitive = -1;
@@ -24,6 +24,11 @@ std::vector<SceneDraw> referenceDraws(const PreparedScene& prepared, const std::
         draws.push_back(floor);
     }
     return draws;
+}
+
+int32_t catcherDraw(const PreparedScene& prepared, size_t drawCount) {
+    const bool caught = prepared.scene.display.ground == Ground::Shadow && drawCount == sceneDraws(prepared).size() + 1;
+    return caught ? int32_t(drawCount) - 1 : -1;
 }
 
 bool stagedWithShadows(const Scene& scene) {

@@ -249,6 +249,34 @@ TEST(ShadowRender, TheCatcherDarkensTheBackgroundUnderTheSphereOnlyOnEveryPath) 
     }
 }
 
+// The ground truth draws the shadow catcher too (it used to leave the background undarkened):
+// the background behind it times the share of the ground material's light that the sphere's
+// shadow leaves, as the renderer's catcher takes it; without visibility, the background alone.
+TEST(ShadowRender, TheCatcherIsTheOneTheGroundTruthGives) {
+    test::glContext();
+    const Scene scene = sphereOverGround(Ground::Shadow, true);
+    const PreparedScene prepared = test::prepared(scene);
+    const HdrImage gpu =
+        Renderer().render(prepared, test::renderSettings(kSize, kSize, RenderPath::Specialised, 1)).hdr;
+    const std::optional<Mesh> ground = groundOf(prepared);
+    const PixelSurfaces surfaces =
+        rasterizeSurfaces(referenceDraws(prepared, ground), scene.camera, kSize, kSize, prepared.model.get());
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = 1;   // no environment: every light is exact
+    options.visibility = true;
+    const ReferenceImage truth = renderReference(prepared, surfaces, options);
+    const float background = 0.2126f * 0.2f + 0.7152f * 0.3f + 0.0722f * 0.4f;
+    EXPECT_FLOAT_EQ(luminanceAt(truth.value, scene.camera, kFarAway), background);
+    const float under = luminanceAt(truth.value, scene.camera, kUnderSphere);
+    EXPECT_LT(under, 0.3f * background);
+    EXPECT_NEAR(luminanceAt(gpu, scene.camera, kUnderSphere), under, 0.03f * background);
+    const glm::ivec2 at = test::pixelOf(scene.camera, kUnderSphere, kSize, kSize);
+    EXPECT_EQ(truth.backdrop[size_t(at.y) * kSize + size_t(at.x)], 1) << "shown as the flat background is";
+    options.visibility = false;
+    EXPECT_FLOAT_EQ(luminanceAt(renderReference(prepared, surfaces, options).value, scene.camera, kUnderSphere),
+                    background);
+}
+
 TEST(ShadowRender, WithoutAShadowedLightTheCatcherChangesNothingAndShadowsOffMeanTheSamePicture) {
     test::glContext();
     Renderer renderer;
