@@ -476,8 +476,8 @@ void Renderer::Frame::addGround() {
 }
 
 // Each enabled light with shadows on gets a layer of the shadow maps and its view of the model
-// (its packed row's shadowMap says which), up to kMaxShadowMaps; a light no view can hold
-// (shadowViewOf) casts none. None for a channel, which shows no shadow.
+// (its packed row's shadowMap says which), up to kMaxShadowedLights and kMaxShadowMaps layers;
+// a light no view can hold (shadowViewsOf) casts none. None for a channel, which shows no shadow.
 void Renderer::Frame::assignShadowMaps() {
     if (settings.channel.channel >= 0 ||
         std::none_of(scene.lights.begin(), scene.lights.end(), [](const Light& light) { return light.shadows; })) {
@@ -487,14 +487,19 @@ void Renderer::Frame::assignShadowMaps() {
     const glm::vec3 centre = 0.5f * (bounds.low + bounds.high);
     const float radius = bounds.empty() ? 0.0f : 0.5f * glm::length(bounds.high - bounds.low);
     const std::vector<size_t> order = enabledLightOrder(scene.lights);
-    for (size_t i = 0; i < packed.size() && shadowViews.size() < size_t(kMaxShadowMaps); ++i) {
+    int lights = 0;
+    for (size_t i = 0; i < packed.size() && lights < kMaxShadowedLights; ++i) {
         if (!scene.lights[order[i]].shadows) {
             continue;
         }
-        if (const auto view = shadowViewOf(packed[i], centre, radius, settings.shadowMaps)) {
-            shadowViews.push_back(*view);
-            packed[i].shadowMap = float(shadowViews.size());
+        const std::vector<ShadowView> views = shadowViewsOf(packed[i], centre, radius, settings.shadowMaps);
+        if (views.empty() || shadowViews.size() + views.size() > size_t(kMaxShadowMaps)) {
+            continue;
         }
+        // 1 + its first layer, negative for a cube map's six (shade.frag's shadowOf).
+        packed[i].shadowMap = (views.size() > 1 ? -1.0f : 1.0f) * float(shadowViews.size() + 1);
+        shadowViews.insert(shadowViews.end(), views.begin(), views.end());
+        ++lights;
     }
 }
 

@@ -1,5 +1,7 @@
 #include "gl/shader_specialisation.h"
 
+#include <cmath>
+
 
 #include "scene/light_packing.h"
 
@@ -23,7 +25,10 @@ std::string shadowed(const std::string& call, const shader::PackedLight& light, 
     } else {
         towards = "safeNormalize(" + source + ".position - vPosition)";
     }
-    return "SHADOWED(" + towards + ", " + std::to_string(int(light.shadowMap) - 1) + ", " + call + ")";
+    // A cube map's six layers (a negative shadowMap): the face the light sees the fragment in.
+    const std::string first = std::to_string(int(std::abs(light.shadowMap)) - 1);
+    const std::string layer = light.shadowMap < 0.0f ? first + " + cubeFace(-(" + towards + "))" : first;
+    return "SHADOWED(" + towards + ", " + layer + ", " + call + ")";
 }
 }  // namespace
 
@@ -95,7 +100,7 @@ ShaderSpecialisation specialiseFor(const std::vector<shader::PackedLight>& light
             source = sourceOf(i, flatSlots, "FLAT_HEMISPHERE");
             call = "SHADE_HEMISPHERE(" + source.fragment + ")";
         }
-        if (!call.empty() && light.shadowMap > 0.0f) {
+        if (!call.empty() && light.shadowMap != 0.0f) {
             call = shadowed(call, light, source.fragment);
             key.shadows = true;
         }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace patina {
@@ -26,36 +27,59 @@ float tapSpacing(float sourceRadius, float distance, float texelAtUnitW) {
 }
 }  // namespace
 
-std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius,
-                                       const ShadowMapSettings& maps) {
-    const int size = maps.size;
-    if (!(radius > 0.0f) || light.type == shader::LIGHT_HEMISPHERE) {
-        return std::nullopt;
-    }
+namespace {
+// A directional light's orthographic view along its direction, fitted to the sphere.
+ShadowView directionalView(const shader::PackedLight& light, glm::vec3 centre, float radius, const ShadowMapSettings& maps) {
     ShadowView view;
+    const glm::vec3 forward = -glm::normalize(light.directionToLight);
+    const glm::mat4 look = glm::lookAt(centre - 2.0f * radius * forward, centre, upFor(forward));
+    view.clip = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius) * look;
+    view.texel = {maps.biasScale * 2.0f * radius / float(maps.size), 1.0f / float(maps.size), 1.0f, 0.0f};
+    return view;
+}
+
+// A perspective view from `eye` along `forward`, `fieldOfView` wide (radians), from `nearPlane`
+// to `farPlane`; its PCF taps spread by the light's size as seen from `distance`.
+ShadowView perspectiveView(const shader::PackedLight& light, glm::vec3 eye, glm::vec3 forward, float fieldOfView,
+                           float nearPlane, float farPlane, float distance, const ShadowMapSettings& maps) {
+    ShadowView view;
+    view.clip = glm::perspective(fieldOfView, 1.0f, nearPlane, farPlane) * glm::lookAt(eye, eye + forward, upFor(forward));
+    const float texelAtUnitW = 2.0f * std::tan(0.5f * fieldOfView) / float(maps.size);
+    const float source = light.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
+    view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(maps.size), tapSpacing(source, distance, texelAtUnitW),
+                  0.0f};
+    return view;
+}
+}  // namespace
+
+std::vector<ShadowView> shadowViewsOf(const shader::PackedLight& light, glm::vec3 centre, float radius,
+                                      const ShadowMapSettings& maps) {
+    if (!(radius > 0.0f) || light.type == shader::LIGHT_HEMISPHERE) {
+        return {};
+    }
+    std::vector<ShadowView> views;
     if (light.type == shader::LIGHT_DIRECTIONAL) {
-        const glm::vec3 forward = -glm::normalize(light.directionToLight);
-        const glm::mat4 look = glm::lookAt(centre - 2.0f * radius * forward, centre, upFor(forward));
-        view.clip = glm::ortho(-radius, radius, -radius, radius, radius, 3.0f * radius) * look;
-        view.texel = {maps.biasScale * 2.0f * radius / float(size), 1.0f / float(size), 1.0f, 0.0f};
+        views.push_back(directionalView(light, centre, radius, maps));
     } else {
         // A tube looks from its segment's middle.
         const glm::vec3 eye = light.type == shader::LIGHT_TUBE ? 0.5f * (light.position + light.tubeEnd) : light.position;
         const float distance = glm::length(centre - eye);
-        if (distance <= 1.01f * radius) {
-            return std::nullopt;
+        if (distance > 1.01f * radius) {   // the narrowest cone that holds the sphere
+            const float nearPlane = std::max(distance - radius, 0.01f * distance);
+            views.push_back(perspectiveView(light, eye, (centre - eye) / distance, 2.0f * std::asin(radius / distance),
+                                            nearPlane, distance + radius, distance, maps));
+        } else {   // among the casters: every way, out to the sphere's far side
+            const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+            for (const glm::vec3& forward : axes) {
+                views.push_back(perspectiveView(light, eye, forward, 0.5f * glm::pi<float>(), 0.005f * radius,
+                                                distance + radius, radius, maps));
+            }
         }
-        const float halfAngle = std::asin(radius / distance);
-        const glm::vec3 forward = (centre - eye) / distance;
-        const glm::mat4 look = glm::lookAt(eye, centre, upFor(forward));
-        const float nearPlane = std::max(distance - radius, 0.01f * distance);
-        view.clip = glm::perspective(2.0f * halfAngle, 1.0f, nearPlane, distance + radius) * look;
-        const float texelAtUnitW = 2.0f * std::tan(halfAngle) / float(size);
-        const float source = light.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
-        view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(size), tapSpacing(source, distance, texelAtUnitW), 0.0f};
     }
-    view.texture = kClipToTexture * view.clip;
-    return view;
+    for (ShadowView& view : views) {
+        view.texture = kClipToTexture * view.clip;
+    }
+    return views;
 }
 
 ShadowMaps::~ShadowMaps() {

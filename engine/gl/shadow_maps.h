@@ -3,7 +3,8 @@
 // of the model's opaque items seen from the light, one layer each of a depth texture array that
 // shade.frag reads with PCF (PATINA_SHADOWS). A directional light looks along its direction
 // with an orthographic view fitted to the model's bounding sphere; a point, sphere or tube light
-// looks from its centre at the sphere with the narrowest perspective that holds it. The maps
+// looks from its centre at the sphere with the narrowest perspective that holds it, or, inside
+// the sphere, every way: six layers, a cube map's faces. The maps
 // are fitted to the casters only: the ground casts nothing, and a receiver outside the view (or
 // beyond its far plane, whose depth clamps to 1) is one no caster can shadow from there.
 #include <optional>
@@ -19,8 +20,10 @@
 
 namespace patina {
 
-// Layers at most (shade.frag's MAX_SHADOW_MAPS): a fifth shadowed light casts none.
-inline constexpr int kMaxShadowMaps = 4;
+// Layers at most (shade.frag's MAX_SHADOW_MAPS), and shadowed lights at most: a fifth shadowed
+// light, or one whose views the layers left cannot hold, casts none.
+inline constexpr int kMaxShadowMaps = 12;
+inline constexpr int kMaxShadowedLights = 4;
 
 // One light's view of the casters.
 struct ShadowView {
@@ -31,11 +34,15 @@ struct ShadowView {
     glm::vec4 texel{0.0f};
 };
 
-// The view of a sphere (centre, radius) around the casters from `light` (packed), a map of
-// `maps.size` texels square, its normal offset scaled by `maps.biasScale`; nothing for a hemisphere light, a light inside the sphere (a point
-// light among the casters would need a cube map), or an empty sphere.
-std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::vec3 centre, float radius,
-                                       const ShadowMapSettings& maps);
+// The views of a sphere (centre, radius) around the casters from `light` (packed), maps of
+// `maps.size` texels square, their normal offset scaled by `maps.biasScale`: one for a
+// directional light, or a point, sphere or tube light outside the sphere; six for one inside it,
+// a cube map's faces in shade.frag's cubeFace order (+X, -X, +Y, -Y, +Z, -Z), each a 90-degree
+// view from the light reaching the sphere's far side (Williams 1978's depth map, taken six ways
+// as Gerasimov 2004, "Omnidirectional Shadow Mapping", GPU Gems ch. 12); none for a hemisphere
+// light or an empty sphere.
+std::vector<ShadowView> shadowViewsOf(const shader::PackedLight& light, glm::vec3 centre, float radius,
+                                      const ShadowMapSettings& maps);
 
 // The depth texture array and the framebuffer that draws into it, made on first use and kept.
 class ShadowMaps {

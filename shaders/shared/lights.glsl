@@ -30,7 +30,7 @@ struct PackedLight {
     vec3 directionToLight;   // directional: -normalize(direction)
     real sourceRadius;      // sphere, tube: s
     vec3 attenuation;        // point, sphere, tube: a_c, a_l, a_q
-    real shadowMap;          // the renderer's: 1 + the light's shadow map layer (shade.frag), 0 for none
+    real shadowMap;          // the renderer's: 1 + the light's shadow map layer (shade.frag), 0 for none; negative for a cube map's six
     vec3 sky;                // hemisphere: sky colour * colour * intensity
     real unused2;
     vec3 ground;             // hemisphere: ground colour * colour * intensity

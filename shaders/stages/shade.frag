@@ -110,7 +110,7 @@ uniform float uSheenRoughness;   // sheenRoughnessFactor
 #endif
 
 #ifdef PATINA_SHADOWS
-const int MAX_SHADOW_MAPS = 4;   // engine/gl/shadow_maps.h's kMaxShadowMaps
+const int MAX_SHADOW_MAPS = 12;   // engine/gl/shadow_maps.h's kMaxShadowMaps
 uniform sampler2DArrayShadow uShadowMaps;
 uniform mat4 uShadowTransforms[MAX_SHADOW_MAPS];   // world to a map's [0, 1] coordinates and depth
 uniform vec4 uShadowTexels[MAX_SHADOW_MAPS];   // x a texel's world size at w 1, y 1 / size, z tap spacing
@@ -149,9 +149,29 @@ vec3 towardsShadowedLight(PackedLight light) {
     return safeNormalize(source - vPosition);
 }
 
+// Which of a cube map's six faces (+X, -X, +Y, -Y, +Z, -Z: engine/gl/shadow_maps.h) holds the
+// direction d from the light: its largest axis, as each face's 90-degree view holds exactly the
+// directions whose largest axis is its own.
+int cubeFace(vec3 d) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) {
+        return d.x >= 0.0f ? 0 : 1;
+    }
+    if (a.y >= a.z) {
+        return d.y >= 0.0f ? 2 : 3;
+    }
+    return d.z >= 0.0f ? 4 : 5;
+}
+
+// A light's map: its layer, or for a cube map (a negative shadowMap) the layer of the face the
+// light sees this fragment in.
 float shadowOf(PackedLight light) {
-    int k = int(light.shadowMap) - 1;
-    return k < 0 ? 1.0f : shadowVisibility(k, towardsShadowedLight(light));
+    int k = int(abs(light.shadowMap)) - 1;
+    if (k < 0) {
+        return 1.0f;
+    }
+    vec3 L = towardsShadowedLight(light);
+    return shadowVisibility(light.shadowMap < 0.0f ? k + cubeFace(-L) : k, L);
 }
 #define SHADOW_OF(light) lightShadow = shadowOf(light);
 #define SHADOWED(L, k, shade) lightShadow = shadowVisibility(k, L); shade lightShadow = 1.0f;

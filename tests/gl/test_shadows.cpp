@@ -126,8 +126,7 @@ TEST(ShadowRender, TheShadowOnTheFloorIsTheOneTheGroundTruthGives) {
 }
 
 // A point light and a sphere light above the sphere, outside its bounds: a perspective map from
-// the light darkens the floor under the sphere; a point light inside the bounds casts none
-// (a cube map's job, not done) and changes nothing.
+// the light darkens the floor under the sphere.
 TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
     test::glContext();
     Renderer renderer;
@@ -144,14 +143,36 @@ TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
                         1e-5f * luminanceAt(without, lit.camera, kFarAway));
         }
     }
-    Scene inside = sphereOverGround(Ground::Floor, true);
-    inside.lights[0].type = LightType::Point;
-    inside.lights[0].position = {0.0f, 0.0f, 0.0f};
-    Scene insideOff = inside;
-    insideOff.lights[0].shadows = false;
-    const RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Single, 1);
-    EXPECT_EQ(renderer.render(test::prepared(inside), settings).hdr.rgb,
-              renderer.render(test::prepared(insideOff), settings).hdr.rgb);
+}
+
+// A light among the casters (inside their bounding sphere) looks every way, a cube map's six
+// faces (it used to cast nothing): a point light at the centre of the torus's hole, the torus
+// lying on the floor. Through the hole it lights the floor under it as without shadows; the ring
+// hides it from the floor beyond (from about 0.7 out: the ray grazes the tube there), on every
+// path.
+TEST(ShadowRender, ALightAmongTheCastersCastsEveryWayThroughACubeMap) {
+    test::glContext();
+    Renderer renderer;
+    Scene scene = sphereOverGround(Ground::Floor, false);
+    scene.mesh = MeshKind::Torus;   // major radius 0.75, tube 0.3, about +Y: the floor at y = -0.3
+    scene.lights.resize(1);
+    scene.lights[0].type = LightType::Point;
+    scene.lights[0].position = {0.0f, 0.0f, 0.0f};
+    scene.camera.position = {0.0f, 6.0f, 1.5f};   // sees the floor under the light through the hole
+    scene.camera.target = {0.0f, -0.3f, 0.0f};
+    const glm::vec3 underLight{0.0f, -0.3f, 0.0f};
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
+        const auto [without, with] = withoutAndWithShadows(renderer, scene, path);
+        for (const glm::vec3 beyond : {glm::vec3(2.0f, -0.3f, 0.0f), glm::vec3(-2.0f, -0.3f, 0.0f),
+                                       glm::vec3(0.0f, -0.3f, -2.0f), glm::vec3(1.5f, -0.3f, 1.5f)}) {
+            const float open = luminanceAt(without, scene.camera, beyond);
+            EXPECT_GT(open, 0.0f);
+            EXPECT_LT(luminanceAt(with, scene.camera, beyond), 0.05f * open) << renderPathName(path) << " " << beyond.x;
+        }
+        EXPECT_NEAR(luminanceAt(with, scene.camera, underLight), luminanceAt(without, scene.camera, underLight),
+                    0.02f * luminanceAt(without, scene.camera, underLight))
+            << renderPathName(path);
+    }
 }
 
 // A sphere light spreads its PCF taps wider (up to four texels), and the lookup's normal offset

@@ -203,8 +203,8 @@ void editLight(Light& light, float intensityScale) {
     if (light.type != LightType::Hemisphere && light.type != LightType::Environment) {
         ImGui::Checkbox("Shadows", &light.shadows);
         recordItem("Light shadows", "Whether the model casts shadows of this light, on itself and on the ground "
-                                    "(the viewport's Ground list); a shadow map, saved with the scene. No shadow "
-                                    "from a light inside the model's bounds, nor from a fifth shadowed light");
+                                    "(the viewport's Ground list); a shadow map (six, a cube map, for a light among the "
+                                    "model's parts), saved with the scene. At most four shadowed lights and twelve maps");
     }
     if (light.type != LightType::Environment) {   // an environment's colour is its image's
         colorEditLinear("Colour", "The light's colour; values above 1 are kept", &light.color, true);
