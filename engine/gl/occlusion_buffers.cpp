@@ -15,13 +15,12 @@ void OcclusionBuffers::release() {
 }
 
 void OcclusionBuffers::upload(const std::shared_ptr<const AmbientOcclusion>& occlusion) {
-    if (occlusion == shown_) {
+    // A frame without occlusion keeps the last one's buffers: a frame with it again (an A/B
+    // pair, the checkbox ticked back) draws them without uploading the ground's grid anew.
+    if (!occlusion || occlusion == shown_) {
         return;
     }
     release();
-    if (!occlusion) {
-        return;
-    }
     std::vector<const std::vector<float>*> lists;
     for (const std::vector<float>& values : occlusion->items) {
         lists.push_back(&values);

@@ -21,7 +21,8 @@ public:
     OcclusionBuffers& operator=(const OcclusionBuffers&) = delete;
 
     // Makes `occlusion`'s values (and its ground grid) the ones drawn; nothing where it is
-    // already. Holds it, so its values' addresses stand for them.
+    // already, or for none (the last one's are kept). Holds it, so its values' addresses stand
+    // for them.
     void upload(const std::shared_ptr<const AmbientOcclusion>& occlusion);
     // The buffer of `values`, one of the shown occlusion's (SceneDraw::occlusion); 0 for another.
     GLuint bufferOf(const std::vector<float>* values) const;

@@ -251,6 +251,13 @@ protected:
     // Whether the editor sleeps after the frame it last drew (the layout dump's "asleep").
     bool asleep() { return readText(dir_ / "layout.json").find("\"asleep\": true") != std::string::npos; }
 
+    // Whether the last frame drawn drew the item (the layout keeps every item's last place).
+    bool shown(const std::string& name) {
+        const std::string layout = readText(dir_ / "layout.json");
+        const size_t list = layout.find("\"shown\": [");
+        return list != std::string::npos && layout.find("\"" + name + "\"", list) != std::string::npos;
+    }
+
     // Where a widget stays: a new window's first frame places it before it knows its size (a
     // centred prompt is drawn from the second frame on, elsewhere), so while the editor is still
     // drawing, the rectangle is read again after its next frame until two agree.
@@ -748,6 +755,23 @@ TEST_F(EditorWindow, TheTurntableDrawsWithoutInputUntilItIsTurnedOff) {
         EXPECT_FALSE(screenshotOfViewport().empty()) << view;
         chooseMenu({"menu:View", "Turntable"});
         EXPECT_TRUE(waitFor([&] { return asleep(); }, 60s)) << view << ": still drawing once it is off";
+    }
+    EXPECT_TRUE(editor_->running());
+}
+
+// The ambient occlusion bakes on a worker: the toolbar's "Baking" goes away once it ends with
+// no input after the click (the loop draws while a bake runs, as it does for a load), and
+// every view then draws and screenshots it.
+TEST_F(EditorWindow, TheAmbientOcclusionsBakeEndsOnScreenWithoutInput) {
+    ASSERT_TRUE(clickOn("Set A"));
+    ASSERT_TRUE(clickOn("Ground plane"));
+    ASSERT_TRUE(clickOn("ground:floor"));
+    ASSERT_TRUE(clickOn("Ambient occlusion"));
+    EXPECT_TRUE(waitFor([&] { return !shown("Occlusion baking") && asleep(); }, 60s))
+        << "the bake's end was not drawn";
+    for (const char* view : {"Single", "Split", "Side by side"}) {
+        ASSERT_TRUE(clickOn(view));
+        EXPECT_FALSE(screenshotOfViewport().empty()) << view;
     }
     EXPECT_TRUE(editor_->running());
 }

@@ -123,8 +123,8 @@ void waitForEvents(Loop& loop) {
         return;
     }
     const std::optional<std::chrono::milliseconds> due = earliest(loop.autosaveDue, loop.settingsDue);
-    if (loop.state.environmentLoad || loop.state.modelLoad) {
-        glfwWaitEventsTimeout(0.1);   // the load's progress, and its end, are shown
+    if (loop.state.environmentLoad || loop.state.modelLoad || loop.state.occlusionBake) {
+        glfwWaitEventsTimeout(0.1);   // the load's (or bake's) progress, and its end, are shown
     } else if (due) {
         glfwWaitEventsTimeout(std::chrono::duration<double>(*due).count() + 0.01);
     } else {

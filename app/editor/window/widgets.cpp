@@ -222,7 +222,13 @@ std::string layoutJson(bool asleep) {
                       double(item.max.y));
         json += entry;
     }
-    return json + "}\n";
+    // The items the last frame drew (the rectangles above are each item's last): what is on
+    // screen now, as a message that went away.
+    std::string shown;
+    for (const auto& [name, item] : itemsOfLastFrame()) {
+        shown += (shown.empty() ? "\"" : ", \"") + name + "\"";
+    }
+    return json + ", \"shown\": [" + shown + "]}\n";
 }
 
 }  // namespace patina::editor
