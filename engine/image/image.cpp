@@ -14,7 +14,7 @@
 
 #include <stb_image.h>
 
-#include "files/input_error.h"
+#include "common/decoder_reason.h"
 
 namespace patina {
 

@@ -311,7 +311,8 @@ TEST_F(AccuracyCommands, FurnaceWritesCurvesForEveryModel) {
     }
     EXPECT_EQ(gltfRows, 2u * 2u * 5u);   // two materials, two mu, 5 roughness steps
     EXPECT_GT(epicDielectric, 1.02);
-    EXPECT_EQ(test::runPatina("furnace --out-dir " + path("missing").string(), dir_).exitCode, 3);
+    std::ofstream(path("not-a-folder")) << "x";   // a missing folder is made; a file is refused
+    EXPECT_EQ(test::runPatina("furnace --out-dir " + path("not-a-folder").string(), dir_).exitCode, 3);
 }
 
 TEST(Stability, ShippedModelsAreFiniteAndNonNegativeEverywhere) {

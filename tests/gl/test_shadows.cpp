@@ -175,6 +175,34 @@ TEST(ShadowRender, ALightAmongTheCastersCastsEveryWayThroughACubeMap) {
     }
 }
 
+// The maps are kept while what casts them stays (a material drag redrew them every frame), and
+// drawn again when a light, the shape or its place moves: every frame of one renderer is the
+// frame a fresh renderer draws.
+TEST(ShadowRender, KeptMapsAreRedrawnWhenALightOrTheShapeMoves) {
+    test::glContext();
+    Renderer kept;
+    const RenderSettings settings = test::renderSettings(kSize, kSize, RenderPath::Specialised, 1);
+    Scene scene = sphereOverGround(Ground::Floor, true);
+    scene.lights[0].direction = {0.3f, -1.0f, 0.0f};
+    std::vector<Scene> frames{scene};
+    scene.lights[0].direction = {-0.3f, -1.0f, 0.2f};   // the light moves
+    frames.push_back(scene);
+    scene.material.roughness = 0.9f;                    // a material drag: the maps stay
+    frames.push_back(scene);
+    scene.camera.position = {1.0f, 3.0f, 4.0f};         // an orbit: the maps stay
+    frames.push_back(scene);
+    scene.mesh = MeshKind::Torus;                       // another shape
+    frames.push_back(scene);
+    scene.lights[0].shadows = false;                    // off, then on again
+    frames.push_back(scene);
+    scene.lights[0].shadows = true;
+    frames.push_back(scene);
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const PreparedScene prepared = test::prepared(frames[i]);
+        EXPECT_EQ(kept.render(prepared, settings).hdr.rgb, Renderer().render(prepared, settings).hdr.rgb) << "frame " << i;
+    }
+}
+
 // A sphere light spreads its PCF taps wider (up to four texels), and the lookup's normal offset
 // grows with them: the caster's own lit side is not shadowed by its own surface. With one
 // texel's offset under four texels' taps the sphere's lit cap lost 2-4% (shadow-accuracy's
