@@ -17,12 +17,20 @@ glm::vec3 upFor(glm::vec3 forward) {
     return std::abs(forward.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-// The PCF taps' spacing: one texel, widened for a sphere or tube light by its size as seen
-// from the casters (its radius over the distance, in texels of the map's view): a larger
-// light, a softer edge. Capped, since wide taps under-sample thin casters.
-float tapSpacing(float sourceRadius, float distance, float texelAtUnitW) {
-    const float widened = texelAtUnitW > 0.0f ? 0.25f * sourceRadius / std::max(distance, 1e-6f) / texelAtUnitW : 0.0f;
-    return std::clamp(1.0f + widened, 1.0f, 4.0f);
+// A sphere's or tube's extent across the view `look` (uShadowSources' row, ShadowView::source):
+// the tube's half-segment as the map sees it plus the radius along it, the radius across it.
+glm::vec4 sourceExtent(const shader::PackedLight& light, const glm::mat4& look, float texelAtUnitW) {
+    if (light.type != shader::LIGHT_SPHERE && light.type != shader::LIGHT_TUBE) {
+        return glm::vec4(0.0f);
+    }
+    const float radius = std::max(light.sourceRadius, 0.0f);
+    const glm::vec3 half = light.type == shader::LIGHT_TUBE ? 0.5f * (light.tubeEnd - light.position) : glm::vec3(0.0f);
+    const glm::vec2 seen{look[0][0] * half.x + look[1][0] * half.y + look[2][0] * half.z,
+                         look[0][1] * half.x + look[1][1] * half.y + look[2][1] * half.z};   // its right and up
+    const float length = glm::length(seen);
+    const glm::vec2 axis = length > 0.0f ? seen / length : glm::vec2(1.0f, 0.0f);
+    const glm::vec2 along = seen + radius * axis;
+    return glm::vec4(along / texelAtUnitW, radius / texelAtUnitW, 0.0f);
 }
 }  // namespace
 
@@ -51,16 +59,32 @@ std::optional<ShadowView> shadowViewOf(const shader::PackedLight& light, glm::ve
         const float nearPlane = std::max(distance - radius, 0.01f * distance);
         view.clip = glm::perspective(2.0f * halfAngle, 1.0f, nearPlane, distance + radius) * look;
         const float texelAtUnitW = 2.0f * std::tan(halfAngle) / float(size);
-        const float source = light.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
-        view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(size), tapSpacing(source, distance, texelAtUnitW), 0.0f};
+        view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(size), 1.0f, 0.0f};
+        view.source = sourceExtent(light, look, texelAtUnitW);
+        view.range = {nearPlane, distance + radius};
     }
     view.texture = kClipToTexture * view.clip;
     return view;
 }
 
 ShadowMaps::~ShadowMaps() {
+    glDeleteSamplers(1, &depthSampler_);
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteTextures(1, &texture_);
+}
+
+GLuint ShadowMaps::depthSampler() {
+    if (!depthSampler_) {
+        glGenSamplers(1, &depthSampler_);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        const GLfloat far[4] = {1.0f, 1.0f, 1.0f, 1.0f};   // outside the map: no blocker
+        glSamplerParameterfv(depthSampler_, GL_TEXTURE_BORDER_COLOR, far);
+    }
+    return depthSampler_;
 }
 
 void ShadowMaps::beginLayer(int layers, int layer, int size) {

@@ -154,11 +154,12 @@ TEST(ShadowRender, PointAndSphereLightsAboveTheModelCastOnTheFloor) {
               renderer.render(test::prepared(insideOff), settings).hdr.rgb);
 }
 
-// A sphere light spreads its PCF taps wider (up to four texels), and the lookup's normal offset
-// grows with them: the caster's own lit side is not shadowed by its own surface. With one
-// texel's offset under four texels' taps the sphere's lit cap lost 2-4% (shadow-accuracy's
-// finding); now the cap, where the light arrives at more than 30 degrees above the surface, keeps
-// its light to 0.5% on average and to 2% at every pixel.
+// A sphere light's PCSS taps spread over its penumbra (tens to hundreds of texels), and each
+// compares against the receiver's tangent plane where it lands (receiver plane depth bias):
+// the caster's own lit side is not shadowed by its own surface. With one texel's normal offset
+// under four texels' fixed taps the sphere's lit cap once lost 2-4% (shadow-accuracy's finding);
+// the cap, where the light arrives at more than 30 degrees above the surface, keeps its light to
+// 0.5% on average and to 2% at every pixel.
 TEST(ShadowRender, ASphereLightsWideTapsDoNotShadowTheCastersLitSide) {
     test::glContext();
     Renderer renderer;
