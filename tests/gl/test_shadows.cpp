@@ -194,6 +194,37 @@ TEST(ShadowRender, ASphereLightsWideTapsDoNotShadowTheCastersLitSide) {
     }
 }
 
+// A tube light's PCSS kernel is its shape in the map (ShadowView::source): an ellipse long along
+// the tube, its radius across. A tube 2 long and 0.05 thick, 6 above the floor along x over the
+// sphere: the shadow's edge (1.22 from the middle with a point there) has a penumbra about 0.5
+// wide along x and 0.025 across (similar triangles from the silhouette, 4.8 from the light).
+// 0.15 inside and outside the edge: partly lit both along x; dark, then lit, along z. With the
+// sphere's round kernel of the tube's radius, both axes were the hard z one.
+TEST(ShadowRender, ATubeLightsPenumbraIsWideAlongItsAxisAndNarrowAcrossIt) {
+    test::glContext();
+    Renderer renderer;
+    Scene lit = sphereOverGround(Ground::Floor, false);
+    lit.lights[0].type = LightType::Tube;
+    lit.lights[0].start = {-1.0f, 5.0f, 0.0f};
+    lit.lights[0].end = {1.0f, 5.0f, 0.0f};
+    lit.lights[0].sourceRadius = 0.05f;
+    lit.lights[0].intensity = 40.0f;
+    lit.lights.pop_back();   // the tube's light alone
+    for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
+        const auto [without, with] = withoutAndWithShadows(renderer, lit, path);
+        const auto visibility = [&](glm::vec3 p) {
+            return luminanceAt(with, lit.camera, p) / luminanceAt(without, lit.camera, p);
+        };
+        for (const float side : {1.07f, 1.37f}) {
+            const float along = visibility({side, -1.0f, 0.0f});
+            EXPECT_GT(along, 0.1f) << side << " " << renderPathName(path);
+            EXPECT_LT(along, 0.9f) << side << " " << renderPathName(path);
+        }
+        EXPECT_LT(visibility({0.0f, -1.0f, 1.07f}), 0.05f) << renderPathName(path);
+        EXPECT_GT(visibility({0.0f, -1.0f, 1.37f}), 0.95f) << renderPathName(path);
+    }
+}
+
 // The maps' size and bias are the draw's (RenderSettings::shadowMaps, what the shadow
 // measurement varies): a coarse map moves the shadow's edge and nothing far from it; sizes the
 // GL cannot make and a negative or non-finite bias are refused before anything is drawn.
