@@ -4,6 +4,7 @@
 // sphere and leaves it, to the bit, everywhere else; without a shadowed light or a ground the
 // picture is the one without them.
 #include <cmath>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -199,7 +200,7 @@ TEST(ShadowRender, ASphereLightsWideTapsDoNotShadowTheCastersLitSide) {
 // sphere: the shadow's edge (1.22 from the middle with a point there) has a penumbra about 0.5
 // wide along x and 0.025 across (similar triangles from the silhouette, 4.8 from the light).
 // 0.15 inside and outside the edge: partly lit both along x; dark, then lit, along z. With the
-// sphere's round kernel of the tube's radius, both axes were the hard z one.
+// sphere's round kernel of the tube's radius, both axes were the hard z one. Every path alike.
 TEST(ShadowRender, ATubeLightsPenumbraIsWideAlongItsAxisAndNarrowAcrossIt) {
     test::glContext();
     Renderer renderer;
@@ -210,7 +211,8 @@ TEST(ShadowRender, ATubeLightsPenumbraIsWideAlongItsAxisAndNarrowAcrossIt) {
     lit.lights[0].sourceRadius = 0.05f;
     lit.lights[0].intensity = 40.0f;
     lit.lights.pop_back();   // the tube's light alone
-    for (RenderPath path : {RenderPath::Single, RenderPath::Specialised}) {
+    std::map<float, float> firstPath;   // the single path's visibility along x, by place
+    for (RenderPath path : {RenderPath::Single, RenderPath::Multi, RenderPath::Specialised}) {
         const auto [without, with] = withoutAndWithShadows(renderer, lit, path);
         const auto visibility = [&](glm::vec3 p) {
             return luminanceAt(with, lit.camera, p) / luminanceAt(without, lit.camera, p);
@@ -219,6 +221,8 @@ TEST(ShadowRender, ATubeLightsPenumbraIsWideAlongItsAxisAndNarrowAcrossIt) {
             const float along = visibility({side, -1.0f, 0.0f});
             EXPECT_GT(along, 0.1f) << side << " " << renderPathName(path);
             EXPECT_LT(along, 0.9f) << side << " " << renderPathName(path);
+            firstPath.try_emplace(side, along);
+            EXPECT_NEAR(along, firstPath[side], 0.01f) << side << " " << renderPathName(path);
         }
         EXPECT_LT(visibility({0.0f, -1.0f, 1.07f}), 0.05f) << renderPathName(path);
         EXPECT_GT(visibility({0.0f, -1.0f, 1.37f}), 0.95f) << renderPathName(path);
