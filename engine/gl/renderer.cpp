@@ -318,6 +318,7 @@ private:
     const MeshBuffers& buffersOf(const SceneDraw& item) const;
     void environmentUniforms(const GlProgram& program) const;
     void prepare(const GlProgram& program) const;   // the per-draw uniforms of a mesh pass
+    void shadowUniforms(const GlProgram& program) const;   // PATINA_SHADOWS' (prepare)
     void clearAroundMesh() const;
     void drawStrip(int top);
     void drawItems() const;
@@ -651,17 +652,28 @@ void Renderer::Frame::prepare(const GlProgram& program) const {
         glUniform1i(program.uniform("uTonemap"), exposureTonemap);
     }
     if (!shadowViews.empty()) {
-        std::vector<glm::mat4> transforms;
-        std::vector<glm::vec4> texels;
-        for (const ShadowView& view : shadowViews) {
-            transforms.push_back(view.texture);
-            texels.push_back(view.texel);
-        }
-        glUniform1i(program.uniform("uShadowMaps"), ShadingPrograms::kShadowMapUnit);
-        glUniformMatrix4fv(program.uniform("uShadowTransforms"), GLsizei(transforms.size()), GL_FALSE,
-                           glm::value_ptr(transforms[0]));
-        glUniform4fv(program.uniform("uShadowTexels"), GLsizei(texels.size()), glm::value_ptr(texels[0]));
+        shadowUniforms(program);
     }
+}
+
+// shade.frag's PATINA_SHADOWS uniforms: each map's transform, texel, light size and depth range.
+void Renderer::Frame::shadowUniforms(const GlProgram& program) const {
+    std::vector<glm::mat4> transforms;
+    std::vector<glm::vec4> texels, sources;
+    std::vector<glm::vec2> ranges;
+    for (const ShadowView& view : shadowViews) {
+        transforms.push_back(view.texture);
+        texels.push_back(view.texel);
+        sources.push_back(view.source);
+        ranges.push_back(view.range);
+    }
+    const auto count = GLsizei(shadowViews.size());
+    glUniform1i(program.uniform("uShadowMaps"), ShadingPrograms::kShadowMapUnit);
+    glUniform1i(program.uniform("uShadowDepthMaps"), ShadingPrograms::kShadowDepthUnit);
+    glUniformMatrix4fv(program.uniform("uShadowTransforms"), count, GL_FALSE, glm::value_ptr(transforms[0]));
+    glUniform4fv(program.uniform("uShadowTexels"), count, glm::value_ptr(texels[0]));
+    glUniform4fv(program.uniform("uShadowSources"), count, glm::value_ptr(sources[0]));
+    glUniform2fv(program.uniform("uShadowRanges"), count, glm::value_ptr(ranges[0]));
 }
 
 namespace {
@@ -830,6 +842,10 @@ void Renderer::Frame::drawShadowMaps() const {
 void Renderer::Frame::bindShadowMaps() const {
     glActiveTexture(GL_TEXTURE0 + ShadingPrograms::kShadowMapUnit);
     glBindTexture(GL_TEXTURE_2D_ARRAY, s.shadowMaps.texture());
+    // The same texture again, read without the comparison: PCSS's blocker search.
+    glActiveTexture(GL_TEXTURE0 + ShadingPrograms::kShadowDepthUnit);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, s.shadowMaps.texture());
+    glBindSampler(ShadingPrograms::kShadowDepthUnit, s.shadowMaps.depthSampler());
     glActiveTexture(GL_TEXTURE0);
 }
 

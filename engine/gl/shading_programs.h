@@ -88,6 +88,7 @@ public:
     static constexpr int kSheenTableUnit = 18;
     static constexpr int kShadowMapUnit = 19;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
     static constexpr int kSceneBehindUnit = 20;   // PATINA_TRANSMISSION: gl/scene_behind.h's image
+    static constexpr int kShadowDepthUnit = 21;   // PATINA_SHADOWS: the same maps' raw depths (PCSS)
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);

@@ -18,16 +18,22 @@ glm::vec3 upFor(glm::vec3 forward) {
     return std::abs(forward.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-// The PCF taps' spacing: one texel, widened for a sphere or tube light by its size as seen
-// from the casters (its radius over the distance, in texels of the map's view): a larger
-// light, a softer edge. Capped, since wide taps under-sample thin casters.
-float tapSpacing(float sourceRadius, float distance, float texelAtUnitW) {
-    const float widened = texelAtUnitW > 0.0f ? 0.25f * sourceRadius / std::max(distance, 1e-6f) / texelAtUnitW : 0.0f;
-    return std::clamp(1.0f + widened, 1.0f, 4.0f);
+// A sphere's or tube's extent across the view `look` (uShadowSources' row, ShadowView::source):
+// the tube's half-segment as the map sees it plus the radius along it, the radius across it.
+glm::vec4 sourceExtent(const shader::PackedLight& light, const glm::mat4& look, float texelAtUnitW) {
+    if (light.type != shader::LIGHT_SPHERE && light.type != shader::LIGHT_TUBE) {
+        return glm::vec4(0.0f);
+    }
+    const float radius = std::max(light.sourceRadius, 0.0f);
+    const glm::vec3 half = light.type == shader::LIGHT_TUBE ? 0.5f * (light.tubeEnd - light.position) : glm::vec3(0.0f);
+    const glm::vec2 seen{look[0][0] * half.x + look[1][0] * half.y + look[2][0] * half.z,
+                         look[0][1] * half.x + look[1][1] * half.y + look[2][1] * half.z};   // its right and up
+    const float length = glm::length(seen);
+    const glm::vec2 axis = length > 0.0f ? seen / length : glm::vec2(1.0f, 0.0f);
+    const glm::vec2 along = seen + radius * axis;
+    return glm::vec4(along / texelAtUnitW, radius / texelAtUnitW, 0.0f);
 }
-}  // namespace
 
-namespace {
 // A directional light's orthographic view along its direction, fitted to the sphere.
 ShadowView directionalView(const shader::PackedLight& light, glm::vec3 centre, float radius, const ShadowMapSettings& maps) {
     ShadowView view;
@@ -39,15 +45,16 @@ ShadowView directionalView(const shader::PackedLight& light, glm::vec3 centre, f
 }
 
 // A perspective view from `eye` along `forward`, `fieldOfView` wide (radians), from `nearPlane`
-// to `farPlane`; its PCF taps spread by the light's size as seen from `distance`.
+// to `farPlane`, with the light's size across it for PCSS (sourceExtent) and its depths.
 ShadowView perspectiveView(const shader::PackedLight& light, glm::vec3 eye, glm::vec3 forward, float fieldOfView,
-                           float nearPlane, float farPlane, float distance, const ShadowMapSettings& maps) {
+                           float nearPlane, float farPlane, const ShadowMapSettings& maps) {
     ShadowView view;
-    view.clip = glm::perspective(fieldOfView, 1.0f, nearPlane, farPlane) * glm::lookAt(eye, eye + forward, upFor(forward));
+    const glm::mat4 look = glm::lookAt(eye, eye + forward, upFor(forward));
+    view.clip = glm::perspective(fieldOfView, 1.0f, nearPlane, farPlane) * look;
     const float texelAtUnitW = 2.0f * std::tan(0.5f * fieldOfView) / float(maps.size);
-    const float source = light.type == shader::LIGHT_POINT ? 0.0f : light.sourceRadius;
-    view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(maps.size), tapSpacing(source, distance, texelAtUnitW),
-                  0.0f};
+    view.texel = {maps.biasScale * texelAtUnitW, 1.0f / float(maps.size), 1.0f, 0.0f};
+    view.source = sourceExtent(light, look, texelAtUnitW);
+    view.range = {nearPlane, farPlane};
     return view;
 }
 }  // namespace
@@ -67,12 +74,12 @@ std::vector<ShadowView> shadowViewsOf(const shader::PackedLight& light, glm::vec
         if (distance > 1.01f * radius) {   // the narrowest cone that holds the sphere
             const float nearPlane = std::max(distance - radius, 0.01f * distance);
             views.push_back(perspectiveView(light, eye, (centre - eye) / distance, 2.0f * std::asin(radius / distance),
-                                            nearPlane, distance + radius, distance, maps));
+                                            nearPlane, distance + radius, maps));
         } else {   // among the casters: every way, out to the sphere's far side
             const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
             for (const glm::vec3& forward : axes) {
                 views.push_back(perspectiveView(light, eye, forward, 0.5f * glm::pi<float>(), 0.005f * radius,
-                                                distance + radius, radius, maps));
+                                                distance + radius, maps));
             }
         }
     }
@@ -83,8 +90,23 @@ std::vector<ShadowView> shadowViewsOf(const shader::PackedLight& light, glm::vec
 }
 
 ShadowMaps::~ShadowMaps() {
+    glDeleteSamplers(1, &depthSampler_);
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteTextures(1, &texture_);
+}
+
+GLuint ShadowMaps::depthSampler() {
+    if (!depthSampler_) {
+        glGenSamplers(1, &depthSampler_);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+        glSamplerParameteri(depthSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+        const GLfloat far[4] = {1.0f, 1.0f, 1.0f, 1.0f};   // outside the map: no blocker
+        glSamplerParameterfv(depthSampler_, GL_TEXTURE_BORDER_COLOR, far);
+    }
+    return depthSampler_;
 }
 
 void ShadowMaps::beginLayer(int layers, int layer, int size) {

@@ -30,8 +30,14 @@ struct ShadowView {
     glm::mat4 clip{1.0f};      // world to the light's clip space (drawing the map)
     glm::mat4 texture{1.0f};   // world to the map's [0, 1] coordinates and depth (reading it)
     // uShadowTexels' row: x the normal offset's scale (a texel's world size at clip w = 1
-    // times the bias scale), y 1 / the map's size, z the PCF taps' spacing in texels.
+    // times the bias scale), y 1 / the map's size, z the PCF taps' spacing in texels (1).
     glm::vec4 texel{0.0f};
+    // uShadowSources' row, PCSS's light size: a sphere's or tube's extent across the map's view
+    // in texels at view depth 1 (its world size over a texel's at w = 1): xy its half-extent
+    // along its longest axis in the map, z across it. Zero (a point or directional light): the
+    // fixed 3 x 3 filter.
+    glm::vec4 source{0.0f};
+    glm::vec2 range{0.0f};   // uShadowRanges' row: the view's near and far depths (perspective)
 };
 
 // The views of a sphere (centre, radius) around the casters from `light` (packed), maps of
@@ -56,9 +62,12 @@ public:
     // framebuffer to draw layer `layer`, cleared to the far depth, with the viewport the map's.
     void beginLayer(int layers, int layer, int size);
     GLuint texture() const { return texture_; }
+    // A sampler object that reads the same texture's raw depths, without the comparison
+    // (nearest, the same border): PCSS's blocker search. Made on first use.
+    GLuint depthSampler();
 
 private:
-    GLuint texture_ = 0, framebuffer_ = 0;
+    GLuint texture_ = 0, framebuffer_ = 0, depthSampler_ = 0;
     int layers_ = 0, size_ = 0;
 };
 

@@ -26,7 +26,7 @@
 // instruction of the sheen is compiled.
 // PATINA_SHADOWS: some light casts shadows (engine/gl/shadow_maps.h, docs/LIGHTING.md
 // "Shadows"): its light is weighed by the share of its shadow map's PCF taps that see the
-// surface. Single and multi read a light's map from PackedLight::shadowMap; specialised names it
+// surface (PCSS's for a sphere or tube light). Single and multi read a light's map from PackedLight::shadowMap; specialised names it
 // in the list, SHADOWED(towards the light, map, SHADE_...). Without it not one instruction of it is compiled.
 // PATINA_SHADOW_CATCHER (single, with PATINA_SHADOWS): the ground of Ground::Shadow, which
 // writes no light but the share of its light that its shadows leave, which the renderer
@@ -112,24 +112,108 @@ uniform float uSheenRoughness;   // sheenRoughnessFactor
 #ifdef PATINA_SHADOWS
 const int MAX_SHADOW_MAPS = 12;   // engine/gl/shadow_maps.h's kMaxShadowMaps
 uniform sampler2DArrayShadow uShadowMaps;
+uniform sampler2DArray uShadowDepthMaps;   // the same maps' raw depths, no comparison (PCSS's blocker search)
 uniform mat4 uShadowTransforms[MAX_SHADOW_MAPS];   // world to a map's [0, 1] coordinates and depth
 uniform vec4 uShadowTexels[MAX_SHADOW_MAPS];   // x a texel's world size at w 1, y 1 / size, z tap spacing
+// A sphere's or tube's size in the map (ShadowView::source): xy its half-extent along its long
+// axis, z across, in texels at view depth 1; zero for a point or directional light.
+uniform vec4 uShadowSources[MAX_SHADOW_MAPS];
+uniform vec2 uShadowRanges[MAX_SHADOW_MAPS];   // the view's near and far depths
 float lightShadow = 1.0f;                       // the visibility of the light being added
 vec3 shadowNormal = vec3(0.0f, 1.0f, 0.0f);     // the geometric normal (no normal map), as shaded
 
-// The share of map k's 3x3 PCF taps (each a bilinear 2x2 comparison, GL_LINEAR) that see the
-// surface, L towards the light. The lookup moves out along the geometric normal by about the
-// taps' spacing in world units (a texel's, wider for a sphere or tube light), more where the
-// light grazes (normal offset, Holbein 2011): a tap s texels away on a surface tilted from the
-// light meets the surface's own depth s texels further on, so the offset grows with s. The
+// The map's depth along the receiver's tangent plane per unit of the map's coordinates
+// (receiver plane depth bias, Isidoro 2006, "Shadow mapping: GPU-based tips and techniques"):
+// a wide tap compares against the plane's depth where it lands, so a flat or convex receiver's
+// own surface does not shadow it however far the taps spread. None where the plane grazes the
+// light (its projection degenerate): the normal offset alone there.
+vec2 receiverPlaneSlope(int k, vec3 position, vec3 coordinates, float w) {
+    vec3 t1 = normalize(cross(shadowNormal, abs(shadowNormal.x) > 0.9f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f)));
+    vec3 t2 = cross(shadowNormal, t1);
+    vec4 a = uShadowTransforms[k] * vec4(position + 1e-3f * w * t1, 1.0f);
+    vec4 b = uShadowTransforms[k] * vec4(position + 1e-3f * w * t2, 1.0f);
+    vec3 da = a.xyz / a.w - coordinates, db = b.xyz / b.w - coordinates;
+    mat2 J = mat2(da.xy, db.xy);   // the plane's two steps in the map
+    if (abs(determinant(J)) < 0.05f * length(da.xy) * length(db.xy)) {
+        return vec2(0.0f);
+    }
+    return transpose(inverse(J)) * vec2(da.z, db.z);
+}
+
+// Tap i of n of a Vogel disk (the golden angle's spiral): n points spread evenly over the unit
+// disk, no two at the same radius, so a shadow's edge crossing it is a ramp of n small steps.
+vec2 diskTap(int i, int n) {
+    float r = sqrt((float(i) + 0.5f) / float(n));
+    float theta = 2.39996323f * float(i);
+    return r * vec2(cos(theta), sin(theta));
+}
+
+// Map k's light seen at `scale` (tan units per world unit of the light's size) as an ellipse in
+// the map's coordinates: its columns the two half-axes, each at least a texel.
+mat2 sourceKernel(int k, float scale) {
+    vec4 source = uShadowSources[k];
+    vec2 axis = normalize(source.xy);
+    float texel = uShadowTexels[k].y;
+    return mat2(axis * (max(length(source.xy) * scale, 1.0f) * texel),
+                vec2(-axis.y, axis.x) * (max(source.z * scale, 1.0f) * texel));
+}
+
+// The view depth of map k's stored depth z (perspective: 1/d is linear in z).
+float shadowViewDepth(int k, float z) {
+    vec2 range = uShadowRanges[k];
+    return range.x * range.y / (range.y - z * (range.y - range.x));
+}
+
+// Percentage-closer soft shadows (Fernando 2005, "Percentage-closer soft shadows", SIGGRAPH
+// sketch), the receiver at `coordinates` and view depth dR: (1) the blocker search, the mean
+// depth of what lies nearer the light within the map's region from which a caster between the
+// near plane and the receiver can hide part of the light; (2) the penumbra by similar
+// triangles, w = (dR - dB) * lightSize / dB on the receiver, (dR - dB) / (dR dB) per unit of
+// light size seen from the light; (3) PCF over that width. Each tap compares against the
+// receiver's plane where it lands (`slope`).
+float softShadowVisibility(int k, vec3 coordinates, float dR, vec2 slope) {
+    const int BLOCKER_TAPS = 16, FILTER_TAPS = 32;
+    float nearPlane = uShadowRanges[k].x;
+    mat2 search = sourceKernel(k, max(dR - nearPlane, 0.0f) / (dR * nearPlane));
+    float blockers = 0.0f, blockerDepth = 0.0f;
+    for (int i = 0; i < BLOCKER_TAPS; ++i) {
+        vec2 o = search * diskTap(i, BLOCKER_TAPS);
+        float z = texture(uShadowDepthMaps, vec3(coordinates.xy + o, float(k))).r;
+        if (z < min(coordinates.z + dot(slope, o), 1.0f)) {   // the comparison clamps to the far depth, lit
+            blockers += 1.0f;
+            blockerDepth += z;
+        }
+    }
+    if (blockers == 0.0f) {
+        return 1.0f;
+    }
+    float dB = shadowViewDepth(k, blockerDepth / blockers);
+    mat2 penumbra = sourceKernel(k, max(dR - dB, 0.0f) / (dR * dB));
+    float seen = 0.0f;
+    for (int i = 0; i < FILTER_TAPS; ++i) {
+        vec2 o = penumbra * diskTap(i, FILTER_TAPS);
+        seen += texture(uShadowMaps, vec4(coordinates.xy + o, float(k), coordinates.z + dot(slope, o)));
+    }
+    return seen / float(FILTER_TAPS);
+}
+
+// The share of map k's taps that see the surface, L towards the light: PCSS for a sphere or
+// tube light, otherwise 3x3 PCF taps a texel apart (each a bilinear 2x2 comparison,
+// GL_LINEAR). The lookup moves out along the geometric normal by about the taps' spacing in
+// world units, more where the light grazes (normal offset, Holbein 2011): a tap s texels away
+// on a surface tilted from the light meets the surface's own depth s texels further on. The
 // map's own depth carries the slope-scaled offset (glPolygonOffset when drawn, renderer.cpp).
 float shadowVisibility(int k, vec3 L) {
     vec4 texel = uShadowTexels[k];
     float cosine = clamp(dot(shadowNormal, L), 0.0f, 1.0f);
     float w = (uShadowTransforms[k] * vec4(vPosition, 1.0f)).w;
     float offset = texel.x * texel.z * w * (1.0f + 2.0f * sqrt(1.0f - cosine * cosine));
-    vec4 p = uShadowTransforms[k] * vec4(vPosition + offset * shadowNormal, 1.0f);
+    vec3 lifted = vPosition + offset * shadowNormal;
+    vec4 p = uShadowTransforms[k] * vec4(lifted, 1.0f);
     vec3 coordinates = p.xyz / p.w;
+    if (uShadowSources[k].xy != vec2(0.0f)) {
+        return softShadowVisibility(k, coordinates, p.w, receiverPlaneSlope(k, lifted, coordinates, p.w));
+    }
     vec2 step = vec2(texel.y * texel.z);
     float seen = 0.0f;
     for (int y = -1; y <= 1; ++y) {
