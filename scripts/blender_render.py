@@ -7,6 +7,9 @@ Run inside Blender (Eevee needs a GL context, so a display: compare_blender.sh s
         --hdri studio.exr --material presets/gold.json --out eevee.png [--reruns 5]
     blender -b --factory-startup --python scripts/blender_render.py -- \
         --hdri studio.exr --model BoxTextured.glb --out eevee.png [--reruns 5]
+    blender -b --factory-startup --python scripts/blender_render.py -- \
+        --hdri studio.exr --model F.glb --out eevee.png --camera EX EY EZ TX TY TZ FOV \
+        --sun DX DY DZ STRENGTH ANGLE --ground
     blender -b --factory-startup --python scripts/blender_render.py -- --hdri studio.exr --probe
     blender -b --factory-startup --python scripts/blender_render.py -- --hdri studio.exr \
         --model BoxTextured.gltf --render-cycles [--local] [--base-color] [--samples 512] [--seed 0] \
@@ -25,6 +28,11 @@ With --model, a glTF model takes the sphere's place, imported by Blender's own g
 (which turns glTF's +Y up into Blender's +Z up as above) with its materials and texture maps; the
 re-renders change its first material's roughness, as the editor's Roughness slider changes the
 selected part's factor.
+
+With --sun (compare_blender.sh --shadows) a Sun lamp lights the scene besides the HDRI, along
+Patina's directional light's direction, its strength the same irradiance as that light's
+intensity, with Eevee's soft shadows (the lamp's angle makes the penumbra); with --ground a
+plane of Patina's floor's size, place and material lies under the model.
 
 Render mode times, in this one process, the first render (bpy.ops.render.render with
 write_still, so Eevee's shader compilation and the world's probe are in it) and then re-renders
@@ -100,6 +108,13 @@ def parse_arguments():
                              "(default Patina's default view)")
     parser.add_argument("--bounds", action="store_true",
                         help="print the --model's bounding box in Patina's axes and exit")
+    # compare_blender.sh --shadows: one shadow-casting lamp and a floor, as in Patina's scene.
+    parser.add_argument("--sun", type=float, nargs=5, metavar=("DX", "DY", "DZ", "STRENGTH", "ANGLE"),
+                        help="render mode: a Sun lamp casting Eevee's soft shadows, travelling along (DX, DY, DZ) "
+                             "(Patina's axes, as a directional light's direction), of STRENGTH (irradiance, as "
+                             "Patina's intensity) and ANGLE degrees across (the penumbra)")
+    parser.add_argument("--ground", action="store_true",
+                        help="render mode: Patina's display.ground \"floor\" under the model (scene/ground.cpp)")
     options = parser.parse_args(argv)
     if options.bounds and not options.model:
         parser.error("--bounds needs --model")
@@ -285,10 +300,82 @@ def load_environment(path):
     return image
 
 
+def world_vertices():
+    """Every mesh's vertices in world space, Patina's axes, as one (N, 3) array."""
+    import numpy
+    parts = []
+    for obj in model_objects():
+        local = numpy.empty(3 * len(obj.data.vertices), dtype=numpy.float64)
+        obj.data.vertices.foreach_get("co", local)
+        matrix = numpy.array(obj.matrix_world)
+        world = local.reshape(-1, 3) @ matrix[:3, :3].T + matrix[:3, 3]
+        parts.append(numpy.stack([world[:, 0], world[:, 2], -world[:, 1]], axis=1))   # Blender (x, y, z) -> Patina
+    return numpy.concatenate(parts)
+
+
+def add_ground(scene):
+    """Patina's floor (engine/scene/ground.cpp, groundUnder): a square level with the model's lowest
+    point, centred under its box, reaching 6 radii of its bounding sphere each way; its material
+    the floor's defaults (docs/FORMATS.md display.groundColor, groundRoughness): base colour 0.5,
+    roughness 0.8, metallic 0, specular 0.5."""
+    import numpy
+    points = world_vertices()
+    low, high = points.min(axis=0), points.max(axis=0)
+    middle = 0.5 * (low + high)
+    half = max(6.0 * 0.5 * float(numpy.linalg.norm(high - low)), 1e-3)
+    corners = [patina_to_blender(middle[0] + sx * half, low[1], middle[2] + sz * half)
+               for sx, sz in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    mesh_data = bpy.data.meshes.new("ground")
+    mesh_data.from_pydata([tuple(c) for c in corners], [], [(0, 1, 2, 3)])
+    mesh_data.update()
+    if mesh_data.polygons[0].normal.z < 0.0:   # facing up, Blender's +Z
+        mesh_data.flip_normals()
+    ground = bpy.data.objects.new("ground", mesh_data)
+    scene.collection.objects.link(ground)
+    material = bpy.data.materials.new("ground")
+    material.use_nodes = True
+    bsdf = next(node for node in material.node_tree.nodes if node.type == "BSDF_PRINCIPLED")
+    bsdf.inputs["Base Color"].default_value = (0.5, 0.5, 0.5, 1.0)
+    bsdf.inputs["Roughness"].default_value = 0.8
+    bsdf.inputs["Specular"].default_value = 0.5
+    bsdf.inputs["Metallic"].default_value = 0.0
+    mesh_data.materials.append(material)
+    report("ground", f"y={low[1]:.6g} centre=({middle[0]:.6g}, {middle[2]:.6g}) half_size={half:.6g}")
+
+
+def add_sun(scene, options):
+    """A Sun lamp with Eevee's soft shadows; its cascades reach just past the model from the camera."""
+    import numpy
+    dx, dy, dz, strength, angle = options.sun
+    sun = bpy.data.lights.new("sun", "SUN")
+    sun.energy = strength   # W/m^2: irradiance on a surface facing it, as Patina's directional intensity
+    sun.angle = math.radians(angle)
+    sun.use_shadow = True
+    sun.use_contact_shadow = False
+    points = world_vertices()
+    eye = numpy.array(options.camera[0:3])
+    reach = float(numpy.linalg.norm(points - eye, axis=1).max())
+    radius = 0.5 * float(numpy.linalg.norm(points.max(axis=0) - points.min(axis=0)))
+    sun.shadow_cascade_max_distance = reach + radius   # the shadows the model casts on the floor too
+    lamp = bpy.data.objects.new("sun", sun)
+    scene.collection.objects.link(lamp)
+    lamp.rotation_euler = patina_to_blender(dx, dy, dz).to_track_quat("-Z", "Y").to_euler()   # shines along -Z
+    scene.eevee.use_soft_shadows = True
+    report("eevee_shadow_settings", f"sun strength={sun.energy:g} angle={angle:g}deg "
+           f"cascade_size={scene.eevee.shadow_cascade_size} cascades={sun.shadow_cascade_count} "
+           f"cascade_max_distance={sun.shadow_cascade_max_distance:.4g} soft_shadows={scene.eevee.use_soft_shadows} "
+           f"high_bitdepth={scene.eevee.use_shadow_high_bitdepth}")
+
+
 def render(options):
     scene = empty_scene(*image_size(options))
     bsdf = import_model(options.model) if options.model else add_sphere(scene, options)
     add_view(scene, options)
+
+    if options.sun:
+        add_sun(scene, options)
+    if options.ground:
+        add_ground(scene)
 
     eevee = scene.eevee
     if options.samples:

@@ -1,7 +1,8 @@
 # shellcheck shell=bash
 # Sourced by scripts/compare_blender.sh and scripts/compare_cycles.sh: Debian's Blender (3.4.1),
 # installed with apt when it is missing (as root, else with sudo), and python3-numpy, which its
-# glTF importer needs and the package only recommends. Needs the caller's `say` and `die`, and
+# glTF importer needs and the package only recommends; and orbit_camera, the two scripts' camera
+# about a model's box. Needs the caller's `say` and `die`, and
 # $root, the repository.
 # shellcheck disable=SC2154   # root: the caller's
 
@@ -51,3 +52,17 @@ run_blender() {
 
 # value LOG KEY: what blender_render.py reported as "PATINA_COMPARE KEY VALUE".
 value() { awk -v key="$2" '$1 == "PATINA_COMPARE" && $2 == key { $1 = ""; $2 = ""; sub(/^ +/, ""); print; exit }' "$1"; }
+
+# orbit_camera BOUNDS THETA PHI ZOOM FOV: "EX EY EZ TX TY TZ" for the box "X0 Y0 Z0 X1 Y1 Z1"
+# (Patina's axes, blender_render.py --bounds), eye = target + d (sin phi sin theta, cos phi,
+# sin phi cos theta) as model-viewer's camera-orbit about the box's centre (THETA, PHI in
+# degrees), d = ZOOM * radius / sin(FOV / 2): ZOOM 1 fits the bounding sphere in the view.
+orbit_camera() {
+  awk -v b="$1" -v theta="$2" -v phi="$3" -v zoom="$4" -v fov="$5" 'BEGIN {
+    split(b, v, " "); pi = atan2(0, -1)
+    cx = (v[1] + v[4]) / 2; cy = (v[2] + v[5]) / 2; cz = (v[3] + v[6]) / 2
+    r = sqrt((v[4] - v[1])^2 + (v[5] - v[2])^2 + (v[6] - v[3])^2) / 2
+    d = zoom * r / sin(fov * pi / 360); t = theta * pi / 180; p = phi * pi / 180
+    printf "%.6g %.6g %.6g %.6g %.6g %.6g", cx + d * sin(p) * sin(t), cy + d * cos(p), cz + d * sin(p) * cos(t), cx, cy, cz
+  }'
+}

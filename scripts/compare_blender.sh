@@ -20,7 +20,15 @@
 # Patina's scene names it as its mesh, the re-renders and the editor's drag change its first
 # material's roughness, and the picture is blender_eevee_vs_patina_STEM.png.
 #
-# Usage: bash scripts/compare_blender.sh [--model F.gltf|F.glb]   (BUILD_DIR overrides build/)
+# With --shadows (issue 37 item 6) both sides also have one shadow-casting sun and a floor: in
+# Blender a Sun lamp with Eevee's soft shadows (its angle, 3 degrees, makes the penumbra) and a
+# plane of Patina's floor's size, place and material; in Patina's scene a directional light
+# along the same direction with "shadows": true, of the same strength (the irradiance on a
+# surface facing it), and display.ground "floor". A --model is then framed from its bounding
+# box (blender_render.py --bounds) as compare_cycles.sh frames it; the sphere keeps the default
+# view. The goal is 100x the drag frame, and the picture's name ends in _shadows.
+#
+# Usage: bash scripts/compare_blender.sh [--model F.gltf|F.glb] [--shadows]   (BUILD_DIR overrides build/)
 #
 # Installs Debian's `blender` (3.4.1) and python3-numpy (blender_render.py cleans the HDRI with
 # it, and Blender's glTF importer needs it) with apt when they are missing (as root, else with
@@ -39,13 +47,20 @@ patina="$root/$build_dir/app/patina"
 hdri=/usr/share/blender/datafiles/studiolights/world/studio.exr
 preset="$root/presets/gold.json"
 picture="$root/docs/performance/blender_eevee_vs_patina.png"
-model=''
-if [ "${1:-}" = --model ]; then
-  [ -f "${2:-}" ] || { echo "compare_blender: --model needs a .gltf or .glb file" >&2; exit 2; }
-  model=$(realpath "$2")
-  stem=$(basename "$model"); stem=${stem%.*}
-  picture="$root/docs/performance/blender_eevee_vs_patina_$stem.png"
-fi
+model='' shadows=''
+while [ $# -gt 0 ]; do
+  case $1 in
+    --model)
+      [ -f "${2:-}" ] || { echo "compare_blender: --model needs a .gltf or .glb file" >&2; exit 2; }
+      model=$(realpath "$2")
+      stem=$(basename "$model"); stem=${stem%.*}
+      picture="$root/docs/performance/blender_eevee_vs_patina_$stem.png"
+      shift 2 ;;
+    --shadows) shadows=1; shift ;;
+    *) echo "compare_blender: unknown argument '$1' (usage: [--model F.gltf|F.glb] [--shadows])" >&2; exit 2 ;;
+  esac
+done
+[ -z "$shadows" ] || picture="${picture%.png}_shadows.png"
 size=512
 warm_runs=5
 # Blender's Environment Texture puts the image's centre along its +X; Patina's lies along its -Z,
@@ -54,6 +69,12 @@ warm_runs=5
 # environment keeps rotationDegrees 0.
 blender_world_rotation=-90
 patina_rotation=0
+# --shadows: the sun, where its light travels in Patina's axes (from the upper left of the
+# framed model, so that its shadows fall where the camera sees them), its strength and Eevee's
+# angle; the model's camera orbit (theta, phi in degrees, zoom) as compare_cycles.sh's, and the
+# field of view of the default camera.
+sun_direction='0.5 -1 -0.3' sun_strength=3 sun_angle=3
+orbit='30 65 0.8' fov=45
 
 say() { echo "compare_blender: $*" >&2; }
 die() { say "error: $*"; exit 1; }
@@ -110,11 +131,37 @@ say "checking the environment's orientation in Blender (a probe render)"
 run_blender "$work/probe.log" --hdri "$hdri" --probe --world-rotation "$blender_world_rotation"
 grep '^probe:' "$work/probe.log" >&2 || true
 
+staging=() patina_staging=''
+if [ -n "$shadows" ]; then
+  camera="0 0.6 3.4 0 0 0"
+  if [ -n "$model" ]; then
+    run_blender "$work/bounds.log" --hdri "$hdri" --model "$model" --bounds
+    bounds=$(value "$work/bounds.log" bounds)
+    [ -n "$bounds" ] || die "Blender reported no bounding box for $model"
+    # shellcheck disable=SC2086   # the orbit's three numbers
+    camera=$(orbit_camera "$bounds" $orbit "$fov")
+  fi
+  # shellcheck disable=SC2206   # numbers
+  staging=(--camera $camera "$fov" --sun $sun_direction "$sun_strength" "$sun_angle" --ground)
+  patina_staging=$(python3 - "$camera" "$fov" "$sun_direction" "$sun_strength" <<'PY'
+import json, sys
+camera = [float(v) for v in sys.argv[1].split()]
+print(json.dumps({
+    "camera": {"position": camera[0:3], "target": camera[3:6], "fovYDegrees": float(sys.argv[2])},
+    "light": {"type": "directional", "name": "sun", "enabled": True, "color": [1.0, 1.0, 1.0],
+              "intensity": float(sys.argv[4]), "direction": [float(v) for v in sys.argv[3].split()],
+              "shadows": True},
+    "ground": "floor"}))
+PY
+)
+fi
+
 say "rendering with Blender $blender_version Eevee: the first image, then $warm_runs re-renders after a roughness change"
 blender_start=$EPOCHREALTIME
 if [ -n "$model" ]; then shown=(--model "$model"); else shown=(--material "$preset"); fi
 run_blender "$work/blender.log" --hdri "$hdri" "${shown[@]}" --out "$work/eevee.png" \
-  --scratch "$work/eevee_rerender.png" --size "$size" --reruns "$warm_runs" --world-rotation "$blender_world_rotation"
+  --scratch "$work/eevee_rerender.png" --size "$size" --reruns "$warm_runs" --world-rotation "$blender_world_rotation" \
+  "${staging[@]}"
 [ -s "$work/eevee.png" ] || die "Blender wrote no image"
 eevee_first=$(value "$work/blender.log" first_render_s)
 eevee_rerender=$(value "$work/blender.log" rerender_median_s)
@@ -125,18 +172,24 @@ blender_to_image=$(elapsed "$blender_start" "$(value "$work/blender.log" first_i
 
 # --- 4. Patina -------------------------------------------------------------------------------
 scene="$work/scene.json"
-python3 - "$preset" "$hdri" "$patina_rotation" "$model" >"$scene" <<'PY'
+python3 - "$preset" "$hdri" "$patina_rotation" "$model" "$patina_staging" >"$scene" <<'PY'
 import json, sys
 preset = json.load(open(sys.argv[1], encoding="utf-8"))
 material = {key: preset[key] for key in ("format", "version", "name", "baseColor", "roughness", "specular", "metallic")}
-print(json.dumps({
+scene = {
     "format": "patina-scene", "version": 2, "mesh": sys.argv[4] or "sphere", "material": material,
     "camera": {"position": [0.0, 0.6, 3.4], "target": [0.0, 0.0, 0.0], "fovYDegrees": 45.0},
     "lights": [{"type": "environment", "name": "studio", "enabled": True, "source": sys.argv[2],
                 "intensity": 1.0, "rotationDegrees": float(sys.argv[3])}],
     "display": {"exposure": 0.0, "tonemap": "none", "background": [0.0, 0.0, 0.0],
                 "backgroundEnvironment": True, "backgroundBlur": 0.0},
-}, indent=2))
+}
+if sys.argv[5]:   # --shadows: the framed camera, the sun and the floor
+    staging = json.loads(sys.argv[5])
+    scene["camera"] = staging["camera"]
+    scene["lights"].append(staging["light"])
+    scene["display"]["ground"] = staging["ground"]
+print(json.dumps(scene, indent=2))
 PY
 
 export PATINA_CACHE_DIR="$work/patina-cache"   # empty: the first render decodes and prefilters
@@ -199,22 +252,30 @@ drag_p90=$(sed -E 's/.*p90 ([0-9.]+) ms.*/\1/' <<<"$drag_line")
 
 # --- 5. The picture and the table --------------------------------------------------------------
 mkdir -p "$(dirname "$picture")"
+eevee_caption="Blender $blender_version Eevee, Standard view" patina_caption="Patina, tone map none"
+[ -z "$shadows" ] || eevee_caption="Eevee, soft shadows" patina_caption="Patina, shadows"
 python3 "$root/scripts/side_by_side.py" "$picture" \
-  "$work/eevee.png" "Blender $blender_version Eevee, Standard view" \
-  "$work/patina.png" "Patina, tone map none" || die "could not write $picture"
+  "$work/eevee.png" "$eevee_caption" \
+  "$work/patina.png" "$patina_caption" || die "could not write $picture"
 
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", a / b }'; }
 verdict() { awk -v r="$1" -v goal="$2" 'BEGIN { print (r >= goal ? "met" : "missed") }'; }
 drag_ratio=$(ratio "$(awk -v s="$eevee_rerender" 'BEGIN { print s * 1000 }')" "$drag_ms")
 cold_ratio=$(ratio "$eevee_first" "$patina_cold")
 ms() { awk -v s="$1" 'BEGIN { printf "%.0f ms", s * 1000 }'; }
+drag_goal=50 staged='' shadow_settings=''
+if [ -n "$shadows" ]; then
+  drag_goal=100
+  staged=", a sun along ($sun_direction) of strength $sun_strength casting shadows (Eevee: soft, ${sun_angle} degrees across; Patina: its shadow map) and the floor under it; camera $camera, ${fov} degrees"
+  shadow_settings="; $(value "$work/blender.log" eevee_shadow_settings); $(value "$work/blender.log" ground)"
+fi
 
 cat <<EOF
 
 Blender $blender_version Eevee against Patina ($(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "no git")), ${size}x${size}, $(nproc) cores, OpenGL: $gl_renderer
-Shown: ${model:-the UV sphere with presets/gold.json} under ${hdri##*/}
+Shown: ${model:-the UV sphere with presets/gold.json} under ${hdri##*/}$staged
 Load average at the start (1, 5, 15 min): $load_at_start; at the end: $(cut -d' ' -f1-3 /proc/loadavg)
-Eevee: $eevee_settings
+Eevee: $eevee_settings$shadow_settings
 Eevee re-renders (s): $eevee_rerenders; Patina warm renders (s): ${warm_times[*]}
 Editor viewport: $viewport pixels (the drag: $drag_frames frames, p90 $drag_p90 ms)
 
@@ -230,7 +291,7 @@ Editor viewport: $viewport pixels (the drag: $drag_frames frames, p90 $drag_p90 
 
 | ratio | measured | goal | |
 |---|---:|---:|---|
-| Eevee re-render / Patina drag frame | ${drag_ratio}x | 50x | $(verdict "$drag_ratio" 50) |
+| Eevee re-render / Patina drag frame | ${drag_ratio}x | ${drag_goal}x | $(verdict "$drag_ratio" "$drag_goal") |
 | Eevee first render / Patina cold render | ${cold_ratio}x | 5x | $(verdict "$cold_ratio" 5) |
 
 Picture: ${picture#"$root"/}

@@ -117,19 +117,6 @@ scenes=(
   "2CylinderEngine $assimp/2CylinderEngine-glTF-Binary/2CylinderEngine.glb 192 192 30 65 0.8"
 )
 
-# camera BOUNDS THETA PHI ZOOM: "EX EY EZ TX TY TZ" for the box "X0 Y0 Z0 X1 Y1 Z1" (Patina's
-# axes), eye = target + d (sin phi sin theta, cos phi, sin phi cos theta) as model-viewer's
-# camera-orbit, d = ZOOM * radius / sin(fov / 2).
-camera() {
-  awk -v b="$1" -v theta="$2" -v phi="$3" -v zoom="$4" -v fov="$fov" 'BEGIN {
-    split(b, v, " "); pi = atan2(0, -1)
-    cx = (v[1] + v[4]) / 2; cy = (v[2] + v[5]) / 2; cz = (v[3] + v[6]) / 2
-    r = sqrt((v[4] - v[1])^2 + (v[5] - v[2])^2 + (v[6] - v[3])^2) / 2
-    d = zoom * r / sin(fov * pi / 360); t = theta * pi / 180; p = phi * pi / 180
-    printf "%.6g %.6g %.6g %.6g %.6g %.6g", cx + d * sin(p) * sin(t), cy + d * cos(p), cz + d * sin(p) * cos(t), cx, cy, cz
-  }'
-}
-
 sheet=()
 csv="$out_dir/cycles.csv"
 echo "scene,image,against,mean_abs_srgb,mean_signed_srgb,pixels" >"$csv"
@@ -153,7 +140,7 @@ for line in "${scenes[@]}"; do
   run_blender "$dir/bounds.log" --hdri "$hdri" --model "$file" --bounds
   bounds=$(value "$dir/bounds.log" bounds)
   [ -n "$bounds" ] || die "Blender reported no bounding box for $file"
-  read -r ex ey ez tx ty tz <<<"$(camera "$bounds" "$theta" "$phi" "$zoom")"
+  read -r ex ey ez tx ty tz <<<"$(orbit_camera "$bounds" "$theta" "$phi" "$zoom" "$fov")"
   w=$((width * factor)) h=$((height * factor))
   cat >"$dir/scene.json" <<EOF
 {"format": "patina-scene", "version": 3, "mesh": "$file",
