@@ -215,7 +215,8 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     const ReferenceLayers layers{referenceCoat(options, N, V), referenceSheen(options, N, V)};
     addExactLights(estimate.value, model, material, lights, layers, P, N, V, options);
     if (transmits) {
-        estimate.value += transmittedLights(transmission, lights, P, N, V, options);
+        estimate.transmitted = transmittedLights(transmission, lights, P, N, V, options);
+        estimate.value += estimate.transmitted;
     }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
@@ -228,6 +229,7 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     if (transmits) {
         const SampleMoments through = transmissionMoments(transmission, environment, N, V, options);
         variance += through.varianceOfMean(n) * (occlusion * occlusion);
+        estimate.transmitted += glm::vec3(through.mean(n) * occlusion);
         estimate.value += glm::vec3(through.mean(n) * occlusion);
     }
     // Independent estimates: their variances add.
