@@ -92,14 +92,16 @@ PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, Channe
 }
 
 // The pixel's radiance once every light is in: the lobes and the emission; with layers, the
-// base and sheen (layeredLighting), the light through the wall and the emission seen through the
-// coat, plus the coat's own (clearcoatOver), as shade.frag sums them.
+// base and sheen (layeredLighting), the light through the wall (weighed by a sheen's albedo
+// scaling towards V, sheenViewWeight) and the emission seen through the coat, plus the coat's own
+// (clearcoatOver), as shade.frag sums them.
 PATINA_INLINE ChannelInputs channelFinished(ChannelInputs c, ChannelLayers layers) {
     if (!layers.coated && !layers.sheened && !layers.transmits) {
         c.radiance = c.diffuse + c.specularLighting + c.emission;
         return c;
     }
-    vec3 base = c.layeredLighting + c.transmission + c.emission;
+    real throughSheen = layers.sheened ? sheenViewWeight(layers.sheen) : 1.0f;
+    vec3 base = c.layeredLighting + throughSheen * c.transmission + c.emission;
     c.radiance = layers.coated ? clearcoatOver(base, c.clearcoat, layers.coat) : base;
     return c;
 }

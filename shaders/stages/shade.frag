@@ -624,7 +624,11 @@ void main() {
 #endif
 #endif
 #ifdef PATINA_TRANSMISSION
-    // Through the base's wall, beneath the coat as the base's own light.
+    // Through the base's wall, beneath the coat as the base's own light, and beneath the sheen:
+    // weighed by its albedo scaling towards V (sheenViewWeight).
+#ifdef PATINA_SHEEN
+    transmitted *= sheenViewWeight(sheen);
+#endif
     radiance += transmitted;
 #endif
 #ifdef PATINA_CLEARCOAT

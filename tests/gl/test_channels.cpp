@@ -285,8 +285,12 @@ TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
 // bench's car paint coat, velvet sheen or clear glass (docs/SHADING.md S5, S6, S7), the glass
 // rough and tinted green over a thickness (KHR_materials_volume's T in the channel too).
 Scene layeredScene(const std::string& layer) {
-    Scene scene = withBenchLayer(defaultScene(), layer);
-    if (layer == "transmission") {
+    Scene scene = withBenchLayer(defaultScene(), layer == "sheened glass" ? "transmission" : layer);
+    if (layer == "sheened glass") {   // the velvet's sheen over the glass: the sheen weighs what passes
+        scene.material.sheenColor = withBenchLayer(scene, "sheen").material.sheenColor;
+        scene.material.sheenRoughness = withBenchLayer(scene, "sheen").material.sheenRoughness;
+    }
+    if (layer == "transmission" || layer == "sheened glass") {
         scene.material.roughness = 0.2f;
         scene.material.thickness = 0.5f;
         scene.material.attenuationColor = {0.6f, 0.9f, 0.7f};
@@ -338,10 +342,11 @@ TEST_F(Channels, TheLayersChannelsAreTheirOwnLightAndZeroWithoutTheLayer) {
 // With a layer the CPU twin's radiance (what `inspect` and the read-out show) is the render's:
 // the base seen through the coat and weighed by the sheen's albedo scaling, the layer's own
 // light added; without the layers in the sum a coat's highlight, a sheen's rim or what shows
-// through a glass (and the diffuse it takes away) would be missing. Nothing stands behind the
-// sphere, so the render's scene behind it adds nothing the twin lacks.
+// through a glass (and the diffuse it takes away) would be missing; under a sheen the glass's
+// light is weighed by the sheen's albedo scaling on both. Nothing stands behind the sphere, so
+// the render's scene behind it adds nothing the twin lacks.
 TEST_F(Channels, TheCpuTwinsRadianceWithALayerIsTheRenders) {
-    for (const std::string layer : {"clearcoat", "sheen", "transmission"}) {
+    for (const std::string layer : {"clearcoat", "sheen", "transmission", "sheened glass"}) {
         const Scene scene = layeredScene(layer);
         const PreparedScene prepared{scene, test::preparedDefault().mesh, test::preparedDefault().environment};
         const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
