@@ -100,8 +100,9 @@ PATINA_INLINE ChannelInputs channelFinished(ChannelInputs c, ChannelLayers layer
         c.radiance = c.diffuse + c.specularLighting + c.emission;
         return c;
     }
-    real throughSheen = layers.sheened ? sheenViewWeight(layers.sheen) : 1.0f;
-    vec3 base = c.layeredLighting + throughSheen * c.transmission + c.emission;
+    // The transmission as it adds to the radiance: beneath a sheen, weighed by its scaling.
+    c.transmission = (layers.sheened ? sheenViewWeight(layers.sheen) : 1.0f) * c.transmission;
+    vec3 base = c.layeredLighting + c.transmission + c.emission;
     c.radiance = layers.coated ? clearcoatOver(base, c.clearcoat, layers.coat) : base;
     return c;
 }

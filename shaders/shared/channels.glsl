@@ -71,8 +71,8 @@ struct ChannelInputs {
     // irradiance share) and the light through the wall (transmission.glsl's f_t from every light
     // behind, the environment along -V), as they add to the radiance; 0 for a part without the
     // layer. The base's lobes above are what the base reflects beneath them (a transmission's
-    // diffuse reduced by transmissionDiffuse), and the transmission what passes the wall beneath
-    // the sheen (channelFinished weighs it by the sheen's albedo scaling).
+    // diffuse reduced by transmissionDiffuse), and the transmission what passes the wall as it
+    // adds beneath the coat (channelFinished weighs it by a sheen's albedo scaling).
     vec3 clearcoat;
     vec3 sheen;
     vec3 transmission;

@@ -126,8 +126,8 @@ TEST(AlbedoCurve, AGlassCurveCarriesItsTransmittedAlbedo) {
 // through a glass's wall too. A white sheen over a white clear glass under the furnace: the
 // sheen's own light plus what it leaves of the reflection and of the transmission stays at or
 // under 1, in the product (the CPU twin) and the truth (the ground truth's sheened BRDF and
-// BTDF) alike, which agree; without the weight on the transmission both passed 1 by about
-// the sheen's albedo.
+// BTDF) alike, which agree, their transmitted shares too (both after the sheen's weight);
+// without the weight on the transmission both passed 1 by about the sheen's albedo.
 TEST(AlbedoCurve, ASheenOverAGlassWeighsItsTransmittedLightToo) {
     MaterialParameters glass = whiteGlass();
     glass.sheenColor = glm::vec3(1.0f);
@@ -137,6 +137,10 @@ TEST(AlbedoCurve, ASheenOverAGlassWeighsItsTransmittedLightToo) {
         EXPECT_LE(p.truth.x, 1.0f + 3.0f * p.standardError.x) << p.thetaVDegrees;
         if (p.thetaVDegrees < 80.0f) {
             EXPECT_NEAR(p.product.x, p.truth.x, 0.03f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        }
+        if (p.thetaVDegrees < 60.0f) {
+            EXPECT_NEAR(p.productTransmitted.x, p.truthTransmitted.x, 0.02f + 3.0f * p.standardError.x)
+                << p.thetaVDegrees;
         }
     }
 }
