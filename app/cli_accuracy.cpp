@@ -97,7 +97,8 @@ Command addFurnaceCommand(CLI::App& app) {
     return addMeasurementCommand(
         app, "furnace",
         "White furnace: specular albedo with F = 1 of every model (furnace.csv, furnace.png), and a white "
-        "dielectric and metal whole, split sum and ground truth, under epic, gltf and gltf-single (material_furnace.csv)",
+        "dielectric, metal and thin-walled glass (reflected + transmitted) whole, split sum and ground truth, under "
+        "epic, gltf and gltf-single (material_furnace.csv)",
         [](const std::filesystem::path& folder, bool quick) {
             const std::vector<FurnaceCurve> curves = whiteFurnace(quick ? 10 : 40, quick ? 1024 : 4096);
             writeOutputText((folder / "furnace.csv").string(), furnaceCsv(curves));

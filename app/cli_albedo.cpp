@@ -8,15 +8,20 @@
 namespace patina::cli {
 
 namespace {
+// The transmitted columns (KHR_materials_transmission, 0 without) are the part of split_sum and
+// truth that comes through the wall; the rest of each is the reflected albedo.
 std::string albedoCsv(const std::vector<AlbedoPoint>& curve) {
-    std::string csv =
-        "theta_v_deg,split_sum_r,split_sum_g,split_sum_b,truth_r,truth_g,truth_b,truth_se_r,truth_se_g,truth_se_b\n";
-    char row[320];
+    std::string csv = "theta_v_deg,split_sum_r,split_sum_g,split_sum_b,truth_r,truth_g,truth_b,truth_se_r,truth_se_g,"
+                      "truth_se_b,transmitted_split_sum_r,transmitted_split_sum_g,transmitted_split_sum_b,"
+                      "transmitted_truth_r,transmitted_truth_g,transmitted_truth_b\n";
+    char row[512];
     for (const AlbedoPoint& p : curve) {
-        std::snprintf(row, sizeof row, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", double(p.thetaVDegrees),
-                      double(p.product.r), double(p.product.g), double(p.product.b), double(p.truth.r),
-                      double(p.truth.g), double(p.truth.b), double(p.standardError.r), double(p.standardError.g),
-                      double(p.standardError.b));
+        std::snprintf(row, sizeof row, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+                      double(p.thetaVDegrees), double(p.product.r), double(p.product.g), double(p.product.b),
+                      double(p.truth.r), double(p.truth.g), double(p.truth.b), double(p.standardError.r),
+                      double(p.standardError.g), double(p.standardError.b), double(p.productTransmitted.r),
+                      double(p.productTransmitted.g), double(p.productTransmitted.b), double(p.truthTransmitted.r),
+                      double(p.truthTransmitted.g), double(p.truthTransmitted.b));
         csv += row;
     }
     return csv;

@@ -60,6 +60,7 @@ Json storyJson(const PixelStory& s) {
             {"environment", s.environment ? shareJson(*s.environment) : Json(nullptr)},
             {"clearcoat", array(c.clearcoat)},
             {"sheen", array(c.sheen)},
+            {"transmission", array(c.transmission)},
             {"radiance", array(c.radiance)},
             {"display", {s.display[0], s.display[1], s.display[2]}}};
 }

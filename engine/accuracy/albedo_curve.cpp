@@ -25,12 +25,14 @@ const Environment& whiteFurnace() {
     return *white;
 }
 bool layered(const MaterialParameters& material) {
-    return material.clearcoat > 0.0f || material.sheenColor != glm::vec3(0.0f);
+    return material.clearcoat > 0.0f || material.sheenColor != glm::vec3(0.0f) || material.transmission > 0.0f;
 }
 
-// A material with a coat or a sheen as the renderer shades it under the furnace: the CPU twin's
-// radiance (shade.frag's environment with its layers, channel_inputs.h), no lights.
-glm::vec3 layeredProduct(const MaterialParameters& material, const Environment& white, glm::vec3 N, glm::vec3 V) {
+// A material with a coat, a sheen or a transmission as the renderer shades it under the
+// furnace: the CPU twin's (shade.frag's environment with its layers, channel_inputs.h), no
+// lights; its radiance and its light through the wall.
+shader::ChannelInputs layeredProduct(const MaterialParameters& material, const Environment& white, glm::vec3 N,
+                                     glm::vec3 V) {
     ChannelPoint point = channelPointOf(material);
     point.geometryNormal = point.N = N;
     point.V = V;
@@ -38,7 +40,7 @@ glm::vec3 layeredProduct(const MaterialParameters& material, const Environment& 
     environment.prefiltered = [&white](glm::vec3 d, float lod) { return sampleCube(white.prefiltered, d, lod); };
     environment.maxLod = white.maxLod();
     environment.irradiance = irradianceReader(white);
-    return gatherChannelInputs(material.model, point, {}, -1, -1, &environment).radiance;
+    return gatherChannelInputs(material.model, point, {}, -1, -1, &environment);
 }
 }  // namespace
 
@@ -52,8 +54,13 @@ AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, in
     const glm::vec3 V(std::sin(theta), 0.0f, std::cos(theta));
     AlbedoPoint point;
     point.thetaVDegrees = thetaVDegrees;
-    point.product = layered(material) ? layeredProduct(material, white, N, V)
-                                      : shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
+    if (layered(material)) {
+        const shader::ChannelInputs layers = layeredProduct(material, white, N, V);
+        point.product = layers.radiance;
+        point.productTransmitted = layers.transmission;
+    } else {
+        point.product = shadeEnvironmentOnCpu(material.model, surface, white, 1.0f, 0.0f, N, V);
+    }
     ReferenceOptions options;
     options.samples = samples;
     options.seed = seed;
@@ -61,10 +68,13 @@ AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, in
     options.clearcoatRoughness = material.clearcoatRoughness;
     options.sheenColor = material.sheenColor;
     options.sheenRoughness = material.sheenRoughness;
+    options.transmission = material.transmission;
+    options.transmissionAttenuation = volumeAttenuationOf(material);
     const ReferenceEstimate truth = referenceRadiance(material.model, surface, reference, {}, glm::vec3(0.0f), N, V,
                                                       options);
     point.truth = truth.value;
     point.standardError = truth.standardError;
+    point.truthTransmitted = truth.transmitted;
     return point;
 }
 
@@ -75,6 +85,23 @@ std::vector<AlbedoPoint> albedoCurve(const MaterialParameters& material, int poi
     });
     return curve;
 }
+
+namespace {
+// A material's transmitted albedo as a dashed line of the split sum's in its colour (none when it
+// transmits nothing): what of the curve above it comes through the wall.
+void addTransmittedSeries(ChartPanel& panel, const std::string& name, const std::vector<AlbedoPoint>& curve,
+                          size_t style) {
+    ChartSeries transmitted{name + ": transmitted (split sum)", {}, style, true, false, true, {}, {}};
+    bool any = false;
+    for (const AlbedoPoint& p : curve) {
+        transmitted.points.emplace_back(p.thetaVDegrees, luminance(p.productTransmitted));
+        any = any || p.productTransmitted != glm::vec3(0.0f);
+    }
+    if (any) {
+        panel.series.push_back(std::move(transmitted));
+    }
+}
+}  // namespace
 
 Chart albedoChart(const std::vector<std::pair<std::string, std::vector<AlbedoPoint>>>& curves) {
     ChartPanel panel{"Directional albedo under a white furnace", "theta_v (degrees)", "albedo (luminance)", false,
@@ -89,6 +116,7 @@ Chart albedoChart(const std::vector<std::pair<std::string, std::vector<AlbedoPoi
         }
         panel.series.push_back(std::move(product));
         panel.series.push_back(std::move(truth));
+        addTransmittedSeries(panel, curves[i].first, curves[i].second, i);
     }
     Chart chart;
     chart.panels.push_back(std::move(panel));

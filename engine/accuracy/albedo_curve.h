@@ -14,11 +14,16 @@
 
 namespace patina {
 
+// With KHR_materials_transmission the furnace's light reaches V through the wall too: `product`
+// and `truth` are then the reflected plus the transmitted albedo (the light towards V under a
+// white environment all around), and the `transmitted` fields that share alone (0 without).
 struct AlbedoPoint {
     float thetaVDegrees = 0.0f;
     glm::vec3 product{0.0f};        // the split sum under the white furnace
     glm::vec3 truth{0.0f};          // the exact integral, estimated
     glm::vec3 standardError{0.0f};  // of `truth`
+    glm::vec3 productTransmitted{0.0f};   // of `product`, through the wall (transmission.glsl)
+    glm::vec3 truthTransmitted{0.0f};     // of `truth`, through the wall (the BTDF sampled)
 };
 
 // `points` angles from 0 to 88.5 degrees (where NoV stays clear of the floor 1e-4), the truth

@@ -80,10 +80,15 @@ Chart furnaceChart(const std::vector<FurnaceCurve>& curves) {
     return chart;
 }
 
+namespace {
+// materialFurnace's materials, all white: a dielectric, a metal and a thin-walled glass.
+constexpr const char* kFurnaceMaterials[] = {"white dielectric", "white metal", "white glass"};
+}  // namespace
+
 std::vector<MaterialFurnaceRow> materialFurnace(const std::vector<BrdfModelId>& models, int steps, int samples) {
     std::vector<MaterialFurnaceRow> rows;
     for (BrdfModelId model : models) {
-        for (const auto& [name, metallic] : {std::pair{"white dielectric", 0.0f}, std::pair{"white metal", 1.0f}}) {
+        for (const char* name : kFurnaceMaterials) {
             for (double mu : {1.0, 0.25}) {
                 for (int i = 0; i <= steps; ++i) {
                     rows.push_back({std::string(brdfModel(model).name), name, mu, double(i) / steps});
@@ -97,21 +102,25 @@ std::vector<MaterialFurnaceRow> materialFurnace(const std::vector<BrdfModelId>& 
         white.model = *brdfModelFromName(row.model);
         white.baseColor = glm::vec3(1.0f);
         white.metallic = row.material == "white metal" ? 1.0f : 0.0f;
+        white.transmission = row.material == "white glass" ? 1.0f : 0.0f;
         white.roughness = float(row.roughness);
         const AlbedoPoint p = albedoAt(white, glm::degrees(float(std::acos(row.mu))), samples, 0xD1B54A32D192ED03ull * (i + 1));
         row.splitSum = luminance(p.product);
         row.truth = luminance(p.truth);
         row.truthStandardError = luminance(p.standardError);
+        row.splitSumTransmitted = luminance(p.productTransmitted);
+        row.truthTransmitted = luminance(p.truthTransmitted);
     });
     return rows;
 }
 
 std::string materialFurnaceCsv(const std::vector<MaterialFurnaceRow>& rows) {
-    std::string csv = "model,material,mu,roughness,split_sum,truth,truth_se\n";
-    char line[200];
+    std::string csv = "model,material,mu,roughness,split_sum,truth,truth_se,split_sum_transmitted,truth_transmitted\n";
+    char line[240];
     for (const MaterialFurnaceRow& r : rows) {
-        std::snprintf(line, sizeof line, "%s,%s,%.3g,%.4g,%.6f,%.6f,%.6f\n", r.model.c_str(), r.material.c_str(), r.mu,
-                      r.roughness, r.splitSum, r.truth, r.truthStandardError);
+        std::snprintf(line, sizeof line, "%s,%s,%.3g,%.4g,%.6f,%.6f,%.6f,%.6f,%.6f\n", r.model.c_str(),
+                      r.material.c_str(), r.mu, r.roughness, r.splitSum, r.truth, r.truthStandardError,
+                      r.splitSumTransmitted, r.truthTransmitted);
         csv += line;
     }
     return csv;

@@ -214,8 +214,12 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     ReferenceEstimate estimate = areaLightReference(model, material, lights, P, N, V, options);
     const ReferenceLayers layers{referenceCoat(options, N, V), referenceSheen(options, N, V)};
     addExactLights(estimate.value, model, material, lights, layers, P, N, V, options);
+    // KHR_materials_sheen's albedo scaling weighs all beneath the fibres, the light through the
+    // wall leaving them towards V too (sheen.glsl's sheenViewWeight).
+    const float throughSheen = hasReferenceSheen(options) ? shader::sheenViewWeight(layers.sheen) : 1.0f;
     if (transmits) {
-        estimate.value += transmittedLights(transmission, lights, P, N, V, options);
+        estimate.transmitted = throughSheen * transmittedLights(transmission, lights, P, N, V, options);
+        estimate.value += estimate.transmitted;
     }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
@@ -227,8 +231,10 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     estimate.value += glm::vec3(moments.mean(n) * occlusion);
     if (transmits) {
         const SampleMoments through = transmissionMoments(transmission, environment, N, V, options);
-        variance += through.varianceOfMean(n) * (occlusion * occlusion);
-        estimate.value += glm::vec3(through.mean(n) * occlusion);
+        const double weight = occlusion * double(throughSheen);
+        variance += through.varianceOfMean(n) * (weight * weight);
+        estimate.transmitted += glm::vec3(through.mean(n) * weight);
+        estimate.value += glm::vec3(through.mean(n) * weight);
     }
     // Independent estimates: their variances add.
     estimate.standardError = glm::vec3(glm::sqrt(variance + glm::dvec3(estimate.standardError * estimate.standardError)));

@@ -61,6 +61,9 @@ glm::vec3 volumeAttenuationOf(const MaterialParameters& material);
 struct ReferenceEstimate {
     glm::vec3 value{0.0f};
     glm::vec3 standardError{0.0f};
+    // The share of `value` through the wall (ReferenceOptions::transmission; 0 without), for the
+    // views that show the transmitted albedo beside the reflected.
+    glm::vec3 transmitted{0.0f};
 };
 
 // A Monte Carlo estimate's running sums: its mean, and the variance of that mean (the sample

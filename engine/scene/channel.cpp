@@ -17,7 +17,7 @@ constexpr std::string_view kNames[] = {
     "uv1",        "geometry-normal", "shading-normal", "tangent",      "bitangent-sign",
     "nov",        "D",               "G",         "F",                 "diffuse",
     "specular-lighting", "environment-diffuse", "environment-specular", "light:", "invalid",
-    "pbr-validation", "clearcoat", "sheen"};
+    "pbr-validation", "clearcoat", "sheen", "transmission"};
 static_assert(std::size(kNames) == size_t(shader::CHANNEL_COUNT), "a name for each channel of channels.glsl");
 constexpr std::string_view kLightPrefix = "light:";
 }  // namespace

@@ -33,7 +33,7 @@ inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vecto
         c = channelWithLight(c, layers, lights[size_t(i)], i == asked, i == key, p.P, p.V);
     }
     if (environment) {
-        SurfaceMaterial material = deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic);
+        SurfaceMaterial material = channelMaterial(c, layers);
         const vec2 rotation = environmentRotation(environment->rotationDegrees);
         LightShares shares = environmentShares(environment->prefiltered, environment->maxLod, environment->irradiance,
                                                rotation.x, rotation.y, material, p.N, p.V, false);

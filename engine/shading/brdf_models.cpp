@@ -266,6 +266,9 @@ ChannelPoint channelPointOf(const MaterialParameters& material) {
     point.clearcoatRoughness = material.clearcoatRoughness;
     point.sheenColor = material.sheenColor;
     point.sheenRoughness = material.sheenRoughness;
+    point.transmission = material.transmission;
+    point.transmissionAttenuation =
+        shader::volumeAttenuation(material.attenuationColor, material.attenuationDistance, material.thickness);
     return point;
 }
 

@@ -32,6 +32,10 @@ struct ChannelPoint {
     float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
     glm::vec3 sheenColor{0.0f};
     float sheenRoughness = 0.0f;
+    // KHR_materials_transmission's factor after its map (0: none) and KHR_materials_volume's
+    // attenuation T over the draw's thickness (transmission.glsl's volumeAttenuation).
+    float transmission = 0.0f;
+    glm::vec3 transmissionAttenuation{1.0f};
 };
 
 // A point of `material`'s factors (its maps already applied, if any), the rest at ChannelPoint's
@@ -39,7 +43,8 @@ struct ChannelPoint {
 ChannelPoint channelPointOf(const MaterialParameters& material);
 
 // The point's layers as shade.frag derives them for a part that has them (PATINA_CLEARCOAT,
-// PATINA_SHEEN); a factor of 0 is none, which shades the same as the layer at 0.
+// PATINA_SHEEN, PATINA_TRANSMISSION); a factor of 0 is none, which shades the same as the layer
+// at 0.
 inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
     shader::ChannelLayers layers = shader::noChannelLayers();
     if (p.clearcoat > 0.0f) {
@@ -49,6 +54,13 @@ inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
     if (p.sheenColor != glm::vec3(0.0f)) {
         layers.sheened = true;
         layers.sheen = shader::deriveSheen(p.sheenColor, p.sheenRoughness, p.N, p.V);
+    }
+    if (p.transmission > 0.0f) {
+        layers.transmits = true;
+        layers.transmissionFactor = p.transmission;
+        layers.transmission = shader::deriveTransmission(
+            shader::deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic), p.transmission,
+            p.transmissionAttenuation, p.N, p.V);
     }
     return layers;
 }

@@ -10,8 +10,32 @@
 
 namespace patina {
 
-std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float thetaInDegrees, int samples) {
+namespace {
+// KHR_materials_transmission's thin-walled BTDF (transmission.glsl's transmissionBtdf, glTF 2.0
+// Appendix B's specular_btdf as the extension mirrors it) from unit L above towards unit `below`
+// beneath the surface, tinted and attenuated (the material's own thickness: a lobe has no draw's
+// scale). f_t is reciprocal (D, Vis and F(V.H) are symmetric in the two directions once one is
+// mirrored), so it is the BTDF seen from L with the light at `below`. 0 without a transmission.
+glm::vec3 transmittedLobe(const MaterialParameters& material, glm::vec3 N, glm::vec3 L, glm::vec3 below) {
+    if (!(material.transmission > 0.0f)) {
+        return glm::vec3(0.0f);
+    }
+    const glm::vec3 attenuation =
+        shader::volumeAttenuation(material.attenuationColor, material.attenuationDistance, material.thickness);
+    const shader::Transmission t =
+        shader::deriveTransmission(surfaceMaterial(material), material.transmission, attenuation, N, L);
+    return shader::transmissionBtdf(t, N, L, below);
+}
+
+// The material the reflected lobes read: its diffuse what a transmission leaves of it.
+shader::SurfaceMaterial reflectingSurface(const MaterialParameters& material) {
     const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    return material.transmission > 0.0f ? shader::transmissionDiffuse(surface, material.transmission) : surface;
+}
+}  // namespace
+
+std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float thetaInDegrees, int samples) {
+    const shader::SurfaceMaterial surface = reflectingSurface(material);
     const glm::vec3 N(0.0f, 0.0f, 1.0f);
     const float thetaIn = glm::radians(thetaInDegrees);
     const glm::vec3 L(std::sin(thetaIn), 0.0f, std::cos(thetaIn));
@@ -28,7 +52,8 @@ std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float t
         // The layers' own terms alone (the sheen's under the coat): layeredBrdf is linear in the
         // base's lobes, so over no base it is what the layers add.
         const glm::vec3 own = layeredBrdf(glm::vec3(0.0f), layers, N, V, L);
-        lobe.push_back({thetaOutDegrees, diffuse, specular, own});
+        const glm::vec3 below(V.x, 0.0f, -V.z);
+        lobe.push_back({thetaOutDegrees, diffuse, specular, own, transmittedLobe(material, N, L, below)});
     }
     return lobe;
 }
@@ -36,8 +61,11 @@ std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float t
 std::string formatLobeCsv(const std::vector<LobeSample>& lobe) {
     const bool layered =
         std::any_of(lobe.begin(), lobe.end(), [](const LobeSample& sample) { return sample.layers != glm::vec3(0.0f); });
+    const bool transmits = std::any_of(lobe.begin(), lobe.end(),
+                                       [](const LobeSample& sample) { return sample.transmitted != glm::vec3(0.0f); });
     std::string out = "theta_out_deg,diffuse_r,diffuse_g,diffuse_b,specular_r,specular_g,specular_b,";
-    out += layered ? "layers_r,layers_g,layers_b,total_r,total_g,total_b\n" : "total_r,total_g,total_b\n";
+    out += layered ? "layers_r,layers_g,layers_b,total_r,total_g,total_b" : "total_r,total_g,total_b";
+    out += transmits ? ",transmitted_r,transmitted_g,transmitted_b\n" : "\n";
     char cell[32];
     for (const LobeSample& sample : lobe) {
         std::vector<glm::vec3> columns{sample.diffuse, sample.specular};
@@ -45,6 +73,9 @@ std::string formatLobeCsv(const std::vector<LobeSample>& lobe) {
             columns.push_back(sample.layers);
         }
         columns.push_back(sample.total());
+        if (transmits) {
+            columns.push_back(sample.transmitted);
+        }
         std::snprintf(cell, sizeof cell, "%.9g", double(sample.thetaOutDegrees));
         out += cell;
         for (const glm::vec3& column : columns) {

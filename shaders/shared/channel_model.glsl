@@ -15,7 +15,14 @@ PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roug
     return ChannelInputs(baseColor, alpha, metallic, roughness, specular, m.f0, m.diffuseColor, occlusion, emission,
                          uv0, uv1, geometryNormal, N, vec4(t.x, t.y, t.z, handedness), max(dot(N, V), MIN_N_DOT_V),
                          0.0f, 0.0f, vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f),
-                         vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f));
+                         vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f));
+}
+
+// The material the base's lobes read: deriveSurfaceMaterial's, its diffuse reduced by a
+// transmission (transmission.glsl's transmissionDiffuse), as shade.frag shades it.
+PATINA_INLINE SurfaceMaterial channelMaterial(ChannelInputs c, ChannelLayers layers) {
+    SurfaceMaterial m = deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic);
+    return layers.transmits ? transmissionDiffuse(m, layers.transmissionFactor) : m;
 }
 
 // One light's lobes added at P (occlusion on a hemisphere light, as the renderer applies it),
@@ -23,7 +30,7 @@ PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roug
 // base); `key`: the light D, G and F are read towards.
 PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, ChannelLayers layers, PackedLight light, bool asked,
                                              bool key, vec3 P, vec3 V) {
-    SurfaceMaterial m = deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic);
+    SurfaceMaterial m = channelMaterial(c, layers);
     LightShares shares = lightShares(light, m, P, c.shadingNormal, V);
     if (light.type == LIGHT_HEMISPHERE) {
         shares.diffuse = c.occlusion * shares.diffuse;
@@ -56,7 +63,8 @@ PATINA_INLINE ChannelInputs channelWithEnvironment(ChannelInputs c, LightShares 
 
 // The layers under the environment, after channelWithEnvironment, as the renderer draws them:
 // the sheen lit by the irradiance at N and the base weighed by E(N.V) (sheenIrradianceShare), the
-// coat's split sum about its own mirror direction (clearcoatEnvironment), both occluded.
+// coat's split sum about its own mirror direction (clearcoatEnvironment), the environment along
+// -V through the wall (transmissionEnvironment; a channel draws no scene behind), all occluded.
 PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, ChannelLayers layers,
                                                          EnvironmentSource prefiltered, real maxLod,
                                                          EnvironmentSource irradianceMap, real intensity,
@@ -74,19 +82,27 @@ PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, Channe
         vec3 coat = clearcoatEnvironment(prefiltered, maxLod, cosRotation, sinRotation, layers.coat, V);
         c.clearcoat = c.clearcoat + c.occlusion * (intensity * coat);
     }
+    if (layers.transmits) {
+        vec3 through = transmissionEnvironment(prefiltered, maxLod, cosRotation, sinRotation, channelMaterial(c, layers),
+                                               layers.transmission, V);
+        c.transmission = c.transmission + c.occlusion * (intensity * through);
+    }
     c.layeredLighting = c.layeredLighting + base;
     return c;
 }
 
 // The pixel's radiance once every light is in: the lobes and the emission; with layers, the
-// base and sheen (layeredLighting) and the emission seen through the coat, plus the coat's own
+// base and sheen (layeredLighting), the light through the wall (weighed by a sheen's albedo
+// scaling towards V, sheenViewWeight) and the emission seen through the coat, plus the coat's own
 // (clearcoatOver), as shade.frag sums them.
 PATINA_INLINE ChannelInputs channelFinished(ChannelInputs c, ChannelLayers layers) {
-    if (!layers.coated && !layers.sheened) {
+    if (!layers.coated && !layers.sheened && !layers.transmits) {
         c.radiance = c.diffuse + c.specularLighting + c.emission;
         return c;
     }
-    vec3 base = c.layeredLighting + c.emission;
+    // The transmission as it adds to the radiance: beneath a sheen, weighed by its scaling.
+    c.transmission = (layers.sheened ? sheenViewWeight(layers.sheen) : 1.0f) * c.transmission;
+    vec3 base = c.layeredLighting + c.transmission + c.emission;
     c.radiance = layers.coated ? clearcoatOver(base, c.clearcoat, layers.coat) : base;
     return c;
 }

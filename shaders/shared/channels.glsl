@@ -1,5 +1,6 @@
 // The inspector's debug channels (docs/INSPECTOR.md): what the shader computed at a pixel, as
-// data. Shared GLSL / C++ like brdf.glsl (include after it, clearcoat.glsl, sheen.glsl and display.glsl): shade.frag with PATINA_CHANNEL
+// data. Shared GLSL / C++ like brdf.glsl (include after it, clearcoat.glsl, sheen.glsl,
+// transmission.glsl and display.glsl): shade.frag with PATINA_CHANNEL
 // writes channelValue instead of the radiance, and the CPU twin (engine/reference/channels.h)
 // calls the same function on the same inputs, so the two cannot drift.
 
@@ -30,9 +31,10 @@ const int CHANNEL_ENVIRONMENT_SPECULAR = 22;
 const int CHANNEL_LIGHT = 23;
 const int CHANNEL_INVALID = 24;
 const int CHANNEL_PBR_VALIDATION = 25;
-const int CHANNEL_CLEARCOAT = 26;   // the layers' own light (docs/SHADING.md S5, S6)
+const int CHANNEL_CLEARCOAT = 26;   // the layers' own light (docs/SHADING.md S5, S6, S7)
 const int CHANNEL_SHEEN = 27;
-const int CHANNEL_COUNT = 28;
+const int CHANNEL_TRANSMISSION = 28;
+const int CHANNEL_COUNT = 29;
 
 // Everything a pixel's channels read. The material is after its maps (factor times texel) and
 // before the roughness floor; F0 and the diffuse colour are deriveSurfaceMaterial's. The lighting
@@ -65,33 +67,54 @@ struct ChannelInputs {
     vec3 light;            // the one light asked for, both lobes
     vec3 radiance;         // what the pixel shows, before exposure
     // The layers (ChannelLayers): the coat's own lobe (clearcoat fr_c D V, every light and the
-    // environment's split sum) and the sheen's (f_sheen, every light and the environment's
-    // irradiance share), as they add to the radiance; 0 for a part without the layer. The base's
-    // lobes above are what the base reflects beneath them.
+    // environment's split sum), the sheen's (f_sheen, every light and the environment's
+    // irradiance share) and the light through the wall (transmission.glsl's f_t from every light
+    // behind, the environment along -V), as they add to the radiance; 0 for a part without the
+    // layer. The base's lobes above are what the base reflects beneath them (a transmission's
+    // diffuse reduced by transmissionDiffuse), and the transmission what passes the wall as it
+    // adds beneath the coat (channelFinished weighs it by a sheen's albedo scaling).
     vec3 clearcoat;
     vec3 sheen;
+    vec3 transmission;
     vec3 layeredLighting;   // every light's and the environment's base and sheen, the sheen's albedo scaling applied
 };
 
 // The layers over the inspected surface, derived as shade.frag derives them (deriveClearcoat on
-// the coat's normal, deriveSheen on the shading normal), and whether the part has each.
+// the coat's normal, deriveSheen and deriveTransmission on the shading normal), and whether the
+// part has each; `transmissionFactor` the diffuse's share that passes (transmissionDiffuse).
 struct ChannelLayers {
     bool coated;
     Clearcoat coat;
     bool sheened;
     Sheen sheen;
+    bool transmits;
+    real transmissionFactor;
+    Transmission transmission;
 };
 
 // A part without layers (the fields are not read).
 PATINA_INLINE ChannelLayers noChannelLayers() {
     return ChannelLayers(false, Clearcoat(0.0f, 0.0f, 0.0f, vec3(0.0f), 1.0f, 0.0f), false,
-                         Sheen(vec3(0.0f), 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f));
+                         Sheen(vec3(0.0f), 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f), false, 0.0f,
+                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f));
+}
+
+// One light's light through the wall (transmission.glsl's transmissionLight; a hemisphere
+// light's occluded as the renderer occludes it); 0 without a transmission.
+PATINA_INLINE vec3 channelTransmissionOfLight(ChannelInputs c, ChannelLayers layers, PackedLight light, vec3 P,
+                                              vec3 V) {
+    if (!layers.transmits) {
+        return vec3(0.0f);
+    }
+    vec3 through = transmissionLight(light, layers.transmission, P, c.shadingNormal, V);
+    return light.type == LIGHT_HEMISPHERE ? c.occlusion * through : through;
 }
 
 // One light's layers at P over `base`, that light's lobes on the base (occlusion applied): the
 // sheen's lobe added and the base weighed by the sheen's albedo scaling (sheen.glsl's sheenLight,
 // a hemisphere light's occluded as the renderer occludes it), the coat's lobe added
-// (clearcoat.glsl's clearcoatLight). The coat's weight on the base is channelFinished's.
+// (clearcoat.glsl's clearcoatLight), the light through the wall added beside the base
+// (channelTransmissionOfLight). The coat's weight on the base is channelFinished's.
 PATINA_INLINE ChannelInputs channelLayersOfLight(ChannelInputs c, ChannelLayers layers, PackedLight light, vec3 base,
                                                  vec3 P, vec3 V) {
     if (layers.sheened) {
@@ -105,6 +128,7 @@ PATINA_INLINE ChannelInputs channelLayersOfLight(ChannelInputs c, ChannelLayers 
     if (layers.coated) {
         c.clearcoat = c.clearcoat + clearcoatLight(light, layers.coat, P, V);
     }
+    c.transmission = c.transmission + channelTransmissionOfLight(c, layers, light, P, V);
     c.layeredLighting = c.layeredLighting + base;
     return c;
 }
@@ -206,5 +230,6 @@ PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c, vec3 pbrRanges) {
     if (channel == CHANNEL_PBR_VALIDATION) return pbrValidationValue(c.baseColor, c.metallic, pbrRanges);
     if (channel == CHANNEL_CLEARCOAT) return c.clearcoat;
     if (channel == CHANNEL_SHEEN) return c.sheen;
+    if (channel == CHANNEL_TRANSMISSION) return c.transmission;
     return invalidRadiance(c.radiance);
 }

@@ -75,7 +75,9 @@ PATINA_INLINE real sheenBaseWeight(Sheen sheen, real NoL) {
     return 1.0f - sheen.strength * max(sheen.albedo, albedoL);
 }
 
-// The same with E(N.V) alone: under the environment and hemisphere lights.
+// The same with E(N.V) alone: under the environment and hemisphere lights, and for the light
+// through a thin wall beneath the sheen (KHR_materials_transmission): the extension's albedo
+// scaling weighs everything under the fibres, and that light leaves them towards V.
 PATINA_INLINE real sheenViewWeight(Sheen sheen) {
     return 1.0f - sheen.strength * sheen.albedo;
 }

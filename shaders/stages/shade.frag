@@ -424,7 +424,8 @@ uniform vec3 uPbrRanges;     // CHANNEL_PBR_VALIDATION's (pbrVerdict)
 uniform float uChannelAlpha;   // the item's alpha (BLEND's factor), which only maps otherwise read
 #endif
 
-// `layers`: the part's coat and sheen (CHANNEL_CLEARCOAT, CHANNEL_SHEEN), as main derives them.
+// `layers`: the part's coat, sheen and transmission (CHANNEL_CLEARCOAT, CHANNEL_SHEEN,
+// CHANNEL_TRANSMISSION), as main derives them.
 vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metallic, float occlusion, vec3 emission,
                       vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal, vec3 N, vec3 V, ChannelLayers layers) {
     ChannelInputs c = channelSurface(baseColor, alpha, roughness, uSpecular, metallic, occlusion, emission, uv0, uv1,
@@ -433,7 +434,7 @@ vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metall
         c = channelWithLight(c, layers, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
     }
 #ifdef PATINA_ENVIRONMENT
-    SurfaceMaterial material = deriveSurfaceMaterial(baseColor, roughness, uSpecular, metallic);
+    SurfaceMaterial material = channelMaterial(c, layers);
     LightShares shares = environmentShares(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
                                            uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, false);
     c = channelWithEnvironment(c, shares, uEnvironmentIntensity, uChannelLight == -2);
@@ -518,6 +519,25 @@ void main() {
     Sheen sheen = deriveSheen(uSheenColor, uSheenRoughness, N, V);
 #endif
 #endif
+#ifdef PATINA_TRANSMISSION
+    // What passes is the diffuse's share (before transmissionDiffuse takes it away).
+#ifdef PATINA_PROBE
+    const float thicknessScale = 1.0f;
+#else
+    float thicknessScale = uThicknessScale;
+#endif
+#ifdef PATINA_TEXTURED
+    float transmissionFactor = mappedTransmission(uTransmission);
+    float thickness = mappedThickness(uThickness);
+#else
+    float transmissionFactor = uTransmission;
+    float thickness = uThickness;
+#endif
+    Transmission transmission = deriveTransmission(
+        material, transmissionFactor, volumeAttenuation(uAttenuationColor, uAttenuationDistance, thickness * thicknessScale),
+        N, V);
+    material = transmissionDiffuse(material, transmissionFactor);
+#endif
 #ifdef PATINA_CHANNEL
     ChannelLayers layers = noChannelLayers();
 #ifdef PATINA_CLEARCOAT
@@ -527,6 +547,11 @@ void main() {
 #ifdef PATINA_SHEEN
     layers.sheened = true;
     layers.sheen = sheen;
+#endif
+#ifdef PATINA_TRANSMISSION
+    layers.transmits = true;
+    layers.transmissionFactor = transmissionFactor;
+    layers.transmission = transmission;
 #endif
 #ifdef PATINA_TEXTURED
     vec3 channel = inspectedChannel(mapped.baseColor, mapped.alpha, mapped.roughness, mapped.metallic, occlusion,
@@ -547,23 +572,6 @@ void main() {
     return;
 #endif
 #ifdef PATINA_TRANSMISSION
-    // What passes is the diffuse's share (before transmissionDiffuse takes it away).
-#ifdef PATINA_PROBE
-    const float thicknessScale = 1.0f;
-#else
-    float thicknessScale = uThicknessScale;
-#endif
-#ifdef PATINA_TEXTURED
-    float transmissionFactor = mappedTransmission(uTransmission);
-    float thickness = mappedThickness(uThickness);
-#else
-    float transmissionFactor = uTransmission;
-    float thickness = uThickness;
-#endif
-    Transmission transmission = deriveTransmission(
-        material, transmissionFactor, volumeAttenuation(uAttenuationColor, uAttenuationDistance, thickness * thicknessScale),
-        N, V);
-    material = transmissionDiffuse(material, transmissionFactor);
     vec3 transmitted = vec3(0.0f);
 #ifndef PATINA_PROBE
     vec4 behind = sceneBehind(material.roughness);
@@ -720,7 +728,11 @@ void main() {
 #endif
 #endif
 #ifdef PATINA_TRANSMISSION
-    // Through the base's wall, beneath the coat as the base's own light.
+    // Through the base's wall, beneath the coat as the base's own light, and beneath the sheen:
+    // weighed by its albedo scaling towards V (sheenViewWeight).
+#ifdef PATINA_SHEEN
+    transmitted *= sheenViewWeight(sheen);
+#endif
     radiance += transmitted;
 #endif
 #ifdef PATINA_CLEARCOAT

@@ -79,6 +79,72 @@ TEST(AlbedoCurve, TheCurvesCarryTheLayers) {
     }
 }
 
+// A white thin-walled clear glass of the `gltf` model (KHR_materials_transmission 1).
+MaterialParameters whiteGlass() {
+    MaterialParameters glass;
+    glass.model = BrdfModelId::Gltf;
+    glass.baseColor = glm::vec3(1.0f);
+    glass.roughness = 0.15f;
+    glass.transmission = 1.0f;
+    return glass;
+}
+
+// Issue 36: a thin-walled glass (KHR_materials_transmission 1, white) under the furnace sends
+// most of its light through the wall. The curve splits off that transmitted albedo, the
+// product's (the CPU twin's transmission) and the truth's (the BTDF sampled); reflected plus
+// transmitted stays at or under 1 in both. The totals agree within the truth's noise up to
+// 73.75 degrees (at 88.5 the single-scattering truth keeps 0.87), the transmitted shares up to
+// 59 (further out the split sum's grazing reflection, a bare dielectric's too, takes more than
+// the truth's: 0.65 against 0.77 through the wall at 73.75, docs/SHADING.md S7).
+// The chart draws the transmitted share as its own dashed series.
+TEST(AlbedoCurve, AGlassCurveCarriesItsTransmittedAlbedo) {
+    MaterialParameters glass = whiteGlass();
+    const std::vector<AlbedoPoint> curve = albedoCurve(glass, 7, 2048);
+    for (const AlbedoPoint& p : curve) {
+        EXPECT_LE(p.product.x, 1.005f) << p.thetaVDegrees;
+        EXPECT_LE(p.truth.x, 1.0f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        EXPECT_GT(p.productTransmitted.x, 0.0f) << p.thetaVDegrees;
+        EXPECT_LT(p.productTransmitted.x, p.product.x) << p.thetaVDegrees;
+        if (p.thetaVDegrees < 80.0f) {
+            EXPECT_NEAR(p.product.x, p.truth.x, 0.02f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        }
+        if (p.thetaVDegrees < 60.0f) {
+            EXPECT_NEAR(p.productTransmitted.x, p.truthTransmitted.x, 0.02f + 3.0f * p.standardError.x)
+                << p.thetaVDegrees;
+        }
+    }
+    EXPECT_GT(curve.front().productTransmitted.x, 0.9f);   // 1 - F0 at normal incidence, about 0.96
+    EXPECT_GT(curve.front().truthTransmitted.x, 0.9f);
+    const Chart chart = albedoChart({{"glass", curve}});
+    ASSERT_EQ(chart.panels[0].series.size(), 3u);
+    EXPECT_EQ(chart.panels[0].series[2].label, "glass: transmitted (split sum)");
+    EXPECT_TRUE(chart.panels[0].series[2].dashed);
+    EXPECT_EQ(albedoChart({{"bare", albedoCurve(MaterialParameters{}, 2, 64)}}).panels[0].series.size(), 2u);
+}
+
+// Issue 36: KHR_materials_sheen's albedo scaling weighs everything beneath the fibres, the light
+// through a glass's wall too. A white sheen over a white clear glass under the furnace: the
+// sheen's own light plus what it leaves of the reflection and of the transmission stays at or
+// under 1, in the product (the CPU twin) and the truth (the ground truth's sheened BRDF and
+// BTDF) alike, which agree, their transmitted shares too (both after the sheen's weight);
+// without the weight on the transmission both passed 1 by about the sheen's albedo.
+TEST(AlbedoCurve, ASheenOverAGlassWeighsItsTransmittedLightToo) {
+    MaterialParameters glass = whiteGlass();
+    glass.sheenColor = glm::vec3(1.0f);
+    glass.sheenRoughness = 0.5f;
+    for (const AlbedoPoint& p : albedoCurve(glass, 5, 2048)) {
+        EXPECT_LE(p.product.x, 1.005f) << p.thetaVDegrees;
+        EXPECT_LE(p.truth.x, 1.0f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        if (p.thetaVDegrees < 80.0f) {
+            EXPECT_NEAR(p.product.x, p.truth.x, 0.03f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        }
+        if (p.thetaVDegrees < 60.0f) {
+            EXPECT_NEAR(p.productTransmitted.x, p.truthTransmitted.x, 0.02f + 3.0f * p.standardError.x)
+                << p.thetaVDegrees;
+        }
+    }
+}
+
 // The chart names each material's two series in full and carries the truth's errors as bars.
 TEST(AlbedoCurve, TheChartCarriesTheTruthsErrorBars) {
     MaterialParameters gold;

@@ -197,7 +197,7 @@ TEST_F(CliInspect, InspectAgreesWithTheRenderedPixel) {
 }
 
 // `inspect` lists the layers' own light (issue 36): the hand-written velvet's sheen at its
-// centre, no coat there; on the default scene's bare sphere both are 0.
+// centre, no coat or transmission there; on the default scene's bare sphere all are 0.
 TEST_F(CliInspect, InspectListsTheLayersOfAPartThatHasThem) {
     const std::string velvet = std::string(PATINA_SOURCE_DIR) + "/tests/data/sheen/velvet.gltf";
     const test::CliRun sheened = run("inspect --mesh " + velvet + " --width 64 --height 64 --x 32 --y 32");
@@ -207,11 +207,13 @@ TEST_F(CliInspect, InspectListsTheLayersOfAPartThatHasThem) {
     const glm::vec3 sheen = vec3Of(story.at("sheen"));
     EXPECT_GT(sheen.x + sheen.y + sheen.z, 0.0f) << sheened.stdoutText;
     EXPECT_EQ(vec3Of(story.at("clearcoat")), glm::vec3(0.0f));
+    EXPECT_EQ(vec3Of(story.at("transmission")), glm::vec3(0.0f));
     const test::CliRun bare = run("inspect --width 120 --height 90 --x 60 --y 45");
     ASSERT_EQ(bare.exitCode, 0) << bare.stderrText;
     const Json plain = Json::parse(bare.stdoutText);
     EXPECT_EQ(vec3Of(plain.at("sheen")), glm::vec3(0.0f));
     EXPECT_EQ(vec3Of(plain.at("clearcoat")), glm::vec3(0.0f));
+    EXPECT_EQ(vec3Of(plain.at("transmission")), glm::vec3(0.0f));
 }
 
 TEST_F(CliInspect, APixelOutsideTheImageIsAUsageErrorAndTheBackgroundHasNoSurface) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <optional>
 #include <system_error>
 #include <fstream>
 #include <functional>
@@ -1302,6 +1303,30 @@ TEST_F(EditorStateTest, TheLobeLegendNamesOnlyWhatIsDrawn) {
     EXPECT_EQ(legend(), (std::vector<std::string>{"A total", "reference model", "B diffuse", "B specular", "B total"}));
     state.scene.material.model = BrdfModelId::Reference;   // the reference itself: nothing to compare
     EXPECT_EQ(lobePlot(state, state).curves.size(), 4u);
+}
+
+// Issue 36: a transmitting material's lobe below the surface has a curve of its own, named as
+// what it is (drawn mirrored above the horizon), peaking straight through the wall (at -theta_in);
+// a material without a transmission has none.
+TEST_F(EditorStateTest, TheLobePlotOfAGlassHasItsTransmittedCurve) {
+    const std::string name = "transmitted, below (mirrored up, luminance)";
+    state.lobe.thetaInDegrees = 30.0f;
+    auto transmitted = [&]() -> std::optional<LobeCurve> {
+        for (const LobeCurve& curve : lobePlot(state, state).curves) {
+            if (curve.legend == name) {
+                return curve;
+            }
+        }
+        return std::nullopt;
+    };
+    EXPECT_FALSE(transmitted());
+    state.scene.material.model = BrdfModelId::Gltf;
+    state.scene.material.roughness = 0.2f;
+    state.scene.material.transmission = 1.0f;
+    const std::optional<LobeCurve> curve = transmitted();
+    ASSERT_TRUE(curve);
+    const size_t peak = size_t(std::max_element(curve->values.begin(), curve->values.end()) - curve->values.begin());
+    EXPECT_NEAR(double(peak), 60.0, 2.0);   // theta_out -30 degrees, one sample a degree from -90
 }
 
 // Issue 34: a grey material's legend said "total, R G B" in red, the red curve's colour, while

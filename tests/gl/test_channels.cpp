@@ -282,17 +282,30 @@ TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
 }
 
 // The default scene (its lights and environment) with the `gltf` model and a layer: the
-// bench's car paint coat or velvet sheen (docs/SHADING.md S5, S6).
+// bench's car paint coat, velvet sheen or clear glass (docs/SHADING.md S5, S6, S7), the glass
+// rough and tinted green over a thickness (KHR_materials_volume's T in the channel too).
 Scene layeredScene(const std::string& layer) {
-    return withBenchLayer(defaultScene(), layer);
+    Scene scene = withBenchLayer(defaultScene(), layer == "sheened glass" ? "transmission" : layer);
+    if (layer == "sheened glass") {   // the velvet's sheen over the glass: the sheen weighs what passes
+        scene.material.sheenColor = withBenchLayer(scene, "sheen").material.sheenColor;
+        scene.material.sheenRoughness = withBenchLayer(scene, "sheen").material.sheenRoughness;
+    }
+    if (layer == "transmission" || layer == "sheened glass") {
+        scene.material.roughness = 0.2f;
+        scene.material.thickness = 0.5f;
+        scene.material.attenuationColor = {0.6f, 0.9f, 0.7f};
+        scene.material.attenuationDistance = 1.0f;
+    }
+    return scene;
 }
 
-// The layers' channels (issue 36): a coated part's clearcoat channel and a sheened part's sheen
-// channel are the coat's and the sheen's own light, the GPU's the CPU twin's, bright where the
-// layer shows (the coat's highlight, the sheen's rim); the same channel of the bare part, and
-// the other layer's channel of each, is 0 everywhere, on the GPU and the CPU.
+// The layers' channels (issue 36): a coated part's clearcoat channel, a sheened part's sheen
+// channel and a transmitting part's transmission channel are the coat's, the sheen's and the
+// wall's own light, the GPU's the CPU twin's, bright where the layer shows (the coat's
+// highlight, the sheen's rim, the environment through the glass); the same channel of the bare
+// part, and another layer's channel of each, is 0 everywhere, on the GPU and the CPU.
 TEST_F(Channels, TheLayersChannelsAreTheirOwnLightAndZeroWithoutTheLayer) {
-    for (const std::string layer : {"clearcoat", "sheen"}) {
+    for (const std::string layer : {"clearcoat", "sheen", "transmission"}) {
         const Scene layered = layeredScene(layer), bare = layeredScene("");
         const PreparedScene layeredPrepared{layered, test::preparedDefault().mesh, test::preparedDefault().environment};
         const PreparedScene barePrepared{bare, test::preparedDefault().mesh, test::preparedDefault().environment};
@@ -328,9 +341,12 @@ TEST_F(Channels, TheLayersChannelsAreTheirOwnLightAndZeroWithoutTheLayer) {
 
 // With a layer the CPU twin's radiance (what `inspect` and the read-out show) is the render's:
 // the base seen through the coat and weighed by the sheen's albedo scaling, the layer's own
-// light added; without the layers in the sum a coat's highlight or a sheen's rim would be missing.
+// light added; without the layers in the sum a coat's highlight, a sheen's rim or what shows
+// through a glass (and the diffuse it takes away) would be missing; under a sheen the glass's
+// light is weighed by the sheen's albedo scaling on both. Nothing stands behind the sphere, so
+// the render's scene behind it adds nothing the twin lacks.
 TEST_F(Channels, TheCpuTwinsRadianceWithALayerIsTheRenders) {
-    for (const std::string layer : {"clearcoat", "sheen"}) {
+    for (const std::string layer : {"clearcoat", "sheen", "transmission", "sheened glass"}) {
         const Scene scene = layeredScene(layer);
         const PreparedScene prepared{scene, test::preparedDefault().mesh, test::preparedDefault().environment};
         const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);

@@ -112,5 +112,38 @@ TEST(LayeredLobe, TheSliceShowsTheCoatsLobeAtThetaHZero) {
     EXPECT_EQ(peak % size_t(size), 0u);
 }
 
+// KHR_materials_transmission, thin-walled (issue 36): the lobe below the surface is
+// transmission.glsl's f_t from L towards (sin t_out, 0, -cos t_out), peaking straight through
+// (at -L: t_out = -theta_in) with the reflection's mirrored shape, tinted by the base colour;
+// the reflected diffuse keeps 1 - t of itself, the specular is untouched; the CSV carries the
+// transmitted columns after total. A bare material's lobe has none (the test above).
+TEST(LayeredLobe, AGlassHasItsTransmittedLobeBelowTheSurface) {
+    MaterialParameters bare = gltfBase();
+    bare.roughness = 0.2f;
+    MaterialParameters glass = bare;
+    glass.transmission = 0.75f;
+    const std::vector<LobeSample> under = evaluateLobe(bare, 30.0f, kSamples);
+    const std::vector<LobeSample> lobe = evaluateLobe(glass, 30.0f, kSamples);
+    const glm::vec3 N(0, 0, 1), L(std::sin(glm::radians(30.0f)), 0, std::cos(glm::radians(30.0f)));
+    const shader::Transmission t =
+        shader::deriveTransmission(surfaceMaterial(glass), 0.75f, glm::vec3(1.0f), N, L);
+    for (size_t i = 0; i < lobe.size(); ++i) {
+        const float o = glm::radians(lobe[i].thetaOutDegrees);
+        EXPECT_EQ(lobe[i].transmitted, shader::transmissionBtdf(t, N, L, {std::sin(o), 0, -std::cos(o)})) << i;
+        EXPECT_NEAR(lobe[i].diffuse.r, 0.25f * under[i].diffuse.r, 1e-6f) << i;
+        EXPECT_EQ(lobe[i].specular, under[i].specular) << i;
+        EXPECT_EQ(under[i].transmitted, glm::vec3(0.0f)) << i;
+    }
+    const auto peak = std::max_element(lobe.begin(), lobe.end(), [](const LobeSample& a, const LobeSample& b) {
+        return a.transmitted.r < b.transmitted.r;
+    });
+    EXPECT_NEAR(peak->thetaOutDegrees, -30.0f, 2.0f);   // the off-peak shift of Vis, at most a degree or two
+    EXPECT_NEAR(peak->transmitted.r / peak->transmitted.g, 5.0f, 1e-4f);   // tinted by the base colour, 0.5 / 0.1
+    const std::string csv = formatLobeCsv(lobe);
+    EXPECT_EQ(csv.substr(0, csv.find('\n')),
+              "theta_out_deg,diffuse_r,diffuse_g,diffuse_b,specular_r,specular_g,specular_b,total_r,total_g,total_b,"
+              "transmitted_r,transmitted_g,transmitted_b");
+}
+
 }  // namespace
 }  // namespace patina

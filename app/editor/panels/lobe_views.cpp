@@ -82,16 +82,50 @@ void drawSliceView(const Document& document, const Interaction& interaction, ImV
     recordItem("slice");   // no tooltip of its own: the hovered cell's values are the tooltip
 }
 
+namespace {
+struct AlbedoShown {
+    const std::vector<AlbedoPoint>* curve;
+    ImU32 colour;
+    const char* name;
+};
+
+bool transmits(const std::vector<AlbedoPoint>& curve) {
+    return std::any_of(curve.begin(), curve.end(),
+                       [](const AlbedoPoint& p) { return p.productTransmitted != glm::vec3(0.0f); });
+}
+
+// A transmitting material's transmitted albedo (KHR_materials_transmission, the part of the
+// split sum through the wall) as a thin line under its curve; nothing without a transmission.
+template <typename ToScreen>
+void drawTransmittedAlbedo(ImDrawList* draw, const AlbedoShown& s, ToScreen toScreen) {
+    if (!transmits(*s.curve)) {
+        return;
+    }
+    for (const AlbedoPoint& p : *s.curve) {
+        draw->PathLineTo(toScreen(p.thetaVDegrees, luminance(p.productTransmitted)));
+    }
+    draw->PathStroke(s.colour & 0xA0FFFFFFu, 0, 1.0f);
+}
+
+// The legend's rows above the plot from `at`: each curve's colour and what it draws.
+void drawAlbedoLegend(ImDrawList* draw, const std::vector<AlbedoShown>& shown, ImVec2 at, float line) {
+    for (const AlbedoShown& s : shown) {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s%ssplit sum (line)%s, ground truth +- 1 s.e. (circles)", s.name,
+                      *s.name ? ": " : "", transmits(*s.curve) ? ", transmitted share (thin)" : "");
+        draw->AddLine(ImVec2(at.x, at.y + line * 0.5f), ImVec2(at.x + px(16), at.y + line * 0.5f), s.colour, 2.0f);
+        draw->AddText(ImVec2(at.x + px(20), at.y), kLabel, text);
+        at.y += line;
+    }
+}
+}  // namespace
+
 void drawAlbedoView(const Document& document, const Interaction& interaction, EditorServices& services, ImVec2 size) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float line = ImGui::GetTextLineHeight();
     draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
-    struct Shown {
-        const std::vector<AlbedoPoint>* curve;
-        ImU32 colour;
-        const char* name;
-    };
+    using Shown = AlbedoShown;
     std::vector<Shown> shown;
     if (interaction.compareA) {
         shown.push_back({&services.albedo(*interaction.compareA), IM_COL32(170, 170, 170, 255), "A"});
@@ -130,6 +164,7 @@ void drawAlbedoView(const Document& document, const Interaction& interaction, Ed
             draw->PathLineTo(toScreen(p.thetaVDegrees, luminance(p.product)));
         }
         draw->PathStroke(s.colour, 0, 2.0f);
+        drawTransmittedAlbedo(draw, s, toScreen);
         for (const AlbedoPoint& p : *s.curve) {
             const float value = luminance(p.truth), error = luminance(p.standardError);
             const ImVec2 low = toScreen(p.thetaVDegrees, value - error), high = toScreen(p.thetaVDegrees, value + error);
@@ -139,14 +174,7 @@ void drawAlbedoView(const Document& document, const Interaction& interaction, Ed
             draw->AddCircle(toScreen(p.thetaVDegrees, value), px(3), s.colour, 8, 1.5f);
         }
     }
-    ImVec2 legend(plotMin.x, origin.y + px(4));
-    for (const Shown& s : shown) {
-        char text[96];
-        std::snprintf(text, sizeof text, "%s%ssplit sum (line), ground truth +- 1 s.e. (circles)", s.name, *s.name ? ": " : "");
-        draw->AddLine(ImVec2(legend.x, legend.y + line * 0.5f), ImVec2(legend.x + px(16), legend.y + line * 0.5f), s.colour, 2.0f);
-        draw->AddText(ImVec2(legend.x + px(20), legend.y), kLabel, text);
-        legend.y += line;
-    }
+    drawAlbedoLegend(draw, shown, ImVec2(plotMin.x, origin.y + px(4)), line);
     ImGui::Dummy(size);
     recordItem("albedo", "Directional albedo (luminance) against theta_v under a white furnace: the split sum's tables "
                          "against the ground truth's Monte Carlo estimate");
@@ -156,8 +184,11 @@ void drawAlbedoView(const Document& document, const Interaction& interaction, Ed
         const AlbedoPoint& p = *std::min_element(curve.begin(), curve.end(), [&](const AlbedoPoint& a, const AlbedoPoint& b) {
             return std::abs(a.thetaVDegrees - thetaV) < std::abs(b.thetaVDegrees - thetaV);
         });
-        ImGui::SetTooltip("theta_v %.1f deg\nsplit sum %.4f\nground truth %.4f +- %.4f", double(p.thetaVDegrees),
-                          double(luminance(p.product)), double(luminance(p.truth)), double(luminance(p.standardError)));
+        ImGui::SetTooltip("theta_v %.1f deg\nsplit sum %.4f\nground truth %.4f +- %.4f\ntransmitted: split sum %.4f, "
+                          "ground truth %.4f",
+                          double(p.thetaVDegrees), double(luminance(p.product)), double(luminance(p.truth)),
+                          double(luminance(p.standardError)), double(luminance(p.productTransmitted)),
+                          double(luminance(p.truthTransmitted)));
     }
 }
 

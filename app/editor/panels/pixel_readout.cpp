@@ -52,12 +52,15 @@ std::vector<std::string> storyLines(const PixelStory& s) {
     if (c.emission != glm::vec3(0.0f)) {
         lines.push_back("emission      " + vec3Text(c.emission));
     }
-    // The layers' own light, where the part has them (docs/SHADING.md S5, S6).
+    // The layers' own light, where the part has them (docs/SHADING.md S5, S6, S7).
     if (c.clearcoat != glm::vec3(0.0f)) {
         lines.push_back("clear coat    " + vec3Text(c.clearcoat));
     }
     if (c.sheen != glm::vec3(0.0f)) {
         lines.push_back("sheen         " + vec3Text(c.sheen));
+    }
+    if (c.transmission != glm::vec3(0.0f)) {
+        lines.push_back("transmission  " + vec3Text(c.transmission));
     }
     return lines;
 }

@@ -28,6 +28,21 @@ bool grey(const std::vector<LobeSample>& samples) {
                std::abs(s.specular.g - s.specular.r) <= tolerance && std::abs(s.specular.b - s.specular.r) <= tolerance;
     });
 }
+
+// A transmitting material's lobe below the surface (LobeSample::transmitted, thin-walled
+// KHR_materials_transmission): drawn above the horizon at the mirrored angle, in its own colour
+// and named so; none for a material without a transmission.
+void addTransmittedCurve(LobePlot& plot, const std::vector<LobeSample>& samples, float cosine, const std::string& b) {
+    if (std::all_of(samples.begin(), samples.end(), [](const LobeSample& s) { return s.transmitted == glm::vec3(0.0f); })) {
+        return;
+    }
+    const uint32_t color = rgba(120, 230, 140, 255);
+    LobeCurve curve{{}, color, 1.5f, b + "transmitted, below (mirrored up, luminance)", color};
+    for (const LobeSample& sample : samples) {
+        curve.values.push_back(luminance(sample.transmitted) * cosine);
+    }
+    plot.curves.push_back(std::move(curve));
+}
 }  // namespace
 
 LobePlot lobePlot(const Document& document, const Interaction& interaction) {
@@ -84,6 +99,7 @@ LobePlot lobePlot(const Document& document, const Interaction& interaction) {
             plot.curves.back().legendColor = neutral;
         }
     }
+    addTransmittedCurve(plot, samples, cosine, b);
     plot.maxValue = 1e-6f;
     for (const LobeCurve& curve : plot.curves) {
         for (float value : curve.values) {
