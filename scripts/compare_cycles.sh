@@ -19,6 +19,10 @@
 #     defaults but for the pixel filter), at a quarter of them with another seed (its noise), and
 #     with the model hidden from every ray but the camera's ("cycles-local": each point lit by
 #     the whole sky, as Patina and its ground truth light it, so that only the materials differ);
+#   - Patina's own occlusion of the environment by the model: `gltf` with the scene's
+#     display.ambientOcclusion (`gltf-ao`, the per-vertex bake) and the ground truth with
+#     `--visibility` at REFERENCE_SAMPLES (`truth-visibility`), whose natural match is Cycles
+#     as rendered (neither has Cycles' interreflection);
 #   - both renderers' base colours alone (`--channel base-color --reference`; Cycles with each
 #     material's base colour as emission), which must agree where the view, the UVs and the
 #     texture filtering do: the check that the two see the same thing;
@@ -142,24 +146,32 @@ for line in "${scenes[@]}"; do
   [ -n "$bounds" ] || die "Blender reported no bounding box for $file"
   read -r ex ey ez tx ty tz <<<"$(orbit_camera "$bounds" "$theta" "$phi" "$zoom" "$fov")"
   w=$((width * factor)) h=$((height * factor))
-  cat >"$dir/scene.json" <<EOF
+  write_scene() {   # FILE DISPLAY_EXTRA: the scene, DISPLAY_EXTRA added to its display
+    cat >"$1" <<EOF
 {"format": "patina-scene", "version": 3, "mesh": "$file",
  "camera": {"position": [$ex, $ey, $ez], "target": [$tx, $ty, $tz], "fovYDegrees": $fov},
  "lights": [{"type": "environment", "name": "hdri", "source": "$hdri", "intensity": 1.0, "rotationDegrees": 0}],
- "display": {"exposure": $exposure, "tonemap": "$tonemap", "backgroundEnvironment": true}}
+ "display": {"exposure": $exposure, "tonemap": "$tonemap", "backgroundEnvironment": true$2}}
 EOF
-  render() {   # OUT_STEM ARGS...: one patina render of the scene at the rendered size
-    local stem=$1
-    shift
-    "$patina" render --scene "$dir/scene.json" --width "$w" --height "$h" --out "$dir/$stem.png" --hdr "$dir/$stem.pfm" \
+  }
+  write_scene "$dir/scene.json" ''
+  write_scene "$dir/scene-ao.json" ', "ambientOcclusion": true'
+  render_scene() {   # SCENE_FILE OUT_STEM ARGS...: one patina render of SCENE_FILE at the rendered size
+    local scene=$1 stem=$2
+    shift 2
+    "$patina" render --scene "$scene" --width "$w" --height "$h" --out "$dir/$stem.png" --hdr "$dir/$stem.pfm" \
       "$@" 2>"$dir/$stem.log" || { cat "$dir/$stem.log" >&2; die "patina render $stem of $name failed"; }
   }
+  render() { render_scene "$dir/scene.json" "$@"; }   # OUT_STEM ARGS...: the scene as written
   say "$name: Patina (coverage, base colour, epic, gltf, gltf-single; ground truth at $reference_samples and $((reference_samples / 4)) samples)"
   render coverage --channel geometry-normal --reference
   render base-color --channel base-color --reference
   for model in epic gltf gltf-single; do render "$model" --model "$model"; done
   render reference --model gltf --reference --reference-samples "$reference_samples"
   render reference-quarter --model gltf --reference --reference-samples $((reference_samples / 4))
+  say "$name: Patina with its own occlusion (gltf-ao: display.ambientOcclusion; truth-visibility: --visibility at $reference_samples)"
+  render_scene "$dir/scene-ao.json" gltf-ao --model gltf
+  render truth-visibility --model gltf --reference --visibility --reference-samples "$reference_samples"
 
   say "$name: Cycles at $cycles_samples samples (as rendered, and local), and at $((cycles_samples / 4)) with another seed"
   cycles=(--hdri "$hdri" --model "$file" --render-cycles --width "$w" --height "$h" --world-rotation "$blender_world_rotation"
@@ -177,6 +189,7 @@ EOF
   compare "$dir" "$name" cycles-local gltf epic gltf-single
   compare "$dir" "$name" cycles gltf epic gltf-single cycles-quarter
   compare "$dir" "$name" base-color cycles-base-color
+  for against in reference cycles-local cycles; do compare "$dir" "$name" "$against" gltf-ao truth-visibility; done
 done
 
 "$patina" chart cycles "$out_dir"
@@ -192,8 +205,8 @@ awk -F, -v rs="$reference_samples" -v cs="$cycles_samples" 'NR > 1 {
     print "| scene | image | to the reference | to Cycles, local | to Cycles |"
     print "|---|---|---:|---:|---:|"
     for (i = 1; i <= n; ++i) {
-      split("epic gltf gltf-single cycles-local cycles", images, " ")
-      for (j = 1; j <= 5; ++j) {
+      split("epic gltf gltf-single gltf-ao truth-visibility cycles-local cycles", images, " ")
+      for (j = 1; j <= 7; ++j) {
         m = images[j]
         printf "| %s | %s | %s | %s | %s |\n", order[i], m, cell(order[i] "," m ",reference"),
                cell(order[i] "," m ",cycles-local"), cell(order[i] "," m ",cycles")
