@@ -43,8 +43,8 @@ struct ShadowView {
 // The views of a sphere (centre, radius) around the casters from `light` (packed), maps of
 // `maps.size` texels square, their normal offset scaled by `maps.biasScale`: one for a
 // directional light, or a point, sphere or tube light outside the sphere; six for one inside it,
-// a cube map's faces in shade.frag's cubeFace order (+X, -X, +Y, -Y, +Z, -Z), each a 90-degree
-// view from the light reaching the sphere's far side (Williams 1978's depth map, taken six ways
+// a cube map's faces in shade.frag's cubeFace order (+X, -X, +Y, -Y, +Z, -Z), each a view a
+// little wider than 90 degrees from the light reaching the sphere's far side (Williams 1978's depth map, taken six ways
 // as Gerasimov 2004, "Omnidirectional Shadow Mapping", GPU Gems ch. 12); none for a hemisphere
 // light or an empty sphere.
 std::vector<ShadowView> shadowViewsOf(const shader::PackedLight& light, glm::vec3 centre, float radius,

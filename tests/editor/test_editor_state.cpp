@@ -1757,7 +1757,9 @@ TEST_F(EditorStateTest, AMaterialFileOpenedOnAModelGoesOntoThePartAndKeepsTheMod
     copper.baseColor = {0.95f, 0.64f, 0.54f};
     copper.metallic = 1.0f;
     std::ofstream(mine / "copper.json") << materialToJson(copper).dump();
-    ASSERT_TRUE(openFile(state, mine / "copper.json")) << state.error;
+    state.scene.display.exposure += 1.0f;   // unsaved: an edit onto the part asks nothing all the same
+    requestOpen(state, mine / "copper.json");
+    EXPECT_FALSE(state.pendingOpen.has_value()) << "a material onto a part is an undoable edit";
     EXPECT_EQ(state.model, model);
     EXPECT_EQ(state.fileModel->path, fs::path(state.scene.meshFile));
     EXPECT_EQ(editedMaterial(state, state).metallic, 1.0f);
@@ -1765,6 +1767,26 @@ TEST_F(EditorStateTest, AMaterialFileOpenedOnAModelGoesOntoThePartAndKeepsTheMod
     EXPECT_NE(state.status.find("my copper applied"), std::string::npos) << state.status;
     undo(state, state, state);
     EXPECT_NE(editedMaterial(state, state).metallic, 1.0f);
+}
+
+// Discard takes the model's parts back as saved too (the prompt names them; a part's roughness
+// used to survive it), and its history with them: Ctrl+Z brought the discarded edits back.
+TEST_F(EditorStateTest, DiscardTakesThePartsAndTheHistoryWithIt) {
+    const fs::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    ASSERT_TRUE(openFile(state, box)) << state.error;
+    const Scene saved = state.savedScene;
+    Material part = editedMaterial(state, state);
+    part.roughness = 0.2f;
+    applyEdit(state, [&](Document& d) { setEditedMaterial(state, state, d.scene, part); });
+    applyEdit(state, [&](Document& d) { d.scene.display.ground = Ground::Floor; });
+    ASSERT_TRUE(state.dirty());
+    discardChanges(state, *state.assets);
+    EXPECT_EQ(state.scene.modelMaterials, saved.modelMaterials);
+    EXPECT_EQ(state.scene.display, saved.display);
+    EXPECT_FALSE(state.dirty());
+    undo(state, state, state);
+    EXPECT_EQ(state.scene.display, saved.display) << "Ctrl+Z brought back what was discarded";
+    EXPECT_EQ(state.scene.modelMaterials, saved.modelMaterials);
 }
 }  // namespace
 }  // namespace patina::editor

@@ -101,7 +101,7 @@ void drawUnsavedPrompt(EditorState& state) {
     recordItem("Save changes");
     ImGui::SameLine();
     if (ImGui::Button("Discard changes")) {
-        discardStageAndMaterial(state);
+        discardChanges(state, *state.assets);
         proceed(state);
         ImGui::CloseCurrentPopup();
     }

@@ -1,5 +1,7 @@
 #include "state/document.h"
 
+#include "assets/asset_cache.h"
+
 #include <algorithm>
 
 #include "state/editor_state.h"
@@ -34,13 +36,23 @@ std::string windowTitle(const Document& document) {
     return (document.dirty() ? "*" : "") + name + " - Patina";
 }
 
-void discardStageAndMaterial(Document& document) {
+void discardChanges(Document& document, AssetCache& assets) {
     Scene& scene = document.scene;
+    const Scene& saved = document.savedScene;
     scene.material = document.savedMaterial;
-    scene.lights = document.savedScene.lights;
-    scene.camera = document.savedScene.camera;
-    scene.bookmarks = document.savedScene.bookmarks;
-    scene.display = document.savedScene.display;
+    scene.lights = saved.lights;
+    scene.camera = saved.camera;
+    scene.bookmarks = saved.bookmarks;
+    scene.display = saved.display;
+    if (scene.mesh == saved.mesh && scene.meshFile == saved.meshFile) {
+        scene.modelMaterials = saved.modelMaterials;
+        scene.modelBrdf = saved.modelBrdf;
+        if (document.fileModel) {
+            document.model = assets.retextured(document.fileModel, scene);
+        }
+    }
+    document.history = UndoHistory();
+    document.committed = document.snapshot();
 }
 
 std::string unsavedParts(const Document& document) {

@@ -10,6 +10,10 @@
 #include "scene/scene.h"
 #include "state/undo_history.h"
 
+namespace patina {
+class AssetCache;
+}
+
 namespace patina::editor {
 
 struct Interaction;
@@ -66,11 +70,12 @@ std::string windowTitle(const Document& document);
 // "the material", "the lights and the camera", ...: what is unsaved, for the prompt.
 std::string unsavedParts(const Document& document);
 
-// The prompt's Discard: the material and the stage (lights, camera and its bookmarks, display)
-// back as last saved, so that what the next document keeps of this one (a material or model
-// opened keeps the stage) is not the edits just discarded. The mesh and the model's parts stay:
-// the file opened next replaces or keeps them with what is loaded for them.
-void discardStageAndMaterial(Document& document);
+// The prompt's Discard: the material, the stage (lights, camera and its bookmarks, display)
+// and, on the same shape, the model's parts (retextured through `assets` as saved) back as last
+// saved, so that what the next document keeps of this one (a material or model opened keeps the
+// stage) is not the edits just discarded; the history goes with them (Ctrl+Z brought them back).
+// The mesh stays: the file opened next replaces or keeps it with what is loaded for it.
+void discardChanges(Document& document, AssetCache& assets);
 
 // --- Undoable edits ---------------------------------------------------------------------
 // Widgets write straight into the document's scene. Whatever changed since the last commit

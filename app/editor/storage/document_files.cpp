@@ -334,7 +334,9 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
         state.error = error.what();
         return;
     }
-    if (state.dirty()) {
+    // A material onto a model's part is an undoable edit, as a preset is: nothing to ask.
+    const bool ontoPart = !model && !file.scene && modelMaterialCount(state) > 0;
+    if (state.dirty() && !ontoPart) {
         state.pendingOpen = path;
     } else if (model) {
         startModelLoad(state, state, state, path);   // read and decoded on a worker: the window keeps drawing
