@@ -217,9 +217,13 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     // KHR_materials_sheen's albedo scaling weighs all beneath the fibres, the light through the
     // wall leaving them towards V too (sheen.glsl's sheenViewWeight).
     const float throughSheen = hasReferenceSheen(options) ? shader::sheenViewWeight(layers.sheen) : 1.0f;
+    // And beneath a coat, which weighs all it covers by 1 - clearcoat fr_c (clearcoatOver, as
+    // shade.frag adds the light through the wall before the coat); `transmitted` stays the
+    // light as it leaves the base, the transmission channel's.
+    const float throughCoat = options.clearcoat > 0.0f ? shader::clearcoatBaseWeight(layers.coat) : 1.0f;
     if (transmits) {
         estimate.transmitted = throughSheen * transmittedLights(transmission, lights, P, N, V, options);
-        estimate.value += estimate.transmitted;
+        estimate.value += throughCoat * estimate.transmitted;
     }
     if (!environment.environment || !(glm::dot(N, N) > 0.0f) || options.samples < 1) {
         return estimate;
@@ -231,10 +235,10 @@ ReferenceEstimate referenceRadiance(BrdfModelId model, const shader::SurfaceMate
     estimate.value += glm::vec3(moments.mean(n) * occlusion);
     if (transmits) {
         const SampleMoments through = transmissionMoments(transmission, environment, N, V, options);
-        const double weight = occlusion * double(throughSheen);
-        variance += through.varianceOfMean(n) * (weight * weight);
+        const double weight = occlusion * double(throughSheen), covered = weight * double(throughCoat);
+        variance += through.varianceOfMean(n) * (covered * covered);
         estimate.transmitted += glm::vec3(through.mean(n) * weight);
-        estimate.value += glm::vec3(through.mean(n) * weight);
+        estimate.value += glm::vec3(through.mean(n) * covered);
     }
     // Independent estimates: their variances add.
     estimate.standardError = glm::vec3(glm::sqrt(variance + glm::dvec3(estimate.standardError * estimate.standardError)));

@@ -145,6 +145,21 @@ TEST(AlbedoCurve, ASheenOverAGlassWeighsItsTransmittedLightToo) {
     }
 }
 
+// A coat over a glass covers the light through the wall as it covers the base: the ground truth
+// weighs it by 1 - clearcoat fr_c as shade.frag does (it used to add it outside the coat, and a
+// coated glass's truth came out brighter than its render).
+TEST(AlbedoCurve, ACoatOverAGlassCoversItsTransmittedLightToo) {
+    MaterialParameters glass = whiteGlass();
+    glass.clearcoat = 1.0f;
+    glass.clearcoatRoughness = 0.1f;
+    for (const AlbedoPoint& p : albedoCurve(glass, 5, 2048)) {
+        EXPECT_LE(p.truth.x, 1.0f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        if (p.thetaVDegrees < 60.0f) {
+            EXPECT_NEAR(p.product.x, p.truth.x, 0.03f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        }
+    }
+}
+
 // The chart names each material's two series in full and carries the truth's errors as bars.
 TEST(AlbedoCurve, TheChartCarriesTheTruthsErrorBars) {
     MaterialParameters gold;
