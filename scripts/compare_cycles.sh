@@ -5,13 +5,15 @@
 # (`render --reference --model gltf`); Cycles, whose Principled BSDF v1 is not glTF's model
 # either, is a second opinion.
 #
-# Three scenes, each under one HDRI (Blender's studio.exr, as compare_blender.sh's; HDRI=F
+# Four scenes, each under one HDRI (Blender's studio.exr, as compare_blender.sh's; HDRI=F
 # another) from one camera: BoxTextured and 2CylinderEngine (assimp's glTF 2.0 samples) and a
 # grid of spheres, roughness 0 to 1 across and metallic 0, 0.5, 1 down, of one base colour
-# (scripts/sphere_grid.py). The cameras orbit each model's bounding box as model-viewer's
-# camera-orbit does (its centre the target; Blender reports the box, blender_render.py
-# --bounds) and both renderers are given the same eye, target and field of view. Each scene is
-# rendered at twice the compared size by
+# (scripts/sphere_grid.py), and Khronos's ClearCoatTest (KHR_materials_clearcoat: a base column,
+# the same coated, and the coat alone; Blender's importer reads the coat into the Principled
+# BSDF's Clearcoat, Clearcoat Roughness and Clearcoat Normal). The cameras orbit each model's
+# bounding box as model-viewer's camera-orbit does (its centre the target; Blender reports the
+# box, blender_render.py --bounds) and both renderers are given the same eye, target and field of
+# view. Each scene is rendered at twice the compared size by
 #   - Patina with `--model epic` (the seed's UE4 model), `gltf` (glTF's, the default of a glTF
 #     file's materials) and `gltf-single` (glTF's without the split sum's multiple scattering);
 #   - Patina's ground truth of `gltf` at REFERENCE_SAMPLES, and at a quarter of them (its noise);
@@ -37,20 +39,24 @@
 #   - cycles.png/.svg/.pdf (`patina chart cycles OUT_DIR`): each model's distance to the truth
 #     against its distance to Cycles;
 #   - cycles_SCENE.png: the images as displayed and, under each, where it differs from the truth;
-# and prints the tables docs/LIGHTING.md quotes, with each renderer's noise (two estimates of one
-# image at N and N/4 samples differ by about sqrt(5) times the mean |noise| at N), and the sphere
-# grid sphere by sphere (scripts/sphere_grid_cells.py).
+# and prints the tables docs/LIGHTING.md quotes (ClearCoatTest's also rendered by Patina `gltf`,
+# Cycles and Cycles local without its coat, and measured column by column by
+# scripts/clearcoat_columns.py: docs/SHADING.md, S5, quotes it), with each renderer's noise (two
+# estimates of one image at N and N/4 samples differ by about sqrt(5) times the mean |noise| at
+# N), and the sphere grid sphere by sphere (scripts/sphere_grid_cells.py).
 #
 # Usage: bash scripts/compare_cycles.sh [--quick] [--out-dir D] [--work-dir W]
 #   --out-dir: default docs/lighting/cycles (with --quick a temporary folder);
 #   --quick: a quarter of the samples, to check the pipeline (its numbers are noise-bound);
 #   --work-dir: keep the renders there (default: a temporary folder, removed on exit).
-# BUILD_DIR overrides build/; REFERENCE_SAMPLES (default 256) and CYCLES_SAMPLES (default 32)
-# the sample counts, small so that the whole run fits in minutes: more lower the noise floors
-# the script prints (1-6 levels at the defaults). Installs Debian's `blender` and python3-numpy
-# when missing (scripts/blender_setup.sh) and builds Patina (scripts/build.sh) when
-# build/app/patina is missing. Cycles and the ground truth run on the CPU: on two cores shared with other work the
-# whole run takes about 7 minutes (--quick: about 4, most of it Blender starting).
+# SCENES (names, space separated) renders only those scenes (OUT_DIR's cycles.csv then holds only
+# their rows: give another --out-dir and add them to the docs' by hand). BUILD_DIR overrides build/; REFERENCE_SAMPLES
+# (default 256) and CYCLES_SAMPLES (default 32) the sample counts, small so that the whole run
+# fits in minutes: more lower the noise floors the script prints (1-6 levels at the defaults).
+# Installs Debian's `blender` and python3-numpy when missing (scripts/blender_setup.sh) and builds
+# Patina (scripts/build.sh) when build/app/patina is missing. Cycles and the ground truth run on
+# the CPU: on two cores shared with other work the whole run takes about 10 minutes (ClearCoatTest
+# alone about 3; --quick: about 5, most of it Blender starting).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -119,6 +125,7 @@ scenes=(
   "spheres $work/sphere_grid.gltf 240 144 0 90 0.59"
   "BoxTextured $assimp/BoxTextured-glTF/BoxTextured.gltf 160 160 35 60 1.05"
   "2CylinderEngine $assimp/2CylinderEngine-glTF-Binary/2CylinderEngine.glb 192 192 30 65 0.8"
+  "ClearCoatTest $assimp/ClearCoat-glTF/ClearCoatTest.gltf 168 200 0 90 0.8"
 )
 
 sheet=()
@@ -136,8 +143,24 @@ compare() {   # SCENE_DIR SCENE IMAGE... : patina difference's rows, the scene's
     --erode "$erode" --exposure "$exposure" --tonemap "$tonemap" --scene "$name" "${sheet[@]}" | tail -n +2 >>"$csv"
 }
 
+# coat_off DIR FILE: ClearCoatTest again without its coat (gltf, cycles-local, cycles), for
+# scripts/clearcoat_columns.py's "the coat adds". Uses the loop's camera and render helpers.
+coat_off() {
+  local dir=$1 stripped="$1/nocoat/$(basename "$2")"
+  python3 "$root/scripts/clearcoat_columns.py" strip "$2" "$dir/nocoat" || die "stripping the coat failed"
+  say "ClearCoatTest without its coat: Patina gltf, Cycles (local and as rendered)"
+  file=$stripped write_scene "$dir/scene-nocoat.json" ''
+  render_scene "$dir/scene-nocoat.json" gltf-nocoat --model gltf
+  local blender_args=("${cycles[@]}")
+  blender_args[3]=$stripped   # --model's value
+  run_blender "$dir/cycles-nocoat.log" "${blender_args[@]}" --samples "$cycles_samples" --out "$dir/cycles-nocoat.exr"
+  run_blender "$dir/cycles-local-nocoat.log" "${blender_args[@]}" --samples "$cycles_samples" --local \
+    --out "$dir/cycles-local-nocoat.exr"
+}
+
 for line in "${scenes[@]}"; do
   read -r name file width height theta phi zoom <<<"$line"
+  [ -z "${SCENES:-}" ] || [[ " $SCENES " == *" $name "* ]] || continue
   dir="$work/$name"
   mkdir -p "$dir"
   [ -f "$file" ] || die "$file is missing"
@@ -190,6 +213,7 @@ EOF
   compare "$dir" "$name" cycles gltf epic gltf-single cycles-quarter
   compare "$dir" "$name" base-color cycles-base-color
   for against in reference cycles-local cycles; do compare "$dir" "$name" "$against" gltf-ao truth-visibility; done
+  [ "$name" != ClearCoatTest ] || coat_off "$dir" "$file"
 done
 
 "$patina" chart cycles "$out_dir"
@@ -221,7 +245,14 @@ awk -F, -v rs="$reference_samples" -v cs="$cycles_samples" 'NR > 1 {
     }
   }' "$csv"
 echo
-python3 "$root/scripts/sphere_grid_cells.py" "$patina" "$work/spheres" --tonemap "$tonemap" --downsample "$factor" \
-  --erode "$erode" || die "sphere_grid_cells.py failed"
+if [ -d "$work/ClearCoatTest" ]; then
+  python3 "$root/scripts/clearcoat_columns.py" measure "$patina" "$work/ClearCoatTest" --tonemap "$tonemap" \
+    --downsample "$factor" --erode "$erode" || die "clearcoat_columns.py failed"
+  echo
+fi
+if [ -d "$work/spheres" ]; then
+  python3 "$root/scripts/sphere_grid_cells.py" "$patina" "$work/spheres" --tonemap "$tonemap" --downsample "$factor" \
+    --erode "$erode" || die "sphere_grid_cells.py failed"
+fi
 echo
 echo "CSV: ${csv#"$root"/}; chart: ${out_dir#"$root"/}/cycles.png; pictures: ${out_dir#"$root"/}/cycles_*.png"

@@ -113,4 +113,5 @@ def main():
                 "%.1f (%+.1f)" % result[row, column, name] for column in range(len(options.roughness))) + " |")
 
 
-main()
+if __name__ == "__main__":   # scripts/clearcoat_columns.py imports its PFM helpers
+    main()
