@@ -92,14 +92,14 @@ private:
 };
 }  // namespace
 
-// What a frame's shadow maps depend on: each view, the maps' size and bias, the shape (held, so
-// that its address cannot be another's) and where each opaque item stands, and a MASK item's
-// alpha. Equal to the last frame's, the maps are kept: a material drag redrew a 2048 x 2048 map
-// of the whole model every frame (60% of 2CylinderEngine's drag frame with a shadowed sun).
+// What a frame's shadow maps depend on, for the shape shown (a new one drops the key:
+// uploadShape): each view, the maps' size and bias, where each opaque item stands, and a MASK
+// item's alpha. Equal to the last frame's, the maps are kept: a material drag redrew a 2048 x
+// 2048 map of the whole model every frame (a quarter of 2CylinderEngine's drag frame under a
+// shadowed sun).
 struct ShadowCasters {
     std::vector<glm::mat4> views;
     ShadowMapSettings maps;
-    std::shared_ptr<const void> shape;
     std::vector<std::tuple<const Mesh*, int, glm::mat4, bool, float, float, const ModelMaterial*>> items;
     bool operator==(const ShadowCasters&) const = default;
 };
@@ -275,6 +275,7 @@ void Renderer::uploadShape(State& s, const PreparedScene& prepared) {
         return;
     }
     s.shapeShown.reset();   // until every primitive is up: a throw leaves nothing half-shown
+    s.shadowsDrawn.reset();   // its casters' addresses may be another shape's
     const std::vector<const Mesh*> meshes = primitivesOf(prepared);
     s.primitives.resize(meshes.size());
     for (size_t i = 0; i < meshes.size(); ++i) {
@@ -784,10 +785,8 @@ void Renderer::Frame::drawStrip(int top) {
 constexpr float kShadowSlopeBias = 2.0f;
 constexpr float kShadowConstantBias = 4.0f;
 
-// Each shadowed light's map: the depth of every opaque item but the ground, seen from the
-// light, both sides (a model's open surfaces cast too); then the maps bound for the shading.
 std::optional<ShadowCasters> Renderer::Frame::shadowCasters() const {
-    ShadowCasters casters{{}, settings.shadowMaps, s.shapeShown, {}};
+    ShadowCasters casters{{}, settings.shadowMaps, {}};
     for (const ShadowView& view : shadowViews) {
         casters.views.push_back(view.clip);
     }
@@ -805,6 +804,9 @@ std::optional<ShadowCasters> Renderer::Frame::shadowCasters() const {
     return casters;
 }
 
+// Each shadowed light's map: the depth of every opaque item but the ground, seen from the
+// light, both sides (a model's open surfaces cast too), unless the last frame's hold the same
+// casters (ShadowCasters); then the maps bound for the shading.
 void Renderer::Frame::drawShadowMaps() const {
     if (shadowViews.empty()) {
         return;
