@@ -110,7 +110,7 @@ ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurface
     image.backdrop.assign(pixels, 0);
     const int32_t catcher = catcherDraw(prepared, surfaces.materials.size());
     drawBackground(image, scene, environment.get(), light, surfaces, catcher);
-    const HdrImage background = image.value;   // behind the catcher
+    const HdrImage background = catcher >= 0 ? image.value : HdrImage{};   // behind the catcher
     CatcherSamples caught = catcherSamples(surfaces, catcher);
     // Per sample, the running sums of the pass means weighted by their counts, and of the squared
     // standard errors: independent passes, so the variance of the overall mean adds as
