@@ -223,11 +223,16 @@ bool startsADocument(const Preferences& preferences, const std::filesystem::path
     return !environment && !isPreset(preferences, path);
 }
 
+// Whether `file` is a material that goes onto the part the panel edits, an undoable edit: a
+// preset, or any material onto a model (the scene's own material is the built-in meshes', and a
+// document of it would show nothing of it; it also dropped the model: an empty viewport).
+bool ontoEditedPart(const Document& document, const Preferences& preferences, const std::filesystem::path& path,
+                    const DocumentFile& file) {
+    return file.material && (isPreset(preferences, path) || modelMaterialCount(document) > 0);
+}
+
 void applyDocumentFile(EditorState& state, const std::filesystem::path& path, DocumentFile file) {
-    // A material onto a model goes onto the part the panel edits, as a preset does: the scene's
-    // own material is the built-in meshes', and a document of it would show nothing of it (it
-    // also dropped the model: an empty viewport).
-    const bool onPart = !file.scene && (isPreset(state, path) || modelMaterialCount(state) > 0);
+    const bool onPart = ontoEditedPart(state, state, path, file);
     if (file.scene) {
         // A scene file is the document; a screenshot's scene is not a file to save into.
         startDocument(state, state, state, *file.scene, path.extension() == ".png" ? std::filesystem::path() : path, {},
@@ -335,8 +340,7 @@ void requestOpen(EditorState& state, const std::filesystem::path& path) {
         return;
     }
     // A material onto a model's part is an undoable edit, as a preset is: nothing to ask.
-    const bool ontoPart = !model && !file.scene && modelMaterialCount(state) > 0;
-    if (state.dirty() && !ontoPart) {
+    if (state.dirty() && !ontoEditedPart(state, state, path, file)) {
         state.pendingOpen = path;
     } else if (model) {
         startModelLoad(state, state, state, path);   // read and decoded on a worker: the window keeps drawing
