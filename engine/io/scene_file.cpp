@@ -100,7 +100,7 @@ Light lightFromJson(const Json& json, int version, const std::string& pointer, c
     light.intensity = reader.number("intensity", light.intensity, kNonNegative);
     light.shadows = reader.boolean("shadows", false);
     // A hemisphere or an environment has no position or direction to cast from: said, not drawn.
-    if (light.shadows && (light.type == LightType::Hemisphere || light.type == LightType::Environment)) {
+    if (light.shadows && !castsShadows(light.type)) {
         warnings.push_back(source + ": " + reader.pointerOf("shadows") + ": " + std::string(lightTypeName(light.type)) +
                            " lights cast no shadows (only point, sphere, tube and directional lights do); ignored");
         light.shadows = false;

@@ -22,4 +22,8 @@ std::optional<LightType> lightTypeFromName(std::string_view name) {
     return enumFromName(name, all, lightTypeName);
 }
 
+bool castsShadows(LightType type) {
+    return type != LightType::Hemisphere && type != LightType::Environment;
+}
+
 }  // namespace patina

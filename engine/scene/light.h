@@ -14,6 +14,9 @@ enum class LightType { Point, Directional, Hemisphere, Environment, Sphere, Tube
 
 std::string_view lightTypeName(LightType type);
 std::optional<LightType> lightTypeFromName(std::string_view name);
+// Whether a light of `type` can cast shadows: it has a place or a direction (point, sphere, tube,
+// directional); a hemisphere or an environment has neither.
+bool castsShadows(LightType type);
 
 // One light of any type; fields a type does not use keep their defaults and are ignored.
 // c_light = color * intensity (docs/SHADING.md S1).

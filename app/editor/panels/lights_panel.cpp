@@ -200,7 +200,7 @@ void editLight(Light& light, float intensityScale) {
     recordItem("Light name", "The light's name in the list and the scene file");
     ImGui::Checkbox("Enabled", &light.enabled);
     recordItem("Light enabled", "Whether this light shines");
-    if (light.type != LightType::Hemisphere && light.type != LightType::Environment) {
+    if (castsShadows(light.type)) {
         ImGui::Checkbox("Shadows", &light.shadows);
         recordItem("Light shadows", "Whether the model casts shadows of this light, on itself and on the ground "
                                     "(the viewport's Ground list); a shadow map (six, a cube map, for a light among the "
