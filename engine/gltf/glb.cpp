@@ -38,7 +38,11 @@ GlbChunks splitGlb(const std::vector<uint8_t>& bytes, const std::string& source)
     }
     const uint32_t version = readU32(bytes.data() + 4);
     if (version != 2) {
-        fail(source, "version " + std::to_string(version) + " is not supported (only 2)");
+        // Version 1 is glTF 1.0's binary (KHR_binary_glTF): say which glTF it holds.
+        fail(source, "version " + std::to_string(version) + " is not supported (only 2" +
+                         (version == 1 ? ": this is a glTF 1.0 binary; convert it to glTF 2.0 first, as "
+                                         "gltf-pipeline on npm does)"
+                                       : ")"));
     }
     const uint32_t length = readU32(bytes.data() + 8);
     if (length != bytes.size()) {

@@ -252,12 +252,69 @@ private:
     std::vector<std::string> required_;   // /extensionsRequired's names
 };
 
+// The file's /asset/version, read past anything else ("" where it has none or the JSON breaks
+// first), for a file the rules refused: a glTF 1.0 file breaks them at its first
+// dictionary-shaped property ("/accessors: must be an array"), which says nothing of why.
+// nlohmann's SAX parser keeps its nesting on a heap stack, so a deep file costs no call stack.
+class VersionFinder final : public nlohmann::json_sax<SaxJson> {
+public:
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool string(string_t& text) override {
+        if (inAsset_ && depth_ == 2 && key_ == "version") {
+            version_ = text;
+            return false;   // found: the rest is not read
+        }
+        return true;
+    }
+    bool start_object(std::size_t) override { return enter(); }
+    bool start_array(std::size_t) override { return enter(); }
+    bool end_object() override { return leave(); }
+    bool end_array() override { return leave(); }
+    bool key(string_t& key) override {
+        key_ = key;
+        if (depth_ == 1) {
+            inAsset_ = key == "asset";
+        }
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+    const std::string& version() const { return version_; }
+
+private:
+    bool enter() { return ++depth_ <= kMaxJsonDepth; }
+    bool leave() {
+        --depth_;
+        return true;
+    }
+    size_t depth_ = 0;
+    bool inAsset_ = false;
+    std::string key_, version_;
+};
+
+// A refused file that says it is not glTF 2 is told so, with what to do about it.
+std::string whyRefused(std::string_view json, const std::string& problem) {
+    VersionFinder finder;
+    SaxJson::sax_parse(json.begin(), json.end(), &finder);
+    const std::string& version = finder.version();
+    if (!version.empty() && version.rfind("2.", 0) != 0) {
+        return "a glTF " + version + " file (asset.version \"" + version +
+               "\"); Patina reads glTF 2.0 only: convert it to 2.0 first (gltf-pipeline, on npm, "
+               "converts 1.0 files)";
+    }
+    return problem.empty() ? "invalid JSON" : problem;
+}
+
 }  // namespace
 
 std::vector<std::string> checkGltfJson(std::string_view json, bool glb, const std::string& source) {
     Checker checker(glb);
     if (!SaxJson::sax_parse(json.begin(), json.end(), &checker)) {
-        throw InputError(source + ": " + (checker.problem().empty() ? "invalid JSON" : checker.problem()));
+        throw InputError(source + ": " + whyRefused(json, checker.problem()));
     }
     return checker.required();
 }

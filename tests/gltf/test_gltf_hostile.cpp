@@ -297,6 +297,22 @@ TEST_F(GltfHostile, JsonThatWouldExhaustTheParserIsRefused) {
                  "noise.glb: neither a glTF binary (a .glb starts with \"glTF\") nor glTF JSON");
 }
 
+// A glTF 1.0 file breaks the 2.0 rules at its first dictionary ("/accessors: must be an
+// array"), which does not say why: it is named for what it is, with what to do.
+TEST_F(GltfHostile, AGltf1FileIsNamedForItsVersion) {
+    GltfBuilder::writeText(model("old.gltf"), R"({"accessors": {"a": {"count": 3}}, "extras": [[[1]]],
+        "asset": {"generator": "collada2gltf", "version": "1.0"}})");
+    const std::string error = importError(model("old.gltf"));
+    EXPECT_ERROR(error, "old.gltf: a glTF 1.0 file (asset.version \"1.0\"); Patina reads glTF 2.0 only");
+    EXPECT_ERROR(error, "convert it to 2.0 first");
+    // A 2.0 file that breaks the same rule keeps the rule's message.
+    GltfBuilder::writeText(model("new.gltf"), R"({"accessors": {}, "asset": {"version": "2.0"}})");
+    EXPECT_ERROR(importError(model("new.gltf")), "/accessors: must be an array, not an object");
+    std::vector<uint8_t> glb1 = {'g', 'l', 'T', 'F', 1, 0, 0, 0, 20, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    GltfBuilder::writeBytes(model("old.glb"), glb1);
+    EXPECT_ERROR(importError(model("old.glb")), "version 1 is not supported (only 2: this is a glTF 1.0 binary");
+}
+
 TEST_F(GltfHostile, AModelWithoutTrianglesIsRefused) {
     EXPECT_ERROR(errorWith("/scenes/0/nodes", Json::array()), "cube.gltf: the scene has no triangles");
     EXPECT_ERROR(errorWith("/meshes/0/primitives/0/mode", 1), "the scene has no triangles");   // lines only
