@@ -1,5 +1,6 @@
 #include "gltf/document.h"
 
+#include <algorithm>
 #include <new>
 
 #include "common/one_line.h"
@@ -65,6 +66,20 @@ bool parse(tinygltf::TinyGLTF& loader, tinygltf::Model& model, const std::vector
     return loader.LoadASCIIFromString(&model, &error, &warning, text.data(), unsigned(text.size()), baseDir);
 }
 
+// tinygltf says a missing buffer file as "File not found : NAME" (images never get here: a
+// missing one is a warning of images.cpp's); said as Patina says the images'.
+std::string saidPlainly(std::string message) {
+    const std::string tinygltfs = "File not found : ";
+    for (size_t at = message.find(tinygltfs); at != std::string::npos; at = message.find(tinygltfs, at)) {
+        const size_t end = std::min(message.find(';', at), message.size());
+        const std::string name = message.substr(at + tinygltfs.size(), end - at - tinygltfs.size());
+        const std::string said = "the buffer file '" + name + "' is not found in the model's folder";
+        message.replace(at, end - at, said);
+        at += said.size();
+    }
+    return message;
+}
+
 }  // namespace
 
 tinygltf::Model loadDocument(const std::filesystem::path& path, const std::vector<uint8_t>& bytes,
@@ -89,7 +104,7 @@ tinygltf::Model loadDocument(const std::filesystem::path& path, const std::vecto
     // fails on some (an empty image file) with only a warning.
     if (!loaded || !error.empty()) {
         // tinygltf collects messages line by line: one line, its lines apart by ';'.
-        const std::string message = oneLine(error.empty() ? warning : error, ';');
+        const std::string message = saidPlainly(oneLine(error.empty() ? warning : error, ';'));
         throw InputError(source + ": " + (message.empty() ? "cannot be loaded" : message));
     }
     // A stream of a few bytes may declare up to kMaxMeshoptBytes: running out is bad input too.

@@ -265,7 +265,7 @@ TEST_F(GltfAssets, BrokenFilesAreRefusedWithClearErrors) {
         {"IndexOutOfRange/IndexOutOfRange.gltf", "/meshes/0/primitives/0/indices: element 0 is 255 but the primitive "
                                                  "has 24 vertices"},
         {"IndexOutOfRange/AllIndicesOutOfRange.gltf", "/meshes/0/primitives/0/indices: element 0 is 65535"},
-        {"MissingBin/BoxTextured.gltf", "BoxTextured0.bin"},
+        {"MissingBin/BoxTextured.gltf", "the buffer file 'BoxTextured0.bin' is not found in the model's folder"},
         {"wrongTypes/badArray.gltf", "/meshes/0/primitives: must be an array, not an object"},
         {"wrongTypes/badExtension.gltf", "/materials/0/pbrMetallicRoughness/baseColorTexture/extensions/"
                                          "KHR_texture_transform: must be an object, not a string"},
