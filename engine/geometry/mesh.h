@@ -26,6 +26,9 @@ struct Mesh {
     std::vector<uint32_t> indices;
     std::vector<glm::vec2> uv0, uv1;     // glTF TEXCOORD_0 / _1: (0, 0) the image's top-left
     std::vector<glm::vec4> tangents;     // xyz unit, w = +-1: bitangent = cross(N, T.xyz) * w
+    // glTF COLOR_0, linear RGBA (an RGB accessor's alpha 1): multiplies the base colour and its
+    // alpha (glTF 2.0 section 3.9.2).
+    std::vector<glm::vec4> colors;
 };
 
 // Unit sphere at the origin: `rings` latitude bands, `segments` longitude bands.

@@ -272,6 +272,7 @@ void appendCopy(Mesh& mesh, uint32_t v, const glm::vec4& tangent) {
     copy(mesh.normals);
     copy(mesh.uv0);
     copy(mesh.uv1);
+    copy(mesh.colors);
     mesh.tangents.push_back(tangent);
     mesh.positions.push_back(mesh.positions[v]);
 }

@@ -8,6 +8,7 @@ MeshBuffers::MeshBuffers() {
     glGenVertexArrays(1, &vertexArray_);
     glGenBuffers(1, &vertices_);
     glGenBuffers(1, &indices_);
+    glGenBuffers(1, &colors_);
 }
 
 namespace {
@@ -42,6 +43,7 @@ std::vector<float> interleave(const Mesh& mesh, bool surface) {
 }  // namespace
 
 MeshBuffers::~MeshBuffers() {
+    glDeleteBuffers(1, &colors_);
     glDeleteBuffers(1, &indices_);
     glDeleteBuffers(1, &vertices_);
     glDeleteVertexArrays(1, &vertexArray_);
@@ -72,6 +74,15 @@ void MeshBuffers::upload(const Mesh& mesh) {
                  interleaved.data(), GL_STATIC_DRAW);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)),
                  mesh.indices.data(), GL_STATIC_DRAW);
+    hasColors_ = !mesh.colors.empty();
+    if (hasColors_) {
+        glBindBuffer(GL_ARRAY_BUFFER, colors_);
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.colors.size() * sizeof(glm::vec4)), mesh.colors.data(),
+                     GL_STATIC_DRAW);
+        attribute(kColorAttribute, 4, 0, 4);
+    } else {
+        glDisableVertexAttribArray(kColorAttribute);
+    }
     glBindVertexArray(0);
     indexCount_ = GLsizei(mesh.indices.size());
     bounds_ = bounds;

@@ -112,7 +112,14 @@ struct Renderer::State {
                                  {shader_sources::texture_glsl, shader_sources::surface_maps_glsl,
                                   shader_sources::black_frag},
                                  {"PATINA_TEXTURED"}};
-    LazyProgram& prepass(bool maps) { return maps ? depthPrepassMaps : depthPrepass; }
+    // And with vertex colours, whose alpha cuts out too.
+    LazyProgram depthPrepassColors{{shader_sources::mesh_vert},
+                                   {shader_sources::texture_glsl, shader_sources::surface_maps_glsl,
+                                    shader_sources::black_frag},
+                                   {"PATINA_TEXTURED", "PATINA_VERTEX_COLOR"}};
+    LazyProgram& prepass(bool maps, bool colors) {
+        return colors ? depthPrepassColors : maps ? depthPrepassMaps : depthPrepass;
+    }
     LazyProgram display{{shader_sources::fullscreen_vert}, {shader_sources::display_glsl, shader_sources::display_frag}};
     // With a shadow catcher over the flat background (display.frag's PATINA_CAUGHT_BACKGROUND).
     LazyProgram displayCaught{{shader_sources::fullscreen_vert},
@@ -372,6 +379,7 @@ private:
     bool environmentBackground = false;   // a drawn background covers every pixel
     bool maps = false;                    // an item has texture maps: the programs read them
     bool ambientOcclusion = false;        // the items carry their ambient occlusion (SceneDraw::occlusion)
+    bool vertexColors = false;            // an item with maps has vertex colours: the programs read them
     FramePlan plan;
     std::vector<shader::PackedLight> packed;
     ChannelLights channelLights;   // with a channel: its lights in `packed`
@@ -443,9 +451,11 @@ void Renderer::Frame::planDraw() {
                          item.blend});
     }
     maps = std::any_of(draws.begin(), draws.end(), [](const SceneDraw& item) { return item.maps != nullptr; });
+    vertexColors = std::any_of(draws.begin(), draws.end(),
+                               [](const SceneDraw& item) { return item.maps && !item.mesh->colors.empty(); });
     // The maps' three vertex outputs (surface_maps.glsl) take two flat lights' rows and more.
-    // The ambient occlusion's one output takes one more light's.
-    const size_t taken = (maps ? 2 : 0) + (ambientOcclusion ? 1 : 0);
+    // The ambient occlusion's one output and the vertex colours' one take one more light's each.
+    const size_t taken = (maps ? 2 : 0) + (ambientOcclusion ? 1 : 0) + (vertexColors ? 1 : 0);
     const size_t flatSlots = s.flatLightSlots - std::min(s.flatLightSlots, taken);
     plan = planFrame(planned, scene.camera, facts, s.maxSamples, flatSlots);
     packed = packEnabledLights(scene.lights);
@@ -543,10 +553,11 @@ void Renderer::Frame::choosePrograms() {
         catcher.catcher = true;
         catcherProgram = &s.shading.useSingle(draws.back().material.model, catcher, ShadingPrograms::Output::Linear,
                                               ShadingPrograms::surfaceOf(maps, false, false, false,
-                                                                         draws.back().occlusion != nullptr));
+                                                                         draws.back().occlusion != nullptr,
+                                                                         vertexColors));
     }
     if (settings.path == RenderPath::Multi || singlePass.shadows) {
-        s.prepass(maps).get();
+        s.prepass(maps, vertexColors).get();
     }
     backgroundPass = environmentBackground ? &s.background(plan.displayInPass).get() : nullptr;
     if (environment) {
@@ -595,7 +606,7 @@ void Renderer::Frame::chooseShadingPrograms(const ShadingPrograms::SinglePass& s
         }
         const BrdfModelId model = itemKey.model;
         const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-            maps, itemKey.clearcoat, itemKey.sheen, itemKey.transmission, itemKey.ambientOcclusion);
+            maps, itemKey.clearcoat, itemKey.sheen, itemKey.transmission, itemKey.ambientOcclusion, vertexColors);
         ShaderSpecialisation key = specialised;
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
@@ -620,7 +631,7 @@ void Renderer::Frame::chooseSceneBehindPrograms(const ShadingPrograms::SinglePas
         const ProgramKey itemKey = programKeyOf(item);
         if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
             const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-                maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion);
+                maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion, vertexColors);
             behindShading[itemKey] =
                 &s.shading.useSingle(itemKey.model, singlePass, ShadingPrograms::Output::Linear, surface);
         }
@@ -714,6 +725,9 @@ void Renderer::Frame::draw() {
     if (ambientOcclusion) {
         // An item without values (baked for another shape) reads attribute 5's constant: none.
         glVertexAttrib1f(MeshBuffers::kOcclusionAttribute, 1.0f);
+    }
+    if (vertexColors) {   // an item without colours multiplies by none
+        glVertexAttrib4f(MeshBuffers::kColorAttribute, 1.0f, 1.0f, 1.0f, 1.0f);
     }
     drawShadowMaps();
     drawSceneBehind();
@@ -817,7 +831,7 @@ void Renderer::Frame::drawShadowMaps() const {
         return;
     }
     s.shadowsDrawn.reset();   // until drawn
-    const GlProgram& program = s.prepass(maps).get();
+    const GlProgram& program = s.prepass(maps, vertexColors).get();
     program.use();
     const DrawUniforms uniforms(program, mapTextures());
     glEnable(GL_DEPTH_TEST);
@@ -976,7 +990,7 @@ void Renderer::Frame::drawSinglePass(Items opaque, Items blended, bool catcher) 
 // light passes add alpha times theirs: the same "over" as one pass where the item does not
 // cover itself (where it does, each pass adds every layer, not the layers over one another).
 void Renderer::Frame::drawMultiPass(Items opaque, Items blended) const {
-    const GlProgram& depthPrepass = s.prepass(maps).get();
+    const GlProgram& depthPrepass = s.prepass(maps, vertexColors).get();
     depthPrepass.use();
     prepare(depthPrepass);
     const DrawUniforms prepassUniforms(depthPrepass, mapTextures());

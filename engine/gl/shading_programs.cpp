@@ -67,6 +67,9 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (has(surface, Surface::AmbientOcclusion)) {
         defines.push_back("PATINA_AMBIENT_OCCLUSION");
     }
+    if (has(surface, Surface::VertexColors)) {
+        defines.push_back("PATINA_VERTEX_COLOR");
+    }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {
             defines.push_back("PATINA_ENVIRONMENT_DOMINANT");

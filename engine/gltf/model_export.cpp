@@ -125,6 +125,9 @@ Json meshJson(const Mesh& mesh, int material, Buffer& buffer) {
     if (!mesh.uv1.empty()) {
         attributes["TEXCOORD_1"] = buffer.accessor(mesh.uv1, "VEC2", kFloat, kArrayBuffer);
     }
+    if (!mesh.colors.empty()) {   // as read: linear RGBA floats
+        attributes["COLOR_0"] = buffer.accessor(mesh.colors, "VEC4", kFloat, kArrayBuffer);
+    }
     Json primitive{{"attributes", attributes},
                    {"indices", buffer.accessor(mesh.indices, "SCALAR", kUnsignedInt, kElementArrayBuffer)}};
     if (material >= 0) {

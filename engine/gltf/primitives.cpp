@@ -48,6 +48,11 @@ const Attribute kTangent{"TANGENT", TINYGLTF_TYPE_VEC4, {kFloat}, kSignedNormali
 const std::vector<AccessorForm> kTexCoordForms{kFloat, {kUnsignedByte, true}, {kUnsignedShort, true}};
 const std::vector<AccessorForm> kQuantizedTexCoordForms{{kByte, false}, {kByte, true}, {kUnsignedByte, false},
                                                         {kShort, false}, {kShort, true}, {kUnsignedShort, false}};
+// Section 3.7.2.1: COLOR_0 is VEC3 or VEC4, float or normalized unsigned byte or short, with
+// KHR_mesh_quantization as without (the extension adds no form for colours).
+const std::vector<AccessorForm> kColorForms{kFloat, {kUnsignedByte, true}, {kUnsignedShort, true}};
+const Attribute kColors[2] = {{"COLOR_0", TINYGLTF_TYPE_VEC4, kColorForms, {}, "colours"},
+                              {"COLOR_0", TINYGLTF_TYPE_VEC3, kColorForms, {}, "colours"}};
 const Attribute kTexCoords[2] = {
     {"TEXCOORD_0", TINYGLTF_TYPE_VEC2, kTexCoordForms, kQuantizedTexCoordForms, "texture coordinates"},
     {"TEXCOORD_1", TINYGLTF_TYPE_VEC2, kTexCoordForms, kQuantizedTexCoordForms, "texture coordinates"}};
@@ -84,6 +89,16 @@ std::optional<CheckedAccessor> planAttribute(const tinygltf::Model& model, const
     return accessor;
 }
 
+// COLOR_0's accessor, as an RGB one where the file says VEC3, else as RGBA.
+std::optional<CheckedAccessor> planColors(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                          bool quantized, const PrimitivePlan& plan, const std::string& source) {
+    const auto found = primitive.attributes.find(kColors[0].name);
+    const bool rgb = found != primitive.attributes.end() && found->second >= 0 &&
+                     size_t(found->second) < model.accessors.size() &&
+                     model.accessors[size_t(found->second)].type == TINYGLTF_TYPE_VEC3;
+    return planAttribute(model, primitive, kColors[rgb ? 1 : 0], quantized, plan, source);
+}
+
 // Every element of a float accessor as a vector of `Vec`, each number finite.
 template <typename Vec>
 std::vector<Vec> readVectors(const CheckedAccessor& accessor, const std::string& what, const std::string& source) {
@@ -97,6 +112,19 @@ std::vector<Vec> readVectors(const CheckedAccessor& accessor, const std::string&
         std::memcpy(&vectors[i][0], &numbers[i * n], sizeof(float) * n);
     }
     return vectors;
+}
+
+// COLOR_0's elements as linear RGBA: an RGB accessor's alpha is 1.
+std::vector<glm::vec4> readColors(const CheckedAccessor& accessor, const std::string& what, const std::string& source) {
+    if (accessor.components == 4) {
+        return readVectors<glm::vec4>(accessor, what, source);
+    }
+    std::vector<glm::vec4> colors;
+    colors.reserve(accessor.count);
+    for (const glm::vec3& rgb : readVectors<glm::vec3>(accessor, what, source)) {
+        colors.emplace_back(rgb, 1.0f);
+    }
+    return colors;
 }
 
 // The primitive's corners: its indices, each checked, or 0, 1, 2, ... without them.
@@ -157,6 +185,9 @@ uint32_t copyVertex(Mesh& mesh, uint32_t v, const glm::vec3& normal, const Primi
             uv->push_back((*uv)[v]);
         }
     }
+    if (!mesh.colors.empty()) {
+        mesh.colors.push_back(mesh.colors[v]);
+    }
     return uint32_t(mesh.positions.size() - 1);
 }
 
@@ -201,7 +232,8 @@ std::vector<std::pair<const char*, CheckedAccessor*>> plannedAttributes(Primitiv
     std::vector<std::pair<const char*, CheckedAccessor*>> attributes{{"POSITION", &plan.positions}};
     for (auto [name, accessor] : {std::pair{kNormal.name, &plan.normals}, std::pair{kTangent.name, &plan.tangents},
                                   std::pair{kTexCoords[0].name, &plan.texCoords[0]},
-                                  std::pair{kTexCoords[1].name, &plan.texCoords[1]}}) {
+                                  std::pair{kTexCoords[1].name, &plan.texCoords[1]},
+                                  std::pair{kColors[0].name, &plan.colors}}) {
         if (*accessor) {
             attributes.emplace_back(name, &**accessor);
         }
@@ -301,6 +333,7 @@ PrimitivePlan planPrimitive(const tinygltf::Model& model, int mesh, int index, c
     for (int set = 0; set < 2; ++set) {
         plan.texCoords[set] = planAttribute(model, primitive, kTexCoords[set], quantized, plan, source);
     }
+    plan.colors = planColors(model, primitive, quantized, plan, source);
     if (indices != -1) {
         plan.indices = checkAccessor(model, indices, TINYGLTF_TYPE_SCALAR,
                                      {{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE},
@@ -327,6 +360,9 @@ Mesh readPrimitive(const PrimitivePlan& plan, const std::string& source) {
             (set == 0 ? mesh.uv0 : mesh.uv1) =
                 readVectors<glm::vec2>(*plan.texCoords[set], attributes + kTexCoords[set].name, source);
         }
+    }
+    if (plan.colors) {
+        mesh.colors = readColors(*plan.colors, attributes + kColors[0].name, source);
     }
     if (!plan.normals) {
         flatNormals(mesh, plan, source);

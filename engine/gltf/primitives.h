@@ -29,6 +29,7 @@ struct PrimitivePlan {
     CheckedAccessor positions;
     std::optional<CheckedAccessor> normals, tangents, indices;
     std::optional<CheckedAccessor> texCoords[2];
+    std::optional<CheckedAccessor> colors;   // COLOR_0: 3 or 4 components
     size_t triangles = 0;
     // KHR_draco_mesh_compression: the stream the compressed accessors are decoded from when the
     // primitive is read (their own views, if any, are the file's uncompressed fallback).
@@ -45,7 +46,7 @@ std::string whyNotDrawn(const tinygltf::Primitive& primitive, const std::string&
 PrimitivePlan planPrimitive(const tinygltf::Model& model, int mesh, int primitive, const std::string& source);
 
 // The planned primitive read: triangles counter-clockwise (strips and fans in glTF's order),
-// unit normals, TEXCOORD_0 / _1 into uv0 / uv1 and TANGENT, each attribute either absent or one
+// unit normals, TEXCOORD_0 / _1 into uv0 / uv1, TANGENT and COLOR_0, each attribute either absent or one
 // per position. Without NORMAL, flat normals (section 3.7.2.1), which may copy vertices: more
 // than kGltfMaxVertices is refused. A Draco-compressed primitive is decoded first, its stream
 // holding as many points and corners as its accessors say. Throws InputError for an index out

@@ -31,7 +31,8 @@ T along(const T& a, const T& b, float t) {
 
 ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t) {
     return {along(a.clip, b.clip, t), along(a.position, b.position, t), along(a.normal, b.normal, t),
-            {along(a.maps.uv0, b.maps.uv0, t), along(a.maps.uv1, b.maps.uv1, t), along(a.maps.tangent, b.maps.tangent, t)}};
+            {along(a.maps.uv0, b.maps.uv0, t), along(a.maps.uv1, b.maps.uv1, t), along(a.maps.tangent, b.maps.tangent, t),
+             along(a.maps.color, b.maps.color, t)}};
 }
 
 // The polygon's part in front of the near plane (z >= -w in GL clip space): Sutherland-Hodgman
@@ -122,12 +123,14 @@ void fillTriangle(Raster& raster, const ClipVertex* const corner[3], const glm::
             float weight[3];
             weights(b, weight);
             Hit hit{glm::vec3(0.0f), glm::vec3(0.0f), {}, draw};
+            hit.maps.color = glm::vec4(0.0f);
             for (int c = 0; c < 3; ++c) {
                 hit.position += weight[c] * corner[c]->position;
                 hit.normal += weight[c] * corner[c]->normal;
                 hit.maps.uv0 += weight[c] * corner[c]->maps.uv0;
                 hit.maps.uv1 += weight[c] * corner[c]->maps.uv1;
                 hit.maps.tangent += weight[c] * corner[c]->maps.tangent;
+                hit.maps.color += weight[c] * corner[c]->maps.color;
             }
             if (item.maps) {   // the UVs' change to the next pixel centre: the level of detail
                 const auto [rightUv0, rightUv1] = uvsAt(p + glm::vec2(1.0f, 0.0f));
@@ -167,6 +170,7 @@ void rasterizeDraw(Raster& raster, const SceneDraw& item, int32_t draw, const gl
                 vertex.maps.uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[i];
                 const glm::vec4 tangent = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[i];
                 vertex.maps.tangent = glm::vec4(linear * glm::vec3(tangent), mirrored ? -tangent.w : tangent.w);
+                vertex.maps.color = mesh.colors.empty() ? glm::vec4(1.0f) : mesh.colors[i];
             }
             polygon.push_back(vertex);
         }

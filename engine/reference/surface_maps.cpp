@@ -42,7 +42,8 @@ bool keptByMask(const SceneDraw& draw, const MapTextures& textures, const MapCoo
     if (draw.alphaCutoff < 0.0f || !draw.maps) {
         return true;   // a MASK item without maps was kept or dropped whole (sceneDraws)
     }
-    const float alpha = draw.maps->baseAlpha * textures.texel(draw.maps->baseColor, true, at, glm::vec4(1.0f)).w;
+    const float alpha =
+        draw.maps->baseAlpha * at.color.a * textures.texel(draw.maps->baseColor, true, at, glm::vec4(1.0f)).w;
     return alpha >= draw.alphaCutoff;
 }
 
@@ -59,7 +60,7 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
         return textures.texel(slot, srgb, at, absent);
     };
     const shader::TexturedMaterial mapped = shader::texturedMaterial(
-        glm::vec4(draw.material.baseColor, maps->baseAlpha), texel(maps->baseColor, true, glm::vec4(1.0f)),
+        glm::vec4(draw.material.baseColor, maps->baseAlpha) * at.color, texel(maps->baseColor, true, glm::vec4(1.0f)),
         draw.material.roughness, draw.material.metallic, texel(maps->metallicRoughness, false, glm::vec4(1.0f)));
     surface.material.baseColor = mapped.baseColor;
     surface.material.roughness = mapped.roughness;

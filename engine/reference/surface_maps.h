@@ -23,6 +23,7 @@ namespace patina {
 struct MapCoordinates {
     glm::vec2 uv0{0.0f}, uv1{0.0f};
     glm::vec4 tangent{0.0f};   // w = 0: none
+    glm::vec4 color{1.0f};     // the interpolated vertex colour (COLOR_0); 1 without
     // How each UV set changes to the next pixel centre along x and along y (the GPU's dFdx and
     // dFdy, up to sign): what the level of detail is read from. Zero: magnified, level 0.
     glm::vec2 uv0Dx{0.0f}, uv0Dy{0.0f}, uv1Dx{0.0f}, uv1Dy{0.0f};
@@ -44,13 +45,13 @@ private:
 };
 
 // glTF 2.0 section 3.9.4: whether MASK keeps the fragment (alpha, the factor's times the base
-// colour map's, at least the cutoff); always for OPAQUE and BLEND.
+// colour map's and the vertex colour's, at least the cutoff); always for OPAQUE and BLEND.
 bool keptByMask(const SceneDraw& draw, const MapTextures& textures, const MapCoordinates& at);
 
 // What the maps make of one point of a textured item (SceneDraw::maps).
 struct MappedSurface {
-    MaterialParameters material;   // the factors times the maps (3.9.2)
-    float alpha = 1.0f;            // the base colour factor's alpha times its map's
+    MaterialParameters material;   // the factors times the maps and the vertex colour (3.9.2)
+    float alpha = 1.0f;            // the base colour factor's alpha times its map's and the colour's
     glm::vec3 normal;              // the normal map's, about the unit shading normal given (3.9.3)
     float occlusion = 1.0f;        // on the environment and hemisphere lights
     glm::vec3 emission{0.0f};      // linear radiance emitted

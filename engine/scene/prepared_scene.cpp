@@ -16,6 +16,17 @@ namespace {
                                 " of " + std::to_string(count));
 }
 
+// glTF's default material (section 3.9.6) as a model's: one for every draw that names none, so
+// that a draw's `maps` may point at it.
+const ModelMaterial& defaultMaterial() {
+    static const ModelMaterial material = [] {
+        ModelMaterial defaults;
+        defaults.factors = defaultModelMaterial();
+        return defaults;
+    }();
+    return material;
+}
+
 // Item `i` of `model` as drawn, or nothing when its MASK cutoff hides it whole.
 std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_t i) {
     const DrawItem& item = model.draws[i];
@@ -25,9 +36,7 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
     if (item.material >= 0 && size_t(item.material) >= model.materials.size()) {
         missing(i, "material", item.material, model.materials.size());
     }
-    ModelMaterial defaults;
-    defaults.factors = defaultModelMaterial();
-    const ModelMaterial& material = item.material >= 0 ? model.materials[size_t(item.material)] : defaults;
+    const ModelMaterial& material = item.material >= 0 ? model.materials[size_t(item.material)] : defaultMaterial();
     if (material.alphaMode == AlphaMode::Mask && !(material.baseAlpha >= material.alphaCutoff)) {
         return std::nullopt;
     }
@@ -48,7 +57,9 @@ std::optional<SceneDraw> modelDraw(const Scene& scene, const Model& model, size_
         draw.tunedMaps = std::make_shared<const ModelMaterial>(tunedMaterial(scene, item.material, material));
     }
     const ModelMaterial& maps = draw.tunedMaps ? *draw.tunedMaps : material;
-    draw.maps = item.material >= 0 && hasMaps(maps) ? &maps : nullptr;
+    // Vertex colours multiply the base colour per pixel as a map does, so an item with them is
+    // shaded with its maps, also under the default material.
+    draw.maps = hasMaps(maps) || !draw.mesh->colors.empty() ? &maps : nullptr;
     draw.alphaCutoff = material.alphaMode == AlphaMode::Mask ? material.alphaCutoff : -1.0f;
     return draw;
 }

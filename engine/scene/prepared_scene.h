@@ -51,9 +51,10 @@ struct SceneDraw {
     // glTF's BLEND (§3.9.4): "over" what is behind it by `alpha`, after every opaque draw.
     bool blend = false;
     float alpha = 1.0f;
-    // The item's material with its texture maps (model/model.h), when hasMaps: its factors are
-    // `material`'s, each map multiplies in per pixel (glTF 2.0 §3.9.2-3.9.3), emission added.
-    // Null: the factors alone. Points into the prepared scene's model.
+    // The item's material with its texture maps (model/model.h), when hasMaps or when its mesh
+    // has vertex colours: its factors are `material`'s, each map and the colours multiply in per
+    // pixel (glTF 2.0 §3.9.2-3.9.3), emission added. Null: the factors alone. Points into the
+    // prepared scene's model (or at the one default material, for a draw that names none).
     const ModelMaterial* maps = nullptr;
     std::shared_ptr<const ModelMaterial> tunedMaps;   // holds `maps` where the scene left some out
     // glTF's MASK (§3.9.4): a pixel whose alpha (the factor times the base colour map's) is

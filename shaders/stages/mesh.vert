@@ -23,6 +23,13 @@ out vec2 vUv1;
 out vec4 vTangent;
 #endif
 
+#ifdef PATINA_VERTEX_COLOR
+// glTF's COLOR_0 (linear RGBA), handed on for surface_maps.glsl; an item without reads the
+// attribute's constant, 1 (the renderer sets it).
+layout(location = 6) in vec4 aColor;
+out vec4 vColor;
+#endif
+
 #ifdef PATINA_AMBIENT_OCCLUSION
 // The item's ambient occlusion baked at its vertices (engine/scene/ambient_occlusion.h), handed
 // on for shade.frag; an item without reads the attribute's constant, 1 (the renderer sets it).
@@ -68,6 +75,9 @@ void main() {
     // section 3.7.2.1 defines it in the mesh's own space).
     mat3 linear = mat3(uModel);
     vTangent = vec4(linear * aTangent.xyz, determinant(linear) < 0.0f ? -aTangent.w : aTangent.w);
+#endif
+#ifdef PATINA_VERTEX_COLOR
+    vColor = aColor;
 #endif
 #ifdef PATINA_AMBIENT_OCCLUSION
     vAmbientOcclusion = aAmbientOcclusion;

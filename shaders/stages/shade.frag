@@ -464,7 +464,8 @@ layout(location = 1) out vec4 displayColor;
 void main() {
 #ifdef PATINA_TEXTURED
     discardMasked();
-    TexturedMaterial mapped = texturedMaterial(vec4(uBaseColor, uBaseAlpha), MAP_TEXEL(0, uBaseColorMap, vec4(1.0f)),
+    TexturedMaterial mapped = texturedMaterial(vec4(uBaseColor, uBaseAlpha) * VERTEX_COLOR,
+                                               MAP_TEXEL(0, uBaseColorMap, vec4(1.0f)),
                                                uRoughness, uMetallic,
                                                MAP_TEXEL(1, uMetallicRoughnessMap, vec4(1.0f)));
     SurfaceMaterial material = deriveSurfaceMaterial(mapped.baseColor, mapped.roughness, uSpecular, mapped.metallic);

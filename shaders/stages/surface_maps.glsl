@@ -35,6 +35,15 @@ uniform float uNormalScale;
 uniform float uOcclusionStrength;
 uniform vec3 uEmissive;            // emissiveFactor times KHR_materials_emissive_strength
 
+// glTF 2.0 section 3.9.2: COLOR_0 multiplies the base colour factor and its alpha, as a map
+// does (PATINA_VERTEX_COLOR, only in a frame with an item that has it; mesh.vert's vColor).
+#ifdef PATINA_VERTEX_COLOR
+in vec4 vColor;
+#define VERTEX_COLOR vColor
+#else
+#define VERTEX_COLOR vec4(1.0f)
+#endif
+
 // PATINA_MAP_SET (the specialised path): the item's maps, a bit each in this order, known when
 // compiling, so that a map the item lacks costs nothing (on llvmpipe a branch every lane agrees
 // on still runs its body with the lanes off). The uniform still says whether an image is there.
@@ -64,9 +73,10 @@ vec4 mapTexel(sampler2D map, vec2 coordinate) {
 #define MAP_TEXEL(map, sampler, absent) (hasMap(map) ? mapTexel(sampler, mapCoordinate(map)) : (absent))
 
 // glTF 2.0 section 3.9.4: MASK draws a pixel only where the factor's alpha times the base
-// colour map's reaches the cutoff (alpha 1 and a cutoff of 0.5 where neither says otherwise).
+// colour map's (and the vertex colour's) reaches the cutoff (alpha 1 and a cutoff of 0.5 where
+// neither says otherwise).
 void discardMasked() {
-    if (uAlphaCutoff >= 0.0f && uBaseAlpha * MAP_TEXEL(0, uBaseColorMap, vec4(1.0f)).w < uAlphaCutoff) {
+    if (uAlphaCutoff >= 0.0f && uBaseAlpha * VERTEX_COLOR.w * MAP_TEXEL(0, uBaseColorMap, vec4(1.0f)).w < uAlphaCutoff) {
         discard;
     }
 }

@@ -309,6 +309,89 @@ TEST_F(ModelMaps, MaskCutsOutThePixelsBelowTheCutoff) {
     }
 }
 
+// 3.9.2: COLOR_0 multiplies the base colour factor (a primitive with colours is shaded with its
+// maps even where its material has none). In a frame where one item has colours, another
+// without them keeps its factor: it reads the attribute's constant 1.
+TEST_F(ModelMaps, VertexColoursMultiplyTheBaseColourOnEveryPath) {
+    Scene scene = quadScene();
+    scene.camera.position = {0.0f, 0.0f, 6.0f};
+    const glm::vec4 colour(0.5f, 1.0f, 0.25f, 1.0f);
+    Mesh coloured = quad();
+    coloured.colors.assign(4, colour);
+    auto twoQuads = [](const Mesh& left, const ModelMaterial& leftMaterial, const ModelMaterial& rightMaterial) {
+        Model model;
+        model.primitives = {left, quad()};
+        model.materials = {leftMaterial, rightMaterial};
+        model.draws = {{0, 0, glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0, 0)), "left"},
+                       {1, 1, glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0, 0)), "right"}};
+        return std::make_shared<const Model>(std::move(model));
+    };
+    const glm::vec3 factor(0.8f, 0.6f, 0.9f);
+    const auto model = twoQuads(coloured, factors(factor), factors(factor));
+    const auto expected = twoQuads(quad(), factors(factor * glm::vec3(colour)), factors(factor));
+    expectSame(scene, model, expected, {{-1.2f, 0.3f, 0.0f}, {-0.7f, -0.5f, 0.0f}, {1.2f, 0.3f, 0.0f}}, 1e-4f,
+               "vertex colours");
+}
+
+// 3.9.4: MASK's alpha is the factor's times the map's times the vertex colour's: alpha falling
+// from 1 at the left edge to 0 at the right cuts out the right half (the multi-pass depth
+// pre-pass too, or the light passes would leave black there).
+TEST_F(ModelMaps, AVertexColoursAlphaCutsOutUnderMask) {
+    Scene scene = quadScene();
+    scene.display.background = {0.25f, 0.5f, 0.75f};
+    Mesh faded = quad();
+    faded.colors = {{1, 1, 1, 1}, {1, 1, 1, 0}, {1, 1, 1, 0}, {1, 1, 1, 1}};
+    ModelMaterial material = factors(glm::vec3(0.8f));
+    material.alphaMode = AlphaMode::Mask;
+    material.alphaCutoff = 0.5f;
+    const auto model = oneQuad(faded, material);
+    for (RenderPath path : kPaths) {
+        for (int samples : {1, 4}) {
+            const HdrImage shown = render(scene, model, path, samples);
+            const glm::ivec2 kept = pixelOf(scene, {-0.5f, 0.2f, 0.0f}), cut = pixelOf(scene, {0.5f, 0.2f, 0.0f});
+            const std::string what = std::string(renderPathName(path)) + ", " + std::to_string(samples) + " samples";
+            EXPECT_LE(largestRelativeError(test::pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f) << what;
+            EXPECT_GT(largestRelativeError(test::pixel(shown, kept.x, kept.y), scene.display.background), 0.1f) << what;
+        }
+    }
+}
+
+// The ground truth interpolates the vertex colours as the GPU does (perspective-correct, over a
+// quad seen at a slant) and multiplies them in with a base colour map's texels.
+TEST_F(ModelMaps, TheGroundTruthShadesTheVertexColoursAsTheGpu) {
+    Scene scene = quadScene();
+    scene.camera.position = {1.5f, 1.0f, 2.5f};
+    Mesh mesh = quad();
+    mesh.colors = {{1, 0.2f, 0.2f, 1}, {0.2f, 1, 0.2f, 1}, {0.2f, 0.2f, 1, 1}, {1, 1, 0.2f, 1}};
+    ModelMaterial mapped = factors(glm::vec3(0.9f));
+    mapped.baseColor = nearestSlot();
+    const auto model = oneQuad(mesh, mapped, {image(2, 2, {255, 255, 255, 255, 128, 128, 128, 255, 200, 200, 200, 255,
+                                                           90, 90, 90, 255})});
+    const PreparedScene prepared{scene, std::make_shared<const Mesh>(model->primitives[0]), nullptr, model};
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kWidth, kHeight);
+    ReferenceRenderOptions options;
+    options.samplesPerPixel = 1;
+    const ReferenceImage reference = renderReference(prepared, surfaces, options);
+    const HdrImage withoutColours = render(scene, oneQuad(quad(), mapped, model->images), RenderPath::Single, 1);
+    for (RenderPath path : kPaths) {
+        const HdrImage shown = render(scene, model, path, 1);
+        int covered = 0, agreeing = 0, coloured = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                if (surfaces.sampleOfPixel[size_t(y * kWidth + x)] < 0) {
+                    continue;
+                }
+                ++covered;
+                agreeing += largestRelativeError(test::pixel(shown, x, y), test::pixel(reference.value, x, y)) <= 2e-2f;
+                coloured += largestRelativeError(test::pixel(shown, x, y), test::pixel(withoutColours, x, y)) > 0.1f;
+            }
+        }
+        EXPECT_GT(covered, 1000);
+        EXPECT_GT(coloured, covered / 2) << "the colours show";
+        EXPECT_GE(agreeing, covered * 98 / 100) << renderPathName(path) << ": " << agreeing << " of " << covered;
+    }
+}
+
 // KHR_texture_transform: an offset of half the image in u moves the right column to the left.
 TEST_F(ModelMaps, TheTextureTransformMovesTheMap) {
     const Scene scene = quadScene();

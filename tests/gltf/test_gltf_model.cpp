@@ -308,6 +308,49 @@ TEST_F(GltfModel, TangentsAreReadWithNormalsAndIgnoredWithout) {
     EXPECT_EQ(imported.primitives[1].normals, std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)));
 }
 
+// Section 3.7.2.1: COLOR_0 is RGB or RGBA, float or normalized unsigned byte or short; an RGB
+// one's alpha is 1. A copy for a flat normal takes its colour along.
+TEST_F(GltfModel, VertexColoursAreReadInEveryFormTheSpecAllows) {
+    GltfBuilder model;
+    const int positions = model.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const int normals = model.positions({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}});
+    const int floats = model.data(std::vector<float>{1, 0.5f, 0, 0, 1, 0.25f, 0.2f, 0.4f, 0.6f}, test::kFloat, "VEC3", 3);
+    const int bytes = model.data(std::vector<uint8_t>{255, 0, 51, 102, 0, 255, 0, 255, 10, 20, 30, 40}, test::kUnsignedByte,
+                                 "VEC4", 4);
+    const int shorts = model.data(std::vector<uint16_t>{65535, 0, 0, 65535, 0, 65535, 0, 0, 0, 0, 0, 32768},
+                                  test::kUnsignedShort, "VEC4", 4);
+    model.json["accessors"][size_t(bytes)]["normalized"] = true;
+    model.json["accessors"][size_t(shorts)]["normalized"] = true;
+    for (const int colors : {floats, bytes, shorts}) {
+        model.meshNode({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}, {"COLOR_0", colors}}}});
+    }
+    const Model imported = load(model);
+    const std::vector<std::vector<glm::vec4>> expected{
+        {{1, 0.5f, 0, 1}, {0, 1, 0.25f, 1}, {0.2f, 0.4f, 0.6f, 1}},
+        {{1, 0, 0.2f, 0.4f}, {0, 1, 0, 1}, {10 / 255.0f, 20 / 255.0f, 30 / 255.0f, 40 / 255.0f}},
+        {{1, 0, 0, 1}, {0, 1, 0, 0}, {0, 0, 0, 32768 / 65535.0f}}};
+    ASSERT_EQ(imported.primitives.size(), 3u);
+    for (size_t p = 0; p < 3; ++p) {
+        ASSERT_EQ(imported.primitives[p].colors.size(), 3u) << p;
+        for (size_t i = 0; i < 3; ++i) {
+            EXPECT_NEAR(glm::distance(imported.primitives[p].colors[i], expected[p][i]), 0.0f, 1e-6f) << p << " " << i;
+        }
+    }
+    // A signed or unnormalized integer colour is not glTF's: refused, naming the accessor.
+    GltfBuilder wrong = model;
+    wrong.json["accessors"][size_t(bytes)]["normalized"] = false;
+    EXPECT_ERROR(errorOf(wrong), "/meshes/1/primitives/0/attributes/COLOR_0");
+    GltfBuilder flat;   // two triangles on vertex 0, one facing +z, one +x: vertex 0 is copied
+    const int corners = flat.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}});
+    const int colours = flat.data(std::vector<float>{0.1f, 0.2f, 0.3f, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1},
+                                  test::kFloat, "VEC3", 3);
+    const int indices = flat.data(std::vector<uint16_t>{0, 1, 2, 0, 3, 4}, test::kUnsignedShort, "SCALAR", 1);
+    flat.meshNode({{"attributes", {{"POSITION", corners}, {"COLOR_0", colours}}}, {"indices", indices}});
+    const Mesh mesh = load(flat).primitives[0];
+    ASSERT_EQ(mesh.colors.size(), mesh.positions.size());
+    EXPECT_EQ(mesh.colors[mesh.indices[3]], glm::vec4(0.1f, 0.2f, 0.3f, 1));
+}
+
 TEST_F(GltfModel, FlatNormalsCopyASharedVertexWithItsTexCoords) {
     GltfBuilder model;   // two triangles on vertex 0, one facing +z, one +x
     const int positions = model.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}});

@@ -10,6 +10,7 @@
 
 #include "cli_runner.h"
 #include "gltf/model_export.h"
+#include "gltf_builder.h"
 #include "gltf/model_import.h"
 #include "image/image.h"
 #include "files/file_bytes.h"
@@ -116,6 +117,7 @@ void expectSameModel(const Model& a, const Model& b) {
         EXPECT_EQ(ma.indices, mb.indices) << what;
         EXPECT_EQ(ma.uv0, mb.uv0) << what;
         EXPECT_EQ(ma.uv1, mb.uv1) << what;
+        EXPECT_EQ(ma.colors, mb.colors) << what;
         ASSERT_EQ(ma.normals.size(), mb.normals.size()) << what;
         for (size_t v = 0; v < ma.normals.size(); ++v) {
             EXPECT_LT(glm::length(ma.normals[v] - mb.normals[v]), 1e-6f) << what << " vertex " << v;
@@ -213,6 +215,33 @@ TEST_F(GltfModelExport, TheSheenAndItsMapsComeBackValidatorClean) {
     exportGltfModel(path("bare.gltf"), bare);
     const std::vector<uint8_t> bytes = readFileBytes(path("bare.gltf"));
     EXPECT_EQ(std::string(bytes.begin(), bytes.end()).find("KHR_materials_sheen"), std::string::npos);
+}
+
+// COLOR_0 comes back as it was read (normalized bytes as the floats they stand for), from .glb
+// and .gltf, validator-clean; a primitive without colours writes none.
+TEST_F(GltfModelExport, VertexColoursComeBackValidatorClean) {
+    test::GltfBuilder cube = test::cubeModel();
+    std::vector<uint8_t> rgba;
+    for (int v = 0; v < 24; ++v) {
+        rgba.insert(rgba.end(), {uint8_t(v * 10), uint8_t(255 - v * 10), 128, uint8_t(255 - v)});
+    }
+    const int colours = cube.data(rgba, test::kUnsignedByte, "VEC4", 4);
+    cube.json["accessors"][size_t(colours)]["normalized"] = true;
+    cube.json["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = colours;
+    cube.writeGlb(path("coloured.glb"));
+    const Model model = importGltfModel(path("coloured.glb"));
+    ASSERT_EQ(model.primitives.at(0).colors.size(), 24u);
+    EXPECT_EQ(model.primitives[0].colors[3], glm::vec4(30, 225, 128, 252) / 255.0f);
+    for (const char* out : {"again.glb", "again.gltf"}) {
+        SCOPED_TRACE(out);
+        exportGltfModel(path(out), model);
+        test::expectValidGltf(path(out), dir_);
+        expectSameModel(model, importGltfModel(path(out)));
+    }
+    test::cubeModel().writeGlb(path("plain.glb"));
+    exportGltfModel(path("plain.gltf"), importGltfModel(path("plain.glb")));
+    const std::vector<uint8_t> bytes = readFileBytes(path("plain.gltf"));
+    EXPECT_EQ(std::string(bytes.begin(), bytes.end()).find("COLOR_0"), std::string::npos);
 }
 
 // KHR_materials_transmission and KHR_materials_volume (tests/data/transmission/spheres.gltf, made
