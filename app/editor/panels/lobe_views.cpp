@@ -68,7 +68,7 @@ namespace {
 std::string sliceCaption(const Material& material, SliceLobe which, bool compared) {
     std::string caption = compared ? "B" : "theta_h across, theta_d up (degrees)";
     if (which == SliceLobe::Transmitted) {
-        caption += material.transmission > 0.0f ? "; transmitted, below: theta_h of the mirrored direction"
+        caption += material.transmission > 0.0f ? "; transmitted: H of L and V mirrored below"
                                                 : "; no transmission";
     } else if (material.transmission > 0.0f) {
         caption += compared ? "" : "; Lobe: transmitted for the light through the wall";
