@@ -46,8 +46,11 @@ Command addSliceCommand(CLI::App& app) {
     command->add_option("--phi-d", options->phiD, "phi_d, degrees (90: both directions above the horizon everywhere)")
         ->check(CLI::Range(0.0f, 360.0f));
     command->add_option("--size", options->size, "Pixels a side")->check(CLI::Range(2, 4096));
-    command->add_option("--lobe", options->lobe, "total, diffuse or specular")
-        ->check(CLI::IsMember({"total", "diffuse", "specular"}));
+    command->add_option("--lobe", options->lobe,
+                        "total, diffuse or specular (reflected), or transmitted: a thin wall's BTDF "
+                        "(KHR_materials_transmission) towards V mirrored below the surface, theta_h that of its "
+                        "half vector")
+        ->check(CLI::IsMember({"total", "diffuse", "specular", "transmitted"}));
     command->add_option("--exposure", options->exposure, "Stops the values are scaled by before they are shown")
         ->check(CLI::Range(-30.0f, 30.0f));
     command->add_flag("--linear", options->linear, "A linear scale (clamped at 1) instead of four decades of log");
@@ -55,9 +58,10 @@ Command addSliceCommand(CLI::App& app) {
     command->add_option("--hdr", options->hdr, "Also the values (1/sr; -1 where L or V is below the horizon) as PFM");
     return [options] {
         const Scene scene = options->inputs.load();
-        const SliceLobe lobe = options->lobe == "diffuse"    ? SliceLobe::Diffuse
-                               : options->lobe == "specular" ? SliceLobe::Specular
-                                                             : SliceLobe::Total;
+        const SliceLobe lobe = options->lobe == "diffuse"       ? SliceLobe::Diffuse
+                               : options->lobe == "specular"    ? SliceLobe::Specular
+                               : options->lobe == "transmitted" ? SliceLobe::Transmitted
+                                                                : SliceLobe::Total;
         const BrdfSlice slice = brdfSlice(scene.material, options->phiD, options->size, lobe);
         const std::vector<uint8_t> png = encodePng(sliceImage(slice, options->exposure, !options->linear));
         if (!options->hdr.empty()) {

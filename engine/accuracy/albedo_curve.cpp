@@ -64,14 +64,8 @@ AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, in
     ReferenceOptions options;
     options.samples = samples;
     options.seed = seed;
-    options.clearcoat = material.clearcoat;
-    options.clearcoatRoughness = material.clearcoatRoughness;
-    options.sheenColor = material.sheenColor;
-    options.sheenRoughness = material.sheenRoughness;
-    options.transmission = material.transmission;
-    options.transmissionAttenuation = volumeAttenuationOf(material);
     const ReferenceEstimate truth = referenceRadiance(material.model, surface, reference, {}, glm::vec3(0.0f), N, V,
-                                                      options);
+                                                      withLayersOf(options, material));
     point.truth = truth.value;
     point.standardError = truth.standardError;
     point.truthTransmitted = truth.transmitted;

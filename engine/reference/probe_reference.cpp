@@ -45,15 +45,9 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         options.indirectOcclusion = occlusion.empty() ? 1.0f : occlusion[i];
         options.occluders = occluders;
         const size_t m = size_t(materialOfSample[i]);
-        options.clearcoat = materials[m].clearcoat;
-        options.clearcoatRoughness = materials[m].clearcoatRoughness;
-        options.sheenColor = materials[m].sheenColor;
-        options.sheenRoughness = materials[m].sheenRoughness;
-        options.transmission = materials[m].transmission;
-        options.transmissionAttenuation = volumeAttenuationOf(materials[m]);
         const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,
-                                                      options);
+                                                      withLayersOf(options, materials[m]));
         rows[i] = {e.value, e.standardError};
     });
     return rows;

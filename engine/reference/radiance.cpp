@@ -40,6 +40,16 @@ glm::vec3 volumeAttenuationOf(const MaterialParameters& material) {
     return shader::volumeAttenuation(material.attenuationColor, material.attenuationDistance, material.thickness);
 }
 
+ReferenceOptions withLayersOf(ReferenceOptions options, const MaterialParameters& material) {
+    options.clearcoat = material.clearcoat;
+    options.clearcoatRoughness = material.clearcoatRoughness;
+    options.sheenColor = material.sheenColor;
+    options.sheenRoughness = material.sheenRoughness;
+    options.transmission = material.transmission;
+    options.transmissionAttenuation = volumeAttenuationOf(material);
+    return options;
+}
+
 namespace {
 bool hasReferenceSheen(const ReferenceOptions& options) {
     return options.sheenColor != glm::vec3(0.0f);

@@ -58,6 +58,9 @@ struct ReferenceOptions {
 // T of KHR_materials_volume for `material` (its thickness already in world units).
 glm::vec3 volumeAttenuationOf(const MaterialParameters& material);
 
+// `options` with `material`'s layers: its clear coat, sheen, transmission and the volume's T.
+ReferenceOptions withLayersOf(ReferenceOptions options, const MaterialParameters& material);
+
 struct ReferenceEstimate {
     glm::vec3 value{0.0f};
     glm::vec3 standardError{0.0f};

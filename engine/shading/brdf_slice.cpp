@@ -7,9 +7,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "shading/brdf_models.h"
-#include "shading/layered_brdf.h"
-#include "shading/cpu_shading.h"
+#include "shading/lobe.h"
 #include "shading/shading.h"
 
 namespace patina {
@@ -42,8 +40,6 @@ glm::vec3 sliceShown(glm::vec3 value, float exposureStops, bool logScale) {
 }
 
 BrdfSlice brdfSlice(const MaterialParameters& material, float phiDDegrees, int size, SliceLobe lobe) {
-    const shader::SurfaceMaterial surface = surfaceMaterial(material);
-    const glm::vec3 N(0.0f, 0.0f, 1.0f);
     BrdfSlice slice{size, std::vector<glm::vec3>(size_t(size) * size_t(size), glm::vec3(-1.0f))};
     for (int y = 0; y < size; ++y) {
         for (int x = 0; x < size; ++x) {
@@ -52,15 +48,14 @@ BrdfSlice brdfSlice(const MaterialParameters& material, float phiDDegrees, int s
             if (pair.L.z <= 0.0f || pair.V.z <= 0.0f) {
                 continue;   // no light arrives from below the surface, none leaves below it
             }
-            const glm::vec3 V = glm::normalize(pair.V), L = glm::normalize(pair.L);
-            const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
             // A clear coat's or a sheen's own terms belong to the specular and total slices; the
-            // base's lobes are what gets through them (layered_brdf.h).
-            const BrdfLayers layers = brdfLayers(material, N, V);
-            const glm::vec3 diffuse = layeredBrdf(f.diffuse, layers, N, V, L, false);
-            const glm::vec3 specular = layeredBrdf(f.specular, layers, N, V, L);
-            slice.values[size_t(y) * size_t(size) + size_t(x)] =
-                lobe == SliceLobe::Diffuse ? diffuse : lobe == SliceLobe::Specular ? specular : diffuse + specular;
+            // base's lobes are what gets through them, the diffuse what a transmission leaves of
+            // it, the transmitted lobe the wall's towards V mirrored below (lobe.h).
+            const LobeValue f = lobeValue(material, glm::normalize(pair.L), glm::normalize(pair.V));
+            slice.values[size_t(y) * size_t(size) + size_t(x)] = lobe == SliceLobe::Diffuse     ? f.diffuse
+                                                                 : lobe == SliceLobe::Specular  ? f.specular + f.layers
+                                                                 : lobe == SliceLobe::Transmitted ? f.transmitted
+                                                                                                  : f.total();
         }
     }
     return slice;

@@ -21,7 +21,13 @@ struct DirectionPair {
 };
 DirectionPair halfDifferenceDirections(float thetaH, float thetaD, float phiD);
 
-enum class SliceLobe { Total, Diffuse, Specular };
+// Total: the light above, reflected (the layers' own terms in Specular and Total). Transmitted:
+// a thin wall's KHR_materials_transmission BTDF (lobe.h's LobeValue::transmitted) from L towards
+// V mirrored below the surface, so that theta_h is that of the mirrored direction's half vector:
+// the BTDF being glTF's reflection lobe mirrored (docs/SHADING.md S7), its D(theta_h) runs up the
+// left edge as the reflection's does and (1 - F(theta_d)) darkens the top where F brightens it;
+// 0 without a transmission.
+enum class SliceLobe { Total, Diffuse, Specular, Transmitted };
 
 // f at each pixel centre of a size x size slice, row 0 at the top (theta_d near 90 degrees),
 // column 0 at theta_h near 0; 1/sr, no cosine. Where L or V is below the horizon, -1 (no value:

@@ -21,4 +21,11 @@ glm::vec3 layeredBrdf(glm::vec3 lobes, const BrdfLayers& layers, glm::vec3 N, gl
     return shader::clearcoatOver(lobes, glm::vec3(layer), layers.coat);
 }
 
+glm::vec3 layeredTransmission(glm::vec3 transmitted, const BrdfLayers& layers) {
+    if (layers.sheened) {
+        transmitted *= shader::sheenViewWeight(layers.sheen);
+    }
+    return layers.coated ? shader::clearcoatOver(transmitted, glm::vec3(0.0f), layers.coat) : transmitted;
+}
+
 }  // namespace patina

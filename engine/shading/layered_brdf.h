@@ -32,4 +32,11 @@ inline BrdfLayers brdfLayers(const MaterialParameters& material, glm::vec3 N, gl
 glm::vec3 layeredBrdf(glm::vec3 lobes, const BrdfLayers& layers, glm::vec3 N, glm::vec3 V, glm::vec3 L,
                       bool ownLobes = true);
 
+// KHR_materials_transmission's light through a thin wall, `transmitted`, as it leaves the layers
+// above it towards V (the layers derived for N, V): weighed by the sheen's albedo scaling towards
+// V (sheen.glsl's sheenViewWeight; the light arrives from behind, where N.L has no E of its own),
+// then covered by the coat as the base is (clearcoat.glsl's clearcoatOver, no light of its own
+// from behind): shade.frag's order (docs/SHADING.md S7). Without layers, `transmitted`.
+glm::vec3 layeredTransmission(glm::vec3 transmitted, const BrdfLayers& layers);
+
 }  // namespace patina

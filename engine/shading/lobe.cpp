@@ -15,7 +15,8 @@ namespace {
 // Appendix B's specular_btdf as the extension mirrors it) from unit L above towards unit `below`
 // beneath the surface, tinted and attenuated (the material's own thickness: a lobe has no draw's
 // scale). f_t is reciprocal (D, Vis and F(V.H) are symmetric in the two directions once one is
-// mirrored), so it is the BTDF seen from L with the light at `below`. 0 without a transmission.
+// mirrored), so it is the BTDF seen from L with the light at `below`, and the layers above weigh
+// it as they weigh what leaves towards L. 0 without a transmission.
 glm::vec3 transmittedLobe(const MaterialParameters& material, glm::vec3 N, glm::vec3 L, glm::vec3 below) {
     if (!(material.transmission > 0.0f)) {
         return glm::vec3(0.0f);
@@ -24,7 +25,7 @@ glm::vec3 transmittedLobe(const MaterialParameters& material, glm::vec3 N, glm::
         shader::volumeAttenuation(material.attenuationColor, material.attenuationDistance, material.thickness);
     const shader::Transmission t =
         shader::deriveTransmission(surfaceMaterial(material), material.transmission, attenuation, N, L);
-    return shader::transmissionBtdf(t, N, L, below);
+    return layeredTransmission(shader::transmissionBtdf(t, N, L, below), brdfLayers(material, N, L));
 }
 
 // The material the reflected lobes read: its diffuse what a transmission leaves of it.
@@ -34,9 +35,21 @@ shader::SurfaceMaterial reflectingSurface(const MaterialParameters& material) {
 }
 }  // namespace
 
-std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float thetaInDegrees, int samples) {
-    const shader::SurfaceMaterial surface = reflectingSurface(material);
+LobeValue lobeValue(const MaterialParameters& material, glm::vec3 L, glm::vec3 V) {
     const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    const shader::BrdfValue f = evaluateBrdf(material.model, reflectingSurface(material), N, V, L);
+    const BrdfLayers layers = brdfLayers(material, N, V);
+    LobeValue value;
+    value.diffuse = layeredBrdf(f.diffuse, layers, N, V, L, false);
+    value.specular = layeredBrdf(f.specular, layers, N, V, L, false);
+    // The layers' own terms alone (the sheen's under the coat): layeredBrdf is linear in the
+    // base's lobes, so over no base it is what the layers add.
+    value.layers = layeredBrdf(glm::vec3(0.0f), layers, N, V, L);
+    value.transmitted = transmittedLobe(material, N, L, glm::vec3(V.x, V.y, -V.z));
+    return value;
+}
+
+std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float thetaInDegrees, int samples) {
     const float thetaIn = glm::radians(thetaInDegrees);
     const glm::vec3 L(std::sin(thetaIn), 0.0f, std::cos(thetaIn));
     std::vector<LobeSample> lobe;
@@ -44,16 +57,7 @@ std::vector<LobeSample> evaluateLobe(const MaterialParameters& material, float t
     for (int i = 0; i < samples; ++i) {
         const float thetaOutDegrees = -90.0f + 180.0f * float(i) / float(samples - 1);
         const float thetaOut = glm::radians(thetaOutDegrees);
-        const glm::vec3 V(std::sin(thetaOut), 0.0f, std::cos(thetaOut));
-        const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
-        const BrdfLayers layers = brdfLayers(material, N, V);
-        const glm::vec3 diffuse = layeredBrdf(f.diffuse, layers, N, V, L, false);
-        const glm::vec3 specular = layeredBrdf(f.specular, layers, N, V, L, false);
-        // The layers' own terms alone (the sheen's under the coat): layeredBrdf is linear in the
-        // base's lobes, so over no base it is what the layers add.
-        const glm::vec3 own = layeredBrdf(glm::vec3(0.0f), layers, N, V, L);
-        const glm::vec3 below(V.x, 0.0f, -V.z);
-        lobe.push_back({thetaOutDegrees, diffuse, specular, own, transmittedLobe(material, N, L, below)});
+        lobe.push_back({lobeValue(material, L, glm::vec3(std::sin(thetaOut), 0.0f, std::cos(thetaOut))), thetaOutDegrees});
     }
     return lobe;
 }

@@ -8,21 +8,29 @@
 
 namespace patina {
 
-// The BRDF in the plane of incidence: N = (0, 0, 1), L = (sin t_in, 0, cos t_in),
-// V = (sin t_out, 0, cos t_out), t_out from -90 to 90 degrees. Values in 1/sr, no cosine.
-// With a clear coat or a sheen (layered_brdf.h), the base's lobes are what gets through them
-// and `layers` their own terms; 0 without. With KHR_materials_transmission (docs/SHADING.md S7)
-// the diffuse is what the transmission leaves of it, and `transmitted` is the thin-walled BTDF
-// below the surface, towards (sin t_out, 0, -cos t_out): the lobe through the wall, the
-// reflection's mirrored, peaking straight through at -L (0 without; not in total(), which is
-// the light above).
-struct LobeSample {
-    float thetaOutDegrees;
-    glm::vec3 diffuse;
-    glm::vec3 specular;
+// The lobes of one pair of directions above the surface (N = (0, 0, 1)), the light along L and
+// the view along V: the BRDF from L towards V, no cosine, 1/sr. With a clear coat or a sheen
+// (layered_brdf.h), the base's lobes are what gets through them and `layers` their own terms; 0
+// without. With KHR_materials_transmission (docs/SHADING.md S7) the diffuse is what the
+// transmission leaves of it, and `transmitted` the thin-walled BTDF through the wall towards V
+// mirrored below the surface, (V.x, V.y, -V.z): f_t is reciprocal, so it is seen from L with the
+// light below, and weighed by the layers above it as the renderer weighs it, seen from L
+// (layeredTransmission: the sheen's albedo scaling, the coat's 1 - clearcoat fr_c). 0 without;
+// not in total(), which is the light above.
+struct LobeValue {
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 specular{0.0f};
     glm::vec3 layers{0.0f};
     glm::vec3 transmitted{0.0f};
     glm::vec3 total() const { return diffuse + specular + layers; }
+};
+LobeValue lobeValue(const MaterialParameters& material, glm::vec3 L, glm::vec3 V);
+
+// The lobe in the plane of incidence: L = (sin t_in, 0, cos t_in), V = (sin t_out, 0, cos t_out),
+// t_out from -90 to 90 degrees; `transmitted` towards (sin t_out, 0, -cos t_out), the
+// reflection's mirrored, peaking straight through at -L.
+struct LobeSample : LobeValue {
+    float thetaOutDegrees = 0.0f;
 };
 
 // `samples` >= 2 evenly spaced angles including both ends.

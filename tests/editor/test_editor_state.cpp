@@ -17,6 +17,8 @@
 #include "panels/file_dialog.h"
 #include "panels/menu_actions.h"
 #include "views/lobe_plot.h"
+#include "common/luminance.h"
+#include "shading/lobe.h"
 #include "storage/open_folder.h"
 #include "views/panel_layout.h"
 #include "storage/preset_files.h"
@@ -1280,6 +1282,32 @@ TEST_F(EditorStateTest, TheThreeDLobePeaksAtTheMirrorDirection) {
     for (const glm::vec3& p : lobes[1].points) {
         EXPECT_LT(glm::length(p), 0.8f);   // the rough A is lower everywhere on the shared scale
     }
+}
+
+// Issue 36: the 3D lobe of a transmitting material has its lobe through the wall below the
+// surface, on the same grid mirrored and the same scale, reaching furthest straight through (at
+// -L); its reflected lobe reads the diffuse the transmission leaves. None without a transmission.
+TEST_F(EditorStateTest, TheThreeDLobeOfAGlassHasItsTransmittedLobeBelowTheSurface) {
+    state.lobe.thetaInDegrees = 40.0f;
+    state.scene.material.model = BrdfModelId::Gltf;
+    state.scene.material.roughness = 0.25f;
+    EXPECT_TRUE(lobes3d(state, state).front().transmitted.empty());
+    state.scene.material.transmission = 0.9f;
+    const Lobe3d lobe = lobes3d(state, state).front();
+    ASSERT_EQ(lobe.transmitted.size(), lobe.points.size());
+    const glm::vec3 L(std::sin(glm::radians(40.0f)), 0.0f, std::cos(glm::radians(40.0f)));
+    for (size_t p = 0; p < lobe.points.size(); ++p) {
+        const float theta = glm::radians(90.0f * float(p / kLobeMeridians) / float(kLobeRings - 1));
+        const float phi = glm::radians(360.0f * float(p % kLobeMeridians) / float(kLobeMeridians));
+        const glm::vec3 V(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+        const LobeValue f = lobeValue(state.scene.material, L, V);
+        EXPECT_NEAR(glm::length(lobe.points[p]), lobeRadius(luminance(f.total()), lobe.maxValue, false), 1e-5f) << p;
+        EXPECT_LE(lobe.transmitted[p].z, 0.0f) << p;
+    }
+    const auto furthest = std::max_element(lobe.transmitted.begin(), lobe.transmitted.end(),
+                                           [](glm::vec3 a, glm::vec3 b) { return glm::length(a) < glm::length(b); });
+    EXPECT_GT(glm::dot(glm::normalize(*furthest), -L), 0.97f);
+    EXPECT_GT(glm::length(*furthest), 0.1f);
 }
 
 // Issue 23: the legend said "B total" with no A, and the reference model's curve was drawn

@@ -125,10 +125,12 @@ void drawSliceControls(LobeSettings& lobe) {
     sameLineIfFits(labelledWidth(ImGui::GetFrameHeight(), "Log"));
     ImGui::Checkbox("Log##slice", &lobe.sliceLog);
     recordItem("slice log", "Log scale: four decades, 0.01 to 100 1/sr");
-    sameLineIfFits(labelledWidth(px(100), "Lobe"));
-    ImGui::SetNextItemWidth(px(100));
-    ImGui::Combo("Lobe", &lobe.sliceLobe, "total\0diffuse\0specular\0");
-    recordItem("slice lobe", "Which part of f the slice shows");
+    sameLineIfFits(labelledWidth(px(110), "Lobe"));
+    ImGui::SetNextItemWidth(px(110));
+    ImGui::Combo("Lobe", &lobe.sliceLobe, "total\0diffuse\0specular\0transmitted\0");
+    recordItem("slice lobe", "Which part of f the slice shows: the reflected light's, or a thin wall's transmitted "
+                             "lobe below the surface (KHR_materials_transmission), theta_h that of the mirrored "
+                             "direction's half vector");
 }
 }  // namespace
 

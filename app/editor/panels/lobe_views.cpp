@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -61,9 +62,24 @@ void drawSlice(const BrdfSlice& slice, const LobeSettings& lobe, ImVec2 at, floa
 
 }  // namespace
 
+namespace {
+// The edited material's slice caption: what the axes are, and for a thin wall's transmission
+// (KHR_materials_transmission) that its lobe below the surface is a slice of its own.
+std::string sliceCaption(const Material& material, SliceLobe which, bool compared) {
+    std::string caption = compared ? "B" : "theta_h across, theta_d up (degrees)";
+    if (which == SliceLobe::Transmitted) {
+        caption += material.transmission > 0.0f ? "; transmitted: H of L and V mirrored below"
+                                                : "; no transmission";
+    } else if (material.transmission > 0.0f) {
+        caption += compared ? "" : "; Lobe: transmitted for the light through the wall";
+    }
+    return caption;
+}
+}  // namespace
+
 void drawSliceView(const Document& document, const Interaction& interaction, ImVec2 size) {
     const LobeSettings& lobe = interaction.lobe;
-    const SliceLobe which = SliceLobe(std::clamp(lobe.sliceLobe, 0, 2));
+    const SliceLobe which = SliceLobe(std::clamp(lobe.sliceLobe, 0, 3));
     const float line = ImGui::GetTextLineHeight();
     const int count = interaction.compareA ? 2 : 1;
     const float margin = ImGui::CalcTextSize("90").x + px(8);
@@ -76,8 +92,9 @@ void drawSliceView(const Document& document, const Interaction& interaction, ImV
         drawSlice(brdfSlice(*interaction.compareA, lobe.phiDDegrees, kSliceSize, which), lobe, at, side, "A");
         at.x += side + margin + px(8);
     }
-    drawSlice(brdfSlice(editedMaterial(document, interaction), lobe.phiDDegrees, kSliceSize, which), lobe, at, side,
-              interaction.compareA ? "B" : "theta_h across, theta_d up (degrees)");
+    const Material edited = editedMaterial(document, interaction);
+    drawSlice(brdfSlice(edited, lobe.phiDDegrees, kSliceSize, which), lobe, at, side,
+              sliceCaption(edited, which, bool(interaction.compareA)).c_str());
     ImGui::Dummy(size);
     recordItem("slice");   // no tooltip of its own: the hovered cell's values are the tooltip
 }
@@ -192,11 +209,46 @@ void drawAlbedoView(const Document& document, const Interaction& interaction, Ed
     }
 }
 
+namespace {
+const ImU32 kTransmittedColour = IM_COL32(120, 230, 140, 220);   // the polar plot's transmitted green
+
+// One lobe's grid (Lobe3d's ring-major points) as rings and every other meridian.
+template <typename Project>
+void drawLobeMesh(ImDrawList* draw, const std::vector<glm::vec3>& points, ImU32 colour, Project project) {
+    auto at = [&](int ring, int meridian) {
+        return project(points[size_t(ring * kLobeMeridians + meridian % kLobeMeridians)]);
+    };
+    for (int ring = 1; ring < kLobeRings; ++ring) {
+        for (int m = 0; m <= kLobeMeridians; ++m) {
+            draw->PathLineTo(at(ring, m));
+        }
+        draw->PathStroke(colour, 0, 1.0f);
+    }
+    for (int m = 0; m < kLobeMeridians; m += 2) {
+        for (int ring = 0; ring < kLobeRings; ++ring) {
+            draw->PathLineTo(at(ring, m));
+        }
+        draw->PathStroke(colour, 0, 1.0f);
+    }
+}
+
+// The line above the 3D view: which colour is which, and the scale.
+void drawLobe3dLegend(ImDrawList* draw, ImVec2 at, const std::vector<Lobe3d>& lobes, const Interaction& interaction) {
+    const bool transmits = std::any_of(lobes.begin(), lobes.end(), [](const Lobe3d& l) { return !l.transmitted.empty(); });
+    char text[160];
+    std::snprintf(text, sizeof text, "%s%s%.3g /sr at the largest%s", interaction.compareA ? "B orange, A grey; " : "",
+                  transmits ? "green: transmitted, below the surface; " : "", double(lobes.front().maxValue),
+                  interaction.lobe.logScale ? " (log, 3 decades)" : "");
+    draw->AddText(at, kLabel, text);
+}
+}  // namespace
+
 void drawLobe3dView(const Document& document, Interaction& interaction, ImVec2 size) {
     LobeSettings& lobe = interaction.lobe;
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("lobe3d", size);
-    recordItem("lobe 3d", "The lobe over every outgoing direction for theta_in; drag to turn it");
+    recordItem("lobe 3d", "The lobe over every outgoing direction for theta_in, and a transmitting material's lobe "
+                          "through the wall below the surface (green); drag to turn it");
     if (ImGui::IsItemActive()) {
         const ImVec2 delta = ImGui::GetIO().MouseDelta;
         lobe.yawDegrees = std::fmod(lobe.yawDegrees + delta.x * 0.5f, 360.0f);
@@ -205,11 +257,15 @@ void drawLobe3dView(const Document& document, Interaction& interaction, ImVec2 s
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(20, 20, 24, 255));
     draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+    const std::vector<Lobe3d> lobes = lobes3d(document, interaction);
+    const bool transmits = std::any_of(lobes.begin(), lobes.end(), [](const Lobe3d& l) { return !l.transmitted.empty(); });
     const float yaw = glm::radians(lobe.yawDegrees), pitch = glm::radians(lobe.pitchDegrees);
     // Fit the unit hemisphere seen at this pitch: up to cos + |sin| above the centre (the
-    // normal's tip leaning back), |sin| below it (the horizon's near edge); a text line on top.
+    // normal's tip leaning back), |sin| below it (the horizon's near edge), or the whole unit
+    // sphere's 1 with a lobe below the surface; a text line on top.
     const float line = ImGui::GetTextLineHeight();
-    const float above = std::cos(pitch) + std::abs(std::sin(pitch)), below = std::abs(std::sin(pitch));
+    const float above = std::cos(pitch) + std::abs(std::sin(pitch));
+    const float below = transmits ? 1.0f : std::abs(std::sin(pitch));
     const float scale = std::max(std::min(size.x * 0.45f, (size.y - line - px(12)) / (above + below)), px(8));
     const ImVec2 centre(origin.x + size.x * 0.5f, origin.y + line + px(6) + scale * above);
     // Orthographic, turned by yaw about the normal and tilted by pitch towards the viewer.
@@ -226,29 +282,14 @@ void drawLobe3dView(const Document& document, Interaction& interaction, ImVec2 s
     const float thetaIn = glm::radians(lobe.thetaInDegrees);
     draw->AddLine(project(glm::vec3(0.0f)), project(glm::vec3(std::sin(thetaIn), 0.0f, std::cos(thetaIn))),
                   IM_COL32(255, 220, 90, 255), 1.5f);
-    const std::vector<Lobe3d> lobes = lobes3d(document, interaction);
     for (size_t l = lobes.size(); l-- > 0;) {   // B last, on top
         const ImU32 colour = l == 0 ? IM_COL32(255, 170, 80, 220) : IM_COL32(170, 170, 170, 150);
-        auto at = [&](int ring, int meridian) {
-            return project(lobes[l].points[size_t(ring * kLobeMeridians + meridian % kLobeMeridians)]);
-        };
-        for (int ring = 1; ring < kLobeRings; ++ring) {
-            for (int m = 0; m <= kLobeMeridians; ++m) {
-                draw->PathLineTo(at(ring, m));
-            }
-            draw->PathStroke(colour, 0, 1.0f);
-        }
-        for (int m = 0; m < kLobeMeridians; m += 2) {
-            for (int ring = 0; ring < kLobeRings; ++ring) {
-                draw->PathLineTo(at(ring, m));
-            }
-            draw->PathStroke(colour, 0, 1.0f);
+        drawLobeMesh(draw, lobes[l].points, colour, project);
+        if (!lobes[l].transmitted.empty()) {
+            drawLobeMesh(draw, lobes[l].transmitted, l == 0 ? kTransmittedColour : colour, project);
         }
     }
-    char text[96];
-    std::snprintf(text, sizeof text, "%s%.3g /sr at the largest%s", interaction.compareA ? "B orange, A grey; " : "",
-                  double(lobes.front().maxValue), lobe.logScale ? " (log, 3 decades)" : "");
-    draw->AddText(ImVec2(origin.x + px(6), origin.y + px(4)), kLabel, text);
+    drawLobe3dLegend(draw, ImVec2(origin.x + px(6), origin.y + px(4)), lobes, interaction);
     draw->PopClipRect();
 }
 

@@ -38,7 +38,7 @@ struct LobeSettings {
     float phiDDegrees = 90.0f;
     float sliceExposure = 0.0f;
     bool sliceLog = true;
-    int sliceLobe = 0;   // SliceLobe: total, diffuse, specular
+    int sliceLobe = 0;   // SliceLobe: total, diffuse, specular, transmitted
     // The 3D lobe's orbit, degrees.
     float yawDegrees = 35.0f, pitchDegrees = 25.0f;
 };

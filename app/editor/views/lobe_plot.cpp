@@ -6,11 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "common/luminance.h"
-#include "shading/brdf_models.h"
-#include "shading/cpu_shading.h"
-#include "shading/layered_brdf.h"
 #include "shading/lobe.h"
-#include "shading/shading.h"
 
 namespace patina::editor {
 
@@ -113,27 +109,34 @@ std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interac
     const LobeSettings& lobe = interaction.lobe;
     const float cosine = lobe.multiplyByCosine ? std::cos(glm::radians(lobe.thetaInDegrees)) : 1.0f;
     const float thetaIn = glm::radians(lobe.thetaInDegrees);
-    const glm::vec3 N(0.0f, 0.0f, 1.0f), L(std::sin(thetaIn), 0.0f, std::cos(thetaIn));
+    const glm::vec3 L(std::sin(thetaIn), 0.0f, std::cos(thetaIn));
     std::vector<Material> materials{editedMaterial(document, interaction)};
     if (interaction.compareA) {
         materials.push_back(*interaction.compareA);
     }
     std::vector<Lobe3d> lobes;
-    std::vector<std::vector<float>> values;
+    // Each lobe's values, the reflected's then (with a transmission) the transmitted's.
+    std::vector<std::vector<float>> values, transmittedValues;
     float maxValue = 1e-6f;
     for (const Material& material : materials) {
-        const shader::SurfaceMaterial surface = surfaceMaterial(material);
         Lobe3d& lobe3d = lobes.emplace_back();
         std::vector<float>& v = values.emplace_back();
+        std::vector<float>& t = transmittedValues.emplace_back();
+        const bool transmits = material.transmission > 0.0f;
         for (int ring = 0; ring < kLobeRings; ++ring) {
             const float theta = glm::radians(90.0f * float(ring) / float(kLobeRings - 1));
             for (int meridian = 0; meridian < kLobeMeridians; ++meridian) {
                 const float phi = glm::radians(360.0f * float(meridian) / float(kLobeMeridians));
                 const glm::vec3 V(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-                const shader::BrdfValue f = evaluateBrdf(material.model, surface, N, V, L);
-                v.push_back(luminance(layeredBrdf(f.diffuse + f.specular, brdfLayers(material, N, V), N, V, L)) * cosine);
+                const LobeValue f = lobeValue(material, L, V);
+                v.push_back(luminance(f.total()) * cosine);
                 lobe3d.points.push_back(V);
                 maxValue = std::max(maxValue, v.back());
+                if (transmits) {   // towards V mirrored below the surface (lobe.h)
+                    t.push_back(luminance(f.transmitted) * cosine);
+                    lobe3d.transmitted.push_back(glm::vec3(V.x, V.y, -V.z));
+                    maxValue = std::max(maxValue, t.back());
+                }
             }
         }
     }
@@ -141,6 +144,9 @@ std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interac
         lobes[i].maxValue = maxValue;
         for (size_t p = 0; p < lobes[i].points.size(); ++p) {
             lobes[i].points[p] *= lobeRadius(values[i][p], maxValue, lobe.logScale);
+        }
+        for (size_t p = 0; p < lobes[i].transmitted.size(); ++p) {
+            lobes[i].transmitted[p] *= lobeRadius(transmittedValues[i][p], maxValue, lobe.logScale);
         }
     }
     return lobes;

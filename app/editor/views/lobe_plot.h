@@ -36,10 +36,13 @@ float lobeRadius(float value, float maxValue, bool logScale);
 
 // The 3D lobe's surface for theta_in (Lobe3d): luminance of f (times cos theta_in with "x cos")
 // over outgoing directions, kLobeRings rings of theta_out from 0 to 90 degrees by kLobeMeridians
-// of phi_out; the points' distance from the centre is lobeRadius of the value.
+// of phi_out; the points' distance from the centre is lobeRadius of the value. A transmitting
+// material (KHR_materials_transmission, thin-walled) has its transmitted lobe too, below the
+// surface on the same grid mirrored (lobe.h's LobeValue::transmitted), on the same scale.
 constexpr int kLobeRings = 16, kLobeMeridians = 36;
 struct Lobe3d {
-    std::vector<glm::vec3> points;   // ring-major, (ring, meridian); unit-sphere directions times their radius
+    std::vector<glm::vec3> points;        // ring-major, (ring, meridian); unit-sphere directions times their radius
+    std::vector<glm::vec3> transmitted;   // the same grid below the surface (z <= 0); empty without a transmission
     float maxValue = 0.0f;
 };
 // The lobes of B and, when set, A, scaled together (one maxValue for both).
