@@ -1,6 +1,10 @@
 #include "gltf/material.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "gltf/values.h"
 #include "files/input_error.h"
@@ -63,6 +67,48 @@ void volumeFromGltf(const tinygltf::Material& material, const std::string& what,
     result.attenuationDistance = float(std::min(distance, double(kMaxThickness)));
 }
 }  // namespace
+
+std::string specularNotShown(const tinygltf::Material& material) {
+    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
+    const tinygltf::Value* iorExtension = extensionOf(material.extensions, kIor);
+    auto number = [](const tinygltf::Value* object, const char* key, double absent) {
+        return object && object->Has(key) && object->Get(key).IsNumber() ? object->Get(key).GetNumberAsDouble() : absent;
+    };
+    glm::dvec3 color(1.0);
+    for (int i = 0; i < 3 && specular && specular->Has("specularColorFactor"); ++i) {
+        const tinygltf::Value& channel = specular->Get("specularColorFactor").Get(i);
+        color[i] = channel.IsNumber() ? channel.GetNumberAsDouble() : 1.0;
+    }
+    std::vector<std::string> lost;
+    char text[160];
+    if (color.r != color.g || color.g != color.b) {
+        std::snprintf(text, sizeof text, "its specularColorFactor (%.3g, %.3g, %.3g) is drawn grey, at its largest",
+                      color.r, color.g, color.b);
+        lost.emplace_back(text);
+    }
+    const double ior = number(iorExtension, "ior", kExportIor);
+    const double f0 = std::min(f0FromIor(ior) * std::max({color.r, color.g, color.b}), 1.0);
+    if (f0 > double(shader::F0_PER_SPECULAR) * (1.0 + 1e-6)) {
+        std::snprintf(text, sizeof text, "its F0 of %.3g (ior %.3g) is drawn as 0.08, Patina's largest for a dielectric",
+                      f0, ior);
+        lost.emplace_back(text);
+    }
+    if (const double factor = number(specular, "specularFactor", 1.0); factor < 1.0) {
+        std::snprintf(text, sizeof text, "its specularFactor %.3g lowers F90 to %.3g in glTF, Patina's stays 1", factor,
+                      factor);
+        lost.emplace_back(text);
+    }
+    for (const char* map : {"specularTexture", "specularColorTexture"}) {
+        if (specular && specular->Has(map)) {
+            lost.push_back(std::string("its ") + map + " is not read (the factors alone)");
+        }
+    }
+    std::string said;
+    for (const std::string& part : lost) {
+        said += (said.empty() ? "" : "; ") + part;
+    }
+    return said;
+}
 
 Material materialFromGltf(const tinygltf::Material& material, const std::string& what,
                           const std::string& source, const std::string& fallbackName) {

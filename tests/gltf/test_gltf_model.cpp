@@ -351,6 +351,41 @@ TEST_F(GltfModel, VertexColoursAreReadInEveryFormTheSpecAllows) {
     EXPECT_EQ(mesh.colors[mesh.indices[3]], glm::vec4(0.1f, 0.2f, 0.3f, 1));
 }
 
+// KHR_materials_specular and _ior as Patina draws them (docs/FORMATS.md): a grey F0 of at most
+// 0.08 with F90 1. What of a file's values that cannot show is said in a note naming the
+// material; what can (Patina's own export: a grey colour, ior 1.5, specularFactor 1) is not.
+TEST_F(GltfModel, WhatOfTheSpecularPatinaCannotShowIsNoted) {
+    GltfBuilder model = cubeModel();
+    const Json cases[] = {
+        {{"KHR_materials_specular", {{"specularColorFactor", {1.0, 0.6, 0.5}}}}},
+        {{"KHR_materials_ior", {{"ior", 2.4}}}},
+        {{"KHR_materials_specular", {{"specularFactor", 0.5}}}},
+        {{"KHR_materials_specular", {{"specularTexture", {{"index", 0}}}, {"specularColorTexture", {{"index", 0}}}}}},
+        {{"KHR_materials_specular", {{"specularColorFactor", {1.8, 1.8, 1.8}}}}, {"KHR_materials_ior", {{"ior", 1.5}}}},
+    };
+    const char* said[] = {"its specularColorFactor (1, 0.6, 0.5) is drawn grey, at its largest",
+                          "its F0 of 0.17 (ior 2.4) is drawn as 0.08",
+                          "its specularFactor 0.5 lowers F90 to 0.5 in glTF, Patina's stays 1",
+                          "its specularTexture is not read (the factors alone); its specularColorTexture is not read", ""};
+    model.add("images", {{"uri", "map.png"}});
+    model.add("textures", {{"source", 0}});
+    for (size_t c = 0; c < std::size(cases); ++c) {
+        model.json["materials"][0]["extensions"] = cases[c];
+        model.json["materials"][0]["name"] = "tinted";
+        const std::string notes = allNotes(load(model));
+        SCOPED_TRACE(cases[c].dump());
+        if (*said[c]) {
+            EXPECT_NE(notes.find("material \"tinted\" (/materials/0): KHR_materials_specular and _ior are drawn as "
+                                 "Patina's grey dielectric F0 (0.08 at most): "),
+                      std::string::npos)
+                << notes;
+            EXPECT_NE(notes.find(said[c]), std::string::npos) << notes;
+        } else {
+            EXPECT_EQ(notes.find("KHR_materials_specular"), std::string::npos) << notes;
+        }
+    }
+}
+
 TEST_F(GltfModel, FlatNormalsCopyASharedVertexWithItsTexCoords) {
     GltfBuilder model;   // two triangles on vertex 0, one facing +z, one +x
     const int positions = model.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}});
