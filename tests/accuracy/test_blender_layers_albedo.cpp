@@ -81,8 +81,9 @@ TEST_F(BlenderLayersAlbedo, EverySpheresSplitSumFollowsItsTruth) {
                 if (p.thetaVDegrees > 45.0f) {
                     continue;
                 }
-                const float excess =
-                    layer == test::kSheen ? sheenScalingExcess(m.baseColor[c], m.sheenColor, m.sheenRoughness, NoV) : 0.0f;
+                const float excess = layer == test::kSheen
+                                         ? sheenScalingExcess(m.baseColor[c], m.sheenColor, m.sheenRoughness, NoV)
+                                         : 0.0f;
                 EXPECT_NEAR(p.product[c] - excess, p.truth[c], 0.03f + 3.0f * p.standardError[c])
                     << c << " at " << p.thetaVDegrees;
                 if (m.transmission > 0.0f && layer != test::kRoughTransmission) {

@@ -63,6 +63,8 @@ Difference differenceOf(const std::vector<glm::vec3>& a, const std::vector<glm::
     return d;
 }
 
+RenderSettings settings() { return test::renderSettings(kWidth, kHeight, RenderPath::Specialised, 1); }
+
 class BlenderLayersRender : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
@@ -70,8 +72,7 @@ protected:
         model_ = new Model(importGltfModel(test::blenderLayersFile()));
         scene_ = new Scene(gridScene(*model_));
         Renderer renderer;
-        image_ = new HdrImage(
-            renderer.render(test::prepared(*scene_), test::renderSettings(kWidth, kHeight, RenderPath::Specialised, 1)).hdr);
+        image_ = new HdrImage(renderer.render(test::prepared(*scene_), settings()).hdr);
     }
     static void TearDownTestSuite() {
         delete image_;
@@ -91,7 +92,7 @@ protected:
         edit.material.name = model_->materials[size_t(layer)].name;
         scene.modelMaterials = {edit};
         Renderer renderer;
-        return renderer.render(test::prepared(scene), test::renderSettings(kWidth, kHeight, RenderPath::Specialised, 1)).hdr;
+        return renderer.render(test::prepared(scene), settings()).hdr;
     }
     // The layered sphere against its twin drawn in its place.
     static Difference against(BlenderLayer layer, BlenderLayer twin) {
@@ -120,9 +121,10 @@ TEST_F(BlenderLayersRender, EachOpaqueLayerAddsItsWhiteLightToTheRedTwin) {
 }
 
 // The row that passes light, against the smooth clear transmission: a rougher one blurs what
-// is seen through (the same light on average, each point another); IOR 2.4 reflects more and
-// passes less; the volume's attenuation colour (1, 0.6, 0.2) takes blue most, green less,
-// red none. Measured: 0.160, 0.019 and (0.000, -0.151, -0.191) apart.
+// is seen through (here brighter: the studio's bright windows spread across it); IOR 2.4
+// (F0 0.08 as Patina holds it) reflects more and passes less; the volume's attenuation colour
+// (1, 0.6, 0.2) takes blue most, green less, red none. Measured: 0.160, 0.019 and
+// (0.000, -0.151, -0.191) apart.
 TEST_F(BlenderLayersRender, EachTransmissiveLayerChangesWhatIsSeenThrough) {
     const Difference rough = against(test::kRoughTransmission, test::kTransmission);
     EXPECT_GT(luminance(rough.meanAbsolute), 0.01f);
@@ -145,8 +147,7 @@ TEST_F(BlenderLayersRender, TheTransmissionShowsWhatIsBehindInsteadOfItsDiffuse)
     edit.material.transmission = 0.0f;
     opaque.modelMaterials = {edit};
     Renderer renderer;
-    const HdrImage image =
-        renderer.render(test::prepared(opaque), test::renderSettings(kWidth, kHeight, RenderPath::Specialised, 1)).hdr;
+    const HdrImage image = renderer.render(test::prepared(opaque), settings()).hdr;
     const Difference d = differenceOf(sphere(test::kTransmission, *image_), sphere(test::kTransmission, image));
     EXPECT_GT(luminance(d.meanAbsolute), 0.05f);
     // The other spheres are drawn as before.
