@@ -26,7 +26,9 @@ Every sphere's IOR is 1.5 (glTF's) but the ior one's, since Blender's default 1.
 KHR_materials_ior on every transmissive one. One low-poly UV sphere (24 x 12, smooth) is shared
 by all eight objects, no UVs, no textures, so the file stays small; every material is
 single-sided (Backface Culling), as the validator asks of a volume's. The script prints each
-material's extensions as written, and fails if one it meant to write is missing.
+material's extensions as written, and fails if one it meant to write is missing. Two runs write
+the same JSON and the same vertices, but not always in the same order (the exporter's own), so
+the committed file is one run's.
 """
 import json
 import struct
