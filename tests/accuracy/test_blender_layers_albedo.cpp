@@ -65,8 +65,8 @@ float sheenScalingExcess(float base, glm::vec3 sheenColor, float roughness, floa
 // glass's. Two departures are the product's own approximations, measured and checked apart:
 // the sheen keeps more of its bright red base than the truth by the environment's simplified
 // scaling (sheenScalingExcess, about 0.1 head-on), and the rough glass (roughness 0.4) passes
-// about 0.03-0.05 more than its truth, whose single-scattering rough BTDF loses that energy
-// (checked for its total only). Further out the split sum's grazing reflection, Fdez-Aguera's
+// about 0.03 more than its truth head-on and about 0.05 at 44 degrees, whose single-scattering
+// rough BTDF loses that energy (its total checked to 30 degrees only, its share apart). Further out the split sum's grazing reflection, Fdez-Aguera's
 // roughness-dependent Fresnel, takes more than the truth (docs/SHADING.md, "Blender's layers").
 TEST_F(BlenderLayersAlbedo, EverySpheresSplitSumFollowsItsTruth) {
     for (int layer = test::kPlain; layer <= test::kVolume; ++layer) {
@@ -80,6 +80,9 @@ TEST_F(BlenderLayersAlbedo, EverySpheresSplitSumFollowsItsTruth) {
                 EXPECT_LE(p.product[c], 1.005f) << p.thetaVDegrees;
                 if (p.thetaVDegrees > 45.0f) {
                     continue;
+                }
+                if (layer == test::kRoughTransmission && p.thetaVDegrees > 30.0f) {
+                    continue;   // its single-scattering loss grows past the tolerance (below)
                 }
                 const float excess = layer == test::kSheen
                                          ? sheenScalingExcess(m.baseColor[c], m.sheenColor, m.sheenRoughness, NoV)
@@ -96,14 +99,21 @@ TEST_F(BlenderLayersAlbedo, EverySpheresSplitSumFollowsItsTruth) {
 }
 
 // The rough glass's departure goes one way: the product passes more than the single-scattering
-// truth (whose rough BTDF loses energy a split sum's 1 - F keeps), the more the rougher: the
-// smooth clear glass (0.1) agrees to 0.002 head-on where the rough one (0.4) is above.
+// truth (whose rough BTDF loses energy a split sum's 1 - F keeps), the more the rougher and the
+// further from the normal: the smooth clear glass (0.1) agrees head-on where the rough one (0.4)
+// is about 0.03 above (a quadrature of its f_t: 0.929 x its base 0.95 = 0.883, against the
+// product's 0.913), and more at 44 degrees. At 16384 samples, a standard error of about 0.002.
 TEST_F(BlenderLayersAlbedo, ARoughGlassPassesMoreThanItsSingleScatteringTruth) {
-    const AlbedoPoint& rough = curve(test::kRoughTransmission).front();
-    const AlbedoPoint& smooth = curve(test::kTransmission).front();
-    EXPECT_GT(rough.productTransmitted.g - rough.truthTransmitted.g, 3.0f * rough.standardError.g);
-    EXPECT_GT(rough.productTransmitted.g - rough.truthTransmitted.g,
-              std::abs(smooth.productTransmitted.g - smooth.truthTransmitted.g) + 3.0f * smooth.standardError.g);
+    const AlbedoPoint smooth = albedoAt(factors(test::kTransmission), 0.0f, 16384, 1);
+    EXPECT_NEAR(smooth.productTransmitted.g, smooth.truthTransmitted.g, 0.005f + 3.0f * smooth.standardError.g);
+    float below = 0.0f;
+    for (float theta : {0.0f, 44.25f}) {
+        const AlbedoPoint rough = albedoAt(factors(test::kRoughTransmission), theta, 16384, 1);
+        const float gap = rough.productTransmitted.g - rough.truthTransmitted.g;
+        EXPECT_GT(gap, 0.02f + 3.0f * rough.standardError.g) << theta;
+        EXPECT_GT(gap, below) << theta;
+        below = gap;
+    }
 }
 
 // Where each layer shows in the furnace, in the truth and the product alike: grazing, the coat
