@@ -10,7 +10,11 @@
 # grid of spheres, roughness 0 to 1 across and metallic 0, 0.5, 1 down, of one base colour
 # (scripts/sphere_grid.py), and Khronos's ClearCoatTest (KHR_materials_clearcoat: a base column,
 # the same coated, and the coat alone; Blender's importer reads the coat into the Principled
-# BSDF's Clearcoat, Clearcoat Roughness and Clearcoat Normal). The cameras orbit each model's
+# BSDF's Clearcoat, Clearcoat Roughness and Clearcoat Normal), and the layer grid Blender 3.4
+# itself exported (tests/data/layers/make_layers.py: a plain sphere, a coat, a sheen and a
+# specular on one red base, then a clear, a rough, an IOR 2.4 and an absorbing volume's
+# transmission; Blender's importer reads them back into its Principled BSDF, a Velvet BSDF and a
+# Volume Absorption, so Cycles renders Blender's own layers, not glTF's). The cameras orbit each model's
 # bounding box as model-viewer's camera-orbit does (its centre the target; Blender reports the
 # box, blender_render.py --bounds) and both renderers are given the same eye, target and field of
 # view. Each scene is rendered at twice the compared size by
@@ -43,7 +47,8 @@
 # Cycles and Cycles local without its coat, and measured column by column by
 # scripts/clearcoat_columns.py: docs/SHADING.md, S5, quotes it), with each renderer's noise (two
 # estimates of one image at N and N/4 samples differ by about sqrt(5) times the mean |noise| at
-# N), and the sphere grid sphere by sphere (scripts/sphere_grid_cells.py).
+# N), and the sphere grid and the layer grid sphere by sphere (scripts/sphere_grid_cells.py; the
+# layer grid's with the truth at a quarter of its samples, whose distance is sqrt(5) times its noise).
 #
 # Usage: bash scripts/compare_cycles.sh [--quick] [--out-dir D] [--work-dir W]
 #   --out-dir: default docs/lighting/cycles (with --quick a temporary folder);
@@ -126,6 +131,7 @@ scenes=(
   "BoxTextured $assimp/BoxTextured-glTF/BoxTextured.gltf 160 160 35 60 1.05"
   "2CylinderEngine $assimp/2CylinderEngine-glTF-Binary/2CylinderEngine.glb 192 192 30 65 0.8"
   "ClearCoatTest $assimp/ClearCoat-glTF/ClearCoatTest.gltf 168 200 0 90 0.8"
+  "layers $root/tests/data/layers/layers.glb 232 120 0 90 0.54"
 )
 
 sheet=()
@@ -248,6 +254,12 @@ echo
 if [ -d "$work/ClearCoatTest" ]; then
   python3 "$root/scripts/clearcoat_columns.py" measure "$patina" "$work/ClearCoatTest" --tonemap "$tonemap" \
     --downsample "$factor" --erode "$erode" || die "clearcoat_columns.py failed"
+  echo
+fi
+if [ -d "$work/layers" ]; then
+  python3 "$root/scripts/sphere_grid_cells.py" "$patina" "$work/layers" --tonemap "$tonemap" --downsample "$factor" \
+    --erode "$erode" --images gltf,cycles-local,cycles,reference-quarter \
+    --names "plain,clearcoat,sheen,specular;transmission,rough transmission,ior,volume" || die "sphere_grid_cells.py failed"
   echo
 fi
 if [ -d "$work/spheres" ]; then

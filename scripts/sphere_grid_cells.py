@@ -3,7 +3,8 @@
 ground truth over one sphere at a time, as a table of roughness across and metallic down.
 
     python3 scripts/sphere_grid_cells.py PATINA DIR [--tonemap pbr-neutral] [--downsample 2] [--erode 1]
-        [--roughness 0,0.25,0.5,0.75,1] [--metallic 0,0.5,1]
+        [--roughness 0,0.25,0.5,0.75,1] [--metallic 0,0.5,1] [--images gltf,epic,gltf-single,cycles-local]
+        [--names "a,b;c,d"]
 
 DIR is the spheres scene's folder of compare_cycles.sh's --work-dir (coverage.pfm, reference.pfm,
 epic.pfm, gltf.pfm, gltf-single.pfm, cycles-local.exr). The spheres are found in the coverage
@@ -11,7 +12,9 @@ image (rendered by `render --channel geometry-normal --reference --hdr`): the ru
 covered columns and rows are the grid's columns and rows, and a sphere's own coverage is the
 coverage left inside its cell with every other pixel set to 0. `patina difference` then measures
 each cell with the options compare_cycles.sh uses (docs/LIGHTING.md, "5. Side by side with
-Cycles"). Only the standard library.
+Cycles"). --names gives the spheres names instead (columns split by ",", rows by ";", for the
+layer grid, tests/data/layers): the table is then a sphere a row, an image a column. Only the
+standard library.
 """
 import argparse
 import array
@@ -70,6 +73,25 @@ def numbers(text):
     return [float(part) for part in text.split(",")]
 
 
+def print_table(options, result):
+    """The Markdown table of result[row, column, image] = (mean |difference|, mean signed)."""
+    print("mean |sRGB difference| (mean signed) to the reference, sphere by sphere\n")
+    if options.names:
+        print("| sphere | " + " | ".join(options.images) + " |")
+        print("|---|" + "---:|" * len(options.images))
+        for row, names in enumerate(options.names):
+            for column, sphere in enumerate(names):
+                print(f"| {sphere} | " + " | ".join("%.1f (%+.1f)" % result[row, column, name]
+                                                    for name in options.images) + " |")
+        return
+    print("| image | metallic | " + " | ".join(f"r = {r:g}" for r in options.roughness) + " |")
+    print("|---|---:|" + "---:|" * len(options.roughness))
+    for name in options.images:
+        for row, metallic in enumerate(options.metallic):
+            print(f"| {name} | {metallic:g} | " + " | ".join(
+                "%.1f (%+.1f)" % result[row, column, name] for column in range(len(options.roughness))) + " |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("patina")
@@ -79,14 +101,18 @@ def main():
     parser.add_argument("--erode", default="1")
     parser.add_argument("--roughness", type=numbers, default=[0.0, 0.25, 0.5, 0.75, 1.0])
     parser.add_argument("--metallic", type=numbers, default=[0.0, 0.5, 1.0])
+    parser.add_argument("--images", type=lambda text: text.split(","), default=IMAGES)
+    parser.add_argument("--names", type=lambda text: [row.split(",") for row in text.split(";")])
     options = parser.parse_args()
+    if options.names:   # the grid's shape from the names
+        options.metallic, options.roughness = options.names, options.names[0]
     width, height, channels, coverage = read_pfm(os.path.join(options.dir, "coverage.pfm"))
     columns, rows = cells(width, height, channels, coverage)
     if (len(columns), len(rows)) != (len(options.roughness), len(options.metallic)):
         sys.exit(f"the coverage shows {len(columns)} x {len(rows)} spheres, not "
                  f"{len(options.roughness)} x {len(options.metallic)}")
     paths = [os.path.join(options.dir, name + (".exr" if name.startswith("cycles") else ".pfm"))
-             for name in ["reference"] + IMAGES]
+             for name in ["reference"] + options.images]
     result = {}
     with tempfile.TemporaryDirectory() as scratch:
         cell_path = os.path.join(scratch, "cell.pfm")
@@ -97,20 +123,14 @@ def main():
                     begin, end = (y * width + x0) * channels, (y * width + x1 + 1) * channels
                     cell[begin:end] = coverage[begin:end]
                 write_pfm(cell_path, width, height, channels, cell)
-                csv = subprocess.run([options.patina, "difference", *paths, "--names", "reference", *IMAGES,
+                csv = subprocess.run([options.patina, "difference", *paths, "--names", "reference", *options.images,
                                       "--coverage", cell_path, "--downsample", options.downsample, "--erode",
                                       options.erode, "--tonemap", options.tonemap],
                                      check=True, capture_output=True, text=True).stdout
                 for line in csv.splitlines()[1:]:
                     fields = line.split(",")
                     result[row, column, fields[1]] = (float(fields[3]), float(fields[4]))
-    print("mean |sRGB difference| (mean signed) to the reference, sphere by sphere\n")
-    print("| image | metallic | " + " | ".join(f"r = {r:g}" for r in options.roughness) + " |")
-    print("|---|---:|" + "---:|" * len(options.roughness))
-    for name in IMAGES:
-        for row, metallic in enumerate(options.metallic):
-            print(f"| {name} | {metallic:g} | " + " | ".join(
-                "%.1f (%+.1f)" % result[row, column, name] for column in range(len(options.roughness))) + " |")
+    print_table(options, result)
 
 
 if __name__ == "__main__":   # scripts/clearcoat_columns.py imports its PFM helpers
