@@ -807,6 +807,28 @@ TEST_F(EditorStateTest, AnExportCarriesNoLocalPath) {
     }
 }
 
+// Replace... on a map ticked off switches it on with its new image, one undo step for both (the
+// status said "Replaced" while the picture stayed without the map).
+TEST_F(EditorStateTest, AReplacedMapThatWasTickedOffIsDrawn) {
+    Model file = test::twoBalls();
+    file.images.push_back({"grey", 4, 4, std::vector<uint8_t>(4 * 4 * 4, 90)});
+    file.materials[0].baseColor.image = 0;
+    exportGltfModel(dir_ / "grey.glb", file);
+    writeFileAtomic(dir_ / "red.png", encodePng(LdrImage{2, 2, std::vector<uint8_t>(2 * 2 * 4, 200)}));
+    ASSERT_TRUE(openFile(state, dir_ / "grey.glb")) << state.error;
+    setMapShown(state, state.scene, 0, "baseColorTexture", false);
+    commitEdits(state);
+    ASSERT_TRUE(replaceMap(state, *state.assets, state, 0, "baseColorTexture", dir_ / "red.png")) << state.error;
+    EXPECT_TRUE(mapShown(state.scene, 0, "baseColorTexture"));
+    const std::vector<SceneDraw> draws = sceneDraws(sceneToDraw(state, renderedScene(state, state)));
+    ASSERT_FALSE(draws.empty());
+    ASSERT_NE(draws[0].maps, nullptr) << "the new image is drawn";
+    EXPECT_TRUE(draws[0].maps->baseColor.present());
+    undo(state, state, state);
+    EXPECT_FALSE(mapShown(state.scene, 0, "baseColorTexture")) << "one step back: off, as it was";
+    EXPECT_EQ(mapReplacement(state.scene, 0, "baseColorTexture"), "");
+}
+
 // A map ticked off is an undoable edit of the part, saved in the scene, and left out of the
 // export; the factors stay as they were.
 TEST_F(EditorStateTest, AMapTickedOffIsAnUndoableEditThatTheExportKeeps) {

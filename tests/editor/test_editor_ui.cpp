@@ -194,6 +194,27 @@ TEST_F(EditorUi, APartsClearcoatIsDraggedOnUndoneAndSaved) {
     EXPECT_TRUE(itemsOfLastFrame().count("Coat"));
 }
 
+// A layer section opens where the part has the layer in every model opened: the open states
+// left on one file's part are not another file's part of the same index (a glass opened after
+// a model whose part 0 had its Clearcoat opened showed the coat's section open and its own
+// Transmission closed).
+TEST_F(EditorUi, EachModelsPartsOpenTheirOwnLayerSections) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    click(centreOf("Clearcoat"));
+    frames(1);
+    ASSERT_TRUE(itemsOfLastFrame().count("Coat")) << "opened by the click";
+    Model glass = test::twoBalls();
+    glass.materials[0].factors.transmission = 1.0f;
+    exportGltfModel(path("glass.glb"), glass);
+    ASSERT_TRUE(openFile(state_, path("glass.glb"))) << state_.error;
+    frames(2);
+    ASSERT_EQ(state_.selectedModelMaterial, 0);
+    EXPECT_FALSE(itemsOfLastFrame().count("Coat")) << "the glass has no coat";
+    EXPECT_TRUE(itemsOfLastFrame().count("Transmission factor")) << "the glass's transmission shows";
+}
+
 // KHR_materials_sheen in the editor: a part's Sheen section under its Clearcoat, closed on a part
 // without one; its colour's red dragged up puts a sheen on the part (the picture changes), the
 // drag is one undo step, the roughness another, and the part's sheen is what the scene saves.
@@ -1004,6 +1025,34 @@ TEST_F(EditorScreenshots, AComparisonsScreenshotReopensAsTheComparison) {
     reopened.compareView = CompareView::Split;
     ASSERT_TRUE(openFile(reopened, pngsIn(dir_).back())) << reopened.error;
     EXPECT_EQ(reopened.compareView, CompareView::Single);
+}
+
+// On a model both sides are drawn on the part A was taken from: its screenshot reopens on that
+// part (it reopened on part 0: A's material over another part, B labelled as that one).
+TEST_F(EditorScreenshots, AComparisonOfAModelsPartReopensOnThatPart) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    state_.selectedModelMaterial = 1;
+    frames(2);
+    click(centreOf("Set A"));
+    ASSERT_TRUE(state_.compareA.has_value());
+    const Material a = *state_.compareA;
+    Material changed = modelMaterial(state_, state_.scene, 1);
+    changed.baseColor = {0.1f, 0.3f, 0.9f};
+    setModelMaterial(state_, state_.scene, 1, changed);
+    state_.screenshotWidth = 200;
+    state_.screenshotHeight = 150;
+    for (const CompareView view : {CompareView::Split, CompareView::SideBySide}) {
+        state_.compareView = view;
+        press(kKeyF12);
+        ASSERT_TRUE(state_.error.empty()) << state_.error;
+        EditorState reopened;
+        ASSERT_TRUE(openFile(reopened, pngsIn(dir_).back())) << reopened.error;
+        EXPECT_EQ(reopened.selectedModelMaterial, 1);
+        ASSERT_TRUE(reopened.compareA.has_value());
+        EXPECT_EQ(*reopened.compareA, a);
+        EXPECT_EQ(labelledMaterial(reopened, reopened).baseColor, changed.baseColor) << "B is the part A was on";
+    }
 }
 
 // An error thrown while a panel draws (here a viewport wider than the GL can render) is shown

@@ -446,9 +446,13 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     const Material saved = modelMaterial(document, document.savedScene, selected);
     const Material defaults = modelMaterial(document, untuned, selected);
     drawFactors(material, saved, defaults);
+    // The layer sections' open states are the model's own: another file's part of the same
+    // index must not open (or close) them as that part's were left.
+    ImGui::PushID(document.scene.meshFile.c_str());
     drawClearcoat(material, saved, defaults, selected);
     drawSheen(material, saved, defaults, selected);
     drawTransmission(material, saved, defaults, selected);
+    ImGui::PopID();
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
     }

@@ -246,6 +246,8 @@ void applyDocumentFile(EditorState& state, const std::filesystem::path& path, Do
             state.compareA = file.comparison->a;
             state.compareView = file.comparison->view;
             state.splitPosition = file.comparison->split;
+            // Both sides on the part they were on: A is that part's material.
+            state.selectedModelMaterial = file.comparison->part;
         }
     } else if (onPart) {
         // A preset is a template: an undoable edit of the material; Save never writes into it
@@ -437,7 +439,11 @@ bool replaceMap(Document& document, AssetCache& assets, Prompts& prompts, int in
     const std::string file = std::filesystem::absolute(path).lexically_normal().string();
     try {
         const std::shared_ptr<const ModelImage> image = assets.image(file);   // held: decoded once
-        changeMaps(document, assets, [&](Scene& scene) { setMapReplacement(document, scene, index, key, file); });
+        // A map switched off is switched on by its replacement: choosing an image is asking to see it.
+        changeMaps(document, assets, [&](Scene& scene) {
+            setMapReplacement(document, scene, index, key, file);
+            setMapShown(document, scene, index, key, true);
+        });
         prompts.error.clear();
         prompts.status = "Replaced " + what + " with " + path.filename().string() + ", " +
                        std::to_string(image->width) + " x " + std::to_string(image->height) + " (Ctrl+Z undoes it)";

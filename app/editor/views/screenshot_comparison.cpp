@@ -33,6 +33,7 @@ std::string comparisonText(const Interaction& interaction) {
                     {"version", kVersion},
                     {"view", viewName(interaction.compareView)},
                     {"split", interaction.splitPosition},
+                    {"part", interaction.selectedModelMaterial},
                     {"a", materialToJson(*interaction.compareA)}};
     return json.dump();
 }
@@ -56,6 +57,7 @@ std::optional<ScreenshotComparison> comparisonFromPng(const std::filesystem::pat
     }
     comparison.view = view == "split" ? CompareView::Split : CompareView::SideBySide;
     comparison.split = reader.number("split", 0.5f, {0.0, 1.0});
+    comparison.part = reader.integer("part", 0, {0.0, 1e9});
     std::vector<std::string> warnings;   // A's unknown keys: the scene's own notes say enough
     comparison.a = materialFromJson(reader.required("a"), reader.pointerOf("a"), where, false, warnings);
     return comparison;

@@ -13,6 +13,7 @@ inline constexpr const char* kComparisonTextKeyword = "patina-comparison";
 
 struct ScreenshotComparison {
     Material a;
+    int part = 0;   // the model's part A was on (Interaction::selectedModelMaterial)
     CompareView view = CompareView::Split;
     float split = 0.5f;
 };
@@ -23,7 +24,9 @@ struct ScreenshotComparison {
 std::string comparisonLabel(char side, const Material& material);
 
 // {"format": "patina-comparison", "version": 1, "view": "split" | "side-by-side", "split",
-// "a": a material file's object}; empty when the editor shows no comparison.
+// "part", "a": a material file's object}; empty when the editor shows no comparison. "part" is
+// the shown model's part both sides are drawn on (0 without a model; a screenshot from before it
+// was written reads 0).
 std::string comparisonText(const Interaction& interaction);
 // What a screenshot's comparison text holds; nothing for a screenshot without one. Throws
 // InputError naming the file when the text is there but wrong.
