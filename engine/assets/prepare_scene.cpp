@@ -16,6 +16,8 @@ PreparedScene withLoaded(const Scene& scene, const AssetCache::Shape& shape, Ass
                          std::shared_ptr<const Environment> environment, std::vector<std::string>& warnings) {
     if (shape.model) {   // what its file left out (a map whose image is missing, ...), and its replacements
         warnings.insert(warnings.end(), shape.model->notes.begin(), shape.model->notes.end());
+        const std::vector<std::string> unmatched = unmatchedEdits(scene, *shape.model);
+        warnings.insert(warnings.end(), unmatched.begin(), unmatched.end());
     }
     return {scene, shape.mesh, std::move(environment), shape.model,
             scene.display.ambientOcclusion ? cache.ambientOcclusion(scene, shape) : nullptr};

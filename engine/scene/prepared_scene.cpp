@@ -74,6 +74,20 @@ const ModelMaterialEdit* editOf(const Scene& scene, int index, const ModelMateri
     return nullptr;
 }
 
+std::vector<std::string> unmatchedEdits(const Scene& scene, const Model& model) {
+    std::vector<std::string> lines;
+    for (const ModelMaterialEdit& edit : scene.modelMaterials) {
+        const std::string entry = "modelMaterials: the tuning of material " + std::to_string(edit.index) + " \"" +
+                                  edit.material.name + "\" is not drawn: ";
+        if (edit.index < 0 || size_t(edit.index) >= model.materials.size()) {
+            lines.push_back(entry + "the model has " + std::to_string(model.materials.size()) + " materials");
+        } else if (const std::string& name = model.materials[size_t(edit.index)].name; name != edit.material.name) {
+            lines.push_back(entry + "the model's material " + std::to_string(edit.index) + " is \"" + name + "\"");
+        }
+    }
+    return lines;
+}
+
 ModelMaterial tunedMaterial(const Scene& scene, int index, const ModelMaterial& material) {
     ModelMaterial tuned = material;
     if (const ModelMaterialEdit* edit = editOf(scene, index, material)) {

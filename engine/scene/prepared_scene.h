@@ -90,6 +90,10 @@ std::vector<SceneDraw> sceneDraws(const PreparedScene& prepared);
 // The scene's edit of material `index` of a model (`material`, the file's), where one has its
 // index and name (Scene::modelMaterials); null otherwise.
 const ModelMaterialEdit* editOf(const Scene& scene, int index, const ModelMaterial& material);
+// A line for each of `scene`'s modelMaterials entries that tunes no material of `model` (an
+// index it does not have, or a name that is not the one there: the file changed since the scene
+// was saved), which editOf therefore never returns: the entry is kept and saved, not drawn.
+std::vector<std::string> unmatchedEdits(const Scene& scene, const Model& model);
 
 // Material `index` of a model (`material`, the file's) as the scene tunes it: the factors of
 // the scene's edit of it (matched by index and name), without the maps the edit leaves out.

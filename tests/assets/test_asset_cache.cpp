@@ -316,6 +316,38 @@ TEST_F(Assets, AGltfSceneIsPreparedWithTheModelItDraws) {
     EXPECT_FALSE(prepareScene(scene, cache, warnings).model);
 }
 
+// A scene's tuning of a material the model does not have (an index past its materials, or a
+// name that is not the one there: the file changed since the scene was saved) is said, naming
+// the entry, as the model's own notes are; one that matches is not.
+TEST_F(Assets, ATuningOfNoMaterialOfTheModelIsSaid) {
+    AssetCache cache;
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    Scene scene;
+    scene.meshFile = path("two.glb").string();
+    std::vector<std::string> warnings;
+    const PreparedScene plain = prepareScene(scene, cache, warnings);
+    ASSERT_TRUE(plain.model);
+    const std::string first = plain.model->materials.at(0).name;
+    Material matching;
+    static_cast<MaterialParameters&>(matching) = plain.model->materials[0].factors;
+    matching.name = first;
+    Material renamed = matching;
+    renamed.name = "old name";
+    scene.modelMaterials = {{0, matching}, {1, renamed}, {7, matching}};
+    warnings.clear();
+    prepareScene(scene, cache, warnings);
+    std::string all;
+    for (const std::string& line : warnings) {
+        all += line + "\n";
+    }
+    EXPECT_EQ(warnings.size(), 2u) << all;
+    EXPECT_NE(all.find("modelMaterials: the tuning of material 1 \"old name\" is not drawn: the model's material 1 is \"" +
+                       plain.model->materials.at(1).name + "\""),
+              std::string::npos) << all;
+    EXPECT_NE(all.find("the tuning of material 7 \"" + first + "\" is not drawn: the model has 2 materials"),
+              std::string::npos) << all;
+}
+
 // The image a scene puts in place of a model's map: drawn there (the same picture as a file
 // with that image as the map), only for that material (another sharing the file's image keeps
 // it), with the map's UV set, sampler and transform; the same object while held; exported.
