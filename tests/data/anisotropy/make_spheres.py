@@ -6,43 +6,26 @@ the sphere's own dP/dphi (round the y axis, w = 1), anisotropyStrength 0.8, anis
 makes MikkTSpace ones, anisotropyStrength 0.6 and the default rotation 0.
 Run: python3 make_spheres.py (no arguments)."""
 import base64
+import importlib.util
 import json
 import math
 import os
 import struct
-import zlib
 
-SEGMENTS, RINGS = 24, 16
+# The UV sphere and the white 2 x 2 PNG of tests/data/transmission/make_spheres.py, loaded by path.
+_spec = importlib.util.spec_from_file_location(
+    "transmission_spheres", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "transmission",
+                                         "make_spheres.py"))
+_transmission = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(_transmission)
+uv_sphere, white_png = _transmission.sphere, _transmission.white_png
 
 
 def sphere():
-    positions, uvs, tangents, indices = [], [], [], []
-    for ring in range(RINGS + 1):
-        theta = math.pi * ring / RINGS
-        for segment in range(SEGMENTS + 1):
-            phi = 2.0 * math.pi * segment / SEGMENTS
-            positions.append((math.sin(theta) * math.sin(phi), math.cos(theta), math.sin(theta) * math.cos(phi)))
-            uvs.append((segment / SEGMENTS, ring / RINGS))
-            # d(position)/d(phi), unit: along u, which grows with phi (also at the poles).
-            tangents.append((math.cos(phi), 0.0, -math.sin(phi), 1.0))
-    for ring in range(RINGS):
-        for segment in range(SEGMENTS):
-            a = ring * (SEGMENTS + 1) + segment
-            b = a + SEGMENTS + 1
-            # Counter-clockwise seen from outside; none of zero area at the poles.
-            if ring > 0:
-                indices += [a, b, a + 1]
-            if ring < RINGS - 1:
-                indices += [a + 1, b, b + 1]
+    positions, uvs, indices = uv_sphere()
+    # d(position)/d(phi), unit: along u, which grows with phi = 2 pi u (also at the poles).
+    tangents = [(math.cos(2.0 * math.pi * u), 0.0, -math.sin(2.0 * math.pi * u), 1.0) for u, _ in uvs]
     return positions, uvs, tangents, indices
-
-
-def white_png():
-    raw = b"".join(b"\x00" + b"\xff\xff\xff" * 2 for _ in range(2))
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0)) +
-            chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
 
 
 def main():
