@@ -281,8 +281,8 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
 // The layers of the `gltf` model (issue 36: "cost only where used"), on the specialised path as
 // the brdf-model rows: the gltf sphere bare, with KHR_materials_clearcoat's coat (factor 1,
 // roughness 0.1, a car paint's), with KHR_materials_sheen's sheen (a velvet's colour 0.8, 0.2,
-// 0.4 at roughness 0.5) and with KHR_materials_transmission's factor 1 (a clear glass), rounds
-// interleaved, under 8 lights and in the default scene with its
+// 0.4 at roughness 0.5), with KHR_materials_transmission's factor 1 (a clear glass) and with
+// KHR_materials_anisotropy's strength 0.8 (a brushed finish), rounds interleaved, under 8 lights and in the default scene with its
 // environment. The bare material's program has no instruction of either layer (shade.frag's
 // PATINA_CLEARCOAT and PATINA_SHEEN are keys of its program; compare_outputs draws it to the
 // byte); its frame here, interleaved with the layered ones, against the brdf-model row's of the
@@ -293,7 +293,7 @@ void measureLayers(BenchRenderer& renderer, const RenderBenchOptions& options, c
     specialised.path = RenderPath::Specialised;
     const std::shared_ptr<const Environment> studio = preparedStudio();
     for (const bool environment : {false, true}) {
-        const char* const kLayers[] = {"", "clearcoat", "sheen", "transmission"};
+        const char* const kLayers[] = {"", "clearcoat", "sheen", "transmission", "anisotropy"};
         std::vector<Scene> scenes;   // PreparedScene holds its scene by reference: all made first
         for (const char* layer : kLayers) {
             scenes.push_back(withBenchLayer(brdfBenchScene(environment), layer));
@@ -574,6 +574,9 @@ Scene withBenchLayer(Scene scene, std::string_view layer) {
         scene.material.sheenRoughness = 0.5f;
     } else if (layer == "transmission") {
         scene.material.transmission = 1.0f;
+    } else if (layer == "anisotropy") {
+        scene.material.anisotropyStrength = 0.8f;
+        scene.material.anisotropyRotation = 0.5f;
     }
     return scene;
 }

@@ -333,7 +333,7 @@ private:
     void drawSinglePass(Items opaque, Items blended, bool catcher = true) const;
     // The shading program of `item`: the one for its BRDF model, whether it has a clear coat
     // (PATINA_CLEARCOAT: only a coated item pays for the coat), a sheen (PATINA_SHEEN) and a
-    // transmission (PATINA_TRANSMISSION), and, in the specialised path
+    // transmission (PATINA_TRANSMISSION), an anisotropy (PATINA_ANISOTROPY), and, in the specialised path
     // with maps, its map set (programKeyOf).
     struct ProgramKey {
         BrdfModelId model;
@@ -342,6 +342,7 @@ private:
         bool sheen;
         bool transmission;
         bool ambientOcclusion;
+        bool anisotropy;
         auto operator<=>(const ProgramKey&) const = default;
     };
     struct ItemProgram {
@@ -553,7 +554,7 @@ void Renderer::Frame::choosePrograms() {
         catcher.catcher = true;
         catcherProgram = &s.shading.useSingle(draws.back().material.model, catcher, ShadingPrograms::Output::Linear,
                                               ShadingPrograms::surfaceOf(maps, false, false, false,
-                                                                         draws.back().occlusion != nullptr,
+                                                                         draws.back().occlusion != nullptr, false,
                                                                          vertexColors));
     }
     if (settings.path == RenderPath::Multi || singlePass.shadows) {
@@ -606,7 +607,8 @@ void Renderer::Frame::chooseShadingPrograms(const ShadingPrograms::SinglePass& s
         }
         const BrdfModelId model = itemKey.model;
         const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-            maps, itemKey.clearcoat, itemKey.sheen, itemKey.transmission, itemKey.ambientOcclusion, vertexColors);
+            maps, itemKey.clearcoat, itemKey.sheen, itemKey.transmission, itemKey.ambientOcclusion, itemKey.anisotropy,
+                vertexColors);
         ShaderSpecialisation key = specialised;
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
@@ -631,7 +633,8 @@ void Renderer::Frame::chooseSceneBehindPrograms(const ShadingPrograms::SinglePas
         const ProgramKey itemKey = programKeyOf(item);
         if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
             const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-                maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion, vertexColors);
+                maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion, itemKey.anisotropy,
+                    vertexColors);
             behindShading[itemKey] =
                 &s.shading.useSingle(itemKey.model, singlePass, ShadingPrograms::Output::Linear, surface);
         }
@@ -940,7 +943,7 @@ Renderer::Frame::ProgramKey Renderer::Frame::programKeyOf(const SceneDraw& draw)
     const bool byMapSet = settings.path == RenderPath::Specialised && maps;
     return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet,
             hasClearcoat(draw.material), hasSheen(draw.material), hasTransmission(draw.material),
-            draw.occlusion != nullptr};
+            draw.occlusion != nullptr, hasAnisotropy(draw.material)};
 }
 
 Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {

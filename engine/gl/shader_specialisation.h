@@ -54,6 +54,10 @@ inline bool hasSheen(const MaterialParameters& material) {
 // items whose programs compile the transmission and the volume in (PATINA_TRANSMISSION).
 inline bool hasTransmission(const MaterialParameters& material) { return material.transmission > 0.0f; }
 
+// Whether `material`'s specular lobe is stretched (KHR_materials_anisotropy's strength above 0):
+// the items whose programs compile the anisotropic terms in (PATINA_ANISOTROPY).
+inline bool hasAnisotropy(const MaterialParameters& material) { return material.anisotropyStrength > 0.0f; }
+
 // `lights` as packEnabledLights gives them (the uniform block's order); `noDiffuse` when every
 // material drawn has none (hasNoDiffuse). `flatSlots`: how many lights the vertex stage can
 // hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).

@@ -1,5 +1,6 @@
 #include "gl/shading_inputs.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -111,7 +112,9 @@ MaterialUniforms::MaterialUniforms(const GlProgram& program)
       sheenColor_(program.uniform("uSheenColor")), sheenRoughness_(program.uniform("uSheenRoughness")),
       transmission_(program.uniform("uTransmission")), thickness_(program.uniform("uThickness")),
       attenuationColor_(program.uniform("uAttenuationColor")),
-      attenuationDistance_(program.uniform("uAttenuationDistance")) {}
+      attenuationDistance_(program.uniform("uAttenuationDistance")),
+      anisotropyStrength_(program.uniform("uAnisotropyStrength")),
+      anisotropyDirection_(program.uniform("uAnisotropyDirection")) {}
 
 void MaterialUniforms::set(const MaterialParameters& material) const {
     glUniform3f(baseColor_, material.baseColor.x, material.baseColor.y, material.baseColor.z);
@@ -132,6 +135,10 @@ void MaterialUniforms::set(const MaterialParameters& material) const {
         const glm::vec3& c = material.attenuationColor;
         glUniform3f(attenuationColor_, c.x, c.y, c.z);
         glUniform1f(attenuationDistance_, material.attenuationDistance);
+    }
+    if (anisotropyStrength_ >= 0) {   // only an anisotropic program has them (PATINA_ANISOTROPY)
+        glUniform1f(anisotropyStrength_, material.anisotropyStrength);
+        glUniform2f(anisotropyDirection_, std::cos(material.anisotropyRotation), std::sin(material.anisotropyRotation));
     }
 }
 

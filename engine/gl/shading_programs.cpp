@@ -64,6 +64,9 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (has(surface, Surface::Transmission)) {
         defines.push_back("PATINA_TRANSMISSION");
     }
+    if (has(surface, Surface::Anisotropy)) {
+        defines.push_back("PATINA_ANISOTROPY");
+    }
     if (has(surface, Surface::AmbientOcclusion)) {
         defines.push_back("PATINA_AMBIENT_OCCLUSION");
     }

@@ -53,19 +53,21 @@ public:
     // hasSheen), and with KHR_materials_transmission's and _volume's light through the surface
     // (PATINA_TRANSMISSION, shaders/shared/transmission.glsl; hasTransmission), and with the
     // ambient occlusion baked at its vertices (PATINA_AMBIENT_OCCLUSION: mesh.vert reads
-    // attribute 5; only for an item drawn with one, SceneDraw::occlusion), and with Maps, the
-    // vertex colours (PATINA_VERTEX_COLOR: mesh.vert reads attribute 6; in a frame where some
-    // item's mesh has them). Bits: Maps, Clearcoat, Sheen, Transmission, AmbientOcclusion and
-    // VertexColors combine (surfaceOf).
+    // attribute 5; only for an item drawn with one, SceneDraw::occlusion), with
+    // KHR_materials_anisotropy's stretched lobe (PATINA_ANISOTROPY: mesh.vert hands on the
+    // tangents; hasAnisotropy), and with Maps, the vertex colours (PATINA_VERTEX_COLOR: mesh.vert
+    // reads attribute 6; in a frame where some item's mesh has them). Bits: Maps, Clearcoat,
+    // Sheen, Transmission, AmbientOcclusion, Anisotropy and VertexColors combine (surfaceOf).
     enum class Surface {
-        Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4, Transmission = 8, AmbientOcclusion = 16, VertexColors = 32
+        Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4, Transmission = 8, AmbientOcclusion = 16, Anisotropy = 32,
+        VertexColors = 64
     };
     static Surface surfaceOf(bool maps, bool clearcoat, bool sheen, bool transmission = false,
-                             bool ambientOcclusion = false, bool vertexColors = false) {
+                             bool ambientOcclusion = false, bool anisotropy = false, bool vertexColors = false) {
         return Surface((maps ? int(Surface::Maps) : 0) | (clearcoat ? int(Surface::Clearcoat) : 0) |
                        (sheen ? int(Surface::Sheen) : 0) | (transmission ? int(Surface::Transmission) : 0) |
                        (ambientOcclusion ? int(Surface::AmbientOcclusion) : 0) |
-                       (vertexColors ? int(Surface::VertexColors) : 0));
+                       (anisotropy ? int(Surface::Anisotropy) : 0) | (vertexColors ? int(Surface::VertexColors) : 0));
     }
     static bool has(Surface surface, Surface part) { return (int(surface) & int(part)) != 0; }
 

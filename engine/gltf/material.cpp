@@ -1,6 +1,7 @@
 #include "gltf/material.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -20,6 +21,7 @@ constexpr const char* kClearcoat = "KHR_materials_clearcoat";
 constexpr const char* kSheen = "KHR_materials_sheen";
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr const char* kVolume = "KHR_materials_volume";
+constexpr const char* kAnisotropy = "KHR_materials_anisotropy";
 
 float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
 
@@ -33,6 +35,7 @@ const char* const kClearcoatExtension = kClearcoat;
 const char* const kSheenExtension = kSheen;
 const char* const kTransmissionExtension = kTransmission;
 const char* const kVolumeExtension = kVolume;
+const char* const kAnisotropyExtension = kAnisotropy;
 
 double f0FromIor(double ior) {
     const double r = (ior - 1.0) / (ior + 1.0);
@@ -65,6 +68,22 @@ void volumeFromGltf(const tinygltf::Material& material, const std::string& what,
                          " is not above 0 (leave it out for no attenuation)");
     }
     result.attenuationDistance = float(std::min(distance, double(kMaxThickness)));
+}
+
+// KHR_materials_anisotropy's anisotropyStrength (0 by default: none; clamped to [0, 1]) and
+// anisotropyRotation (radians, 0 by default; any finite angle, kept as the file has it). Its
+// map is model_materials.cpp's.
+void anisotropyFromGltf(const tinygltf::Material& material, const std::string& what, const std::string& source,
+                        Material& result) {
+    const std::string at = what + "/extensions/" + kAnisotropy;
+    const tinygltf::Value* anisotropy = extensionOf(material.extensions, kAnisotropy);
+    result.anisotropyStrength = unit(numberField(anisotropy, "anisotropyStrength", 0.0, at, source));
+    const double rotation = numberField(anisotropy, "anisotropyRotation", 0.0, at, source);
+    if (!std::isfinite(rotation) || std::abs(rotation) > kMaxAnisotropyRotation) {
+        throw InputError(source + ": " + at + "/anisotropyRotation: " + std::to_string(rotation) +
+                         " is not an angle in radians");
+    }
+    result.anisotropyRotation = float(rotation);
 }
 }  // namespace
 
@@ -155,6 +174,7 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     }
     result.sheenRoughness = unit(numberField(sheen, "sheenRoughnessFactor", 0.0, sheenAt, source));
     volumeFromGltf(material, what, source, result);
+    anisotropyFromGltf(material, what, source, result);
     return result;
 }
 
@@ -194,6 +214,11 @@ Json materialToGltf(const Material& material) {
             }
             json["extensions"][kVolume] = volume;
         }
+    }
+    // An anisotropy only where there is one (a strength above 0), as the coat.
+    if (material.anisotropyStrength > 0.0f) {
+        json["extensions"][kAnisotropy] = {{"anisotropyStrength", exact(material.anisotropyStrength)},
+                                           {"anisotropyRotation", exact(material.anisotropyRotation)}};
     }
     return json;
 }

@@ -35,13 +35,18 @@ std::string specularNotShown(const tinygltf::Material& material);
 // KHR_materials_clearcoat's factors where the material has a coat (either factor above 0), and
 // KHR_materials_sheen's where it has a sheen (its colour or roughness above 0), and
 // KHR_materials_transmission's and KHR_materials_volume's where it passes light (the volume
-// where it has a thickness).
+// where it has a thickness), and KHR_materials_anisotropy's where its lobe is stretched (a
+// strength above 0).
 Json materialToGltf(const Material& material);
 extern const char* const kMaterialExtensions[2];   // the extensions materialToGltf always uses
 extern const char* const kClearcoatExtension;      // "KHR_materials_clearcoat", where it has a coat
 extern const char* const kSheenExtension;          // "KHR_materials_sheen", where it has a sheen
 extern const char* const kTransmissionExtension;   // "KHR_materials_transmission", where it has one
 extern const char* const kVolumeExtension;         // "KHR_materials_volume", beside a transmission with a thickness
+extern const char* const kAnisotropyExtension;     // "KHR_materials_anisotropy", where it has one
+// The largest |anisotropyRotation| read (radians): a larger one is not an angle a file means, and
+// its cosine and sine in fp32 would be noise.
+inline constexpr double kMaxAnisotropyRotation = 1.0e4;
 // The largest thickness and attenuation distance kept (model units): beyond it a float's
 // exponent stays finite and nothing visible changes.
 inline constexpr float kMaxThickness = 1.0e6f;

@@ -273,6 +273,19 @@ void volumeJson(const ModelMaterial& material, Textures& textures, Json& json) {
     }
 }
 
+// KHR_materials_anisotropy where the material has it: the factors materialToGltf wrote, and its
+// map (model_materials.cpp reads it back). A map on a strength of 0 is not written: it scales
+// the strength, and 0 stretches nothing whatever its map.
+void anisotropyJson(const ModelMaterial& material, Textures& textures, Json& json) {
+    if (!json.contains("extensions") || !json["extensions"].contains(gltf::kAnisotropyExtension)) {
+        return;
+    }
+    if (material.anisotropyMap.present()) {
+        json["extensions"][gltf::kAnisotropyExtension]["anisotropyTexture"] = textures.info(material.anisotropyMap);
+    }
+    textures.extensions.insert(gltf::kAnisotropyExtension);
+}
+
 // The material as glTF writes it (3.9): the factors as materialToGltf maps them, and every
 // map, alpha, emission and sidedness the model read (the inverse of model_materials.cpp).
 Json materialJson(const ModelMaterial& material, Textures& textures) {
@@ -320,6 +333,7 @@ Json materialJson(const ModelMaterial& material, Textures& textures) {
     clearcoatJson(material, textures, json);
     sheenJson(material, textures, json);
     volumeJson(material, textures, json);
+    anisotropyJson(material, textures, json);
     return json;
 }
 

@@ -23,6 +23,7 @@ bool attachImages(const tinygltf::Model& document, Model& model, const std::stri
             for (const auto& map : mapsOf(material)) {
                 visit(*map.slot);
             }
+            visit(material.anisotropyMap);   // kept for the export, not drawn
         }
     };
     std::vector<bool> used(document.images.size(), false);
@@ -46,6 +47,8 @@ bool attachImages(const tinygltf::Model& document, Model& model, const std::stri
 // glTF 2.0 section 3.7.2.1: a normal-mapped primitive without TANGENT gets MikkTSpace
 // tangents, the frames the map was baked in, for the UV set its (first drawn) normal map reads:
 // the material's, else its clear coat's (KHR_materials_clearcoat's clearcoatNormalTexture).
+// An anisotropic one (KHR_materials_anisotropy: its direction turns from the tangent) gets them
+// too, for its anisotropy map's UV set, else the first.
 void addMissingTangents(Model& model) {
     std::vector<int> normalUvSet(model.primitives.size(), -1);
     for (const DrawItem& draw : model.draws) {
@@ -56,6 +59,8 @@ void addMissingTangents(Model& model) {
         const TextureSlot& normal = material.normal.present() ? material.normal : material.clearcoatNormal;
         if (normal.present()) {
             normalUvSet[size_t(draw.primitive)] = normal.texCoord;
+        } else if (material.factors.anisotropyStrength > 0.0f) {
+            normalUvSet[size_t(draw.primitive)] = material.anisotropyMap.present() ? material.anisotropyMap.texCoord : 0;
         }
     }
     for (size_t i = 0; i < model.primitives.size(); ++i) {

@@ -85,6 +85,7 @@ private:
     void clearcoatMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
     void sheenMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
     void volumeMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
+    void anisotropyMap(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
 
     const tinygltf::Model& document_;
     const std::string& source_;
@@ -282,6 +283,7 @@ ModelMaterial MaterialReader::read(int index) {
     clearcoatMaps(material, where, result);
     sheenMaps(material, where, result);
     volumeMaps(material, where, result);
+    anisotropyMap(material, where, result);
     return result;
 }
 
@@ -333,6 +335,17 @@ void MaterialReader::volumeMaps(const tinygltf::Material& material, const std::s
     if (const tinygltf::Value* object = extensionOf(material.extensions, volumeName)) {
         const std::string at = where + "/extensions/" + volumeName;
         result.thicknessMap = slot(textureInfoOf(object, "thicknessTexture", at, source_), at + "/thicknessTexture");
+    }
+}
+
+// KHR_materials_anisotropy's anisotropyTexture (its factors are materialFromGltf's), a
+// textureInfo read as the core maps are: kept and exported, not drawn.
+void MaterialReader::anisotropyMap(const tinygltf::Material& material, const std::string& where,
+                                   ModelMaterial& result) {
+    const char* name = "KHR_materials_anisotropy";
+    if (const tinygltf::Value* object = extensionOf(material.extensions, name)) {
+        const std::string at = where + "/extensions/" + name;
+        result.anisotropyMap = slot(textureInfoOf(object, "anisotropyTexture", at, source_), at + "/anisotropyTexture");
     }
 }
 

@@ -19,6 +19,8 @@ constexpr Range kUnit{0.0, 1.0};
 constexpr Range kNonNegative{0.0, 3.4e38};
 // KHR_materials_volume's thickness and attenuation distance, in model units (0: none, infinite).
 constexpr Range kThickness{0.0, 1.0e6};
+// KHR_materials_anisotropy's rotation, in radians (gltf::kMaxAnisotropyRotation's bound).
+constexpr Range kRotation{-1.0e4, 1.0e4};
 
 // The shortest decimal that reads back as the same float, so files say 0.8, not
 // 0.800000011920929.
@@ -314,6 +316,8 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.thickness = reader.number("thickness", material.thickness, kThickness);
     material.attenuationColor = reader.vec3("attenuationColor", material.attenuationColor, kUnit);
     material.attenuationDistance = reader.number("attenuationDistance", material.attenuationDistance, kThickness);
+    material.anisotropyStrength = reader.number("anisotropyStrength", material.anisotropyStrength, kUnit);
+    material.anisotropyRotation = reader.number("anisotropyRotation", material.anisotropyRotation, kRotation);
     if (reader.has("model")) {
         material.model = brdfModelFromJson(reader, "model");
     }
@@ -545,6 +549,11 @@ Json materialToJson(const Material& material) {
         json["thickness"] = toJson(material.thickness);
         json["attenuationColor"] = toJson(material.attenuationColor);
         json["attenuationDistance"] = toJson(material.attenuationDistance);
+    }
+    // KHR_materials_anisotropy's only where the lobe is stretched.
+    if (material.anisotropyStrength != 0.0f) {
+        json["anisotropyStrength"] = toJson(material.anisotropyStrength);
+        json["anisotropyRotation"] = toJson(material.anisotropyRotation);
     }
     if (!material.notes.empty()) {
         json["notes"] = material.notes;

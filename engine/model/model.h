@@ -70,6 +70,10 @@ struct ModelMaterial {
     // (G scales `factors.thickness`), drawn where the material transmits (docs/SHADING.md S7).
     TextureSlot transmissionMap;            // linear; R
     TextureSlot thicknessMap;               // linear; G
+    // KHR_materials_anisotropy's map (RG the direction in tangent space in [-1, 1], B scales
+    // `factors.anisotropyStrength`): read, kept and exported, not drawn (docs/SHADING.md S8),
+    // so not among mapsOf's.
+    TextureSlot anisotropyMap;              // linear; RGB
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;

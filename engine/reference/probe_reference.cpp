@@ -45,7 +45,13 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         options.indirectOcclusion = occlusion.empty() ? 1.0f : occlusion[i];
         options.occluders = occluders;
         const size_t m = size_t(materialOfSample[i]);
-        const ReferenceEstimate e = referenceRadiance(materials[m].model, surfaces[m], reference, packed,
+        // KHR_materials_anisotropy's lobe turns with the surface: derived at the sample, along the
+        // fallback tangent (a probe sample carries none; the built-in meshes have none either).
+        const shader::SurfaceMaterial surface =
+            materials[m].anisotropyStrength > 0.0f
+                ? surfaceMaterialAt(materials[m], shader::safeNormalize(samples[i].normal), glm::vec4(0.0f))
+                : surfaces[m];
+        const ReferenceEstimate e = referenceRadiance(materials[m].model, surface, reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,
                                                       withLayersOf(options, materials[m]));
         rows[i] = {e.value, e.standardError};

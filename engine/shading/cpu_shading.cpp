@@ -1,5 +1,7 @@
 #include "shading/cpu_shading.h"
 
+#include <cmath>
+
 #include "shading/brdf_models.h"
 
 namespace patina {
@@ -7,6 +9,15 @@ namespace patina {
 shader::SurfaceMaterial surfaceMaterial(const MaterialParameters& material) {
     return shader::deriveSurfaceMaterial(material.baseColor, material.roughness,
                                          material.specular, material.metallic);
+}
+
+shader::SurfaceMaterial surfaceMaterialAt(const MaterialParameters& material, glm::vec3 N, glm::vec4 tangent) {
+    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    if (!(material.anisotropyStrength > 0.0f)) {
+        return surface;
+    }
+    return shader::withAnisotropy(surface, N, glm::vec3(tangent), tangent.w, std::cos(material.anisotropyRotation),
+                                  std::sin(material.anisotropyRotation), material.anisotropyStrength);
 }
 
 glm::vec3 shadePoint(BrdfModelId model, const shader::SurfaceMaterial& material,

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "shading/material_parameters.h"
 #include "shading/shading.h"
@@ -9,6 +10,10 @@
 namespace patina {
 
 shader::SurfaceMaterial surfaceMaterial(const MaterialParameters& material);
+// The same at a point of the surface, with KHR_materials_anisotropy's lobe where the material
+// has one (hasAnisotropy): shade.frag's withAnisotropy on the unit shading normal N and the
+// mesh's tangent there (xyz and w as mesh.vert hands it on; w = 0: none, the fallback's).
+shader::SurfaceMaterial surfaceMaterialAt(const MaterialParameters& material, glm::vec3 N, glm::vec4 tangent);
 
 // Linear radiance towards V at P with normal N, summed over the packed lights: the CPU twin
 // of shaders/stages/shade.frag's single-pass loop, running the same shared functions for `model`.

@@ -92,6 +92,9 @@ inline Half log2(Half x) { return Half(std::log2(x.value)); }
 inline Half acos(Half x) { return Half(std::acos(x.value)); }
 inline Half atan(Half x) { return Half(std::atan(x.value)); }
 inline Half dot(HalfVec3 a, HalfVec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Half abs(Half x) { return x < Half(0.0f) ? -x : x; }
+inline Half length(HalfVec3 a) { return sqrt(dot(a, a)); }
+inline HalfVec3 normalize(HalfVec3 a) { return a * inversesqrt(dot(a, a)); }
 inline HalfVec3 cross(HalfVec3 a, HalfVec3 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }

@@ -38,6 +38,12 @@ struct MaterialParameters {
     float thickness = 0.0f;
     glm::vec3 attenuationColor{1.0f};
     float attenuationDistance = 0.0f;
+    // KHR_materials_anisotropy's factors (docs/SHADING.md S8): the strength in [0, 1] that
+    // stretches the specular lobe along a direction in the surface, and that direction's
+    // rotation counter-clockwise from the mesh's tangent, in radians. A strength of 0 is none:
+    // nothing of it is compiled (PATINA_ANISOTROPY), and the material shades as without it.
+    float anisotropyStrength = 0.0f;
+    float anisotropyRotation = 0.0f;
     bool operator==(const MaterialParameters&) const = default;
 };
 

@@ -22,6 +22,15 @@ const real MIN_PERCEPTUAL_ROUGHNESS = 0.045f;
 // silhouette) would make it 0 or negative. 1e-4 is the usual floor (docs/SHADING.md S2).
 const real MIN_N_DOT_V = 1e-4f;
 
+// KHR_materials_anisotropy's fields are compiled into a program only where a material has the
+// layer (PATINA_ANISOTROPY, shaders/stages/shade.frag); C++ always has them (the CPU twin and
+// the ground truth choose at run time, alphaT > 0).
+#if defined(PATINA_ANISOTROPY) || defined(__cplusplus)
+#ifndef PATINA_ANISOTROPIC_FIELDS
+#define PATINA_ANISOTROPIC_FIELDS
+#endif
+#endif
+
 struct SurfaceMaterial {
     vec3 diffuseColor;   // c_diff = (1 - m) c_base
     vec3 f0;             // c_spec: reflectance at normal incidence
@@ -33,6 +42,16 @@ struct SurfaceMaterial {
     vec3 dielectricF0;   // 0.08 s: the dielectric's F0 alone (0.04 at s = 0.5, ior 1.5)
     vec3 baseColor;      // c_base: the metal's F0
     real metallic;      // m
+#ifdef PATINA_ANISOTROPIC_FIELDS
+    // KHR_materials_anisotropy (withAnisotropy): the unit directions of the lobe's stretch in
+    // the surface, t and b = N x t, and the roughness along each, alpha_t >= alpha_b. alpha_t 0
+    // is none (deriveSurfaceMaterial's): the isotropic terms are evaluated.
+    vec3 anisotropicT;
+    vec3 anisotropicB;
+    real alphaT;
+    real alphaB;
+    real anisotropy;    // the strength, in [0, 1]
+#endif
 };
 
 struct BrdfValue {
@@ -56,7 +75,45 @@ PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, real roughne
     real r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
     return SurfaceMaterial((1.0f - metallic) * baseColor,
                            mix(vec3(F0_PER_SPECULAR * specular), baseColor, metallic),
-                           r, r * r, vec3(F0_PER_SPECULAR * specular), baseColor, metallic);
+                           r, r * r, vec3(F0_PER_SPECULAR * specular), baseColor, metallic
+#ifdef PATINA_ANISOTROPIC_FIELDS
+                           , vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, 0.0f
+#endif
+    );
+}
+
+// KHR_materials_anisotropy: the lobe stretched along t, the tangent frame's direction
+// (cos rotation, sin rotation) turned counter-clockwise from the tangent (the texture's direction
+// already turned in, where it has one): t = cos T + sin B in the frame (T, B = N x T w) made
+// orthogonal to the shading normal N; alpha_t = mix(alpha, 1, strength^2), alpha_b = alpha (the
+// extension's "Implementation"). `tangent` xyz with `w`, the mesh's; one of no length takes
+// fallbackAnisotropyTangent.
+// A mesh without tangents (the built-in shapes): the direction round the y axis, y x N, which
+// turns smoothly over the surface (a sphere's lines of latitude); within half a degree of +-y,
+// where it has no direction, the x axis made orthogonal to N.
+PATINA_INLINE vec3 fallbackAnisotropyTangent(vec3 N) {
+    vec3 around = vec3(N.z, 0.0f, -N.x);   // cross((0, 1, 0), N)
+    return dot(around, around) > 1e-4f ? around : vec3(1.0f, 0.0f, 0.0f) - N * N.x;
+}
+
+PATINA_INLINE SurfaceMaterial withAnisotropy(SurfaceMaterial material, vec3 N, vec3 tangent, real w, real cosRotation,
+                                             real sinRotation, real strength) {
+#ifdef PATINA_ANISOTROPIC_FIELDS
+    vec3 T = tangent - N * dot(N, tangent);
+    if (dot(T, T) < 1e-12f) {
+        T = fallbackAnisotropyTangent(N);
+        w = 1.0f;
+    }
+    T = normalize(T);
+    vec3 B = cross(N, T) * real(w < 0.0f ? -1.0f : 1.0f);
+    vec3 t = normalize(cosRotation * T + sinRotation * B);
+    material.anisotropicT = t;
+    material.anisotropicB = cross(N, t);
+    material.alphaT = mix(material.alpha, real(1.0f), strength * strength);
+    material.alphaB = material.alpha;
+    material.anisotropy = strength;
+#endif
+    return material;
 }
 
 // Lambert: c_diff / pi (Karis 2013, eq. 1).
@@ -79,6 +136,28 @@ PATINA_INLINE real D_GGX(real NoH, vec3 NxH, real alpha) {
 #else
     return k * k * (1.0f / PATINA_PI);
 #endif
+}
+
+// Anisotropic GGX (Burley 2012, "Physically-Based Shading at Disney", eq. 13; Heitz 2014,
+// eq. 85 with alpha_x = alpha_t, alpha_y = alpha_b):
+// D = 1 / (pi alpha_t alpha_b ((ToH / alpha_t)^2 + (BoH / alpha_b)^2 + NoH^2)^2),
+// written as a^2 w^2 w^2 / pi with a^2 = alpha_t alpha_b, w^2 = a^2 / |(alpha_b ToH, alpha_t BoH, a^2 NoH)|^2.
+PATINA_INLINE real D_GGX_Anisotropic(real NoH, real ToH, real BoH, real alphaT, real alphaB) {
+    real a2 = alphaT * alphaB;
+    vec3 f = vec3(alphaB * ToH, alphaT * BoH, a2 * NoH);
+    real w2 = a2 / dot(f, f);
+    return a2 * w2 * w2 * (1.0f / PATINA_PI);
+}
+
+// Heitz 2014, eq. 99 (height-correlated Smith) with the anisotropic Lambda of eq. 86,
+// Lambda(o) = (-1 + sqrt(1 + (alpha_t^2 To^2 + alpha_b^2 Bo^2) / No^2)) / 2:
+// V = 0.5 / (NoL |(alpha_t ToV, alpha_b BoV, NoV)| + NoV |(alpha_t ToL, alpha_b BoL, NoL)|).
+// alpha_t = alpha_b gives V_SmithGGXCorrelated.
+PATINA_INLINE real V_SmithGGXCorrelated_Anisotropic(real NoV, real NoL, real ToV, real BoV, real ToL, real BoL,
+                                                    real alphaT, real alphaB) {
+    real lambdaV = NoL * length(vec3(alphaT * ToV, alphaB * BoV, NoV));
+    real lambdaL = NoV * length(vec3(alphaT * ToL, alphaB * BoL, NoL));
+    return 0.5f / (lambdaV + lambdaL);
 }
 
 // Visibility terms: V = G / (4 NoL NoV), written so the division cancels where it can.

@@ -111,6 +111,17 @@ PATINA_INLINE BrdfValue evaluateBrdfFor(SurfaceMaterial material, vec3 N, vec3 V
     real VoH = clamp(dot(V, H), 0.0f, 1.0f);
     real D = distribution(NoH, cross(N, H), material.alpha);
     real Vis = underEnvironment ? environmentVisibility(NoV, NoL, material) : visibility(NoV, NoL, material);
+#ifdef PATINA_ANISOTROPIC_FIELDS
+    // KHR_materials_anisotropy: its D and height-correlated V (brdf.glsl) replace the model's,
+    // as the extension defines them on glTF's BRDF.
+    if (material.alphaT > 0.0f) {
+        vec3 T = material.anisotropicT;
+        vec3 B = material.anisotropicB;
+        D = D_GGX_Anisotropic(NoH, dot(T, H), dot(B, H), material.alphaT, material.alphaB);
+        Vis = V_SmithGGXCorrelated_Anisotropic(NoV, NoL, dot(T, V), dot(B, V), dot(T, L), dot(B, L), material.alphaT,
+                                               material.alphaB);
+    }
+#endif
     vec3 F = fresnel(material.f0, VoH);
     vec3 specular = (D * Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
     // LoH = VoH: H bisects L and V.

@@ -111,7 +111,30 @@ PATINA_INLINE real lodToRoughness(real lod, real maxLod) {
 // Where the split sum reads the prefiltered chain: R = reflect(-V, N), or with `dominant` the
 // "dominant direction" mix(R, N, alpha^2) that Frostbite and Filament use to make up for N = V
 // in the prefilter (Lagarde and de Rousiers 2014, section 4.9.3).
+// KHR_materials_anisotropy's lobe is read along a bent normal (Revie 2011, "Implementing Fur
+// Using Deferred Shading", GPU Pro 2; McAuley 2015, "Rendering the World of Far Cry 4", as
+// Filament and the Khronos sample viewer take it): the normal leans towards V's part across the
+// stretch, the plane of b, the more the stronger and smoother the lobe (a bend of
+// (1 - strength (1 - r))^4 keeps N): the prefiltered chain's isotropic lobe then sits along the
+// streak's brightest reflection. An approximation: docs/SHADING.md S8 measures it.
+PATINA_INLINE vec3 anisotropicBentNormal(SurfaceMaterial material, vec3 N, vec3 V) {
+#ifdef PATINA_ANISOTROPIC_FIELDS
+    if (material.alphaT > 0.0f) {
+        vec3 b = material.anisotropicB;
+        vec3 across = cross(cross(b, V), b);   // V less its part along b
+        real keep = 1.0f - material.anisotropy * (1.0f - material.roughness);
+        keep = keep * keep * keep * keep;
+        vec3 bent = mix(across, N, keep);
+        return dot(bent, bent) > 1e-12f ? normalize(bent) : N;
+    }
+#endif
+    return N;
+}
+
 PATINA_INLINE vec3 environmentReflection(SurfaceMaterial material, vec3 N, vec3 V, bool dominant) {
+#ifdef PATINA_ANISOTROPIC_FIELDS
+    N = anisotropicBentNormal(material, N, V);
+#endif
     vec3 R = reflect(-V, N);
     if (dominant) {
         real a2 = material.alpha * material.alpha;

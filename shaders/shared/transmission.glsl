@@ -50,8 +50,9 @@ PATINA_INLINE Transmission deriveTransmission(SurfaceMaterial material, real tra
 
 // The diffuse that stays: mix(diffuse_brdf, specular_btdf, transmission)'s first term.
 PATINA_INLINE SurfaceMaterial transmissionDiffuse(SurfaceMaterial material, real transmission) {
-    return SurfaceMaterial(material.diffuseColor * (1.0f - transmission), material.f0, material.roughness,
-                           material.alpha, material.dielectricF0, material.baseColor, material.metallic);
+    SurfaceMaterial kept = material;
+    kept.diffuseColor = material.diffuseColor * (1.0f - transmission);
+    return kept;
 }
 
 // Schlick's Fresnel of F0 at V.H (glTF 2.0 Appendix B), whatever the model's own.

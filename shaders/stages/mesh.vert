@@ -30,6 +30,13 @@ layout(location = 6) in vec4 aColor;
 out vec4 vColor;
 #endif
 
+#if defined(PATINA_ANISOTROPY) && !defined(PATINA_TEXTURED)
+// KHR_materials_anisotropy's direction turns from the tangent (shade.frag); without maps only
+// the tangent is handed on (a mesh without reads (0, 0, 0, 1): the fallback's).
+layout(location = 4) in vec4 aTangent;
+out vec4 vTangent;
+#endif
+
 #ifdef PATINA_AMBIENT_OCCLUSION
 // The item's ambient occlusion baked at its vertices (engine/scene/ambient_occlusion.h), handed
 // on for shade.frag; an item without reads the attribute's constant, 1 (the renderer sets it).
@@ -73,6 +80,9 @@ void main() {
     // (through the inverse transpose) and this tangent make a frame of the other handedness:
     // w turns so that cross(N, T) w stays the bitangent the map was baked with (glTF 2.0
     // section 3.7.2.1 defines it in the mesh's own space).
+    mat3 linear = mat3(uModel);
+    vTangent = vec4(linear * aTangent.xyz, determinant(linear) < 0.0f ? -aTangent.w : aTangent.w);
+#elif defined(PATINA_ANISOTROPY)
     mat3 linear = mat3(uModel);
     vTangent = vec4(linear * aTangent.xyz, determinant(linear) < 0.0f ? -aTangent.w : aTangent.w);
 #endif

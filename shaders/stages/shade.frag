@@ -36,6 +36,10 @@
 // light behind the surface seen through it and the environment along -V (TRANSMITTED), tinted
 // by the base colour and attenuated over the thickness; beneath the coat. Without it not one
 // instruction of the transmission is compiled.
+// PATINA_ANISOTROPY: KHR_materials_anisotropy (brdf.glsl's withAnisotropy), only for an item
+// with one: the specular lobe's D and V stretched along the tangent turned by the rotation, on
+// the shading normal, for every light; the environment read along the bent normal (ibl.glsl).
+// Without it not one instruction of it is compiled.
 // PATINA_AMBIENT_OCCLUSION: the item's ambient occlusion baked at its vertices (mesh.vert's
 // vAmbientOcclusion, engine/scene/ambient_occlusion.h) times the file's occlusion map takes the
 // map's place on the environment's and the hemisphere lights' light (OCCLUDED), and the
@@ -99,6 +103,14 @@ uniform float uClearcoatRoughness;   // clearcoatRoughnessFactor
 #define COATED(term) coatRadiance += (term);
 #else
 #define COATED(term)
+#endif
+
+#ifdef PATINA_ANISOTROPY
+uniform float uAnisotropyStrength;   // anisotropyStrength
+uniform vec2 uAnisotropyDirection;   // (cos, sin) of anisotropyRotation
+#if !defined(PATINA_TEXTURED) && !defined(PATINA_PROBE)
+in vec4 vTangent;   // mesh.vert's, world space; w = 0: the vertex has none
+#endif
 #endif
 
 #ifdef PATINA_SHEEN
@@ -500,6 +512,17 @@ void main() {
 #endif
 #ifdef PATINA_TEXTURED
     N = mappedNormal(N);
+#endif
+#ifdef PATINA_ANISOTROPY
+    // On the shading normal (the normal map's included), from the interpolated tangent; a probe
+    // has none and takes the fallback direction.
+#ifdef PATINA_PROBE
+    vec4 anisotropyTangent = vec4(0.0f);
+#else
+    vec4 anisotropyTangent = vTangent;
+#endif
+    material = withAnisotropy(material, N, anisotropyTangent.xyz, anisotropyTangent.w, uAnisotropyDirection.x,
+                              uAnisotropyDirection.y, uAnisotropyStrength);
 #endif
 #ifdef PATINA_AMBIENT_OCCLUSION
 #ifdef PATINA_TEXTURED

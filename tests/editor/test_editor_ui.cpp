@@ -298,6 +298,37 @@ TEST_F(EditorUi, ALayerIsAddedAndRemovedWholeInOneStep) {
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.5f));
 }
 
+// KHR_materials_anisotropy in the editor: a part's Anisotropy section, closed on a part without
+// one; Add anisotropy stretches the highlight (the picture changes) in one undo step, Remove
+// takes it off, Ctrl+Z puts it back, and the scene saves strength and rotation.
+TEST_F(EditorUi, APartsAnisotropyIsAddedAndRemovedWholeInOneStep) {
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().count("Anisotropy strength")) << "closed on a part without one";
+    click(centreOf("Anisotropy"));
+    frames(1);
+    const LdrImage round = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Add anisotropy"));
+    frames(1);
+    Material part = modelMaterial(state_, state_.scene, 0);
+    EXPECT_EQ(part.anisotropyStrength, 0.5f);
+    EXPECT_EQ(part.anisotropyRotation, 0.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    EXPECT_GT(differingPixels(round, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    EXPECT_TRUE(itemsOfLastFrame().count("Anisotropy rotation"));
+    click(centreOf("Remove anisotropy"));
+    part = modelMaterial(state_, state_.scene, 0);
+    EXPECT_EQ(part.anisotropyStrength, 0.0f);
+    EXPECT_EQ(part.anisotropyRotation, 0.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).anisotropyStrength, 0.5f) << "back whole";
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    const Json saved = sceneToJson(state_.scene);
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["anisotropyStrength"], 0.5);
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["anisotropyRotation"], 0.0);
+}
+
 // KHR_materials_transmission and _volume in the editor: a part's Transmission and Volume
 // sections under its Sheen, closed on a part without them; the transmission dragged to 1 changes
 // the picture, each drag is one undo step, and the part's values are what the scene saves.

@@ -95,6 +95,27 @@ TEST(MaterialFile, AVolumeWithoutATransmissionIsKeptWhenSaved) {
     EXPECT_EQ(materialFromJson(materialToJson(colourOnly), "", "x", true, warnings), colourOnly);
 }
 
+// KHR_materials_anisotropy's strength and rotation: written only where the lobe is stretched,
+// read back the same, the strength checked as every factor.
+TEST(MaterialFile, TheAnisotropyRoundTripsAndIsLeftOutWithoutOne) {
+    Material material;
+    material.anisotropyRotation = 0.25f;   // no strength: none, not written
+    for (const char* key : {"anisotropyStrength", "anisotropyRotation"}) {
+        EXPECT_FALSE(materialToJson(material).contains(key)) << key;
+    }
+    material.anisotropyStrength = 0.75f;
+    material.anisotropyRotation = -1.5f;
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["anisotropyStrength"], 0.75);
+    EXPECT_EQ(json["anisotropyRotation"], -1.5);
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "anisotropyStrength": 1.5})")
+                  .find("m.json: /anisotropyStrength"),
+              std::string::npos);
+}
+
 // KHR_materials_transmission's and KHR_materials_volume's factors: written only where set,
 // read back the same, checked as every factor (the thickness and distance not below 0).
 TEST(MaterialFile, TheTransmissionAndVolumeRoundTripAndAreLeftOutWithoutOne) {

@@ -238,6 +238,32 @@ void drawTransmission(Material& material, const Material& file, const Material& 
     ImGui::PopID();
 }
 
+// KHR_materials_anisotropy's strength and rotation in a section of their own under the
+// transmission's, first shown open where the part's highlight is stretched; its map is kept with
+// the part (not drawn). A strength of 0 is none.
+void drawAnisotropy(Material& material, const Material& file, const Material& defaults, int part) {
+    ImGui::PushID(part);
+    ImGui::SetNextItemOpen(material.anisotropyStrength > 0.0f, ImGuiCond_Once);
+    const bool open = ImGui::CollapsingHeader("Anisotropy");
+    recordItem("Anisotropy", "Highlights stretched along one direction (KHR_materials_anisotropy), as on brushed metal");
+    if (open) {
+        const bool stretched = material.anisotropyStrength > 0.0f;
+        if (layerButton("Add anisotropy", "Remove anisotropy", stretched, "anisotropy")) {   // added: half stretched
+            material.anisotropyStrength = stretched ? 0.0f : 0.5f;
+            material.anisotropyRotation = 0.0f;
+        }
+        sliderWithReset("Anisotropy strength", "How far the highlight is stretched along the direction: 0 round, "
+                                               "1 drawn out fully. Ctrl+click to type",
+                        &material.anisotropyStrength, 0.0f, 1.0f, file.anisotropyStrength,
+                        defaults.anisotropyStrength);
+        sliderWithReset("Anisotropy rotation", "The stretch's direction, in radians counter-clockwise from the "
+                                               "mesh's tangent. Ctrl+click to type",
+                        &material.anisotropyRotation, -3.14159265f, 3.14159265f, file.anisotropyRotation,
+                        defaults.anisotropyRotation);
+    }
+    ImGui::PopID();
+}
+
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names) {
     std::string text;
@@ -452,6 +478,7 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     drawClearcoat(material, saved, defaults, selected);
     drawSheen(material, saved, defaults, selected);
     drawTransmission(material, saved, defaults, selected);
+    drawAnisotropy(material, saved, defaults, selected);
     ImGui::PopID();
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
