@@ -165,7 +165,9 @@ void rasterizeDraw(Raster& raster, const SceneDraw& item, int32_t draw, const gl
             const uint32_t i = mesh.indices[t + k];
             const glm::vec4 world = item.transform * glm::vec4(mesh.positions[i], 1.0f);
             ClipVertex vertex{viewProjection * world, glm::vec3(world), item.normalTransform * mesh.normals[i], {}};
-            if (item.maps) {   // as mesh.vert hands them on: the tangent moves with the surface
+            // As mesh.vert hands them on (with maps, or the tangent alone with anisotropy): the
+            // tangent moves with the surface.
+            if (item.maps || item.material.anisotropyStrength > 0.0f) {
                 vertex.maps.uv0 = mesh.uv0.empty() ? glm::vec2(0.0f) : mesh.uv0[i];
                 vertex.maps.uv1 = mesh.uv1.empty() ? glm::vec2(0.0f) : mesh.uv1[i];
                 const glm::vec4 tangent = mesh.tangents.empty() ? glm::vec4(0.0f) : mesh.tangents[i];
@@ -262,6 +264,7 @@ PixelSurfaces rasterizeSurfaces(const std::vector<SceneDraw>& draws, const Camer
             surfaces.samples.push_back({hit.position, hit.normal, shader::safeNormalize(camera.position - hit.position)});
             surfaces.drawOfSample.push_back(hit.draw);
             surfaces.geometryNormals.push_back(shader::safeNormalize(hit.normal));
+            surfaces.tangents.push_back(hit.maps.tangent);
         }
     }
     if (textures) {

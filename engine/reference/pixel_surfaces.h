@@ -37,6 +37,10 @@ struct PixelSurfaces {
     // Per sample, always: the unit normal before any normal map (reversed on a back face where
     // the material says so), the inspector's geometry normal.
     std::vector<glm::vec3> geometryNormals;
+    // Per sample, always: the world tangent as mesh.vert hands it on (w the bitangent's sign;
+    // 0 for an item drawn with neither maps nor anisotropy, or a mesh without tangents), which
+    // KHR_materials_anisotropy's direction turns from.
+    std::vector<glm::vec4> tangents;
 };
 
 // `draws` seen by `camera` at width x height, with the renderer's rules: triangles clipped at

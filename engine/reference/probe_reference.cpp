@@ -22,7 +22,7 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
                                          const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
                                          uint64_t pass, const std::vector<float>& occlusion,
-                                         const RayCaster* occluders) {
+                                         const RayCaster* occluders, const std::vector<glm::vec4>& tangents) {
     std::vector<shader::SurfaceMaterial> surfaces;
     for (const MaterialParameters& material : materials) {
         surfaces.push_back(surfaceMaterial(material));
@@ -45,11 +45,12 @@ std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& 
         options.indirectOcclusion = occlusion.empty() ? 1.0f : occlusion[i];
         options.occluders = occluders;
         const size_t m = size_t(materialOfSample[i]);
-        // KHR_materials_anisotropy's lobe turns with the surface: derived at the sample, along the
-        // fallback tangent (a probe sample carries none; the built-in meshes have none either).
+        // KHR_materials_anisotropy's lobe turns with the surface: derived at the sample, from its
+        // tangent where the rows have them, else along the fallback (a probe's sample has none).
+        const glm::vec4 tangent = tangents.empty() ? glm::vec4(0.0f) : tangents[i];
         const shader::SurfaceMaterial surface =
             materials[m].anisotropyStrength > 0.0f
-                ? surfaceMaterialAt(materials[m], shader::safeNormalize(samples[i].normal), glm::vec4(0.0f))
+                ? surfaceMaterialAt(materials[m], shader::safeNormalize(samples[i].normal), tangent)
                 : surfaces[m];
         const ReferenceEstimate e = referenceRadiance(materials[m].model, surface, reference, packed,
                                                       samples[i].position, samples[i].normal, samples[i].toViewer,

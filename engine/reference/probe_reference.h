@@ -27,11 +27,14 @@ std::vector<ReferenceRow> probeReference(const MaterialParameters& material, con
 // (the same seeds as above, so one material gives the same rows), and where `occlusion` is not
 // empty, its environment and hemisphere light scaled by occlusion[i] (ReferenceOptions), and
 // with `occluders`, the light each row's point cannot see left out (ReferenceOptions::occluders).
+// `tangents`, where not empty, is each row's world tangent (w the bitangent's sign; 0: none, the
+// fallback's), which KHR_materials_anisotropy's direction turns from, as shade.frag's does.
 std::vector<ReferenceRow> probeReference(const std::vector<MaterialParameters>& materials,
                                          const std::vector<int32_t>& materialOfSample,
                                          const std::vector<Light>& lights, const std::vector<ProbeSample>& samples,
                                          const std::shared_ptr<const Environment>& environment, int samplesPerRow,
                                          uint64_t pass = 0, const std::vector<float>& occlusion = {},
-                                         const RayCaster* occluders = nullptr);
+                                         const RayCaster* occluders = nullptr,
+                                         const std::vector<glm::vec4>& tangents = {});
 
 }  // namespace patina

@@ -133,9 +133,9 @@ ReferenceImage renderReference(const PreparedScene& prepared, const PixelSurface
         const int n = std::min(perPass, options.samplesPerPixel - image.samplesPerPixel);
         std::vector<ReferenceRow> rows =
             mapped ? probeReference(surfaces.sampleMaterials, ownMaterial, scene.lights, surfaces.samples, environment, n,
-                                    pass, surfaces.occlusion, blocking)
+                                    pass, surfaces.occlusion, blocking, surfaces.tangents)
                    : probeReference(surfaces.materials, surfaces.drawOfSample, scene.lights, surfaces.samples,
-                                    environment, n, pass, {}, blocking);
+                                    environment, n, pass, {}, blocking, surfaces.tangents);
         const std::vector<ReferenceRow> open =
             caught.samples.empty() || !blocking ? std::vector<ReferenceRow>()   // without shadows: the background
                                    : probeReference(caught.materials, caught.own, scene.lights, caught.samples,

@@ -442,7 +442,11 @@ TEST_F(Assets, AReplacementThatCannotBeUsedKeepsTheFilesMapWithANote) {
         scene.modelMaterials[1].mapsReplaced = {{"baseColorTexture", path(file).string()}};
         std::vector<std::string> warnings;
         const PreparedScene prepared = prepareScene(scene, cache, warnings);
-        ASSERT_EQ(warnings.size(), 1u) << key << " " << file;
+        // The replacement's note, and the other file's material's tuning said as not drawn (its
+        // replacement not tried).
+        ASSERT_EQ(warnings.size(), 2u) << key << " " << file;
+        EXPECT_NE(warnings[1].find("the tuning of material 1 \"not right\" is not drawn"), std::string::npos)
+            << warnings[1];
         EXPECT_NE(warnings[0].find("material 0 (\"left\"): the image for its " + std::string(key) + " is not used"),
                   std::string::npos)
             << warnings[0];

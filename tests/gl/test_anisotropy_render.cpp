@@ -6,10 +6,13 @@
 // within the bent normal's error under the studio environment (docs/SHADING.md S8).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
+#include "files/file_bytes.h"
 #include "gl/renderer.h"
+#include "io/json_reader.h"
 #include "reference/pixel_surfaces.h"
 #include "reference/reference_render.h"
 #include "scene/light_packing.h"
@@ -129,6 +132,46 @@ TEST(AnisotropyRender, UnderTheLightsTheRenderIsTheGroundTruth) {
     }
     // Edge pixels may be covered on one side only (fill rules); everything else agrees.
     EXPECT_GT(agreeing, compared * 97 / 100);
+}
+
+// A model's spheres turned a quarter about x, their tangents (the file's on "brushed",
+// MikkTSpace's on "satin") now round world z, not the fallback's round y: the truth turns the
+// lobe from the tangent the GPU reads (it used the fallback for every mesh), so the render is
+// it pixel for pixel under the analytic lights.
+TEST(AnisotropyRender, OnAModelTheTruthTurnsTheLobeFromTheMeshsTangents) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "patina-anisotropy-model";
+    std::filesystem::create_directories(dir);
+    const std::vector<uint8_t> bytes =
+        readFileBytes(std::filesystem::path(PATINA_SOURCE_DIR) / "tests/data/anisotropy/spheres.gltf");
+    Json file = parseJsonText(std::string(bytes.begin(), bytes.end()), "spheres.gltf");
+    const float h = std::sqrt(0.5f);
+    for (Json& node : file["nodes"]) {
+        node["rotation"] = {h, 0.0f, 0.0f, h};
+    }
+    const std::string text = file.dump();
+    writeFileAtomic(dir / "turned.gltf", std::vector<uint8_t>(text.begin(), text.end()));
+    Scene scene = defaultScene();
+    scene.meshFile = (dir / "turned.gltf").string();
+    scene.camera.position = {0.0f, 0.0f, 6.0f};
+    scene.camera.target = {0.0f, 0.0f, 0.0f};
+    for (Light& light : scene.lights) {
+        light.enabled = light.type != LightType::Environment;
+    }
+    const auto [render, surfaces, truth] = renderAndTruth(scene, 1);
+    int compared = 0, agreeing = 0;
+    for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
+        if (surfaces.sampleOfPixel[pixel] < 0) {
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+            const float r = truth.value.rgb[pixel * 3 + size_t(c)], g = render.rgb[pixel * 3 + size_t(c)];
+            ++compared;
+            agreeing += std::abs(r - g) < 2e-3f * std::max(g, 0.05f) + 1e-4f ? 1 : 0;
+        }
+    }
+    EXPECT_GT(compared, 300);
+    EXPECT_GT(agreeing, compared * 97 / 100) << agreeing << " of " << compared;
+    std::filesystem::remove_all(dir);
 }
 
 // The studio environment alone: the sphere's total light (green) in the render and the truth.
