@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -110,6 +111,23 @@ RenderAndTruth renderAndTruth(const Scene& scene, int samples) {
     return both;
 }
 
+// The channels of the pixels both see, and how many of them the render and the truth agree on
+// (within 2e-3 of the render's value, 1e-4 at least).
+std::pair<int, int> agreeingChannels(const RenderAndTruth& both) {
+    int compared = 0, agreeing = 0;
+    for (size_t pixel = 0; pixel < both.surfaces.sampleOfPixel.size(); ++pixel) {
+        if (both.surfaces.sampleOfPixel[pixel] < 0) {
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+            const float r = both.truth.value.rgb[pixel * 3 + size_t(c)], g = both.render.rgb[pixel * 3 + size_t(c)];
+            ++compared;
+            agreeing += std::abs(r - g) < 2e-3f * std::max(g, 0.05f) ? 1 : 0;
+        }
+    }
+    return {compared, agreeing};
+}
+
 // The default scene's analytic lights alone: the truth adds each exactly with the same BRDF, so
 // the render is it pixel for pixel where both see the sphere.
 TEST(AnisotropyRender, UnderTheLightsTheRenderIsTheGroundTruth) {
@@ -118,18 +136,8 @@ TEST(AnisotropyRender, UnderTheLightsTheRenderIsTheGroundTruth) {
     for (Light& light : scene.lights) {
         light.enabled = light.type != LightType::Environment;
     }
-    const auto [render, surfaces, truth] = renderAndTruth(scene, 1);
-    int compared = 0, agreeing = 0;
-    for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
-        if (surfaces.sampleOfPixel[pixel] < 0) {
-            continue;
-        }
-        for (int c = 0; c < 3; ++c) {
-            const float r = truth.value.rgb[pixel * 3 + size_t(c)], g = render.rgb[pixel * 3 + size_t(c)];
-            ++compared;
-            agreeing += std::abs(r - g) < 2e-3f * std::max(g, 0.05f) ? 1 : 0;
-        }
-    }
+    const RenderAndTruth both = renderAndTruth(scene, 1);
+    const auto [compared, agreeing] = agreeingChannels(both);
     // Edge pixels may be covered on one side only (fill rules); everything else agrees.
     EXPECT_GT(agreeing, compared * 97 / 100);
 }
@@ -157,18 +165,8 @@ TEST(AnisotropyRender, OnAModelTheTruthTurnsTheLobeFromTheMeshsTangents) {
     for (Light& light : scene.lights) {
         light.enabled = light.type != LightType::Environment;
     }
-    const auto [render, surfaces, truth] = renderAndTruth(scene, 1);
-    int compared = 0, agreeing = 0;
-    for (size_t pixel = 0; pixel < surfaces.sampleOfPixel.size(); ++pixel) {
-        if (surfaces.sampleOfPixel[pixel] < 0) {
-            continue;
-        }
-        for (int c = 0; c < 3; ++c) {
-            const float r = truth.value.rgb[pixel * 3 + size_t(c)], g = render.rgb[pixel * 3 + size_t(c)];
-            ++compared;
-            agreeing += std::abs(r - g) < 2e-3f * std::max(g, 0.05f) + 1e-4f ? 1 : 0;
-        }
-    }
+    const RenderAndTruth both = renderAndTruth(scene, 1);
+    const auto [compared, agreeing] = agreeingChannels(both);
     EXPECT_GT(compared, 300);
     EXPECT_GT(agreeing, compared * 97 / 100) << agreeing << " of " << compared;
     std::filesystem::remove_all(dir);

@@ -112,6 +112,22 @@ protected:
         }
     }
 
+    // On every path, with and without MSAA: the quad's right half shows the background (cut out),
+    // its left half does not.
+    void expectRightHalfCutOut(const Scene& scene, const std::shared_ptr<const Model>& model) {
+        for (RenderPath path : kPaths) {
+            for (int samples : {1, 4}) {
+                const HdrImage shown = render(scene, model, path, samples);
+                const glm::ivec2 kept = pixelOf(scene, {-0.5f, 0.2f, 0.0f}), cut = pixelOf(scene, {0.5f, 0.2f, 0.0f});
+                const std::string what = std::string(renderPathName(path)) + ", " + std::to_string(samples) + " samples";
+                EXPECT_LE(largestRelativeError(test::pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f)
+                    << what;
+                EXPECT_GT(largestRelativeError(test::pixel(shown, kept.x, kept.y), scene.display.background), 0.1f)
+                    << what;
+            }
+        }
+    }
+
     HeadlessContext& context_ = test::glContext();   // before the renderer: it needs the context
     Renderer renderer_;
 };
@@ -298,15 +314,7 @@ TEST_F(ModelMaps, MaskCutsOutThePixelsBelowTheCutoff) {
     // Left column opaque, right column alpha 0.4 (cut out); the factor's alpha 0.9 keeps the left.
     mapped.baseAlpha = 0.9f;
     const auto model = oneQuad(quad(), mapped, {image(2, 1, {255, 255, 255, 255, 255, 255, 255, 102})});
-    for (RenderPath path : kPaths) {
-        for (int samples : {1, 4}) {
-            const HdrImage shown = render(scene, model, path, samples);
-            const glm::ivec2 kept = pixelOf(scene, {-0.5f, 0.2f, 0.0f}), cut = pixelOf(scene, {0.5f, 0.2f, 0.0f});
-            const std::string what = std::string(renderPathName(path)) + ", " + std::to_string(samples) + " samples";
-            EXPECT_LE(largestRelativeError(test::pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f) << what;
-            EXPECT_GT(largestRelativeError(test::pixel(shown, kept.x, kept.y), scene.display.background), 0.1f) << what;
-        }
-    }
+    expectRightHalfCutOut(scene, model);
 }
 
 // 3.9.2: COLOR_0 multiplies the base colour factor (a primitive with colours is shaded with its
@@ -345,15 +353,7 @@ TEST_F(ModelMaps, AVertexColoursAlphaCutsOutUnderMask) {
     material.alphaMode = AlphaMode::Mask;
     material.alphaCutoff = 0.5f;
     const auto model = oneQuad(faded, material);
-    for (RenderPath path : kPaths) {
-        for (int samples : {1, 4}) {
-            const HdrImage shown = render(scene, model, path, samples);
-            const glm::ivec2 kept = pixelOf(scene, {-0.5f, 0.2f, 0.0f}), cut = pixelOf(scene, {0.5f, 0.2f, 0.0f});
-            const std::string what = std::string(renderPathName(path)) + ", " + std::to_string(samples) + " samples";
-            EXPECT_LE(largestRelativeError(test::pixel(shown, cut.x, cut.y), scene.display.background), 1e-3f) << what;
-            EXPECT_GT(largestRelativeError(test::pixel(shown, kept.x, kept.y), scene.display.background), 0.1f) << what;
-        }
-    }
+    expectRightHalfCutOut(scene, model);
 }
 
 // The ground truth interpolates the vertex colours as the GPU does (perspective-correct, over a
