@@ -807,6 +807,19 @@ TEST_F(EditorStateTest, AnExportCarriesNoLocalPath) {
     }
 }
 
+// The Material panel says when a part's vertex colours multiply its base colour (a part with no
+// maps read "the factors are its values" while the model showed its colours).
+TEST_F(EditorStateTest, APartWithVertexColoursIsSaidToHaveThem) {
+    Model file = test::twoBalls();   // both balls one primitive: the left one gets a coloured copy
+    file.primitives.push_back(file.primitives[0]);
+    file.primitives[1].colors.assign(file.primitives[1].positions.size(), glm::vec4(1.0f, 0.5f, 0.25f, 1.0f));
+    file.draws[0].primitive = 1;
+    exportGltfModel(dir_ / "painted.glb", file);
+    ASSERT_TRUE(openFile(state, dir_ / "painted.glb")) << state.error;
+    EXPECT_TRUE(hasVertexColours(state, state.model->draws.at(0).material));
+    EXPECT_FALSE(hasVertexColours(state, state.model->draws.at(1).material));
+}
+
 // Replace... on a map ticked off switches it on with its new image, one undo step for both (the
 // status said "Replaced" while the picture stayed without the map).
 TEST_F(EditorStateTest, AReplacedMapThatWasTickedOffIsDrawn) {

@@ -460,9 +460,11 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     drawPartList(document, interaction);
     const int selected = interaction.selectedModelMaterial;
     const std::string maps = mapNames(document, selected);
+    const char* colours = hasVertexColours(document, selected) ? " Its vertex colours multiply the base colour." : "";
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", maps.empty() ? "No texture maps: the factors are its values"
-                                           : ("Maps: " + maps + ". Each factor multiplies its map").c_str());
+    ImGui::TextDisabled("%s%s", maps.empty() ? "No texture maps: the factors are its values."
+                                             : ("Maps: " + maps + ". Each factor multiplies its map.").c_str(),
+                        colours);
     ImGui::PopTextWrapPos();
     drawMapSwitches(document, assets, prompts, services, selected);
     Material material = modelMaterial(document, document.scene, selected);

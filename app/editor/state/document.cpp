@@ -319,6 +319,14 @@ void setMapReplacement(const Document& document, Scene& scene, int index, const 
     }
 }
 
+bool hasVertexColours(const Document& document, int index) {
+    const Model& model = *document.model;
+    return std::any_of(model.draws.begin(), model.draws.end(), [&](const DrawItem& draw) {
+        return draw.material == index && draw.primitive >= 0 && size_t(draw.primitive) < model.primitives.size() &&
+               !model.primitives[size_t(draw.primitive)].colors.empty();
+    });
+}
+
 std::string mapNames(const Document& document, int index) {
     std::string names;
     for (const auto& map : mapsOf(document.model->materials.at(size_t(index)))) {

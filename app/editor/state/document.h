@@ -129,6 +129,9 @@ bool mapShown(const Scene& scene, int index, const std::string& key);
 // where the scene has none).
 void setMapShown(const Document& document, Scene& scene, int index, const std::string& key, bool shown);
 std::string mapNames(const Document& document, int index);
+// Whether a primitive drawn with material `index` has vertex colours (COLOR_0), which multiply
+// its base colour as a map does.
+bool hasVertexColours(const Document& document, int index);
 // The names of the nodes the shown model draws with its material `index`, each once, in the
 // file's order: what tells apart materials of one name.
 std::vector<std::string> partNodes(const Document& document, int index);
