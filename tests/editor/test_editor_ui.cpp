@@ -277,7 +277,10 @@ TEST_F(EditorUi, ALayerIsAddedAndRemovedWholeInOneStep) {
     EXPECT_EQ(state_.history.undoSteps(), 1u);
     EXPECT_GT(differingPixels(bare, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
     EXPECT_TRUE(itemsOfLastFrame().count("Remove coat"));
+    // The status line says what the button did, to which part.
+    EXPECT_NE(state_.status.find("Added the clear coat to \"" + part.name + "\""), std::string::npos) << state_.status;
     click(centreOf("Remove coat"));
+    EXPECT_NE(state_.status.find("Took the clear coat off \"" + part.name + "\""), std::string::npos) << state_.status;
     part = modelMaterial(state_, state_.scene, 0);
     EXPECT_EQ(part.clearcoat, 0.0f);
     EXPECT_EQ(part.clearcoatRoughness, 0.0f);
@@ -296,6 +299,17 @@ TEST_F(EditorUi, ALayerIsAddedAndRemovedWholeInOneStep) {
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenRoughness, 0.0f);
     press(kKeyZ, true);
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).sheenColor, glm::vec3(0.5f));
+    // A transmission too: on whole (a clear glass), off, one step each.
+    click(centreOf("Transmission"));
+    frames(1);
+    const size_t steps = state_.history.undoSteps();
+    click(centreOf("Add transmission"));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).transmission, 1.0f);
+    EXPECT_NE(state_.status.find("Added the transmission to"), std::string::npos) << state_.status;
+    frames(1);
+    click(centreOf("Remove transmission"));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).transmission, 0.0f);
+    EXPECT_EQ(state_.history.undoSteps(), steps + 2);
 }
 
 // KHR_materials_anisotropy in the editor: a part's Anisotropy section, closed on a part without

@@ -141,10 +141,13 @@ void drawFactors(Material& material, const Material& file, const Material& defau
 }
 
 // The button that puts a layer on the part whole or, where `present`, takes it off, one step to
-// undo: true when clicked.
-bool layerButton(const char* add, const char* remove, bool present, const char* what) {
+// undo: true when clicked, and then what it did in `said` for the status line.
+bool layerButton(const char* add, const char* remove, bool present, const char* what, std::string& said) {
     const char* label = present ? remove : add;
     const bool clicked = ImGui::Button(label);
+    if (clicked) {
+        said = present ? std::string("Took the ") + what + " off" : std::string("Added the ") + what + " to";
+    }
     const std::string tooltip = present ? std::string("Take the ") + what + " off the part (its factors to 0; Ctrl+Z "
                                                                          "puts it back)"
                                         : std::string("Put a ") + what + " on the part, to tune from here (Ctrl+Z "
@@ -156,14 +159,14 @@ bool layerButton(const char* add, const char* remove, bool present, const char* 
 // KHR_materials_clearcoat's two factors in a section of their own under the factors, first
 // shown open where the part has a coat (each part keeps its own open state); its maps are among
 // the part's maps above. A coat of 0 is none.
-void drawClearcoat(Material& material, const Material& file, const Material& defaults, int part) {
+void drawClearcoat(Material& material, const Material& file, const Material& defaults, int part, std::string& said) {
     ImGui::PushID(part);
     ImGui::SetNextItemOpen(material.clearcoat > 0.0f, ImGuiCond_Once);
     const bool open = ImGui::CollapsingHeader("Clearcoat");
     recordItem("Clearcoat", "A clear lacquer over the part (KHR_materials_clearcoat), as on a car's paint");
     if (open) {
         const bool coated = material.clearcoat > 0.0f;
-        if (layerButton("Add coat", "Remove coat", coated, "clear coat")) {   // added: a full, nearly smooth coat
+        if (layerButton("Add coat", "Remove coat", coated, "clear coat", said)) {   // added: a full, nearly smooth coat
             material.clearcoat = coated ? 0.0f : 1.0f;
             material.clearcoatRoughness = coated ? 0.0f : 0.03f;
         }
@@ -179,14 +182,14 @@ void drawClearcoat(Material& material, const Material& file, const Material& def
 // KHR_materials_sheen's colour and roughness in a section of their own under the coat's, first
 // shown open where the part has a sheen (each part keeps its own open state); its maps are
 // among the part's maps above. A colour of 0 is none.
-void drawSheen(Material& material, const Material& file, const Material& defaults, int part) {
+void drawSheen(Material& material, const Material& file, const Material& defaults, int part, std::string& said) {
     ImGui::PushID(part);
     ImGui::SetNextItemOpen(material.sheenColor != glm::vec3(0.0f), ImGuiCond_Once);
     const bool open = ImGui::CollapsingHeader("Sheen");
     recordItem("Sheen", "A fuzz of fibres over the part (KHR_materials_sheen), as on velvet or satin");
     if (open) {
         const bool sheened = material.sheenColor != glm::vec3(0.0f);
-        if (layerButton("Add sheen", "Remove sheen", sheened, "sheen")) {
+        if (layerButton("Add sheen", "Remove sheen", sheened, "sheen", said)) {
             material.sheenColor = glm::vec3(sheened ? 0.0f : 0.5f);
             material.sheenRoughness = sheened ? 0.0f : 0.5f;
         }
@@ -207,12 +210,16 @@ void drawSheen(Material& material, const Material& file, const Material& default
 // KHR_materials_transmission's factor in a section of its own under the sheen's, first shown
 // open where the part passes light; KHR_materials_volume's three beside it in a Volume section,
 // which acts only on a transmission. Their maps are in the part's map list with the others.
-void drawTransmission(Material& material, const Material& file, const Material& defaults, int part) {
+void drawTransmission(Material& material, const Material& file, const Material& defaults, int part, std::string& said) {
     ImGui::PushID(part);
     ImGui::SetNextItemOpen(material.transmission > 0.0f, ImGuiCond_Once);
     const bool open = ImGui::CollapsingHeader("Transmission");
     recordItem("Transmission", "Light through the part's thin wall (KHR_materials_transmission), as through glass");
     if (open) {
+        const bool passes = material.transmission > 0.0f;
+        if (layerButton("Add transmission", "Remove transmission", passes, "transmission", said)) {   // a clear glass
+            material.transmission = passes ? 0.0f : 1.0f;
+        }
         sliderWithReset("Transmission factor", "How much of the diffuse light passes through instead, tinted by the base "
                                         "colour: 0 none, 1 clear glass",
                         &material.transmission, 0.0f, 1.0f, file.transmission, defaults.transmission);
@@ -241,14 +248,14 @@ void drawTransmission(Material& material, const Material& file, const Material& 
 // KHR_materials_anisotropy's strength and rotation in a section of their own under the
 // transmission's, first shown open where the part's highlight is stretched; its map is kept with
 // the part (not drawn). A strength of 0 is none.
-void drawAnisotropy(Material& material, const Material& file, const Material& defaults, int part) {
+void drawAnisotropy(Material& material, const Material& file, const Material& defaults, int part, std::string& said) {
     ImGui::PushID(part);
     ImGui::SetNextItemOpen(material.anisotropyStrength > 0.0f, ImGuiCond_Once);
     const bool open = ImGui::CollapsingHeader("Anisotropy");
     recordItem("Anisotropy", "Highlights stretched along one direction (KHR_materials_anisotropy), as on brushed metal");
     if (open) {
         const bool stretched = material.anisotropyStrength > 0.0f;
-        if (layerButton("Add anisotropy", "Remove anisotropy", stretched, "anisotropy")) {   // added: half stretched
+        if (layerButton("Add anisotropy", "Remove anisotropy", stretched, "anisotropy", said)) {   // added: half stretched
             material.anisotropyStrength = stretched ? 0.0f : 0.5f;
             material.anisotropyRotation = 0.0f;
         }
@@ -477,13 +484,17 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     // The layer sections' open states are the model's own: another file's part of the same
     // index must not open (or close) them as that part's were left.
     ImGui::PushID(document.scene.meshFile.c_str());
-    drawClearcoat(material, saved, defaults, selected);
-    drawSheen(material, saved, defaults, selected);
-    drawTransmission(material, saved, defaults, selected);
-    drawAnisotropy(material, saved, defaults, selected);
+    std::string said;   // a layer put on or taken off whole, for the status line
+    drawClearcoat(material, saved, defaults, selected, said);
+    drawSheen(material, saved, defaults, selected, said);
+    drawTransmission(material, saved, defaults, selected, said);
+    drawAnisotropy(material, saved, defaults, selected, said);
     ImGui::PopID();
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
+    }
+    if (!said.empty()) {
+        prompts.status = said + " \"" + material.name + "\" (Ctrl+Z undoes it)";
     }
     if (document.model) {
         drawModelExtensions(*document.model);
