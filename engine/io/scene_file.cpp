@@ -550,9 +550,12 @@ Json materialToJson(const Material& material) {
         json["attenuationColor"] = toJson(material.attenuationColor);
         json["attenuationDistance"] = toJson(material.attenuationDistance);
     }
-    // KHR_materials_anisotropy's only where the lobe is stretched.
+    // KHR_materials_anisotropy's, each only where it is not its default: a rotation kept without
+    // a strength (it draws nothing) still comes back as it was read.
     if (material.anisotropyStrength != 0.0f) {
         json["anisotropyStrength"] = toJson(material.anisotropyStrength);
+    }
+    if (material.anisotropyRotation != 0.0f) {
         json["anisotropyRotation"] = toJson(material.anisotropyRotation);
     }
     if (!material.notes.empty()) {
