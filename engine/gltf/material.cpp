@@ -85,19 +85,41 @@ void anisotropyFromGltf(const tinygltf::Material& material, const std::string& w
     }
     result.anisotropyRotation = float(rotation);
 }
+
+// KHR_materials_specular's and KHR_materials_ior's factors as the file has them (glTF's defaults
+// for what it leaves out), checked; the maps are specularNotShown's.
+struct GltfSpecular {
+    double factor = 1.0;
+    glm::dvec3 color{1.0};
+    double ior = kExportIor;
+    // glTF's dielectric F0 before specularFactor, at the colour's largest channel: Patina's F0
+    // is grey, and the largest keeps the highlight.
+    double f0() const { return std::min(f0FromIor(ior) * std::max({color.r, color.g, color.b}), 1.0); }
+};
+
+GltfSpecular specularFromGltf(const tinygltf::Material& material, const std::string& what, const std::string& source) {
+    GltfSpecular read;
+    const std::string specularAt = what + "/extensions/" + kSpecular;
+    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
+    read.factor = numberField(specular, "specularFactor", 1.0, specularAt, source);
+    const std::vector<double> color = numbersField(specular, "specularColorFactor", 3, specularAt, source);
+    if (!color.empty()) {
+        read.color = {color[0], color[1], color[2]};
+    }
+    const std::string iorAt = what + "/extensions/" + kIor;
+    read.ior = numberField(extensionOf(material.extensions, kIor), "ior", kExportIor, iorAt, source);
+    // 0 is allowed beside 1 and above: KHR_materials_ior's schema keeps it for converting
+    // specular-glossiness materials (F0 = 1, the specular colour then F0 itself).
+    if (read.ior < 1.0 && read.ior != 0.0) {
+        throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(read.ior) + " is below 1 (and not 0)");
+    }
+    return read;
+}
 }  // namespace
 
-std::string specularNotShown(const tinygltf::Material& material) {
-    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
-    const tinygltf::Value* iorExtension = extensionOf(material.extensions, kIor);
-    auto number = [](const tinygltf::Value* object, const char* key, double absent) {
-        return object && object->Has(key) && object->Get(key).IsNumber() ? object->Get(key).GetNumberAsDouble() : absent;
-    };
-    glm::dvec3 color(1.0);
-    for (int i = 0; i < 3 && specular && specular->Has("specularColorFactor"); ++i) {
-        const tinygltf::Value& channel = specular->Get("specularColorFactor").Get(i);
-        color[i] = channel.IsNumber() ? channel.GetNumberAsDouble() : 1.0;
-    }
+std::string specularNotShown(const tinygltf::Material& material, const std::string& what, const std::string& source) {
+    const GltfSpecular read = specularFromGltf(material, what, source);
+    const glm::dvec3& color = read.color;
     std::vector<std::string> lost;
     char text[160];
     if (color.r != color.g || color.g != color.b) {
@@ -105,18 +127,17 @@ std::string specularNotShown(const tinygltf::Material& material) {
                       color.r, color.g, color.b);
         lost.emplace_back(text);
     }
-    const double ior = number(iorExtension, "ior", kExportIor);
-    const double f0 = std::min(f0FromIor(ior) * std::max({color.r, color.g, color.b}), 1.0);
-    if (f0 > double(shader::F0_PER_SPECULAR) * (1.0 + 1e-6)) {
+    if (read.f0() > double(shader::F0_PER_SPECULAR) * (1.0 + 1e-6)) {
         std::snprintf(text, sizeof text, "its F0 of %.3g (ior %.3g) is drawn as 0.08, Patina's largest for a dielectric",
-                      f0, ior);
+                      read.f0(), read.ior);
         lost.emplace_back(text);
     }
-    if (const double factor = number(specular, "specularFactor", 1.0); factor < 1.0) {
-        std::snprintf(text, sizeof text, "its specularFactor %.3g lowers F90 to %.3g in glTF, Patina's stays 1", factor,
-                      factor);
+    if (read.factor < 1.0) {
+        std::snprintf(text, sizeof text, "its specularFactor %.3g lowers F90 to %.3g in glTF, Patina's stays 1",
+                      read.factor, read.factor);
         lost.emplace_back(text);
     }
+    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
     for (const char* map : {"specularTexture", "specularColorTexture"}) {
         if (specular && specular->Has(map)) {
             lost.push_back(std::string("its ") + map + " is not read (the factors alone)");
@@ -143,21 +164,8 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     result.metallic = unit(pbr.metallicFactor);
     result.roughness = unit(pbr.roughnessFactor);
 
-    const std::string specularAt = what + "/extensions/" + kSpecular;
-    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
-    const double specularFactor = numberField(specular, "specularFactor", 1.0, specularAt, source);
-    // Patina's F0 is grey: the largest channel keeps the highlight.
-    const std::vector<double> color = numbersField(specular, "specularColorFactor", 3, specularAt, source);
-    const double largestColor = color.empty() ? 1.0 : *std::max_element(color.begin(), color.end());
-    const std::string iorAt = what + "/extensions/" + kIor;
-    const double ior = numberField(extensionOf(material.extensions, kIor), "ior", kExportIor, iorAt, source);
-    // 0 is allowed beside 1 and above: KHR_materials_ior's schema keeps it for converting
-    // specular-glossiness materials (F0 = 1, the specular colour then F0 itself).
-    if (ior < 1.0 && ior != 0.0) {
-        throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(ior) + " is below 1 (and not 0)");
-    }
-    const double f0 = std::min(f0FromIor(ior) * largestColor, 1.0) * specularFactor;
-    result.specular = unit(f0 / double(shader::F0_PER_SPECULAR));
+    const GltfSpecular specular = specularFromGltf(material, what, source);
+    result.specular = unit(specular.f0() * specular.factor / double(shader::F0_PER_SPECULAR));
     // KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor, both 0 by default
     // (no coat). Its maps are read beside the core maps (model_materials.cpp).
     const std::string clearcoatAt = what + "/extensions/" + kClearcoat;

@@ -26,9 +26,9 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
 // What of KHR_materials_specular and KHR_materials_ior the material above cannot show, said for
 // a note ("" when nothing is lost): a specularColorFactor of several colours (drawn grey, at its
 // largest channel), an F0 above 0.08 (an ior above about 1.79: drawn as 0.08), a specularFactor
-// below 1 (glTF lowers F90 with it; Patina's stays 1), and the two maps (not read). Called
-// after materialFromGltf, which has checked the values.
-std::string specularNotShown(const tinygltf::Material& material);
+// below 1 (glTF lowers F90 with it; Patina's stays 1), and the two maps (not read). The values
+// are read and checked as materialFromGltf reads them (`what`, `source` as there).
+std::string specularNotShown(const tinygltf::Material& material, const std::string& what, const std::string& source);
 
 // pbrMetallicRoughness plus KHR_materials_specular (specularFactor 1, so that F90 stays 1, and
 // specularColorFactor 0.08 * specular / f0FromIor(1.5) = 2 * specular) and KHR_materials_ior 1.5,

@@ -258,7 +258,7 @@ ModelMaterial MaterialReader::read(int index) {
     const Material factors = materialFromGltf(material, where, source_, "material " + std::to_string(index));
     result.name = factors.name;
     result.factors = factors;
-    if (const std::string lost = specularNotShown(material); !lost.empty()) {
+    if (const std::string lost = specularNotShown(material, where, source_); !lost.empty()) {
         notes_.push_back("material \"" + result.name + "\" (" + where + "): KHR_materials_specular and _ior are drawn as "
                          "Patina's grey dielectric F0 (0.08 at most): " + lost);
     }
