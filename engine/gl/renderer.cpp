@@ -350,6 +350,12 @@ private:
         const GlProgram* program;
     };
     ProgramKey programKeyOf(const SceneDraw& draw) const;
+    // What a program for `key` is compiled with in this frame: its layers, `transmission` (the
+    // scene behind a transmission is drawn without it), the frame's maps and vertex colours.
+    ShadingPrograms::Surface surfaceOfKey(const ProgramKey& key, bool transmission) const {
+        return ShadingPrograms::surfaceOf(maps, key.clearcoat, key.sheen, transmission, key.ambientOcclusion,
+                                          key.anisotropy, vertexColors);
+    }
     ItemProgram programOf(const DrawPlan& item) const;
     // Makes `program` current with its model's tables bound (another model's may be).
     void useProgram(const ItemProgram& program) const;
@@ -606,9 +612,7 @@ void Renderer::Frame::chooseShadingPrograms(const ShadingPrograms::SinglePass& s
             continue;
         }
         const BrdfModelId model = itemKey.model;
-        const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-            maps, itemKey.clearcoat, itemKey.sheen, itemKey.transmission, itemKey.ambientOcclusion, itemKey.anisotropy,
-                vertexColors);
+        const ShadingPrograms::Surface surface = surfaceOfKey(itemKey, itemKey.transmission);
         ShaderSpecialisation key = specialised;
         key.mapSet = itemKey.mapSet;
         program = settings.path == RenderPath::Single ? &s.shading.useSingle(model, singlePass, output, surface)
@@ -632,9 +636,7 @@ void Renderer::Frame::chooseSceneBehindPrograms(const ShadingPrograms::SinglePas
     for (const SceneDraw& item : draws) {
         const ProgramKey itemKey = programKeyOf(item);
         if (!item.blend && !itemKey.transmission && !behindShading.count(itemKey)) {
-            const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-                maps, itemKey.clearcoat, itemKey.sheen, false, itemKey.ambientOcclusion, itemKey.anisotropy,
-                    vertexColors);
+            const ShadingPrograms::Surface surface = surfaceOfKey(itemKey, false);
             behindShading[itemKey] =
                 &s.shading.useSingle(itemKey.model, singlePass, ShadingPrograms::Output::Linear, surface);
         }
