@@ -282,7 +282,9 @@ void measureBrdfModels(BenchRenderer& renderer, const RenderBenchOptions& option
 // the brdf-model rows: the gltf sphere bare, with KHR_materials_clearcoat's coat (factor 1,
 // roughness 0.1, a car paint's), with KHR_materials_sheen's sheen (a velvet's colour 0.8, 0.2,
 // 0.4 at roughness 0.5), with KHR_materials_transmission's factor 1 (a clear glass) and with
-// KHR_materials_anisotropy's strength 0.8 (a brushed finish), rounds interleaved, under 8 lights and in the default scene with its
+// KHR_materials_anisotropy's strength 0.8 (a brushed finish), with KHR_materials_specular's
+// tint (2, 1, 0.5) and weight 0.8 (a gem-bright tinted plastic) and with
+// KHR_materials_iridescence's film (strength 1, ior 1.3, 400 nm), rounds interleaved, under 8 lights and in the default scene with its
 // environment. The bare material's program has no instruction of either layer (shade.frag's
 // PATINA_CLEARCOAT and PATINA_SHEEN are keys of its program; compare_outputs draws it to the
 // byte); its frame here, interleaved with the layered ones, against the brdf-model row's of the
@@ -293,7 +295,7 @@ void measureLayers(BenchRenderer& renderer, const RenderBenchOptions& options, c
     specialised.path = RenderPath::Specialised;
     const std::shared_ptr<const Environment> studio = preparedStudio();
     for (const bool environment : {false, true}) {
-        const char* const kLayers[] = {"", "clearcoat", "sheen", "transmission", "anisotropy"};
+        const char* const kLayers[] = {"", "clearcoat", "sheen", "transmission", "anisotropy", "specular", "iridescence"};
         std::vector<Scene> scenes;   // PreparedScene holds its scene by reference: all made first
         for (const char* layer : kLayers) {
             scenes.push_back(withBenchLayer(brdfBenchScene(environment), layer));
@@ -577,6 +579,11 @@ Scene withBenchLayer(Scene scene, std::string_view layer) {
     } else if (layer == "anisotropy") {
         scene.material.anisotropyStrength = 0.8f;
         scene.material.anisotropyRotation = 0.5f;
+    } else if (layer == "specular") {
+        scene.material.specularTint = {2.0f, 1.0f, 0.5f};
+        scene.material.specularWeight = 0.8f;
+    } else if (layer == "iridescence") {
+        scene.material.iridescence = 1.0f;
     }
     return scene;
 }

@@ -111,7 +111,8 @@ Scene renderBenchScene(int lights, AddedLights added = AddedLights::Points);
 // `scene` with the `gltf` model and the layers rows' `layer`: "clearcoat", a car paint's coat
 // (factor 1, roughness 0.1), "sheen", a velvet's sheen (colour 0.8, 0.2, 0.4, roughness 0.5),
 // "transmission", a clear glass's (factor 1), "anisotropy", a brushed finish (strength 0.8,
-// rotation 0.5), or "" none.
+// rotation 0.5), "specular", a tinted F0 (tint 2, 1, 0.5, weight 0.8), "iridescence", a thin film
+// (strength 1, ior 1.3, 400 nm), or "" none.
 Scene withBenchLayer(Scene scene, std::string_view layer);
 
 RenderBenchResult runRenderBench(const RenderBenchOptions& options);

@@ -10,6 +10,7 @@
 #include "gl/environment_texture.h"
 #include "gl/program.h"
 #include "gl/shading_inputs.h"
+#include "gl/shader_specialisation.h"
 #include "gl/shading_programs.h"
 
 namespace patina {
@@ -61,8 +62,12 @@ std::vector<glm::vec3> GpuProbe::evaluate(const Material& material, const std::v
         environmentLight ? environmentShown(environment, environmentLight->source) : nullptr;
     s.lights.upload(packEnabledLights(lights));
     s.lights.bind();
-    const GlProgram& program =
-        s.programs.use(material.model, ShadingPrograms::Use::Probe, ShadingPrograms::Output::Linear, environmentLight);
+    // The probe draws the base alone, with its specular tint and weight (PATINA_SPECULAR) and its
+    // thin film (PATINA_IRIDESCENCE).
+    const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
+        false, false, false, false, false, false, false, hasSpecularTint(material), hasIridescence(material));
+    const GlProgram& program = s.programs.use(material.model, ShadingPrograms::Use::Probe,
+                                              ShadingPrograms::Output::Linear, environmentLight, surface);
     setMaterialUniforms(program, material);
     if (environmentLight) {
         s.environment.bind(shown, ShadingPrograms::kEnvironmentMapUnit, ShadingPrograms::kEnvironmentIrradianceUnit);

@@ -333,7 +333,8 @@ private:
     void drawSinglePass(Items opaque, Items blended, bool catcher = true) const;
     // The shading program of `item`: the one for its BRDF model, whether it has a clear coat
     // (PATINA_CLEARCOAT: only a coated item pays for the coat), a sheen (PATINA_SHEEN) and a
-    // transmission (PATINA_TRANSMISSION), an anisotropy (PATINA_ANISOTROPY), and, in the specialised path
+    // transmission (PATINA_TRANSMISSION), an anisotropy (PATINA_ANISOTROPY), a specular tint or
+    // weight (PATINA_SPECULAR), a thin film (PATINA_IRIDESCENCE), and, in the specialised path
     // with maps, its map set (programKeyOf).
     struct ProgramKey {
         BrdfModelId model;
@@ -343,6 +344,8 @@ private:
         bool transmission;
         bool ambientOcclusion;
         bool anisotropy;
+        bool specular;
+        bool iridescence;
         auto operator<=>(const ProgramKey&) const = default;
     };
     struct ItemProgram {
@@ -354,7 +357,7 @@ private:
     // scene behind a transmission is drawn without it), the frame's maps and vertex colours.
     ShadingPrograms::Surface surfaceOfKey(const ProgramKey& key, bool transmission) const {
         return ShadingPrograms::surfaceOf(maps, key.clearcoat, key.sheen, transmission, key.ambientOcclusion,
-                                          key.anisotropy, vertexColors);
+                                          key.anisotropy, vertexColors, key.specular, key.iridescence);
     }
     ItemProgram programOf(const DrawPlan& item) const;
     // Makes `program` current with its model's tables bound (another model's may be).
@@ -945,7 +948,9 @@ Renderer::Frame::ProgramKey Renderer::Frame::programKeyOf(const SceneDraw& draw)
     const bool byMapSet = settings.path == RenderPath::Specialised && maps;
     return {draw.material.model, byMapSet ? (draw.maps ? mapSetOf(*draw.maps) : 0) : ShaderSpecialisation{}.mapSet,
             hasClearcoat(draw.material), hasSheen(draw.material), hasTransmission(draw.material),
-            draw.occlusion != nullptr, hasAnisotropy(draw.material)};
+            draw.occlusion != nullptr, hasAnisotropy(draw.material),
+            hasSpecularTint(draw.material) || (draw.maps && hasSpecularMaps(*draw.maps)),
+            hasIridescence(draw.material)};
 }
 
 Renderer::Frame::ItemProgram Renderer::Frame::programOf(const DrawPlan& item) const {

@@ -58,6 +58,21 @@ inline bool hasTransmission(const MaterialParameters& material) { return materia
 // the items whose programs compile the anisotropic terms in (PATINA_ANISOTROPY).
 inline bool hasAnisotropy(const MaterialParameters& material) { return material.anisotropyStrength > 0.0f; }
 
+// Whether `material`'s dielectric F0 is tinted or its Fresnel weighted (KHR_materials_specular's
+// colour or factor, or an ior whose F0 passes 0.08): the items whose programs compile
+// withSpecular in (PATINA_SPECULAR).
+inline bool hasSpecularTint(const MaterialParameters& material) {
+    return material.specularTint != glm::vec3(1.0f) || material.specularWeight != 1.0f;
+}
+
+// Whether `material` has a thin film to draw (KHR_materials_iridescence's strength above 0, and a
+// thickness above 0 somewhere in its range): the items whose programs compile it in
+// (PATINA_IRIDESCENCE).
+inline bool hasIridescence(const MaterialParameters& material) {
+    return material.iridescence > 0.0f &&
+           (material.iridescenceThicknessMaximum > 0.0f || material.iridescenceThicknessMinimum > 0.0f);
+}
+
 // `lights` as packEnabledLights gives them (the uniform block's order); `noDiffuse` when every
 // material drawn has none (hasNoDiffuse). `flatSlots`: how many lights the vertex stage can
 // hand on as flat inputs (flatLightSlots, engine/gl/renderer.h).

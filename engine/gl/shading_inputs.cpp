@@ -29,6 +29,7 @@ extern const char* const energy_texel_glsl;
 extern const char* const energy_table_glsl;
 extern const char* const brdf_terms_glsl;
 extern const char* const brdf_model_glsl;
+extern const char* const iridescence_glsl;
 extern const char* const display_glsl;
 extern const char* const texture_glsl;
 extern const char* const surface_maps_glsl;
@@ -45,7 +46,8 @@ constexpr size_t kLightBlockSize = kLightArraySize + 2 * 16;
 
 std::vector<const char*> shadingFragmentParts(bool channels) {
     std::vector<const char*> parts{
-        shader_sources::brdf_glsl,         shader_sources::environment_glsl,  shader_sources::ibl_glsl,
+        shader_sources::brdf_glsl,         shader_sources::iridescence_glsl,  shader_sources::environment_glsl,
+        shader_sources::ibl_glsl,
         shader_sources::lights_glsl,       shader_sources::light_block_glsl,  shader_sources::clearcoat_glsl,
         shader_sources::sheen_texel_glsl,  shader_sources::sheen_glsl,       shader_sources::transmission_glsl,
         shader_sources::energy_texel_glsl,
@@ -114,7 +116,10 @@ MaterialUniforms::MaterialUniforms(const GlProgram& program)
       attenuationColor_(program.uniform("uAttenuationColor")),
       attenuationDistance_(program.uniform("uAttenuationDistance")),
       anisotropyStrength_(program.uniform("uAnisotropyStrength")),
-      anisotropyDirection_(program.uniform("uAnisotropyDirection")) {}
+      anisotropyDirection_(program.uniform("uAnisotropyDirection")),
+      specularTint_(program.uniform("uSpecularTint")), specularWeight_(program.uniform("uSpecularWeight")),
+      iridescence_(program.uniform("uIridescence")), iridescenceIor_(program.uniform("uIridescenceIor")),
+      iridescenceThickness_(program.uniform("uIridescenceThickness")) {}
 
 void MaterialUniforms::set(const MaterialParameters& material) const {
     glUniform3f(baseColor_, material.baseColor.x, material.baseColor.y, material.baseColor.z);
@@ -139,6 +144,16 @@ void MaterialUniforms::set(const MaterialParameters& material) const {
     if (anisotropyStrength_ >= 0) {   // only an anisotropic program has them (PATINA_ANISOTROPY)
         glUniform1f(anisotropyStrength_, material.anisotropyStrength);
         glUniform2f(anisotropyDirection_, std::cos(material.anisotropyRotation), std::sin(material.anisotropyRotation));
+    }
+    if (specularTint_ >= 0) {   // only a tinted program has them (PATINA_SPECULAR)
+        const glm::vec3& tint = material.specularTint;
+        glUniform3f(specularTint_, tint.x, tint.y, tint.z);
+        glUniform1f(specularWeight_, material.specularWeight);
+    }
+    if (iridescence_ >= 0) {   // only an iridescent program has them (PATINA_IRIDESCENCE)
+        glUniform1f(iridescence_, material.iridescence);
+        glUniform1f(iridescenceIor_, material.iridescenceIor);
+        glUniform2f(iridescenceThickness_, material.iridescenceThicknessMinimum, material.iridescenceThicknessMaximum);
     }
 }
 

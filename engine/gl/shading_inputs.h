@@ -48,7 +48,7 @@ public:
 private:
     GLint baseColor_, roughness_, specular_, metallic_, clearcoat_, clearcoatRoughness_, sheenColor_,
         sheenRoughness_, transmission_, thickness_, attenuationColor_, attenuationDistance_, anisotropyStrength_,
-        anisotropyDirection_;
+        anisotropyDirection_, specularTint_, specularWeight_, iridescence_, iridescenceIor_, iridescenceThickness_;
 };
 // The same, for one draw (program must be in use).
 void setMaterialUniforms(const GlProgram& program, const MaterialParameters& material);

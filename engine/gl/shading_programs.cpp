@@ -73,6 +73,12 @@ std::unique_ptr<GlProgram> ShadingPrograms::build(BrdfModelId model, Output outp
     if (has(surface, Surface::VertexColors)) {
         defines.push_back("PATINA_VERTEX_COLOR");
     }
+    if (has(surface, Surface::Specular)) {
+        defines.push_back("PATINA_SPECULAR");
+    }
+    if (has(surface, Surface::Iridescence)) {
+        defines.push_back("PATINA_IRIDESCENCE");
+    }
     if (std::find(defines.begin(), defines.end(), "PATINA_ENVIRONMENT") != defines.end()) {
         if (environmentShading_.method == EnvironmentMethod::Dominant) {
             defines.push_back("PATINA_ENVIRONMENT_DOMINANT");

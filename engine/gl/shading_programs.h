@@ -56,18 +56,23 @@ public:
     // attribute 5; only for an item drawn with one, SceneDraw::occlusion), with
     // KHR_materials_anisotropy's stretched lobe (PATINA_ANISOTROPY: mesh.vert hands on the
     // tangents; hasAnisotropy), and with Maps, the vertex colours (PATINA_VERTEX_COLOR: mesh.vert
-    // reads attribute 6; in a frame where some item's mesh has them). Bits: Maps, Clearcoat,
-    // Sheen, Transmission, AmbientOcclusion, Anisotropy and VertexColors combine (surfaceOf).
+    // reads attribute 6; in a frame where some item's mesh has them), and with
+    // KHR_materials_specular's tint and weight (PATINA_SPECULAR; hasSpecularTint), and with
+    // KHR_materials_iridescence's thin film (PATINA_IRIDESCENCE; hasIridescence). Bits: Maps,
+    // Clearcoat, Sheen, Transmission, AmbientOcclusion, Anisotropy, VertexColors, Specular and
+    // Iridescence combine (surfaceOf).
     enum class Surface {
         Factors = 0, Maps = 1, Clearcoat = 2, Sheen = 4, Transmission = 8, AmbientOcclusion = 16, Anisotropy = 32,
-        VertexColors = 64
+        VertexColors = 64, Specular = 128, Iridescence = 256
     };
     static Surface surfaceOf(bool maps, bool clearcoat, bool sheen, bool transmission = false,
-                             bool ambientOcclusion = false, bool anisotropy = false, bool vertexColors = false) {
+                             bool ambientOcclusion = false, bool anisotropy = false, bool vertexColors = false,
+                             bool specular = false, bool iridescence = false) {
         return Surface((maps ? int(Surface::Maps) : 0) | (clearcoat ? int(Surface::Clearcoat) : 0) |
                        (sheen ? int(Surface::Sheen) : 0) | (transmission ? int(Surface::Transmission) : 0) |
                        (ambientOcclusion ? int(Surface::AmbientOcclusion) : 0) |
-                       (anisotropy ? int(Surface::Anisotropy) : 0) | (vertexColors ? int(Surface::VertexColors) : 0));
+                       (anisotropy ? int(Surface::Anisotropy) : 0) | (vertexColors ? int(Surface::VertexColors) : 0) |
+                       (specular ? int(Surface::Specular) : 0) | (iridescence ? int(Surface::Iridescence) : 0));
     }
     static bool has(Surface surface, Surface part) { return (int(surface) & int(part)) != 0; }
 
@@ -89,13 +94,13 @@ public:
     static constexpr int kEnvironmentSourceUnit = 4;       // the stochastic mode's source chain
     static constexpr int kEnvironmentIrradianceUnit = 5;   // the irradiance map
     static constexpr int kFirstMapUnit = 6;                // Surface::Maps: the maps' units (SurfaceMap order)
-    // The sheen's albedo table (Surface::Sheen), after the maps' twelve units: 18 and up are
+    // The sheen's albedo table (Surface::Sheen), after the maps' sixteen units: 16 and up are
     // beyond GL 3.3's least GL_MAX_TEXTURE_IMAGE_UNITS (16) but within every GL 4 desktop
     // driver's (32: Mesa, NVIDIA, AMD, Intel), and a program binds only the units it reads.
-    static constexpr int kSheenTableUnit = 18;
-    static constexpr int kShadowMapUnit = 19;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
-    static constexpr int kSceneBehindUnit = 20;   // PATINA_TRANSMISSION: gl/scene_behind.h's image
-    static constexpr int kShadowDepthUnit = 21;   // PATINA_SHADOWS: the same maps' raw depths (PCSS)
+    static constexpr int kSheenTableUnit = 22;
+    static constexpr int kShadowMapUnit = 23;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
+    static constexpr int kSceneBehindUnit = 24;   // PATINA_TRANSMISSION: gl/scene_behind.h's image
+    static constexpr int kShadowDepthUnit = 25;   // PATINA_SHADOWS: the same maps' raw depths (PCSS)
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);

@@ -8,7 +8,8 @@ namespace {
 constexpr const char* kSamplerNames[kSurfaceMapCount] = {
     "uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",      "uOcclusionMap",
     "uEmissiveMap",  "uClearcoatMap",         "uClearcoatRoughnessMap", "uClearcoatNormalMap",
-    "uSheenColorMap", "uSheenRoughnessMap",   "uTransmissionMap",       "uThicknessMap"};
+    "uSheenColorMap", "uSheenRoughnessMap",   "uTransmissionMap",       "uThicknessMap",
+    "uSpecularColorMap", "uSpecularMap", "uIridescenceMap", "uIridescenceThicknessMap"};
 
 }  // namespace
 

@@ -20,8 +20,9 @@ struct KnownExtension {
 // it does not open (refuseUndrawnRequired).
 constexpr KnownExtension kKnown[] = {
     {"KHR_materials_specular", ExtensionSupport::Drawn,
-     "the dielectric's F0 and F90; a coloured F0 as its largest channel (Patina's F0 is grey)"},
+     "the dielectric's F0 colour and Fresnel weight (F90), and their maps"},
     {"KHR_materials_ior", ExtensionSupport::Drawn, "the dielectric's F0 from the index of refraction"},
+    {"KHR_materials_iridescence", ExtensionSupport::Drawn, "a thin film's interference colours, and its maps"},
     {"KHR_materials_emissive_strength", ExtensionSupport::Drawn, "emission brighter than 1"},
     {"KHR_texture_transform", ExtensionSupport::Drawn, "the maps' offset, rotation, scale and UV set"},
     {"KHR_xmp_json_ld", ExtensionSupport::Metadata, "metadata (licence, authors); nothing to draw"},
@@ -37,7 +38,6 @@ constexpr KnownExtension kKnown[] = {
      "light through the surface is left out; the material shows opaque"},
     {"KHR_materials_volume", ExtensionSupport::Drawn,
      "Beer-Lambert attenuation over the thickness and its map, thin-walled (no refraction)"},
-    {"KHR_materials_iridescence", ExtensionSupport::NotDrawn, "the thin-film colours are left out"},
     {"KHR_materials_anisotropy", ExtensionSupport::Drawn,
      "the strength and rotation stretch the highlights along the tangents; the anisotropy map is kept, not drawn"},
     {"KHR_materials_dispersion", ExtensionSupport::NotDrawn, "dispersion is left out"},

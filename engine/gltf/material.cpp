@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -22,6 +23,7 @@ constexpr const char* kSheen = "KHR_materials_sheen";
 constexpr const char* kTransmission = "KHR_materials_transmission";
 constexpr const char* kVolume = "KHR_materials_volume";
 constexpr const char* kAnisotropy = "KHR_materials_anisotropy";
+constexpr const char* kIridescence = "KHR_materials_iridescence";
 
 float unit(double value) { return float(std::clamp(value, 0.0, 1.0)); }
 
@@ -36,6 +38,7 @@ const char* const kSheenExtension = kSheen;
 const char* const kTransmissionExtension = kTransmission;
 const char* const kVolumeExtension = kVolume;
 const char* const kAnisotropyExtension = kAnisotropy;
+const char* const kIridescenceExtension = kIridescence;
 
 double f0FromIor(double ior) {
     const double r = (ior - 1.0) / (ior + 1.0);
@@ -86,15 +89,39 @@ void anisotropyFromGltf(const tinygltf::Material& material, const std::string& w
     result.anisotropyRotation = float(rotation);
 }
 
+// KHR_materials_iridescence's iridescenceFactor (0 by default: none; clamped to [0, 1]),
+// iridescenceIor (1.3; at least 1, the schema's) and the thickness range in nm (100 to 400;
+// neither below 0, the schema's; the minimum may exceed the maximum). Its maps are
+// model_materials.cpp's.
+void iridescenceFromGltf(const tinygltf::Material& material, const std::string& what, const std::string& source,
+                         Material& result) {
+    const std::string at = what + "/extensions/" + kIridescence;
+    const tinygltf::Value* film = extensionOf(material.extensions, kIridescence);
+    result.iridescence = unit(numberField(film, "iridescenceFactor", 0.0, at, source));
+    const double ior = numberField(film, "iridescenceIor", 1.3, at, source);
+    if (!(ior >= 1.0) || ior > kMaxIridescenceIor) {
+        throw InputError(source + ": " + at + "/iridescenceIor: " + std::to_string(ior) + " is not an ior from 1 to " +
+                         std::to_string(int(kMaxIridescenceIor)));
+    }
+    result.iridescenceIor = float(ior);
+    for (auto [key, fallback, field] : {std::tuple{"iridescenceThicknessMinimum", 100.0, &result.iridescenceThicknessMinimum},
+                                        std::tuple{"iridescenceThicknessMaximum", 400.0, &result.iridescenceThicknessMaximum}}) {
+        const double thickness = numberField(film, key, fallback, at, source);
+        if (!(thickness >= 0.0) || thickness > kMaxIridescenceThickness) {
+            throw InputError(source + ": " + at + "/" + key + ": " + std::to_string(thickness) +
+                             " is not a thickness in nanometres from 0 to " +
+                             std::to_string(int(kMaxIridescenceThickness)));
+        }
+        *field = float(thickness);
+    }
+}
+
 // KHR_materials_specular's and KHR_materials_ior's factors as the file has them (glTF's defaults
-// for what it leaves out), checked; the maps are specularNotShown's.
+// for what it leaves out), checked; the maps are model_materials.cpp's.
 struct GltfSpecular {
     double factor = 1.0;
     glm::dvec3 color{1.0};
     double ior = kExportIor;
-    // glTF's dielectric F0 before specularFactor, at the colour's largest channel: Patina's F0
-    // is grey, and the largest keeps the highlight.
-    double f0() const { return std::min(f0FromIor(ior) * std::max({color.r, color.g, color.b}), 1.0); }
 };
 
 GltfSpecular specularFromGltf(const tinygltf::Material& material, const std::string& what, const std::string& source) {
@@ -115,40 +142,28 @@ GltfSpecular specularFromGltf(const tinygltf::Material& material, const std::str
     }
     return read;
 }
-}  // namespace
 
-std::string specularNotShown(const tinygltf::Material& material, const std::string& what, const std::string& source) {
-    const GltfSpecular read = specularFromGltf(material, what, source);
-    const glm::dvec3& color = read.color;
-    std::vector<std::string> lost;
-    char text[160];
-    if (color.r != color.g || color.g != color.b) {
-        std::snprintf(text, sizeof text, "its specularColorFactor (%.3g, %.3g, %.3g) is drawn grey, at its largest",
-                      color.r, color.g, color.b);
-        lost.emplace_back(text);
+// The extension's dielectric F0 per channel, min(F0(ior) specularColorFactor, 1), as Patina's
+// 0.08 specular tint (shading/material_parameters.h): specular as large as F0's largest channel
+// lets it be (up to 1, F0 0.08), the tint the rest (its largest channel 1 up to there); a black
+// F0 is specular 0 with no tint. specularFactor is the weight of the Fresnel, F0 and F90 alike.
+void specularToPatina(const GltfSpecular& read, Material& result) {
+    glm::dvec3 f0;
+    for (int c = 0; c < 3; ++c) {
+        f0[c] = std::min(f0FromIor(read.ior) * std::max(read.color[c], 0.0), 1.0);
     }
-    if (read.f0() > double(shader::F0_PER_SPECULAR) * (1.0 + 1e-6)) {
-        std::snprintf(text, sizeof text, "its F0 of %.3g (ior %.3g) is drawn as 0.08, Patina's largest for a dielectric",
-                      read.f0(), read.ior);
-        lost.emplace_back(text);
-    }
-    if (read.factor < 1.0) {
-        std::snprintf(text, sizeof text, "its specularFactor %.3g lowers F90 to %.3g in glTF, Patina's stays 1",
-                      read.factor, read.factor);
-        lost.emplace_back(text);
-    }
-    const tinygltf::Value* specular = extensionOf(material.extensions, kSpecular);
-    for (const char* map : {"specularTexture", "specularColorTexture"}) {
-        if (specular && specular->Has(map)) {
-            lost.push_back(std::string("its ") + map + " is not read (the factors alone)");
+    const double perSpecular = double(shader::F0_PER_SPECULAR);
+    const double largest = std::max({f0.r, f0.g, f0.b});
+    result.specular = unit(largest / perSpecular);
+    result.specularTint = glm::vec3(1.0f);
+    if (result.specular > 0.0f) {
+        for (int c = 0; c < 3; ++c) {
+            result.specularTint[c] = float(f0[c] / (perSpecular * double(result.specular)));
         }
     }
-    std::string said;
-    for (const std::string& part : lost) {
-        said += (said.empty() ? "" : "; ") + part;
-    }
-    return said;
+    result.specularWeight = unit(read.factor);
 }
+}  // namespace
 
 Material materialFromGltf(const tinygltf::Material& material, const std::string& what,
                           const std::string& source, const std::string& fallbackName) {
@@ -164,8 +179,7 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     result.metallic = unit(pbr.metallicFactor);
     result.roughness = unit(pbr.roughnessFactor);
 
-    const GltfSpecular specular = specularFromGltf(material, what, source);
-    result.specular = unit(specular.f0() * specular.factor / double(shader::F0_PER_SPECULAR));
+    specularToPatina(specularFromGltf(material, what, source), result);
     // KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor, both 0 by default
     // (no coat). Its maps are read beside the core maps (model_materials.cpp).
     const std::string clearcoatAt = what + "/extensions/" + kClearcoat;
@@ -183,11 +197,17 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
     result.sheenRoughness = unit(numberField(sheen, "sheenRoughnessFactor", 0.0, sheenAt, source));
     volumeFromGltf(material, what, source, result);
     anisotropyFromGltf(material, what, source, result);
+    iridescenceFromGltf(material, what, source, result);
     return result;
 }
 
 Json materialToGltf(const Material& material) {
-    const double color = exact(float(double(shader::F0_PER_SPECULAR) * double(material.specular) / f0FromIor(kExportIor)));
+    // specularColorFactor = 0.08 specular tint / F0(1.5) (= 2 specular tint), per channel.
+    Json color = Json::array();
+    for (int c = 0; c < 3; ++c) {
+        const double f0 = double(shader::F0_PER_SPECULAR) * double(material.specular) * double(material.specularTint[c]);
+        color.push_back(exact(float(f0 / f0FromIor(kExportIor))));
+    }
     const glm::vec3& base = material.baseColor;
     Json json{
         {"name", material.name},
@@ -196,7 +216,7 @@ Json materialToGltf(const Material& material) {
           {"metallicFactor", exact(material.metallic)},
           {"roughnessFactor", exact(material.roughness)}}},
         {"extensions",
-         {{kSpecular, {{"specularFactor", 1.0}, {"specularColorFactor", {color, color, color}}}},
+         {{kSpecular, {{"specularFactor", exact(material.specularWeight)}, {"specularColorFactor", color}}},
           {kIor, {{"ior", kExportIor}}}}}};
     // A coat only where there is one: a material without keeps the two extensions every export has.
     if (material.clearcoat > 0.0f || material.clearcoatRoughness > 0.0f) {
@@ -227,6 +247,14 @@ Json materialToGltf(const Material& material) {
     if (material.anisotropyStrength > 0.0f) {
         json["extensions"][kAnisotropy] = {{"anisotropyStrength", exact(material.anisotropyStrength)},
                                            {"anisotropyRotation", exact(material.anisotropyRotation)}};
+    }
+    // A thin film only where there is one (a strength above 0), as the coat.
+    if (material.iridescence > 0.0f) {
+        json["extensions"][kIridescence] = {
+            {"iridescenceFactor", exact(material.iridescence)},
+            {"iridescenceIor", exact(material.iridescenceIor)},
+            {"iridescenceThicknessMinimum", exact(material.iridescenceThicknessMinimum)},
+            {"iridescenceThicknessMaximum", exact(material.iridescenceThicknessMaximum)}};
     }
     return json;
 }

@@ -286,6 +286,22 @@ void anisotropyJson(const ModelMaterial& material, Textures& textures, Json& jso
     textures.extensions.insert(gltf::kAnisotropyExtension);
 }
 
+// KHR_materials_iridescence where the material has a film: the factors materialToGltf wrote, and
+// its maps. A map on a strength of 0 is not written, as the anisotropy's.
+void iridescenceJson(const ModelMaterial& material, Textures& textures, Json& json) {
+    if (!json.contains("extensions") || !json["extensions"].contains(gltf::kIridescenceExtension)) {
+        return;
+    }
+    Json& film = json["extensions"][gltf::kIridescenceExtension];
+    if (material.iridescenceMap.present()) {
+        film["iridescenceTexture"] = textures.info(material.iridescenceMap);
+    }
+    if (material.iridescenceThickness.present()) {
+        film["iridescenceThicknessTexture"] = textures.info(material.iridescenceThickness);
+    }
+    textures.extensions.insert(gltf::kIridescenceExtension);
+}
+
 // The material as glTF writes it (3.9): the factors as materialToGltf maps them, and every
 // map, alpha, emission and sidedness the model read (the inverse of model_materials.cpp).
 Json materialJson(const ModelMaterial& material, Textures& textures) {
@@ -334,6 +350,15 @@ Json materialJson(const ModelMaterial& material, Textures& textures) {
     sheenJson(material, textures, json);
     volumeJson(material, textures, json);
     anisotropyJson(material, textures, json);
+    // KHR_materials_specular's maps beside the factors materialToGltf always writes.
+    Json& specular = json["extensions"][gltf::kMaterialExtensions[0]];
+    if (material.specularColor.present()) {
+        specular["specularColorTexture"] = textures.info(material.specularColor);
+    }
+    if (material.specular.present()) {
+        specular["specularTexture"] = textures.info(material.specular);
+    }
+    iridescenceJson(material, textures, json);
     return json;
 }
 

@@ -85,7 +85,9 @@ private:
     void clearcoatMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
     void sheenMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
     void volumeMaps(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
-    void anisotropyMap(const tinygltf::Material& material, const std::string& where, ModelMaterial& result);
+    // The map `key` of extension `name` (a textureInfo read as the core maps are), or none.
+    TextureSlot extensionMap(const tinygltf::Material& material, const std::string& where, const char* name,
+                             const char* key);
 
     const tinygltf::Model& document_;
     const std::string& source_;
@@ -258,10 +260,6 @@ ModelMaterial MaterialReader::read(int index) {
     const Material factors = materialFromGltf(material, where, source_, "material " + std::to_string(index));
     result.name = factors.name;
     result.factors = factors;
-    if (const std::string lost = specularNotShown(material, where, source_); !lost.empty()) {
-        notes_.push_back("material \"" + result.name + "\" (" + where + "): KHR_materials_specular and _ior are drawn as "
-                         "Patina's grey dielectric F0 (0.08 at most): " + lost);
-    }
     if (pbr.baseColorFactor.size() != 4) {
         fail(source_, pbrAt + "/baseColorFactor: must have 4 numbers");
     }
@@ -283,7 +281,15 @@ ModelMaterial MaterialReader::read(int index) {
     clearcoatMaps(material, where, result);
     sheenMaps(material, where, result);
     volumeMaps(material, where, result);
-    anisotropyMap(material, where, result);
+    // KHR_materials_anisotropy's anisotropyTexture: kept and exported, not drawn.
+    result.anisotropyMap = extensionMap(material, where, "KHR_materials_anisotropy", "anisotropyTexture");
+    // KHR_materials_specular's: RGB the tint's (sRGB), A the weight's.
+    result.specularColor = extensionMap(material, where, "KHR_materials_specular", "specularColorTexture");
+    result.specular = extensionMap(material, where, "KHR_materials_specular", "specularTexture");
+    // KHR_materials_iridescence's: R the strength's, G the thickness's.
+    result.iridescenceMap = extensionMap(material, where, "KHR_materials_iridescence", "iridescenceTexture");
+    result.iridescenceThickness =
+        extensionMap(material, where, "KHR_materials_iridescence", "iridescenceThicknessTexture");
     return result;
 }
 
@@ -338,15 +344,14 @@ void MaterialReader::volumeMaps(const tinygltf::Material& material, const std::s
     }
 }
 
-// KHR_materials_anisotropy's anisotropyTexture (its factors are materialFromGltf's), a
-// textureInfo read as the core maps are: kept and exported, not drawn.
-void MaterialReader::anisotropyMap(const tinygltf::Material& material, const std::string& where,
-                                   ModelMaterial& result) {
-    const char* name = "KHR_materials_anisotropy";
-    if (const tinygltf::Value* object = extensionOf(material.extensions, name)) {
-        const std::string at = where + "/extensions/" + name;
-        result.anisotropyMap = slot(textureInfoOf(object, "anisotropyTexture", at, source_), at + "/anisotropyTexture");
+TextureSlot MaterialReader::extensionMap(const tinygltf::Material& material, const std::string& where,
+                                         const char* name, const char* key) {
+    const tinygltf::Value* object = extensionOf(material.extensions, name);
+    if (!object) {
+        return {};
     }
+    const std::string at = where + "/extensions/" + name;
+    return slot(textureInfoOf(object, key, at, source_), at + "/" + key);
 }
 
 }  // namespace

@@ -21,6 +21,11 @@ constexpr Range kNonNegative{0.0, 3.4e38};
 constexpr Range kThickness{0.0, 1.0e6};
 // KHR_materials_anisotropy's rotation, in radians (gltf::kMaxAnisotropyRotation's bound).
 constexpr Range kRotation{-1.0e4, 1.0e4};
+// KHR_materials_specular's tint of 0.08 specular: F0 reaches 1 at 12.5 (shading/material_parameters.h).
+constexpr Range kSpecularTint{0.0, 12.5};
+// KHR_materials_iridescence's film: its ior (the schema's at least 1) and thicknesses in nm.
+constexpr Range kFilmIor{1.0, 10.0};
+constexpr Range kFilmThickness{0.0, 1.0e5};
 
 // The shortest decimal that reads back as the same float, so files say 0.8, not
 // 0.800000011920929.
@@ -318,6 +323,14 @@ Material materialFromJson(const Json& json, const std::string& pointer, const st
     material.attenuationDistance = reader.number("attenuationDistance", material.attenuationDistance, kThickness);
     material.anisotropyStrength = reader.number("anisotropyStrength", material.anisotropyStrength, kUnit);
     material.anisotropyRotation = reader.number("anisotropyRotation", material.anisotropyRotation, kRotation);
+    material.specularTint = reader.vec3("specularTint", material.specularTint, kSpecularTint);
+    material.specularWeight = reader.number("specularWeight", material.specularWeight, kUnit);
+    material.iridescence = reader.number("iridescence", material.iridescence, kUnit);
+    material.iridescenceIor = reader.number("iridescenceIor", material.iridescenceIor, kFilmIor);
+    material.iridescenceThicknessMinimum =
+        reader.number("iridescenceThicknessMinimum", material.iridescenceThicknessMinimum, kFilmThickness);
+    material.iridescenceThicknessMaximum =
+        reader.number("iridescenceThicknessMaximum", material.iridescenceThicknessMaximum, kFilmThickness);
     if (reader.has("model")) {
         material.model = brdfModelFromJson(reader, "model");
     }
@@ -557,6 +570,23 @@ Json materialToJson(const Material& material) {
     }
     if (material.anisotropyRotation != 0.0f) {
         json["anisotropyRotation"] = toJson(material.anisotropyRotation);
+    }
+    // KHR_materials_specular's tint and weight, each only where it is not its default.
+    if (material.specularTint != glm::vec3(1.0f)) {
+        json["specularTint"] = toJson(material.specularTint);
+    }
+    if (material.specularWeight != 1.0f) {
+        json["specularWeight"] = toJson(material.specularWeight);
+    }
+    // KHR_materials_iridescence's, all four wherever one is not its default.
+    const MaterialParameters plain;
+    if (material.iridescence != plain.iridescence || material.iridescenceIor != plain.iridescenceIor ||
+        material.iridescenceThicknessMinimum != plain.iridescenceThicknessMinimum ||
+        material.iridescenceThicknessMaximum != plain.iridescenceThicknessMaximum) {
+        json["iridescence"] = toJson(material.iridescence);
+        json["iridescenceIor"] = toJson(material.iridescenceIor);
+        json["iridescenceThicknessMinimum"] = toJson(material.iridescenceThicknessMinimum);
+        json["iridescenceThicknessMaximum"] = toJson(material.iridescenceThicknessMaximum);
     }
     if (!material.notes.empty()) {
         json["notes"] = material.notes;

@@ -74,6 +74,14 @@ struct ModelMaterial {
     // `factors.anisotropyStrength`): read, kept and exported, not drawn (docs/SHADING.md S8),
     // so not among mapsOf's.
     TextureSlot anisotropyMap;              // linear; RGB
+    // KHR_materials_specular's maps (its factors are `factors.specularTint` and
+    // `factors.specularWeight`): RGB scales the tint, A the weight (docs/SHADING.md S9).
+    TextureSlot specularColor;              // sRGB; RGB
+    TextureSlot specular;                   // linear; A
+    // KHR_materials_iridescence's maps (its factors are `factors.iridescence` and the thickness
+    // range): R scales the strength, G places the thickness between minimum and maximum.
+    TextureSlot iridescenceMap;             // linear; R
+    TextureSlot iridescenceThickness;       // linear; G
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
@@ -82,9 +90,10 @@ struct ModelMaterial {
 
 // A material's maps in their one order (the shaders' too: surface_maps.glsl): glTF 2.0's five,
 // then KHR_materials_clearcoat's three, KHR_materials_sheen's two, KHR_materials_transmission's
-// and KHR_materials_volume's one each; each with whether its
-// texels are sRGB (base colour, emissive and sheen colour; the others are data, glTF 2.0
-// 3.9.2-3.9.3), its name for people and its key
+// and KHR_materials_volume's one each, KHR_materials_specular's two, KHR_materials_iridescence's
+// two; each with whether its
+// texels are sRGB (base colour, emissive, sheen colour and specular colour; the others are data,
+// glTF 2.0 3.9.2-3.9.3), its name for people and its key
 // (glTF's name of the property, which scene files use too).
 template <typename Slot>
 struct MapOf {
@@ -94,7 +103,7 @@ struct MapOf {
     const char* key;
 };
 inline constexpr int kCoreMapCount = 5;   // glTF 2.0's own maps, the first of mapsOf
-inline constexpr int kMapCount = 12;
+inline constexpr int kMapCount = 16;
 template <typename Material>   // ModelMaterial or const ModelMaterial
 auto mapsOf(Material& material) {
     using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
@@ -110,7 +119,11 @@ auto mapsOf(Material& material) {
          {&material.sheenColor, true, "sheen colour", "sheenColorTexture"},
          {&material.sheenRoughness, false, "sheen roughness", "sheenRoughnessTexture"},
          {&material.transmissionMap, false, "transmission", "transmissionTexture"},
-         {&material.thicknessMap, false, "thickness", "thicknessTexture"}}};
+         {&material.thicknessMap, false, "thickness", "thicknessTexture"},
+         {&material.specularColor, true, "specular colour", "specularColorTexture"},
+         {&material.specular, false, "specular", "specularTexture"},
+         {&material.iridescenceMap, false, "iridescence", "iridescenceTexture"},
+         {&material.iridescenceThickness, false, "iridescence thickness", "iridescenceThicknessTexture"}}};
 }
 // The map of `material` whose key is `key`, or nothing: what a scene file's key names.
 template <typename Material>
@@ -121,6 +134,12 @@ auto mapWithKey(Material& material, std::string_view key) -> std::optional<typen
         }
     }
     return std::nullopt;
+}
+
+// Whether KHR_materials_specular's maps are drawn for `material`: either one compiles the tint
+// and weight in (PATINA_SPECULAR), whatever the factors they scale.
+inline bool hasSpecularMaps(const ModelMaterial& material) {
+    return material.specularColor.present() || material.specular.present();
 }
 
 // One primitive placed once: glTF node world matrix times the mesh's primitive. `material` < 0

@@ -76,6 +76,17 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
     // KHR_materials_transmission's: R scales the factor; KHR_materials_volume's: G the thickness.
     surface.material.transmission *= texel(maps->transmissionMap, false, glm::vec4(1.0f)).x;
     surface.material.thickness *= texel(maps->thicknessMap, false, glm::vec4(1.0f)).y;
+    // KHR_materials_specular's: RGB (sRGB) scales the tint, A the weight.
+    surface.material.specularTint *= glm::vec3(texel(maps->specularColor, true, glm::vec4(1.0f)));
+    surface.material.specularWeight *= texel(maps->specular, false, glm::vec4(1.0f)).w;
+    // KHR_materials_iridescence's: R scales the strength; G places the thickness between the
+    // minimum and maximum, kept in the maximum (cpu_shading.cpp's surfaceMaterial reads it there).
+    surface.material.iridescence *= texel(maps->iridescenceMap, false, glm::vec4(1.0f)).x;
+    if (maps->iridescenceThickness.present()) {
+        const float g = texel(maps->iridescenceThickness, false, glm::vec4(1.0f)).y;
+        surface.material.iridescenceThicknessMaximum =
+            glm::mix(draw.material.iridescenceThicknessMinimum, draw.material.iridescenceThicknessMaximum, g);
+    }
     if (maps->normal.present()) {
         const glm::vec4 n = texel(maps->normal, false, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
         surface.normal =

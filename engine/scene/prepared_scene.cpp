@@ -147,7 +147,8 @@ bool hasMaps(const ModelMaterial& material) {
            material.occlusion.present() || material.emissive.present() || material.emissiveFactor != glm::vec3(0.0f) ||
            material.clearcoat.present() || material.clearcoatRoughness.present() || material.clearcoatNormal.present() ||
            material.sheenColor.present() || material.sheenRoughness.present() || material.transmissionMap.present() ||
-           material.thicknessMap.present();
+           material.thicknessMap.present() || material.specularColor.present() || material.specular.present() ||
+           material.iridescenceMap.present() || material.iridescenceThickness.present();
 }
 
 int mapSetOf(const ModelMaterial& material) {

@@ -26,8 +26,9 @@ inline vec2 environmentBrdfTexel(int x, int y) {
 // shade.frag's inspectedChannel on the CPU (engine/shading/channel_inputs.h).
 inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vector<PackedLight>& lights, int asked,
                                          int key, const ChannelEnvironment* environment) {
-    ChannelInputs c = channelSurface(p.baseColor, p.alpha, p.roughness, p.specular, p.metallic, p.occlusion,
-                                     p.emission, p.uv0, p.uv1, p.tangent, p.geometryNormal, p.N, p.V);
+    ChannelInputs c = channelSurface(p.baseColor, p.alpha, p.roughness, p.specular, p.specularTint, p.specularWeight,
+                                     p.metallic, p.occlusion, p.emission, p.uv0, p.uv1, p.tangent, p.geometryNormal,
+                                     p.N, p.V);
     const ChannelLayers layers = channelPointLayers(p);
     for (int i = 0; i < int(lights.size()); ++i) {
         c = channelWithLight(c, layers, lights[size_t(i)], i == asked, i == key, p.P, p.V);
@@ -73,7 +74,7 @@ inline real specularLobe(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
 inline SpecularTerms specularTerms(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
     const LobeAngles a = lobeAngles(N, V, L);
     return SpecularTerms(distribution(a.NoH, cross(N, a.H), material.alpha), visibility(a.NoV, a.NoL, material),
-                         fresnel(material.f0, clamp(dot(V, a.H), 0.0f, 1.0f)));
+                         surfaceFresnel(material, a.NoV, clamp(dot(V, a.H), 0.0f, 1.0f)));
 }
 
 }  // namespace

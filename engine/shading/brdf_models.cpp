@@ -24,7 +24,9 @@ namespace patina::shader_f64 {
 }  // namespace patina::shader_f64
 
 namespace patina::shader_f16 {
+#define PATINA_NO_THIN_FILM   // iridescence.glsl is not in fp16 (shaders/shared/brdf.glsl)
 #include "shading/brdf_model_instances.h"
+#undef PATINA_NO_THIN_FILM
 }  // namespace patina::shader_f16
 
 namespace patina {
@@ -116,8 +118,11 @@ glm::vec3 shadeAreaLight(BrdfModelId id, const shader::PackedLight& light, shade
 
 BrdfValueF64 evaluateBrdfF64(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V,
                              glm::dvec3 L) {
-    const shader_f64::SurfaceMaterial m = shader_f64::deriveSurfaceMaterial(
-        glm::dvec3(material.baseColor), material.roughness, material.specular, material.metallic);
+    const shader_f64::SurfaceMaterial m = shader_f64::withIridescence(
+        shader_f64::withSpecular(shader_f64::deriveSurfaceMaterial(glm::dvec3(material.baseColor), material.roughness,
+                                                                   material.specular, material.metallic),
+                                 glm::dvec3(material.specularTint), material.specularWeight),
+        material.iridescence, material.iridescenceIor, material.iridescenceThicknessMaximum);
     switch (id) {
 #define PATINA_EVALUATE(model, name, summary)                                                   \
     case BrdfModelId::model: {                                                                 \
@@ -232,8 +237,10 @@ float tabulatedAlbedo(BrdfModelId id, float NoV, float roughness) {
 
 glm::dvec3 reflectedF16(BrdfModelId id, const MaterialParameters& material, glm::dvec3 N, glm::dvec3 V, glm::dvec3 L) {
     auto half3 = [](glm::dvec3 v) { return HalfVec3(Half(v.x), Half(v.y), Half(v.z)); };
-    const shader_f16::SurfaceMaterial m = shader_f16::deriveSurfaceMaterial(
-        half3(glm::dvec3(material.baseColor)), Half(material.roughness), Half(material.specular), Half(material.metallic));
+    const shader_f16::SurfaceMaterial m = shader_f16::withSpecular(
+        shader_f16::deriveSurfaceMaterial(half3(glm::dvec3(material.baseColor)), Half(material.roughness),
+                                          Half(material.specular), Half(material.metallic)),
+        half3(glm::dvec3(material.specularTint)), Half(material.specularWeight));
     const HalfVec3 n = half3(N), v = half3(V), l = half3(L);
     shader_f16::BrdfValue f{};
     switch (id) {
@@ -261,6 +268,11 @@ ChannelPoint channelPointOf(const MaterialParameters& material) {
     point.baseColor = material.baseColor;
     point.roughness = material.roughness;
     point.specular = material.specular;
+    point.specularTint = material.specularTint;
+    point.specularWeight = material.specularWeight;
+    point.iridescence = material.iridescence;
+    point.iridescenceIor = material.iridescenceIor;
+    point.iridescenceThickness = material.iridescenceThicknessMaximum;
     point.metallic = material.metallic;
     point.clearcoat = material.clearcoat;
     point.clearcoatRoughness = material.clearcoatRoughness;

@@ -22,6 +22,9 @@ enum class BrdfModelId;
 struct ChannelPoint {
     glm::vec3 baseColor{0.0f};
     float alpha = 1.0f, roughness = 0.0f, specular = 0.5f, metallic = 0.0f, occlusion = 1.0f;
+    // KHR_materials_specular's tint of F0 and weight of its Fresnel (shader::withSpecular).
+    glm::vec3 specularTint{1.0f};
+    float specularWeight = 1.0f;
     glm::vec3 emission{0.0f};
     glm::vec2 uv0{0.0f}, uv1{0.0f};
     glm::vec4 tangent{0.0f};
@@ -36,6 +39,9 @@ struct ChannelPoint {
     // attenuation T over the draw's thickness (transmission.glsl's volumeAttenuation).
     float transmission = 0.0f;
     glm::vec3 transmissionAttenuation{1.0f};
+    // KHR_materials_iridescence's strength after its map (0: none), film ior and thickness in nm
+    // after its map.
+    float iridescence = 0.0f, iridescenceIor = 1.3f, iridescenceThickness = 0.0f;
 };
 
 // A point of `material`'s factors (its maps already applied, if any), the rest at ChannelPoint's
@@ -59,9 +65,13 @@ inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
         layers.transmits = true;
         layers.transmissionFactor = p.transmission;
         layers.transmission = shader::deriveTransmission(
-            shader::deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic), p.transmission,
-            p.transmissionAttenuation, p.N, p.V);
+            shader::withSpecular(shader::deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic),
+                                 p.specularTint, p.specularWeight),
+            p.transmission, p.transmissionAttenuation, p.N, p.V);
     }
+    layers.iridescence = p.iridescence;
+    layers.iridescenceIor = p.iridescenceIor;
+    layers.iridescenceThickness = p.iridescenceThickness;
     return layers;
 }
 

@@ -7,8 +7,12 @@
 namespace patina {
 
 shader::SurfaceMaterial surfaceMaterial(const MaterialParameters& material) {
-    return shader::deriveSurfaceMaterial(material.baseColor, material.roughness,
-                                         material.specular, material.metallic);
+    const shader::SurfaceMaterial specular = shader::withSpecular(
+        shader::deriveSurfaceMaterial(material.baseColor, material.roughness, material.specular, material.metallic),
+        material.specularTint, material.specularWeight);
+    // The film's thickness as the maps leave it in the maximum (engine/reference/surface_maps.cpp).
+    return shader::withIridescence(specular, material.iridescence, material.iridescenceIor,
+                                   material.iridescenceThicknessMaximum);
 }
 
 shader::SurfaceMaterial surfaceMaterialAt(const MaterialParameters& material, glm::vec3 N, glm::vec4 tangent) {

@@ -83,6 +83,7 @@ inline Half max(Half a, Half b) { return a > b ? a : b; }
 inline Half min(Half a, Half b) { return a < b ? a : b; }
 inline int min(int a, int b) { return std::min(a, b); }
 inline Half clamp(Half x, Half lo, Half hi) { return min(max(x, lo), hi); }
+inline HalfVec3 min(HalfVec3 a, HalfVec3 b) { return {min(a.x, b.x), min(a.y, b.y), min(a.z, b.z)}; }
 inline Half mix(Half a, Half b, Half t) { return a + (b - a) * t; }
 inline HalfVec3 mix(HalfVec3 a, HalfVec3 b, Half t) { return a + (b - a) * t; }
 inline Half sqrt(Half x) { return Half(std::sqrt(x.value)); }

@@ -44,6 +44,22 @@ struct MaterialParameters {
     // nothing of it is compiled (PATINA_ANISOTROPY), and the material shades as without it.
     float anisotropyStrength = 0.0f;
     float anisotropyRotation = 0.0f;
+    // KHR_materials_specular and _ior (docs/SHADING.md S9): the dielectric's F0 is
+    // min(0.08 specular specularTint, 1), its Fresnel weighted by specularWeight (glTF's
+    // specularFactor, in [0, 1]: F0 and F90 both scaled). The tint's channels are in [0, 12.5]
+    // (F0 = 1 at specular 1): its largest 1 up to F0 0.08, above it what an ior beyond 1.79
+    // needs. A tint of 1 and a weight of 1 are none: nothing of them is compiled
+    // (PATINA_SPECULAR), and the material shades as without the extensions.
+    glm::vec3 specularTint{1.0f};
+    float specularWeight = 1.0f;
+    // KHR_materials_iridescence's factors (docs/SHADING.md S10): the thin film's strength in
+    // [0, 1], its ior, and its thickness in nm between the minimum and maximum (the maximum
+    // without a thickness map). A strength of 0 (or a thickness of 0) is none: nothing of it is
+    // compiled (PATINA_IRIDESCENCE), and the material shades as without the extension.
+    float iridescence = 0.0f;
+    float iridescenceIor = 1.3f;
+    float iridescenceThicknessMinimum = 100.0f;
+    float iridescenceThicknessMaximum = 400.0f;
     bool operator==(const MaterialParameters&) const = default;
 };
 

@@ -12,6 +12,7 @@ using std::sqrt;
 using real = float;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
+#include "iridescence.glsl"
 #include "lights.glsl"
 #include "clearcoat.glsl"
 // sheen.glsl's table (engine/shading/sheen_table.cpp): E at N.V = x / 31, r = y / 31.

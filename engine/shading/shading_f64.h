@@ -23,6 +23,7 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 using real = double;   // the shared code's scalar (shaders/shared/brdf.glsl)
 #define PATINA_INLINE inline
 #include "brdf.glsl"
+#include "iridescence.glsl"
 #include "lights.glsl"
 #include "clearcoat.glsl"
 // sheen.glsl's table (engine/shading/sheen_table.cpp): E at N.V = x / 31, r = y / 31.

@@ -30,6 +30,14 @@ const real MIN_N_DOT_V = 1e-4f;
 #define PATINA_ANISOTROPIC_FIELDS
 #endif
 #endif
+// KHR_materials_iridescence's likewise (PATINA_IRIDESCENCE; iridescence.glsl). The fp16 instance
+// has the fields but no thin film: its models are compiled with PATINA_NO_THIN_FILM
+// (engine/shading/brdf_models.cpp).
+#if defined(PATINA_IRIDESCENCE) || defined(__cplusplus)
+#ifndef PATINA_IRIDESCENT_FIELDS
+#define PATINA_IRIDESCENT_FIELDS
+#endif
+#endif
 
 struct SurfaceMaterial {
     vec3 diffuseColor;   // c_diff = (1 - m) c_base
@@ -39,9 +47,15 @@ struct SurfaceMaterial {
     // The two lobes glTF 2.0's Appendix B mixes by metallic, kept apart for the models that
     // weigh them apart (PATINA_FD_LAMBERT_FRESNEL_MIX, PATINA_MS_FDEZ_AGUERA); the others read
     // only the four above.
-    vec3 dielectricF0;   // 0.08 s: the dielectric's F0 alone (0.04 at s = 0.5, ior 1.5)
+    vec3 dielectricF0;   // 0.08 s: the dielectric's F0 alone (0.04 at s = 0.5, ior 1.5), times
+                         // withSpecular's tint; before its weight
     vec3 baseColor;      // c_base: the metal's F0
     real metallic;      // m
+    // KHR_materials_specular's weight of the dielectric's Fresnel (withSpecular; 1 without):
+    // the dielectric's F is w F_Schlick(F0), and the lobe's F90 = mix(w, 1, m), with `f0` above
+    // mix(w F0, c_base, m), so that F = f0 + (f90 - f0)(1 - V.H)^5 is glTF's mix of the two.
+    real specularWeight;
+    real f90;
 #ifdef PATINA_ANISOTROPIC_FIELDS
     // KHR_materials_anisotropy (withAnisotropy): the unit directions of the lobe's stretch in
     // the surface, t and b = N x t, and the roughness along each, alpha_t >= alpha_b. alpha_t 0
@@ -51,6 +65,13 @@ struct SurfaceMaterial {
     real alphaT;
     real alphaB;
     real anisotropy;    // the strength, in [0, 1]
+#endif
+#ifdef PATINA_IRIDESCENT_FIELDS
+    // KHR_materials_iridescence (withIridescence): the film's strength (0: none), ior and
+    // thickness in nm.
+    real iridescence;
+    real iridescenceIor;
+    real iridescenceThickness;
 #endif
 };
 
@@ -75,11 +96,30 @@ PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, real roughne
     real r = max(roughness, MIN_PERCEPTUAL_ROUGHNESS);
     return SurfaceMaterial((1.0f - metallic) * baseColor,
                            mix(vec3(F0_PER_SPECULAR * specular), baseColor, metallic),
-                           r, r * r, vec3(F0_PER_SPECULAR * specular), baseColor, metallic
+                           r, r * r, vec3(F0_PER_SPECULAR * specular), baseColor, metallic, 1.0f, 1.0f
 #ifdef PATINA_ANISOTROPIC_FIELDS
                            , vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, 0.0f
 #endif
+#ifdef PATINA_IRIDESCENT_FIELDS
+                           , 0.0f, 1.3f, 0.0f
+#endif
     );
+}
+
+// KHR_materials_specular (Khronos, ratified 2021) and KHR_materials_ior, on glTF 2.0's
+// Appendix B: the dielectric's F0 tinted and its Fresnel weighted,
+//   dielectric_f0  = min(F0(ior) specularColor, 1) specular,  dielectric_f90 = specular
+// (the extension's "Implementation"). Patina's F0(ior) specularColor is 0.08 s `tint` (glTF
+// import: gltf/material.h), so the tint's largest channel is 1 up to F0 0.08 and beyond it carries
+// what s cannot; `weight` is specularFactor. The metal's lobe keeps F0 = c_base, F90 = 1.
+// A tint of 1 and a weight of 1 leave deriveSurfaceMaterial's values exactly as they were.
+PATINA_INLINE SurfaceMaterial withSpecular(SurfaceMaterial material, vec3 tint, real weight) {
+    material.dielectricF0 = min(material.dielectricF0 * tint, vec3(1.0f));
+    material.specularWeight = weight;
+    material.f0 = mix(material.dielectricF0 * weight, material.baseColor, material.metallic);
+    // w + (1 - w) m, not mix(w, 1, m): exactly 1 at w = 1 whatever m.
+    material.f90 = weight + (1.0f - weight) * material.metallic;
+    return material;
 }
 
 // KHR_materials_anisotropy: the lobe stretched along t, the tangent frame's direction
@@ -202,17 +242,39 @@ PATINA_INLINE real V_SmithGGXCorrelated_Fast(real NoV, real NoL, real alpha) {
 
 // Schlick Fresnel with the spherical-Gaussian exponent (Karis 2013, eq. 5):
 // F = F0 + (1 - F0) 2^((-5.55473 VoH - 6.98316) VoH). VoH is clamped to [0, 1] by the caller.
-PATINA_INLINE vec3 F_SchlickSphericalGaussian(vec3 f0, real VoH) {
+// With the reflectance at grazing incidence F90 (withSpecular's f90; 1 in the paper).
+PATINA_INLINE vec3 F_SchlickSphericalGaussian90(vec3 f0, real f90, real VoH) {
     real fresnel = exp2((-5.55473f * VoH - 6.98316f) * VoH);
-    return f0 + (vec3(1.0f) - f0) * fresnel;
+    return f0 + (vec3(f90) - f0) * fresnel;
+}
+
+PATINA_INLINE vec3 F_SchlickSphericalGaussian(vec3 f0, real VoH) {
+    return F_SchlickSphericalGaussian90(f0, 1.0f, VoH);
 }
 
 // Schlick 1994, "An Inexpensive BRDF Model for Physically-based Rendering", eq. 15:
 // F = F0 + (1 - F0) (1 - VoH)^5, as repeated products (no pow of a possibly negative base).
-PATINA_INLINE vec3 F_Schlick(vec3 f0, real VoH) {
+// With F90 as glTF 2.0 Appendix B.3.4 writes it, F = F0 + (F90 - F0)(1 - V.H)^5 (withSpecular's
+// f90; 1 in Schlick's form).
+PATINA_INLINE vec3 F_Schlick90(vec3 f0, real f90, real VoH) {
     real m = clamp(1.0f - VoH, 0.0f, 1.0f);
     real m2 = m * m;
-    return f0 + (vec3(1.0f) - f0) * (m2 * m2 * m);
+    return f0 + (vec3(f90) - f0) * (m2 * m2 * m);
+}
+
+PATINA_INLINE vec3 F_Schlick(vec3 f0, real VoH) {
+    return F_Schlick90(f0, 1.0f, VoH);
+}
+
+// max_value of KHR_materials_specular: an RGB Fresnel's largest channel, the share a layer
+// beneath loses ("to avoid inverse colors and ensure energy conservation").
+PATINA_INLINE real maxValue(vec3 color) {
+    return max(color.x, max(color.y, color.z));
+}
+
+// The smallest channel: 1 - max_value(F) where what is left is written 1 - F.
+PATINA_INLINE real minValue(vec3 color) {
+    return min(color.x, min(color.y, color.z));
 }
 
 // Exact Fresnel reflectance of a dielectric for unpolarised light (Walter et al. 2007, eq. 22),
@@ -230,6 +292,15 @@ PATINA_INLINE real F_DielectricExact1(real f0, real c) {
 
 PATINA_INLINE vec3 F_DielectricExact(vec3 f0, real VoH) {
     return vec3(F_DielectricExact1(f0.x, VoH), F_DielectricExact1(f0.y, VoH), F_DielectricExact1(f0.z, VoH));
+}
+
+// A Fresnel weighted to F90 < 1 (withSpecular): f90 times the exact Fresnel of F0 / f90, so that
+// both ends scale as Schlick's do (an approximation of the weight, not a physical Fresnel).
+PATINA_INLINE vec3 F_DielectricExact90(vec3 f0, real f90, real VoH) {
+    if (f90 >= 1.0f) {
+        return F_DielectricExact(f0, VoH);
+    }
+    return f90 > 0.0f ? f90 * F_DielectricExact(f0 / f90, VoH) : vec3(0.0f);
 }
 
 // Burley 2012, "Physically-Based Shading at Disney", eq. 3 (not energy conserving: albedo 1.04

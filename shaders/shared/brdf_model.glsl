@@ -56,14 +56,42 @@ PATINA_INLINE real environmentVisibility(real NoV, real NoL, SurfaceMaterial mat
 #endif
 }
 
-PATINA_INLINE vec3 fresnel(vec3 f0, real VoH) {
+// F with F0 and F90 (SurfaceMaterial's f0 and f90; 1 but for KHR_materials_specular's weight).
+PATINA_INLINE vec3 fresnel(vec3 f0, real f90, real VoH) {
 #if PATINA_F == PATINA_F_SCHLICK_POW5
-    return F_Schlick(f0, VoH);
+    return F_Schlick90(f0, f90, VoH);
 #elif PATINA_F == PATINA_F_DIELECTRIC_EXACT
-    return F_DielectricExact(f0, VoH);
+    return F_DielectricExact90(f0, f90, VoH);
 #else
-    return F_SchlickSphericalGaussian(f0, VoH);
+    return F_SchlickSphericalGaussian90(f0, f90, VoH);
 #endif
+}
+
+// The base's F at V.H: the model's Fresnel of f0 and f90, with KHR_materials_iridescence's film
+// mixed in by its strength (the extension's "Iridescence BRDF": mix(F, F_film, iridescence), the
+// film's Fresnel at N.V over the dielectric and the metal, mixed by metallic as the lobes are).
+PATINA_INLINE vec3 surfaceFresnel(SurfaceMaterial material, real NoV, real VoH) {
+    vec3 F = fresnel(material.f0, material.f90, VoH);
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    if (material.iridescence > 0.0f) {
+        IridescentFresnel film = iridescentFresnel(material, NoV);
+        F = mix(F, mix(film.dielectric, film.metal, material.metallic), material.iridescence);
+    }
+#endif
+    return F;
+}
+
+// The dielectric's F alone at V.H (KHR_materials_specular's weight, the film's Fresnel over the
+// dielectric mixed in): what the layer beneath it loses.
+PATINA_INLINE vec3 dielectricFresnel(SurfaceMaterial material, real NoV, real VoH) {
+    real w = material.specularWeight;
+    vec3 F = fresnel(material.dielectricF0 * w, w, VoH);
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    if (material.iridescence > 0.0f) {
+        F = mix(F, iridescentFresnel(material, NoV).dielectric, material.iridescence);
+    }
+#endif
+    return F;
 }
 
 PATINA_INLINE vec3 diffuse(SurfaceMaterial material, real NoV, real NoL, real LoH) {
@@ -76,8 +104,10 @@ PATINA_INLINE vec3 diffuse(SurfaceMaterial material, real NoV, real NoL, real Lo
 #elif PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
     // glTF 2.0, Appendix B.3.5 (fresnel_mix): the dielectric's diffuse keeps what its specular
     // layer does not reflect, (1 - F_dielectric(VoH)) c_diff / pi, with the dielectric's own F0
-    // (not the metallic mix: the metal lobe has no diffuse to weigh). LoH = VoH.
-    return Fd_Lambert(material.diffuseColor) * (vec3(1.0f) - fresnel(material.dielectricF0, LoH));
+    // (not the metallic mix: the metal lobe has no diffuse to weigh). LoH = VoH. With
+    // KHR_materials_specular the Fresnel is RGB and weighted: the diffuse keeps 1 - its largest
+    // channel, 1 - max_value(w F) (the extension's fresnel_mix).
+    return Fd_Lambert(material.diffuseColor) * (1.0f - maxValue(dielectricFresnel(material, NoV, LoH)));
 #else
     return Fd_Lambert(material.diffuseColor);
 #endif
@@ -122,7 +152,7 @@ PATINA_INLINE BrdfValue evaluateBrdfFor(SurfaceMaterial material, vec3 N, vec3 V
                                                material.alphaB);
     }
 #endif
-    vec3 F = fresnel(material.f0, VoH);
+    vec3 F = surfaceFresnel(material, NoV, VoH);
     vec3 specular = (D * Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
     // LoH = VoH: H bisects L and V.
     return BrdfValue(diffuse(material, NoV, NoL, VoH), specular);
@@ -335,5 +365,5 @@ PATINA_INLINE InspectedTerms inspectedTerms(PackedLight light, SurfaceMaterial m
     real NoH = clamp(dot(N, H), 0.0f, 1.0f);
     real Vis = visibility(NoV, NoL, material);
     return InspectedTerms(distribution(NoH, cross(N, H), material.alpha), Vis * real(4.0f) * NoL * NoV,
-                          fresnel(material.f0, clamp(dot(V, H), 0.0f, 1.0f)));
+                          surfaceFresnel(material, NoV, clamp(dot(V, H), 0.0f, 1.0f)));
 }

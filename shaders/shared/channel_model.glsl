@@ -4,24 +4,31 @@
 // call these in the same order, each with its own list of lights.
 
 // The surface's fields: the material after its maps (deriveSurfaceMaterial's F0 and diffuse
-// colour from it), the occlusion and emission the maps give, the UVs, the tangent frame and the
+// colour from it, KHR_materials_specular's tint and weight applied), the occlusion and emission the maps give, the UVs, the tangent frame and the
 // normals. The lighting starts at 0. `tangent` as interpolated (w = 0: none).
-PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roughness, real specular, real metallic,
-                                           real occlusion, vec3 emission, vec2 uv0, vec2 uv1, vec4 tangent,
-                                           vec3 geometryNormal, vec3 N, vec3 V) {
-    SurfaceMaterial m = deriveSurfaceMaterial(baseColor, roughness, specular, metallic);
+PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roughness, real specular,
+                                           vec3 specularTint, real specularWeight, real metallic, real occlusion,
+                                           vec3 emission, vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal,
+                                           vec3 N, vec3 V) {
+    SurfaceMaterial m =
+        withSpecular(deriveSurfaceMaterial(baseColor, roughness, specular, metallic), specularTint, specularWeight);
     vec3 t = safeNormalize(vec3(tangent.x, tangent.y, tangent.z));
     real handedness = tangent.w > 0.0f ? 1.0f : (tangent.w < 0.0f ? -1.0f : 0.0f);
-    return ChannelInputs(baseColor, alpha, metallic, roughness, specular, m.f0, m.diffuseColor, occlusion, emission,
+    return ChannelInputs(baseColor, alpha, metallic, roughness, specular, specularTint, specularWeight, m.f0,
+                         m.diffuseColor, occlusion, emission,
                          uv0, uv1, geometryNormal, N, vec4(t.x, t.y, t.z, handedness), max(dot(N, V), MIN_N_DOT_V),
                          0.0f, 0.0f, vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f),
                          vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f));
 }
 
-// The material the base's lobes read: deriveSurfaceMaterial's, its diffuse reduced by a
+// The material the base's lobes read: deriveSurfaceMaterial's with its specular and its film, its diffuse reduced by a
 // transmission (transmission.glsl's transmissionDiffuse), as shade.frag shades it.
 PATINA_INLINE SurfaceMaterial channelMaterial(ChannelInputs c, ChannelLayers layers) {
-    SurfaceMaterial m = deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic);
+    SurfaceMaterial m = withSpecular(deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic),
+                                     c.specularTint, c.specularWeight);
+#ifdef PATINA_IRIDESCENT_FIELDS
+    m = withIridescence(m, layers.iridescence, layers.iridescenceIor, layers.iridescenceThickness);
+#endif
     return layers.transmits ? transmissionDiffuse(m, layers.transmissionFactor) : m;
 }
 

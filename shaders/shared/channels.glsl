@@ -47,7 +47,9 @@ struct ChannelInputs {
     real metallic;
     real roughness;
     real specular;
-    vec3 f0;
+    vec3 specularTint;     // KHR_materials_specular's (withSpecular; 1 without)
+    real specularWeight;
+    vec3 f0;               // the lobe's F0, mix(w F0_dielectric, c_base, m)
     vec3 diffuseColor;
     real occlusion;
     vec3 emission;
@@ -90,13 +92,17 @@ struct ChannelLayers {
     bool transmits;
     real transmissionFactor;
     Transmission transmission;
+    // KHR_materials_iridescence's film on the base (withIridescence's three; strength 0: none).
+    real iridescence;
+    real iridescenceIor;
+    real iridescenceThickness;
 };
 
 // A part without layers (the fields are not read).
 PATINA_INLINE ChannelLayers noChannelLayers() {
     return ChannelLayers(false, Clearcoat(0.0f, 0.0f, 0.0f, vec3(0.0f), 1.0f, 0.0f), false,
                          Sheen(vec3(0.0f), 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f), false, 0.0f,
-                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f));
+                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f, 1.0f), 0.0f, 1.3f, 0.0f);
 }
 
 // One light's light through the wall (transmission.glsl's transmissionLight; a hemisphere

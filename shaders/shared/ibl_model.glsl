@@ -63,13 +63,15 @@ struct ScatteredEnergy {
     vec3 multiple;   // Fms Ems
 };
 
-PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, vec2 ab, real NoV, real roughness) {
+// KHR_materials_specular's weight w (1 without) scales the lobe's Fresnel, so FssEss and F_avg
+// both (as the Khronos glTF-Sample-Viewer's IBL applies its specularWeight); `f0` before it.
+PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, real weight, vec2 ab, real NoV, real roughness) {
     real m = clamp(1.0f - NoV, 0.0f, 1.0f);
     real m5 = m * m * m * m * m;
     vec3 kS = f0 + (max(vec3(1.0f - roughness), f0) - f0) * m5;
-    vec3 single = kS * ab.x + vec3(ab.y);
+    vec3 single = weight * (kS * ab.x + vec3(ab.y));
     real ems = 1.0f - (ab.x + ab.y);
-    vec3 average = f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f);
+    vec3 average = weight * (f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f));
     return ScatteredEnergy(single, ems * single * average / (vec3(1.0f) - average * ems));
 }
 
@@ -85,8 +87,8 @@ PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, vec2 ab, real NoV, real r
 PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
     vec2 ab = environmentBrdfLookup(NoV, material.roughness);
 #if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
-    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, ab, NoV, material.roughness);
-    ScatteredEnergy metal = scatteredEnergy(material.baseColor, ab, NoV, material.roughness);
+    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
+    ScatteredEnergy metal = scatteredEnergy(material.baseColor, 1.0f, ab, NoV, material.roughness);
 #if PATINA_MS != PATINA_MS_FDEZ_AGUERA
     dielectric.multiple = vec3(0.0f);
     metal.multiple = vec3(0.0f);
@@ -94,17 +96,38 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
     vec3 single = mix(dielectric.single, metal.single, material.metallic);
     vec3 multiple = mix(dielectric.multiple, metal.multiple, material.metallic);
     vec3 specular = prefiltered * single + Fd_Lambert(multiple) * irradiance;
+    // 1 - the largest channel's albedo, as fresnel_mix weighs the diffuse by max_value (equal
+    // channels but for KHR_materials_specular's colour).
+    real beneath = minValue(vec3(1.0f) - dielectric.single - dielectric.multiple);
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    // KHR_materials_iridescence: the film's Fresnel at N.V weighs the prefiltered light in place
+    // of the split sum's, and the diffuse keeps 1 - its largest channel, mixed in by the film's
+    // strength (the extension's BRDF as the Khronos sample viewer lights it by an environment).
+    if (material.iridescence > 0.0f) {
+        IridescentFresnel film = iridescentFresnel(material, NoV);
+        specular = mix(specular, prefiltered * mix(film.dielectric, film.metal, material.metallic),
+                       material.iridescence);
+        beneath = mix(beneath, 1.0f - maxValue(film.dielectric), material.iridescence);
+    }
+#endif
 #if defined(PATINA_NO_DIFFUSE)
     return LightShares(vec3(0.0f), specular);
 #else
-    vec3 beneath = vec3(1.0f) - dielectric.single - dielectric.multiple;
     return LightShares(Fd_Lambert(material.diffuseColor) * beneath * irradiance, specular);
 #endif
 #else
-    vec3 specular = prefiltered * (material.f0 * ab.x + vec3(ab.y));
+    // F = f0 (1 - Fc) + f90 Fc: the table's A and B weigh f0 and f90 (1 but for a specular weight).
+    vec3 specular = prefiltered * (material.f0 * ab.x + vec3(material.f90 * ab.y));
 #if PATINA_MS == PATINA_MS_TURQUIN
     real albedo = max(ab.x + ab.y, 1e-4f);
     specular *= vec3(1.0f) + material.f0 * (1.0f / albedo - 1.0f);
+#endif
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    if (material.iridescence > 0.0f) {   // as above; these models' diffuse takes nothing for the specular
+        IridescentFresnel film = iridescentFresnel(material, NoV);
+        specular = mix(specular, prefiltered * mix(film.dielectric, film.metal, material.metallic),
+                       material.iridescence);
+    }
 #endif
 #if defined(PATINA_NO_DIFFUSE)
     return LightShares(vec3(0.0f), specular);
@@ -121,13 +144,14 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
 PATINA_INLINE vec3 transmittedEnvironmentWeight(SurfaceMaterial material, real NoV) {
     vec2 ab = environmentBrdfLookup(NoV, material.roughness);
 #if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
-    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, ab, NoV, material.roughness);
+    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
 #if PATINA_MS != PATINA_MS_FDEZ_AGUERA
     dielectric.multiple = vec3(0.0f);
 #endif
-    return vec3(1.0f) - dielectric.single - dielectric.multiple;
+    return vec3(minValue(vec3(1.0f) - dielectric.single - dielectric.multiple));
 #else
-    return vec3(1.0f) - (material.dielectricF0 * ab.x + vec3(ab.y));
+    real w = material.specularWeight;
+    return vec3(1.0f - maxValue(w * (material.dielectricF0 * ab.x + vec3(ab.y))));
 #endif
 }
 
@@ -211,7 +235,7 @@ PATINA_INLINE vec3 stochasticSpecular(EnvironmentSource source, real sourceFaceS
             real sampleSolidAngle = 1.0f / (real(count) * pdf);
             real lod = max(0.5f * log2(sampleSolidAngle / texelSolidAngle) + 1.0f, 0.0f);
             real gVis = environmentVisibility(NoV, min(NoL, 1.0f), material) * 4.0f * NoL * VoH / NoH;
-            sum += sampleEnvironmentSource(source, L, lod) * fresnel(material.f0, VoH) * gVis;
+            sum += sampleEnvironmentSource(source, L, lod) * surfaceFresnel(material, NoV, VoH) * gVis;
         }
     }
     return sum / real(count) * energyCompensation(material.f0, NoV, material.roughness);

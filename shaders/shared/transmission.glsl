@@ -26,7 +26,8 @@
 
 struct Transmission {
     vec3 color;     // transmission (1 - metallic) baseColor T: what passes, tinted and attenuated
-    vec3 f0;        // the dielectric's F0 (0.08 specular)
+    vec3 f0;        // the dielectric's F0 (0.08 specular, KHR_materials_specular's tint in)
+    real weight;    // KHR_materials_specular's weight of its Fresnel (1 without)
     real alpha;     // the base's roughness^2: the wall's GGX
     real NoV;       // N.V, floored at MIN_N_DOT_V as the base's
 };
@@ -44,8 +45,8 @@ PATINA_INLINE vec3 volumeAttenuation(vec3 attenuationColor, real attenuationDist
 // volume's T.
 PATINA_INLINE Transmission deriveTransmission(SurfaceMaterial material, real transmission, vec3 attenuation, vec3 N,
                                               vec3 V) {
-    return Transmission(material.diffuseColor * (transmission * attenuation), material.dielectricF0, material.alpha,
-                        max(dot(N, V), MIN_N_DOT_V));
+    return Transmission(material.diffuseColor * (transmission * attenuation), material.dielectricF0,
+                        material.specularWeight, material.alpha, max(dot(N, V), MIN_N_DOT_V));
 }
 
 // The diffuse that stays: mix(diffuse_brdf, specular_btdf, transmission)'s first term.
@@ -55,11 +56,12 @@ PATINA_INLINE SurfaceMaterial transmissionDiffuse(SurfaceMaterial material, real
     return kept;
 }
 
-// Schlick's Fresnel of F0 at V.H (glTF 2.0 Appendix B), whatever the model's own.
-PATINA_INLINE vec3 transmissionFresnel(vec3 f0, real VoH) {
-    real m = clamp(1.0f - VoH, 0.0f, 1.0f);
-    real m2 = m * m;
-    return f0 + (vec3(1.0f) - f0) * (m2 * m2 * m);
+// What the wall's reflection leaves to the light through it at V.H: 1 - w F with Schlick's F of
+// the dielectric's F0 (glTF 2.0 Appendix B, whatever the model's own) weighted by
+// KHR_materials_specular's w, its largest channel (the extension's max_value: the transmission is
+// fresnel_mix's base).
+PATINA_INLINE vec3 transmissionKept(Transmission t, real VoH) {
+    return vec3(minValue(vec3(1.0f) - F_Schlick90(t.f0 * t.weight, t.weight, VoH)));
 }
 
 // f_t towards a light along unit L behind the surface (N.L < 0), times the colour, no cosine
@@ -74,7 +76,7 @@ PATINA_INLINE vec3 transmissionBtdf(Transmission t, vec3 N, vec3 V, vec3 L) {
     real NoH = clamp(dot(N, H), 0.0f, 1.0f);
     real VoH = clamp(dot(V, H), 0.0f, 1.0f);
     real lobe = D_GGX(NoH, cross(N, H), t.alpha) * V_SmithGGXCorrelated(t.NoV, min(-NoL, 1.0f), t.alpha);
-    return t.color * (vec3(1.0f) - transmissionFresnel(t.f0, VoH)) * lobe;
+    return t.color * transmissionKept(t, VoH) * lobe;
 }
 
 // Light of `radiance` arriving along unit L with back-side arrival `illuminance` (|N.L| for a
@@ -105,9 +107,9 @@ PATINA_INLINE vec3 transmissionDirectionalLight(PackedLight light, Transmission 
 }
 
 // A hemisphere light seen through along -V: its sky or ground as hemisphereRadiance blends them
-// at -V, weighted by 1 - F(N.V).
+// at -V, weighted by 1 - F(N.V) (transmissionKept).
 PATINA_INLINE vec3 transmissionHemisphereLight(PackedLight light, Transmission t, vec3 V) {
-    return transmissionThrough(t, hemisphereRadiance(light, -V), vec3(1.0f) - transmissionFresnel(t.f0, t.NoV));
+    return transmissionThrough(t, hemisphereRadiance(light, -V), transmissionKept(t, t.NoV));
 }
 
 // A sphere light through the wall as a point light at its centre (as sheen.glsl lights its lobe).

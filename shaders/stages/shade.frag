@@ -105,6 +105,21 @@ uniform float uClearcoatRoughness;   // clearcoatRoughnessFactor
 #define COATED(term)
 #endif
 
+// KHR_materials_specular's tint of F0 and weight of its Fresnel (withSpecular), only for a
+// material that has them or their maps (hasSpecularTint).
+#ifdef PATINA_SPECULAR
+uniform vec3 uSpecularTint;
+uniform float uSpecularWeight;
+#endif
+
+// KHR_materials_iridescence's thin film (withIridescence), only for a material that has one
+// (hasIridescence).
+#ifdef PATINA_IRIDESCENCE
+uniform float uIridescence;            // iridescenceFactor
+uniform float uIridescenceIor;         // iridescenceIor
+uniform vec2 uIridescenceThickness;    // iridescenceThicknessMinimum, iridescenceThicknessMaximum (nm)
+#endif
+
 #ifdef PATINA_ANISOTROPY
 uniform float uAnisotropyStrength;   // anisotropyStrength
 uniform vec2 uAnisotropyDirection;   // (cos, sin) of anisotropyRotation
@@ -438,10 +453,11 @@ uniform float uChannelAlpha;   // the item's alpha (BLEND's factor), which only 
 
 // `layers`: the part's coat, sheen and transmission (CHANNEL_CLEARCOAT, CHANNEL_SHEEN,
 // CHANNEL_TRANSMISSION), as main derives them.
-vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, float metallic, float occlusion, vec3 emission,
-                      vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal, vec3 N, vec3 V, ChannelLayers layers) {
-    ChannelInputs c = channelSurface(baseColor, alpha, roughness, uSpecular, metallic, occlusion, emission, uv0, uv1,
-                                     tangent, geometryNormal, N, V);
+vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, vec3 specularTint, float specularWeight,
+                      float metallic, float occlusion, vec3 emission, vec2 uv0, vec2 uv1, vec4 tangent,
+                      vec3 geometryNormal, vec3 N, vec3 V, ChannelLayers layers) {
+    ChannelInputs c = channelSurface(baseColor, alpha, roughness, uSpecular, specularTint, specularWeight, metallic,
+                                     occlusion, emission, uv0, uv1, tangent, geometryNormal, N, V);
     for (int i = 0; i < uLightCount.x; ++i) {
         c = channelWithLight(c, layers, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
     }
@@ -484,6 +500,25 @@ void main() {
     float occlusion = surfaceOcclusion();
 #else
     SurfaceMaterial material = deriveSurfaceMaterial(uBaseColor, uRoughness, uSpecular, uMetallic);
+#endif
+#if defined(PATINA_SPECULAR) && defined(PATINA_TEXTURED)
+    vec3 specularTint = mappedSpecularTint(uSpecularTint);
+    float specularWeight = mappedSpecularWeight(uSpecularWeight);
+#elif defined(PATINA_SPECULAR)
+    vec3 specularTint = uSpecularTint;
+    float specularWeight = uSpecularWeight;
+#else
+    vec3 specularTint = vec3(1.0f);   // what deriveSurfaceMaterial's material has
+    float specularWeight = 1.0f;
+#endif
+#ifdef PATINA_SPECULAR
+    material = withSpecular(material, specularTint, specularWeight);
+#endif
+#if defined(PATINA_IRIDESCENCE) && defined(PATINA_TEXTURED)
+    material = withIridescence(material, mappedIridescence(uIridescence), uIridescenceIor,
+                               mappedIridescenceThickness(uIridescenceThickness));
+#elif defined(PATINA_IRIDESCENCE)
+    material = withIridescence(material, uIridescence, uIridescenceIor, uIridescenceThickness.y);
 #endif
     vec3 N = safeNormalize(vNormal);
 #ifdef PATINA_PROBE
@@ -577,12 +612,18 @@ void main() {
     layers.transmissionFactor = transmissionFactor;
     layers.transmission = transmission;
 #endif
+#ifdef PATINA_IRIDESCENCE
+    layers.iridescence = material.iridescence;
+    layers.iridescenceIor = material.iridescenceIor;
+    layers.iridescenceThickness = material.iridescenceThickness;
+#endif
 #ifdef PATINA_TEXTURED
-    vec3 channel = inspectedChannel(mapped.baseColor, mapped.alpha, mapped.roughness, mapped.metallic, occlusion,
-                                    surfaceEmission(), vUv0, vUv1, vTangent, geometryNormal, N, V, layers);
+    vec3 channel = inspectedChannel(mapped.baseColor, mapped.alpha, mapped.roughness, specularTint, specularWeight,
+                                    mapped.metallic, occlusion, surfaceEmission(), vUv0, vUv1, vTangent, geometryNormal,
+                                    N, V, layers);
 #else
-    vec3 channel = inspectedChannel(uBaseColor, uChannelAlpha, uRoughness, uMetallic, 1.0f, vec3(0.0f), vec2(0.0f), vec2(0.0f),
-                                    vec4(0.0f), geometryNormal, N, V, layers);
+    vec3 channel = inspectedChannel(uBaseColor, uChannelAlpha, uRoughness, specularTint, specularWeight, uMetallic, 1.0f,
+                                    vec3(0.0f), vec2(0.0f), vec2(0.0f), vec4(0.0f), geometryNormal, N, V, layers);
 #endif
     // Data, not light: no exposure or tone map in the display value either.
 #ifdef PATINA_STAMPED
@@ -608,7 +649,7 @@ void main() {
                                            transmittedEnvironmentWeight(material, transmission.NoV));
 #else
         transmitted += transmissionThrough(transmission, behind.rgb,
-                                           vec3(1.0f) - transmissionFresnel(transmission.f0, transmission.NoV));
+                                           transmissionKept(transmission, transmission.NoV));
 #endif
     }
 #endif

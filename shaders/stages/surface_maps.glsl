@@ -13,7 +13,9 @@ in vec4 vTangent;   // world space; w = 0: the vertex has none
 // 1 metallic-roughness, 2 normal, 3 occlusion, 4 emissive, then KHR_materials_clearcoat's
 // 5 coat, 6 coat roughness, 7 coat normal (read only with PATINA_CLEARCOAT), then
 // KHR_materials_sheen's 8 sheen colour, 9 sheen roughness (only with PATINA_SHEEN), then
-// KHR_materials_transmission's 10 and KHR_materials_volume's 11 (only with PATINA_TRANSMISSION). A sampler array
+// KHR_materials_transmission's 10 and KHR_materials_volume's 11 (only with PATINA_TRANSMISSION), then
+// KHR_materials_specular's 12 specular colour and 13 specular (only with PATINA_SPECULAR), then
+// KHR_materials_iridescence's 14 and 15 (only with PATINA_IRIDESCENCE). A sampler array
 // could be indexed only by constants in GLSL 3.30, so each has its own name.
 uniform sampler2D uBaseColorMap;
 uniform sampler2D uMetallicRoughnessMap;
@@ -27,8 +29,12 @@ uniform sampler2D uSheenColorMap;
 uniform sampler2D uSheenRoughnessMap;
 uniform sampler2D uTransmissionMap;
 uniform sampler2D uThicknessMap;
-uniform vec4 uMapPlacement[12];   // KHR_texture_transform: offset (xy), scale (zw)
-uniform vec2 uMapRotationSet[12];   // its rotation; the UV set read, -1 where there is no map
+uniform sampler2D uSpecularColorMap;
+uniform sampler2D uSpecularMap;
+uniform sampler2D uIridescenceMap;
+uniform sampler2D uIridescenceThicknessMap;
+uniform vec4 uMapPlacement[16];   // KHR_texture_transform: offset (xy), scale (zw)
+uniform vec2 uMapRotationSet[16];   // its rotation; the UV set read, -1 where there is no map
 uniform float uBaseAlpha;          // baseColorFactor's alpha
 uniform float uAlphaCutoff;        // MASK's; negative for OPAQUE and BLEND
 uniform float uNormalScale;
@@ -131,6 +137,29 @@ float mappedTransmission(float factor) {
 }
 float mappedThickness(float thickness) {
     return thickness * MAP_TEXEL(11, uThicknessMap, vec4(1.0f)).y;
+}
+#endif
+
+#ifdef PATINA_SPECULAR
+// KHR_materials_specular's maps: the tint times its map's RGB (sRGB, decoded by the texture; the
+// extension's specularColorTexture multiplies specularColorFactor, which the tint stands for), the
+// weight times its map's A.
+vec3 mappedSpecularTint(vec3 tint) {
+    return tint * MAP_TEXEL(12, uSpecularColorMap, vec4(1.0f)).xyz;
+}
+float mappedSpecularWeight(float weight) {
+    return weight * MAP_TEXEL(13, uSpecularMap, vec4(1.0f)).w;
+}
+#endif
+
+#ifdef PATINA_IRIDESCENCE
+// KHR_materials_iridescence's maps: the strength times its map's R; the thickness between the
+// range's minimum (x) and maximum (y) by its map's G, the maximum without one.
+float mappedIridescence(float factor) {
+    return factor * MAP_TEXEL(14, uIridescenceMap, vec4(1.0f)).x;
+}
+float mappedIridescenceThickness(vec2 range) {
+    return hasMap(15) ? mix(range.x, range.y, mapTexel(uIridescenceThicknessMap, mapCoordinate(15)).y) : range.y;
 }
 #endif
 

@@ -149,7 +149,8 @@ TEST_F(AccuracyCommands, BenchRenderWritesEveryPathTargetAndChart) {
                                "brdf-model specialised-epic-default-scene ", "brdf-model specialised-gltf-default-scene "}) {
         EXPECT_EQ(perSeries[series], 1) << series;   // glTF's BRDF against the seed's, one row each
     }
-    for (const char* layer : {"", "-clearcoat", "-sheen", "-transmission"}) {   // issue 36: each layer against the bare gltf
+    // Issue 36: each layer against the bare gltf.
+    for (const char* layer : {"", "-clearcoat", "-sheen", "-transmission", "-anisotropy", "-specular", "-iridescence"}) {
         for (const char* shown : {"", "-default-scene"}) {
             const std::string series = std::string("layers specialised-gltf") + layer + shown + " ";
             EXPECT_EQ(perSeries[series], 1) << series;

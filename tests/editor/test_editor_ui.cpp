@@ -380,6 +380,64 @@ TEST_F(EditorUi, APartsTransmissionAndVolumeAreDraggedUndoneAndSaved) {
     EXPECT_EQ(modelMaterial(state_, state_.scene, 0).transmission, 0.0f);
 }
 
+// KHR_materials_specular and _ior in the editor: a part's Specular colour section, closed on a
+// part without a tint or weight; the weight dragged to 0 takes the reflection off the part (the
+// picture changes) in one undo step, the scene saves it, and Ctrl+Z puts it back.
+TEST_F(EditorUi, APartsSpecularWeightIsDraggedUndoneAndSaved) {
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 1600);   // the section lies below an 800-pixel panel's end
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().count("Specular weight")) << "closed on a part without one";
+    click(centreOf("Specular colour"));
+    frames(1);
+    EXPECT_TRUE(itemsOfLastFrame().count("Specular tint"));
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Specular weight", &min, &max));
+    drag(ImVec2(min.x + 2.0f, (min.y + max.y) * 0.5f), ImVec2(min.x - 40.0f, (min.y + max.y) * 0.5f));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).specularWeight, 0.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    frames(1);
+    EXPECT_GT(differingPixels(before, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    const Json saved = sceneToJson(state_.scene);
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["specularWeight"], 0.0);
+    EXPECT_FALSE(saved["modelMaterials"][0]["material"].contains("specularTint")) << "1, the default: not written";
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).specularWeight, 1.0f);
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+}
+
+// KHR_materials_iridescence in the editor: a part's Iridescence section, closed on a part
+// without a film; Add iridescence colours the picture in one undo step, the scene saves the film,
+// Remove takes it off and Ctrl+Z puts it back whole.
+TEST_F(EditorUi, APartsFilmIsAddedAndRemovedWholeInOneStep) {
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 1600);   // the section lies below an 800-pixel panel's end
+    exportGltfModel(path("two.glb"), test::twoBalls());
+    ASSERT_TRUE(openFile(state_, path("two.glb"))) << state_.error;
+    frames(2);
+    EXPECT_FALSE(itemsOfLastFrame().count("Film thickness")) << "closed on a part without one";
+    click(centreOf("Iridescence"));
+    frames(1);
+    const LdrImage before = services_->viewportPixels(EditorServices::Shown::Edited);
+    click(centreOf("Add iridescence"));
+    frames(1);
+    Material part = modelMaterial(state_, state_.scene, 0);
+    EXPECT_EQ(part.iridescence, 1.0f);
+    EXPECT_EQ(state_.history.undoSteps(), 1u);
+    EXPECT_NE(state_.status.find("Added the thin film to"), std::string::npos) << state_.status;
+    EXPECT_GT(differingPixels(before, services_->viewportPixels(EditorServices::Shown::Edited)), 50);
+    EXPECT_TRUE(itemsOfLastFrame().count("Film thickness"));
+    const Json saved = sceneToJson(state_.scene);
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["iridescence"], 1.0);
+    EXPECT_EQ(saved["modelMaterials"][0]["material"]["iridescenceThicknessMaximum"], 400.0);
+    click(centreOf("Remove iridescence"));
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).iridescence, 0.0f);
+    press(kKeyZ, true);
+    EXPECT_EQ(modelMaterial(state_, state_.scene, 0).iridescence, 1.0f) << "back whole";
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+}
+
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     const size_t before = state_.scene.lights.size();
     click(centreOf("Add point"));

@@ -185,6 +185,35 @@ TEST_F(ModelMaps, TheTransmissionAndThicknessMapsScaleTheirFactors) {
     EXPECT_GT(largestRelativeError(test::pixel(shown, opaque.x, opaque.y), test::pixel(plain, opaque.x, opaque.y)), 0.1f);
 }
 
+// KHR_materials_specular's maps: the colour map's RGB (sRGB) scales the tint, the specular map's
+// A the weight (one image holds both here); each quadrant is the quad drawn with the factors its
+// texel stands for, and without the maps the picture differs.
+TEST_F(ModelMaps, TheSpecularMapsScaleTheTintAndTheWeight) {
+    const Scene scene = quadScene();
+    const std::vector<uint8_t> rgba{255, 40, 40, 255, 40, 255, 40, 128, 200, 200, 255, 0, 255, 255, 255, 64};
+    ModelMaterial tinted = factors(glm::vec3(0.2f, 0.3f, 0.4f));
+    tinted.factors.roughness = 0.3f;
+    tinted.factors.specular = 1.0f;
+    tinted.factors.specularTint = {4.0f, 2.0f, 1.0f};
+    tinted.factors.specularWeight = 0.9f;
+    ModelMaterial mapped = tinted;
+    mapped.specularColor = nearestSlot();
+    mapped.specular = nearestSlot();
+    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
+    for (size_t q = 0; q < 4; ++q) {
+        ModelMaterial expected = tinted;
+        for (int c = 0; c < 3; ++c) {
+            expected.factors.specularTint[c] *= shader::srgbDecode(rgba[q * 4 + size_t(c)] / 255.0f);
+        }
+        expected.factors.specularWeight *= rgba[q * 4 + 3] / 255.0f;
+        expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
+    }
+    const HdrImage plain = render(scene, oneQuad(quad(), tinted), RenderPath::Single, 1);
+    const HdrImage shown = render(scene, model, RenderPath::Single, 1);
+    const glm::ivec2 at = pixelOf(scene, kQuadrants[2]);
+    EXPECT_GT(largestRelativeError(test::pixel(shown, at.x, at.y), test::pixel(plain, at.x, at.y)), 0.05f);
+}
+
 // The specialised path compiles a program for each set of maps the items have (PATINA_MAP_SET),
 // so a map an item lacks costs it nothing, and draws the same picture as the single path, whose
 // one program asks the uniforms which maps there are.
@@ -417,6 +446,8 @@ std::vector<uint8_t> pattern(int width, int height, unsigned seed) {
 
 // A material with all five maps, on images 0 to 4 (patterns()), a normal map transform, emission
 // and MASK; roughness 0.9 (D is steep at low roughness, where the filters' rounding would show).
+// KHR_materials_specular's two maps read images 1 and 4 again, over a tinted F0 and a weight;
+// KHR_materials_iridescence's images 0 and 3, over a film.
 ModelMaterial everyMap() {
     ModelMaterial mapped = factors(glm::vec3(0.9f, 0.8f, 0.7f));
     mapped.factors.metallic = 0.6f;
@@ -425,6 +456,17 @@ ModelMaterial everyMap() {
     for (const MapOf<TextureSlot>& map : mapsOf(mapped)) {
         map.slot->image = image++;
     }
+    mapped.factors.specular = 1.0f;
+    mapped.factors.specularTint = {3.0f, 1.0f, 0.5f};
+    mapped.factors.specularWeight = 0.8f;
+    mapped.specularColor.image = 1;
+    mapped.specular.image = 4;
+    // KHR_materials_iridescence's two read images 0 and 3, over a film.
+    mapped.factors.iridescence = 0.9f;
+    mapped.factors.iridescenceThicknessMinimum = 150.0f;
+    mapped.factors.iridescenceThicknessMaximum = 700.0f;
+    mapped.iridescenceMap.image = 0;
+    mapped.iridescenceThickness.image = 3;
     mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
     mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
     mapped.alphaMode = AlphaMode::Mask;

@@ -208,7 +208,7 @@ TEST(TransmissionRender, TheSceneBehindIsSeenThrough) {
     const glm::ivec2 overRed = test::pixelOf(scene.camera, {-0.6f, 0.0f, 0.5f}, size, size);
     const glm::ivec2 overNothing = test::pixelOf(scene.camera, {0.6f, 0.0f, 0.5f}, size, size);
     const glm::vec3 V = glm::normalize(scene.camera.position - glm::vec3(-0.6f, 0.0f, 0.5f));
-    const float F = shader::transmissionFresnel(glm::vec3(0.04f), V.z).x;
+    const float F = shader::F_Schlick(glm::vec3(0.04f), V.z).x;
     const HdrImage redImage = render(redAlone, RenderPath::Single);
     const glm::vec3 redSeen = test::pixel(redImage, overRed.x, overRed.y);
     ASSERT_GT(redSeen.x, 0.05f);

@@ -263,20 +263,30 @@ TEST_F(Gltf, MaterialFactorsAndSpecularMapping) {
     EXPECT_EQ(factors.metallic, 0.7f);
     EXPECT_EQ(factors.roughness, 0.25f);
 
-    auto specularOf = [&](const Json& extensions) {
-        return importMaterial(file, {{"extensions", extensions}}).specular;
-    };
+    auto materialOf = [&](const Json& extensions) { return importMaterial(file, {{"extensions", extensions}}); };
+    auto specularOf = [&](const Json& extensions) { return materialOf(extensions).specular; };
     const double water = std::pow(0.33 / 2.33, 2);
     EXPECT_NEAR(specularOf({{"KHR_materials_ior", {{"ior", 1.33}}}}), water / 0.08, 1e-6);
-    EXPECT_NEAR(specularOf({{"KHR_materials_specular", {{"specularFactor", 0.5}}}}), 0.25, 1e-6);
-    // The largest channel of specularColorFactor: 1.5 * 0.04 = 0.06.
-    EXPECT_NEAR(specularOf({{"KHR_materials_specular", {{"specularColorFactor", {0.2, 1.5, 0.7}}}}}), 0.75, 1e-6);
-    // min(f0 * colour, 1) * factor, then clamped to Patina's [0, 1] (F0 up to 0.08).
-    EXPECT_EQ(specularOf({{"KHR_materials_ior", {{"ior", 2.42}}}}), 1.0f);
-    EXPECT_EQ(specularOf({{"KHR_materials_specular", {{"specularFactor", 0}}}}), 0.0f);
+    // specularFactor is the Fresnel's weight (F0 and F90), not folded into specular.
+    const Material weighted = materialOf({{"KHR_materials_specular", {{"specularFactor", 0.5}}}});
+    EXPECT_NEAR(weighted.specular, 0.5, 1e-6);
+    EXPECT_EQ(weighted.specularWeight, 0.5f);
+    EXPECT_EQ(weighted.specularTint, glm::vec3(1.0f));
+    // The largest channel of F0 = 0.04 specularColorFactor is specular (1.5 * 0.04 = 0.06: 0.75),
+    // the colour the tint: (0.2, 1.5, 0.7) / 1.5.
+    const Material coloured = materialOf({{"KHR_materials_specular", {{"specularColorFactor", {0.2, 1.5, 0.7}}}}});
+    EXPECT_NEAR(coloured.specular, 0.75, 1e-6);
+    EXPECT_NEAR(coloured.specularTint.r, 0.2 / 1.5, 1e-6);
+    EXPECT_EQ(coloured.specularTint.g, 1.0f);
+    EXPECT_NEAR(coloured.specularTint.b, 0.7 / 1.5, 1e-6);
+    // Past F0 0.08 (diamond, ior 2.42): specular 1 and the rest in the tint, F0 0.172 itself.
+    const Material diamond = materialOf({{"KHR_materials_ior", {{"ior", 2.42}}}});
+    EXPECT_EQ(diamond.specular, 1.0f);
+    EXPECT_NEAR(0.08 * diamond.specularTint.r, std::pow(1.42 / 3.42, 2), 1e-6);
+    EXPECT_EQ(materialOf({{"KHR_materials_specular", {{"specularFactor", 0}}}}).specularWeight, 0.0f);
     EXPECT_NEAR(specularOf({{"KHR_materials_specular", {{"specularFactor", 0.5}, {"specularColorFactor", {2, 2, 2}}}},
                             {"KHR_materials_ior", {{"ior", 1.5}}}}),
-                0.5, 1e-6);
+                1.0, 1e-6);
     // Factors outside [0, 1] are clamped.
     const Material clamped = importMaterial(
         file, {{"pbrMetallicRoughness", {{"baseColorFactor", {2, -1, 0.5, 1}}, {"metallicFactor", 3}}}});

@@ -46,14 +46,20 @@ void expectSameMaterial(const Material& a, const Material& b) {
     EXPECT_NEAR(a.roughness, b.roughness, 1e-6);
     EXPECT_NEAR(a.specular, b.specular, 1e-6);
     EXPECT_NEAR(a.metallic, b.metallic, 1e-6);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a.specularTint[i], b.specularTint[i], 1e-6);
+    }
+    EXPECT_EQ(a.specularWeight, b.specularWeight);
 }
 
 TEST_F(GltfExport, ImportGivesBackTheMaterialAndTheTriangles) {
-    Material black = unusualMaterial(), white = unusualMaterial();
+    Material black = unusualMaterial(), white = unusualMaterial(), tinted = unusualMaterial();
     black.specular = 0.0f;
     white.specular = 1.0f;
+    tinted.specularTint = {0.25f, 1.0f, 0.5f};   // KHR_materials_specular's colour and factor
+    tinted.specularWeight = 0.375f;
     const Mesh torus = makeTorus();
-    for (const Material& material : {Material{}, unusualMaterial(), black, white}) {
+    for (const Material& material : {Material{}, unusualMaterial(), black, white, tinted}) {
         for (const auto& [name, buffer] : {std::pair{"t.gltf", GltfBuffer::Embedded},
                                            std::pair{"t b.gltf", GltfBuffer::BinFile},
                                            std::pair{"t.glb", GltfBuffer::Embedded}}) {
@@ -84,6 +90,17 @@ TEST_F(GltfExport, SpecularIsWrittenSoThatF0Is008TimesSpecular) {
         EXPECT_NEAR(channel.get<double>(), 0.6, 1e-7);
     }
     EXPECT_EQ(json["extensionsUsed"], Json::array({"KHR_materials_specular", "KHR_materials_ior"}));
+    // A tint beyond white (an F0 of 0.24, a gem's) and a weight: 2 * 0.3 * tint, specularFactor
+    // the weight, validator-clean (the colour factor has no upper bound).
+    material.specularTint = {12.5f, 1.0f, 0.0f};
+    material.specularWeight = 0.5f;
+    exportGltf(path("gem.gltf"), makeUvSphere(4, 8), material);
+    const Json gem = readJsonFile(path("gem.gltf"))["materials"][0]["extensions"]["KHR_materials_specular"];
+    EXPECT_EQ(gem["specularFactor"], 0.5);
+    EXPECT_NEAR(gem["specularColorFactor"][0].get<double>(), 7.5, 1e-6);
+    EXPECT_NEAR(gem["specularColorFactor"][1].get<double>(), 0.6, 1e-7);
+    EXPECT_EQ(gem["specularColorFactor"][2].get<double>(), 0.0);
+    expectValid(path("gem.gltf"));
 }
 
 TEST_F(GltfExport, TheKhronosValidatorFindsNoErrorsOrWarnings) {

@@ -2,6 +2,7 @@
 // as draw items, shared primitives with UVs and tangents, materials with their maps, samplers
 // and transforms, images decoded or left out with a note. Real files from Debian's
 // assimp-testmodels are in test_gltf_assets.cpp.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <thread>
@@ -15,6 +16,7 @@
 #include "gltf_builder.h"
 #include "image/image.h"
 #include "scratch_test.h"
+#include "shading/cpu_shading.h"
 
 namespace patina {
 namespace {
@@ -351,39 +353,99 @@ TEST_F(GltfModel, VertexColoursAreReadInEveryFormTheSpecAllows) {
     EXPECT_EQ(mesh.colors[mesh.indices[3]], glm::vec4(0.1f, 0.2f, 0.3f, 1));
 }
 
-// KHR_materials_specular and _ior as Patina draws them (docs/FORMATS.md): a grey F0 of at most
-// 0.08 with F90 1. What of a file's values that cannot show is said in a note naming the
-// material; what can (Patina's own export: a grey colour, ior 1.5, specularFactor 1) is not.
-TEST_F(GltfModel, WhatOfTheSpecularPatinaCannotShowIsNoted) {
+// KHR_materials_specular and _ior as the extensions define the dielectric (docs/FORMATS.md):
+// F0 = min(((ior - 1) / (ior + 1))^2 specularColorFactor, 1) specularFactor per channel and
+// F90 = specularFactor, read into specular, specularTint and specularWeight so that the shader's
+// F0 and F90 are the file's. Only the two maps, not read, are noted.
+TEST_F(GltfModel, SpecularAndIorAreReadAsTheDielectricsF0AndF90) {
     GltfBuilder model = cubeModel();
-    const Json cases[] = {
-        {{"KHR_materials_specular", {{"specularColorFactor", {1.0, 0.6, 0.5}}}}},
-        {{"KHR_materials_ior", {{"ior", 2.4}}}},
-        {{"KHR_materials_specular", {{"specularFactor", 0.5}}}},
-        {{"KHR_materials_specular", {{"specularTexture", {{"index", 0}}}, {"specularColorTexture", {{"index", 0}}}}}},
-        {{"KHR_materials_specular", {{"specularColorFactor", {1.8, 1.8, 1.8}}}}, {"KHR_materials_ior", {{"ior", 1.5}}}},
+    struct Case {
+        Json extensions;
+        double ior;
+        glm::dvec3 color;
+        double factor;
     };
-    const char* said[] = {"its specularColorFactor (1, 0.6, 0.5) is drawn grey, at its largest",
-                          "its F0 of 0.17 (ior 2.4) is drawn as 0.08",
-                          "its specularFactor 0.5 lowers F90 to 0.5 in glTF, Patina's stays 1",
-                          "its specularTexture is not read (the factors alone); its specularColorTexture is not read", ""};
+    const Case cases[] = {
+        {Json::object(), 1.5, glm::dvec3(1.0), 1.0},
+        {{{"KHR_materials_specular", {{"specularColorFactor", {1.0, 0.6, 0.5}}}}}, 1.5, {1.0, 0.6, 0.5}, 1.0},
+        {{{"KHR_materials_ior", {{"ior", 2.4}}}}, 2.4, glm::dvec3(1.0), 1.0},
+        {{{"KHR_materials_specular", {{"specularFactor", 0.5}}}}, 1.5, glm::dvec3(1.0), 0.5},
+        {{{"KHR_materials_specular", {{"specularColorFactor", {30.0, 1.8, 0.0}}, {"specularFactor", 0.25}}},
+          {"KHR_materials_ior", {{"ior", 1.33}}}},
+         1.33,
+         {30.0, 1.8, 0.0},
+         0.25},
+        {{{"KHR_materials_ior", {{"ior", 0.0}}}, {"KHR_materials_specular", {{"specularColorFactor", {0.9, 0.5, 0.1}}}}},
+         0.0,
+         {0.9, 0.5, 0.1},
+         1.0},   // the spec-gloss conversion: ior 0 is F0 1, the colour F0 itself
+        {{{"KHR_materials_ior", {{"ior", 1.0}}}}, 1.0, glm::dvec3(1.0), 1.0},   // no reflection
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.extensions.dump());
+        model.json["materials"][0]["extensions"] = c.extensions;
+        const Model loaded = load(model);
+        const MaterialParameters& factors = loaded.materials[0].factors;
+        const shader::SurfaceMaterial surface = surfaceMaterial(factors);
+        const double r = (c.ior - 1.0) / (c.ior + 1.0);
+        for (int channel = 0; channel < 3; ++channel) {
+            const double f0 = std::min(r * r * c.color[channel], 1.0);
+            EXPECT_NEAR(surface.dielectricF0[channel] * surface.specularWeight, f0 * c.factor, 1e-6) << channel;
+        }
+        // F90: the dielectric's weight, the metal's 1, mixed by metallic (the cube's is glTF's default 1).
+        const float m = factors.metallic;
+        EXPECT_FLOAT_EQ(surface.f90, float(c.factor) * (1.0f - m) + m);
+        EXPECT_EQ(surface.specularWeight, float(c.factor));
+        EXPECT_LE(factors.specular, 1.0f);
+        EXPECT_EQ(allNotes(loaded).find("KHR_materials_specular"), std::string::npos) << allNotes(loaded);
+    }
+    // Patina's own dielectric comes back as it was: specular 0.5, no tint, no weight.
+    model.json["materials"][0]["extensions"] = Json::object();
+    const MaterialParameters plain = load(model).materials[0].factors;
+    EXPECT_EQ(plain.specular, 0.5f);
+    EXPECT_EQ(plain.specularTint, glm::vec3(1.0f));
+    EXPECT_EQ(plain.specularWeight, 1.0f);
+    // The two maps are read as the core maps are: the colour's with its UV set.
     model.add("images", {{"uri", "map.png"}});
     model.add("textures", {{"source", 0}});
-    for (size_t c = 0; c < std::size(cases); ++c) {
-        model.json["materials"][0]["extensions"] = cases[c];
-        model.json["materials"][0]["name"] = "tinted";
-        const std::string notes = allNotes(load(model));
-        SCOPED_TRACE(cases[c].dump());
-        if (*said[c]) {
-            EXPECT_NE(notes.find("material \"tinted\" (/materials/0): KHR_materials_specular and _ior are drawn as "
-                                 "Patina's grey dielectric F0 (0.08 at most): "),
-                      std::string::npos)
-                << notes;
-            EXPECT_NE(notes.find(said[c]), std::string::npos) << notes;
-        } else {
-            EXPECT_EQ(notes.find("KHR_materials_specular"), std::string::npos) << notes;
-        }
-    }
+    model.json["materials"][0]["extensions"] = {
+        {"KHR_materials_specular",
+         {{"specularTexture", {{"index", 0}}}, {"specularColorTexture", {{"index", 0}, {"texCoord", 1}}}}}};
+    const Model mapped = load(model);
+    EXPECT_EQ(mapped.materials[0].specular.image, 0);
+    EXPECT_EQ(mapped.materials[0].specularColor.image, 0);
+    EXPECT_EQ(mapped.materials[0].specularColor.texCoord, 1);
+    EXPECT_TRUE(hasSpecularMaps(mapped.materials[0]));
+}
+
+// KHR_materials_iridescence: the four factors (the extension's defaults for what the file leaves
+// out), its two maps, the extension drawn (no note); an ior below 1 or a negative thickness is
+// refused naming its place.
+TEST_F(GltfModel, IridescenceIsReadWithItsMapsAndItsBadValuesNamed) {
+    GltfBuilder model = cubeModel();
+    model.add("images", {{"uri", "map.png"}});
+    model.add("textures", {{"source", 0}});
+    model.json["extensionsUsed"] = {"KHR_materials_iridescence"};
+    model.json["materials"][0]["extensions"] = {
+        {"KHR_materials_iridescence",
+         {{"iridescenceFactor", 0.75}, {"iridescenceThicknessMaximum", 600.0}, {"iridescenceTexture", {{"index", 0}}},
+          {"iridescenceThicknessTexture", {{"index", 0}}}}}};
+    const Model loaded = load(model);
+    const ModelMaterial& film = loaded.materials[0];
+    EXPECT_EQ(film.factors.iridescence, 0.75f);
+    EXPECT_EQ(film.factors.iridescenceIor, 1.3f);
+    EXPECT_EQ(film.factors.iridescenceThicknessMinimum, 100.0f);
+    EXPECT_EQ(film.factors.iridescenceThicknessMaximum, 600.0f);
+    EXPECT_TRUE(film.iridescenceMap.present());
+    EXPECT_TRUE(film.iridescenceThickness.present());
+    ASSERT_EQ(loaded.extensions.size(), 1u);
+    EXPECT_EQ(loaded.extensions[0].support, ExtensionSupport::Drawn);
+    EXPECT_EQ(allNotes(loaded).find("iridescence"), std::string::npos) << allNotes(loaded);
+    model.json["materials"][0]["extensions"]["KHR_materials_iridescence"]["iridescenceIor"] = 0.5;
+    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_iridescence/iridescenceIor");
+    model.json["materials"][0]["extensions"]["KHR_materials_iridescence"]["iridescenceIor"] = 1.5;
+    model.json["materials"][0]["extensions"]["KHR_materials_iridescence"]["iridescenceThicknessMinimum"] = -10;
+    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_iridescence/iridescenceThicknessMinimum");
 }
 
 TEST_F(GltfModel, FlatNormalsCopyASharedVertexWithItsTexCoords) {
@@ -683,7 +745,9 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
     EXPECT_EQ(m.baseAlpha, 0.4f);
     EXPECT_EQ(m.factors.metallic, 0.3f);
     EXPECT_EQ(m.factors.roughness, 0.6f);
-    EXPECT_NEAR(m.factors.specular, 0.25f, 1e-6f);   // material.h's mapping: 0.5 * 0.04 / 0.08
+    // material.h's mapping: F0 0.04 (specular 0.5), its Fresnel weighted by specularFactor.
+    EXPECT_NEAR(m.factors.specular, 0.5f, 1e-6f);
+    EXPECT_EQ(m.factors.specularWeight, 0.5f);
     EXPECT_EQ(m.factors.model, BrdfModelId::Gltf);   // shaded as glTF 2.0's Appendix B defines
     EXPECT_TRUE(m.normal.present());
     EXPECT_EQ(m.normalScale, 0.7f);

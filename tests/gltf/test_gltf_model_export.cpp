@@ -81,6 +81,17 @@ void expectSameMaterial(const ModelMaterial& a, const ModelMaterial& b, const Mo
     EXPECT_EQ(a.factors.anisotropyStrength, b.factors.anisotropyStrength) << a.name;
     EXPECT_EQ(a.factors.anisotropyRotation, b.factors.anisotropyRotation) << a.name;
     EXPECT_EQ(a.anisotropyMap.present(), b.anisotropyMap.present()) << a.name;
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a.factors.specularTint[i], b.factors.specularTint[i], 1e-5f * (1.0f + a.factors.specularTint[i]))
+            << a.name;
+    }
+    EXPECT_EQ(a.factors.specularWeight, b.factors.specularWeight) << a.name;
+    EXPECT_EQ(a.factors.iridescence, b.factors.iridescence) << a.name;
+    if (a.factors.iridescence > 0.0f) {   // glTF holds the film's ior and thicknesses with its strength
+        EXPECT_EQ(a.factors.iridescenceIor, b.factors.iridescenceIor) << a.name;
+        EXPECT_EQ(a.factors.iridescenceThicknessMinimum, b.factors.iridescenceThicknessMinimum) << a.name;
+        EXPECT_EQ(a.factors.iridescenceThicknessMaximum, b.factors.iridescenceThicknessMaximum) << a.name;
+    }
     EXPECT_NEAR(a.baseAlpha, b.baseAlpha, 1e-6f) << a.name;
     // glTF holds the scale and the strength with their maps: without one they mean nothing.
     if (a.normal.present()) {
@@ -377,6 +388,34 @@ TEST_F(GltfModelExport, EveryMaterialFieldAndAMirroredChildComeBack) {
         test::expectValidGltf(path("seed.glb"), dir_);
         expectSameModel(model, importGltfModel(path("seed.glb")));
     }
+}
+
+// KHR_materials_specular's tint, weight and two maps (on the seed's own image) come back as they
+// were, validator-clean; a tint above white (a gem's F0) too, as specular 1 and the same tint; and
+// KHR_materials_iridescence's film with its two maps.
+TEST_F(GltfModelExport, TheSpecularTheFilmAndTheirMapsComeBackValidatorClean) {
+    Model model = importGltfModel(fs::path(PATINA_SOURCE_DIR) / "tests/fuzz/corpus/gltf/textured.gltf");
+    ASSERT_TRUE(model.materials[0].baseColor.present());
+    ModelMaterial& tinted = model.materials[0];
+    tinted.factors.specularTint = {1.0f, 0.5f, 0.25f};
+    tinted.factors.specularWeight = 0.75f;
+    tinted.specularColor = tinted.baseColor;
+    tinted.specularColor.texCoord = 0;
+    tinted.specular = tinted.baseColor;
+    ModelMaterial& gem = model.materials[1];
+    gem.factors.specular = 1.0f;
+    gem.factors.specularTint = {2.125f, 2.0f, 1.5f};
+    gem.factors.iridescence = 0.625f;
+    gem.factors.iridescenceIor = 1.75f;
+    gem.factors.iridescenceThicknessMinimum = 250.0f;
+    gem.factors.iridescenceThicknessMaximum = 820.0f;
+    gem.iridescenceMap = tinted.specularColor;   // UV set 0: the second part's mesh has no other
+    gem.iridescenceThickness = tinted.specularColor;
+    exportGltfModel(path("specular.glb"), model);
+    test::expectValidGltf(path("specular.glb"), dir_);
+    const Model back = importGltfModel(path("specular.glb"));
+    expectSameModel(model, back);
+    EXPECT_TRUE(back.notes.empty()) << back.notes.front();
 }
 
 TEST_F(GltfModelExport, AGltfHasItsImagesBesideItAndItsBufferWhereAsked) {

@@ -121,6 +121,54 @@ TEST(MaterialFile, TheAnisotropyRoundTripsAndIsLeftOutWithoutOne) {
               std::string::npos);
 }
 
+// KHR_materials_specular's tint and weight: each written only where it is not its default, read
+// back the same; the tint up to 12.5 (F0 1 at specular 1), the weight a factor in [0, 1].
+TEST(MaterialFile, TheSpecularTintAndWeightRoundTripAndAreLeftOutWithoutThem) {
+    Material material;
+    for (const char* key : {"specularTint", "specularWeight"}) {
+        EXPECT_FALSE(materialToJson(material).contains(key)) << key;
+    }
+    material.specularTint = {12.5f, 1.0f, 0.25f};
+    std::vector<std::string> warnings;
+    EXPECT_FALSE(materialToJson(material).contains("specularWeight"));
+    EXPECT_EQ(materialFromJson(materialToJson(material), "", "x", true, warnings), material);
+    material.specularWeight = 0.5f;
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["specularTint"], Json::array({12.5, 1.0, 0.25}));
+    EXPECT_EQ(json["specularWeight"], 0.5);
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "specularTint": [13, 1, 1]})")
+                  .find("m.json: /specularTint"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "specularWeight": -0.5})")
+                  .find("m.json: /specularWeight"),
+              std::string::npos);
+}
+
+// KHR_materials_iridescence's four: written together wherever one is not its default, read back
+// the same, each checked (the ior at least 1, the thicknesses not below 0).
+TEST(MaterialFile, TheFilmRoundTripsAndIsLeftOutWithoutOne) {
+    Material material;
+    for (const char* key : {"iridescence", "iridescenceIor", "iridescenceThicknessMinimum", "iridescenceThicknessMaximum"}) {
+        EXPECT_FALSE(materialToJson(material).contains(key)) << key;
+    }
+    material.iridescence = 0.5f;
+    material.iridescenceIor = 1.75f;
+    material.iridescenceThicknessMaximum = 640.0f;
+    const Json json = materialToJson(material);
+    EXPECT_EQ(json["iridescence"], 0.5);
+    EXPECT_EQ(json["iridescenceThicknessMinimum"], 100.0);
+    std::vector<std::string> warnings;
+    EXPECT_EQ(materialFromJson(json, "", "x", true, warnings), material);
+    EXPECT_TRUE(warnings.empty());
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "iridescenceIor": 0.9})").find("m.json: /iridescenceIor"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format": "patina-material", "version": 1, "iridescenceThicknessMaximum": -1})")
+                  .find("m.json: /iridescenceThicknessMaximum"),
+              std::string::npos);
+}
+
 // KHR_materials_transmission's and KHR_materials_volume's factors: written only where set,
 // read back the same, checked as every factor (the thickness and distance not below 0).
 TEST(MaterialFile, TheTransmissionAndVolumeRoundTripAndAreLeftOutWithoutOne) {
@@ -235,20 +283,23 @@ TEST(ShippedPresets, DielectricSpecularMatchesTheIorItsNotesCite) {
     }
 }
 
-// Issue 36: presets carry layers. A coat and a sheen each have a shipped preset, on the `gltf`
-// model that draws them.
+// Issue 36: presets carry layers. A coat, a sheen and a thin film each have a shipped preset, on
+// the `gltf` model that draws them.
 TEST(ShippedPresets, TheLayersHavePresetsOnTheModelThatDrawsThem) {
-    int coated = 0, sheened = 0;
+    int coated = 0, sheened = 0, filmed = 0;
     for (const auto& [file, material] : shippedPresets()) {
         const bool coat = material.clearcoat > 0.0f, sheen = material.sheenColor != glm::vec3(0.0f);
+        const bool film = material.iridescence > 0.0f;
         coated += coat;
         sheened += sheen;
-        if (coat || sheen) {
+        filmed += film;
+        if (coat || sheen || film) {
             EXPECT_EQ(material.model, BrdfModelId::Gltf) << file;
         }
     }
     EXPECT_GE(coated, 1);
     EXPECT_GE(sheened, 1);
+    EXPECT_GE(filmed, 1);
 }
 
 }  // namespace

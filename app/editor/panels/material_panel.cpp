@@ -117,7 +117,8 @@ void drawAdvanced(Document& document, Interaction& interaction) {
     ImGui::PopTextWrapPos();
     linearSwatch("c_diff", "The diffuse colour the shader uses: base colour times (1 - metallic)",
                  derived.diffuseColor);
-    linearSwatch("F0", "The reflectance head-on: 0.16 specular^2 for a dielectric, the base colour for a metal",
+    linearSwatch("F0", "The reflectance head-on: 0.08 specular for a dielectric (times its specular tint and weight), "
+                       "the base colour for a metal",
                  derived.f0);
 }
 }  // namespace
@@ -267,6 +268,75 @@ void drawAnisotropy(Material& material, const Material& file, const Material& de
                                                "mesh's tangent. Ctrl+click to type",
                         &material.anisotropyRotation, -3.14159265f, 3.14159265f, file.anisotropyRotation,
                         defaults.anisotropyRotation);
+    }
+    ImGui::PopID();
+}
+
+// KHR_materials_specular's tint of the dielectric's F0 and weight of its Fresnel (with
+// KHR_materials_ior's F0 beyond 0.08 in the tint), in a section of their own under the
+// anisotropy's, first shown open where the part has them; the F0 they give, and the ior it
+// corresponds to, said below. A tint of 1 and a weight of 1 are none.
+void drawSpecularColour(Material& material, const Material& file, const Material& defaults, int part) {
+    ImGui::PushID(part);
+    ImGui::SetNextItemOpen(material.specularTint != glm::vec3(1.0f) || material.specularWeight != 1.0f,
+                           ImGuiCond_Once);
+    const bool open = ImGui::CollapsingHeader("Specular colour");
+    recordItem("Specular colour", "The dielectric's reflection tinted and weighted (KHR_materials_specular, "
+                                  "KHR_materials_ior), as on a tinted plastic or a gem");
+    if (open) {
+        ImGui::TextUnformatted("Specular tint (sRGB)");
+        ImGui::SetNextItemWidth(widthBesideReset(""));
+        colorEditLinear("##Specular tint", "Multiplies the non-metal's reflectance head-on, 0.08 specular, per "
+                                           "channel: white keeps it; above white reaches a gem's (up to 12.5)",
+                        &material.specularTint, true);
+        ImGui::SameLine();
+        resetButton("Specular tint", &material.specularTint, file.specularTint, defaults.specularTint);
+        sliderWithReset("Specular weight", "Scales the non-metal's whole reflection, head-on and at grazing angles "
+                                           "alike (glTF's specularFactor): 0 leaves only the diffuse",
+                        &material.specularWeight, 0.0f, 1.0f, file.specularWeight, defaults.specularWeight);
+        const shader::SurfaceMaterial derived =
+            surfaceMaterial(MaterialParameters{.specular = material.specular, .metallic = 0.0f,
+                                               .specularTint = material.specularTint});
+        const glm::vec3 f0 = derived.dielectricF0;
+        // F0 = ((ior - 1) / (ior + 1))^2 at its largest channel, solved for ior.
+        const float root = std::sqrt(std::min(std::max({f0.r, f0.g, f0.b}), 0.999999f));
+        ImGui::TextDisabled("F0 %.3f %.3f %.3f (ior %.2f), F90 %.2f", double(f0.r), double(f0.g), double(f0.b),
+                            double((1.0f + root) / (1.0f - root)), double(material.specularWeight));
+    }
+    ImGui::PopID();
+}
+
+// KHR_materials_iridescence's thin film in a section of its own under the specular colour's,
+// first shown open where the part has one; its maps are in the part's map list with the others.
+// A strength of 0 is none.
+void drawIridescence(Material& material, const Material& file, const Material& defaults, int part, std::string& said) {
+    ImGui::PushID(part);
+    ImGui::SetNextItemOpen(material.iridescence > 0.0f, ImGuiCond_Once);
+    const bool open = ImGui::CollapsingHeader("Iridescence");
+    recordItem("Iridescence", "A thin film's interference colours over the part (KHR_materials_iridescence), as on a "
+                              "soap bubble, an oil slick or heat-tinted metal");
+    if (open) {
+        const bool filmed = material.iridescence > 0.0f;
+        if (layerButton("Add iridescence", "Remove iridescence", filmed, "thin film", said)) {   // the extension's film
+            const MaterialParameters plain;
+            material.iridescence = filmed ? 0.0f : 1.0f;
+            material.iridescenceIor = plain.iridescenceIor;
+            material.iridescenceThicknessMinimum = plain.iridescenceThicknessMinimum;
+            material.iridescenceThicknessMaximum = plain.iridescenceThicknessMaximum;
+        }
+        sliderWithReset("Iridescence strength", "How much of the reflection the film colours: 0 none, 1 all",
+                        &material.iridescence, 0.0f, 1.0f, file.iridescence, defaults.iridescence);
+        sliderWithReset("Film ior", "The film's index of refraction: its colours shift and strengthen away from "
+                                    "the surroundings' 1. Ctrl+click to type",
+                        &material.iridescenceIor, 1.0f, 2.5f, file.iridescenceIor, defaults.iridescenceIor);
+        sliderWithReset("Film thickness", "The film's thickness in nanometres (its thickness map's white): its "
+                                          "colours cycle as it grows; 0 is no film. Ctrl+click to type",
+                        &material.iridescenceThicknessMaximum, 0.0f, 1200.0f, file.iridescenceThicknessMaximum,
+                        defaults.iridescenceThicknessMaximum);
+        sliderWithReset("Film thickness minimum", "The thickness in nanometres where the thickness map is black "
+                                                  "(used only with a thickness map)",
+                        &material.iridescenceThicknessMinimum, 0.0f, 1200.0f, file.iridescenceThicknessMinimum,
+                        defaults.iridescenceThicknessMinimum);
     }
     ImGui::PopID();
 }
@@ -489,6 +559,8 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     drawSheen(material, saved, defaults, selected, said);
     drawTransmission(material, saved, defaults, selected, said);
     drawAnisotropy(material, saved, defaults, selected, said);
+    drawSpecularColour(material, saved, defaults, selected);
+    drawIridescence(material, saved, defaults, selected, said);
     ImGui::PopID();
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
