@@ -231,6 +231,21 @@ std::string materialCaption(const Material& material, int panelWidth) {
         std::snprintf(layer, sizeof layer, "  transmission %.2f", double(material.transmission));
         model += layer;
     }
+    if (material.anisotropyStrength > 0.0f) {
+        std::snprintf(layer, sizeof layer, "  anisotropy %.2f", double(material.anisotropyStrength));
+        model += layer;
+    }
+    if (material.specularTint != glm::vec3(1.0f) || material.specularWeight != 1.0f) {
+        const glm::vec3& t = material.specularTint;
+        std::snprintf(layer, sizeof layer, "  tint %.2f %.2f %.2f w %.2f", double(t.r), double(t.g), double(t.b),
+                      double(material.specularWeight));
+        model += layer;
+    }
+    if (material.iridescence > 0.0f) {
+        std::snprintf(layer, sizeof layer, "  film %.2f %.0f nm", double(material.iridescence),
+                      double(material.iridescenceThicknessMaximum));
+        model += layer;
+    }
     std::snprintf(parameters, sizeof parameters, "  r %.2f s %.2f m %.2f%s", double(material.roughness),
                   double(material.specular), double(material.metallic), model.c_str());
     std::snprintf(full, sizeof full, "%s  base sRGB %.2f %.2f %.2f", parameters, double(base.r), double(base.g),

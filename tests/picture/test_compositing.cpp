@@ -188,6 +188,14 @@ TEST(Compositing, ACaptionShowsTheBaseColourInSrgbAndNamesIt) {
     layered.transmission = 0.75f;
     EXPECT_EQ(materialCaption(layered, 2000),
               "gold  r 0.30 s 0.50 m 1.00  gltf  coat 1.00  sheen 0.50  transmission 0.75  base sRGB 1.00 0.86 0.60");
+    // And the stretch, the specular's tint and weight, and a thin film.
+    Material more = gltf;
+    more.anisotropyStrength = 0.5f;
+    more.specularTint = {2.0f, 1.0f, 0.5f};
+    more.specularWeight = 0.8f;
+    more.iridescence = 1.0f;
+    EXPECT_EQ(materialCaption(more, 3000), "gold  r 0.30 s 0.50 m 1.00  gltf  anisotropy 0.50  tint 2.00 1.00 0.50 w 0.80  "
+                                           "film 1.00 400 nm  base sRGB 1.00 0.86 0.60");
 }
 
 // A side-by-side half is narrow: the name is what tells A from B, so numbers give way first.

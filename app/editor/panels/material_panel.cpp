@@ -297,11 +297,15 @@ void drawSpecularColour(Material& material, const Material& file, const Material
         const shader::SurfaceMaterial derived =
             surfaceMaterial(MaterialParameters{.specular = material.specular, .metallic = 0.0f,
                                                .specularTint = material.specularTint});
-        const glm::vec3 f0 = derived.dielectricF0;
-        // F0 = ((ior - 1) / (ior + 1))^2 at its largest channel, solved for ior.
-        const float root = std::sqrt(std::min(std::max({f0.r, f0.g, f0.b}), 0.999999f));
-        ImGui::TextDisabled("F0 %.3f %.3f %.3f (ior %.2f), F90 %.2f", double(f0.r), double(f0.g), double(f0.b),
+        // The extension's dielectric_f0 (the weight in); the ior its largest channel's before the
+        // weight, from F0 = ((ior - 1) / (ior + 1))^2.
+        const glm::vec3 tinted = derived.dielectricF0;
+        const glm::vec3 f0 = tinted * material.specularWeight;
+        const float root = std::sqrt(std::min(std::max({tinted.r, tinted.g, tinted.b}), 0.999999f));
+        ImGui::PushTextWrapPos(0.0f);   // wraps at the panel's edge
+        ImGui::TextDisabled("Non-metal F0 %.3f %.3f %.3f (ior %.2f), F90 %.2f", double(f0.r), double(f0.g), double(f0.b),
                             double((1.0f + root) / (1.0f - root)), double(material.specularWeight));
+        ImGui::PopTextWrapPos();
     }
     ImGui::PopID();
 }
