@@ -72,6 +72,10 @@ struct SurfaceMaterial {
     real iridescence;
     real iridescenceIor;
     real iridescenceThickness;
+    // The film's Fresnel at this pixel's N.V over the dielectric and the metal, on the GPU
+    // (iridescence.glsl's withFilmAt, once a pixel); C++ evaluates it where it is asked for.
+    vec3 filmDielectric;
+    vec3 filmMetal;
 #endif
 };
 
@@ -101,7 +105,7 @@ PATINA_INLINE SurfaceMaterial deriveSurfaceMaterial(vec3 baseColor, real roughne
                            , vec3(0.0f), vec3(0.0f), 0.0f, 0.0f, 0.0f
 #endif
 #ifdef PATINA_IRIDESCENT_FIELDS
-                           , 0.0f, 1.3f, 0.0f
+                           , 0.0f, 1.3f, 0.0f, vec3(0.0f), vec3(0.0f)
 #endif
     );
 }

@@ -74,7 +74,7 @@ PATINA_INLINE vec3 surfaceFresnel(SurfaceMaterial material, real NoV, real VoH) 
     vec3 F = fresnel(material.f0, material.f90, VoH);
 #if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
     if (material.iridescence > 0.0f) {
-        IridescentFresnel film = iridescentFresnel(material, NoV);
+        IridescentFresnel film = filmFresnelAt(material, NoV);
         F = mix(F, mix(film.dielectric, film.metal, material.metallic), material.iridescence);
     }
 #endif
@@ -88,7 +88,7 @@ PATINA_INLINE vec3 dielectricFresnel(SurfaceMaterial material, real NoV, real Vo
     vec3 F = fresnel(material.dielectricF0 * w, w, VoH);
 #if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
     if (material.iridescence > 0.0f) {
-        F = mix(F, iridescentFresnel(material, NoV).dielectric, material.iridescence);
+        F = mix(F, filmFresnelAt(material, NoV).dielectric, material.iridescence);
     }
 #endif
     return F;

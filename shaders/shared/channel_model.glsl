@@ -27,7 +27,7 @@ PATINA_INLINE SurfaceMaterial channelMaterial(ChannelInputs c, ChannelLayers lay
     SurfaceMaterial m = withSpecular(deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic),
                                      c.specularTint, c.specularWeight);
 #ifdef PATINA_IRIDESCENT_FIELDS
-    m = withIridescence(m, layers.iridescence, layers.iridescenceIor, layers.iridescenceThickness);
+    m = withFilmAt(withIridescence(m, layers.iridescence, layers.iridescenceIor, layers.iridescenceThickness), c.NoV);
 #endif
     return layers.transmits ? transmissionDiffuse(m, layers.transmissionFactor) : m;
 }

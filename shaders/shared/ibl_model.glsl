@@ -104,7 +104,7 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
     // of the split sum's, and the diffuse keeps 1 - its largest channel, mixed in by the film's
     // strength (the extension's BRDF as the Khronos sample viewer lights it by an environment).
     if (material.iridescence > 0.0f) {
-        IridescentFresnel film = iridescentFresnel(material, NoV);
+        IridescentFresnel film = filmFresnelAt(material, NoV);
         specular = mix(specular, prefiltered * mix(film.dielectric, film.metal, material.metallic),
                        material.iridescence);
         beneath = mix(beneath, 1.0f - maxValue(film.dielectric), material.iridescence);
@@ -124,7 +124,7 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
 #endif
 #if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
     if (material.iridescence > 0.0f) {   // as above; these models' diffuse takes nothing for the specular
-        IridescentFresnel film = iridescentFresnel(material, NoV);
+        IridescentFresnel film = filmFresnelAt(material, NoV);
         specular = mix(specular, prefiltered * mix(film.dielectric, film.metal, material.metallic),
                        material.iridescence);
     }

@@ -113,4 +113,27 @@ PATINA_INLINE IridescentFresnel iridescentFresnel(SurfaceMaterial material, real
         thinFilmFresnel(IRIDESCENCE_OUTSIDE_IOR, material.iridescenceIor, cosTheta1, material.iridescenceThickness,
                         material.baseColor));
 }
+
+// The film's Fresnel at N.V kept on the material: shade.frag calls this once a pixel where N
+// and V are final, so that the lights' loop reads it instead of evaluating it a light at a time
+// (the extension evaluates it once, at N.V). `NoV` as the BRDF floors it.
+PATINA_INLINE SurfaceMaterial withFilmAt(SurfaceMaterial material, real NoV) {
+    if (material.iridescence > 0.0f) {
+        IridescentFresnel film = iridescentFresnel(material, NoV);
+        material.filmDielectric = film.dielectric;
+        material.filmMetal = film.metal;
+    }
+    return material;
+}
+
+// The film's Fresnel where the BRDF asks for it at `NoV`: withFilmAt's on the GPU; evaluated
+// here in C++, where the twin, the truth and the lobe views ask at any N.V (the same function
+// at the same N.V: the same numbers).
+PATINA_INLINE IridescentFresnel filmFresnelAt(SurfaceMaterial material, real NoV) {
+#ifdef __cplusplus
+    return iridescentFresnel(material, NoV);
+#else
+    return IridescentFresnel(material.filmDielectric, material.filmMetal);
+#endif
+}
 #endif

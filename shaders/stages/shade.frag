@@ -559,6 +559,9 @@ void main() {
     material = withAnisotropy(material, N, anisotropyTangent.xyz, anisotropyTangent.w, uAnisotropyDirection.x,
                               uAnisotropyDirection.y, uAnisotropyStrength);
 #endif
+#ifdef PATINA_IRIDESCENCE
+    material = withFilmAt(material, max(dot(N, V), MIN_N_DOT_V));   // once a pixel, N and V final
+#endif
 #ifdef PATINA_AMBIENT_OCCLUSION
 #ifdef PATINA_TEXTURED
     ambientOcclusion = occlusion * vAmbientOcclusion;
