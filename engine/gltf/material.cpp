@@ -202,11 +202,17 @@ Material materialFromGltf(const tinygltf::Material& material, const std::string&
 }
 
 Json materialToGltf(const Material& material) {
-    // specularColorFactor = 0.08 specular tint / F0(1.5) (= 2 specular tint), per channel.
+    // specularColorFactor = 0.08 specular tint / F0(ior), per channel, with ior 1.5 (= 2 specular
+    // tint). A material that passes light refracts by its ior in other viewers (a volume's): where
+    // its F0 is grey and below 1, the ior whose F0 it is, and a white colour factor.
+    const glm::dvec3 f0 = double(shader::F0_PER_SPECULAR) * double(material.specular) * glm::dvec3(material.specularTint);
+    double ior = kExportIor;
+    if (material.transmission > 0.0f && f0.r == f0.g && f0.g == f0.b && f0.r > 0.0 && f0.r < 1.0) {
+        ior = (1.0 + std::sqrt(f0.r)) / (1.0 - std::sqrt(f0.r));
+    }
     Json color = Json::array();
     for (int c = 0; c < 3; ++c) {
-        const double f0 = double(shader::F0_PER_SPECULAR) * double(material.specular) * double(material.specularTint[c]);
-        color.push_back(exact(float(f0 / f0FromIor(kExportIor))));
+        color.push_back(ior == kExportIor ? exact(float(f0[c] / f0FromIor(kExportIor))) : 1.0);
     }
     const glm::vec3& base = material.baseColor;
     Json json{
@@ -217,7 +223,7 @@ Json materialToGltf(const Material& material) {
           {"roughnessFactor", exact(material.roughness)}}},
         {"extensions",
          {{kSpecular, {{"specularFactor", exact(material.specularWeight)}, {"specularColorFactor", color}}},
-          {kIor, {{"ior", kExportIor}}}}}};
+          {kIor, {{"ior", ior}}}}}};
     // A coat only where there is one: a material without keeps the two extensions every export has.
     if (material.clearcoat > 0.0f || material.clearcoatRoughness > 0.0f) {
         json["extensions"][kClearcoat] = {{"clearcoatFactor", exact(material.clearcoat)},

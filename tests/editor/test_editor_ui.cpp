@@ -438,6 +438,39 @@ TEST_F(EditorUi, APartsFilmIsAddedAndRemovedWholeInOneStep) {
     ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
 }
 
+// Patina's own material (no model) has the layer sections too: the anodised preset's film opens
+// its Iridescence section, Remove takes the film off in one step and Ctrl+Z puts it back; the
+// specular tint's red is dragged past 1 (a gem's F0), which a colour picker could not reach.
+TEST_F(EditorUi, TheOwnMaterialsLayersAreTunedWhereThePresetIsUsed) {
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 1600);
+    Material anodised;   // as presets/titanium-anodised.json: a metal under a film
+    anodised.name = "anodised";
+    anodised.model = BrdfModelId::Gltf;
+    anodised.metallic = 1.0f;
+    anodised.iridescence = 1.0f;
+    anodised.iridescenceIor = 2.4f;
+    anodised.iridescenceThicknessMaximum = 120.0f;
+    std::ofstream(dir_ / "anodised.json") << materialToJson(anodised).dump();
+    ASSERT_TRUE(openFile(state_, path("anodised.json"))) << state_.error;
+    frames(2);
+    ASSERT_EQ(state_.scene.material.iridescence, 1.0f);
+    EXPECT_TRUE(itemsOfLastFrame().count("Film thickness")) << "open: the material has a film";
+    click(centreOf("Remove iridescence"));
+    EXPECT_EQ(state_.scene.material.iridescence, 0.0f);
+    EXPECT_NE(state_.status.find("Took the thin film off"), std::string::npos) << state_.status;
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.scene.material.iridescence, 1.0f);
+    click(centreOf("Specular colour"));
+    frames(1);
+    ImVec2 min, max;
+    ASSERT_TRUE(itemRect("Specular tint", &min, &max));
+    const float y = (min.y + max.y) * 0.5f;   // red, the first of the three numbers: 0.01 a pixel
+    drag(ImVec2(min.x + 6.0f, y), ImVec2(min.x + 206.0f, y), 20);
+    EXPECT_GT(state_.scene.material.specularTint.r, 1.5f) << "past 1, not clamped to a colour";
+    EXPECT_EQ(state_.scene.material.specularTint.g, 1.0f);
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+}
+
 TEST_F(EditorUi, AddPointLightButtonAddsALight) {
     const size_t before = state_.scene.lights.size();
     click(centreOf("Add point"));

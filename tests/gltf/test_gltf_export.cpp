@@ -1,5 +1,6 @@
 // glTF export (engine/gltf/export.h, `patina export`): the Khronos glTF-Validator finds no
 // error and no warning, import gives back the material and the triangles, writes are atomic.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -101,6 +102,20 @@ TEST_F(GltfExport, SpecularIsWrittenSoThatF0Is008TimesSpecular) {
     EXPECT_NEAR(gem["specularColorFactor"][1].get<double>(), 0.6, 1e-7);
     EXPECT_EQ(gem["specularColorFactor"][2].get<double>(), 0.0);
     expectValid(path("gem.gltf"));
+    // A glass refracts by its ior in other viewers (a volume's): a grey F0 is written as its ior,
+    // diamond's 2.42 as 2.42, the colour factor white; read back, the same F0.
+    Material diamond;
+    diamond.transmission = 1.0f;
+    diamond.specular = 1.0f;
+    const double diamondF0 = std::pow(1.42 / 3.42, 2.0);
+    diamond.specularTint = glm::vec3(float(diamondF0 / 0.08));
+    exportGltf(path("diamond.gltf"), makeUvSphere(4, 8), diamond);
+    const Json glass = readJsonFile(path("diamond.gltf"))["materials"][0]["extensions"];
+    EXPECT_NEAR(glass["KHR_materials_ior"]["ior"].get<double>(), 2.42, 1e-5);
+    EXPECT_EQ(glass["KHR_materials_specular"]["specularColorFactor"], Json::array({1.0, 1.0, 1.0}));
+    expectValid(path("diamond.gltf"));
+    const Material back = test::firstMaterial(test::loadModel(path("diamond.gltf"))->model);
+    EXPECT_NEAR(0.08 * back.specular * back.specularTint.r, diamondF0, 1e-6);
 }
 
 TEST_F(GltfExport, TheKhronosValidatorFindsNoErrorsOrWarnings) {

@@ -284,11 +284,15 @@ void drawSpecularColour(Material& material, const Material& file, const Material
     recordItem("Specular colour", "The dielectric's reflection tinted and weighted (KHR_materials_specular, "
                                   "KHR_materials_ior), as on a tinted plastic or a gem");
     if (open) {
-        ImGui::TextUnformatted("Specular tint (sRGB)");
+        // Linear numbers, not a colour picker: the tint runs past 1 (an F0 above 0.08), which an sRGB
+        // swatch cannot show.
+        ImGui::TextUnformatted("Specular tint (linear; 1 1 1 is none)");
         ImGui::SetNextItemWidth(widthBesideReset(""));
-        colorEditLinear("##Specular tint", "Multiplies the non-metal's reflectance head-on, 0.08 specular, per "
-                                           "channel: white keeps it; above white reaches a gem's (up to 12.5)",
-                        &material.specularTint, true);
+        ImGui::DragFloat3("##Specular tint", &material.specularTint.x, 0.01f, 0.0f, 12.5f, "%.3f",
+                          ImGuiSliderFlags_AlwaysClamp);
+        recordItem("Specular tint", "Multiplies the non-metal's reflectance head-on, 0.08 specular, per channel "
+                                    "(linear): 1 keeps it; above 1 reaches a gem's F0 (up to 12.5, F0 1). Drag, or "
+                                    "Ctrl+click to type");
         ImGui::SameLine();
         resetButton("Specular tint", &material.specularTint, file.specularTint, defaults.specularTint);
         sliderWithReset("Specular weight", "Scales the non-metal's whole reflection, head-on and at grazing angles "
@@ -586,6 +590,22 @@ void drawMaterialPanel(EditorState& state, EditorServices& services) {
         inputString("Name", &material.name);
         recordItem("Material name", "The material's name, saved in its file and shown in captions");
         drawFactors(material, state.savedMaterial, Material());
+        // Patina's own material carries the layers too (the presets' coat, sheen and film), in
+        // the sections a model's part has; their open states are the material file's own, so
+        // that a file opened with a film shows it open.
+        ImGui::PushID(("own material " + state.materialPath.string()).c_str());
+        std::string said;   // a layer put on or taken off whole, for the status line
+        const Material defaults;
+        drawClearcoat(material, state.savedMaterial, defaults, 0, said);
+        drawSheen(material, state.savedMaterial, defaults, 0, said);
+        drawTransmission(material, state.savedMaterial, defaults, 0, said);
+        drawAnisotropy(material, state.savedMaterial, defaults, 0, said);
+        drawSpecularColour(material, state.savedMaterial, defaults, 0);
+        drawIridescence(material, state.savedMaterial, defaults, 0, said);
+        ImGui::PopID();
+        if (!said.empty()) {
+            state.status = said + " \"" + material.name + "\" (Ctrl+Z undoes it)";
+        }
     }
 
     ImGui::SetNextItemOpen(state.showAdvanced);
