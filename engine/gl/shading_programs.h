@@ -94,13 +94,13 @@ public:
     static constexpr int kEnvironmentSourceUnit = 4;       // the stochastic mode's source chain
     static constexpr int kEnvironmentIrradianceUnit = 5;   // the irradiance map
     static constexpr int kFirstMapUnit = 6;                // Surface::Maps: the maps' units (SurfaceMap order)
-    // The sheen's albedo table (Surface::Sheen), after the maps' sixteen units: 16 and up are
+    // The sheen's albedo table (Surface::Sheen), after the maps' seventeen units: 16 and up are
     // beyond GL 3.3's least GL_MAX_TEXTURE_IMAGE_UNITS (16) but within every GL 4 desktop
     // driver's (32: Mesa, NVIDIA, AMD, Intel), and a program binds only the units it reads.
-    static constexpr int kSheenTableUnit = 22;
-    static constexpr int kShadowMapUnit = 23;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
-    static constexpr int kSceneBehindUnit = 24;   // PATINA_TRANSMISSION: gl/scene_behind.h's image
-    static constexpr int kShadowDepthUnit = 25;   // PATINA_SHADOWS: the same maps' raw depths (PCSS)
+    static constexpr int kSheenTableUnit = 23;
+    static constexpr int kShadowMapUnit = 24;   // PATINA_SHADOWS: the shadow maps (gl/shadow_maps.h)
+    static constexpr int kSceneBehindUnit = 25;   // PATINA_TRANSMISSION: gl/scene_behind.h's image
+    static constexpr int kShadowDepthUnit = 26;   // PATINA_SHADOWS: the same maps' raw depths (PCSS)
     // How programs with an environment shade it from now on; a change drops the programs
     // compiled for another (the editor changes it rarely, benchmarks once per method).
     void setEnvironmentShading(const EnvironmentShading& shading);

@@ -9,7 +9,8 @@ constexpr const char* kSamplerNames[kSurfaceMapCount] = {
     "uBaseColorMap", "uMetallicRoughnessMap", "uNormalMap",      "uOcclusionMap",
     "uEmissiveMap",  "uClearcoatMap",         "uClearcoatRoughnessMap", "uClearcoatNormalMap",
     "uSheenColorMap", "uSheenRoughnessMap",   "uTransmissionMap",       "uThicknessMap",
-    "uSpecularColorMap", "uSpecularMap", "uIridescenceMap", "uIridescenceThicknessMap"};
+    "uSpecularColorMap", "uSpecularMap", "uIridescenceMap", "uIridescenceThicknessMap",
+    "uAnisotropyMap"};
 
 }  // namespace
 

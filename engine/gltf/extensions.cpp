@@ -39,7 +39,7 @@ constexpr KnownExtension kKnown[] = {
     {"KHR_materials_volume", ExtensionSupport::Drawn,
      "Beer-Lambert attenuation over the thickness and its map, thin-walled (no refraction)"},
     {"KHR_materials_anisotropy", ExtensionSupport::Drawn,
-     "the strength and rotation stretch the highlights along the tangents; the anisotropy map is kept, not drawn"},
+     "the strength and rotation stretch the highlights along the tangents, with the anisotropy map"},
     {"KHR_materials_dispersion", ExtensionSupport::NotDrawn, "dispersion is left out"},
     {"KHR_materials_unlit", ExtensionSupport::NotDrawn, "the material is lit, as its metallic-roughness fallback"},
     {"KHR_materials_pbrSpecularGlossiness", ExtensionSupport::Drawn,

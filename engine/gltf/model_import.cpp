@@ -23,7 +23,6 @@ bool attachImages(const tinygltf::Model& document, Model& model, const std::stri
             for (const auto& map : mapsOf(material)) {
                 visit(*map.slot);
             }
-            visit(material.anisotropyMap);   // kept for the export, not drawn
         }
     };
     std::vector<bool> used(document.images.size(), false);

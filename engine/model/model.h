@@ -70,9 +70,8 @@ struct ModelMaterial {
     // (G scales `factors.thickness`), drawn where the material transmits (docs/SHADING.md S7).
     TextureSlot transmissionMap;            // linear; R
     TextureSlot thicknessMap;               // linear; G
-    // KHR_materials_anisotropy's map (RG the direction in tangent space in [-1, 1], B scales
-    // `factors.anisotropyStrength`): read, kept and exported, not drawn (docs/SHADING.md S8),
-    // so not among mapsOf's.
+    // KHR_materials_anisotropy's map (RG the direction in tangent space in [-1, 1], turned by
+    // `factors.anisotropyRotation`; B scales `factors.anisotropyStrength`; docs/SHADING.md S8).
     TextureSlot anisotropyMap;              // linear; RGB
     // KHR_materials_specular's maps (its factors are `factors.specularTint` and
     // `factors.specularWeight`): RGB scales the tint, A the weight (docs/SHADING.md S9).
@@ -91,7 +90,7 @@ struct ModelMaterial {
 // A material's maps in their one order (the shaders' too: surface_maps.glsl): glTF 2.0's five,
 // then KHR_materials_clearcoat's three, KHR_materials_sheen's two, KHR_materials_transmission's
 // and KHR_materials_volume's one each, KHR_materials_specular's two, KHR_materials_iridescence's
-// two; each with whether its
+// two, KHR_materials_anisotropy's one; each with whether its
 // texels are sRGB (base colour, emissive, sheen colour and specular colour; the others are data,
 // glTF 2.0 3.9.2-3.9.3), its name for people and its key
 // (glTF's name of the property, which scene files use too).
@@ -103,7 +102,7 @@ struct MapOf {
     const char* key;
 };
 inline constexpr int kCoreMapCount = 5;   // glTF 2.0's own maps, the first of mapsOf
-inline constexpr int kMapCount = 16;
+inline constexpr int kMapCount = 17;
 template <typename Material>   // ModelMaterial or const ModelMaterial
 auto mapsOf(Material& material) {
     using Slot = std::conditional_t<std::is_const_v<Material>, const TextureSlot, TextureSlot>;
@@ -123,7 +122,8 @@ auto mapsOf(Material& material) {
          {&material.specularColor, true, "specular colour", "specularColorTexture"},
          {&material.specular, false, "specular", "specularTexture"},
          {&material.iridescenceMap, false, "iridescence", "iridescenceTexture"},
-         {&material.iridescenceThickness, false, "iridescence thickness", "iridescenceThicknessTexture"}}};
+         {&material.iridescenceThickness, false, "iridescence thickness", "iridescenceThicknessTexture"},
+         {&material.anisotropyMap, false, "anisotropy", "anisotropyTexture"}}};
 }
 // The map of `material` whose key is `key`, or nothing: what a scene file's key names.
 template <typename Material>

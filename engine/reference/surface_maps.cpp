@@ -1,5 +1,7 @@
 #include "reference/surface_maps.h"
 
+#include <cmath>
+
 #include "shading/shading.h"
 #include "shading/texture_sampling.h"
 
@@ -79,6 +81,16 @@ MappedSurface mappedSurface(const SceneDraw& draw, const MapTextures& textures, 
     // KHR_materials_specular's: RGB (sRGB) scales the tint, A the weight.
     surface.material.specularTint *= glm::vec3(texel(maps->specularColor, true, glm::vec4(1.0f)));
     surface.material.specularWeight *= texel(maps->specular, false, glm::vec4(1.0f)).w;
+    // KHR_materials_anisotropy's: RG a direction in the tangent frame (texel (1, 0.5): none),
+    // added to the rotation as its angle; B scales the strength (surface_maps.glsl's).
+    if (maps->anisotropyMap.present()) {
+        const glm::vec4 a = texel(maps->anisotropyMap, false, glm::vec4(1.0f, 0.5f, 1.0f, 1.0f));
+        const glm::vec2 d(2.0f * a.x - 1.0f, 2.0f * a.y - 1.0f);
+        if (glm::dot(d, d) > 1e-12f) {
+            surface.material.anisotropyRotation += std::atan2(d.y, d.x);
+        }
+        surface.material.anisotropyStrength *= a.z;
+    }
     // KHR_materials_iridescence's: R scales the strength; G places the thickness between the
     // minimum and maximum, kept in the maximum (cpu_shading.cpp's surfaceMaterial reads it there).
     surface.material.iridescence *= texel(maps->iridescenceMap, false, glm::vec4(1.0f)).x;

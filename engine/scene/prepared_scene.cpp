@@ -148,7 +148,8 @@ bool hasMaps(const ModelMaterial& material) {
            material.clearcoat.present() || material.clearcoatRoughness.present() || material.clearcoatNormal.present() ||
            material.sheenColor.present() || material.sheenRoughness.present() || material.transmissionMap.present() ||
            material.thicknessMap.present() || material.specularColor.present() || material.specular.present() ||
-           material.iridescenceMap.present() || material.iridescenceThickness.present();
+           material.iridescenceMap.present() || material.iridescenceThickness.present() ||
+           material.anisotropyMap.present();
 }
 
 int mapSetOf(const ModelMaterial& material) {

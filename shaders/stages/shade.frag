@@ -556,8 +556,13 @@ void main() {
 #else
     vec4 anisotropyTangent = vTangent;
 #endif
-    material = withAnisotropy(material, N, anisotropyTangent.xyz, anisotropyTangent.w, uAnisotropyDirection.x,
-                              uAnisotropyDirection.y, uAnisotropyStrength);
+#ifdef PATINA_TEXTURED
+    vec3 anisotropy = mappedAnisotropy(uAnisotropyDirection, uAnisotropyStrength);   // its map's direction and B
+#else
+    vec3 anisotropy = vec3(uAnisotropyDirection, uAnisotropyStrength);
+#endif
+    material = withAnisotropy(material, N, anisotropyTangent.xyz, anisotropyTangent.w, anisotropy.x, anisotropy.y,
+                              anisotropy.z);
 #endif
 #ifdef PATINA_IRIDESCENCE
     material = withFilmAt(material, max(dot(N, V), MIN_N_DOT_V));   // once a pixel, N and V final

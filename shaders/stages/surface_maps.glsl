@@ -15,7 +15,8 @@ in vec4 vTangent;   // world space; w = 0: the vertex has none
 // KHR_materials_sheen's 8 sheen colour, 9 sheen roughness (only with PATINA_SHEEN), then
 // KHR_materials_transmission's 10 and KHR_materials_volume's 11 (only with PATINA_TRANSMISSION), then
 // KHR_materials_specular's 12 specular colour and 13 specular (only with PATINA_SPECULAR), then
-// KHR_materials_iridescence's 14 and 15 (only with PATINA_IRIDESCENCE). A sampler array
+// KHR_materials_iridescence's 14 and 15 (only with PATINA_IRIDESCENCE), then KHR_materials_anisotropy's
+// 16 (only with PATINA_ANISOTROPY). A sampler array
 // could be indexed only by constants in GLSL 3.30, so each has its own name.
 uniform sampler2D uBaseColorMap;
 uniform sampler2D uMetallicRoughnessMap;
@@ -33,8 +34,9 @@ uniform sampler2D uSpecularColorMap;
 uniform sampler2D uSpecularMap;
 uniform sampler2D uIridescenceMap;
 uniform sampler2D uIridescenceThicknessMap;
-uniform vec4 uMapPlacement[16];   // KHR_texture_transform: offset (xy), scale (zw)
-uniform vec2 uMapRotationSet[16];   // its rotation; the UV set read, -1 where there is no map
+uniform sampler2D uAnisotropyMap;
+uniform vec4 uMapPlacement[17];   // KHR_texture_transform: offset (xy), scale (zw)
+uniform vec2 uMapRotationSet[17];   // its rotation; the UV set read, -1 where there is no map
 uniform float uBaseAlpha;          // baseColorFactor's alpha
 uniform float uAlphaCutoff;        // MASK's; negative for OPAQUE and BLEND
 uniform float uNormalScale;
@@ -160,6 +162,19 @@ float mappedIridescence(float factor) {
 }
 float mappedIridescenceThickness(vec2 range) {
     return hasMap(15) ? mix(range.x, range.y, mapTexel(uIridescenceThicknessMap, mapCoordinate(15)).y) : range.y;
+}
+#endif
+
+#ifdef PATINA_ANISOTROPY
+// KHR_materials_anisotropy's map: RG a direction in the tangent frame in [-1, 1] (glTF's texel
+// (1, 0.5) is +t, the map's absence), turned by the rotation (cos, sin); B scales the strength.
+// (cos, sin) of the direction in xy, the strength in z.
+vec3 mappedAnisotropy(vec2 direction, float strength) {
+    vec3 texel = MAP_TEXEL(16, uAnisotropyMap, vec4(1.0f, 0.5f, 1.0f, 1.0f)).xyz;
+    vec2 d = vec2(2.0f * texel.x - 1.0f, 2.0f * texel.y - 1.0f);
+    float length2 = dot(d, d);
+    d = length2 > 1e-12f ? d * inversesqrt(length2) : vec2(1.0f, 0.0f);
+    return vec3(direction.x * d.x - direction.y * d.y, direction.y * d.x + direction.x * d.y, strength * texel.z);
 }
 #endif
 

@@ -214,6 +214,34 @@ TEST_F(ModelMaps, TheSpecularMapsScaleTheTintAndTheWeight) {
     EXPECT_GT(largestRelativeError(test::pixel(shown, at.x, at.y), test::pixel(plain, at.x, at.y)), 0.05f);
 }
 
+// KHR_materials_anisotropy's map: each texel's RG turns the stretch's direction (its angle added
+// to the rotation), its B scales the strength; each quadrant is the quad drawn with the factors
+// its texel stands for, and without the map the picture differs.
+TEST_F(ModelMaps, TheAnisotropyMapTurnsTheStretchAndScalesIt) {
+    const Scene scene = quadScene();
+    // (1, 0.5): along t; (0.5, 1): along b; (0, 0.5): against t (the same lobe); (0.85, 0.85) at 45 degrees.
+    const std::vector<uint8_t> rgba{255, 128, 255, 255, 128, 255, 200, 255, 0, 128, 255, 255, 217, 217, 100, 255};
+    ModelMaterial brushed = factors(glm::vec3(0.8f, 0.8f, 0.85f));
+    brushed.factors.metallic = 1.0f;
+    brushed.factors.roughness = 0.35f;
+    brushed.factors.anisotropyStrength = 0.9f;
+    brushed.factors.anisotropyRotation = 0.3f;
+    ModelMaterial mapped = brushed;
+    mapped.anisotropyMap = nearestSlot();
+    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
+    for (size_t q = 0; q < 4; ++q) {
+        ModelMaterial expected = brushed;
+        const float dx = 2.0f * rgba[q * 4] / 255.0f - 1.0f, dy = 2.0f * rgba[q * 4 + 1] / 255.0f - 1.0f;
+        expected.factors.anisotropyRotation += std::atan2(dy, dx);
+        expected.factors.anisotropyStrength *= rgba[q * 4 + 2] / 255.0f;
+        expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
+    }
+    const HdrImage plain = render(scene, oneQuad(quad(), brushed), RenderPath::Single, 1);
+    const HdrImage shown = render(scene, model, RenderPath::Single, 1);
+    const glm::ivec2 at = pixelOf(scene, kQuadrants[1]);
+    EXPECT_GT(largestRelativeError(test::pixel(shown, at.x, at.y), test::pixel(plain, at.x, at.y)), 0.02f);
+}
+
 // The specialised path compiles a program for each set of maps the items have (PATINA_MAP_SET),
 // so a map an item lacks costs it nothing, and draws the same picture as the single path, whose
 // one program asks the uniforms which maps there are.
@@ -467,6 +495,10 @@ ModelMaterial everyMap() {
     mapped.factors.iridescenceThicknessMaximum = 700.0f;
     mapped.iridescenceMap.image = 0;
     mapped.iridescenceThickness.image = 3;
+    // KHR_materials_anisotropy's reads image 2, over a stretched lobe.
+    mapped.factors.anisotropyStrength = 0.6f;
+    mapped.factors.anisotropyRotation = 0.4f;
+    mapped.anisotropyMap.image = 2;
     mapped.normal.transform = {{0.1f, 0.2f}, {1.5f, 1.0f}, 0.3f};
     mapped.emissiveFactor = {0.05f, 0.02f, 0.01f};
     mapped.alphaMode = AlphaMode::Mask;
