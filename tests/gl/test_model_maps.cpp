@@ -3,6 +3,7 @@
 // checked against an image the maps must reproduce: the same surface drawn with factors alone
 // (a base colour, a normal, a roughness) that the texel stands for.
 #include <cmath>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,6 +89,8 @@ float largestRelativeError(glm::vec3 actual, glm::vec3 expected) {
     return largest;
 }
 
+const std::vector<glm::vec3> kQuadrants{{-0.5f, 0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}};
+
 class ModelMaps : public ::testing::Test {
 protected:
     HdrImage render(const Scene& scene, const std::shared_ptr<const Model>& model, RenderPath path, int samples) {
@@ -112,6 +115,26 @@ protected:
         }
     }
 
+    // The 2 x 2 image `rgba` on the maps `mapped` has beyond `unmapped`: each quadrant is the quad
+    // drawn with `unmapped` as `expectedAt` changes it for that quadrant's texel (RGBA), on every
+    // path; and the quadrant `differing` without the maps differs by more than `by` (the maps
+    // did it).
+    void expectEachQuadrantIsItsTexelsFactors(const Scene& scene, const ModelMaterial& unmapped,
+                                              const ModelMaterial& mapped, const std::vector<uint8_t>& rgba,
+                                              const std::function<void(const uint8_t*, MaterialParameters&)>& expectedAt,
+                                              size_t differing, float by) {
+        const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
+        for (size_t q = 0; q < 4; ++q) {
+            ModelMaterial expected = unmapped;
+            expectedAt(&rgba[q * 4], expected.factors);
+            expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
+        }
+        const HdrImage plain = render(scene, oneQuad(quad(), unmapped), RenderPath::Single, 1);
+        const HdrImage shown = render(scene, model, RenderPath::Single, 1);
+        const glm::ivec2 at = pixelOf(scene, kQuadrants[differing]);
+        EXPECT_GT(largestRelativeError(test::pixel(shown, at.x, at.y), test::pixel(plain, at.x, at.y)), by);
+    }
+
     // On every path, with and without MSAA: the quad's right half shows the background (cut out),
     // its left half does not.
     void expectRightHalfCutOut(const Scene& scene, const std::shared_ptr<const Model>& model) {
@@ -131,8 +154,6 @@ protected:
     HeadlessContext& context_ = test::glContext();   // before the renderer: it needs the context
     Renderer renderer_;
 };
-
-const std::vector<glm::vec3> kQuadrants{{-0.5f, 0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}};
 
 // glTF 2.0 3.9.2: base colour = factor x the map's texel, sRGB-decoded; the image's first row
 // at the top of the quad (v = 0), its first column on the left. Each quadrant shows its texel
@@ -171,18 +192,10 @@ TEST_F(ModelMaps, TheTransmissionAndThicknessMapsScaleTheirFactors) {
     ModelMaterial mapped = glass;
     mapped.transmissionMap = nearestSlot();
     mapped.thicknessMap = nearestSlot();
-    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
-    for (size_t q = 0; q < 4; ++q) {
-        ModelMaterial expected = glass;
-        expected.factors.transmission = rgba[q * 4] / 255.0f;
-        expected.factors.thickness = 2.0f * rgba[q * 4 + 1] / 255.0f;
-        expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
-    }
-    // Without the maps the quadrants differ: the maps did it.
-    const HdrImage plain = render(scene, oneQuad(quad(), glass), RenderPath::Single, 1);
-    const HdrImage shown = render(scene, model, RenderPath::Single, 1);
-    const glm::ivec2 opaque = pixelOf(scene, kQuadrants[0]);
-    EXPECT_GT(largestRelativeError(test::pixel(shown, opaque.x, opaque.y), test::pixel(plain, opaque.x, opaque.y)), 0.1f);
+    expectEachQuadrantIsItsTexelsFactors(scene, glass, mapped, rgba, [](const uint8_t* texel, MaterialParameters& m) {
+        m.transmission = texel[0] / 255.0f;
+        m.thickness = 2.0f * texel[1] / 255.0f;
+    }, 0, 0.1f);
 }
 
 // KHR_materials_specular's maps: the colour map's RGB (sRGB) scales the tint, the specular map's
@@ -199,19 +212,12 @@ TEST_F(ModelMaps, TheSpecularMapsScaleTheTintAndTheWeight) {
     ModelMaterial mapped = tinted;
     mapped.specularColor = nearestSlot();
     mapped.specular = nearestSlot();
-    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
-    for (size_t q = 0; q < 4; ++q) {
-        ModelMaterial expected = tinted;
+    expectEachQuadrantIsItsTexelsFactors(scene, tinted, mapped, rgba, [](const uint8_t* texel, MaterialParameters& m) {
         for (int c = 0; c < 3; ++c) {
-            expected.factors.specularTint[c] *= shader::srgbDecode(rgba[q * 4 + size_t(c)] / 255.0f);
+            m.specularTint[c] *= shader::srgbDecode(texel[c] / 255.0f);
         }
-        expected.factors.specularWeight *= rgba[q * 4 + 3] / 255.0f;
-        expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
-    }
-    const HdrImage plain = render(scene, oneQuad(quad(), tinted), RenderPath::Single, 1);
-    const HdrImage shown = render(scene, model, RenderPath::Single, 1);
-    const glm::ivec2 at = pixelOf(scene, kQuadrants[2]);
-    EXPECT_GT(largestRelativeError(test::pixel(shown, at.x, at.y), test::pixel(plain, at.x, at.y)), 0.05f);
+        m.specularWeight *= texel[3] / 255.0f;
+    }, 2, 0.05f);
 }
 
 // KHR_materials_anisotropy's map: each texel's RG turns the stretch's direction (its angle added
@@ -228,18 +234,11 @@ TEST_F(ModelMaps, TheAnisotropyMapTurnsTheStretchAndScalesIt) {
     brushed.factors.anisotropyRotation = 0.3f;
     ModelMaterial mapped = brushed;
     mapped.anisotropyMap = nearestSlot();
-    const auto model = oneQuad(quad(), mapped, {image(2, 2, rgba)});
-    for (size_t q = 0; q < 4; ++q) {
-        ModelMaterial expected = brushed;
-        const float dx = 2.0f * rgba[q * 4] / 255.0f - 1.0f, dy = 2.0f * rgba[q * 4 + 1] / 255.0f - 1.0f;
-        expected.factors.anisotropyRotation += std::atan2(dy, dx);
-        expected.factors.anisotropyStrength *= rgba[q * 4 + 2] / 255.0f;
-        expectSame(scene, model, oneQuad(quad(), expected), {kQuadrants[q]}, 1e-2f, "quadrant " + std::to_string(q));
-    }
-    const HdrImage plain = render(scene, oneQuad(quad(), brushed), RenderPath::Single, 1);
-    const HdrImage shown = render(scene, model, RenderPath::Single, 1);
-    const glm::ivec2 at = pixelOf(scene, kQuadrants[1]);
-    EXPECT_GT(largestRelativeError(test::pixel(shown, at.x, at.y), test::pixel(plain, at.x, at.y)), 0.02f);
+    expectEachQuadrantIsItsTexelsFactors(scene, brushed, mapped, rgba, [](const uint8_t* texel, MaterialParameters& m) {
+        const float dx = 2.0f * texel[0] / 255.0f - 1.0f, dy = 2.0f * texel[1] / 255.0f - 1.0f;
+        m.anisotropyRotation += std::atan2(dy, dx);
+        m.anisotropyStrength *= texel[2] / 255.0f;
+    }, 1, 0.02f);
 }
 
 // The specialised path compiles a program for each set of maps the items have (PATINA_MAP_SET),

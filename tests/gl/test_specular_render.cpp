@@ -60,6 +60,14 @@ Light studioLight() {
     return studio;
 }
 
+// Under every light type, and under the studio environment alone: the GPU is the CPU twin.
+void expectTheGpuIsTheTwin(GpuProbe& probe, const Material& material) {
+    const Light studio = studioLight();
+    const auto environment = test::madeEnvironment(studio.source);
+    EXPECT_LE(gpuAgainstCpu(probe, material, test::everyLightType(), environment), 1e-4);
+    EXPECT_LE(gpuAgainstCpu(probe, material, {studio}, environment), 1e-4);
+}
+
 TEST(SpecularRender, TheGpuIsTheCpuTwinUnderEveryLightAndTheEnvironment) {
     test::glContext();
     GpuProbe probe;
@@ -70,8 +78,7 @@ TEST(SpecularRender, TheGpuIsTheCpuTwinUnderEveryLightAndTheEnvironment) {
                                          tinted(model, {0.4f, 1.0f, 0.7f}, 1.0f, 0.5f),
                                          tinted(model, glm::vec3(1.0f), 0.0f, 0.0f)}) {
             SCOPED_TRACE(std::string(brdfModel(model).name) + " weight " + std::to_string(material.specularWeight));
-            EXPECT_LE(gpuAgainstCpu(probe, material, test::everyLightType(), environment), 1e-4);
-            EXPECT_LE(gpuAgainstCpu(probe, material, {studio}, environment), 1e-4);
+            expectTheGpuIsTheTwin(probe, material);
             // And it is not the untinted material's light.
             Material plain = material;
             plain.specularTint = glm::vec3(1.0f);
@@ -122,14 +129,11 @@ Material filmed(BrdfModelId model, float metallic, float thickness) {
 TEST(IridescenceRender, TheGpuIsTheCpuTwinUnderEveryLightAndTheEnvironment) {
     test::glContext();
     GpuProbe probe;
-    const Light studio = studioLight();
-    const auto environment = test::madeEnvironment(studio.source);
     for (BrdfModelId model : {BrdfModelId::Gltf, BrdfModelId::Epic}) {
         for (const Material& material : {filmed(model, 0.0f, 300.0f), filmed(model, 1.0f, 650.0f),
                                          filmed(model, 0.4f, 120.0f)}) {
             SCOPED_TRACE(std::string(brdfModel(model).name) + " metallic " + std::to_string(material.metallic));
-            EXPECT_LE(gpuAgainstCpu(probe, material, test::everyLightType(), environment), 1e-4);
-            EXPECT_LE(gpuAgainstCpu(probe, material, {studio}, environment), 1e-4);
+            expectTheGpuIsTheTwin(probe, material);
         }
     }
 }

@@ -349,6 +349,22 @@ void drawIridescence(Material& material, const Material& file, const Material& d
     ImGui::PopID();
 }
 
+// Every layer's section under the factors, in one order, for a model's part (`part` its index)
+// and for Patina's own material alike; a layer put on or taken off whole is said in `status`,
+// naming the material.
+void drawLayers(Material& material, const Material& file, const Material& defaults, int part, std::string& status) {
+    std::string said;
+    drawClearcoat(material, file, defaults, part, said);
+    drawSheen(material, file, defaults, part, said);
+    drawTransmission(material, file, defaults, part, said);
+    drawAnisotropy(material, file, defaults, part, said);
+    drawSpecularColour(material, file, defaults, part);
+    drawIridescence(material, file, defaults, part, said);
+    if (!said.empty()) {
+        status = said + " \"" + material.name + "\" (Ctrl+Z undoes it)";
+    }
+}
+
 // "a, b, c".
 std::string joinNames(const std::vector<std::string>& names) {
     std::string text;
@@ -562,19 +578,10 @@ void drawModelMaterial(Document& document, Interaction& interaction, AssetCache&
     // The layer sections' open states are the model's own: another file's part of the same
     // index must not open (or close) them as that part's were left.
     ImGui::PushID(document.scene.meshFile.c_str());
-    std::string said;   // a layer put on or taken off whole, for the status line
-    drawClearcoat(material, saved, defaults, selected, said);
-    drawSheen(material, saved, defaults, selected, said);
-    drawTransmission(material, saved, defaults, selected, said);
-    drawAnisotropy(material, saved, defaults, selected, said);
-    drawSpecularColour(material, saved, defaults, selected);
-    drawIridescence(material, saved, defaults, selected, said);
+    drawLayers(material, saved, defaults, selected, prompts.status);
     ImGui::PopID();
     if (material != before) {
         setModelMaterial(document, document.scene, selected, material);
-    }
-    if (!said.empty()) {
-        prompts.status = said + " \"" + material.name + "\" (Ctrl+Z undoes it)";
     }
     if (document.model) {
         drawModelExtensions(*document.model);
@@ -594,18 +601,8 @@ void drawMaterialPanel(EditorState& state, EditorServices& services) {
         // the sections a model's part has; their open states are the material file's own, so
         // that a file opened with a film shows it open.
         ImGui::PushID(("own material " + state.materialPath.string()).c_str());
-        std::string said;   // a layer put on or taken off whole, for the status line
-        const Material defaults;
-        drawClearcoat(material, state.savedMaterial, defaults, 0, said);
-        drawSheen(material, state.savedMaterial, defaults, 0, said);
-        drawTransmission(material, state.savedMaterial, defaults, 0, said);
-        drawAnisotropy(material, state.savedMaterial, defaults, 0, said);
-        drawSpecularColour(material, state.savedMaterial, defaults, 0);
-        drawIridescence(material, state.savedMaterial, defaults, 0, said);
+        drawLayers(material, state.savedMaterial, Material(), 0, state.status);
         ImGui::PopID();
-        if (!said.empty()) {
-            state.status = said + " \"" + material.name + "\" (Ctrl+Z undoes it)";
-        }
     }
 
     ImGui::SetNextItemOpen(state.showAdvanced);
