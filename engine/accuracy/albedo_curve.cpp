@@ -36,6 +36,7 @@ shader::ChannelInputs layeredProduct(const MaterialParameters& material, const E
     ChannelPoint point = channelPointOf(material);
     point.geometryNormal = point.N = N;
     point.V = V;
+    point.anisotropyTangent = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);   // surfaceMaterialInLobeFrame's
     ChannelEnvironment environment;
     environment.prefiltered = [&white](glm::vec3 d, float lod) { return sampleCube(white.prefiltered, d, lod); };
     environment.maxLod = white.maxLod();
@@ -48,7 +49,7 @@ AlbedoPoint albedoAt(const MaterialParameters& material, float thetaVDegrees, in
     const Environment& white = whiteFurnace();
     static const EnvironmentDistribution distribution(white.image);
     const ReferenceEnvironment reference{&white, &distribution, 1.0f, 0.0f};
-    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    const shader::SurfaceMaterial surface = surfaceMaterialInLobeFrame(material);   // V in the tangent's plane
     const glm::vec3 N(0.0f, 0.0f, 1.0f);
     const float theta = glm::radians(thetaVDegrees);
     const glm::vec3 V(std::sin(theta), 0.0f, std::cos(theta));

@@ -62,10 +62,12 @@ std::vector<glm::vec3> GpuProbe::evaluate(const Material& material, const std::v
         environmentLight ? environmentShown(environment, environmentLight->source) : nullptr;
     s.lights.upload(packEnabledLights(lights));
     s.lights.bind();
-    // The probe draws the base alone, with its specular tint and weight (PATINA_SPECULAR) and its
-    // thin film (PATINA_IRIDESCENCE).
-    const ShadingPrograms::Surface surface = ShadingPrograms::surfaceOf(
-        false, false, false, false, false, false, false, hasSpecularTint(material), hasIridescence(material));
+    // The probe draws the base alone, with its stretch (PATINA_ANISOTROPY, turned from the
+    // fallback direction: a probe has no tangent), its specular tint and weight (PATINA_SPECULAR)
+    // and its thin film (PATINA_IRIDESCENCE), as probeOnCpu shades it.
+    const ShadingPrograms::Surface surface =
+        ShadingPrograms::surfaceOf(false, false, false, false, false, hasAnisotropy(material), false,
+                                   hasSpecularTint(material), hasIridescence(material));
     const GlProgram& program = s.programs.use(material.model, ShadingPrograms::Use::Probe,
                                               ShadingPrograms::Output::Linear, environmentLight, surface);
     setMaterialUniforms(program, material);

@@ -23,6 +23,9 @@ ChannelPoint channelPoint(const PixelSurfaces& surfaces, const std::vector<Scene
         point.uv1 = surfaces.coordinates[i].uv1;
         point.tangent = surfaces.coordinates[i].tangent;
     }
+    if (!surfaces.tangents.empty()) {
+        point.anisotropyTangent = surfaces.tangents[i];
+    }
     point.geometryNormal = surfaces.geometryNormals[i];
     point.N = shader::safeNormalize(sample.normal);
     point.V = sample.toViewer;

@@ -70,11 +70,13 @@ inline real specularLobe(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
     return distribution(a.NoH, cross(N, a.H), material.alpha) * visibility(a.NoV, a.NoL, material);
 }
 
-// The model's D, V and F for one configuration, for plots (C++ only).
+// The model's D, V and F for one configuration, for plots (C++ only); an anisotropic lobe's own
+// D and V (stretchedTerms).
 inline SpecularTerms specularTerms(SurfaceMaterial material, vec3 N, vec3 V, vec3 L) {
     const LobeAngles a = lobeAngles(N, V, L);
-    return SpecularTerms(distribution(a.NoH, cross(N, a.H), material.alpha), visibility(a.NoV, a.NoL, material),
-                         surfaceFresnel(material, a.NoV, clamp(dot(V, a.H), 0.0f, 1.0f)));
+    const LobeShape shape = stretchedTerms(material, distribution(a.NoH, cross(N, a.H), material.alpha),
+                                           visibility(a.NoV, a.NoL, material), a.NoV, a.NoL, a.NoH, a.H, V, L);
+    return SpecularTerms(shape.D, shape.Vis, surfaceFresnel(material, a.NoV, clamp(dot(V, a.H), 0.0f, 1.0f)));
 }
 
 }  // namespace

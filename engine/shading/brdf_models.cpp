@@ -273,6 +273,8 @@ ChannelPoint channelPointOf(const MaterialParameters& material) {
     point.iridescence = material.iridescence;
     point.iridescenceIor = material.iridescenceIor;
     point.iridescenceThickness = material.iridescenceThicknessMaximum;
+    point.anisotropyStrength = material.anisotropyStrength;
+    point.anisotropyRotation = material.anisotropyRotation;
     point.metallic = material.metallic;
     point.clearcoat = material.clearcoat;
     point.clearcoatRoughness = material.clearcoatRoughness;

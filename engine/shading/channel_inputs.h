@@ -2,6 +2,7 @@
 // The CPU twin of shade.frag's inspectedChannel (PATINA_CHANNEL): a surface point's channel
 // inputs (shaders/shared/channels.glsl) gathered by the same shared functions in the same order,
 // for the inspector's CPU images, its pixel read-out and the tests that hold the GPU to them.
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -42,6 +43,11 @@ struct ChannelPoint {
     // KHR_materials_iridescence's strength after its map (0: none), film ior and thickness in nm
     // after its map.
     float iridescence = 0.0f, iridescenceIor = 1.3f, iridescenceThickness = 0.0f;
+    // KHR_materials_anisotropy's strength (0: none) and rotation after its map, turned from
+    // `anisotropyTangent` (mesh.vert's, as the truth reads it: PixelSurfaces::tangents; w = 0: the
+    // fallback's).
+    float anisotropyStrength = 0.0f, anisotropyRotation = 0.0f;
+    glm::vec4 anisotropyTangent{0.0f};
 };
 
 // A point of `material`'s factors (its maps already applied, if any), the rest at ChannelPoint's
@@ -49,7 +55,7 @@ struct ChannelPoint {
 ChannelPoint channelPointOf(const MaterialParameters& material);
 
 // The point's layers as shade.frag derives them for a part that has them (PATINA_CLEARCOAT,
-// PATINA_SHEEN, PATINA_TRANSMISSION); a factor of 0 is none, which shades the same as the layer
+// PATINA_SHEEN, PATINA_TRANSMISSION, PATINA_ANISOTROPY); a factor of 0 is none, which shades the same as the layer
 // at 0.
 inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
     shader::ChannelLayers layers = shader::noChannelLayers();
@@ -68,6 +74,13 @@ inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
             shader::withSpecular(shader::deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic),
                                  p.specularTint, p.specularWeight),
             p.transmission, p.transmissionAttenuation, p.N, p.V);
+    }
+    // As surfaceMaterialAt (cpu_shading.h) stretches the lobe: where the strength is above 0.
+    if (p.anisotropyStrength > 0.0f) {
+        layers.anisotropic = true;
+        layers.anisotropy =
+            glm::vec3(std::cos(p.anisotropyRotation), std::sin(p.anisotropyRotation), p.anisotropyStrength);
+        layers.anisotropyTangent = p.anisotropyTangent;
     }
     layers.iridescence = p.iridescence;
     layers.iridescenceIor = p.iridescenceIor;

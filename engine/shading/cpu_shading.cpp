@@ -24,6 +24,10 @@ shader::SurfaceMaterial surfaceMaterialAt(const MaterialParameters& material, gl
                                   std::sin(material.anisotropyRotation), material.anisotropyStrength);
 }
 
+shader::SurfaceMaterial surfaceMaterialInLobeFrame(const MaterialParameters& material) {
+    return surfaceMaterialAt(material, glm::vec3(0.0f, 0.0f, 1.0f), glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+}
+
 glm::vec3 shadePoint(BrdfModelId model, const shader::SurfaceMaterial& material,
                      const std::vector<shader::PackedLight>& lights, glm::vec3 position,
                      glm::vec3 normal, glm::vec3 toViewer) {

@@ -14,6 +14,10 @@ shader::SurfaceMaterial surfaceMaterial(const MaterialParameters& material);
 // has one (hasAnisotropy): shade.frag's withAnisotropy on the unit shading normal N and the
 // mesh's tangent there (xyz and w as mesh.vert hands it on; w = 0: none, the fallback's).
 shader::SurfaceMaterial surfaceMaterialAt(const MaterialParameters& material, glm::vec3 N, glm::vec4 tangent);
+// The same in the lobe views' frame (shading/lobe.h, the albedo curve, the lobe panel's terms):
+// N = (0, 0, 1) and the tangent along +x, the polar plot's plane of incidence, so that an
+// anisotropic lobe is stretched along the rotation turned from x (0: in that plane).
+shader::SurfaceMaterial surfaceMaterialInLobeFrame(const MaterialParameters& material);
 
 // Linear radiance towards V at P with normal N, summed over the packed lights: the CPU twin
 // of shaders/stages/shade.frag's single-pass loop, running the same shared functions for `model`.

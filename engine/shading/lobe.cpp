@@ -24,13 +24,14 @@ glm::vec3 transmittedLobe(const MaterialParameters& material, glm::vec3 N, glm::
     const glm::vec3 attenuation =
         shader::volumeAttenuation(material.attenuationColor, material.attenuationDistance, material.thickness);
     const shader::Transmission t =
-        shader::deriveTransmission(surfaceMaterial(material), material.transmission, attenuation, N, L);
+        shader::deriveTransmission(surfaceMaterialInLobeFrame(material), material.transmission, attenuation, N, L);
     return layeredTransmission(shader::transmissionBtdf(t, N, L, below), brdfLayers(material, N, L));
 }
 
-// The material the reflected lobes read: its diffuse what a transmission leaves of it.
+// The material the reflected lobes read (stretched along x turned by its rotation where it is
+// anisotropic): its diffuse what a transmission leaves of it.
 shader::SurfaceMaterial reflectingSurface(const MaterialParameters& material) {
-    const shader::SurfaceMaterial surface = surfaceMaterial(material);
+    const shader::SurfaceMaterial surface = surfaceMaterialInLobeFrame(material);
     return material.transmission > 0.0f ? shader::transmissionDiffuse(surface, material.transmission) : surface;
 }
 }  // namespace

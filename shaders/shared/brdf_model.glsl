@@ -125,6 +125,27 @@ PATINA_INLINE vec3 energyCompensation(vec3 f0, real NoV, real roughness) {
 #endif
 }
 
+// The specular lobe's D and Vis: the model's own, or where the material has
+// KHR_materials_anisotropy's stretch (alpha_t > 0) the extension's D and height-correlated V
+// (brdf.glsl), which replace them as the extension defines them on glTF's BRDF.
+struct LobeShape {
+    real D;
+    real Vis;
+};
+PATINA_INLINE LobeShape stretchedTerms(SurfaceMaterial material, real modelD, real modelVis, real NoV, real NoL,
+                                       real NoH, vec3 H, vec3 V, vec3 L) {
+#ifdef PATINA_ANISOTROPIC_FIELDS
+    if (material.alphaT > 0.0f) {
+        vec3 T = material.anisotropicT;
+        vec3 B = material.anisotropicB;
+        return LobeShape(D_GGX_Anisotropic(NoH, dot(T, H), dot(B, H), material.alphaT, material.alphaB),
+                         V_SmithGGXCorrelated_Anisotropic(NoV, NoL, dot(T, V), dot(B, V), dot(T, L), dot(B, L),
+                                                          material.alphaT, material.alphaB));
+    }
+#endif
+    return LobeShape(modelD, modelVis);
+}
+
 // f = d + sp for unit N, V, L on the lit side (NoL > 0); the caller skips NoL <= 0.
 // `underEnvironment` takes environmentVisibility (the ground truth of image-based lighting).
 PATINA_INLINE BrdfValue evaluateBrdfFor(SurfaceMaterial material, vec3 N, vec3 V, vec3 L, bool underEnvironment) {
@@ -139,21 +160,12 @@ PATINA_INLINE BrdfValue evaluateBrdfFor(SurfaceMaterial material, vec3 N, vec3 V
     vec3 H = LplusV * inversesqrt(lengthSquared);
     real NoH = clamp(dot(N, H), 0.0f, 1.0f);
     real VoH = clamp(dot(V, H), 0.0f, 1.0f);
-    real D = distribution(NoH, cross(N, H), material.alpha);
-    real Vis = underEnvironment ? environmentVisibility(NoV, NoL, material) : visibility(NoV, NoL, material);
-#ifdef PATINA_ANISOTROPIC_FIELDS
-    // KHR_materials_anisotropy: its D and height-correlated V (brdf.glsl) replace the model's,
-    // as the extension defines them on glTF's BRDF.
-    if (material.alphaT > 0.0f) {
-        vec3 T = material.anisotropicT;
-        vec3 B = material.anisotropicB;
-        D = D_GGX_Anisotropic(NoH, dot(T, H), dot(B, H), material.alphaT, material.alphaB);
-        Vis = V_SmithGGXCorrelated_Anisotropic(NoV, NoL, dot(T, V), dot(B, V), dot(T, L), dot(B, L), material.alphaT,
-                                               material.alphaB);
-    }
-#endif
+    LobeShape shape = stretchedTerms(material, distribution(NoH, cross(N, H), material.alpha),
+                                     underEnvironment ? environmentVisibility(NoV, NoL, material)
+                                                      : visibility(NoV, NoL, material),
+                                     NoV, NoL, NoH, H, V, L);
     vec3 F = surfaceFresnel(material, NoV, VoH);
-    vec3 specular = (D * Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
+    vec3 specular = (shape.D * shape.Vis) * F * energyCompensation(material.f0, NoV, material.roughness);
     // LoH = VoH: H bisects L and V.
     return BrdfValue(diffuse(material, NoV, NoL, VoH), specular);
 }
@@ -363,7 +375,9 @@ PATINA_INLINE InspectedTerms inspectedTerms(PackedLight light, SurfaceMaterial m
     real NoV = max(dot(N, V), MIN_N_DOT_V);
     real NoL = clamp(dot(N, L), 0.0f, 1.0f);
     real NoH = clamp(dot(N, H), 0.0f, 1.0f);
-    real Vis = visibility(NoV, NoL, material);
-    return InspectedTerms(distribution(NoH, cross(N, H), material.alpha), Vis * real(4.0f) * NoL * NoV,
+    // An anisotropic lobe's own D and V (stretchedTerms), as the lights draw it.
+    LobeShape shape = stretchedTerms(material, distribution(NoH, cross(N, H), material.alpha),
+                                     visibility(NoV, NoL, material), NoV, NoL, NoH, H, V, L);
+    return InspectedTerms(shape.D, shape.Vis * real(4.0f) * NoL * NoV,
                           surfaceFresnel(material, NoV, clamp(dot(V, H), 0.0f, 1.0f)));
 }

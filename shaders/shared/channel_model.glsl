@@ -21,11 +21,17 @@ PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roug
                          vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f), vec3(0.0f));
 }
 
-// The material the base's lobes read: deriveSurfaceMaterial's with its specular and its film, its diffuse reduced by a
-// transmission (transmission.glsl's transmissionDiffuse), as shade.frag shades it.
+// The material the base's lobes read: deriveSurfaceMaterial's with its specular, its stretch and
+// its film, its diffuse reduced by a transmission (transmission.glsl's transmissionDiffuse), as
+// shade.frag shades it.
 PATINA_INLINE SurfaceMaterial channelMaterial(ChannelInputs c, ChannelLayers layers) {
     SurfaceMaterial m = withSpecular(deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic),
                                      c.specularTint, c.specularWeight);
+    if (layers.anisotropic) {
+        vec4 t = layers.anisotropyTangent;
+        m = withAnisotropy(m, c.shadingNormal, vec3(t.x, t.y, t.z), t.w, layers.anisotropy.x, layers.anisotropy.y,
+                           layers.anisotropy.z);
+    }
 #ifdef PATINA_IRIDESCENT_FIELDS
     m = withFilmAt(withIridescence(m, layers.iridescence, layers.iridescenceIor, layers.iridescenceThickness), c.NoV);
 #endif

@@ -96,13 +96,20 @@ struct ChannelLayers {
     real iridescence;
     real iridescenceIor;
     real iridescenceThickness;
+    // KHR_materials_anisotropy's stretch of the base's lobe (withAnisotropy's arguments, where the
+    // part has the layer): (cos, sin) of its direction and its strength, after the map, and the
+    // tangent it turns from (w = 0: none, the fallback's).
+    bool anisotropic;
+    vec3 anisotropy;
+    vec4 anisotropyTangent;
 };
 
 // A part without layers (the fields are not read).
 PATINA_INLINE ChannelLayers noChannelLayers() {
     return ChannelLayers(false, Clearcoat(0.0f, 0.0f, 0.0f, vec3(0.0f), 1.0f, 0.0f), false,
                          Sheen(vec3(0.0f), 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f), false, 0.0f,
-                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f, 1.0f), 0.0f, 1.3f, 0.0f);
+                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f, 1.0f), 0.0f, 1.3f, 0.0f, false,
+                         vec3(1.0f, 0.0f, 0.0f), vec4(0.0f));
 }
 
 // One light's light through the wall (transmission.glsl's transmissionLight; a hemisphere

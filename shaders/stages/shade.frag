@@ -620,6 +620,11 @@ void main() {
     layers.transmissionFactor = transmissionFactor;
     layers.transmission = transmission;
 #endif
+#ifdef PATINA_ANISOTROPY
+    layers.anisotropic = true;
+    layers.anisotropy = anisotropy;
+    layers.anisotropyTangent = anisotropyTangent;
+#endif
 #ifdef PATINA_IRIDESCENCE
     layers.iridescence = material.iridescence;
     layers.iridescenceIor = material.iridescenceIor;

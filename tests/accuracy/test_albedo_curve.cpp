@@ -1,5 +1,7 @@
 // BRDF Explorer's albedo view (accuracy/albedo_curve.h): the product's split sum under the white
 // furnace against the ground truth's estimate of the same integral.
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "accuracy/albedo_curve.h"
@@ -177,6 +179,32 @@ TEST(AlbedoCurve, TheChartCarriesTheTruthsErrorBars) {
         EXPECT_GT(truth.errors[i], 0.0);
         EXPECT_NEAR(truth.points[i].y, 0.2126 * curve[i].truth.r + 0.7152 * curve[i].truth.g + 0.0722 * curve[i].truth.b,
                     1e-5);
+    }
+}
+
+// A white metal of roughness 0.3 brushed by KHR_materials_anisotropy at `strength`.
+MaterialParameters brushedMetal(float strength) {
+    MaterialParameters material;
+    material.model = BrdfModelId::Gltf;
+    material.baseColor = glm::vec3(1.0f);
+    material.roughness = 0.3f;
+    material.metallic = 1.0f;
+    material.anisotropyStrength = strength;
+    return material;
+}
+
+// The lobe panel's albedo curve under the white furnace integrates the stretched lobe: a brushed
+// white metal's truth is below the round one's (the single scattering loses more along t), at
+// or under 1; the curve was the round lobe's before.
+TEST(AlbedoCurve, AnAnisotropicCurveIntegratesTheStretchedLobe) {
+    for (const float thetaV : {0.0f, 60.0f}) {
+        const AlbedoPoint round = albedoAt(brushedMetal(0.0f), thetaV, 4000, 7);
+        const AlbedoPoint stretched = albedoAt(brushedMetal(1.0f), thetaV, 4000, 7);
+        std::printf("theta_v %.0f: truth %.4f +- %.4f (round %.4f), split sum %.4f\n", double(thetaV),
+                    double(stretched.truth.y), double(stretched.standardError.y), double(round.truth.y),
+                    double(stretched.product.y));
+        EXPECT_LT(stretched.truth.y, round.truth.y - 0.05f) << thetaV;
+        EXPECT_LE(stretched.truth.y, 1.0f + 3.0f * stretched.standardError.y) << thetaV;
     }
 }
 

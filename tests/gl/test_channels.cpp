@@ -343,10 +343,11 @@ TEST_F(Channels, TheLayersChannelsAreTheirOwnLightAndZeroWithoutTheLayer) {
 // the base seen through the coat and weighed by the sheen's albedo scaling, the layer's own
 // light added; without the layers in the sum a coat's highlight, a sheen's rim or what shows
 // through a glass (and the diffuse it takes away) would be missing; under a sheen the glass's
-// light is weighed by the sheen's albedo scaling on both. Nothing stands behind the sphere, so
+// light is weighed by the sheen's albedo scaling on both; an anisotropic part's lobe is stretched
+// on both (KHR_materials_anisotropy's, turned from the fallback direction). Nothing stands behind the sphere, so
 // the render's scene behind it adds nothing the twin lacks.
 TEST_F(Channels, TheCpuTwinsRadianceWithALayerIsTheRenders) {
-    for (const std::string layer : {"clearcoat", "sheen", "transmission", "sheened glass"}) {
+    for (const std::string layer : {"clearcoat", "sheen", "transmission", "sheened glass", "anisotropy"}) {
         const Scene scene = layeredScene(layer);
         const PreparedScene prepared{scene, test::preparedDefault().mesh, test::preparedDefault().environment};
         const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
@@ -363,6 +364,38 @@ TEST_F(Channels, TheCpuTwinsRadianceWithALayerIsTheRenders) {
         }
         EXPECT_GT(covered, 500) << layer;
         EXPECT_GE(agreeing, covered * 99 / 100) << layer << ": " << agreeing << " of " << covered;
+    }
+}
+
+// KHR_materials_anisotropy in the inspector (docs/SHADING.md S8): an anisotropic part's D, G,
+// specular lighting and environment channels are the CPU twin's on the GPU, and they show the
+// stretched lobe, not the round one: D and the specular lighting differ from the same part with
+// no strength over much of the sphere (the round lobe's channels were drawn before).
+TEST_F(Channels, AnAnisotropicPartsTermsAndLightingAreTheTwinsAndStretched) {
+    const Scene brushed = layeredScene("anisotropy");
+    Scene round = brushed;
+    round.material.anisotropyStrength = 0.0f;
+    const PreparedScene prepared{brushed, test::preparedDefault().mesh, test::preparedDefault().environment};
+    const PreparedScene roundPrepared{round, test::preparedDefault().mesh, test::preparedDefault().environment};
+    const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
+    const PixelSurfaces roundSurfaces = rasterizeSurfaces(roundPrepared, kSize, kSize);
+    for (const std::string name : {"D", "G", "specular-lighting", "environment-specular"}) {
+        const ChannelRequest request = *channelFromName(name);
+        const HdrImage a = gpu(prepared, request), b = channelImage(prepared, surfaces, request);
+        const HdrImage r = channelImage(roundPrepared, roundSurfaces, request);
+        int covered = 0, agreeing = 0, stretched = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (inside(surfaces, x, y)) {
+                    ++covered;
+                    agreeing += near(test::pixel(a, x, y), test::pixel(b, x, y), 1e-2f, 2e-3f);
+                    stretched += !near(test::pixel(b, x, y), test::pixel(r, x, y), 0.05f, 2e-3f);
+                }
+            }
+        }
+        EXPECT_GT(covered, 2000) << name;
+        EXPECT_GE(agreeing, covered * 99 / 100) << name << ": " << agreeing << " of " << covered;
+        EXPECT_GT(stretched, covered / 4) << name << ": " << stretched << " of " << covered;
     }
 }
 

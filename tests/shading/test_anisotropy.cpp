@@ -16,6 +16,7 @@
 #include "scene/light_packing.h"
 #include "shading/brdf_models.h"
 #include "shading/cpu_shading.h"
+#include "shading/lobe.h"
 #include "shading/shading.h"
 #include "shading/shading_f64.h"
 #include "test_support.h"
@@ -190,6 +191,45 @@ TEST(Anisotropy, UnderAnEnvironmentTheTruthSeesTheStretchAndTheTwinIsMeasured) {
             EXPECT_TRUE(std::isfinite(twin.y) && twin.y > 0.0f);
         }
     }
+}
+
+// The lobe views (polar, slice, 3D: shading/lobe.h's lobeValue) and the lobe panel's D and G
+// plots draw the stretched lobe in their frame, N = z and the tangent along x: a white metal's
+// specular from L towards V is Burley's D times Heitz's V (F = 1 for a white metal) with t the
+// x axis turned by the rotation, in and out of the plane of incidence. Before, they drew the
+// round lobe whatever the strength.
+TEST(Anisotropy, TheLobeViewsDrawTheStretchedLobeTurnedFromX) {
+    std::mt19937 rng(17);
+    const glm::dvec3 N(0.0, 0.0, 1.0);
+    for (const float rotation : {0.0f, 0.7f, 1.5707963f}) {
+        const Material m = brushed(0.4f, 0.8f, rotation);
+        const double alpha = 0.16, at = alpha + (1.0 - alpha) * 0.64, ab = alpha;
+        const glm::dvec3 t(std::cos(double(rotation)), std::sin(double(rotation)), 0.0), b = glm::cross(N, t);
+        auto inFrame = [&](glm::dvec3 v) { return glm::dvec3(glm::dot(v, t), glm::dot(v, b), v.z); };
+        for (int i = 0; i < 40; ++i) {
+            const glm::dvec3 L = test::vectorAtCosine(N, 0.2 + 0.8 * double(i % 5) / 4.0, rng);
+            const glm::dvec3 V = test::vectorAtCosine(N, 0.2 + 0.8 * double(i / 8) / 4.0, rng);
+            const glm::dvec3 H = glm::normalize(L + V);
+            const double D = burleyD(inFrame(H), at, ab), expected = D * heitzV(inFrame(V), inFrame(L), at, ab);
+            const LobeValue lobe = lobeValue(m, glm::vec3(L), glm::vec3(V));
+            EXPECT_NEAR(lobe.specular.y, expected, 2e-4 * expected + 1e-6) << "rotation " << rotation << " #" << i;
+            const shader::SpecularTerms terms =
+                specularTerms(BrdfModelId::Gltf, surfaceMaterialInLobeFrame(m), glm::vec3(N), glm::vec3(V), glm::vec3(L));
+            EXPECT_NEAR(terms.D, D, 2e-4 * D) << "rotation " << rotation << " #" << i;
+        }
+    }
+    // In the plane of incidence the lobe stretched along x (rotation 0) is more than twice as wide
+    // at half its peak as the one stretched across it.
+    const std::vector<LobeSample> along = evaluateLobe(brushed(0.3f, 1.0f, 0.0f), 30.0f, 181);
+    const std::vector<LobeSample> across = evaluateLobe(brushed(0.3f, 1.0f, 1.5707963f), 30.0f, 181);
+    auto aboveHalf = [](const std::vector<LobeSample>& lobe) {
+        float peak = 0.0f;
+        for (const LobeSample& sample : lobe) {
+            peak = std::max(peak, sample.specular.y);
+        }
+        return std::count_if(lobe.begin(), lobe.end(), [&](const LobeSample& s) { return s.specular.y > 0.5f * peak; });
+    };
+    EXPECT_GT(aboveHalf(along), 2 * aboveHalf(across));
 }
 
 }  // namespace

@@ -187,7 +187,7 @@ void drawLobePanel(const Document& document, Interaction& interaction, EditorSer
     // The three specular terms against theta_out, from the shared code.
     ImGui::BeginGroup();
     const Material edited = editedMaterial(document, interaction);
-    const shader::SurfaceMaterial m = surfaceMaterial(edited);
+    const shader::SurfaceMaterial m = surfaceMaterialInLobeFrame(edited);
     const float inRadians = glm::radians(lobe.thetaInDegrees);
     const glm::vec3 N(0, 0, 1), L(std::sin(inRadians), 0, std::cos(inRadians));
     float d[kLobeSamples], g[kLobeSamples], f[kLobeSamples];
