@@ -21,7 +21,12 @@ std::string describe(const PbrCheck& check, const PbrRanges& ranges) {
                       check.verdict == PbrVerdict::MetalTooDark ? ", below the darkest measured metal" : "",
                       ranges.metalMin);
     } else {
-        std::snprintf(text, sizeof text, "dielectric, albedo %d sRGB%s (%d-%d)", check.value,
+        // A transmitting dielectric's bright end is its reflected share's (pbr_validation.h).
+        char reflected[64] = "";
+        if (check.reflected != check.value) {
+            std::snprintf(reflected, sizeof reflected, ", %d reflected (the rest passes through)", check.reflected);
+        }
+        std::snprintf(text, sizeof text, "dielectric, albedo %d sRGB%s%s (%d-%d)", check.value, reflected,
                       check.verdict == PbrVerdict::DielectricTooDark     ? ", darker than any real dielectric"
                       : check.verdict == PbrVerdict::DielectricTooBright ? ", brighter than any real dielectric"
                                                                          : "",
@@ -31,8 +36,9 @@ std::string describe(const PbrCheck& check, const PbrRanges& ranges) {
 }
 
 // One line for a material judged by one colour; whether it is in range.
-bool reportColour(const std::string& where, glm::vec3 baseColor, float metallic, const PbrRanges& ranges) {
-    const PbrCheck check = checkBaseColor(baseColor, metallic, ranges);
+bool reportColour(const std::string& where, glm::vec3 baseColor, float metallic, float transmission,
+                  const PbrRanges& ranges) {
+    const PbrCheck check = checkBaseColor(baseColor, metallic, transmission, ranges);
     std::cout << where << ": " << (check.verdict == PbrVerdict::Ok ? "ok: " : "out of range: ")
               << describe(check, ranges) << "\n";
     return check.verdict == PbrVerdict::Ok;
@@ -50,7 +56,8 @@ bool reportModelMaterial(const std::string& where, const Model& model, const Mod
                          const PbrRanges& ranges) {
     const PbrTally tally = checkBaseColorTexels(model, material, ranges);
     if (tally.texels == 0) {
-        return reportColour(where, material.factors.baseColor, material.factors.metallic, ranges);
+        return reportColour(where, material.factors.baseColor, material.factors.metallic,
+                            material.factors.transmission, ranges);
     }
     std::cout << where << ": " << (tally.flagged() == 0 ? "ok: " : "out of range: ") << "base colour map, "
               << percent(tally.flagged(), tally.texels) << " of " << tally.texels << " texels flagged (dielectric below "
@@ -65,7 +72,7 @@ std::pair<int, int> validateFile(const std::string& path, const PbrRanges& range
     if (gltfExtension(path).empty()) {
         std::vector<std::string> warnings;
         const Material material = loadMaterialFile(path, warnings);
-        return {reportColour(path, material.baseColor, material.metallic, ranges) ? 0 : 1, 1};
+        return {reportColour(path, material.baseColor, material.metallic, material.transmission, ranges) ? 0 : 1, 1};
     }
     const std::shared_ptr<const LoadedModel> file = assets.model(path);
     const Model* model = &file->model;

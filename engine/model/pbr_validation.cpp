@@ -7,13 +7,15 @@
 
 namespace patina {
 
-PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, const PbrRanges& ranges) {
+PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, float transmission, const PbrRanges& ranges) {
     // The channel's own functions (channels.glsl), so the batch check and the picture agree.
     PbrCheck check;
     check.metal = metallic >= 0.5f;
     const float lightness = shader::pbrLightness(linearBaseColor);
+    const float reflected = shader::pbrLightness((1.0f - transmission) * linearBaseColor);
     check.value = int(lightness);
-    switch (shader::pbrVerdict(lightness, check.metal, ranges.asVector())) {
+    check.reflected = int(reflected);
+    switch (shader::pbrVerdict(lightness, reflected, check.metal, ranges.asVector())) {
         case shader::PBR_DIELECTRIC_TOO_DARK: check.verdict = PbrVerdict::DielectricTooDark; break;
         case shader::PBR_DIELECTRIC_TOO_BRIGHT: check.verdict = PbrVerdict::DielectricTooBright; break;
         case shader::PBR_METAL_TOO_DARK: check.verdict = PbrVerdict::MetalTooDark; break;
@@ -48,6 +50,7 @@ PbrTally checkBaseColorTexels(const Model& model, const ModelMaterial& material,
         return tally;
     }
     const ModelImage* metallicRoughness = imageOf(model, material.metallicRoughness);
+    const ModelImage* transmissionMap = imageOf(model, material.transmissionMap);
     for (int y = 0; y < base->height; ++y) {
         for (int x = 0; x < base->width; ++x) {
             const uint8_t* texel = texelAt(*base, x, y, base->width, base->height);
@@ -56,7 +59,11 @@ PbrTally checkBaseColorTexels(const Model& model, const ModelMaterial& material,
             const float metallic =
                 material.factors.metallic *
                 (metallicRoughness ? texelAt(*metallicRoughness, x, y, base->width, base->height)[2] / 255.0f : 1.0f);
-            const PbrVerdict verdict = checkBaseColor(material.factors.baseColor * decoded, metallic, ranges).verdict;
+            const float transmission =
+                material.factors.transmission *
+                (transmissionMap ? texelAt(*transmissionMap, x, y, base->width, base->height)[0] / 255.0f : 1.0f);
+            const PbrVerdict verdict =
+                checkBaseColor(material.factors.baseColor * decoded, metallic, transmission, ranges).verdict;
             ++tally.texels;
             tally.dielectricDark += verdict == PbrVerdict::DielectricTooDark;
             tally.dielectricBright += verdict == PbrVerdict::DielectricTooBright;

@@ -27,16 +27,20 @@ enum class PbrVerdict { Ok, DielectricTooDark, DielectricTooBright, MetalTooDark
 
 // A surface is judged a metal from metallic 0.5 up (a texel between the two is a transition a
 // mask blends; a whole material there is flagged as partly metal by the caller).
+// A dielectric that transmits (KHR_materials_transmission, `transmission` > 0) passes that share
+// of its base colour's light through: its bright end is judged on the share it reflects,
+// c_base (1 - transmission), its dark end on the whole colour (channels.glsl's pbrVerdict).
 struct PbrCheck {
     bool metal = false;
     int value = 0;   // the luminance, sRGB-encoded, 0-255
+    int reflected = 0;   // the same of c_base (1 - transmission): `value` for an opaque part
     PbrVerdict verdict = PbrVerdict::Ok;
 };
-PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, const PbrRanges& ranges);
+PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, float transmission, const PbrRanges& ranges);
 
 // The texels of `material`'s base colour map, each as the shader reads it (the factor times the
-// sRGB-decoded texel; metallic the factor times the metallic-roughness map's blue at the same
-// place, nearest), counted by verdict. All zero for a material without a base colour map.
+// sRGB-decoded texel; metallic the factor times the metallic-roughness map's blue, the
+// transmission the factor times its map's red, at the same place, nearest), counted by verdict. All zero for a material without a base colour map.
 struct PbrTally {
     size_t texels = 0, dielectricDark = 0, dielectricBright = 0, metalDark = 0;
     size_t flagged() const { return dielectricDark + dielectricBright + metalDark; }

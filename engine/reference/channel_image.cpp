@@ -61,10 +61,11 @@ HdrImage channelImage(const PreparedScene& prepared, const PixelSurfaces& surfac
             continue;
         }
         const BrdfModelId model = draws[size_t(surfaces.drawOfSample[size_t(i)])].material.model;
+        const ChannelPoint point = channelPoint(surfaces, draws, size_t(i));
         const shader::ChannelInputs inputs =
-            gatherChannelInputs(model, channelPoint(surfaces, draws, size_t(i)), packed, lights.asked, lights.key,
-                                environment ? &*environment : nullptr);
-        const glm::vec3 value = shader::channelValue(request.channel, inputs, channelPbrRanges(request));
+            gatherChannelInputs(model, point, packed, lights.asked, lights.key, environment ? &*environment : nullptr);
+        const glm::vec3 value =
+            shader::channelValue(request.channel, inputs, channelPointLayers(point), channelPbrRanges(request));
         std::copy(&value.x, &value.x + 3, &image.rgb[pixel * 3]);
     }
     return image;

@@ -190,11 +190,17 @@ PATINA_INLINE real pbrLightness(vec3 linearBaseColor) {
     return floor(255.0f * srgbEncode(clamp(rec709Luminance(linearBaseColor), 0.0f, 1.0f)) + 0.5f);
 }
 
-PATINA_INLINE int pbrVerdict(real lightness, bool metal, vec3 ranges) {
+// A thin wall's transmission (KHR_materials_transmission) passes that share of the base colour's
+// light through the surface: it is not albedo, which the dielectric's upper bound is about
+// (a clear glass is white and absorbs nothing). So the bright end judges `reflectedLightness`,
+// the lightness of c_base (1 - transmission), and the dark end the whole colour's.
+PATINA_INLINE int pbrVerdict(real lightness, real reflectedLightness, bool metal, vec3 ranges) {
     if (metal) {
         return lightness < ranges.z ? PBR_METAL_TOO_DARK : PBR_OK;
     }
-    return lightness < ranges.x ? PBR_DIELECTRIC_TOO_DARK : (lightness > ranges.y ? PBR_DIELECTRIC_TOO_BRIGHT : PBR_OK);
+    return lightness < ranges.x           ? PBR_DIELECTRIC_TOO_DARK
+           : reflectedLightness > ranges.y ? PBR_DIELECTRIC_TOO_BRIGHT
+                                           : PBR_OK;
 }
 
 // The channel's flag colours: only 0s and 1s, so they survive sRGB encoding and 8 bits exactly
@@ -206,16 +212,18 @@ PATINA_INLINE vec3 pbrVerdictColour(int verdict) {
 }
 
 // CHANNEL_PBR_VALIDATION: a flagged pixel in its verdict's colour; an accepted one grey, the
-// lightness the check read (lightness / 255, so the PNG's byte is the number).
-PATINA_INLINE vec3 pbrValidationValue(vec3 baseColor, real metallic, vec3 ranges) {
+// lightness the check read (lightness / 255, so the PNG's byte is the number). `transmission`:
+// the share a thin wall passes (pbrVerdict), 0 for an opaque part.
+PATINA_INLINE vec3 pbrValidationValue(vec3 baseColor, real metallic, real transmission, vec3 ranges) {
     real lightness = pbrLightness(baseColor);
-    int verdict = pbrVerdict(lightness, metallic >= 0.5f, ranges);
+    int verdict = pbrVerdict(lightness, pbrLightness((1.0f - transmission) * baseColor), metallic >= 0.5f, ranges);
     return verdict == PBR_OK ? vec3(lightness / 255.0f) : pbrVerdictColour(verdict);
 }
 
 // The channel's value: a colour or vector as it is (normals in [-1, 1], UVs as (u, v, 0)), a
-// scalar in all three components. `pbrRanges`: CHANNEL_PBR_VALIDATION's (pbrVerdict).
-PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c, vec3 pbrRanges) {
+// scalar in all three components. `pbrRanges`: CHANNEL_PBR_VALIDATION's (pbrVerdict), which
+// reads the layers' transmission.
+PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c, ChannelLayers layers, vec3 pbrRanges) {
     if (channel == CHANNEL_BASE_COLOR) return c.baseColor;
     if (channel == CHANNEL_ALPHA) return vec3(c.alpha);
     if (channel == CHANNEL_METALLIC) return vec3(c.metallic);
@@ -240,7 +248,10 @@ PATINA_INLINE vec3 channelValue(int channel, ChannelInputs c, vec3 pbrRanges) {
     if (channel == CHANNEL_ENVIRONMENT_DIFFUSE) return c.environmentDiffuse;
     if (channel == CHANNEL_ENVIRONMENT_SPECULAR) return c.environmentSpecular;
     if (channel == CHANNEL_LIGHT) return c.light;
-    if (channel == CHANNEL_PBR_VALIDATION) return pbrValidationValue(c.baseColor, c.metallic, pbrRanges);
+    if (channel == CHANNEL_PBR_VALIDATION) {
+        return pbrValidationValue(c.baseColor, c.metallic, layers.transmits ? layers.transmissionFactor : 0.0f,
+                                  pbrRanges);
+    }
     if (channel == CHANNEL_CLEARCOAT) return c.clearcoat;
     if (channel == CHANNEL_SHEEN) return c.sheen;
     if (channel == CHANNEL_TRANSMISSION) return c.transmission;

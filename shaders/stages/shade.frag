@@ -469,7 +469,7 @@ vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, vec3 specula
     c = channelWithEnvironmentLayers(c, layers, uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
                                      uEnvironmentIntensity, uEnvironmentRotation.x, uEnvironmentRotation.y, V);
 #endif
-    return channelValue(PATINA_CHANNEL, channelFinished(c, layers), uPbrRanges);
+    return channelValue(PATINA_CHANNEL, channelFinished(c, layers), layers, uPbrRanges);
 }
 #endif
 

@@ -368,6 +368,21 @@ TEST_F(Cli, ValidateSaysOfEachMaterialWhetherItIsInRange) {
               std::string::npos) << r.stdoutText;
     EXPECT_NE(r.stderrText.find("2 of 3 materials out of range"), std::string::npos) << r.stderrText;
 
+    // A clear glass's white passes through (KHR_materials_transmission): its bright end is the
+    // share it reflects; a white that passes 10% is still brighter than snow.
+    write("glass.json", R"({"format": "patina-material", "version": 1, "name": "glass", "model": "gltf",
+                            "baseColor": [1, 1, 1], "transmission": 1})");
+    write("milk.json", R"({"format": "patina-material", "version": 1, "name": "milk", "model": "gltf",
+                           "baseColor": [1, 1, 1], "transmission": 0.1})");
+    r = run("validate " + path("glass.json").string() + " " + path("milk.json").string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.stdoutText.find("glass.json: ok: dielectric, albedo 255 sRGB, 0 reflected (the rest passes through) "
+                                "(30-240)"),
+              std::string::npos) << r.stdoutText;
+    EXPECT_NE(r.stdoutText.find("milk.json: out of range: dielectric, albedo 255 sRGB, 243 reflected (the rest passes "
+                                "through), brighter than any real dielectric"),
+              std::string::npos) << r.stdoutText;
+
     // Strict ranges; a file that does not read is said and the rest checked.
     r = run("validate --strict " + (presets / "titanium.json").string() + " " + path("missing.json").string());
     EXPECT_EQ(r.exitCode, 3);

@@ -236,12 +236,14 @@ TEST_F(Channels, AnUnknownLightIsRefusedWithTheLightsThereAre) {
 // pbr-validation flags every pixel of a uniform material exactly as the batch check
 // (checkBaseColor, `patina validate`) judges its base colour: each verdict in its colour, the
 // accepted ones grey at the lightness read; with sRGB encoding the flags stay exact; the strict
-// ranges flag what the default ones let pass.
+// ranges flag what the default ones let pass. A transmitting part's bright end is its reflected
+// share's: a clear glass's white base is accepted (it was flagged brighter than snow).
 TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
     struct Case {
         glm::vec3 baseColor;
         float metallic;
         bool strict;
+        float transmission = 0.0f;
     };
     const Case cases[] = {
         {glm::vec3(0.004f), 0.0f, false},                 // darker than charcoal
@@ -250,13 +252,23 @@ TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
         {glm::vec3(0.9f, 0.6f, 0.3f), 1.0f, false},       // copper-like: accepted
         {glm::vec3(0.025f), 0.0f, false},                 // lightness 44: accepted
         {glm::vec3(0.025f), 0.0f, true},                  // ... below the strict 50
+        {glm::vec3(1.0f), 0.0f, false, 1.0f},             // a clear glass: it reflects none of its white
+        {glm::vec3(1.0f), 0.0f, false, 0.05f},            // a white that passes 5%: too bright still
+        {glm::vec3(0.004f), 0.0f, false, 0.9f},           // a black glass: too dark, whatever passes
     };
     for (const Case& c : cases) {
         Scene scene = test::preparedDefault().scene;
         scene.material.baseColor = c.baseColor;
         scene.material.metallic = c.metallic;
+        scene.material.transmission = c.transmission;
         const PreparedScene prepared = test::prepared(scene);
-        const PbrCheck check = checkBaseColor(c.baseColor, c.metallic, c.strict ? PbrRanges::strict() : PbrRanges{});
+        const PbrCheck check =
+            checkBaseColor(c.baseColor, c.metallic, c.transmission, c.strict ? PbrRanges::strict() : PbrRanges{});
+        if (c.transmission > 0.0f) {   // the cases say what the check must find
+            EXPECT_EQ(check.verdict, c.transmission == 1.0f       ? PbrVerdict::Ok
+                                     : c.baseColor.r == 1.0f       ? PbrVerdict::DielectricTooBright
+                                                                   : PbrVerdict::DielectricTooDark);
+        }
         ChannelRequest request = *channelFromName("pbr-validation");
         request.strictPbr = c.strict;
         for (bool srgb : {false, true}) {

@@ -283,23 +283,28 @@ TEST(ShippedPresets, DielectricSpecularMatchesTheIorItsNotesCite) {
     }
 }
 
-// Issue 36: presets carry layers. A coat, a sheen and a thin film each have a shipped preset, on
-// the `gltf` model that draws them.
+// Issue 36: presets carry layers. A coat, a sheen, a thin film and a transmission (the glass, and
+// the water with its volume's absorption) each have a shipped preset, on the `gltf` model that
+// draws them.
 TEST(ShippedPresets, TheLayersHavePresetsOnTheModelThatDrawsThem) {
-    int coated = 0, sheened = 0, filmed = 0;
+    int coated = 0, sheened = 0, filmed = 0, transmitting = 0, absorbing = 0;
     for (const auto& [file, material] : shippedPresets()) {
         const bool coat = material.clearcoat > 0.0f, sheen = material.sheenColor != glm::vec3(0.0f);
-        const bool film = material.iridescence > 0.0f;
+        const bool film = material.iridescence > 0.0f, through = material.transmission > 0.0f;
         coated += coat;
         sheened += sheen;
         filmed += film;
-        if (coat || sheen || film) {
+        transmitting += through;
+        absorbing += through && material.thickness > 0.0f && material.attenuationDistance > 0.0f;
+        if (coat || sheen || film || through) {
             EXPECT_EQ(material.model, BrdfModelId::Gltf) << file;
         }
     }
     EXPECT_GE(coated, 1);
     EXPECT_GE(sheened, 1);
     EXPECT_GE(filmed, 1);
+    EXPECT_GE(transmitting, 2);
+    EXPECT_GE(absorbing, 1);
 }
 
 }  // namespace
