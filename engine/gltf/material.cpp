@@ -58,7 +58,7 @@ void volumeFromGltf(const tinygltf::Material& material, const std::string& what,
     const tinygltf::Value* volume = extensionOf(material.extensions, kVolume);
     const double thickness = numberField(volume, "thicknessFactor", 0.0, volumeAt, source);
     if (thickness < 0.0) {
-        throw InputError(source + ": " + volumeAt + "/thicknessFactor: " + std::to_string(thickness) + " is below 0");
+        throw InputError(source + ": " + volumeAt + "/thicknessFactor: " + numberText(thickness) + " is below 0");
     }
     result.thickness = float(std::min(thickness, double(kMaxThickness)));
     const std::vector<double> color = numbersField(volume, "attenuationColor", 3, volumeAt, source);
@@ -67,7 +67,7 @@ void volumeFromGltf(const tinygltf::Material& material, const std::string& what,
     }
     const double distance = numberField(volume, "attenuationDistance", 0.0, volumeAt, source);
     if (volume && volume->Has("attenuationDistance") && !(distance > 0.0)) {
-        throw InputError(source + ": " + volumeAt + "/attenuationDistance: " + std::to_string(distance) +
+        throw InputError(source + ": " + volumeAt + "/attenuationDistance: " + numberText(distance) +
                          " is not above 0 (leave it out for no attenuation)");
     }
     result.attenuationDistance = float(std::min(distance, double(kMaxThickness)));
@@ -83,7 +83,7 @@ void anisotropyFromGltf(const tinygltf::Material& material, const std::string& w
     result.anisotropyStrength = unit(numberField(anisotropy, "anisotropyStrength", 0.0, at, source));
     const double rotation = numberField(anisotropy, "anisotropyRotation", 0.0, at, source);
     if (!std::isfinite(rotation) || std::abs(rotation) > kMaxAnisotropyRotation) {
-        throw InputError(source + ": " + at + "/anisotropyRotation: " + std::to_string(rotation) +
+        throw InputError(source + ": " + at + "/anisotropyRotation: " + numberText(rotation) +
                          " is not an angle in radians");
     }
     result.anisotropyRotation = float(rotation);
@@ -100,7 +100,7 @@ void iridescenceFromGltf(const tinygltf::Material& material, const std::string& 
     result.iridescence = unit(numberField(film, "iridescenceFactor", 0.0, at, source));
     const double ior = numberField(film, "iridescenceIor", 1.3, at, source);
     if (!(ior >= 1.0) || ior > kMaxIridescenceIor) {
-        throw InputError(source + ": " + at + "/iridescenceIor: " + std::to_string(ior) + " is not an ior from 1 to " +
+        throw InputError(source + ": " + at + "/iridescenceIor: " + numberText(ior) + " is not an ior from 1 to " +
                          std::to_string(int(kMaxIridescenceIor)));
     }
     result.iridescenceIor = float(ior);
@@ -108,7 +108,7 @@ void iridescenceFromGltf(const tinygltf::Material& material, const std::string& 
                                         std::tuple{"iridescenceThicknessMaximum", 400.0, &result.iridescenceThicknessMaximum}}) {
         const double thickness = numberField(film, key, fallback, at, source);
         if (!(thickness >= 0.0) || thickness > kMaxIridescenceThickness) {
-            throw InputError(source + ": " + at + "/" + key + ": " + std::to_string(thickness) +
+            throw InputError(source + ": " + at + "/" + key + ": " + numberText(thickness) +
                              " is not a thickness in nanometres from 0 to " +
                              std::to_string(int(kMaxIridescenceThickness)));
         }
@@ -138,7 +138,7 @@ GltfSpecular specularFromGltf(const tinygltf::Material& material, const std::str
     // 0 is allowed beside 1 and above: KHR_materials_ior's schema keeps it for converting
     // specular-glossiness materials (F0 = 1, the specular colour then F0 itself).
     if (read.ior < 1.0 && read.ior != 0.0) {
-        throw InputError(source + ": " + iorAt + "/ior: " + std::to_string(read.ior) + " is below 1 (and not 0)");
+        throw InputError(source + ": " + iorAt + "/ior: " + numberText(read.ior) + " is below 1 (and not 0)");
     }
     return read;
 }

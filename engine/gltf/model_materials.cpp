@@ -53,8 +53,7 @@ TextureSampler samplerFrom(const tinygltf::Sampler& sampler, const std::string& 
 // textureInfo.texCoord, or KHR_texture_transform's: the UV sets a Mesh has.
 int texCoordFrom(double value, const std::string& where, const std::string& source) {
     if (value != 0.0 && value != 1.0) {
-        const bool whole = value == std::floor(value) && std::abs(value) < 1e15;
-        fail(source, where + ": " + (whole ? std::to_string(int64_t(value)) : std::to_string(value)) +
+        fail(source, where + ": " + numberText(value) +
                          ": Patina reads TEXCOORD_0 and TEXCOORD_1 only");
     }
     return int(value);
@@ -193,7 +192,7 @@ glm::vec3 emissionOf(const tinygltf::Material& material, const std::string& wher
     const double strength = numberField(extensionOf(material.extensions, "KHR_materials_emissive_strength"),
                                         "emissiveStrength", 1.0, strengthAt, source);
     if (strength < 0.0) {
-        fail(source, strengthAt + "/emissiveStrength: " + std::to_string(strength) + " is below 0");
+        fail(source, strengthAt + "/emissiveStrength: " + numberText(strength) + " is below 0");
     }
     const auto& e = material.emissiveFactor;
     return glm::vec3(unit(e[0]), unit(e[1]), unit(e[2])) * float(strength);
@@ -274,7 +273,7 @@ ModelMaterial MaterialReader::read(int index) {
     result.emissiveFactor = emissionOf(material, where, source_);
     result.alphaMode = alphaModeFrom(material.alphaMode, where + "/alphaMode", source_);
     if (material.alphaCutoff < 0.0) {
-        fail(source_, where + "/alphaCutoff: " + std::to_string(material.alphaCutoff) + " is below 0");
+        fail(source_, where + "/alphaCutoff: " + numberText(material.alphaCutoff) + " is below 0");
     }
     result.alphaCutoff = float(material.alphaCutoff);
     result.doubleSided = material.doubleSided;

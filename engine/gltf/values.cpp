@@ -1,5 +1,7 @@
 #include "gltf/values.h"
 
+#include <charconv>
+
 #include "files/input_error.h"
 
 namespace patina::gltf {
@@ -9,6 +11,12 @@ double numberOf(const tinygltf::Value& value, const std::string& what, const std
         throw InputError(source + ": " + what + ": must be a number");
     }
     return value.GetNumberAsDouble();
+}
+
+std::string numberText(double value) {
+    char text[32];
+    const std::to_chars_result written = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, written.ptr);
 }
 
 const tinygltf::Value* extensionOf(const tinygltf::ExtensionMap& extensions, const char* name) {

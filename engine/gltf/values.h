@@ -14,6 +14,10 @@ namespace patina::gltf {
 // JSON numbers are finite: checkGltfJson refuses any that a double cannot hold.
 double numberOf(const tinygltf::Value& value, const std::string& what, const std::string& source);
 
+// A number as a message quotes it: the shortest text that reads back as the same double
+// ("0.5", "-2", "1e+300"), as the file most likely wrote it; not std::to_string's "0.500000".
+std::string numberText(double value);
+
 // The extension's object (tinygltf keeps only objects), or null when there is none.
 const tinygltf::Value* extensionOf(const tinygltf::ExtensionMap& extensions, const char* name);
 

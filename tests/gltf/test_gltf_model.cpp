@@ -442,10 +442,11 @@ TEST_F(GltfModel, IridescenceIsReadWithItsMapsAndItsBadValuesNamed) {
     EXPECT_EQ(loaded.extensions[0].support, ExtensionSupport::Drawn);
     EXPECT_EQ(allNotes(loaded).find("iridescence"), std::string::npos) << allNotes(loaded);
     model.json["materials"][0]["extensions"]["KHR_materials_iridescence"]["iridescenceIor"] = 0.5;
-    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_iridescence/iridescenceIor");
+    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_iridescence/iridescenceIor: 0.5 is not an ior");
     model.json["materials"][0]["extensions"]["KHR_materials_iridescence"]["iridescenceIor"] = 1.5;
     model.json["materials"][0]["extensions"]["KHR_materials_iridescence"]["iridescenceThicknessMinimum"] = -10;
-    EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_iridescence/iridescenceThicknessMinimum");
+    EXPECT_ERROR(errorOf(model),
+                 "/materials/0/extensions/KHR_materials_iridescence/iridescenceThicknessMinimum: -10 is not a thickness");
 }
 
 TEST_F(GltfModel, FlatNormalsCopyASharedVertexWithItsTexCoords) {
@@ -768,7 +769,7 @@ TEST_F(GltfModel, MaterialFactorsAndFieldsAreRead) {
     model.json["materials"][0]["alphaMode"] = "BLEND";
     model.json["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -1;
     EXPECT_ERROR(errorOf(model), "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength: "
-                                 "-1.000000 is below 0");
+                                 "-1 is below 0");
 }
 
 // KHR_materials_clearcoat: its two factors into the material's, its three maps as the core maps
