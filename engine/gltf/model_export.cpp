@@ -158,14 +158,22 @@ Json samplerJson(const TextureSampler& sampler) {
 
 // The document's textures, samplers and images, each made once for what the maps use.
 struct Textures {
+    const std::vector<ModelImage>& modelImages;
     Json textures = Json::array(), samplers = Json::array();
     std::vector<int> images;   // exported image -> the model's image
     std::map<std::pair<int, int>, int> byImageAndSampler;
     std::vector<TextureSampler> samplerList;
     std::set<std::string> extensions;
 
+    // One exported image for each picture: a map replaced in the editor by a file the model
+    // already holds is a second model image of the same pixels, written once.
     int imageIndex(int image) {
-        const auto found = std::find(images.begin(), images.end(), image);
+        const ModelImage& wanted = modelImages.at(size_t(image));
+        const auto found = std::find_if(images.begin(), images.end(), [&](int exported) {
+            const ModelImage& other = modelImages[size_t(exported)];
+            return exported == image ||
+                   (other.width == wanted.width && other.height == wanted.height && other.rgba == wanted.rgba);
+        });
         if (found != images.end()) {
             return int(found - images.begin());
         }
@@ -443,7 +451,7 @@ std::vector<OutputFile> encodeGltfModel(const fs::path& path, const Model& model
     } catch (const InputError& error) {
         throw InputError(path.string() + ": " + error.what());
     }
-    Textures textures;
+    Textures textures{model.images};
     Json materials = Json::array();
     for (const ModelMaterial& material : model.materials) {
         materials.push_back(materialJson(material, textures));

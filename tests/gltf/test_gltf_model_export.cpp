@@ -431,6 +431,26 @@ TEST_F(GltfModelExport, AGltfHasItsImagesBesideItAndItsBufferWhereAsked) {
     EXPECT_THROW(encodeGltfModel(path("empty.glb"), Model{}), InputError);
 }
 
+// A map replaced in the editor by a picture the file already has (the model then holds the same
+// pixels twice) is written once: one PNG, both maps reading it.
+TEST_F(GltfModelExport, ThePixelsOfTwoModelImagesAlikeAreWrittenOnce) {
+    Model model = importGltfModel(kModels / "BoxTextured-glTF-Binary/BoxTextured.glb");
+    ASSERT_EQ(model.images.size(), 1u);
+    model.images.push_back(model.images[0]);
+    model.images.back().name = "the same picture, replaced";
+    model.materials[0].emissive = model.materials[0].baseColor;
+    model.materials[0].emissive.image = 1;
+    model.materials[0].emissiveFactor = glm::vec3(0.2f);
+    exportGltfModel(path("twice.gltf"), model, GltfBuffer::BinFile);
+    EXPECT_TRUE(fs::is_regular_file(path("twice_0.png")));
+    EXPECT_FALSE(fs::exists(path("twice_1.png")));
+    test::expectValidGltf(path("twice.gltf"), dir_);
+    const Model back = importGltfModel(path("twice.gltf"));
+    ASSERT_EQ(back.images.size(), 1u);
+    EXPECT_EQ(back.materials[0].emissive.image, back.materials[0].baseColor.image);
+    EXPECT_EQ(back.images[0].rgba, model.images[0].rgba);
+}
+
 // A node matrix must be a translation, rotation and scale (glTF 5.25): a shear is baked into
 // the vertices, which then stand where they stood, lit the same way.
 TEST_F(GltfModelExport, AShearIsBakedIntoTheVerticesAndAMirrorKeepsItsFrontFaces) {
