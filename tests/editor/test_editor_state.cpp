@@ -288,6 +288,43 @@ TEST_F(EditorStateTest, PresetsAreUndoableEditsAndResetReadsTheDocument) {
     EXPECT_FALSE(state.dirty());
 }
 
+// Undo names a layer's step as the artist took it: adding a coat, tuning it, removing it (the
+// status said "Undid the material" for any layer's field); a part's first tuning names its field
+// against the file's (it said "the tuning of ...").
+TEST_F(EditorStateTest, UndoNamesTheLayerAddedTunedOrRemoved) {
+    auto step = [&](auto change) {
+        change(state.scene.material);
+        commitEdits(state);
+        undo(state, state, state);
+        const std::string undone = state.status;
+        redo(state, state, state);
+        return undone + " / " + state.status;
+    };
+    EXPECT_EQ(step([](Material& m) { m.clearcoat = 1.0f; }), "Undid adding the clear coat / Redid adding the clear coat");
+    EXPECT_EQ(step([](Material& m) { m.clearcoatRoughness = 0.3f; }), "Undid the clear coat / Redid the clear coat");
+    EXPECT_EQ(step([](Material& m) { m.clearcoat = 0.0f; }),
+              "Undid removing the clear coat / Redid removing the clear coat");
+    EXPECT_EQ(step([](Material& m) { m.sheenColor = glm::vec3(0.5f); }), "Undid adding the sheen / Redid adding the sheen");
+    EXPECT_EQ(step([](Material& m) { m.thickness = 0.2f; }), "Undid the volume / Redid the volume");
+    EXPECT_EQ(step([](Material& m) { m.specularWeight = 0.5f; }),
+              "Undid the specular colour / Redid the specular colour");
+    EXPECT_EQ(step([](Material& m) { m.iridescence = 1.0f; m.roughness = 0.1f; }),
+              "Undid roughness and adding the iridescence / Redid roughness and adding the iridescence");
+    EXPECT_EQ(step([](Material& m) { m.anisotropyRotation = 1.0f; }), "Undid the anisotropy / Redid the anisotropy");
+
+    exportGltfModel(dir_ / "two.glb", test::twoBalls());
+    ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
+    state.selectedModelMaterial = 1;
+    Material right = editedMaterial(state, state);
+    right.transmission = 1.0f;
+    setEditedMaterial(state, state, state.scene, right);
+    commitEdits(state);
+    undo(state, state, state);
+    EXPECT_EQ(state.status, "Undid adding the transmission of right");
+    redo(state, state, state);
+    EXPECT_EQ(state.status, "Redid adding the transmission of right");
+}
+
 // Issue 23: after Ctrl+Z the status still said "Preset brick applied", and an error from
 // before stayed up over a load that worked. Undo and redo say what they took back, and clear
 // the old error; so does a load that works.
@@ -722,7 +759,7 @@ TEST_F(EditorStateTest, AModelsMaterialsAreItsOwnAndTheSelectedOneIsTuned) {
     undo(state, state, state);
     EXPECT_NE(state.status.find("Undid metallic of model gold"), std::string::npos) << state.status;
     undo(state, state, state);
-    EXPECT_NE(state.status.find("Undid the tuning of model gold"), std::string::npos) << state.status;
+    EXPECT_NE(state.status.find("Undid roughness of model gold"), std::string::npos) << state.status;
     EXPECT_NEAR(editedMaterial(state, state).roughness, 0.3f, 1e-6f);
     EXPECT_TRUE(state.scene.modelMaterials.empty());
     redo(state, state, state);
@@ -963,7 +1000,7 @@ TEST_F(EditorStateTest, EachPartHasItsOwnBrdfModelAndAnOldSceneKeepsItsOne) {
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));
     ASSERT_TRUE(saveScene(state, state, state, dir_ / "mixed.json")) << state.error;
     undo(state, state, state);
-    EXPECT_NE(state.status.find("Undid the tuning of right"), std::string::npos) << state.status;
+    EXPECT_NE(state.status.find("Undid the BRDF model of right"), std::string::npos) << state.status;
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Gltf}));
     ASSERT_TRUE(openFile(state, dir_ / "mixed.json")) << state.error;
     EXPECT_EQ(shaded(), (std::vector{BrdfModelId::Gltf, BrdfModelId::Epic}));

@@ -13,21 +13,60 @@ std::string fieldsOr(const std::vector<std::string>& fields, const std::string& 
     return fields.size() == 2 ? fields[0] + " and " + fields[1] : whole;
 }
 
+// A layer's words (KHR_materials_*): "adding the clear coat" where it was absent (`had` false)
+// and is present, "removing ..." the other way, its name where it changed within.
+std::string layerChange(bool had, bool has, const char* name) {
+    return std::string(had == has ? "" : has ? "adding " : "removing ") + name;
+}
+
+// The fields of the factors that differ, in words: the core four one by one, each layer as one
+// (its factors together: a coat's strength and roughness are "the clear coat").
+std::vector<std::string> parameterChanges(const MaterialParameters& a, const MaterialParameters& b) {
+    const bool volumeChanged = a.thickness != b.thickness || a.attenuationColor != b.attenuationColor ||
+                               a.attenuationDistance != b.attenuationDistance;
+    const bool filmChanged = a.iridescence != b.iridescence || a.iridescenceIor != b.iridescenceIor ||
+                             a.iridescenceThicknessMinimum != b.iridescenceThicknessMinimum ||
+                             a.iridescenceThicknessMaximum != b.iridescenceThicknessMaximum;
+    const std::pair<bool, std::string> checks[] = {
+        {a.baseColor != b.baseColor, "base colour"},
+        {a.roughness != b.roughness, "roughness"},
+        {a.specular != b.specular, "specular"},
+        {a.metallic != b.metallic, "metallic"},
+        {a.model != b.model, "the BRDF model"},
+        {a.clearcoat != b.clearcoat || a.clearcoatRoughness != b.clearcoatRoughness,
+         layerChange(a.clearcoat > 0.0f, b.clearcoat > 0.0f, "the clear coat")},
+        {a.sheenColor != b.sheenColor || a.sheenRoughness != b.sheenRoughness,
+         layerChange(a.sheenColor != glm::vec3(0.0f), b.sheenColor != glm::vec3(0.0f), "the sheen")},
+        {a.transmission != b.transmission,
+         layerChange(a.transmission > 0.0f, b.transmission > 0.0f, "the transmission")},
+        {volumeChanged, "the volume"},
+        {a.anisotropyStrength != b.anisotropyStrength || a.anisotropyRotation != b.anisotropyRotation,
+         layerChange(a.anisotropyStrength > 0.0f, b.anisotropyStrength > 0.0f, "the anisotropy")},
+        {a.specularTint != b.specularTint || a.specularWeight != b.specularWeight, "the specular colour"},
+        {filmChanged, layerChange(a.iridescence > 0.0f, b.iridescence > 0.0f, "the iridescence")}};
+    std::vector<std::string> fields;
+    for (const auto& [changed, name] : checks) {
+        if (changed) {
+            fields.push_back(name);
+        }
+    }
+    return fields;
+}
+
 std::string materialChange(const Material& a, const Material& b) {
     // Another name and other values: another material (a preset, a model's) took its place.
     if (a.name != b.name && static_cast<const MaterialParameters&>(a) != b) {
         return "the material " + b.name;
     }
-    std::vector<std::string> fields;
-    const std::pair<bool, const char*> checks[] = {
-        {a.name != b.name, "the material's name"}, {a.baseColor != b.baseColor, "base colour"},
-        {a.roughness != b.roughness, "roughness"},  {a.specular != b.specular, "specular"},
-        {a.metallic != b.metallic, "metallic"},     {a.model != b.model, "the BRDF model"},
-        {a.notes != b.notes, "the notes"},          {a.extras != b.extras, "the material"}};
-    for (const auto& [changed, name] : checks) {
-        if (changed) {
-            fields.push_back(name);
-        }
+    std::vector<std::string> fields = parameterChanges(a, b);
+    if (a.name != b.name) {
+        fields.insert(fields.begin(), "the material's name");
+    }
+    if (a.notes != b.notes) {
+        fields.push_back("the notes");
+    }
+    if (a.extras != b.extras) {
+        fields.push_back("the material");
     }
     return fieldsOr(fields, "the material");
 }
@@ -89,8 +128,11 @@ std::string displayChange(const DisplaySettings& a, const DisplaySettings& b) {
     }
     return fieldsOr(fields, "the display settings");
 }
-// "roughness of Texture": the first model material whose edit differs (one is edited at a time).
-std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const std::vector<ModelMaterialEdit>& b) {
+// "roughness of Texture": the first model material whose edit differs (one is edited at a time);
+// a part's first tuning (or its last, undone) against the file's factors (`file`: the model as
+// loaded, null when there is none).
+std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const std::vector<ModelMaterialEdit>& b,
+                                 const Model* file) {
     auto find = [](const std::vector<ModelMaterialEdit>& edits, int index) -> const ModelMaterialEdit* {
         for (const ModelMaterialEdit& edit : edits) {
             if (edit.index == index) {
@@ -105,8 +147,16 @@ std::string modelMaterialsChange(const std::vector<ModelMaterialEdit>& a, const 
             const ModelMaterialEdit* after = find(b, edit.index);
             if (!before || !after || *before != *after) {
                 if (!before || !after) {   // made or removed: by a map switch when it leaves maps out
-                    return (edit.mapsOff.empty() && edit.mapsReplaced.empty() ? "the tuning of " : "the maps of ") +
-                           edit.material.name;
+                    if (!edit.mapsOff.empty() || !edit.mapsReplaced.empty()) {
+                        return "the maps of " + edit.material.name;
+                    }
+                    const bool known = file && edit.index >= 0 && size_t(edit.index) < file->materials.size();
+                    const std::vector<std::string> fields =
+                        known ? (before ? parameterChanges(before->material, file->materials[size_t(edit.index)].factors)
+                                        : parameterChanges(file->materials[size_t(edit.index)].factors, after->material))
+                              : std::vector<std::string>{};
+                    return fields.empty() ? "the tuning of " + edit.material.name
+                                          : fieldsOr(fields, "the tuning") + " of " + edit.material.name;
                 }
                 if (before->mapsOff != after->mapsOff || before->mapsReplaced != after->mapsReplaced) {
                     return "the maps of " + edit.material.name;
@@ -131,7 +181,10 @@ std::string describeChange(const EditSnapshot& before, const EditSnapshot& after
         parts.push_back(displayChange(before.display, after.display));
     }
     if (before.modelMaterials != after.modelMaterials) {
-        parts.push_back(modelMaterialsChange(before.modelMaterials, after.modelMaterials));
+        const std::shared_ptr<const LoadedModel>& file = after.shape.fileModel ? after.shape.fileModel
+                                                                               : before.shape.fileModel;
+        parts.push_back(modelMaterialsChange(before.modelMaterials, after.modelMaterials,
+                                             file ? &file->model : nullptr));
     }
     if (before.modelBrdf != after.modelBrdf) {
         parts.push_back("the BRDF model of every part");
