@@ -128,7 +128,7 @@ void drawTransmittedAlbedo(ImDrawList* draw, const AlbedoShown& s, ToScreen toSc
 void drawAlbedoLegend(ImDrawList* draw, const std::vector<AlbedoShown>& shown, ImVec2 at, float line) {
     for (const AlbedoShown& s : shown) {
         char text[160];
-        std::snprintf(text, sizeof text, "%s%ssplit sum (line)%s, ground truth +- 1 s.e. (circles)", s.name,
+        std::snprintf(text, sizeof text, "%s%ssplit sum (line)%s, single-scattering truth +- 1 s.e. (circles)", s.name,
                       *s.name ? ": " : "", transmits(*s.curve) ? ", transmitted share (thin)" : "");
         draw->AddLine(ImVec2(at.x, at.y + line * 0.5f), ImVec2(at.x + px(16), at.y + line * 0.5f), s.colour, 2.0f);
         draw->AddText(ImVec2(at.x + px(20), at.y), kLabel, text);
@@ -194,7 +194,8 @@ void drawAlbedoView(const Document& document, const Interaction& interaction, Ed
     drawAlbedoLegend(draw, shown, ImVec2(plotMin.x, origin.y + px(4)), line);
     ImGui::Dummy(size);
     recordItem("albedo", "Directional albedo (luminance) against theta_v under a white furnace: the split sum's tables "
-                         "against the ground truth's Monte Carlo estimate");
+                         "(with their multiple scattering) against the ground truth's Monte Carlo estimate of the "
+                         "single-scattering BRDF; the gap grows with roughness and a stretched lobe");
     if (ImGui::IsItemHovered()) {
         const std::vector<AlbedoPoint>& curve = *shown.back().curve;
         const float thetaV = std::clamp((ImGui::GetIO().MousePos.x - plotMin.x) / (plotMax.x - plotMin.x), 0.0f, 1.0f) * 90.0f;
