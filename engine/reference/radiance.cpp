@@ -168,29 +168,52 @@ SampleMoments environmentMoments(BrdfModelId model, const shader::SurfaceMateria
 }
 
 // KHR_materials_transmission's light through the wall from the environment (transmission.glsl's
-// f_t, thin-walled): f_t is the reflection lobe mirrored through the surface plane, so GGX
-// half-vector sampling's L, mirrored, samples it with the same pdf (ggxPdf of the unmirrored L).
-// Its own random stream: the base's estimate draws what it drew without a transmission.
+// f_t, thin-walled), by multiple importance sampling as the reflection's (Veach & Guibas 1995,
+// the power heuristic): f_t is the reflection lobe mirrored through the surface plane, so GGX
+// half-vector sampling's L, mirrored, samples it with the same pdf (ggxPdf of the unmirrored
+// L); the image's own distribution samples what is bright behind the wall. By f_t alone, a rough
+// glass under an HDRI of small bright windows met them as fireflies whose noise did not fall
+// with the samples (docs/LIGHTING.md, "The layer grid"). Its own random stream: the base's
+// estimate draws what it drew without a transmission.
 SampleMoments transmissionMoments(const shader::Transmission& transmission, const ReferenceEnvironment& environment,
                                   glm::vec3 N, glm::vec3 V, const ReferenceOptions& options) {
     const glm::vec2 rotation = environmentRotation(environment.rotationDegrees);
+    const float c = rotation.x, s = rotation.y;
+    auto integrand = [&](glm::vec3 L) {
+        const float NoL = glm::dot(N, L);
+        if (!(NoL < 0.0f)) {
+            return glm::vec3(0.0f);
+        }
+        const glm::vec3 radiance =
+            environment.intensity * sampleEquirect(environment.environment->image, shader::toEnvironmentFrame(L, c, s));
+        return radiance * shader::transmissionBtdf(transmission, N, V, L) * std::min(-NoL, 1.0f);
+    };
+    // The two strategies' pdfs of a direction through the wall: the mirrored GGX's, the image's.
+    auto pdfs = [&](glm::vec3 L) {
+        const float NoL = glm::dot(N, L);
+        const float ggx = NoL < 0.0f ? ggxPdf(N, V, L - 2.0f * NoL * N, transmission.alpha) : 0.0f;
+        return glm::vec2(ggx, environment.distribution->pdf(shader::toEnvironmentFrame(L, c, s)));
+    };
     std::mt19937_64 random(options.seed ^ 0x5DEECE66Dull);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     SampleMoments moments;
     for (int i = 0; i < options.samples; ++i) {
+        glm::vec3 L[2];
         const glm::vec3 H =
             shader::importanceSampleGGX(glm::vec2(uniform(random), uniform(random)), transmission.alpha, N);
         const glm::vec3 reflected = 2.0f * glm::dot(V, H) * H - V;
-        const float NoR = glm::dot(N, reflected);
-        const float pdf = NoR > 0.0f ? ggxPdf(N, V, reflected, transmission.alpha) : 0.0f;
-        if (!(pdf > 0.0f)) {
-            moments.add(glm::dvec3(0.0));
-            continue;
+        L[0] = reflected - 2.0f * glm::dot(N, reflected) * N;   // through the wall
+        const EnvironmentDistribution::Sample e = environment.distribution->sample(uniform(random), uniform(random));
+        L[1] = shader::toEnvironmentFrame(e.direction, c, -s);   // back to the world
+        glm::dvec3 x(0.0);
+        for (int k = 0; k < 2; ++k) {
+            const glm::vec2 p = pdfs(L[k]);
+            const float own = p[k], squares = p.x * p.x + p.y * p.y;
+            if (own > 0.0f && squares > 0.0f) {
+                x += glm::dvec3(integrand(L[k]) * (own / squares));   // (own^2 / squares) / own
+            }
         }
-        const glm::vec3 L = reflected - 2.0f * NoR * N;   // through the wall
-        const glm::vec3 radiance = environment.intensity * sampleEquirect(environment.environment->image,
-                                                                          shader::toEnvironmentFrame(L, rotation.x, rotation.y));
-        moments.add(glm::dvec3(radiance * shader::transmissionBtdf(transmission, N, V, L) * (std::min(NoR, 1.0f) / pdf)));
+        moments.add(x);
     }
     return moments;
 }

@@ -104,7 +104,10 @@ TEST(AlbedoCurve, AGlassCurveCarriesItsTransmittedAlbedo) {
     const std::vector<AlbedoPoint> curve = albedoCurve(glass, 7, 2048);
     for (const AlbedoPoint& p : curve) {
         EXPECT_LE(p.product.x, 1.005f) << p.thetaVDegrees;
-        EXPECT_LE(p.truth.x, 1.0f + 3.0f * p.standardError.x) << p.thetaVDegrees;
+        // The truth sits on the bound (at 29.5 degrees 300 seeds give 0.9990, spread 0.0033), and
+        // at 2048 samples the estimate's standard error reads about a quarter low (its samples'
+        // tails): 4 of them, about 3 real ones.
+        EXPECT_LE(p.truth.x, 1.0f + 4.0f * p.standardError.x) << p.thetaVDegrees;
         EXPECT_GT(p.productTransmitted.x, 0.0f) << p.thetaVDegrees;
         EXPECT_LT(p.productTransmitted.x, p.product.x) << p.thetaVDegrees;
         if (p.thetaVDegrees < 80.0f) {

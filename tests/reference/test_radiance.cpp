@@ -75,6 +75,49 @@ TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
     }
 }
 
+// The light through a rough glass's wall from a sun behind it (KHR_materials_transmission 1,
+// roughness 0.4, the sun's pixel off the line of sight): the estimate agrees with a sum over
+// every pixel behind the wall (radiance x f_t x |N.L| x the pixel's solid angle), and its
+// standard error is small: 2.7% of the value at these samples, where f_t's samples alone met
+// the sun rarely (18%, and fireflies in a rough glass under an HDRI).
+TEST(Reference, UnderASunBehindARoughGlassItMatchesAQuadratureOfThePixels) {
+    const int width = 128, height = 64;
+    HdrImage image = test::equirectOf(width, height, [](glm::vec3 d) { return glm::vec3(0.2f + 0.1f * d.y); });
+    const int sunX = 40, sunY = 20;
+    for (int c = 0; c < 3; ++c) {
+        image.rgb[(size_t(sunY) * width + sunX) * 3 + size_t(c)] = 5000.0f;
+    }
+    const Fixture fixture(image);
+    const glm::vec3 sun =
+        shader::equirectToDirection(glm::vec2((float(sunX) + 0.5f) / width, (float(sunY) + 0.5f) / height));
+    const glm::vec3 N = -glm::normalize(sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
+    const shader::SurfaceMaterial glass = shader::deriveSurfaceMaterial(glm::vec3(1.0f), 0.4f, 0.5f, 0.0f);
+    const shader::Transmission t = shader::deriveTransmission(glass, 1.0f, glm::vec3(1.0f), N, V);
+    double sum = 0.0;
+    for (int y = 0; y < height; ++y) {
+        const double dOmega = (std::cos(double(y) / height * std::numbers::pi) -
+                               std::cos(double(y + 1) / height * std::numbers::pi)) *
+                              2.0 * std::numbers::pi / width;
+        for (int x = 0; x < width; ++x) {
+            const glm::vec3 L =
+                shader::equirectToDirection(glm::vec2((float(x) + 0.5f) / width, (float(y) + 0.5f) / height));
+            const float NoL = glm::dot(N, L);
+            if (NoL < 0.0f) {
+                const float f = shader::transmissionBtdf(t, N, V, L).x;
+                sum += double(image.rgb[(size_t(y) * width + size_t(x)) * 3] * f * -NoL) * dOmega;
+            }
+        }
+    }
+    ReferenceOptions options;
+    options.samples = 4096;
+    options.transmission = 1.0f;
+    const ReferenceEstimate estimate =
+        referenceRadiance(BrdfModelId::Gltf, glass, fixture.reference(), {}, glm::vec3(0.0f), N, V, options);
+    EXPECT_LT(estimate.standardError.x, 0.05 * sum);
+    // The estimate integrates the bilinear image, the sum the pixels: a few per cent apart.
+    EXPECT_NEAR(estimate.transmitted.x, sum, 0.05 * sum + 4.0 * estimate.standardError.x);
+}
+
 TEST(Reference, WhiteFurnaceGivesTheModelsDirectionalAlbedo) {
     const Fixture white(*builtinEnvironment("white"));
     Material metal;
