@@ -70,9 +70,13 @@ inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
     if (p.transmission > 0.0f) {
         layers.transmits = true;
         layers.transmissionFactor = p.transmission;
+        // The material shade.frag derives it from: its specular and its film (what the film
+        // reflects does not pass).
         layers.transmission = shader::deriveTransmission(
-            shader::withSpecular(shader::deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic),
-                                 p.specularTint, p.specularWeight),
+            shader::withIridescence(
+                shader::withSpecular(shader::deriveSurfaceMaterial(p.baseColor, p.roughness, p.specular, p.metallic),
+                                     p.specularTint, p.specularWeight),
+                p.iridescence, p.iridescenceIor, p.iridescenceThickness),
             p.transmission, p.transmissionAttenuation, p.N, p.V);
     }
     // As surfaceMaterialAt (cpu_shading.h) stretches the lobe: where the strength is above 0.

@@ -108,7 +108,8 @@ struct ChannelLayers {
 PATINA_INLINE ChannelLayers noChannelLayers() {
     return ChannelLayers(false, Clearcoat(0.0f, 0.0f, 0.0f, vec3(0.0f), 1.0f, 0.0f), false,
                          Sheen(vec3(0.0f), 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f), false, 0.0f,
-                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f, 1.0f), 0.0f, 1.3f, 0.0f, false,
+                         Transmission(vec3(0.0f), vec3(0.0f), 1.0f, 1.0f, 1.0f, vec3(0.0f), 0.0f), 0.0f, 1.3f,
+                         0.0f, false,
                          vec3(1.0f, 0.0f, 0.0f), vec4(0.0f));
 }
 

@@ -75,6 +75,46 @@ PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, real weight, vec2 ab, rea
     return ScatteredEnergy(single, ems * single * average / (vec3(1.0f) - average * ems));
 }
 
+// KHR_materials_iridescence's lobe under the environment: the film's Fresnel F is evaluated once,
+// at N.V (the extension's "Iridescence BRDF"), so over the lobe it is a constant and its
+// single-scattered energy is F (A + B), the lobe's albedo times F; the multiple-scattered is
+// Fdez-Aguera's with F as F_avg (eqs. 12-16), as scatteredEnergy's with Schlick's.
+PATINA_INLINE ScatteredEnergy filmScatteredEnergy(vec3 film, vec2 ab) {
+    vec3 single = film * (ab.x + ab.y);
+    real ems = 1.0f - (ab.x + ab.y);
+    return ScatteredEnergy(single, ems * single * film / (vec3(1.0f) - film * ems));
+}
+
+PATINA_INLINE ScatteredEnergy mixedEnergy(ScatteredEnergy a, ScatteredEnergy b, real t) {
+    return ScatteredEnergy(mix(a.single, b.single, t), mix(a.multiple, b.multiple, t));
+}
+
+// glTF's two lobes' energies at (N.V, r) (the gltf models, PATINA_FD_LAMBERT_FRESNEL_MIX): the
+// dielectric's (KHR_materials_specular's F0 and weight) and the metal's, each with the film's
+// mixed in by its strength (the extension's mix(F, F_film, iridescence)), the multiple-scattered
+// only with PATINA_MS_FDEZ_AGUERA.
+struct LobeEnergies {
+    ScatteredEnergy dielectric;
+    ScatteredEnergy metal;
+};
+
+PATINA_INLINE LobeEnergies lobeEnergies(SurfaceMaterial material, vec2 ab, real NoV) {
+    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
+    ScatteredEnergy metal = scatteredEnergy(material.baseColor, 1.0f, ab, NoV, material.roughness);
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    if (material.iridescence > 0.0f) {
+        IridescentFresnel film = filmFresnelAt(material, NoV);
+        dielectric = mixedEnergy(dielectric, filmScatteredEnergy(film.dielectric, ab), material.iridescence);
+        metal = mixedEnergy(metal, filmScatteredEnergy(film.metal, ab), material.iridescence);
+    }
+#endif
+#if PATINA_MS != PATINA_MS_FDEZ_AGUERA
+    dielectric.multiple = vec3(0.0f);
+    metal.multiple = vec3(0.0f);
+#endif
+    return LobeEnergies(dielectric, metal);
+}
+
 // The split sum: LD (F0 A + B) for the specular (Karis 2013, eq. 8), with the model's Turquin
 // compensation taken from the same table (E = A + B), plus the Lambert diffuse c_diff / pi E(N)
 // from the irradiance map. Models with Burley's diffuse take Lambert's here.
@@ -87,29 +127,13 @@ PATINA_INLINE ScatteredEnergy scatteredEnergy(vec3 f0, real weight, vec2 ab, rea
 PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec3 prefiltered, vec3 irradiance) {
     vec2 ab = environmentBrdfLookup(NoV, material.roughness);
 #if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
-    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
-    ScatteredEnergy metal = scatteredEnergy(material.baseColor, 1.0f, ab, NoV, material.roughness);
-#if PATINA_MS != PATINA_MS_FDEZ_AGUERA
-    dielectric.multiple = vec3(0.0f);
-    metal.multiple = vec3(0.0f);
-#endif
-    vec3 single = mix(dielectric.single, metal.single, material.metallic);
-    vec3 multiple = mix(dielectric.multiple, metal.multiple, material.metallic);
+    LobeEnergies lobes = lobeEnergies(material, ab, NoV);
+    vec3 single = mix(lobes.dielectric.single, lobes.metal.single, material.metallic);
+    vec3 multiple = mix(lobes.dielectric.multiple, lobes.metal.multiple, material.metallic);
     vec3 specular = prefiltered * single + Fd_Lambert(multiple) * irradiance;
     // 1 - the largest channel's albedo, as fresnel_mix weighs the diffuse by max_value (equal
-    // channels but for KHR_materials_specular's colour).
-    real beneath = minValue(vec3(1.0f) - dielectric.single - dielectric.multiple);
-#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
-    // KHR_materials_iridescence: the film's Fresnel at N.V weighs the prefiltered light in place
-    // of the split sum's, and the diffuse keeps 1 - its largest channel, mixed in by the film's
-    // strength (the extension's BRDF as the Khronos sample viewer lights it by an environment).
-    if (material.iridescence > 0.0f) {
-        IridescentFresnel film = filmFresnelAt(material, NoV);
-        specular = mix(specular, prefiltered * mix(film.dielectric, film.metal, material.metallic),
-                       material.iridescence);
-        beneath = mix(beneath, 1.0f - maxValue(film.dielectric), material.iridescence);
-    }
-#endif
+    // channels but for KHR_materials_specular's colour and a film's).
+    real beneath = minValue(vec3(1.0f) - lobes.dielectric.single - lobes.dielectric.multiple);
 #if defined(PATINA_NO_DIFFUSE)
     return LightShares(vec3(0.0f), specular);
 #else
@@ -118,16 +142,20 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
 #else
     // F = f0 (1 - Fc) + f90 Fc: the table's A and B weigh f0 and f90 (1 but for a specular weight).
     vec3 specular = prefiltered * (material.f0 * ab.x + vec3(material.f90 * ab.y));
+    vec3 compensated = material.f0;   // the F0 Turquin's compensation scales by
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    // As lobeEnergies: the film's F at N.V times the lobe's albedo A + B, mixed in by its
+    // strength; these models' diffuse takes nothing for the specular.
+    if (material.iridescence > 0.0f) {
+        IridescentFresnel film = filmFresnelAt(material, NoV);
+        vec3 F = mix(film.dielectric, film.metal, material.metallic);
+        specular = mix(specular, prefiltered * F * (ab.x + ab.y), material.iridescence);
+        compensated = mix(compensated, F, material.iridescence);
+    }
+#endif
 #if PATINA_MS == PATINA_MS_TURQUIN
     real albedo = max(ab.x + ab.y, 1e-4f);
-    specular *= vec3(1.0f) + material.f0 * (1.0f / albedo - 1.0f);
-#endif
-#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
-    if (material.iridescence > 0.0f) {   // as above; these models' diffuse takes nothing for the specular
-        IridescentFresnel film = filmFresnelAt(material, NoV);
-        specular = mix(specular, prefiltered * mix(film.dielectric, film.metal, material.metallic),
-                       material.iridescence);
-    }
+    specular *= vec3(1.0f) + compensated * (1.0f / albedo - 1.0f);
 #endif
 #if defined(PATINA_NO_DIFFUSE)
     return LightShares(vec3(0.0f), specular);
@@ -140,18 +168,21 @@ PATINA_INLINE LightShares splitSumShares(SurfaceMaterial material, real NoV, vec
 // KHR_materials_transmission under an environment (transmission.glsl's transmissionThrough):
 // what the dielectric's reflection leaves to the light through the wall, weighted as the split
 // sum above weighs the diffuse (1 - the dielectric's FssEss and, with PATINA_MS_FDEZ_AGUERA,
-// Fms Ems, for glTF's models; 1 - (F0 A + B) for the others).
+// Fms Ems, for glTF's models; 1 - (F0 A + B) for the others; a film's mixed in by its strength).
 PATINA_INLINE vec3 transmittedEnvironmentWeight(SurfaceMaterial material, real NoV) {
     vec2 ab = environmentBrdfLookup(NoV, material.roughness);
 #if PATINA_FD == PATINA_FD_LAMBERT_FRESNEL_MIX
-    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
-#if PATINA_MS != PATINA_MS_FDEZ_AGUERA
-    dielectric.multiple = vec3(0.0f);
-#endif
+    ScatteredEnergy dielectric = lobeEnergies(material, ab, NoV).dielectric;   // a film's in it
     return vec3(minValue(vec3(1.0f) - dielectric.single - dielectric.multiple));
 #else
     real w = material.specularWeight;
-    return vec3(1.0f - maxValue(w * (material.dielectricF0 * ab.x + vec3(ab.y))));
+    vec3 reflected = w * (material.dielectricF0 * ab.x + vec3(ab.y));
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    if (material.iridescence > 0.0f) {   // the film's F at N.V times the lobe's albedo, as splitSumShares
+        reflected = mix(reflected, filmFresnelAt(material, NoV).dielectric * (ab.x + ab.y), material.iridescence);
+    }
+#endif
+    return vec3(1.0f - maxValue(reflected));
 #endif
 }
 

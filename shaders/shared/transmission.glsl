@@ -30,6 +30,10 @@ struct Transmission {
     real weight;    // KHR_materials_specular's weight of its Fresnel (1 without)
     real alpha;     // the base's roughness^2: the wall's GGX
     real NoV;       // N.V, floored at MIN_N_DOT_V as the base's
+    // KHR_materials_iridescence's film over the dielectric: its Fresnel at N.V and its strength
+    // (0: none), which the reflection mixes in and so takes from what passes.
+    vec3 film;
+    real iridescence;
 };
 
 // KHR_materials_volume: T = c^(d / d_at) per channel; 1 where the distance is 0 or below
@@ -45,8 +49,17 @@ PATINA_INLINE vec3 volumeAttenuation(vec3 attenuationColor, real attenuationDist
 // volume's T.
 PATINA_INLINE Transmission deriveTransmission(SurfaceMaterial material, real transmission, vec3 attenuation, vec3 N,
                                               vec3 V) {
+    real NoV = max(dot(N, V), MIN_N_DOT_V);
+    vec3 film = vec3(0.0f);
+    real iridescence = 0.0f;
+#if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
+    if (material.iridescence > 0.0f) {
+        film = filmFresnelAt(material, NoV).dielectric;
+        iridescence = material.iridescence;
+    }
+#endif
     return Transmission(material.diffuseColor * (transmission * attenuation), material.dielectricF0,
-                        material.specularWeight, material.alpha, max(dot(N, V), MIN_N_DOT_V));
+                        material.specularWeight, material.alpha, NoV, film, iridescence);
 }
 
 // The diffuse that stays: mix(diffuse_brdf, specular_btdf, transmission)'s first term.
@@ -58,10 +71,12 @@ PATINA_INLINE SurfaceMaterial transmissionDiffuse(SurfaceMaterial material, real
 
 // What the wall's reflection leaves to the light through it at V.H: 1 - w F with Schlick's F of
 // the dielectric's F0 (glTF 2.0 Appendix B, whatever the model's own) weighted by
-// KHR_materials_specular's w, its largest channel (the extension's max_value: the transmission is
-// fresnel_mix's base).
+// KHR_materials_specular's w, a film's Fresnel mixed in by its strength (as dielectricFresnel
+// mixes it), its largest channel (the extension's max_value: the transmission is fresnel_mix's
+// base).
 PATINA_INLINE vec3 transmissionKept(Transmission t, real VoH) {
-    return vec3(minValue(vec3(1.0f) - F_Schlick90(t.f0 * t.weight, t.weight, VoH)));
+    vec3 F = mix(F_Schlick90(t.f0 * t.weight, t.weight, VoH), t.film, t.iridescence);
+    return vec3(minValue(vec3(1.0f) - F));
 }
 
 // f_t towards a light along unit L behind the surface (N.L < 0), times the colour, no cosine

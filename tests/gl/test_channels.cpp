@@ -297,12 +297,20 @@ TEST_F(Channels, PbrValidationFlagsEveryPixelAsTheBatchCheckJudgesTheMaterial) {
 // bench's car paint coat, velvet sheen or clear glass (docs/SHADING.md S5, S6, S7), the glass
 // rough and tinted green over a thickness (KHR_materials_volume's T in the channel too).
 Scene layeredScene(const std::string& layer) {
-    Scene scene = withBenchLayer(defaultScene(), layer == "sheened glass" ? "transmission" : layer);
+    const bool glass = layer == "transmission" || layer == "sheened glass" || layer == "filmed glass";
+    Scene scene = withBenchLayer(defaultScene(), glass ? "transmission" : layer);
     if (layer == "sheened glass") {   // the velvet's sheen over the glass: the sheen weighs what passes
         scene.material.sheenColor = withBenchLayer(scene, "sheen").material.sheenColor;
         scene.material.sheenRoughness = withBenchLayer(scene, "sheen").material.sheenRoughness;
     }
-    if (layer == "transmission" || layer == "sheened glass") {
+    if (layer == "filmed glass") {   // the bench's film over the glass: what it reflects does not pass
+        const Material film = withBenchLayer(scene, "iridescence").material;
+        scene.material.iridescence = film.iridescence;
+        scene.material.iridescenceIor = film.iridescenceIor;
+        scene.material.iridescenceThicknessMinimum = film.iridescenceThicknessMinimum;
+        scene.material.iridescenceThicknessMaximum = film.iridescenceThicknessMaximum;
+    }
+    if (glass) {
         scene.material.roughness = 0.2f;
         scene.material.thickness = 0.5f;
         scene.material.attenuationColor = {0.6f, 0.9f, 0.7f};
@@ -356,10 +364,11 @@ TEST_F(Channels, TheLayersChannelsAreTheirOwnLightAndZeroWithoutTheLayer) {
 // light added; without the layers in the sum a coat's highlight, a sheen's rim or what shows
 // through a glass (and the diffuse it takes away) would be missing; under a sheen the glass's
 // light is weighed by the sheen's albedo scaling on both; an anisotropic part's lobe is stretched
-// on both (KHR_materials_anisotropy's, turned from the fallback direction). Nothing stands behind the sphere, so
+// on both (KHR_materials_anisotropy's, turned from the fallback direction), and a film over a
+// glass takes what it reflects from what passes on both. Nothing stands behind the sphere, so
 // the render's scene behind it adds nothing the twin lacks.
 TEST_F(Channels, TheCpuTwinsRadianceWithALayerIsTheRenders) {
-    for (const std::string layer : {"clearcoat", "sheen", "transmission", "sheened glass", "anisotropy"}) {
+    for (const std::string layer : {"clearcoat", "sheen", "transmission", "sheened glass", "anisotropy", "filmed glass"}) {
         const Scene scene = layeredScene(layer);
         const PreparedScene prepared{scene, test::preparedDefault().mesh, test::preparedDefault().environment};
         const PixelSurfaces surfaces = rasterizeSurfaces(prepared, kSize, kSize);
