@@ -15,16 +15,17 @@ namespace patina::cli {
 namespace {
 // "dielectric, albedo 12 sRGB, below 30 (30-240)": what a base colour's check found.
 std::string describe(const PbrCheck& check, const PbrRanges& ranges) {
-    char text[160];
+    char text[200];
     if (check.metal) {
         std::snprintf(text, sizeof text, "metal, reflectance %d sRGB%s (%d-255)", check.value,
                       check.verdict == PbrVerdict::MetalTooDark ? ", below the darkest measured metal" : "",
                       ranges.metalMin);
     } else {
         // A transmitting dielectric's bright end is its reflected share's (pbr_validation.h).
-        char reflected[64] = "";
+        char reflected[96] = "";
         if (check.reflected != check.value) {
-            std::snprintf(reflected, sizeof reflected, ", %d reflected (the rest passes through)", check.reflected);
+            std::snprintf(reflected, sizeof reflected, ", %d sRGB of it reflected diffusely (the rest passes through)",
+                          check.reflected);
         }
         std::snprintf(text, sizeof text, "dielectric, albedo %d sRGB%s%s (%d-%d)", check.value, reflected,
                       check.verdict == PbrVerdict::DielectricTooDark     ? ", darker than any real dielectric"

@@ -40,7 +40,8 @@ PbrCheck checkBaseColor(glm::vec3 linearBaseColor, float metallic, float transmi
 
 // The texels of `material`'s base colour map, each as the shader reads it (the factor times the
 // sRGB-decoded texel; metallic the factor times the metallic-roughness map's blue, the
-// transmission the factor times its map's red, at the same place, nearest), counted by verdict. All zero for a material without a base colour map.
+// transmission the factor times its map's red, at the same place, nearest), counted by verdict.
+// All zero for a material without a base colour map.
 struct PbrTally {
     size_t texels = 0, dielectricDark = 0, dielectricBright = 0, metalDark = 0;
     size_t flagged() const { return dielectricDark + dielectricBright + metalDark; }

@@ -99,7 +99,8 @@ struct LobeEnergies {
 };
 
 PATINA_INLINE LobeEnergies lobeEnergies(SurfaceMaterial material, vec2 ab, real NoV) {
-    ScatteredEnergy dielectric = scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
+    ScatteredEnergy dielectric =
+        scatteredEnergy(material.dielectricF0, material.specularWeight, ab, NoV, material.roughness);
     ScatteredEnergy metal = scatteredEnergy(material.baseColor, 1.0f, ab, NoV, material.roughness);
 #if defined(PATINA_IRIDESCENT_FIELDS) && !defined(PATINA_NO_THIN_FILM)
     if (material.iridescence > 0.0f) {

@@ -376,10 +376,10 @@ TEST_F(Cli, ValidateSaysOfEachMaterialWhetherItIsInRange) {
                            "baseColor": [1, 1, 1], "transmission": 0.1})");
     r = run("validate " + path("glass.json").string() + " " + path("milk.json").string());
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_NE(r.stdoutText.find("glass.json: ok: dielectric, albedo 255 sRGB, 0 reflected (the rest passes through) "
+    EXPECT_NE(r.stdoutText.find("glass.json: ok: dielectric, albedo 255 sRGB, 0 sRGB of it reflected diffusely (the rest passes through) "
                                 "(30-240)"),
               std::string::npos) << r.stdoutText;
-    EXPECT_NE(r.stdoutText.find("milk.json: out of range: dielectric, albedo 255 sRGB, 243 reflected (the rest passes "
+    EXPECT_NE(r.stdoutText.find("milk.json: out of range: dielectric, albedo 255 sRGB, 243 sRGB of it reflected diffusely (the rest passes "
                                 "through), brighter than any real dielectric"),
               std::string::npos) << r.stdoutText;
 

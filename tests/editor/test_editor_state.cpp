@@ -301,16 +301,22 @@ TEST_F(EditorStateTest, UndoNamesTheLayerAddedTunedOrRemoved) {
         return undone + " / " + state.status;
     };
     EXPECT_EQ(step([](Material& m) { m.clearcoat = 1.0f; }), "Undid adding the clear coat / Redid adding the clear coat");
-    EXPECT_EQ(step([](Material& m) { m.clearcoatRoughness = 0.3f; }), "Undid the clear coat / Redid the clear coat");
+    EXPECT_EQ(step([](Material& m) { m.clearcoatRoughness = 0.3f; }),
+              "Undid the clear coat's roughness / Redid the clear coat's roughness");
+    EXPECT_EQ(step([](Material& m) { m.clearcoat = 0.5f; m.clearcoatRoughness = 0.1f; }),
+              "Undid the clear coat / Redid the clear coat");
     EXPECT_EQ(step([](Material& m) { m.clearcoat = 0.0f; }),
               "Undid removing the clear coat / Redid removing the clear coat");
     EXPECT_EQ(step([](Material& m) { m.sheenColor = glm::vec3(0.5f); }), "Undid adding the sheen / Redid adding the sheen");
-    EXPECT_EQ(step([](Material& m) { m.thickness = 0.2f; }), "Undid the volume / Redid the volume");
+    EXPECT_EQ(step([](Material& m) { m.thickness = 0.2f; }), "Undid the thickness / Redid the thickness");
     EXPECT_EQ(step([](Material& m) { m.specularWeight = 0.5f; }),
+              "Undid the specular weight / Redid the specular weight");
+    EXPECT_EQ(step([](Material& m) { m.specularTint = glm::vec3(2.0f, 1.0f, 1.0f); m.specularWeight = 0.7f; }),
               "Undid the specular colour / Redid the specular colour");
     EXPECT_EQ(step([](Material& m) { m.iridescence = 1.0f; m.roughness = 0.1f; }),
-              "Undid roughness and adding the iridescence / Redid roughness and adding the iridescence");
-    EXPECT_EQ(step([](Material& m) { m.anisotropyRotation = 1.0f; }), "Undid the anisotropy / Redid the anisotropy");
+              "Undid roughness and adding the thin film / Redid roughness and adding the thin film");
+    EXPECT_EQ(step([](Material& m) { m.anisotropyRotation = 1.0f; }),
+              "Undid the anisotropy rotation / Redid the anisotropy rotation");
 
     exportGltfModel(dir_ / "two.glb", test::twoBalls());
     ASSERT_TRUE(openFile(state, dir_ / "two.glb")) << state.error;
@@ -323,6 +329,11 @@ TEST_F(EditorStateTest, UndoNamesTheLayerAddedTunedOrRemoved) {
     EXPECT_EQ(state.status, "Undid adding the transmission of right");
     redo(state, state, state);
     EXPECT_EQ(state.status, "Redid adding the transmission of right");
+    right.transmission = 0.5f;   // within the layer: its one field
+    setEditedMaterial(state, state, state.scene, right);
+    commitEdits(state);
+    undo(state, state, state);
+    EXPECT_EQ(state.status, "Undid the transmission factor of right");
 }
 
 // Issue 23: after Ctrl+Z the status still said "Preset brick applied", and an error from

@@ -438,6 +438,28 @@ TEST_F(EditorUi, APartsFilmIsAddedAndRemovedWholeInOneStep) {
     ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
 }
 
+// A slider's step leaves no status of its own: an older "Added the clear coat ... (Ctrl+Z undoes
+// it)" then promised what Ctrl+Z no longer undid first (it undid the drag). It goes with the
+// step, and Ctrl+Z names what it undid.
+TEST_F(EditorUi, ASlidersStepClearsAnOlderUndoPromise) {
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 1600);
+    click(centreOf("Clearcoat"));
+    frames(1);
+    click(centreOf("Add coat"));
+    frames(1);
+    EXPECT_NE(state_.status.find("Added the clear coat to"), std::string::npos) << state_.status;
+    EXPECT_NE(state_.status.find("(Ctrl+Z undoes it)"), std::string::npos) << state_.status;
+    const ImVec2 from = centreOf("Coat roughness");
+    drag(from, ImVec2(from.x + 40.0f, from.y));
+    frames(2);
+    EXPECT_GT(state_.scene.material.clearcoatRoughness, 0.03f);
+    EXPECT_TRUE(state_.status.empty()) << state_.status;
+    press(kKeyZ, true);
+    EXPECT_EQ(state_.status, "Undid the clear coat's roughness");
+    EXPECT_EQ(state_.scene.material.clearcoat, 1.0f) << "the coat stays: the drag was undone";
+    ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+}
+
 // Patina's own material (no model) has the layer sections too: the anodised preset's film opens
 // its Iridescence section, Remove takes the film off in one step and Ctrl+Z puts it back; the
 // specular tint's red is dragged past 1 (a gem's F0), which a colour picker could not reach.
@@ -2204,6 +2226,34 @@ TEST_F(EditorUi, BothComparisonViewsNameTheirMaterials) {
         }
     }
     EXPECT_GE(rightmost, 8 + textWidth("A: terracott", scale)) << "A's label names it";
+}
+
+// F12 saves what the viewport shows (docs/EDITOR.md): a debug channel where View > Channel shows
+// one (it saved the shaded picture whatever the viewport showed), and the PBR overlay's stripes
+// over it where the overlay is on.
+TEST_F(EditorUi, AScreenshotIsTheChannelAndTheOverlayTheViewportShows) {
+    const int width = 160, height = 120;
+    const LdrImage picture = services_->shownImage(state_, state_, width, height);
+    state_.channel = *channelFromName("D");
+    const LdrImage channel = services_->shownImage(state_, state_, width, height);
+    EXPECT_NE(channel.rgba, picture.rgba);
+    const PreparedScene prepared = sceneToDraw(state_, renderedScene(state_, state_));
+    EXPECT_EQ(channel.rgba, services_->renderImage(prepared, width, height, state_.renderPath,
+                                                   state_.environmentShading, state_.channel)
+                                .ldr.rgba);
+    state_.channel = {};
+    state_.scene.material.baseColor = glm::vec3(1.0f);   // a white dielectric: brighter than snow
+    state_.scene.material.metallic = 0.0f;
+    auto reddish = [](const LdrImage& image) {
+        int count = 0;
+        for (size_t i = 0; i < image.rgba.size(); i += 4) {
+            count += image.rgba[i] > image.rgba[i + 1] + 60;
+        }
+        return count;
+    };
+    EXPECT_EQ(reddish(services_->shownImage(state_, state_, width, height)), 0);
+    state_.pbrOverlay = true;
+    EXPECT_GT(reddish(services_->shownImage(state_, state_, width, height)), 1000) << "the flagged pixels striped red";
 }
 
 // Issue 23: the exposure slider was 110 pixels for 16 stops, so 60 pixels moved 8 EV. A drag

@@ -71,7 +71,7 @@ std::string sliceCaption(const Material& material, SliceLobe which, bool compare
         caption += material.transmission > 0.0f ? "; transmitted: H of L and V mirrored below"
                                                 : "; no transmission";
     } else if (material.transmission > 0.0f) {
-        caption += compared ? "" : "; Lobe: transmitted for the light through the wall";
+        caption += compared ? "" : "; set Lobe to transmitted to see the light through the wall";
     }
     return caption;
 }

@@ -241,7 +241,8 @@ void drawTransmission(Material& material, const Material& file, const Material& 
         sliderWithReset("Attenuation distance", "How far inside the light travels to take the attenuation colour, in "
                                                 "the model's units; 0: infinitely far (no attenuation)",
                         &material.attenuationDistance, 0.0f, 10.0f, file.attenuationDistance,
-                        defaults.attenuationDistance);
+                        defaults.attenuationDistance,
+                        material.attenuationDistance > 0.0f ? "%.3f" : "none (%.0f)");
     }
     ImGui::PopID();
 }

@@ -104,13 +104,15 @@ void dropStaleNotes(Material& material, const Material& committed, const Materia
 }
 }  // namespace
 
-void commitEdits(Document& document) {
+bool commitEdits(Document& document) {
     dropStaleNotes(document.scene.material, document.committed.material, document.savedMaterial);
     EditSnapshot current = document.snapshot();
-    if (current != document.committed) {
-        document.history.record(std::move(document.committed));
-        document.committed = std::move(current);
+    if (current == document.committed) {
+        return false;
     }
+    document.history.record(std::move(document.committed));
+    document.committed = std::move(current);
+    return true;
 }
 
 namespace {

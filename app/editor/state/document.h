@@ -80,8 +80,8 @@ void discardChanges(Document& document, AssetCache& assets);
 // --- Undoable edits ---------------------------------------------------------------------
 // Widgets write straight into the document's scene. Whatever changed since the last commit
 // becomes one undo step when commitEdits runs, which the editor does once no widget is active:
-// a slider drag over many frames is one step, whatever widget made it.
-void commitEdits(Document& document);
+// a slider drag over many frames is one step, whatever widget made it. Whether it made one.
+bool commitEdits(Document& document);
 // A discrete edit (a button): its own step, apart from anything pending.
 template <typename Apply>
 void applyEdit(Document& document, Apply&& apply) {

@@ -1,6 +1,7 @@
 #include "state/undo_history.h"
 
 #include <algorithm>
+#include <initializer_list>
 
 namespace patina::editor {
 
@@ -13,41 +14,63 @@ std::string fieldsOr(const std::vector<std::string>& fields, const std::string& 
     return fields.size() == 2 ? fields[0] + " and " + fields[1] : whole;
 }
 
-// A layer's words (KHR_materials_*): "adding the clear coat" where it was absent (`had` false)
-// and is present, "removing ..." the other way, its name where it changed within.
-std::string layerChange(bool had, bool has, const char* name) {
-    return std::string(had == has ? "" : has ? "adding " : "removing ") + name;
+// A layer's step in words (KHR_materials_*): "adding the clear coat" where it was absent (`had`
+// false) and is present, "removing ..." the other way; within it, the one field that changed
+// ("the clear coat's roughness"), or the layer where more did. "" where nothing did.
+struct LayerField {
+    bool changed;
+    const char* name;
+};
+std::string layerChange(bool had, bool has, const char* layer, std::initializer_list<LayerField> fields) {
+    const auto changed = std::count_if(fields.begin(), fields.end(), [](const LayerField& f) { return f.changed; });
+    if (changed == 0) {
+        return "";
+    }
+    if (had != has) {
+        return std::string(has ? "adding " : "removing ") + layer;
+    }
+    if (changed == 1) {
+        return std::find_if(fields.begin(), fields.end(), [](const LayerField& f) { return f.changed; })->name;
+    }
+    return layer;
 }
 
 // The fields of the factors that differ, in words: the core four one by one, each layer as one
-// (its factors together: a coat's strength and roughness are "the clear coat").
+// step (added, removed, or its one field: layerChange), named as the material panel names them.
 std::vector<std::string> parameterChanges(const MaterialParameters& a, const MaterialParameters& b) {
-    const bool volumeChanged = a.thickness != b.thickness || a.attenuationColor != b.attenuationColor ||
-                               a.attenuationDistance != b.attenuationDistance;
-    const bool filmChanged = a.iridescence != b.iridescence || a.iridescenceIor != b.iridescenceIor ||
-                             a.iridescenceThicknessMinimum != b.iridescenceThicknessMinimum ||
-                             a.iridescenceThicknessMaximum != b.iridescenceThicknessMaximum;
-    const std::pair<bool, std::string> checks[] = {
-        {a.baseColor != b.baseColor, "base colour"},
-        {a.roughness != b.roughness, "roughness"},
-        {a.specular != b.specular, "specular"},
-        {a.metallic != b.metallic, "metallic"},
-        {a.model != b.model, "the BRDF model"},
-        {a.clearcoat != b.clearcoat || a.clearcoatRoughness != b.clearcoatRoughness,
-         layerChange(a.clearcoat > 0.0f, b.clearcoat > 0.0f, "the clear coat")},
-        {a.sheenColor != b.sheenColor || a.sheenRoughness != b.sheenRoughness,
-         layerChange(a.sheenColor != glm::vec3(0.0f), b.sheenColor != glm::vec3(0.0f), "the sheen")},
-        {a.transmission != b.transmission,
-         layerChange(a.transmission > 0.0f, b.transmission > 0.0f, "the transmission")},
-        {volumeChanged, "the volume"},
-        {a.anisotropyStrength != b.anisotropyStrength || a.anisotropyRotation != b.anisotropyRotation,
-         layerChange(a.anisotropyStrength > 0.0f, b.anisotropyStrength > 0.0f, "the anisotropy")},
-        {a.specularTint != b.specularTint || a.specularWeight != b.specularWeight, "the specular colour"},
-        {filmChanged, layerChange(a.iridescence > 0.0f, b.iridescence > 0.0f, "the iridescence")}};
+    const std::string checks[] = {
+        a.baseColor != b.baseColor ? "base colour" : "",
+        a.roughness != b.roughness ? "roughness" : "",
+        a.specular != b.specular ? "specular" : "",
+        a.metallic != b.metallic ? "metallic" : "",
+        a.model != b.model ? "the BRDF model" : "",
+        layerChange(a.clearcoat > 0.0f, b.clearcoat > 0.0f, "the clear coat",
+                    {{a.clearcoat != b.clearcoat, "the clear coat's strength"},
+                     {a.clearcoatRoughness != b.clearcoatRoughness, "the clear coat's roughness"}}),
+        layerChange(a.sheenColor != glm::vec3(0.0f), b.sheenColor != glm::vec3(0.0f), "the sheen",
+                    {{a.sheenColor != b.sheenColor, "the sheen colour"},
+                     {a.sheenRoughness != b.sheenRoughness, "the sheen's roughness"}}),
+        layerChange(a.transmission > 0.0f, b.transmission > 0.0f, "the transmission",
+                    {{a.transmission != b.transmission, "the transmission factor"}}),
+        layerChange(true, true, "the volume",
+                    {{a.thickness != b.thickness, "the thickness"},
+                     {a.attenuationColor != b.attenuationColor, "the attenuation colour"},
+                     {a.attenuationDistance != b.attenuationDistance, "the attenuation distance"}}),
+        layerChange(a.anisotropyStrength > 0.0f, b.anisotropyStrength > 0.0f, "the anisotropy",
+                    {{a.anisotropyStrength != b.anisotropyStrength, "the anisotropy strength"},
+                     {a.anisotropyRotation != b.anisotropyRotation, "the anisotropy rotation"}}),
+        layerChange(true, true, "the specular colour",
+                    {{a.specularTint != b.specularTint, "the specular tint"},
+                     {a.specularWeight != b.specularWeight, "the specular weight"}}),
+        layerChange(a.iridescence > 0.0f, b.iridescence > 0.0f, "the thin film",
+                    {{a.iridescence != b.iridescence, "the thin film's strength"},
+                     {a.iridescenceIor != b.iridescenceIor, "the thin film's ior"},
+                     {a.iridescenceThicknessMinimum != b.iridescenceThicknessMinimum, "the film thickness minimum"},
+                     {a.iridescenceThicknessMaximum != b.iridescenceThicknessMaximum, "the film thickness"}})};
     std::vector<std::string> fields;
-    for (const auto& [changed, name] : checks) {
-        if (changed) {
-            fields.push_back(name);
+    for (const std::string& words : checks) {
+        if (!words.empty()) {
+            fields.push_back(words);
         }
     }
     return fields;

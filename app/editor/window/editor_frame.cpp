@@ -98,6 +98,7 @@ void drawBottomPanel(const Document& document, Interaction& interaction, const P
 }  // namespace
 
 void drawEditorFrame(EditorState& state, EditorServices& services) {
+    const std::string statusBefore = state.status;
     if (!promptOpen(state, state)) {   // a load that ends behind a prompt waits for its answer
         finishEnvironmentLoad(state, state, state, state);
         finishModelLoad(state);
@@ -161,9 +162,12 @@ void drawEditorFrame(EditorState& state, EditorServices& services) {
     const float errorTop = itemRect("viewport", &pictureMin, &pictureMax) ? pictureMin.y + px(8) : top + px(64);
     drawError(state, ImVec2(at.viewport.x + px(8), errorTop), at.viewport.width - px(16));
     drawGuarded(state, "A dialog", [&] { drawDialogs(state, services); });
-    // Whatever the widgets changed becomes one undo step once none of them is active.
-    if (!ImGui::IsAnyItemActive()) {
-        commitEdits(state);
+    // Whatever the widgets changed becomes one undo step once none of them is active. A step no
+    // status line told of (a slider's) leaves an older "(Ctrl+Z undoes it)" saying what Ctrl+Z no
+    // longer undoes first: it goes.
+    if (!ImGui::IsAnyItemActive() && commitEdits(state) && state.status == statusBefore &&
+        state.status.ends_with("(Ctrl+Z undoes it)")) {
+        state.status.clear();
     }
 }
 

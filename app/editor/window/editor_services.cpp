@@ -132,12 +132,13 @@ const PixelStory* EditorServices::pixelStory(const PreparedScene& scene, int wid
 }
 
 RenderOutput EditorServices::renderImage(const PreparedScene& scene, int width, int height, RenderPath passes,
-                                         const EnvironmentShading& environment) {
+                                         const EnvironmentShading& environment, const ChannelRequest& channel) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
     settings.path = passes;
     settings.environment = environment;
+    settings.channel = channel;
     settings.readHdr = false;   // thumbnails, screenshots and comparisons use the display image
     settings.maxTargetBytes = kOneOffTargetBytes;   // any size `patina render` takes
     return renderer_->render(scene, settings);   // into the renderer's own target, not a view's
@@ -231,11 +232,27 @@ const Texture* EditorServices::environmentThumbnail(const std::shared_ptr<const 
     return environmentThumbnail_.second.get();
 }
 
+// One side as the viewport shows it: the picture or the channel shown (View > Channel), with the
+// PBR overlay's stripes over it where that is on (as the viewport draws them).
 LdrImage EditorServices::sideImage(const Document& document, const Interaction& interaction, const Material* a,
                                    int width, int height) {
     const Scene scene = a ? withMaterial(document, interaction, *a) : renderedScene(document, interaction);
     const PreparedScene prepared = sceneToDraw(document, scene);
-    return renderImage(prepared, width, height, interaction.renderPath, interaction.environmentShading).ldr;
+    LdrImage shown = renderImage(prepared, width, height, interaction.renderPath, interaction.environmentShading,
+                                 interaction.channel)
+                         .ldr;
+    if (interaction.pbrOverlay) {
+        const ChannelRequest flags{shader::CHANNEL_PBR_VALIDATION, "", false, interaction.channel.strictPbr};
+        const LdrImage stripes = stripedFlags(
+            renderImage(prepared, width, height, RenderPath::Single, interaction.environmentShading, flags).ldr);
+        for (size_t i = 0; i + 3 < shown.rgba.size() && i + 3 < stripes.rgba.size(); i += 4) {
+            const int alpha = stripes.rgba[i + 3];   // "over": the stripe's colour by its alpha
+            for (size_t c = 0; c < 3; ++c) {
+                shown.rgba[i + c] = uint8_t((stripes.rgba[i + c] * alpha + shown.rgba[i + c] * (255 - alpha) + 127) / 255);
+            }
+        }
+    }
+    return shown;
 }
 
 LdrImage EditorServices::comparisonImage(const Document& document, const Interaction& interaction, int halfWidth,

@@ -84,7 +84,7 @@ public:
     // and returns the image (for screenshots, thumbnails and exports); what the viewport shows
     // is untouched.
     RenderOutput renderImage(const PreparedScene& scene, int width, int height, RenderPath passes,
-                             const EnvironmentShading& environment);
+                             const EnvironmentShading& environment, const ChannelRequest& channel = {});
 
     // A material file's thumbnail, rendered in the fixed preview scene (preview_scene.h, its
     // environment shaded by the split sum) once per file modification time, and its material's
