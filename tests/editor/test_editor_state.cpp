@@ -1365,6 +1365,14 @@ TEST_F(EditorStateTest, TheThreeDLobePeaksAtTheMirrorDirection) {
     for (const glm::vec3& p : lobes[1].points) {
         EXPECT_LT(glm::length(p), 0.8f);   // the rough A is lower everywhere on the shared scale
     }
+    // The peak at the mirror direction: about the grid's largest for a broad lobe; for a smooth
+    // one, far above it (it falls between the grid's directions), which the legend says.
+    EXPECT_GE(lobes[0].peak, lobes[0].maxValue * 0.9f);
+    EXPECT_LT(lobes[0].peak, lobes[0].maxValue * 2.0f);
+    state.scene.material.roughness = 0.02f;
+    state.compareA.reset();
+    const std::vector<Lobe3d> smooth = lobes3d(state, state);
+    EXPECT_GT(smooth[0].peak, 100.0f * smooth[0].maxValue);
 }
 
 // Issue 36: the 3D lobe of a transmitting material has its lobe through the wall below the

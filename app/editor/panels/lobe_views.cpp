@@ -236,11 +236,18 @@ void drawLobeMesh(ImDrawList* draw, const std::vector<glm::vec3>& points, ImU32 
 // The line above the 3D view: which colour is which, and the scale.
 void drawLobe3dLegend(ImDrawList* draw, ImVec2 at, const std::vector<Lobe3d>& lobes, const Interaction& interaction) {
     const bool transmits = std::any_of(lobes.begin(), lobes.end(), [](const Lobe3d& l) { return !l.transmitted.empty(); });
-    char text[160];
+    char text[256];
     std::snprintf(text, sizeof text, "%s%s%.3g /sr at the largest%s", interaction.compareA ? "B orange, A grey; " : "",
                   transmits ? "green: transmitted, below the surface; " : "", double(lobes.front().maxValue),
                   interaction.lobe.logScale ? " (log, 3 decades)" : "");
     draw->AddText(at, kLabel, text);
+    // A smooth lobe's peak falls between the grid's directions: said on a line of its own, so the
+    // scale is not read as the peak.
+    if (lobes.front().peak > 2.0f * lobes.front().maxValue) {
+        std::snprintf(text, sizeof text, "the mirror peak, %.3g /sr, lies between the drawn directions",
+                      double(lobes.front().peak));
+        draw->AddText(ImVec2(at.x, at.y + ImGui::GetTextLineHeight()), kLabel, text);
+    }
 }
 }  // namespace
 

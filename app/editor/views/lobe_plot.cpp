@@ -117,8 +117,10 @@ std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interac
     std::vector<Lobe3d> lobes;
     // Each lobe's values, the reflected's then (with a transmission) the transmitted's.
     std::vector<std::vector<float>> values, transmittedValues;
-    float maxValue = 1e-6f;
+    float maxValue = 1e-6f, peak = 0.0f;
     for (const Material& material : materials) {
+        const LobeValue mirrored = lobeValue(material, L, glm::vec3(-L.x, -L.y, L.z));
+        peak = std::max({peak, luminance(mirrored.total()) * cosine, luminance(mirrored.transmitted) * cosine});
         Lobe3d& lobe3d = lobes.emplace_back();
         std::vector<float>& v = values.emplace_back();
         std::vector<float>& t = transmittedValues.emplace_back();
@@ -142,6 +144,7 @@ std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interac
     }
     for (size_t i = 0; i < lobes.size(); ++i) {
         lobes[i].maxValue = maxValue;
+        lobes[i].peak = peak;
         for (size_t p = 0; p < lobes[i].points.size(); ++p) {
             lobes[i].points[p] *= lobeRadius(values[i][p], maxValue, lobe.logScale);
         }

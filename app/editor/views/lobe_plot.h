@@ -44,6 +44,9 @@ struct Lobe3d {
     std::vector<glm::vec3> points;        // ring-major, (ring, meridian); unit-sphere directions times their radius
     std::vector<glm::vec3> transmitted;   // the same grid below the surface (z <= 0); empty without a transmission
     float maxValue = 0.0f;
+    // The largest value at the mirror direction (and straight through, with a transmission) of
+    // either lobe: a smooth lobe's peak, which falls between the grid's directions.
+    float peak = 0.0f;
 };
 // The lobes of B and, when set, A, scaled together (one maxValue for both).
 std::vector<Lobe3d> lobes3d(const Document& document, const Interaction& interaction);
