@@ -61,6 +61,11 @@ Json storyJson(const PixelStory& s) {
             {"clearcoat", array(c.clearcoat)},
             {"sheen", array(c.sheen)},
             {"transmission", array(c.transmission)},
+            {"anisotropy", s.anisotropy ? Json{{"direction", array(s.anisotropy->direction)},
+                                               {"strength", s.anisotropy->strength},
+                                               {"alphaT", s.anisotropy->alphaT},
+                                               {"alphaB", s.anisotropy->alphaB}}
+                                        : Json(nullptr)},
             {"radiance", array(c.radiance)},
             {"display", {s.display[0], s.display[1], s.display[2]}}};
 }

@@ -46,6 +46,15 @@ std::optional<PixelStory> pixelStory(const PreparedScene& prepared, const PixelS
     story.model = std::string(brdfModel(model).name);
     const std::optional<ChannelEnvironment> environment = channelEnvironment(prepared);
     story.inputs = gatherChannelInputs(model, point, packed, -1, channel.key, environment ? &*environment : nullptr);
+    if (point.anisotropyStrength > 0.0f) {   // as channelMaterial stretches the lobe
+        const shader::ChannelLayers layers = channelPointLayers(point);
+        const glm::vec4 t = layers.anisotropyTangent;
+        const shader::SurfaceMaterial m = shader::withAnisotropy(
+            shader::deriveSurfaceMaterial(point.baseColor, point.roughness, point.specular, point.metallic),
+            story.inputs.shadingNormal, glm::vec3(t), t.w, layers.anisotropy.x, layers.anisotropy.y,
+            layers.anisotropy.z);
+        story.anisotropy = PixelStory::Stretch{m.anisotropicT, m.anisotropy, m.alphaT, m.alphaB};
+    }
     if (channel.key >= 0) {
         story.keyLight = lights[order[size_t(channel.key)]].name;
     }

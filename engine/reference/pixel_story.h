@@ -39,6 +39,14 @@ struct PixelStory {
     std::vector<LightShare> lights;            // each enabled light but the environment
     std::optional<LightShare> environment;     // the enabled environment light's split sum
     std::array<uint8_t, 3> display{};          // after exposure, tone map and sRGB, as a PNG holds it
+    // KHR_materials_anisotropy's stretch where the part has one (after its map): the unit world
+    // direction t it runs along (turned from the tangent, or from the fallback's where the mesh
+    // has none: `inputs.tangent` is then 0), its strength and the roughness along and across it.
+    struct Stretch {
+        glm::vec3 direction{0.0f};
+        float strength = 0.0f, alphaT = 0.0f, alphaB = 0.0f;
+    };
+    std::optional<Stretch> anisotropy;
 };
 
 // Pixel (x, y) of a surfaces.width x surfaces.height image of `prepared`, rows top first;

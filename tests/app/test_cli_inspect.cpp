@@ -216,6 +216,36 @@ TEST_F(CliInspect, InspectListsTheLayersOfAPartThatHasThem) {
     EXPECT_EQ(vec3Of(plain.at("transmission")), glm::vec3(0.0f));
 }
 
+// `inspect` says where an anisotropic part's highlight stretches (KHR_materials_anisotropy): the
+// built-in sphere has no tangent ("tangent" 0), so the direction is the fallback's, round the y
+// axis at rotation 0 (no y), turned a quarter by a rotation of pi/2, in the surface; the
+// roughness along it above the one across. A part without the layer has none.
+TEST_F(CliInspect, InspectSaysWhereAnAnisotropicHighlightStretches) {
+    auto stretch = [&](float rotation) {
+        write("brushed.json", R"({"format": "patina-material", "version": 1, "name": "brushed", "model": "gltf",
+                                  "baseColor": [0.9, 0.9, 0.9], "roughness": 0.3, "metallic": 1,
+                                  "anisotropyStrength": 0.8, "anisotropyRotation": )" +
+                                  std::to_string(rotation) + "}");
+        const test::CliRun r = run("inspect --material " + path("brushed.json").string() +
+                                   " --width 64 --height 64 --x 36 --y 28");
+        EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+        return Json::parse(r.stdoutText);
+    };
+    const Json along = stretch(0.0f), across = stretch(1.5707963f);
+    ASSERT_TRUE(along.at("anisotropy").is_object()) << along.dump();
+    EXPECT_EQ(vec3Of(along.at("tangent")), glm::vec3(0.0f));
+    const glm::vec3 t = vec3Of(along.at("anisotropy").at("direction"));
+    const glm::vec3 n = vec3Of(along.at("normal"));
+    EXPECT_NEAR(glm::length(t), 1.0f, 1e-4f);
+    EXPECT_NEAR(glm::dot(t, n), 0.0f, 1e-4f);
+    EXPECT_NEAR(t.y, 0.0f, 1e-4f);
+    EXPECT_NEAR(glm::dot(t, vec3Of(across.at("anisotropy").at("direction"))), 0.0f, 1e-4f);
+    EXPECT_GT(along.at("anisotropy").at("alphaT").get<float>(), along.at("anisotropy").at("alphaB").get<float>());
+    EXPECT_NEAR(along.at("anisotropy").at("strength").get<float>(), 0.8f, 1e-6f);
+    const test::CliRun bare = run("inspect --width 64 --height 64 --x 36 --y 28");
+    EXPECT_TRUE(Json::parse(bare.stdoutText).at("anisotropy").is_null()) << bare.stdoutText;
+}
+
 TEST_F(CliInspect, APixelOutsideTheImageIsAUsageErrorAndTheBackgroundHasNoSurface) {
     const test::CliRun outside = run("inspect --width 100 --height 50 --x 10 --y 50");
     EXPECT_EQ(outside.exitCode, 2);

@@ -62,6 +62,10 @@ std::vector<std::string> storyLines(const PixelStory& s) {
     if (c.transmission != glm::vec3(0.0f)) {
         lines.push_back("transmission  " + vec3Text(c.transmission));
     }
+    if (s.anisotropy) {   // KHR_materials_anisotropy: where the highlight stretches (S8)
+        lines.push_back("stretched along " + vec3Text(s.anisotropy->direction) +
+                        format("   alpha %.3g along, %.3g across", s.anisotropy->alphaT, s.anisotropy->alphaB));
+    }
     return lines;
 }
 
