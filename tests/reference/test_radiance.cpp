@@ -32,39 +32,56 @@ glm::vec3 viewAt(float NoV) {
     return {std::sqrt(1.0f - NoV * NoV), 0.0f, NoV};
 }
 
-TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
-    // A dim sky and a sun of one pixel holding most of the energy, as real HDRIs have. The
-    // estimate must agree with a sum over every pixel (radiance x f x NoL x the pixel's solid
-    // angle) and its standard error must be small: the distribution has to follow the bilinear
-    // image around the sun, not the sun's pixel alone (then this error was 25%).
-    const int width = 128, height = 64;
+// A dim sky and a sun of one pixel holding most of the energy, as real HDRIs have (128 x 64),
+// and the direction to the sun's pixel centre.
+struct SunnySky {
+    HdrImage image;
+    glm::vec3 sun;
+};
+SunnySky sunnySky() {
+    const int width = 128, height = 64, sunX = 40, sunY = 20;
     HdrImage image = test::equirectOf(width, height, [](glm::vec3 d) { return glm::vec3(0.2f + 0.1f * d.y); });
-    const int sunX = 40, sunY = 20;
     for (int c = 0; c < 3; ++c) {
         image.rgb[(size_t(sunY) * width + sunX) * 3 + size_t(c)] = 5000.0f;
     }
-    const Fixture fixture(image);
+    return {image, shader::equirectToDirection(glm::vec2((float(sunX) + 0.5f) / width, (float(sunY) + 0.5f) / height))};
+}
+
+// Red's sum over every pixel of `image`: its radiance times weight(L) (the integrand's f |N.L|)
+// times the pixel's solid angle.
+template <typename Weight>
+double pixelSum(const HdrImage& image, Weight weight) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        const double dOmega = (std::cos(double(y) / image.height * std::numbers::pi) -
+                               std::cos(double(y + 1) / image.height * std::numbers::pi)) *
+                              2.0 * std::numbers::pi / image.width;
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 L = shader::equirectToDirection(
+                glm::vec2((float(x) + 0.5f) / image.width, (float(y) + 0.5f) / image.height));
+            sum += double(image.rgb[(size_t(y) * size_t(image.width) + size_t(x)) * 3] * weight(L)) * dOmega;
+        }
+    }
+    return sum;
+}
+
+TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
+    // The estimate must agree with a sum over every pixel (radiance x f x NoL x the pixel's solid
+    // angle) and its standard error must be small: the distribution has to follow the bilinear
+    // image around the sun, not the sun's pixel alone (then this error was 25%).
+    const SunnySky sky = sunnySky();
+    const Fixture fixture(sky.image);
     for (const float roughness : {0.5f, 1.0f}) {
         const shader::SurfaceMaterial metal = shader::deriveSurfaceMaterial(glm::vec3(0.9f), roughness, 0.5f, 1.0f);
-        const glm::vec3 sun = shader::equirectToDirection(
-            glm::vec2((float(sunX) + 0.5f) / width, (float(sunY) + 0.5f) / height));
-        const glm::vec3 N = glm::normalize(sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
-        double sum = 0.0;
-        for (int y = 0; y < height; ++y) {
-            const double dOmega = (std::cos(double(y) / height * std::numbers::pi_v<float>) -
-                                   std::cos(double(y + 1) / height * std::numbers::pi_v<float>)) *
-                                  2.0 * std::numbers::pi_v<float> / width;
-            for (int x = 0; x < width; ++x) {
-                const glm::vec3 L = shader::equirectToDirection(
-                    glm::vec2((float(x) + 0.5f) / width, (float(y) + 0.5f) / height));
-                const float NoL = glm::dot(N, L);
-                if (NoL > 0.0f) {
-                    const shader::BrdfValue f = evaluateBrdfUnderEnvironment(BrdfModelId::Epic, metal, N, V, L);
-                    sum += double(image.rgb[(size_t(y) * width + size_t(x)) * 3] * (f.diffuse.x + f.specular.x) * NoL) *
-                           dOmega;
-                }
+        const glm::vec3 N = glm::normalize(sky.sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
+        const double sum = pixelSum(sky.image, [&](glm::vec3 L) {
+            const float NoL = glm::dot(N, L);
+            if (!(NoL > 0.0f)) {
+                return 0.0f;
             }
-        }
+            const shader::BrdfValue f = evaluateBrdfUnderEnvironment(BrdfModelId::Epic, metal, N, V, L);
+            return (f.diffuse.x + f.specular.x) * NoL;
+        });
         ReferenceOptions options;
         options.samples = 20000;
         const ReferenceEstimate estimate =
@@ -81,33 +98,15 @@ TEST(Reference, UnderASunItMatchesAQuadratureOfThePixelsWithASmallError) {
 // standard error is small: 2.7% of the value at these samples, where f_t's samples alone met
 // the sun rarely (18%, and fireflies in a rough glass under an HDRI).
 TEST(Reference, UnderASunBehindARoughGlassItMatchesAQuadratureOfThePixels) {
-    const int width = 128, height = 64;
-    HdrImage image = test::equirectOf(width, height, [](glm::vec3 d) { return glm::vec3(0.2f + 0.1f * d.y); });
-    const int sunX = 40, sunY = 20;
-    for (int c = 0; c < 3; ++c) {
-        image.rgb[(size_t(sunY) * width + sunX) * 3 + size_t(c)] = 5000.0f;
-    }
-    const Fixture fixture(image);
-    const glm::vec3 sun =
-        shader::equirectToDirection(glm::vec2((float(sunX) + 0.5f) / width, (float(sunY) + 0.5f) / height));
-    const glm::vec3 N = -glm::normalize(sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
+    const SunnySky sky = sunnySky();
+    const Fixture fixture(sky.image);
+    const glm::vec3 N = -glm::normalize(sky.sun + glm::vec3(0.0f, 0.3f, 0.0f)), V = N;
     const shader::SurfaceMaterial glass = shader::deriveSurfaceMaterial(glm::vec3(1.0f), 0.4f, 0.5f, 0.0f);
     const shader::Transmission t = shader::deriveTransmission(glass, 1.0f, glm::vec3(1.0f), N, V);
-    double sum = 0.0;
-    for (int y = 0; y < height; ++y) {
-        const double dOmega = (std::cos(double(y) / height * std::numbers::pi) -
-                               std::cos(double(y + 1) / height * std::numbers::pi)) *
-                              2.0 * std::numbers::pi / width;
-        for (int x = 0; x < width; ++x) {
-            const glm::vec3 L =
-                shader::equirectToDirection(glm::vec2((float(x) + 0.5f) / width, (float(y) + 0.5f) / height));
-            const float NoL = glm::dot(N, L);
-            if (NoL < 0.0f) {
-                const float f = shader::transmissionBtdf(t, N, V, L).x;
-                sum += double(image.rgb[(size_t(y) * width + size_t(x)) * 3] * f * -NoL) * dOmega;
-            }
-        }
-    }
+    const double sum = pixelSum(sky.image, [&](glm::vec3 L) {
+        const float NoL = glm::dot(N, L);
+        return NoL < 0.0f ? shader::transmissionBtdf(t, N, V, L).x * -NoL : 0.0f;
+    });
     ReferenceOptions options;
     options.samples = 4096;
     options.transmission = 1.0f;
