@@ -2237,7 +2237,8 @@ TEST_F(EditorUi, AScreenshotIsTheChannelAndTheOverlayTheViewportShows) {
     state_.channel = *channelFromName("D");
     const LdrImage channel = services_->shownImage(state_, state_, width, height);
     EXPECT_NE(channel.rgba, picture.rgba);
-    const PreparedScene prepared = sceneToDraw(state_, renderedScene(state_, state_));
+    const Scene shown = renderedScene(state_, state_);   // PreparedScene holds its scene by reference
+    const PreparedScene prepared = sceneToDraw(state_, shown);
     EXPECT_EQ(channel.rgba, services_->renderImage(prepared, width, height, state_.renderPath,
                                                    state_.environmentShading, state_.channel)
                                 .ldr.rgba);
