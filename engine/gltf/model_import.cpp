@@ -1,6 +1,8 @@
 #include "gltf/model_import.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdio>
 
 #include "gltf/document.h"
 #include "gltf/draws.h"
@@ -82,6 +84,44 @@ void tellExtensions(const tinygltf::Model& document, Model& model) {
     }
 }
 
+// Whether any texel of the image is less than opaque.
+bool seeThrough(const ModelImage& image) {
+    for (size_t i = 3; i < image.rgba.size(); i += 4) {
+        if (image.rgba[i] < 255) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// A note for each BLEND material whose alpha varies over the surface (its base colour map's, or
+// its primitives' vertex colours'): Patina composites a BLEND item by its factor's alpha alone
+// (docs/FORMATS.md), so the file's per-pixel transparency (a decal's edge, a leaf's cut-out)
+// is not drawn, and the picture shows it opaque where the factor is 1.
+void tellBlendedAlpha(Model& model) {
+    for (size_t m = 0; m < model.materials.size(); ++m) {
+        const ModelMaterial& material = model.materials[m];
+        if (material.alphaMode != AlphaMode::Blend) {
+            continue;
+        }
+        const int image = material.baseColor.image;
+        bool varies = image >= 0 && size_t(image) < model.images.size() && seeThrough(model.images[size_t(image)]);
+        for (const DrawItem& draw : model.draws) {
+            if (draw.material == int(m) && size_t(draw.primitive) < model.primitives.size()) {
+                const std::vector<glm::vec4>& colors = model.primitives[size_t(draw.primitive)].colors;
+                varies |= std::any_of(colors.begin(), colors.end(), [](const glm::vec4& c) { return c.a < 1.0f; });
+            }
+        }
+        if (varies) {
+            char alpha[32];
+            std::snprintf(alpha, sizeof alpha, "%.3g", double(material.baseAlpha));
+            model.notes.push_back("material \"" + material.name + "\" is BLEND with a varying alpha: Patina blends it by "
+                                  "its factor's alpha (" + alpha + ") alone, not its map's or vertex colours' alpha "
+                                  "pixel by pixel");
+        }
+    }
+}
+
 }  // namespace
 
 std::optional<Model> importGltfModel(const std::filesystem::path& path, const std::vector<uint8_t>& bytes,
@@ -96,6 +136,7 @@ std::optional<Model> importGltfModel(const std::filesystem::path& path, const st
         return std::nullopt;
     }
     gltf::convertSpecularGlossiness(model, specGloss, gltf::kGltfMaxImageBytes);
+    tellBlendedAlpha(model);
     addMissingTangents(model);
     return model;
 }

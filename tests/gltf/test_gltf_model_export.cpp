@@ -20,6 +20,7 @@
 #include "model/placement.h"
 #include "scene/prepared_scene.h"
 #include "scratch_test.h"
+#include "test_support.h"
 #include "validator.h"
 
 namespace patina {
@@ -415,7 +416,9 @@ TEST_F(GltfModelExport, TheSpecularTheFilmAndTheirMapsComeBackValidatorClean) {
     test::expectValidGltf(path("specular.glb"), dir_);
     const Model back = importGltfModel(path("specular.glb"));
     expectSameModel(model, back);
-    EXPECT_TRUE(back.notes.empty()) << back.notes.front();
+    // Nothing lost on the way: the one note is the file's BLEND part's, whose map's alpha varies.
+    ASSERT_EQ(back.notes.size(), 1u) << back.notes.front();
+    EXPECT_NE(back.notes[0].find("\"blended\" is BLEND with a varying alpha"), std::string::npos) << back.notes[0];
 }
 
 TEST_F(GltfModelExport, AGltfHasItsImagesBesideItAndItsBufferWhereAsked) {
@@ -429,6 +432,33 @@ TEST_F(GltfModelExport, AGltfHasItsImagesBesideItAndItsBufferWhereAsked) {
     ASSERT_EQ(glb.size(), 1u);   // the images inside it
     EXPECT_THROW(encodeGltfModel(path("box.obj"), model), InputError);
     EXPECT_THROW(encodeGltfModel(path("empty.glb"), Model{}), InputError);
+}
+
+// Every file told: a BLEND material whose alpha varies over the surface (its base colour map's
+// alpha here) is drawn by its factor's alpha alone, and the model's notes say so, naming it; an
+// opaque map, or the same map under MASK, says nothing.
+TEST_F(GltfModelExport, ABlendedMaterialWhoseAlphaVariesIsToldItBlendsByItsFactor) {
+    auto notesWith = [&](uint8_t alpha, AlphaMode mode) {
+        Model model = test::twoBalls();
+        model.images.push_back({"leaf", 2, 1, {200, 200, 200, 255, 200, 200, 200, alpha}});
+        model.materials[0].baseColor.image = 0;
+        model.materials[0].alphaMode = mode;
+        model.materials[0].baseAlpha = 0.8f;
+        exportGltfModel(path("blend.glb"), model);
+        std::string notes;
+        for (const std::string& note : importGltfModel(path("blend.glb")).notes) {
+            notes += note + "\n";
+        }
+        return notes;
+    };
+    const std::string told = notesWith(40, AlphaMode::Blend);
+    EXPECT_NE(told.find("material \"left\" is BLEND with a varying alpha: Patina blends it by its factor's alpha "
+                        "(0.8) alone"),
+              std::string::npos)
+        << told;
+    EXPECT_EQ(told.find("\"right\""), std::string::npos) << told;
+    EXPECT_EQ(notesWith(255, AlphaMode::Blend).find("BLEND"), std::string::npos);
+    EXPECT_EQ(notesWith(40, AlphaMode::Mask).find("BLEND"), std::string::npos);
 }
 
 // A map replaced in the editor by a picture the file already has (the model then holds the same
