@@ -30,16 +30,16 @@ inline ChannelInputs gatherChannelInputs(const ChannelPoint& p, const std::vecto
                                      p.metallic, p.occlusion, p.emission, p.uv0, p.uv1, p.tangent, p.geometryNormal,
                                      p.N, p.V);
     const ChannelLayers layers = channelPointLayers(p);
+    const SurfaceMaterial material = channelMaterial(c, layers);
     for (int i = 0; i < int(lights.size()); ++i) {
-        c = channelWithLight(c, layers, lights[size_t(i)], i == asked, i == key, p.P, p.V);
+        c = channelWithLight(c, material, layers, lights[size_t(i)], i == asked, i == key, p.P, p.V);
     }
     if (environment) {
-        SurfaceMaterial material = channelMaterial(c, layers);
         const vec2 rotation = environmentRotation(environment->rotationDegrees);
         LightShares shares = environmentShares(environment->prefiltered, environment->maxLod, environment->irradiance,
                                                rotation.x, rotation.y, material, p.N, p.V, false);
         c = channelWithEnvironment(c, shares, environment->intensity, asked == -2);
-        c = channelWithEnvironmentLayers(c, layers, environment->prefiltered, environment->maxLod,
+        c = channelWithEnvironmentLayers(c, material, layers, environment->prefiltered, environment->maxLod,
                                          environment->irradiance, environment->intensity, rotation.x, rotation.y, p.V);
     }
     return channelFinished(c, layers);

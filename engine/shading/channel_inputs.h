@@ -55,8 +55,8 @@ struct ChannelPoint {
 ChannelPoint channelPointOf(const MaterialParameters& material);
 
 // The point's layers as shade.frag derives them for a part that has them (PATINA_CLEARCOAT,
-// PATINA_SHEEN, PATINA_TRANSMISSION, PATINA_ANISOTROPY); a factor of 0 is none, which shades the same as the layer
-// at 0.
+// PATINA_SHEEN, PATINA_TRANSMISSION, PATINA_ANISOTROPY); a factor of 0 is none, which shades
+// the same as the layer at 0.
 inline shader::ChannelLayers channelPointLayers(const ChannelPoint& p) {
     shader::ChannelLayers layers = shader::noChannelLayers();
     if (p.clearcoat > 0.0f) {

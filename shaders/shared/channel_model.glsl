@@ -4,8 +4,9 @@
 // call these in the same order, each with its own list of lights.
 
 // The surface's fields: the material after its maps (deriveSurfaceMaterial's F0 and diffuse
-// colour from it, KHR_materials_specular's tint and weight applied), the occlusion and emission the maps give, the UVs, the tangent frame and the
-// normals. The lighting starts at 0. `tangent` as interpolated (w = 0: none).
+// colour from it, KHR_materials_specular's tint and weight applied), the occlusion and emission
+// the maps give, the UVs, the tangent frame and the normals. The lighting starts at 0. `tangent`
+// as interpolated (w = 0: none).
 PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roughness, real specular,
                                            vec3 specularTint, real specularWeight, real metallic, real occlusion,
                                            vec3 emission, vec2 uv0, vec2 uv1, vec4 tangent, vec3 geometryNormal,
@@ -23,7 +24,7 @@ PATINA_INLINE ChannelInputs channelSurface(vec3 baseColor, real alpha, real roug
 
 // The material the base's lobes read: deriveSurfaceMaterial's with its specular, its stretch and
 // its film, its diffuse reduced by a transmission (transmission.glsl's transmissionDiffuse), as
-// shade.frag shades it.
+// shade.frag shades it. Derived once a pixel: every light and the environment read it.
 PATINA_INLINE SurfaceMaterial channelMaterial(ChannelInputs c, ChannelLayers layers) {
     SurfaceMaterial m = withSpecular(deriveSurfaceMaterial(c.baseColor, c.roughness, c.specular, c.metallic),
                                      c.specularTint, c.specularWeight);
@@ -38,12 +39,11 @@ PATINA_INLINE SurfaceMaterial channelMaterial(ChannelInputs c, ChannelLayers lay
     return layers.transmits ? transmissionDiffuse(m, layers.transmissionFactor) : m;
 }
 
-// One light's lobes added at P (occlusion on a hemisphere light, as the renderer applies it),
-// then the layers' (channelLayersOfLight). `asked`: the light of CHANNEL_LIGHT (its lobes on the
-// base); `key`: the light D, G and F are read towards.
-PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, ChannelLayers layers, PackedLight light, bool asked,
-                                             bool key, vec3 P, vec3 V) {
-    SurfaceMaterial m = channelMaterial(c, layers);
+// One light's lobes on `m` (channelMaterial's) added at P (occlusion on a hemisphere light, as the
+// renderer applies it), then the layers' (channelLayersOfLight). `asked`: the light of
+// CHANNEL_LIGHT (its lobes on the base); `key`: the light D, G and F are read towards.
+PATINA_INLINE ChannelInputs channelWithLight(ChannelInputs c, SurfaceMaterial m, ChannelLayers layers,
+                                             PackedLight light, bool asked, bool key, vec3 P, vec3 V) {
     LightShares shares = lightShares(light, m, P, c.shadingNormal, V);
     if (light.type == LIGHT_HEMISPHERE) {
         shares.diffuse = c.occlusion * shares.diffuse;
@@ -78,7 +78,8 @@ PATINA_INLINE ChannelInputs channelWithEnvironment(ChannelInputs c, LightShares 
 // the sheen lit by the irradiance at N and the base weighed by E(N.V) (sheenIrradianceShare), the
 // coat's split sum about its own mirror direction (clearcoatEnvironment), the environment along
 // -V through the wall (transmissionEnvironment; a channel draws no scene behind), all occluded.
-PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, ChannelLayers layers,
+// `m` channelMaterial's.
+PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, SurfaceMaterial m, ChannelLayers layers,
                                                          EnvironmentSource prefiltered, real maxLod,
                                                          EnvironmentSource irradianceMap, real intensity,
                                                          real cosRotation, real sinRotation, vec3 V) {
@@ -96,8 +97,8 @@ PATINA_INLINE ChannelInputs channelWithEnvironmentLayers(ChannelInputs c, Channe
         c.clearcoat = c.clearcoat + c.occlusion * (intensity * coat);
     }
     if (layers.transmits) {
-        vec3 through = transmissionEnvironment(prefiltered, maxLod, cosRotation, sinRotation, channelMaterial(c, layers),
-                                               layers.transmission, V);
+        vec3 through =
+            transmissionEnvironment(prefiltered, maxLod, cosRotation, sinRotation, m, layers.transmission, V);
         c.transmission = c.transmission + c.occlusion * (intensity * through);
     }
     c.layeredLighting = c.layeredLighting + base;

@@ -458,15 +458,15 @@ vec3 inspectedChannel(vec3 baseColor, float alpha, float roughness, vec3 specula
                       vec3 geometryNormal, vec3 N, vec3 V, ChannelLayers layers) {
     ChannelInputs c = channelSurface(baseColor, alpha, roughness, uSpecular, specularTint, specularWeight, metallic,
                                      occlusion, emission, uv0, uv1, tangent, geometryNormal, N, V);
+    SurfaceMaterial material = channelMaterial(c, layers);
     for (int i = 0; i < uLightCount.x; ++i) {
-        c = channelWithLight(c, layers, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
+        c = channelWithLight(c, material, layers, uLights[i], i == uChannelLight, i == uKeyLight, vPosition, V);
     }
 #ifdef PATINA_ENVIRONMENT
-    SurfaceMaterial material = channelMaterial(c, layers);
     LightShares shares = environmentShares(uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
                                            uEnvironmentRotation.x, uEnvironmentRotation.y, material, N, V, false);
     c = channelWithEnvironment(c, shares, uEnvironmentIntensity, uChannelLight == -2);
-    c = channelWithEnvironmentLayers(c, layers, uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
+    c = channelWithEnvironmentLayers(c, material, layers, uEnvironmentMap, uEnvironmentMaxLod, uEnvironmentIrradiance,
                                      uEnvironmentIntensity, uEnvironmentRotation.x, uEnvironmentRotation.y, V);
 #endif
     return channelValue(PATINA_CHANNEL, channelFinished(c, layers), layers, uPbrRanges);
